@@ -1,0 +1,27 @@
+# monoplane_embed_shaders(TARGET target SOURCES a.vert b.frag ...)
+# Compiles GLSL with glslc at build time into SPIR-V words that a generated header embeds, so the
+# executable carries its shaders. A shader a.vert becomes <build>/shaders/<dir>/a.vert.spv.inc,
+# included as `static const uint32_t kWords[] = {#include "a.vert.spv.inc"};`.
+function(monoplane_embed_shaders)
+  cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
+  file(RELATIVE_PATH rel_dir ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})
+  set(out_dir ${PROJECT_BINARY_DIR}/shaders/${rel_dir})
+  file(MAKE_DIRECTORY ${out_dir})
+  set(outputs "")
+  foreach(src ${ARG_SOURCES})
+    get_filename_component(name ${src} NAME)
+    set(out ${out_dir}/${name}.spv.inc)
+    add_custom_command(
+      OUTPUT ${out}
+      COMMAND Vulkan::glslc --target-env=vulkan1.3 -O -Werror -mfmt=num
+              -I ${PROJECT_SOURCE_DIR} -MD -MF ${out}.d
+              -o ${out} ${CMAKE_CURRENT_SOURCE_DIR}/${src}
+      DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${src}
+      DEPFILE ${out}.d
+      COMMENT "glslc ${rel_dir}/${name}"
+      VERBATIM)
+    list(APPEND outputs ${out})
+  endforeach()
+  target_sources(${ARG_TARGET} PRIVATE ${outputs})
+  target_include_directories(${ARG_TARGET} PRIVATE ${out_dir})
+endfunction()

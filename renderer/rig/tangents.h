@@ -1,0 +1,14 @@
+// A view frustum as four tangents (OpenXR XrFovf angles through tan), DESIGN.md section 2:
+// tan_left < 0 < tan_right and tan_down < 0 < tan_up for a normal headset.
+#pragma once
+
+namespace monoplane::rig {
+
+struct Tangents {
+    double left = -1.0;
+    double right = 1.0;
+    double down = -1.0;
+    double up = 1.0;
+};
+
+}  // namespace monoplane::rig
