@@ -1,0 +1,98 @@
+// The scene model shared by generators, culling and the renderer (DESIGN.md section 5).
+// World frame: metres, +y up; a participant at a scene's default viewpoint looks down -z.
+// Triangles wind counter-clockwise seen from the side their vertex normals point to (right-handed:
+// cross(b - a, c - a) agrees with the normals), so back-face culling may be enabled.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "renderer/rig/pose.h"
+
+namespace monoplane::scenes {
+
+enum class SceneId { Beams, Landscape, Spheres };
+
+// test: a few ten thousand triangles (unit and GPU tests); low/medium: interactive on llvmpipe;
+// high/ultra: benchmarks on a GPU, millions of triangles.
+enum class Detail { Test, Low, Medium, High, Ultra };
+
+// One vertex as uploaded to the GPU (32 bytes; the shaders declare the same layout).
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;               // unit length
+    std::uint32_t albedo_rgba8;     // linear albedo, R in the low byte
+    std::uint32_t material_packed;  // see pack_material()
+};
+static_assert(sizeof(Vertex) == 32, "the vertex layout is shared with the shaders");
+
+// Surface response: roughness and specular reflectance in [0, 1], pattern selects a procedural
+// albedo modulation in the shader (0: none, 1: terrain noise, 2: stripes along beams).
+// Packed as forward.frag reads it: bits 0-7 roughness * 255, bits 8-15 specular * 255,
+// bits 16-23 pattern, bits 24-31 zero.
+struct Material {
+    float roughness = 0.6f;
+    float specular = 0.04f;
+    std::uint8_t pattern = 0;
+};
+std::uint32_t pack_material(const Material& material);
+Material unpack_material(std::uint32_t packed);
+// Components in [0, 1] (clamped) to R8G8B8A8_UNORM with R in the low byte.
+std::uint32_t pack_rgba8(float r, float g, float b, float a = 1.0f);
+
+struct Aabb {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+};
+
+// Per-chunk routing hints for hybrid rendering (used by the culling issue): the sky dome and
+// far terrain may be forced to the mono camera, near props to the stereo cameras.
+enum ChunkFlags : std::uint32_t { kChunkNone = 0, kChunkForceMono = 1, kChunkForceStereo = 2 };
+
+// A contiguous index range with its bounds: the unit of culling and of indirect draws.
+struct Chunk {
+    std::uint32_t first_index = 0;
+    std::uint32_t index_count = 0;
+    std::int32_t vertex_offset = 0;
+    Aabb bounds;
+    std::uint32_t flags = kChunkNone;
+};
+
+struct Viewpoint {
+    std::string name;  // "default" is where a participant stands; "bench-*" for the benchmark
+    rig::Pose head;
+};
+
+// A named head pose at position, turned by yaw (positive: left) then pitch (positive: up).
+Viewpoint make_viewpoint(std::string name, const glm::dvec3& position, double yaw_degrees = 0.0,
+                         double pitch_degrees = 0.0);
+
+struct Lighting {
+    glm::vec3 sun_direction{0.3f, 0.8f, 0.4f};  // unit vector pointing towards the sun
+    glm::vec3 sun_radiance{3.0f, 2.85f, 2.6f};
+    glm::vec3 sky_zenith{0.18f, 0.36f, 0.75f};
+    glm::vec3 sky_horizon{0.70f, 0.80f, 0.92f};
+    glm::vec3 ground_albedo{0.30f, 0.28f, 0.25f};  // below the horizon, for reflections
+};
+
+struct Scene {
+    SceneId id = SceneId::Spheres;
+    std::string name;  // "beams", "landscape", "spheres"
+    Detail detail = Detail::Test;
+    std::uint64_t seed = 0;
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;  // chunk-relative: add Chunk::vertex_offset
+    std::vector<Chunk> chunks;
+    Aabb bounds;
+    std::vector<Viewpoint> viewpoints;  // the first is "default"
+    Lighting lighting;
+
+    std::size_t triangle_count() const { return indices.size() / 3; }
+    // The viewpoint with this name, or nullptr.
+    const Viewpoint* find_viewpoint(const std::string& name) const;
+};
+
+}  // namespace monoplane::scenes
