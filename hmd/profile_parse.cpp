@@ -1,0 +1,322 @@
+// Parsing and validation of HMD profile TOML (DESIGN.md section 4). Every value the rig will use
+// is checked here, so the rig may assert on its inputs instead of re-validating them.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "hmd/profile.h"
+#include "hmd/toml_problems.h"
+
+namespace monoplane::hmd {
+namespace {
+
+// Bounds that catch typos and unit mix-ups (millimetres for metres, degrees for tangents) while
+// admitting every real headset.
+constexpr double kMaxIpd = 0.1;             // metres; human IPDs lie around 0.05 to 0.08
+constexpr std::int64_t kMinPixels = 16;     // smaller is no display, only a typo
+constexpr std::int64_t kMaxPixels = 16384;  // common maxImageDimension2D of desktop GPUs
+constexpr double kMaxAbsTangent = 10.0;     // atan(10) = 84.3 degrees from the view axis
+
+constexpr std::array<std::string_view, 6> kTopLevelKeys = {"name",   "ipd",  "width",
+                                                           "height", "left", "right"};
+constexpr std::array<std::string_view, 5> kEyeKeys = {"tan_left", "tan_right", "tan_down", "tan_up",
+                                                      "cant_deg"};
+
+struct TangentRule {
+    std::string_view key;
+    double rig::Tangents::*field;
+    bool negative;  // left and down lie on the negative side of the view axis
+    std::string_view sign_hint;
+};
+
+constexpr std::string_view kHorizontalSignHint =
+    "tan_left < 0 < tan_right: the view axis lies inside the frustum";
+// The most likely cause of a wrong vertical sign is a value copied from OpenVR.
+constexpr std::string_view kVerticalSignHint =
+    "tan_down < 0 < tan_up: profiles use OpenXR's XrFovf convention, up positive; OpenVR's "
+    "GetProjectionRaw gives top and bottom with the opposite sign";
+
+constexpr std::array<TangentRule, 4> kTangentRules = {{
+    {"tan_left", &rig::Tangents::left, true, kHorizontalSignHint},
+    {"tan_right", &rig::Tangents::right, false, kHorizontalSignHint},
+    {"tan_down", &rig::Tangents::down, true, kVerticalSignHint},
+    {"tan_up", &rig::Tangents::up, false, kVerticalSignHint},
+}};
+
+// A table being read and its name in messages: "" for the document's root, "left" for [left].
+struct Scope {
+    const toml::table& table;
+    std::string name;
+
+    std::string qualified(std::string_view key) const {
+        return name.empty() ? std::string(key) : name + "." + std::string(key);
+    }
+};
+
+std::string quoted(std::string_view key) {
+    return "'" + std::string(key) + "'";
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> previous(b.size() + 1);
+    std::vector<std::size_t> current(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        current[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+            current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
+        }
+        std::swap(previous, current);
+    }
+    return previous[b.size()];
+}
+
+std::string join(std::span<const std::string_view> words) {
+    std::string text;
+    for (std::string_view word : words) {
+        if (!text.empty()) text += ", ";
+        text += word;
+    }
+    return text;
+}
+
+// Unknown keys are refused rather than ignored: a misspelt `tan_lft` would otherwise leave the
+// real key missing at best, or silently keep a default at worst.
+void report_unknown_keys(const Scope& scope, std::span<const std::string_view> known,
+                         TomlProblems& problems) {
+    for (const auto& [key, node] : scope.table) {
+        const std::string_view name = key.str();
+        if (std::ranges::find(known, name) != known.end()) continue;
+        const auto distance_to = [&](std::string_view candidate) {
+            return edit_distance(name, candidate);
+        };
+        const std::string_view closest = *std::ranges::min_element(known, {}, distance_to);
+        std::string message = "unknown key " + quoted(scope.qualified(name));
+        if (distance_to(closest) <= 2) {
+            message += " (did you mean " + quoted(scope.qualified(closest)) + "?)";
+        } else {
+            message += " (known keys" + (scope.name.empty() ? "" : " in [" + scope.name + "]") +
+                       ": " + join(known) + ")";
+        }
+        problems.add(key.source(), message);
+    }
+}
+
+const toml::node* find_required(const Scope& scope, std::string_view key, TomlProblems& problems) {
+    const toml::node* node = scope.table.get(key);
+    if (node == nullptr) {
+        // A key missing inside [left] is reported at the [left] header. The root's region is
+        // line 1, which would point at whatever happens to be there, so it gets no line.
+        const std::string message = "missing required key " + quoted(scope.qualified(key));
+        if (scope.name.empty()) {
+            problems.add(message);
+        } else {
+            problems.add(scope.table.source(), message);
+        }
+    }
+    return node;
+}
+
+void report_wrong_type(const toml::node& node, std::string_view qualified_key,
+                       std::string_view expected, TomlProblems& problems) {
+    problems.add(node.source(), "key " + quoted(qualified_key) + " must be " +
+                                    std::string(expected) + ", but is " +
+                                    std::string(toml_type_phrase(node.type())));
+}
+
+// Integers are accepted where a real number is expected: `tan_up = 1` means 1.0.
+std::optional<double> read_finite_number(const toml::node& node, std::string_view qualified_key,
+                                         TomlProblems& problems) {
+    double value = 0.0;
+    if (const auto* integer = node.as_integer()) {
+        value = static_cast<double>(integer->get());
+    } else if (const auto* real = node.as_floating_point()) {
+        value = real->get();
+    } else {
+        report_wrong_type(node, qualified_key, "a number", problems);
+        return std::nullopt;
+    }
+    if (!std::isfinite(value)) {
+        problems.add(node.source(), "key " + quoted(qualified_key) +
+                                        " must be a finite number, got " + format_number(value));
+        return std::nullopt;
+    }
+    return value;
+}
+
+std::optional<std::string> read_name(const Scope& root, TomlProblems& problems) {
+    const toml::node* node = find_required(root, "name", problems);
+    if (node == nullptr) return std::nullopt;
+    const auto* text = node->as_string();
+    if (text == nullptr) {
+        report_wrong_type(*node, "name", "a string", problems);
+        return std::nullopt;
+    }
+    if (text->get().empty()) {
+        problems.add(node->source(), "key 'name' must not be empty");
+        return std::nullopt;
+    }
+    return text->get();
+}
+
+std::optional<double> read_ipd(const Scope& root, TomlProblems& problems) {
+    const toml::node* node = find_required(root, "ipd", problems);
+    if (node == nullptr) return std::nullopt;
+    const std::optional<double> ipd = read_finite_number(*node, "ipd", problems);
+    if (!ipd) return std::nullopt;
+    // 0 is allowed: the rig's degenerate but well-defined case (C coincides with the eyes).
+    if (*ipd < 0.0 || *ipd > kMaxIpd) {
+        std::string message = "key 'ipd' = " + format_number(*ipd) + " is outside [0, " +
+                              format_number(kMaxIpd) + "] metres";
+        if (*ipd >= 1.0) message += " (millimetres? write 0.064 for 64 mm)";
+        problems.add(node->source(), message);
+        return std::nullopt;
+    }
+    return ipd;
+}
+
+std::optional<int> read_pixels(const Scope& root, std::string_view key, TomlProblems& problems) {
+    const toml::node* node = find_required(root, key, problems);
+    if (node == nullptr) return std::nullopt;
+    const auto* integer = node->as_integer();
+    if (integer == nullptr) {
+        report_wrong_type(*node, key, "an integer number of pixels", problems);
+        return std::nullopt;
+    }
+    const std::int64_t pixels = integer->get();
+    if (pixels < kMinPixels || pixels > kMaxPixels) {
+        problems.add(node->source(), "key " + quoted(key) + " = " + std::to_string(pixels) +
+                                         " is outside [" + std::to_string(kMinPixels) + ", " +
+                                         std::to_string(kMaxPixels) + "] pixels");
+        return std::nullopt;
+    }
+    return static_cast<int>(pixels);
+}
+
+std::optional<double> read_tangent(const Scope& eye, const TangentRule& rule,
+                                   TomlProblems& problems) {
+    const toml::node* node = find_required(eye, rule.key, problems);
+    if (node == nullptr) return std::nullopt;
+    const std::string key = eye.qualified(rule.key);
+    const std::optional<double> tangent = read_finite_number(*node, key, problems);
+    if (!tangent) return std::nullopt;
+    if (rule.negative ? !(*tangent < 0.0) : !(*tangent > 0.0)) {
+        problems.add(node->source(), "key " + quoted(key) + " must be " +
+                                         (rule.negative ? "negative" : "positive") + ", got " +
+                                         format_number(*tangent) + " (" +
+                                         std::string(rule.sign_hint) + ")");
+        return std::nullopt;
+    }
+    if (std::abs(*tangent) > kMaxAbsTangent) {
+        problems.add(node->source(),
+                     "key " + quoted(key) + " = " + format_number(*tangent) +
+                         " is implausible: |tangent| must not exceed " +
+                         format_number(kMaxAbsTangent) +
+                         " (84 degrees from the view axis); is it an angle in degrees?");
+        return std::nullopt;
+    }
+    return tangent;
+}
+
+// cant_deg (a per-eye yaw for canted displays, e.g. Pimax, Valve Index) is recognised so that
+// such a profile is refused with a reason instead of an "unknown key", and so that the rig's
+// parallel-eye assumption is never silently wrong.
+void refuse_canted_display(const Scope& eye, TomlProblems& problems) {
+    const toml::node* node = eye.table.get("cant_deg");
+    if (node == nullptr) return;
+    const std::string key = eye.qualified("cant_deg");
+    const std::optional<double> cant = read_finite_number(*node, key, problems);
+    if (cant && *cant != 0.0) {
+        problems.add(node->source(), "key " + quoted(key) + " = " + format_number(*cant) +
+                                         ": canted displays are not supported yet by the rig; "
+                                         "remove the key or set it to 0");
+    }
+}
+
+std::optional<rig::Tangents> read_eye(const Scope& root, std::string_view eye_name,
+                                      TomlProblems& problems) {
+    const toml::node* node = find_required(root, eye_name, problems);
+    if (node == nullptr) return std::nullopt;
+    const toml::table* table = node->as_table();
+    if (table == nullptr) {
+        report_wrong_type(
+            *node, eye_name,
+            "a table ([" + std::string(eye_name) + "] with tan_left, tan_right, tan_down, tan_up)",
+            problems);
+        return std::nullopt;
+    }
+    const Scope eye{*table, std::string(eye_name)};
+    report_unknown_keys(eye, kEyeKeys, problems);
+    refuse_canted_display(eye, problems);
+    rig::Tangents tangents;
+    bool complete = true;
+    for (const TangentRule& rule : kTangentRules) {
+        const std::optional<double> tangent = read_tangent(eye, rule, problems);
+        if (tangent) {
+            tangents.*rule.field = *tangent;
+        } else {
+            complete = false;
+        }
+    }
+    if (!complete) return std::nullopt;
+    return tangents;
+}
+
+Error syntax_error(const toml::parse_error& error, std::string_view source_name) {
+    TomlProblems problems(source_name);
+    problems.add(error.source(), "TOML syntax error: " + std::string(error.description()));
+    return problems.error();
+}
+
+Result<toml::table> parse_toml(std::string_view text, std::string_view source_name) {
+#if TOML_EXCEPTIONS
+    try {
+        return toml::parse(text, source_name);
+    } catch (const toml::parse_error& error) {
+        return syntax_error(error, source_name);
+    }
+#else
+    toml::parse_result result = toml::parse(text, source_name);
+    if (!result) return syntax_error(result.error(), source_name);
+    return std::move(result).table();
+#endif
+}
+
+}  // namespace
+
+Result<HmdProfile> parse_hmd_profile(std::string_view toml_text, std::string_view source_name) {
+    Result<toml::table> document = parse_toml(toml_text, source_name);
+    if (!document) return document.error();
+
+    // Every reader records its problems and goes on, so the user sees all of them at once.
+    TomlProblems problems(source_name);
+    const Scope root{*document, ""};
+    report_unknown_keys(root, kTopLevelKeys, problems);
+    std::optional<std::string> name = read_name(root, problems);
+    const std::optional<double> ipd = read_ipd(root, problems);
+    const std::optional<int> width = read_pixels(root, "width", problems);
+    const std::optional<int> height = read_pixels(root, "height", problems);
+    const std::optional<rig::Tangents> left = read_eye(root, "left", problems);
+    const std::optional<rig::Tangents> right = read_eye(root, "right", problems);
+    if (!problems.empty()) return problems.error();
+
+    // A reader returns nullopt only after recording a problem.
+    return HmdProfile{.name = std::move(*name),
+                      .ipd = *ipd,
+                      .width = *width,
+                      .height = *height,
+                      .left = *left,
+                      .right = *right,
+                      .source = std::string(source_name)};
+}
+
+}  // namespace monoplane::hmd

@@ -1,0 +1,35 @@
+// A study condition (DESIGN.md sections 1 and 7): what one alternative of a trial shows — a scene,
+// a render mode and the mono-plane distance. Plain data, so the study stays free of the
+// renderer; the app translates a condition into scene generation and a render mode.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "common/result.h"
+#include "study/render_mode.h"
+
+namespace monoplane::study {
+
+struct Condition {
+    std::string scene;  // one of study_scene_names()
+    RenderMode mode = RenderMode::Stereo;
+    // Metres in front of the eyes. It identifies the trial's distance even for modes that ignore
+    // it (stereo), so both alternatives of a trial carry the same value.
+    double mono_plane = 0.0;
+};
+
+// The scenes a study may name (DESIGN.md section 5): "beams", "landscape", "spheres".
+std::span<const std::string_view> study_scene_names();
+
+// "spheres / hybrid / m = 8 m": for logs and error messages.
+std::string describe(const Condition& condition);
+
+// Checks a condition against the clip range it will be rendered with (default 0.1 and 1000 m):
+// the scene is known and the mono plane is finite and strictly inside (near, far) — at or beyond
+// either end hybrid rendering degenerates (DESIGN.md section 3). Returns the condition unchanged
+// when valid. May be called at any time; near and far are checked too (finite, 0 < near < far).
+Result<Condition> validate_condition(const Condition& condition, double near, double far);
+
+}  // namespace monoplane::study

@@ -1,0 +1,29 @@
+// The render modes a study can compare (DESIGN.md section 6), by the names the CLI, protocol
+// files and the database use. The study only names them; the app maps them to renderer modes.
+#pragma once
+
+#include <span>
+#include <string_view>
+
+#include "common/result.h"
+
+namespace monoplane::study {
+
+enum class RenderMode {
+    Stereo,           // "stereo": the reference, the full scene once per eye
+    StereoMultiview,  // "stereo-multiview": both eyes in one pass (VK_KHR_multiview)
+    StereoGs,         // "stereo-gs": both eyes in one pass via a geometry shader
+    Hybrid,           // "hybrid": Fink et al. 2019, stereo up to the mono plane, mono beyond
+    HybridFarfield,   // "hybrid-farfield": the engine-style far-field variant (papers/003)
+};
+
+// Every mode, in the order of the enum: for help texts and exhaustive tests.
+std::span<const RenderMode> all_render_modes();
+
+// The CLI name, e.g. "stereo-multiview". Names are stored in databases: never change one.
+std::string_view render_mode_name(RenderMode mode);
+
+// Exact, case-sensitive match of a CLI name; the error lists the valid names.
+Result<RenderMode> parse_render_mode(std::string_view name);
+
+}  // namespace monoplane::study
