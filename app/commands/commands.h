@@ -1,0 +1,13 @@
+// Each CLI command registers itself on the root CLI::App; main() only dispatches.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands/global_options.h"
+
+namespace monoplane::app {
+
+void add_render_command(CLI::App& root, const GlobalOptions& global);
+void add_devices_command(CLI::App& root, const GlobalOptions& global);
+
+}  // namespace monoplane::app

@@ -1,0 +1,202 @@
+// `monoplane render`: one scene, one mode, one viewpoint -> left.png, right.png, stats.json.
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+
+#include "app/commands/commands.h"
+#include "app/commands/frame_summary.h"
+#include "app/commands/json_writer.h"
+#include "app/png.h"
+#include "hmd/profile.h"
+#include "renderer/modes/stereo_mode.h"
+#include "renderer/vk/context.h"
+#include "scenes/generate.h"
+
+namespace monoplane::app {
+namespace {
+
+struct RenderOptions {
+    std::string scene = "spheres";
+    std::string mode = "stereo";
+    std::optional<double> mono_plane;
+    std::string hmd = "vive";
+    std::optional<double> ipd;
+    int width = 0;
+    int height = 0;
+    std::string view = "default";
+    std::uint64_t seed = scenes::kDefaultSeed;
+    std::string detail = "low";
+    int frames = 1;
+    int warmup = 0;
+    int shadow_resolution = 4096;
+    std::string out;
+    bool json = false;
+};
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text;
+}
+
+std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
+                         const scenes::Scene& scene, const vk_core::Context& ctx, int width,
+                         int height, const FrameSummary& s, const std::filesystem::path& out) {
+    JsonWriter j;
+    j.begin_object();
+    j.value("command", "render").value("scene", scene.name).value("mode", o.mode);
+    j.value("detail", o.detail).value("seed", static_cast<std::uint64_t>(o.seed));
+    j.value("view", o.view).value("hmd", profile.name).value("ipd", o.ipd.value_or(profile.ipd));
+    j.value("width", width).value("height", height);
+    j.value("device", ctx.device_info().name);
+    j.value("triangles", static_cast<std::uint64_t>(scene.triangle_count()));
+    j.value("chunks", static_cast<std::uint64_t>(scene.chunks.size()));
+    j.value("frames", s.frames).value("warmup_frames", o.warmup);
+    j.value("frame_ms_median", s.frame_ms_median).value("frame_ms_p90", s.frame_ms_p90);
+    j.value("cpu_ms_median", s.cpu_ms_median);
+    j.begin_object("passes");
+    for (const auto& [name, ms] : s.pass_ms_median) j.value(name, ms);
+    j.end_object();
+    std::uint64_t primitives = 0;
+    std::uint64_t fragments = 0;
+    j.begin_object("views");
+    for (const profile::ViewStatistics& v : s.views) {
+        j.begin_object(v.view);
+        j.value("input_primitives", v.input_primitives);
+        j.value("clipping_invocations", v.clipping_invocations);
+        j.value("clipping_primitives", v.clipping_primitives);
+        j.value("vertex_invocations", v.vertex_invocations);
+        j.value("fragment_invocations", v.fragment_invocations);
+        j.end_object();
+        primitives += v.clipping_invocations;
+        fragments += v.fragment_invocations;
+    }
+    j.end_object();
+    j.value("primitives", primitives).value("fragments", fragments);
+    j.begin_object("files");
+    j.value("left", (out / "left.png").string()).value("right", (out / "right.png").string());
+    j.end_object();
+    j.end_object();
+    return j.str();
+}
+
+void run_render(const RenderOptions& o, const GlobalOptions& global) {
+    if (o.mode != "stereo") {
+        throw UserError(
+            "--mode " + o.mode +
+            ": not available yet; this build renders `stereo` (hybrid, "
+            "hybrid-farfield, stereo-multiview and stereo-gs arrive with their issues)");
+    }
+    const auto scene_id = scenes::parse_scene_id(o.scene);
+    if (!scene_id)
+        throw UserError("--scene " + o.scene + ": unknown; use beams, landscape or spheres");
+    const auto detail = scenes::parse_detail(o.detail);
+    if (!detail)
+        throw UserError("--detail " + o.detail + ": unknown; use test, low, medium, high or ultra");
+    if ((o.width > 0) != (o.height > 0)) throw UserError("--width and --height go together");
+    if (o.ipd && !(*o.ipd >= 0.0 && *o.ipd <= 0.1))
+        throw UserError("--ipd must be within [0, 0.1] m");
+
+    // Validate the output path before any work, so nothing is computed and then lost.
+    const std::filesystem::path out(o.out);
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (ec || !std::filesystem::is_directory(out)) {
+        throw UserError("--out " + o.out + ": cannot create the directory (" + ec.message() + ")");
+    }
+
+    const hmd::HmdProfile profile = hmd::load_hmd_profile(o.hmd).value_or_throw();
+    const int width = o.width > 0 ? o.width : profile.width;
+    const int height = o.height > 0 ? o.height : profile.height;
+
+    std::cerr << "generating " << o.scene << " (detail " << o.detail << ", seed " << o.seed
+              << ")\n";
+    const scenes::Scene scene = scenes::generate_scene(*scene_id, *detail, o.seed);
+    const scenes::Viewpoint* viewpoint = scene.find_viewpoint(o.view);
+    if (!viewpoint) {
+        std::vector<std::string> names;
+        for (const auto& v : scene.viewpoints) names.push_back(v.name);
+        throw UserError("--view " + o.view + ": " + o.scene + " has the views " + joined(names));
+    }
+
+    auto ctx = vk_core::Context::create({global.validation, global.device}).value_or_throw();
+    std::cerr << "device: " << ctx->device_info().name << "\n";
+    modes::RendererOptions renderer_options;
+    renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
+    modes::StereoMode stereo(
+        *ctx, scene,
+        vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
+        renderer_options);
+    modes::StereoViewInputs inputs;
+    inputs.head = viewpoint->head;
+    inputs.ipd = o.ipd.value_or(profile.ipd);
+    inputs.left = profile.left;
+    inputs.right = profile.right;
+
+    std::vector<profile::FrameStats> measured;
+    const int total = o.warmup + o.frames;
+    for (int frame = 0; frame < total; ++frame) {
+        profile::FrameStats stats = stereo.render_frame(inputs);
+        if (frame >= o.warmup) measured.push_back(std::move(stats));
+        if (total > 1) std::cerr << "\rframe " << frame + 1 << "/" << total << std::flush;
+    }
+    if (total > 1) std::cerr << "\n";
+
+    write_png(out / "left.png", stereo.eye_image(modes::Eye::kLeft)).value_or_throw();
+    write_png(out / "right.png", stereo.eye_image(modes::Eye::kRight)).value_or_throw();
+    const std::string json =
+        summary_json(o, profile, scene, *ctx, width, height, summarize(measured), out);
+    std::ofstream(out / "stats.json") << json << "\n";
+    if (o.json) std::cout << json << "\n";
+    std::cerr << "wrote " << (out / "left.png").string() << ", " << (out / "right.png").string()
+              << " and stats.json\n";
+
+    if (global.validation && ctx->validation_messages().count() > 0) {
+        for (const auto& m : ctx->validation_messages().first_messages()) std::cerr << m << "\n";
+        throw UserError(std::to_string(ctx->validation_messages().count()) +
+                        " Vulkan validation message(s)");
+    }
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& root, const GlobalOptions& global) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* cmd = root.add_subcommand("render", "Render one scene in one mode to PNG files");
+    cmd->add_option("--scene", options->scene, "beams, landscape or spheres")
+        ->capture_default_str();
+    cmd->add_option("--mode", options->mode, "stereo (more modes arrive with their issues)")
+        ->capture_default_str();
+    cmd->add_option("--mono-plane", options->mono_plane,
+                    "Mono-plane distance m in metres (hybrid modes)");
+    cmd->add_option("--hmd", options->hmd,
+                    "HMD profile: vive, vive-pro, symmetric-90, "
+                    "symmetric-110 or a TOML file")
+        ->capture_default_str();
+    cmd->add_option("--ipd", options->ipd,
+                    "Interpupillary distance in metres (default: the profile's)");
+    cmd->add_option("--width", options->width, "Per-eye width in pixels (default: the profile's)")
+        ->check(CLI::Range(16, 16384));
+    cmd->add_option("--height", options->height,
+                    "Per-eye height in pixels (default: the profile's)")
+        ->check(CLI::Range(16, 16384));
+    cmd->add_option("--view", options->view, "Viewpoint name of the scene")->capture_default_str();
+    cmd->add_option("--seed", options->seed, "Scene seed")->capture_default_str();
+    cmd->add_option("--detail", options->detail, "test, low, medium, high or ultra")
+        ->capture_default_str();
+    cmd->add_option("--frames", options->frames, "Frames to measure")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    cmd->add_option("--warmup", options->warmup, "Frames rendered before measuring")
+        ->check(CLI::Range(0, 100000))
+        ->capture_default_str();
+    cmd->add_option("--shadow-resolution", options->shadow_resolution, "Shadow map size in texels")
+        ->check(CLI::Range(256, 16384))
+        ->capture_default_str();
+    cmd->add_option("--out", options->out, "Output directory")->required();
+    cmd->add_flag("--json", options->json, "Print the statistics as JSON on stdout");
+    cmd->callback([options, &global] { run_render(*options, global); });
+}
+
+}  // namespace monoplane::app

@@ -1,0 +1,37 @@
+// monoplane: hybrid mono-stereo rendering for VR perception studies (see README.md).
+// Exceptions end here: a user error prints its message and exits 1 (DESIGN.md section 10).
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands/commands.h"
+#include "common/result.h"
+#include "renderer/vk/vulkan.h"
+
+int main(int argc, char** argv) {
+    using namespace monoplane::app;
+    CLI::App root{
+        "monoplane - hybrid mono-stereo rendering (Fink et al. 2019) for VR perception studies"};
+    root.require_subcommand(1);
+    root.fallthrough();  // --device and --validation may follow the command name too
+    GlobalOptions global;
+    root.add_option("--device", global.device,
+                    "Vulkan device: index or part of its name (default: discrete GPU, else "
+                    "llvmpipe); see `monoplane devices`");
+    root.add_flag("--validation", global.validation,
+                  "Enable the Khronos validation layer; any message is an error");
+    add_render_command(root, global);
+    add_devices_command(root, global);
+    try {
+        root.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return root.exit(e);
+    } catch (const monoplane::UserError& e) {
+        std::cerr << "monoplane: " << e.what() << "\n";
+        return 1;
+    } catch (const vk::SystemError& e) {
+        std::cerr << "monoplane: Vulkan error: " << e.what() << "\n";
+        return 2;
+    }
+    return 0;
+}

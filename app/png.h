@@ -1,0 +1,13 @@
+// PNG files for rendered images (stb_image_write from Debian's libstb).
+#pragma once
+
+#include <filesystem>
+
+#include "common/result.h"
+#include "renderer/modes/view_setup.h"
+
+namespace monoplane::app {
+
+Result<bool> write_png(const std::filesystem::path& path, const modes::RgbaImage& image);
+
+}  // namespace monoplane::app

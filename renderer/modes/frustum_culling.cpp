@@ -1,0 +1,32 @@
+#include "renderer/modes/frustum_culling.h"
+
+#include <glm/ext/matrix_transform.hpp>
+
+namespace monoplane::modes {
+
+std::array<glm::dvec4, 6> frustum_planes(const glm::dmat4& m) {
+    const glm::dmat4 t = glm::transpose(m);  // t[i] is row i of m
+    return {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[2], t[3] - t[2]};
+}
+
+bool intersects(const std::array<glm::dvec4, 6>& planes, const scenes::Aabb& box) {
+    for (const glm::dvec4& p : planes) {
+        // The box corner furthest along the plane's normal.
+        const glm::dvec3 corner(p.x >= 0 ? box.max.x : box.min.x, p.y >= 0 ? box.max.y : box.min.y,
+                                p.z >= 0 ? box.max.z : box.min.z);
+        if (p.x * corner.x + p.y * corner.y + p.z * corner.z + p.w < 0.0) return false;
+    }
+    return true;
+}
+
+std::vector<std::uint32_t> visible_chunks(const scenes::Scene& scene, const glm::dmat4& view_proj) {
+    const auto planes = frustum_planes(view_proj);
+    std::vector<std::uint32_t> visible;
+    visible.reserve(scene.chunks.size());
+    for (std::uint32_t i = 0; i < scene.chunks.size(); ++i) {
+        if (intersects(planes, scene.chunks[i].bounds)) visible.push_back(i);
+    }
+    return visible;
+}
+
+}  // namespace monoplane::modes

@@ -1,0 +1,27 @@
+// View-frustum culling of chunk bounds on the CPU. The culling issue replaces this with one GPU
+// compute pass for all views; until then the reference stereo mode culls here, as the paper's
+// reference did ("frustum culling was enabled during all configurations").
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/ext/matrix_double4x4.hpp>
+#include <glm/ext/vector_double4.hpp>
+
+#include "scenes/scene.h"
+
+namespace monoplane::modes {
+
+// The six planes (a, b, c, d: inside where a x + b y + c z + d >= 0) of a Vulkan clip space
+// 0 <= z <= w, extracted from a world -> clip matrix (Gribb and Hartmann).
+std::array<glm::dvec4, 6> frustum_planes(const glm::dmat4& view_proj);
+
+// True unless the box lies wholly outside one plane (conservative).
+bool intersects(const std::array<glm::dvec4, 6>& planes, const scenes::Aabb& box);
+
+// Indices of the chunks whose bounds intersect the frustum of view_proj.
+std::vector<std::uint32_t> visible_chunks(const scenes::Scene& scene, const glm::dmat4& view_proj);
+
+}  // namespace monoplane::modes

@@ -1,0 +1,41 @@
+// What a mode needs to know about the viewer for one frame: the head pose and each eye's
+// calibrated frustum (from an HMD profile or, later, from OpenXR's xrLocateViews).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/ext/matrix_double4x4.hpp>
+
+#include "renderer/rig/pose.h"
+#include "renderer/rig/tangents.h"
+
+namespace monoplane::modes {
+
+struct StereoViewInputs {
+    rig::Pose head;
+    double ipd = 0.064;
+    rig::Tangents left;
+    rig::Tangents right;
+    double near = 0.1;  // DESIGN.md section 2: the paper's values
+    double far = 1000.0;
+};
+
+enum class Eye { kLeft = 0, kRight = 1 };
+inline const char* eye_name(Eye eye) {
+    return eye == Eye::kLeft ? "left" : "right";
+}
+
+// The eye's position in the head frame: x = -ipd/2 (left) or +ipd/2 (right).
+glm::dvec3 eye_offset(Eye eye, double ipd);
+// World -> clip (reversed Z) of one eye.
+glm::dmat4 eye_view_proj(const StereoViewInputs& inputs, Eye eye);
+
+// An 8-bit RGBA image read back from the GPU, rows top to bottom, sRGB-encoded.
+struct RgbaImage {
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    std::vector<std::uint8_t> pixels;  // width * height * 4
+};
+
+}  // namespace monoplane::modes

@@ -1,0 +1,95 @@
+#include "renderer/passes/forward/forward_pass.h"
+
+#include <array>
+
+namespace monoplane::passes {
+namespace {
+const std::uint32_t kForwardVert[] = {
+#include "forward.vert.spv.inc"
+};
+const std::uint32_t kForwardFrag[] = {
+#include "forward.frag.spv.inc"
+};
+const std::uint32_t kFullscreenVert[] = {
+#include "fullscreen.vert.spv.inc"
+};
+const std::uint32_t kSkyFrag[] = {
+#include "sky.frag.spv.inc"
+};
+}  // namespace
+
+ForwardPass::ForwardPass(const vk_core::Context& ctx) {
+    using Stage = vk::ShaderStageFlagBits;
+    const std::array bindings = {
+        vk::DescriptorSetLayoutBinding(0, vk::DescriptorType::eUniformBuffer, 1,
+                                       Stage::eVertex | Stage::eFragment),
+        vk::DescriptorSetLayoutBinding(1, vk::DescriptorType::eCombinedImageSampler, 1,
+                                       Stage::eFragment),
+    };
+    set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
+                                                vk::DescriptorSetLayoutCreateInfo({}, bindings));
+    const vk::DescriptorSetLayout set_layout = *set_layout_;
+    layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout));
+
+    const vk::raii::ShaderModule forward_vert = vk_core::make_shader(ctx, kForwardVert);
+    const vk::raii::ShaderModule forward_frag = vk_core::make_shader(ctx, kForwardFrag);
+    vk_core::GraphicsPipelineDesc geometry;
+    geometry.layout = *layout_;
+    geometry.vertex = *forward_vert;
+    geometry.fragment = *forward_frag;
+    geometry.vertex_bindings = SceneGeometry::vertex_bindings();
+    geometry.vertex_attributes = SceneGeometry::vertex_attributes();
+    geometry.color_formats = {kHdrFormat};
+    geometry.depth_format = kDepthFormat;
+    geometry_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
+
+    // The sky covers only pixels still at the cleared far depth (0 with reversed Z).
+    const vk::raii::ShaderModule fullscreen_vert = vk_core::make_shader(ctx, kFullscreenVert);
+    const vk::raii::ShaderModule sky_frag = vk_core::make_shader(ctx, kSkyFrag);
+    vk_core::GraphicsPipelineDesc sky;
+    sky.layout = *layout_;
+    sky.vertex = *fullscreen_vert;
+    sky.fragment = *sky_frag;
+    sky.color_formats = {kHdrFormat};
+    sky.depth_format = kDepthFormat;
+    sky.cull = vk::CullModeFlagBits::eNone;
+    sky.depth_write = false;
+    sky.depth_compare = vk::CompareOp::eEqual;
+    sky_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
+}
+
+void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
+                         vk::DescriptorSet view_set, const SceneGeometry& geometry,
+                         const DrawList& draws) const {
+    using Stage = vk::PipelineStageFlagBits2;
+    using Access = vk::AccessFlagBits2;
+    vk_core::transition(cmd, targets.hdr, vk::ImageLayout::eUndefined,
+                        vk::ImageLayout::eColorAttachmentOptimal, Stage::eFragmentShader,
+                        Access::eShaderSampledRead, Stage::eColorAttachmentOutput,
+                        Access::eColorAttachmentWrite);
+    vk_core::transition(cmd, targets.depth, vk::ImageLayout::eUndefined,
+                        vk::ImageLayout::eDepthAttachmentOptimal,
+                        Stage::eLateFragmentTests | Stage::eFragmentShader,
+                        Access::eDepthStencilAttachmentWrite | Access::eShaderSampledRead,
+                        Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
+                        Access::eDepthStencilAttachmentWrite | Access::eDepthStencilAttachmentRead);
+    const vk::RenderingAttachmentInfo color(
+        targets.hdr.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
+        vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore);
+    const vk::RenderingAttachmentInfo depth(
+        targets.depth.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
+        vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
+        vk::ClearValue(vk::ClearDepthStencilValue(0.0f, 0)));  // reversed Z: far is 0
+    const vk::Extent2D extent = targets.hdr.desc().extent;
+    cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, extent), 1, 0, color, &depth));
+    vk_core::set_viewport_and_scissor(cmd, extent);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, view_set, {});
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *geometry_pipeline_);
+    geometry.bind(cmd);
+    draws.draw(cmd);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
+    cmd.draw(3, 1, 0, 0);
+    cmd.endRendering();
+}
+
+}  // namespace monoplane::passes

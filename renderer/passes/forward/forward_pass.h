@@ -1,0 +1,39 @@
+// Forward shading of one view into an HDR target, then the sky where nothing was drawn.
+// Reads: view constants (set 0, binding 0), the shadow map (binding 1). Writes: HDR colour, depth.
+#pragma once
+
+#include "renderer/passes/shared/scene_geometry.h"
+#include "renderer/passes/shared/view_constants.h"
+#include "renderer/vk/image.h"
+#include "renderer/vk/pipeline.h"
+
+namespace monoplane::passes {
+
+struct ForwardTargets {
+    const vk_core::Image& hdr;    // kHdrFormat, colour attachment
+    const vk_core::Image& depth;  // kDepthFormat, reversed Z
+};
+
+class ForwardPass {
+  public:
+    static constexpr vk::Format kHdrFormat = vk::Format::eR16G16B16A16Sfloat;
+    static constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
+
+    explicit ForwardPass(const vk_core::Context& ctx);
+
+    vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
+
+    // Expects both targets in eUndefined (their contents are cleared); leaves hdr in
+    // eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
+    void record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
+                vk::DescriptorSet view_set, const SceneGeometry& geometry,
+                const DrawList& draws) const;
+
+  private:
+    vk::raii::DescriptorSetLayout set_layout_{nullptr};
+    vk::raii::PipelineLayout layout_{nullptr};
+    vk::raii::Pipeline geometry_pipeline_{nullptr};
+    vk::raii::Pipeline sky_pipeline_{nullptr};
+};
+
+}  // namespace monoplane::passes

@@ -1,0 +1,43 @@
+// The sun's shadow map: depth-only, orthographic, fitted to the region around the viewer.
+#pragma once
+
+#include <glm/mat4x4.hpp>
+
+#include "renderer/passes/shared/scene_geometry.h"
+#include "renderer/vk/image.h"
+#include "renderer/vk/pipeline.h"
+
+namespace monoplane::passes {
+
+struct ShadowParams {
+    std::uint32_t resolution = 4096;
+    float region_radius_m = 160.0f;  // shadows are computed within this distance of the viewer
+    float depth_bias_constant = 1.25f;
+    float depth_bias_slope = 1.75f;
+};
+
+// Orthographic world -> shadow clip transform (depth 0 nearest the sun) that encloses `region`.
+glm::dmat4 fit_light_view_proj(const glm::dvec3& towards_sun, const scenes::Aabb& region);
+
+class ShadowPass {
+  public:
+    ShadowPass(const vk_core::Context& ctx, const ShadowParams& params);
+
+    // Leaves the shadow map in eShaderReadOnlyOptimal for the forward pass.
+    void record(const vk::raii::CommandBuffer& cmd, const SceneGeometry& geometry,
+                const DrawList& draws, const glm::mat4& light_view_proj) const;
+
+    vk::ImageView view() const { return map_.view(); }
+    vk::Sampler sampler() const { return *sampler_; }
+    float texel_size() const { return 1.0f / static_cast<float>(params_.resolution); }
+    const ShadowParams& params() const { return params_; }
+
+  private:
+    ShadowParams params_;
+    vk_core::Image map_;
+    vk::raii::Sampler sampler_{nullptr};
+    vk::raii::PipelineLayout layout_{nullptr};
+    vk::raii::Pipeline pipeline_{nullptr};
+};
+
+}  // namespace monoplane::passes

@@ -1,0 +1,32 @@
+// Per-view constants, declared once for C++ and GLSL (std140: every member is 16-byte aligned,
+// so the C++ layout is identical; static_assert below keeps it that way).
+#ifndef MONOPLANE_VIEW_CONSTANTS_H
+#define MONOPLANE_VIEW_CONSTANTS_H
+
+#ifdef __cplusplus
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+namespace monoplane::passes {
+using mat4 = glm::mat4;
+using vec4 = glm::vec4;
+#endif
+
+struct ViewConstants {
+    mat4 view_proj;        // world -> this view's clip space (reversed Z)
+    mat4 inv_view_proj;    // clip -> world, for sky rays
+    mat4 light_view_proj;  // world -> shadow-map clip space
+    vec4 camera_position;  // xyz: this view's eye position in the world
+    vec4 sun_direction;    // xyz: unit vector towards the sun
+    vec4 sun_radiance;     // rgb
+    vec4 sky_zenith;       // rgb
+    vec4 sky_horizon;      // rgb
+    vec4 ground_albedo;    // rgb: seen below the horizon in reflections
+    vec4 shadow_params;    // x: shadow texel size in uv, y: depth bias in light-depth units
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(ViewConstants) == 3 * 64 + 7 * 16, "std140 layout shared with GLSL");
+}  // namespace monoplane::passes
+#endif
+
+#endif

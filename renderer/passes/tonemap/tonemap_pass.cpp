@@ -1,0 +1,62 @@
+#include "renderer/passes/tonemap/tonemap_pass.h"
+
+namespace monoplane::passes {
+namespace {
+const std::uint32_t kFullscreenVert[] = {
+#include "fullscreen.vert.spv.inc"
+};
+const std::uint32_t kTonemapFrag[] = {
+#include "tonemap.frag.spv.inc"
+};
+}  // namespace
+
+TonemapPass::TonemapPass(const vk_core::Context& ctx) {
+    const vk::DescriptorSetLayoutBinding binding(0, vk::DescriptorType::eCombinedImageSampler, 1,
+                                                 vk::ShaderStageFlagBits::eFragment);
+    set_layout_ =
+        vk::raii::DescriptorSetLayout(ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, binding));
+    sampler_ = vk::raii::Sampler(
+        ctx.device(),
+        vk::SamplerCreateInfo({}, vk::Filter::eNearest, vk::Filter::eNearest,
+                              vk::SamplerMipmapMode::eNearest, vk::SamplerAddressMode::eClampToEdge,
+                              vk::SamplerAddressMode::eClampToEdge,
+                              vk::SamplerAddressMode::eClampToEdge));
+    const vk::DescriptorSetLayout set_layout = *set_layout_;
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(TonemapParams));
+    layout_ =
+        vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout, push));
+    const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
+    const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, kTonemapFrag);
+    vk_core::GraphicsPipelineDesc desc;
+    desc.layout = *layout_;
+    desc.vertex = *vert;
+    desc.fragment = *frag;
+    desc.color_formats = {kDisplayFormat};
+    desc.cull = vk::CullModeFlagBits::eNone;
+    desc.depth_test = false;
+    desc.depth_write = false;
+    pipeline_ = vk_core::make_graphics_pipeline(ctx, desc);
+}
+
+void TonemapPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& display,
+                         vk::DescriptorSet hdr_set, const TonemapParams& params) const {
+    using Stage = vk::PipelineStageFlagBits2;
+    using Access = vk::AccessFlagBits2;
+    vk_core::transition(cmd, display, vk::ImageLayout::eUndefined,
+                        vk::ImageLayout::eColorAttachmentOptimal, Stage::eTransfer,
+                        Access::eTransferRead, Stage::eColorAttachmentOutput,
+                        Access::eColorAttachmentWrite);
+    const vk::RenderingAttachmentInfo color(
+        display.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
+        vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore);
+    const vk::Extent2D extent = display.desc().extent;
+    cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, extent), 1, 0, color));
+    vk_core::set_viewport_and_scissor(cmd, extent);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline_);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, hdr_set, {});
+    cmd.pushConstants<TonemapParams>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, params);
+    cmd.draw(3, 1, 0, 0);
+    cmd.endRendering();
+}
+
+}  // namespace monoplane::passes

@@ -1,0 +1,35 @@
+// HDR -> 8-bit sRGB display image for one view.
+// Reads: the HDR image (set 0, binding 0, texel-exact). Writes: the display image.
+#pragma once
+
+#include "renderer/vk/image.h"
+#include "renderer/vk/pipeline.h"
+
+namespace monoplane::passes {
+
+struct TonemapParams {
+    float exposure = 1.0f;
+};
+
+class TonemapPass {
+  public:
+    static constexpr vk::Format kDisplayFormat = vk::Format::eR8G8B8A8Srgb;
+
+    explicit TonemapPass(const vk_core::Context& ctx);
+
+    vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
+    vk::Sampler sampler() const { return *sampler_; }
+
+    // Expects the HDR image bound in hdr_set to be in eShaderReadOnlyOptimal and `display` in
+    // eUndefined; leaves `display` in eColorAttachmentOptimal.
+    void record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& display,
+                vk::DescriptorSet hdr_set, const TonemapParams& params) const;
+
+  private:
+    vk::raii::DescriptorSetLayout set_layout_{nullptr};
+    vk::raii::Sampler sampler_{nullptr};
+    vk::raii::PipelineLayout layout_{nullptr};
+    vk::raii::Pipeline pipeline_{nullptr};
+};
+
+}  // namespace monoplane::passes

@@ -1,0 +1,33 @@
+// What one frame cost: GPU time per pass and pipeline statistics per view. Plain data, so the
+// app can print it as JSON and the benchmark can aggregate it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace monoplane::profile {
+
+struct PassTime {
+    std::string name;  // e.g. "shadow", "left.forward", "left.tonemap"
+    double gpu_ms = 0.0;
+};
+
+// Counters of VK_QUERY_TYPE_PIPELINE_STATISTICS for all draws of one view.
+struct ViewStatistics {
+    std::string view;                        // "left", "right", later "mono"
+    std::uint64_t input_primitives = 0;      // input assembly primitives
+    std::uint64_t clipping_invocations = 0;  // primitives entering clipping
+    std::uint64_t clipping_primitives = 0;   // primitives leaving clipping
+    std::uint64_t vertex_invocations = 0;
+    std::uint64_t fragment_invocations = 0;
+};
+
+struct FrameStats {
+    std::vector<PassTime> passes;
+    std::vector<ViewStatistics> views;
+    double gpu_frame_ms = 0.0;   // first pass start to last pass end
+    double cpu_record_ms = 0.0;  // command recording and culling on the CPU
+};
+
+}  // namespace monoplane::profile

@@ -1,0 +1,152 @@
+#include "renderer/vk/context.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace monoplane::vk_core {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+constexpr std::size_t kKeptMessages = 16;
+
+VKAPI_ATTR VkBool32 VKAPI_CALL on_debug_message(VkDebugUtilsMessageSeverityFlagBitsEXT /*severity*/,
+                                                VkDebugUtilsMessageTypeFlagsEXT /*types*/,
+                                                const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                void* user) {
+    static_cast<ValidationMessages*>(user)->record(data->pMessage ? data->pMessage : "(empty)");
+    return VK_FALSE;
+}
+
+bool has_layer(const vk::raii::Context& loader, const char* name) {
+    const auto layers = loader.enumerateInstanceLayerProperties();
+    return std::any_of(layers.begin(), layers.end(), [name](const vk::LayerProperties& layer) {
+        return std::strcmp(layer.layerName.data(), name) == 0;
+    });
+}
+
+std::uint32_t find_queue_family(const vk::raii::PhysicalDevice& device) {
+    const auto families = device.getQueueFamilyProperties();
+    const auto needed = vk::QueueFlagBits::eGraphics | vk::QueueFlagBits::eCompute;
+    for (std::uint32_t i = 0; i < families.size(); ++i) {
+        if ((families[i].queueFlags & needed) == needed) return i;
+    }
+    return 0;  // unreachable: select_device() only returns devices with such a family
+}
+
+}  // namespace
+
+void ValidationMessages::record(const std::string& message) {
+    ++count_;
+    std::lock_guard lock(mutex_);
+    if (first_.size() < kKeptMessages) first_.push_back(message);
+}
+
+std::vector<std::string> ValidationMessages::first_messages() const {
+    std::lock_guard lock(mutex_);
+    return first_;
+}
+
+Context::~Context() {
+    if (*device_) device_.waitIdle();
+}
+
+Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) {
+    std::unique_ptr<Context> ctx(new Context());
+    try {
+        if (ctx->loader_.enumerateInstanceVersion() < VK_API_VERSION_1_3) {
+            return Error{"the Vulkan loader is older than 1.3; install libvulkan1 from Debian 12"};
+        }
+        std::vector<const char*> layers;
+        std::vector<const char*> extensions;
+        if (options.validation) {
+            if (!has_layer(ctx->loader_, kValidationLayer)) {
+                return Error{std::string("validation requested but ") + kValidationLayer +
+                             " is not installed (apt-get install vulkan-validationlayers)"};
+            }
+            layers.push_back(kValidationLayer);
+            extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        }
+        const vk::ApplicationInfo app_info("monoplane", 1, "monoplane", 1, VK_API_VERSION_1_3);
+        ctx->instance_ = vk::raii::Instance(
+            ctx->loader_, vk::InstanceCreateInfo({}, &app_info, layers, extensions));
+
+        if (options.validation) {
+            using Severity = vk::DebugUtilsMessageSeverityFlagBitsEXT;
+            using Type = vk::DebugUtilsMessageTypeFlagBitsEXT;
+            const vk::DebugUtilsMessengerCreateInfoEXT messenger_info(
+                {}, Severity::eWarning | Severity::eError,
+                Type::eGeneral | Type::eValidation | Type::ePerformance, &on_debug_message,
+                ctx->validation_messages_.get());
+            ctx->messenger_ = vk::raii::DebugUtilsMessengerEXT(ctx->instance_, messenger_info);
+        }
+
+        const std::vector<DeviceInfo> devices = describe_devices(ctx->instance_);
+        Result<int> chosen = select_device(devices, options.device_selector);
+        if (!chosen) return chosen.error();
+        ctx->device_info_ = devices[*chosen];
+        ctx->physical_device_ = std::move(vk::raii::PhysicalDevices(ctx->instance_)[*chosen]);
+        ctx->queue_family_ = find_queue_family(ctx->physical_device_);
+
+        const auto supported =
+            ctx->physical_device_
+                .getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features>();
+        const auto& f10 = supported.get<vk::PhysicalDeviceFeatures2>().features;
+        const auto& f11 = supported.get<vk::PhysicalDeviceVulkan11Features>();
+        DeviceCapabilities& caps = ctx->capabilities_;
+        caps.pipeline_statistics = f10.pipelineStatisticsQuery;
+        caps.geometry_shader = f10.geometryShader;
+        caps.multiview = f11.multiview;
+        const auto properties = ctx->physical_device_.getProperties();
+        caps.timestamp_period_ns = properties.limits.timestampPeriod;
+        caps.timestamp_valid_bits =
+            ctx->physical_device_.getQueueFamilyProperties()[ctx->queue_family_].timestampValidBits;
+
+        vk::StructureChain<vk::DeviceCreateInfo, vk::PhysicalDeviceFeatures2,
+                           vk::PhysicalDeviceVulkan11Features, vk::PhysicalDeviceVulkan12Features,
+                           vk::PhysicalDeviceVulkan13Features>
+            chain;
+        vk::PhysicalDeviceFeatures& enable10 = chain.get<vk::PhysicalDeviceFeatures2>().features;
+        enable10.multiDrawIndirect = VK_TRUE;
+        enable10.drawIndirectFirstInstance = f10.drawIndirectFirstInstance;
+        enable10.pipelineStatisticsQuery = f10.pipelineStatisticsQuery;
+        enable10.geometryShader = f10.geometryShader;
+        enable10.depthClamp = f10.depthClamp;
+        chain.get<vk::PhysicalDeviceVulkan11Features>().multiview = f11.multiview;
+        chain.get<vk::PhysicalDeviceVulkan12Features>().hostQueryReset = VK_TRUE;
+        chain.get<vk::PhysicalDeviceVulkan13Features>().dynamicRendering = VK_TRUE;
+        chain.get<vk::PhysicalDeviceVulkan13Features>().synchronization2 = VK_TRUE;
+
+        const float priority = 1.0f;
+        const vk::DeviceQueueCreateInfo queue_info({}, ctx->queue_family_, 1, &priority);
+        chain.get<vk::DeviceCreateInfo>().setQueueCreateInfos(queue_info);
+        ctx->device_ = vk::raii::Device(ctx->physical_device_, chain.get<vk::DeviceCreateInfo>());
+        ctx->queue_ = vk::raii::Queue(ctx->device_, ctx->queue_family_, 0);
+        ctx->command_pool_ = vk::raii::CommandPool(
+            ctx->device_,
+            vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eTransient |
+                                          vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                      ctx->queue_family_));
+    } catch (const vk::SystemError& e) {
+        return Error{std::string("Vulkan initialisation failed: ") + e.what()};
+    }
+    return ctx;
+}
+
+void Context::submit_and_wait(
+    const std::function<void(const vk::raii::CommandBuffer&)>& record) const {
+    vk::raii::CommandBuffers buffers(
+        device_,
+        vk::CommandBufferAllocateInfo(*command_pool_, vk::CommandBufferLevel::ePrimary, 1));
+    const vk::raii::CommandBuffer& cmd = buffers.front();
+    cmd.begin(vk::CommandBufferBeginInfo(vk::CommandBufferUsageFlagBits::eOneTimeSubmit));
+    record(cmd);
+    cmd.end();
+    const vk::raii::Fence fence(device_, vk::FenceCreateInfo());
+    const vk::CommandBufferSubmitInfo cmd_info(*cmd);
+    queue_.submit2(vk::SubmitInfo2({}, {}, cmd_info, {}), *fence);
+    // A frame on llvmpipe at benchmark resolutions can take seconds: wait without a deadline.
+    while (device_.waitForFences(*fence, VK_TRUE, UINT64_MAX) == vk::Result::eTimeout) {
+    }
+}
+
+}  // namespace monoplane::vk_core

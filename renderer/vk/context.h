@@ -1,0 +1,85 @@
+// The Vulkan instance, the chosen device and its queue: created once per process (or per test).
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "common/result.h"
+#include "renderer/vk/device_selection.h"
+#include "renderer/vk/vulkan.h"
+
+namespace monoplane::vk_core {
+
+struct ContextOptions {
+    // Khronos validation layer with a message counter; tests turn it on and fail on any message.
+    bool validation = false;
+    std::string device_selector;  // see select_device()
+};
+
+// Counts validation warnings and errors; keeps the first few messages for the test's report.
+class ValidationMessages {
+  public:
+    void record(const std::string& message);
+    std::size_t count() const { return count_.load(); }
+    std::vector<std::string> first_messages() const;
+
+  private:
+    std::atomic<std::size_t> count_{0};
+    mutable std::mutex mutex_;
+    std::vector<std::string> first_;
+};
+
+// Optional device features, enabled when the device has them.
+struct DeviceCapabilities {
+    bool pipeline_statistics = false;
+    bool geometry_shader = false;
+    bool multiview = false;
+    float timestamp_period_ns = 1.0f;
+    std::uint32_t timestamp_valid_bits = 0;
+};
+
+class Context {
+  public:
+    // May be called at any time; fails with a message a user can act on (no loader, no device,
+    // validation requested but the layer is not installed).
+    static Result<std::unique_ptr<Context>> create(const ContextOptions& options);
+
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+    ~Context();
+
+    const vk::raii::Instance& instance() const { return instance_; }
+    const vk::raii::PhysicalDevice& physical_device() const { return physical_device_; }
+    const vk::raii::Device& device() const { return device_; }
+    const vk::raii::Queue& queue() const { return queue_; }
+    std::uint32_t queue_family() const { return queue_family_; }
+    const DeviceInfo& device_info() const { return device_info_; }
+    const DeviceCapabilities& capabilities() const { return capabilities_; }
+    const ValidationMessages& validation_messages() const { return *validation_messages_; }
+
+    // Runs `record` on a fresh primary command buffer, submits it and waits for completion.
+    // May be called from one thread at a time.
+    void submit_and_wait(const std::function<void(const vk::raii::CommandBuffer&)>& record) const;
+
+  private:
+    Context() = default;
+
+    vk::raii::Context loader_;
+    vk::raii::Instance instance_{nullptr};
+    std::unique_ptr<ValidationMessages> validation_messages_ =
+        std::make_unique<ValidationMessages>();
+    vk::raii::DebugUtilsMessengerEXT messenger_{nullptr};
+    vk::raii::PhysicalDevice physical_device_{nullptr};
+    vk::raii::Device device_{nullptr};
+    vk::raii::Queue queue_{nullptr};
+    vk::raii::CommandPool command_pool_{nullptr};
+    std::uint32_t queue_family_ = 0;
+    DeviceInfo device_info_;
+    DeviceCapabilities capabilities_;
+};
+
+}  // namespace monoplane::vk_core

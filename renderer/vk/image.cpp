@@ -1,0 +1,41 @@
+#include "renderer/vk/image.h"
+
+#include "renderer/vk/memory.h"
+
+namespace monoplane::vk_core {
+
+bool is_depth_format(vk::Format format) {
+    return format == vk::Format::eD32Sfloat || format == vk::Format::eD16Unorm ||
+           format == vk::Format::eD24UnormS8Uint || format == vk::Format::eD32SfloatS8Uint;
+}
+
+Image::Image(const Context& ctx, const ImageDesc& desc)
+    : desc_(desc),
+      aspect_(is_depth_format(desc.format) ? vk::ImageAspectFlagBits::eDepth
+                                           : vk::ImageAspectFlagBits::eColor) {
+    const vk::ImageCreateInfo info({}, vk::ImageType::e2D, desc.format,
+                                   vk::Extent3D(desc.extent, 1), 1, desc.layers,
+                                   vk::SampleCountFlagBits::e1, vk::ImageTiling::eOptimal,
+                                   desc.usage, vk::SharingMode::eExclusive);
+    image_ = vk::raii::Image(ctx.device(), info);
+    memory_ = allocate_memory(ctx, image_.getMemoryRequirements(),
+                              vk::MemoryPropertyFlagBits::eDeviceLocal);
+    image_.bindMemory(*memory_, 0);
+    const auto view_type = desc.layers > 1 ? vk::ImageViewType::e2DArray : vk::ImageViewType::e2D;
+    view_ = vk::raii::ImageView(
+        ctx.device(),
+        vk::ImageViewCreateInfo({}, *image_, view_type, desc.format, {},
+                                vk::ImageSubresourceRange(aspect_, 0, 1, 0, desc.layers)));
+}
+
+void transition(const vk::raii::CommandBuffer& cmd, const Image& image, vk::ImageLayout from,
+                vk::ImageLayout to, vk::PipelineStageFlags2 src_stage, vk::AccessFlags2 src_access,
+                vk::PipelineStageFlags2 dst_stage, vk::AccessFlags2 dst_access) {
+    const vk::ImageMemoryBarrier2 barrier(
+        src_stage, src_access, dst_stage, dst_access, from, to, VK_QUEUE_FAMILY_IGNORED,
+        VK_QUEUE_FAMILY_IGNORED, image.handle(),
+        vk::ImageSubresourceRange(image.aspect(), 0, 1, 0, image.desc().layers));
+    cmd.pipelineBarrier2(vk::DependencyInfo({}, {}, {}, barrier));
+}
+
+}  // namespace monoplane::vk_core

@@ -1,0 +1,54 @@
+#include "renderer/vk/pipeline.h"
+
+namespace monoplane::vk_core {
+
+vk::raii::ShaderModule make_shader(const Context& ctx, std::span<const std::uint32_t> spirv) {
+    return vk::raii::ShaderModule(ctx.device(),
+                                  vk::ShaderModuleCreateInfo({}, spirv.size_bytes(), spirv.data()));
+}
+
+vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipelineDesc& desc) {
+    std::vector<vk::PipelineShaderStageCreateInfo> stages;
+    stages.emplace_back(vk::PipelineShaderStageCreateFlags(), vk::ShaderStageFlagBits::eVertex,
+                        desc.vertex, "main");
+    if (desc.fragment) {
+        stages.emplace_back(vk::PipelineShaderStageCreateFlags(),
+                            vk::ShaderStageFlagBits::eFragment, desc.fragment, "main");
+    }
+    const vk::PipelineVertexInputStateCreateInfo vertex_input({}, desc.vertex_bindings,
+                                                              desc.vertex_attributes);
+    const vk::PipelineInputAssemblyStateCreateInfo input_assembly(
+        {}, vk::PrimitiveTopology::eTriangleList);
+    const vk::PipelineViewportStateCreateInfo viewport({}, 1, nullptr, 1, nullptr);
+    vk::PipelineRasterizationStateCreateInfo raster(
+        {}, VK_FALSE, VK_FALSE, vk::PolygonMode::eFill, desc.cull, vk::FrontFace::eCounterClockwise,
+        desc.depth_bias ? VK_TRUE : VK_FALSE, 0.0f, 0.0f, 0.0f, 1.0f);
+    const vk::PipelineMultisampleStateCreateInfo multisample({}, vk::SampleCountFlagBits::e1);
+    const vk::PipelineDepthStencilStateCreateInfo depth({}, desc.depth_test, desc.depth_write,
+                                                        desc.depth_compare);
+    std::vector<vk::PipelineColorBlendAttachmentState> blend(
+        desc.color_formats.size(),
+        vk::PipelineColorBlendAttachmentState().setColorWriteMask(
+            vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+            vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA));
+    const vk::PipelineColorBlendStateCreateInfo color_blend({}, VK_FALSE, vk::LogicOp::eCopy,
+                                                            blend);
+    std::vector<vk::DynamicState> dynamic = {vk::DynamicState::eViewport,
+                                             vk::DynamicState::eScissor};
+    if (desc.depth_bias) dynamic.push_back(vk::DynamicState::eDepthBias);
+    const vk::PipelineDynamicStateCreateInfo dynamic_state({}, dynamic);
+    const vk::PipelineRenderingCreateInfo rendering(0, desc.color_formats, desc.depth_format);
+
+    const vk::GraphicsPipelineCreateInfo info(
+        {}, stages, &vertex_input, &input_assembly, nullptr, &viewport, &raster, &multisample,
+        &depth, &color_blend, &dynamic_state, desc.layout, nullptr, 0, nullptr, -1, &rendering);
+    return vk::raii::Pipeline(ctx.device(), nullptr, info);
+}
+
+void set_viewport_and_scissor(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent) {
+    cmd.setViewport(0, vk::Viewport(0.0f, 0.0f, static_cast<float>(extent.width),
+                                    static_cast<float>(extent.height), 0.0f, 1.0f));
+    cmd.setScissor(0, vk::Rect2D({0, 0}, extent));
+}
+
+}  // namespace monoplane::vk_core

@@ -1,0 +1,36 @@
+// Shader modules and a small description of a graphics pipeline for dynamic rendering; every pass
+// builds its pipelines through this so state defaults (reversed Z, back-face culling) live once.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "renderer/vk/context.h"
+
+namespace monoplane::vk_core {
+
+vk::raii::ShaderModule make_shader(const Context& ctx, std::span<const std::uint32_t> spirv);
+
+struct GraphicsPipelineDesc {
+    vk::PipelineLayout layout;
+    vk::ShaderModule vertex;
+    vk::ShaderModule fragment;  // may be null for depth-only passes
+    std::vector<vk::VertexInputBindingDescription> vertex_bindings;
+    std::vector<vk::VertexInputAttributeDescription> vertex_attributes;
+    std::vector<vk::Format> color_formats;
+    vk::Format depth_format = vk::Format::eUndefined;
+    vk::CullModeFlags cull = vk::CullModeFlagBits::eBack;
+    bool depth_test = true;
+    bool depth_write = true;
+    // Reversed Z (DESIGN.md section 2): nearer is greater.
+    vk::CompareOp depth_compare = vk::CompareOp::eGreaterOrEqual;
+    bool depth_bias = false;
+};
+
+// Viewport and scissor are dynamic state, set by the pass for each target.
+vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipelineDesc& desc);
+
+void set_viewport_and_scissor(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent);
+
+}  // namespace monoplane::vk_core
