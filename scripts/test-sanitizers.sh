@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The non-GPU unit tests built with AddressSanitizer and UndefinedBehaviorSanitizer, without
+# Vulkan at all: this build also proves that rig, scenes, hmd, study and analysis need no Vulkan.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+BUILD_DIR=build-sanitize CMAKE_ARGS="-DMONOPLANE_VULKAN=OFF -DMONOPLANE_SANITIZE=ON" scripts/build.sh
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)" -L unit
