@@ -88,7 +88,12 @@ void ShadowPass::record(const vk::raii::CommandBuffer& cmd, const SceneGeometry&
                                             vk::AttachmentStoreOp::eStore,
                                             vk::ClearValue(vk::ClearDepthStencilValue(1.0f, 0)));
     const vk::Extent2D extent{params_.resolution, params_.resolution};
-    cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, extent), 1, 0, {}, &depth));
+    // Named setters: with positional arguments, `{}` for the colour attachments selects the
+    // count-and-pointer constructor and &depth silently becomes pColorAttachments.
+    cmd.beginRendering(vk::RenderingInfo()
+                           .setRenderArea(vk::Rect2D({0, 0}, extent))
+                           .setLayerCount(1)
+                           .setPDepthAttachment(&depth));
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline_);
     vk_core::set_viewport_and_scissor(cmd, extent);
     cmd.setDepthBias(params_.depth_bias_constant, 0.0f, params_.depth_bias_slope);
