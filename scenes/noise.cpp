@@ -89,7 +89,10 @@ float gradient_noise(glm::vec3 p, std::uint64_t seed) {
     return lerp(near, far, w);
 }
 
-float fractal_noise(glm::vec2 p, std::uint64_t seed, const Fractal& fractal) {
+namespace {
+// Octaves of gradient noise, each `lacunarity` times finer and `gain` times weaker, normalised.
+template <class Point>
+float fractal_sum(Point p, std::uint64_t seed, const Fractal& fractal) {
     float sum = 0.0f;
     float amplitude = 1.0f;
     float total = 0.0f;
@@ -101,18 +104,14 @@ float fractal_noise(glm::vec2 p, std::uint64_t seed, const Fractal& fractal) {
     }
     return sum / total;
 }
+}  // namespace
+
+float fractal_noise(glm::vec2 p, std::uint64_t seed, const Fractal& fractal) {
+    return fractal_sum(p, seed, fractal);
+}
 
 float fractal_noise(glm::vec3 p, std::uint64_t seed, const Fractal& fractal) {
-    float sum = 0.0f;
-    float amplitude = 1.0f;
-    float total = 0.0f;
-    for (int octave = 0; octave < fractal.octaves; ++octave) {
-        sum += amplitude * gradient_noise(p, seed + static_cast<std::uint64_t>(octave));
-        total += amplitude;
-        amplitude *= fractal.gain;
-        p *= fractal.lacunarity;
-    }
-    return sum / total;
+    return fractal_sum(p, seed, fractal);
 }
 
 float ridged_noise(glm::vec2 p, std::uint64_t seed, const Fractal& fractal) {

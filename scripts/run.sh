@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh monoplane
+scripts/build.sh --target monoplane
 out="${OUT_DIR:-out/stereo}"
 for scene in beams landscape spheres; do
   echo "== $scene"

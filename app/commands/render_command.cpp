@@ -110,6 +110,8 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     const int width = o.width > 0 ? o.width : profile.width;
     const int height = o.height > 0 ? o.height : profile.height;
 
+    auto ctx = vk_core::Context::create({global.validation, global.device}).value_or_throw();
+    std::cerr << "device: " << ctx->device_info().name << "\n";
     std::cerr << "generating " << o.scene << " (detail " << o.detail << ", seed " << o.seed
               << ")\n";
     const scenes::Scene scene = scenes::generate_scene(*scene_id, *detail, o.seed);
@@ -120,8 +122,6 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         throw UserError("--view " + o.view + ": " + o.scene + " has the views " + joined(names));
     }
 
-    auto ctx = vk_core::Context::create({global.validation, global.device}).value_or_throw();
-    std::cerr << "device: " << ctx->device_info().name << "\n";
     modes::RendererOptions renderer_options;
     renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
     modes::StereoMode stereo(

@@ -4,8 +4,8 @@
 
 namespace monoplane::modes {
 
-std::array<glm::dvec4, 6> frustum_planes(const glm::dmat4& m) {
-    const glm::dmat4 t = glm::transpose(m);  // t[i] is row i of m
+std::array<glm::dvec4, 6> frustum_planes(const glm::dmat4& view_proj) {
+    const glm::dmat4 t = glm::transpose(view_proj);  // t[i] is row i of view_proj
     return {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[2], t[3] - t[2]};
 }
 

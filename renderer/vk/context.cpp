@@ -47,7 +47,9 @@ std::vector<std::string> ValidationMessages::first_messages() const {
 }
 
 Context::~Context() {
-    if (*device_) device_.waitIdle();
+    // Nothing may be destroyed while the GPU uses it; a lost device cannot be waited for, and a
+    // destructor must not throw, so that case is left to the driver's teardown.
+    if (*device_) static_cast<void>(device_.getDispatcher()->vkDeviceWaitIdle(*device_));
 }
 
 Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) {
