@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     root.add_flag("--validation", global.validation,
                   "Enable the Khronos validation layer; any message is an error");
     add_render_command(root, global);
+    add_rig_command(root, global);
     add_devices_command(root, global);
     try {
         root.parse(argc, argv);

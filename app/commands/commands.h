@@ -9,5 +9,6 @@ namespace monoplane::app {
 
 void add_render_command(CLI::App& root, const GlobalOptions& global);
 void add_devices_command(CLI::App& root, const GlobalOptions& global);
+void add_rig_command(CLI::App& root, const GlobalOptions& global);
 
 }  // namespace monoplane::app

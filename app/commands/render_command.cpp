@@ -9,7 +9,7 @@
 #include "app/commands/json_writer.h"
 #include "app/png.h"
 #include "hmd/profile.h"
-#include "renderer/modes/stereo_mode.h"
+#include "renderer/modes/mode_renderer.h"
 #include "renderer/vk/context.h"
 #include "scenes/generate.h"
 
@@ -20,6 +20,9 @@ struct RenderOptions {
     std::string scene = "spheres";
     std::string mode = "stereo";
     std::optional<double> mono_plane;
+    double overlap_k = 2.0;
+    double blend_band = 0.3;
+    std::string debug_view = "none";
     std::string hmd = "vive";
     std::optional<double> ipd;
     int width = 0;
@@ -42,13 +45,25 @@ std::string joined(const std::vector<std::string>& names) {
 
 std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
                          const scenes::Scene& scene, const vk_core::Context& ctx, int width,
-                         int height, const FrameSummary& s, const std::filesystem::path& out) {
+                         int height, const FrameSummary& s, const std::optional<rig::Rig>& rig,
+                         const modes::RgbaImage* mono, const std::filesystem::path& out) {
     JsonWriter j;
     j.begin_object();
     j.value("command", "render").value("scene", scene.name).value("mode", o.mode);
     j.value("detail", o.detail).value("seed", static_cast<std::uint64_t>(o.seed));
     j.value("view", o.view).value("hmd", profile.name).value("ipd", o.ipd.value_or(profile.ipd));
     j.value("width", width).value("height", height);
+    if (o.mode != "stereo") j.value("debug_view", o.debug_view);
+    if (rig) {
+        j.value("mono_plane", rig->inputs.mono_plane).value("mono_skipped", rig->mono_skipped);
+        j.value("overlap", rig->overlap).value("max_error_px", rig->max_error_px);
+        j.value("max_error_px_2d", rig->max_error_px_2d);
+        j.begin_object("mono_camera");
+        j.value("offset_behind_eyes", rig->mono.offset_behind_eyes);
+        j.value("viewport_width", rig->mono.viewport_width);
+        j.value("viewport_height", rig->mono.viewport_height);
+        j.end_object();
+    }
     j.value("device", ctx.device_info().name);
     j.value("triangles", static_cast<std::uint64_t>(scene.triangle_count()));
     j.value("chunks", static_cast<std::uint64_t>(scene.chunks.size()));
@@ -76,17 +91,26 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
     j.value("primitives", primitives).value("fragments", fragments);
     j.begin_object("files");
     j.value("left", (out / "left.png").string()).value("right", (out / "right.png").string());
+    if (mono) j.value("mono", (out / "mono.png").string());
     j.end_object();
     j.end_object();
     return j.str();
 }
 
 void run_render(const RenderOptions& o, const GlobalOptions& global) {
-    if (o.mode != "stereo") {
-        throw UserError(
-            "--mode " + o.mode +
-            ": not available yet; this build renders `stereo` (hybrid, "
-            "hybrid-farfield, stereo-multiview and stereo-gs arrive with their issues)");
+    const auto mode = modes::parse_mode(o.mode);
+    if (!mode) {
+        throw UserError("--mode " + o.mode +
+                        ": unknown or not available yet; use stereo, hybrid or hybrid-farfield "
+                        "(stereo-multiview and stereo-gs arrive with their issue)");
+    }
+    if (*mode != modes::Mode::kStereo && !o.mono_plane) {
+        throw UserError("--mode " + o.mode + " needs --mono-plane M (metres)");
+    }
+    const auto debug_view = modes::parse_debug_view(o.debug_view);
+    if (!debug_view) {
+        throw UserError("--debug-view " + o.debug_view +
+                        ": use none, tint-mono, stereo-only or mono-only");
     }
     const auto scene_id = scenes::parse_scene_id(o.scene);
     if (!scene_id)
@@ -124,33 +148,39 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
 
     modes::RendererOptions renderer_options;
     renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
-    modes::StereoMode stereo(
-        *ctx, scene,
+    modes::ModeRenderer renderer(
+        *ctx, scene, *mode,
         vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
         renderer_options);
-    modes::StereoViewInputs inputs;
-    inputs.head = viewpoint->head;
-    inputs.ipd = o.ipd.value_or(profile.ipd);
-    inputs.left = profile.left;
-    inputs.right = profile.right;
+    modes::FrameInputs inputs;
+    inputs.views.head = viewpoint->head;
+    inputs.views.ipd = o.ipd.value_or(profile.ipd);
+    inputs.views.left = profile.left;
+    inputs.views.right = profile.right;
+    inputs.mono_plane = o.mono_plane.value_or(inputs.views.far);
+    inputs.overlap_k = o.overlap_k;
+    inputs.view_blend_band = o.blend_band;
+    inputs.debug = *debug_view;
 
     std::vector<profile::FrameStats> measured;
     const int total = o.warmup + o.frames;
     for (int frame = 0; frame < total; ++frame) {
-        profile::FrameStats stats = stereo.render_frame(inputs);
+        profile::FrameStats stats = renderer.render_frame(inputs);
         if (frame >= o.warmup) measured.push_back(std::move(stats));
         if (total > 1) std::cerr << "\rframe " << frame + 1 << "/" << total << std::flush;
     }
     if (total > 1) std::cerr << "\n";
 
-    write_png(out / "left.png", stereo.eye_image(modes::Eye::kLeft)).value_or_throw();
-    write_png(out / "right.png", stereo.eye_image(modes::Eye::kRight)).value_or_throw();
-    const std::string json =
-        summary_json(o, profile, scene, *ctx, width, height, summarize(measured), out);
+    write_png(out / "left.png", renderer.eye_image(modes::Eye::kLeft)).value_or_throw();
+    write_png(out / "right.png", renderer.eye_image(modes::Eye::kRight)).value_or_throw();
+    const modes::RgbaImage* mono = renderer.mono_image();
+    if (mono) write_png(out / "mono.png", *mono).value_or_throw();
+    const std::string json = summary_json(o, profile, scene, *ctx, width, height,
+                                          summarize(measured), renderer.last_rig(), mono, out);
     std::ofstream(out / "stats.json") << json << "\n";
     if (o.json) std::cout << json << "\n";
     std::cerr << "wrote " << (out / "left.png").string() << ", " << (out / "right.png").string()
-              << " and stats.json\n";
+              << (mono ? ", mono.png" : "") << " and stats.json\n";
 
     if (global.validation && ctx->validation_messages().count() > 0) {
         for (const auto& m : ctx->validation_messages().first_messages()) std::cerr << m << "\n";
@@ -166,7 +196,7 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
     CLI::App* cmd = root.add_subcommand("render", "Render one scene in one mode to PNG files");
     cmd->add_option("--scene", options->scene, "beams, landscape or spheres")
         ->capture_default_str();
-    cmd->add_option("--mode", options->mode, "stereo (more modes arrive with their issues)")
+    cmd->add_option("--mode", options->mode, "stereo, hybrid or hybrid-farfield")
         ->capture_default_str();
     cmd->add_option("--mono-plane", options->mono_plane,
                     "Mono-plane distance m in metres (hybrid modes)");

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "hmd/profile.h"
-#include "renderer/modes/stereo_mode.h"
+#include "renderer/modes/mode_renderer.h"
 #include "scenes/generate.h"
 #include "tests/gpu/gpu_test.h"
 
@@ -42,13 +42,13 @@ TEST_P(SceneRender, StereoPairHasStructureAndParallax) {
     const hmd::HmdProfile vive = hmd::load_hmd_profile("vive").value_or_throw();
     modes::RendererOptions options;
     options.shadow.resolution = 1024;
-    modes::StereoMode stereo(ctx(), scene, {168, 189}, options);
+    modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, {168, 189}, options);
     modes::StereoViewInputs inputs;
     inputs.head = scene.viewpoints.front().head;
     inputs.ipd = vive.ipd;
     inputs.left = vive.left;
     inputs.right = vive.right;
-    const profile::FrameStats stats = stereo.render_frame(inputs);
+    const profile::FrameStats stats = stereo.render_frame({inputs});
 
     const auto& left = stereo.eye_image(modes::Eye::kLeft);
     const auto& right = stereo.eye_image(modes::Eye::kRight);

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "renderer/modes/stereo_mode.h"
+#include "renderer/modes/mode_renderer.h"
 #include "renderer/rig/projection.h"
 #include "tests/gpu/gpu_test.h"
 
@@ -68,8 +68,8 @@ TEST_F(Shadow, RoofCastsItsShadowBesideItsFootprint) {
     inputs.left = inputs.right = rig::Tangents{-1.0, 1.0, -1.0, 1.0};
     modes::RendererOptions options;
     options.shadow.resolution = 1024;
-    modes::StereoMode stereo(ctx(), scene, {256, 256}, options);
-    stereo.render_frame(inputs);
+    modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, {256, 256}, options);
+    stereo.render_frame({inputs});
 
     const glm::dmat4 view_proj = modes::eye_view_proj(inputs, modes::Eye::kLeft);
     const auto& image = stereo.eye_image(modes::Eye::kLeft);

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "hmd/profile.h"
-#include "renderer/modes/stereo_mode.h"
+#include "renderer/modes/mode_renderer.h"
 #include "tests/gpu/gpu_test.h"
 
 namespace monoplane {
@@ -72,13 +72,13 @@ TEST_F(StereoMarker, MarkerLandsOnTheAnalyticPixelInEachEye) {
 
     modes::RendererOptions options;
     options.shadow.resolution = 512;
-    modes::StereoMode stereo(ctx(), scene, {width, height}, options);
+    modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, {width, height}, options);
     modes::StereoViewInputs inputs;
     inputs.head.position = head;
     inputs.ipd = vive.ipd;
     inputs.left = vive.left;
     inputs.right = vive.right;
-    stereo.render_frame(inputs);
+    stereo.render_frame({inputs});
 
     for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
         const rig::Tangents& t = eye == modes::Eye::kLeft ? vive.left : vive.right;
@@ -106,11 +106,11 @@ TEST_F(StereoMarker, PipelineStatisticsCountTheDrawnTriangles) {
     const scenes::Scene scene = marker_scene({0.0f, 1.7f, -3.0f}, 0.5f);
     modes::RendererOptions options;
     options.shadow.resolution = 256;
-    modes::StereoMode stereo(ctx(), scene, {64, 64}, options);
+    modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, {64, 64}, options);
     modes::StereoViewInputs inputs;
     inputs.head.position = {0.0, 1.7, 0.0};
     inputs.left = inputs.right = rig::Tangents{-1.0, 1.0, -1.0, 1.0};
-    const profile::FrameStats stats = stereo.render_frame(inputs);
+    const profile::FrameStats stats = stereo.render_frame({inputs});
     ASSERT_EQ(stats.views.size(), 2u);
     for (const profile::ViewStatistics& v : stats.views) {
         SCOPED_TRACE(v.view);

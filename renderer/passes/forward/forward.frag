@@ -14,6 +14,9 @@ layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec3 in_albedo;
 layout(location = 3) flat in uint in_material;
 layout(location = 0) out vec4 out_color;
+// Distance in front of the eyes' plane along the head's forward axis: the same for all three
+// cameras of the rig (they share the head's orientation), so hybrid can assemble it per pixel.
+layout(location = 1) out float out_linear_depth;
 
 const float PI = 3.14159265358979;
 
@@ -60,8 +63,17 @@ float sun_visibility(vec3 world, vec3 normal) {
 }
 
 void main() {
+    float linear_depth = dot(in_world - view.head_position.xyz, view.head_forward.xyz);
+    // Hybrid (Sect. 4.3): across a band below m the eye's view vector turns into C's, so that
+    // highlights and reflections meet C's shading at the mono plane without a seam.
+    vec3 origin = view.camera_position.xyz;
+    float band = view.view_blend.y;
+    if (band > 0.0) {
+        float m = view.view_blend.x;
+        origin = mix(origin, view.mono_camera_position.xyz, smoothstep(m - band, m, linear_depth));
+    }
     vec3 n = normalize(in_normal);
-    vec3 v = normalize(view.camera_position.xyz - in_world);
+    vec3 v = normalize(origin - in_world);
     if (dot(n, v) < 0.0) n = -n;  // thin two-sided geometry
     vec3 l = view.sun_direction.xyz;
     float roughness = float(in_material & 0xffu) / 255.0;
@@ -93,4 +105,5 @@ void main() {
 
     vec3 color = diffuse + highlight + ambient + reflected * fresnel * glossiness;
     out_color = vec4(color, 1.0);
+    out_linear_depth = linear_depth;
 }

@@ -39,7 +39,7 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx) {
     geometry.fragment = *forward_frag;
     geometry.vertex_bindings = SceneGeometry::vertex_bindings();
     geometry.vertex_attributes = SceneGeometry::vertex_attributes();
-    geometry.color_formats = {kHdrFormat};
+    geometry.color_formats = {kHdrFormat, kLinearDepthFormat};
     geometry.depth_format = kDepthFormat;
     geometry_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
 
@@ -50,7 +50,7 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx) {
     sky.layout = *layout_;
     sky.vertex = *fullscreen_vert;
     sky.fragment = *sky_frag;
-    sky.color_formats = {kHdrFormat};
+    sky.color_formats = {kHdrFormat, kLinearDepthFormat};
     sky.depth_format = kDepthFormat;
     sky.cull = vk::CullModeFlagBits::eNone;
     sky.depth_write = false;
@@ -63,32 +63,44 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                          const DrawList& draws) const {
     using Stage = vk::PipelineStageFlagBits2;
     using Access = vk::AccessFlagBits2;
-    vk_core::transition(cmd, targets.hdr, vk::ImageLayout::eUndefined,
-                        vk::ImageLayout::eColorAttachmentOptimal, Stage::eFragmentShader,
-                        Access::eShaderSampledRead, Stage::eColorAttachmentOutput,
-                        Access::eColorAttachmentWrite);
+    for (const vk_core::Image* color : {&targets.hdr, &targets.linear_depth}) {
+        vk_core::transition(cmd, *color, vk::ImageLayout::eUndefined,
+                            vk::ImageLayout::eColorAttachmentOptimal, Stage::eFragmentShader,
+                            Access::eShaderSampledRead, Stage::eColorAttachmentOutput,
+                            Access::eColorAttachmentWrite);
+    }
     vk_core::transition(cmd, targets.depth, vk::ImageLayout::eUndefined,
                         vk::ImageLayout::eDepthAttachmentOptimal,
                         Stage::eLateFragmentTests | Stage::eFragmentShader,
                         Access::eDepthStencilAttachmentWrite | Access::eShaderSampledRead,
                         Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
                         Access::eDepthStencilAttachmentWrite | Access::eDepthStencilAttachmentRead);
-    const vk::RenderingAttachmentInfo color(
-        targets.hdr.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
-        vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore);
+    const std::array colors = {
+        vk::RenderingAttachmentInfo(targets.hdr.view(), vk::ImageLayout::eColorAttachmentOptimal,
+                                    {}, {}, {}, vk::AttachmentLoadOp::eDontCare,
+                                    vk::AttachmentStoreOp::eStore),
+        vk::RenderingAttachmentInfo(targets.linear_depth.view(),
+                                    vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
+                                    vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore),
+    };
     const vk::RenderingAttachmentInfo depth(
         targets.depth.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
         vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
         vk::ClearValue(vk::ClearDepthStencilValue(0.0f, 0)));  // reversed Z: far is 0
-    const vk::Extent2D extent = targets.hdr.desc().extent;
-    cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, extent), 1, 0, color, &depth));
-    vk_core::set_viewport_and_scissor(cmd, extent);
+    cmd.beginRendering(vk::RenderingInfo()
+                           .setRenderArea(vk::Rect2D({0, 0}, targets.area))
+                           .setLayerCount(1)
+                           .setColorAttachments(colors)
+                           .setPDepthAttachment(&depth));
+    vk_core::set_viewport_and_scissor(cmd, targets.area);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, view_set, {});
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *geometry_pipeline_);
     geometry.bind(cmd);
     draws.draw(cmd);
-    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
-    cmd.draw(3, 1, 0, 0);
+    if (targets.draw_sky) {
+        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
+        cmd.draw(3, 1, 0, 0);
+    }
     cmd.endRendering();
 }
 

@@ -1,5 +1,6 @@
 // Forward shading of one view into an HDR target, then the sky where nothing was drawn.
-// Reads: view constants (set 0, binding 0), the shadow map (binding 1). Writes: HDR colour, depth.
+// Reads: view constants (set 0, binding 0), the shadow map (binding 1).
+// Writes: HDR colour, reversed-Z depth, linear depth (metres in front of the eyes' plane).
 #pragma once
 
 #include "renderer/passes/shared/scene_geometry.h"
@@ -10,21 +11,29 @@
 namespace monoplane::passes {
 
 struct ForwardTargets {
-    const vk_core::Image& hdr;    // kHdrFormat, colour attachment
-    const vk_core::Image& depth;  // kDepthFormat, reversed Z
+    const vk_core::Image& hdr;           // kHdrFormat, colour attachment
+    const vk_core::Image& depth;         // kDepthFormat, reversed Z
+    const vk_core::Image& linear_depth;  // kLinearDepthFormat
+    // The region drawn, from the images' top-left corner: the whole image for the eyes, the
+    // viewport of eq. 8 inside its larger allocation for C.
+    vk::Extent2D area;
+    // The eyes of hybrid modes leave the sky to C: their uncovered pixels are filled by the
+    // composite.
+    bool draw_sky = true;
 };
 
 class ForwardPass {
   public:
     static constexpr vk::Format kHdrFormat = vk::Format::eR16G16B16A16Sfloat;
     static constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
+    static constexpr vk::Format kLinearDepthFormat = vk::Format::eR32Sfloat;
 
     explicit ForwardPass(const vk_core::Context& ctx);
 
     vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
 
-    // Expects both targets in eUndefined (their contents are cleared); leaves hdr in
-    // eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
+    // Expects the targets in eUndefined (their contents are replaced); leaves the colour targets
+    // in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
     void record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
                 vk::DescriptorSet view_set, const SceneGeometry& geometry,
                 const DrawList& draws) const;

@@ -7,6 +7,7 @@ layout(std140, set = 0, binding = 0) uniform ViewBlock { ViewConstants view; };
 
 layout(location = 0) in vec2 in_uv;
 layout(location = 0) out vec4 out_color;
+layout(location = 1) out float out_linear_depth;
 
 void main() {
     vec2 ndc = in_uv * 2.0 - 1.0;
@@ -14,4 +15,5 @@ void main() {
     vec4 far_point = view.inv_view_proj * vec4(ndc, 0.5, 1.0);
     vec3 direction = far_point.xyz / far_point.w - near_point.xyz / near_point.w;
     out_color = vec4(sky_radiance(direction, view), 1.0);
+    out_linear_depth = MONOPLANE_SKY_LINEAR_DEPTH;
 }

@@ -1,0 +1,102 @@
+// The render modes of DESIGN.md section 6 as lists of passes over shared resources:
+//   stereo:          shadow*, per eye {forward+sky}, per eye {tonemap, readback}
+//   hybrid:          shadow*, per eye {forward n..m, no sky}, C {forward m-eps..f + sky},
+//                    per eye {composite C through M_{E->C}, tonemap, readback}, C {tonemap}
+//   hybrid-farfield: as hybrid with C at the eyes' centre, no overlap, an offset copy
+// (* only when the light's region changed). With m >= f, hybrid records exactly the stereo
+// list: nothing lies beyond the plane, so C and the composite are skipped.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "renderer/modes/view_setup.h"
+#include "renderer/passes/composite/composite_pass.h"
+#include "renderer/passes/forward/forward_pass.h"
+#include "renderer/passes/shadow/shadow_pass.h"
+#include "renderer/passes/tonemap/tonemap_pass.h"
+#include "renderer/profile/frame_profiler.h"
+#include "renderer/rig/rig.h"
+
+namespace monoplane::modes {
+
+enum class Mode { kStereo, kHybrid, kHybridFarfield };
+
+// Debug views (DESIGN.md section 6) of the hybrid modes.
+enum class DebugView { kNone, kTintMono, kStereoOnly, kMonoOnly };
+
+std::optional<Mode> parse_mode(const std::string& name);
+std::string mode_name(Mode mode);
+std::optional<DebugView> parse_debug_view(const std::string& name);
+
+struct RendererOptions {
+    passes::ShadowParams shadow;
+    passes::TonemapParams tonemap;
+    bool read_back = true;         // display images to the host (PNGs, tests)
+    bool read_back_depth = false;  // linear depth to the host (tests, later analyses)
+};
+
+struct FrameInputs {
+    StereoViewInputs views;
+    double mono_plane = 8.0;       // m, metres in front of the eyes (hybrid modes)
+    double overlap_k = 2.0;        // k of eq. 3
+    double view_blend_band = 0.3;  // metres below m over which view vectors blend (Sect. 4.3)
+    DebugView debug = DebugView::kNone;
+};
+
+class ModeRenderer {
+  public:
+    // The scene must outlive the renderer. nearest_mono_plane sizes C's render target once
+    // (eq. 8 allocation); 0 sizes it for the first frame's m and grows it if a later m needs more.
+    ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& scene, Mode mode,
+                 vk::Extent2D eye_extent, const RendererOptions& options,
+                 double nearest_mono_plane = 0.0);
+    ~ModeRenderer();
+
+    // Renders one frame and waits for it. Fails (UserError) for inputs the rig refuses.
+    profile::FrameStats render_frame(const FrameInputs& inputs);
+
+    Mode mode() const { return mode_; }
+    // The last frame's images (options.read_back).
+    const RgbaImage& eye_image(Eye eye) const;
+    // C's tone-mapped image, or nullptr when the last frame had none (stereo, or m >= f).
+    const RgbaImage* mono_image() const;
+    // Metres in front of the eyes' plane per pixel, MONOPLANE_SKY_LINEAR_DEPTH for the sky
+    // (options.read_back_depth).
+    const std::vector<float>& eye_linear_depth(Eye eye) const;
+    // The rig of the last hybrid frame.
+    const std::optional<rig::Rig>& last_rig() const { return rig_; }
+
+  private:
+    struct View;
+    struct MonoView;
+
+    void ensure_mono_view(int width, int height);
+    void update_view(View& view, const glm::dmat4& view_proj, const glm::dvec3& position,
+                     const FrameInputs& inputs, const glm::dvec3& mono_position, double blend_band,
+                     const glm::dmat4& light_view_proj);
+
+    const vk_core::Context& ctx_;
+    const scenes::Scene& scene_;
+    Mode mode_;
+    vk::Extent2D eye_extent_;
+    RendererOptions options_;
+    double nearest_mono_plane_;
+    passes::SceneGeometry geometry_;
+    passes::ShadowPass shadow_;
+    passes::ForwardPass forward_;
+    passes::TonemapPass tonemap_;
+    passes::CompositePass composite_;
+    passes::DrawList shadow_draws_;
+    profile::FrameProfiler profiler_;
+    vk::raii::DescriptorPool descriptor_pool_{nullptr};
+    std::array<std::unique_ptr<View>, 2> eyes_;
+    std::unique_ptr<MonoView> mono_;
+    bool mono_rendered_ = false;
+    std::optional<rig::Rig> rig_;
+    std::optional<glm::dmat4> shadow_light_view_proj_;
+};
+
+}  // namespace monoplane::modes

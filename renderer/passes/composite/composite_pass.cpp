@@ -1,0 +1,104 @@
+#include "renderer/passes/composite/composite_pass.h"
+
+#include <array>
+
+#include "renderer/passes/forward/forward_pass.h"
+
+namespace monoplane::passes {
+namespace {
+const std::uint32_t kFullscreenVert[] = {
+#include "fullscreen.vert.spv.inc"
+};
+const std::uint32_t kCompositeFrag[] = {
+#include "composite.frag.spv.inc"
+};
+
+// The shader's push-constant block, std430.
+struct PushBlock {
+    glm::mat4 eye_to_mono;
+    glm::vec4 uv_limits;
+    glm::vec4 eye_extent_mode;
+    glm::vec4 pixel_offset;
+};
+static_assert(sizeof(PushBlock) == 112, "must match composite.frag");
+
+vk::raii::Sampler make_sampler(const vk_core::Context& ctx, vk::Filter filter) {
+    return vk::raii::Sampler(
+        ctx.device(), vk::SamplerCreateInfo({}, filter, filter, vk::SamplerMipmapMode::eNearest,
+                                            vk::SamplerAddressMode::eClampToEdge,
+                                            vk::SamplerAddressMode::eClampToEdge,
+                                            vk::SamplerAddressMode::eClampToEdge));
+}
+}  // namespace
+
+CompositePass::CompositePass(const vk_core::Context& ctx)
+    : bilinear_(make_sampler(ctx, vk::Filter::eLinear)),
+      nearest_(make_sampler(ctx, vk::Filter::eNearest)) {
+    const std::array bindings = {
+        vk::DescriptorSetLayoutBinding(0, vk::DescriptorType::eCombinedImageSampler, 1,
+                                       vk::ShaderStageFlagBits::eFragment),
+        vk::DescriptorSetLayoutBinding(1, vk::DescriptorType::eCombinedImageSampler, 1,
+                                       vk::ShaderStageFlagBits::eFragment),
+    };
+    set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
+                                                vk::DescriptorSetLayoutCreateInfo({}, bindings));
+    const vk::DescriptorSetLayout set_layout = *set_layout_;
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(PushBlock));
+    layout_ =
+        vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout, push));
+    const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
+    const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, kCompositeFrag);
+    vk_core::GraphicsPipelineDesc desc;
+    desc.layout = *layout_;
+    desc.vertex = *vert;
+    desc.fragment = *frag;
+    desc.color_formats = {ForwardPass::kHdrFormat, ForwardPass::kLinearDepthFormat};
+    desc.depth_format = ForwardPass::kDepthFormat;
+    desc.cull = vk::CullModeFlagBits::eNone;
+    desc.depth_write = false;
+    // The full-screen triangle lies at depth 0, the eye's far plane (m): equal only where the
+    // eye drew nothing.
+    desc.depth_compare = vk::CompareOp::eEqual;
+    behind_near_content_ = vk_core::make_graphics_pipeline(ctx, desc);
+    desc.depth_test = false;
+    everywhere_ = vk_core::make_graphics_pipeline(ctx, desc);
+}
+
+void CompositePass::record(const vk::raii::CommandBuffer& cmd, const CompositeTargets& targets,
+                           vk::DescriptorSet mono_set, const CompositeParams& params) const {
+    const vk::Extent2D extent = targets.hdr.desc().extent;
+    const std::array colors = {
+        vk::RenderingAttachmentInfo(targets.hdr.view(), vk::ImageLayout::eColorAttachmentOptimal,
+                                    {}, {}, {}, vk::AttachmentLoadOp::eLoad,
+                                    vk::AttachmentStoreOp::eStore),
+        vk::RenderingAttachmentInfo(targets.linear_depth.view(),
+                                    vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
+                                    vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore),
+    };
+    const vk::RenderingAttachmentInfo depth(
+        targets.depth.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
+        vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
+    cmd.beginRendering(vk::RenderingInfo()
+                           .setRenderArea(vk::Rect2D({0, 0}, extent))
+                           .setLayerCount(1)
+                           .setColorAttachments(colors)
+                           .setPDepthAttachment(&depth));
+    vk_core::set_viewport_and_scissor(cmd, extent);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
+                     params.cover_all_pixels ? *everywhere_ : *behind_near_content_);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, mono_set, {});
+    const glm::vec2 half_texel = 0.5f / params.mono_allocation;
+    const PushBlock push{
+        params.eye_to_mono,
+        glm::vec4(params.uv_scale, half_texel),
+        glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
+                  static_cast<float>(params.mapping), params.tint),
+        glm::vec4(static_cast<float>(params.pixel_offset.x),
+                  static_cast<float>(params.pixel_offset.y), 0.0f, 0.0f),
+    };
+    cmd.pushConstants<PushBlock>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, push);
+    cmd.draw(3, 1, 0, 0);
+    cmd.endRendering();
+}
+
+}  // namespace monoplane::passes

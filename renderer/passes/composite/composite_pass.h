@@ -1,0 +1,58 @@
+// The mono-to-stereo composite of one eye (Fink et al. 2019, Sect. 4.2; papers/003 for the
+// engine-style copy). Reads: C's HDR and linear depth (set 0). Writes: the eye's HDR and linear
+// depth where its depth buffer still holds the cleared far value (no near content), or
+// everywhere for the debug view "mono only".
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+
+#include "renderer/vk/image.h"
+#include "renderer/vk/pipeline.h"
+
+namespace monoplane::passes {
+
+enum class CompositeMapping {
+    kProjective = 0,  // through M_{E->C} at the mono plane, bilinear: monoplane's hybrid
+    kOffsetCopy = 1,  // a constant integer pixel offset, nearest: the engine-style far field
+    kNothing = 2,     // leave the far region black (debug view "stereo only")
+};
+
+struct CompositeParams {
+    glm::mat4 eye_to_mono{1.0f};      // M_{E->C}, float32 as the GPU uses it
+    glm::vec2 uv_scale{1.0f};         // C's viewport / allocation (eq. 8)
+    glm::vec2 mono_allocation{1.0f};  // C's image size in pixels
+    glm::ivec2 pixel_offset{0};       // for kOffsetCopy
+    CompositeMapping mapping = CompositeMapping::kProjective;
+    float tint = 0.0f;              // debug view "mono region tinted": 0 off, 1 full
+    bool cover_all_pixels = false;  // debug view "mono only": ignore the near content
+};
+
+struct CompositeTargets {
+    const vk_core::Image& hdr;           // eye HDR, eColorAttachmentOptimal
+    const vk_core::Image& linear_depth;  // eye linear depth, eColorAttachmentOptimal
+    const vk_core::Image& depth;         // eye depth, eDepthAttachmentOptimal (read only)
+};
+
+class CompositePass {
+  public:
+    explicit CompositePass(const vk_core::Context& ctx);
+
+    vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
+    vk::Sampler bilinear_sampler() const { return *bilinear_; }
+    vk::Sampler nearest_sampler() const { return *nearest_; }
+
+    // Appends to the eye's targets (their contents are kept).
+    void record(const vk::raii::CommandBuffer& cmd, const CompositeTargets& targets,
+                vk::DescriptorSet mono_set, const CompositeParams& params) const;
+
+  private:
+    vk::raii::DescriptorSetLayout set_layout_{nullptr};
+    vk::raii::Sampler bilinear_{nullptr};
+    vk::raii::Sampler nearest_{nullptr};
+    vk::raii::PipelineLayout layout_{nullptr};
+    vk::raii::Pipeline behind_near_content_{nullptr};  // depth test: equal to the cleared far
+    vk::raii::Pipeline everywhere_{nullptr};
+};
+
+}  // namespace monoplane::passes
