@@ -7,6 +7,7 @@
 #include "app/commands/commands.h"
 #include "app/commands/frame_summary.h"
 #include "app/commands/json_writer.h"
+#include "app/commands/stereo_comparison.h"
 #include "app/png.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
@@ -35,6 +36,7 @@ struct RenderOptions {
     int shadow_resolution = 4096;
     std::string out;
     bool json = false;
+    bool compare_stereo = false;
 };
 
 std::string joined(const std::vector<std::string>& names) {
@@ -46,7 +48,9 @@ std::string joined(const std::vector<std::string>& names) {
 std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
                          const scenes::Scene& scene, const vk_core::Context& ctx, int width,
                          int height, const FrameSummary& s, const std::optional<rig::Rig>& rig,
-                         const modes::RgbaImage* mono, const std::filesystem::path& out) {
+                         const modes::RgbaImage* mono,
+                         const std::optional<StereoComparison>& comparison,
+                         const std::filesystem::path& out) {
     JsonWriter j;
     j.begin_object();
     j.value("command", "render").value("scene", scene.name).value("mode", o.mode);
@@ -89,6 +93,19 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
     }
     j.end_object();
     j.value("primitives", primitives).value("fragments", fragments);
+    if (comparison) {
+        j.value("ssim_vs_stereo", comparison->ssim_mean());
+        j.begin_object("ssim");
+        for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
+            const EyeComparison& c = comparison->eyes[static_cast<int>(eye)];
+            j.begin_object(modes::eye_name(eye));
+            j.value("gaussian", c.ssim).value("local_w4", c.ssim_local_w4);
+            j.value("beyond_plane", c.ssim_beyond_plane);
+            j.value("pixels_beyond_plane", static_cast<std::uint64_t>(c.pixels_beyond_plane));
+            j.end_object();
+        }
+        j.end_object();
+    }
     j.begin_object("files");
     j.value("left", (out / "left.png").string()).value("right", (out / "right.png").string());
     if (mono) j.value("mono", (out / "mono.png").string());
@@ -175,8 +192,17 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     write_png(out / "right.png", renderer.eye_image(modes::Eye::kRight)).value_or_throw();
     const modes::RgbaImage* mono = renderer.mono_image();
     if (mono) write_png(out / "mono.png", *mono).value_or_throw();
-    const std::string json = summary_json(o, profile, scene, *ctx, width, height,
-                                          summarize(measured), renderer.last_rig(), mono, out);
+    std::optional<StereoComparison> comparison;
+    if (o.compare_stereo && *mode != modes::Mode::kStereo) {
+        std::cerr << "rendering the stereo reference for SSIM\n";
+        comparison = compare_with_stereo(
+            *ctx, scene,
+            vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
+            renderer_options, inputs, renderer, out);
+    }
+    const std::string json =
+        summary_json(o, profile, scene, *ctx, width, height, summarize(measured),
+                     renderer.last_rig(), mono, comparison, out);
     std::ofstream(out / "stats.json") << json << "\n";
     if (o.json) std::cout << json << "\n";
     std::cerr << "wrote " << (out / "left.png").string() << ", " << (out / "right.png").string()
@@ -226,6 +252,8 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
         ->capture_default_str();
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->add_flag("--json", options->json, "Print the statistics as JSON on stdout");
+    cmd->add_flag("--compare-stereo", options->compare_stereo,
+                  "Hybrid modes: also render stereo and write SSIM and local-SSIM heat maps");
     cmd->callback([options, &global] { run_render(*options, global); });
 }
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -21,6 +22,8 @@
 
 namespace monoplane::app {
 namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The mono-plane distances of the fink2019 protocol (DESIGN.md section 7).
 const std::vector<double> kFink2019MonoPlanes = {1.6, 3, 5, 8, 12, 16, 20, 25, 31, 39.5};
@@ -80,7 +83,7 @@ std::vector<double> table_depths(double m, double far) {
         if (m * factor < far) depths.push_back(m * factor);
     }
     depths.push_back(far);
-    depths.push_back(INFINITY);
+    depths.push_back(kInfinity);
     return depths;
 }
 
@@ -265,7 +268,7 @@ std::string fig2_svg(const std::vector<Fig2Series>& series, const hmd::HmdProfil
     constexpr double kTop = 90.0;
     constexpr double kBottom = 510.0;
 
-    double depth_min = INFINITY;
+    double depth_min = kInfinity;
     double error_max = 0.0;
     for (const Fig2Series& s : series) {
         depth_min = std::min(depth_min, s.mono_plane);

@@ -17,6 +17,8 @@
 namespace monoplane::rig {
 namespace {
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 // The Vive as quoted by the paper, in the XrFovf convention (hmd/profiles/vive.toml).
 constexpr Tangents kViveLeft{-1.391937, 1.247409, -1.468819, 1.464287};
 constexpr Tangents kViveRight{-1.246557, 1.398447, -1.465505, 1.472458};
@@ -109,8 +111,8 @@ TEST(Rig, MonoViewportEqualsTheClosedFormOfEq8) {
         const Tangents& c = rig.mono.tangents;
         // The mono-plane quad is (tanR_C - tanL_C)(m + s) wide, i.e. that over m in the eye's
         // tangents; in pixels of eye e: * W / (tanR_e - tanL_e). eq. 8 takes the smaller.
-        double width = INFINITY;
-        double height = INFINITY;
+        double width = kInfinity;
+        double height = kInfinity;
         for (const Tangents& e : {kViveLeft, kViveRight}) {
             width =
                 std::min(width, (c.right - c.left) * (m + s) / m * kViveWidth / (e.right - e.left));
@@ -195,8 +197,8 @@ TEST(Rig, ErrorGrowsFromZeroAtTheMonoPlaneToTheSupremum) {
         previous = e.horizontal_px;
     }
     EXPECT_NEAR(error_at_depth(rig, 1e9).horizontal_px, rig.max_error_px, 1e-6);
-    EXPECT_EQ(error_at_depth(rig, INFINITY).horizontal_px, rig.max_error_px);
-    EXPECT_EQ(error_at_depth(rig, INFINITY).euclidean_px, rig.max_error_px_2d);
+    EXPECT_EQ(error_at_depth(rig, kInfinity).horizontal_px, rig.max_error_px);
+    EXPECT_EQ(error_at_depth(rig, kInfinity).euclidean_px, rig.max_error_px_2d);
 }
 
 TEST(Rig, ErrorAtDepthMatchesHybridMinusStereoPixels) {
@@ -282,13 +284,13 @@ TEST(Rig, DegenerateInputsGiveErrorsNamingTheInput) {
         {"mono_plane", [](RigInputs& in) { in.mono_plane = 0.1; }},
         {"mono_plane", [](RigInputs& in) { in.mono_plane = 0.05; }},
         {"mono_plane", [nan](RigInputs& in) { in.mono_plane = nan; }},
-        {"mono_plane", [](RigInputs& in) { in.mono_plane = INFINITY; }},
+        {"mono_plane", [](RigInputs& in) { in.mono_plane = kInfinity; }},
         {"near", [](RigInputs& in) { in.near = 0.0; }},
         {"near", [](RigInputs& in) { in.near = -1.0; }},
         {"near", [nan](RigInputs& in) { in.near = nan; }},
         {"far", [](RigInputs& in) { in.far = 0.1; }},
         {"far", [](RigInputs& in) { in.far = 0.05; }},
-        {"far", [](RigInputs& in) { in.far = INFINITY; }},
+        {"far", [](RigInputs& in) { in.far = kInfinity; }},
         {"ipd", [](RigInputs& in) { in.ipd = -0.01; }},
         {"ipd", [nan](RigInputs& in) { in.ipd = nan; }},
         {"overlap_k", [](RigInputs& in) { in.overlap_k = -1.0; }},
@@ -307,7 +309,7 @@ TEST(Rig, DegenerateInputsGiveErrorsNamingTheInput) {
         {"eyes[right].tan_up", [](RigInputs& in) { in.eyes[kRight].up = -1.4; }},
         {"eyes[right].tan_up", [](RigInputs& in) { in.eyes[kRight].up = 10.5; }},
         {"eyes[left].tan_right", [nan](RigInputs& in) { in.eyes[kLeft].right = nan; }},
-        {"eyes[right].tan_down", [](RigInputs& in) { in.eyes[kRight].down = -INFINITY; }},
+        {"eyes[right].tan_down", [](RigInputs& in) { in.eyes[kRight].down = -kInfinity; }},
     };
     for (const Degenerate& c : cases) {
         RigInputs in = vive_inputs(8.0);
