@@ -208,6 +208,45 @@ TEST_F(Hybrid, DriftOfAFarMarkerMatchesTheAnalyticError) {
     }
 }
 
+// On the mono plane itself the error is zero (DESIGN.md section 3): monoplane's hybrid puts a
+// marker there where stereo does, to a fraction of a pixel. The engine-style far field
+// (papers/003) copies C with a rounded offset and one pixel density for both eyes: it is off by
+// its rounding and the eyes' asymmetry, but still within a pixel and a half at this size.
+TEST_F(Hybrid, MarkerOnTheMonoPlaneIsExactInHybridAndCloseInFarfield) {
+    const double m = 4.0;
+    const vk::Extent2D extent{672, 756};
+    const glm::dvec3 head(0.0, 1.7, 0.0);
+    const glm::dvec3 in_head(-1.8, 0.6, -m);
+    const scenes::Scene scene = testing::marker_scene(glm::vec3(head + in_head), 0.2f);
+    rig::Pose pose;
+    pose.position = head;
+    const auto inputs = vive_inputs(vive_, pose, m);
+    // The marker lies exactly on the plane: nudge the plane a millimetre nearer so C draws it.
+    auto hybrid_inputs = inputs;
+    hybrid_inputs.mono_plane = m - 0.001;
+    modes::ModeRenderer stereo(ctx(), scene, Mode::kStereo, extent, small_options());
+    modes::ModeRenderer hybrid(ctx(), scene, Mode::kHybrid, extent, small_options());
+    modes::ModeRenderer farfield(ctx(), scene, Mode::kHybridFarfield, extent, small_options());
+    stereo.render_frame(inputs);
+    hybrid.render_frame(hybrid_inputs);
+    farfield.render_frame(hybrid_inputs);
+    ASSERT_NE(hybrid.mono_image(), nullptr);
+    ASSERT_NE(farfield.mono_image(), nullptr);
+    for (Eye eye : {Eye::kLeft, Eye::kRight}) {
+        SCOPED_TRACE(modes::eye_name(eye));
+        const Centroid reference = red_centroid(stereo.eye_image(eye));
+        const Centroid exact = red_centroid(hybrid.eye_image(eye));
+        const Centroid engine = red_centroid(farfield.eye_image(eye));
+        EXPECT_NEAR(exact.x, reference.x, 0.2);
+        EXPECT_NEAR(exact.y, reference.y, 0.2);
+        EXPECT_NEAR(engine.x, reference.x, 1.5);
+        EXPECT_NEAR(engine.y, reference.y, 1.5);
+        std::cout << modes::eye_name(eye) << ": hybrid offset " << exact.x - reference.x << ", "
+                  << exact.y - reference.y << " px; farfield " << engine.x - reference.x << ", "
+                  << engine.y - reference.y << " px\n";
+    }
+}
+
 // Debug views: the tint changes exactly the pixels C filled; "stereo only" leaves them black;
 // "mono only" shows C's image over the near content too.
 TEST_F(Hybrid, DebugViewsSeparateTheRegions) {
