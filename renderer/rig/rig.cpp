@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -15,6 +16,8 @@
 
 namespace monoplane::rig {
 namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 std::string number(double value) {
     std::ostringstream text;
@@ -200,8 +203,9 @@ Cameras compute_cameras(const RigInputs& in, double m) {
     c.mono_near = m - c.overlap + s;
     c.mono_far = in.far + s;
 
-    // eq. 5 in the head frame: all three cameras share the head's orientation, so
-    // V_E V_C^-1 is the translation by (C's position - eye position), and its inverse the reverse.
+    // eq. 5 in the head frame: all three cameras share the head's orientation, so V_E V_C^-1 is
+    // the translation by C's position as seen from the eye (p_C - p_E), and its inverse the
+    // reverse.
     c.mono_projection = projection_reversed_z(ct, c.mono_near, c.mono_far);
     const glm::dmat4 mono_projection_inverse =
         inverse_projection_reversed_z(ct, c.mono_near, c.mono_far);
@@ -209,11 +213,12 @@ Cameras compute_cameras(const RigInputs& in, double m) {
         const Tangents& t = in.eyes[eye];
         c.eye_projection[eye] = projection_reversed_z(t, in.near, m);
         const glm::dmat4 eye_projection_inverse = inverse_projection_reversed_z(t, in.near, m);
-        const glm::dvec3 eye_from_mono = c.mono_position - c.eye_positions[eye];
+        const glm::dvec3 mono_in_eye_view = c.mono_position - c.eye_positions[eye];
         c.mono_to_eye[eye] = c.eye_projection[eye] *
-                             glm::translate(glm::dmat4(1.0), eye_from_mono) *
+                             glm::translate(glm::dmat4(1.0), mono_in_eye_view) *
                              mono_projection_inverse;
-        c.eye_to_mono[eye] = c.mono_projection * glm::translate(glm::dmat4(1.0), -eye_from_mono) *
+        c.eye_to_mono[eye] = c.mono_projection *
+                             glm::translate(glm::dmat4(1.0), -mono_in_eye_view) *
                              eye_projection_inverse;
     }
 
@@ -224,7 +229,7 @@ Cameras compute_cameras(const RigInputs& in, double m) {
     const glm::dvec4 plane_clip = c.mono_projection * glm::dvec4(0.0, 0.0, -from_mono, 1.0);
     c.mono_plane_ndc_depth = plane_clip.z / plane_clip.w;
     const double z = c.mono_plane_ndc_depth;
-    c.mono_size = glm::dvec2(INFINITY);
+    c.mono_size = glm::dvec2(kInfinity);
     for (int eye : {kLeft, kRight}) {
         auto to_eye_ndc = [&](double x, double y) {
             const glm::dvec4 clip = c.mono_to_eye[eye] * glm::dvec4(x, y, z, 1.0);
@@ -243,8 +248,8 @@ Cameras compute_cameras(const RigInputs& in, double m) {
 // w_C of eq. 8 in closed form: the width of the union of the eyes' cross-sections at distance
 // m, in the pixel pitch of the coarser eye. Used for the limit m -> f of the allocation.
 double mono_width_closed_form(const RigInputs& in, double m) {
-    double union_left = INFINITY;
-    double union_right = -INFINITY;
+    double union_left = kInfinity;
+    double union_right = -kInfinity;
     double widest_field = 0.0;
     for (int eye : {kLeft, kRight}) {
         union_left = std::min(union_left, eye_x(in, eye) + in.eyes[eye].left * m);
