@@ -226,6 +226,14 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
         ->capture_default_str();
     cmd->add_option("--mono-plane", options->mono_plane,
                     "Mono-plane distance m in metres (hybrid modes)");
+    cmd->add_option("--k", options->overlap_k, "Overlap constant k of eq. 3: eps = k s m")
+        ->capture_default_str();
+    cmd->add_option("--blend-band", options->blend_band,
+                    "Metres below m over which the eyes' view vectors blend into C's (0: off)")
+        ->capture_default_str();
+    cmd->add_option("--debug-view", options->debug_view,
+                    "Hybrid debug view: none, tint-mono, stereo-only or mono-only")
+        ->capture_default_str();
     cmd->add_option("--hmd", options->hmd,
                     "HMD profile: vive, vive-pro, symmetric-90, "
                     "symmetric-110 or a TOML file")
