@@ -147,33 +147,35 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
     descriptor_pool_ = vk::raii::DescriptorPool(
         ctx.device(), vk::DescriptorPoolCreateInfo(
                           vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 7, pool_sizes));
-    for (auto& eye : eyes_) eye = std::make_unique<View>(ctx, eye_extent, scene.chunks.size());
     for (auto& eye : eyes_) {
+        eye = std::make_unique<View>(ctx, eye_extent, scene.chunks.size());
         const std::array layouts = {forward_.set_layout(), tonemap_.set_layout()};
         vk::raii::DescriptorSets sets(ctx.device(),
                                       vk::DescriptorSetAllocateInfo(*descriptor_pool_, layouts));
         eye->forward_set = std::move(sets[0]);
         eye->tonemap_set = std::move(sets[1]);
+        write_view_sets(*eye);
     }
     std::vector<std::uint32_t> all(scene.chunks.size());
     for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
     shadow_draws_.assign(scene, all);
-    for (auto& eye : eyes_) {
-        const vk::DescriptorBufferInfo constants_info(eye->constants.handle(), 0, VK_WHOLE_SIZE);
-        const vk::DescriptorImageInfo shadow_info(shadow_.sampler(), shadow_.view(),
-                                                  vk::ImageLayout::eShaderReadOnlyOptimal);
-        const vk::DescriptorImageInfo hdr_info(tonemap_.sampler(), eye->hdr.view(),
-                                               vk::ImageLayout::eShaderReadOnlyOptimal);
-        const std::array writes = {
-            vk::WriteDescriptorSet(*eye->forward_set, 0, 0, vk::DescriptorType::eUniformBuffer, {},
-                                   constants_info),
-            vk::WriteDescriptorSet(*eye->forward_set, 1, 0,
-                                   vk::DescriptorType::eCombinedImageSampler, shadow_info),
-            vk::WriteDescriptorSet(*eye->tonemap_set, 0, 0,
-                                   vk::DescriptorType::eCombinedImageSampler, hdr_info),
-        };
-        ctx.device().updateDescriptorSets(writes, {});
-    }
+}
+
+void ModeRenderer::write_view_sets(const View& view) const {
+    const vk::DescriptorBufferInfo constants_info(view.constants.handle(), 0, VK_WHOLE_SIZE);
+    const vk::DescriptorImageInfo shadow_info(shadow_.sampler(), shadow_.view(),
+                                              vk::ImageLayout::eShaderReadOnlyOptimal);
+    const vk::DescriptorImageInfo hdr_info(tonemap_.sampler(), view.hdr.view(),
+                                           vk::ImageLayout::eShaderReadOnlyOptimal);
+    const std::array writes = {
+        vk::WriteDescriptorSet(*view.forward_set, 0, 0, vk::DescriptorType::eUniformBuffer, {},
+                               constants_info),
+        vk::WriteDescriptorSet(*view.forward_set, 1, 0, vk::DescriptorType::eCombinedImageSampler,
+                               shadow_info),
+        vk::WriteDescriptorSet(*view.tonemap_set, 0, 0, vk::DescriptorType::eCombinedImageSampler,
+                               hdr_info),
+    };
+    ctx_.device().updateDescriptorSets(writes, {});
 }
 
 ModeRenderer::~ModeRenderer() = default;
@@ -194,23 +196,13 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     mono_->forward_set = std::move(sets[0]);
     mono_->tonemap_set = std::move(sets[1]);
     mono_->composite_set = std::move(sets[2]);
-    const vk::DescriptorBufferInfo constants_info(mono_->constants.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorImageInfo shadow_info(shadow_.sampler(), shadow_.view(),
-                                              vk::ImageLayout::eShaderReadOnlyOptimal);
-    const vk::DescriptorImageInfo hdr_info(tonemap_.sampler(), mono_->hdr.view(),
-                                           vk::ImageLayout::eShaderReadOnlyOptimal);
+    write_view_sets(*mono_);
     const vk::DescriptorImageInfo bilinear_hdr(composite_.bilinear_sampler(), mono_->hdr.view(),
                                                vk::ImageLayout::eShaderReadOnlyOptimal);
     const vk::DescriptorImageInfo linear_info(composite_.nearest_sampler(),
                                               mono_->linear_depth.view(),
                                               vk::ImageLayout::eShaderReadOnlyOptimal);
     const std::array writes = {
-        vk::WriteDescriptorSet(*mono_->forward_set, 0, 0, vk::DescriptorType::eUniformBuffer, {},
-                               constants_info),
-        vk::WriteDescriptorSet(*mono_->forward_set, 1, 0, vk::DescriptorType::eCombinedImageSampler,
-                               shadow_info),
-        vk::WriteDescriptorSet(*mono_->tonemap_set, 0, 0, vk::DescriptorType::eCombinedImageSampler,
-                               hdr_info),
         vk::WriteDescriptorSet(*mono_->composite_set, 0, 0,
                                vk::DescriptorType::eCombinedImageSampler, bilinear_hdr),
         vk::WriteDescriptorSet(*mono_->composite_set, 1, 0,

@@ -74,6 +74,8 @@ class ModeRenderer {
     struct MonoView;
 
     void ensure_mono_view(int width, int height);
+    // Points a view's forward and tone-mapping descriptor sets at its own resources.
+    void write_view_sets(const View& view) const;
     void update_view(View& view, const glm::dmat4& view_proj, const glm::dvec3& position,
                      const FrameInputs& inputs, const glm::dvec3& mono_position, double blend_band,
                      const glm::dmat4& light_view_proj);

@@ -11,6 +11,7 @@
 #include "scenes/generate.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/gpu/hybrid_test_scenes.h"
+#include "tests/gpu/marker_centroid.h"
 
 namespace monoplane {
 namespace {
@@ -136,32 +137,6 @@ TEST_F(Hybrid, NoCuttingLineAlongTheMonoPlane) {
               << holes_with_overlap << ", without " << holes_without_overlap << "\n";
 }
 
-struct Centroid {
-    double x = 0.0;
-    double y = 0.0;
-    double weight = 0.0;
-};
-
-// Centroid of the marker's redness, weighted so that bilinearly blurred edges keep their centre.
-Centroid red_centroid(const modes::RgbaImage& image) {
-    Centroid c;
-    for (std::uint32_t y = 0; y < image.height; ++y) {
-        for (std::uint32_t x = 0; x < image.width; ++x) {
-            const std::uint8_t* p = &image.pixels[(y * image.width + x) * 4];
-            // The marker is pure red; the ground below the horizon is only slightly reddish
-            // (redness < 20). Blur is symmetric, so any weighting of redness keeps the centre.
-            const double redness = std::max(0, p[0] - std::max(p[1], p[2]) - 40);
-            if (redness <= 0) continue;
-            c.x += redness * (x + 0.5);
-            c.y += redness * (y + 0.5);
-            c.weight += redness;
-        }
-    }
-    c.x /= c.weight;
-    c.y /= c.weight;
-    return c;
-}
-
 // (c) A marker far beyond m appears displaced in hybrid by the analytic error: its central
 // projection from C onto the mono plane, seen by the eye (DESIGN.md section 3, "Error").
 TEST_F(Hybrid, DriftOfAFarMarkerMatchesTheAnalyticError) {
@@ -196,8 +171,8 @@ TEST_F(Hybrid, DriftOfAFarMarkerMatchesTheAnalyticError) {
                 const glm::dvec3 c(0.0, 0.0, s);
                 const glm::dvec3 on_plane = c + (in_head - c) * ((m + s) / (depth + s));
                 const glm::dvec2 expected = pixel(on_plane) - pixel(in_head);
-                const Centroid a = red_centroid(stereo.eye_image(eye));
-                const Centroid b = red_centroid(hybrid.eye_image(eye));
+                const testing::Centroid a = testing::red_centroid(stereo.eye_image(eye));
+                const testing::Centroid b = testing::red_centroid(hybrid.eye_image(eye));
                 SCOPED_TRACE(std::string(modes::eye_name(eye)) + " depth " + std::to_string(depth) +
                              " tangent " + std::to_string(tangent));
                 EXPECT_GT(std::abs(expected.x), 1.0);  // a drift worth measuring
@@ -234,9 +209,9 @@ TEST_F(Hybrid, MarkerOnTheMonoPlaneIsExactInHybridAndCloseInFarfield) {
     ASSERT_NE(farfield.mono_image(), nullptr);
     for (Eye eye : {Eye::kLeft, Eye::kRight}) {
         SCOPED_TRACE(modes::eye_name(eye));
-        const Centroid reference = red_centroid(stereo.eye_image(eye));
-        const Centroid exact = red_centroid(hybrid.eye_image(eye));
-        const Centroid engine = red_centroid(farfield.eye_image(eye));
+        const testing::Centroid reference = testing::red_centroid(stereo.eye_image(eye));
+        const testing::Centroid exact = testing::red_centroid(hybrid.eye_image(eye));
+        const testing::Centroid engine = testing::red_centroid(farfield.eye_image(eye));
         EXPECT_NEAR(exact.x, reference.x, 0.2);
         EXPECT_NEAR(exact.y, reference.y, 0.2);
         EXPECT_NEAR(engine.x, reference.x, 1.5);
@@ -305,8 +280,9 @@ TEST_F(Hybrid, ViewVectorBlendRemovesTheHighlightSeam) {
     hybrid.render_frame(inputs);
     const double with = seam_jump(hybrid.eye_image(Eye::kLeft), stereo.eye_image(Eye::kLeft),
                                   hybrid.eye_linear_depth(Eye::kLeft), inputs.mono_plane);
-    std::cout << "highlight seam (worst 5 % of jumps of the deviation, 8-bit levels): without blend "
-              << without << ", with " << with << "\n";
+    std::cout
+        << "highlight seam (worst 5 % of jumps of the deviation, 8-bit levels): without blend "
+        << without << ", with " << with << "\n";
     EXPECT_GT(without, 1.0);  // the set-up really produces a seam
     EXPECT_LT(with, 0.5 * without);
 }

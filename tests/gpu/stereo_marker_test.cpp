@@ -7,58 +7,11 @@
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
 #include "tests/gpu/gpu_test.h"
+#include "tests/gpu/hybrid_test_scenes.h"
+#include "tests/gpu/marker_centroid.h"
 
 namespace monoplane {
 namespace {
-
-struct Centroid {
-    double x = 0.0;
-    double y = 0.0;
-    int pixels = 0;
-};
-
-// Pixels that are clearly the red marker (the sky and the ground are never twice as red as green).
-Centroid red_centroid(const modes::RgbaImage& image) {
-    Centroid c;
-    for (std::uint32_t y = 0; y < image.height; ++y) {
-        for (std::uint32_t x = 0; x < image.width; ++x) {
-            const std::uint8_t* p = &image.pixels[(y * image.width + x) * 4];
-            if (p[0] > 60 && p[0] > 2 * p[1] && p[0] > 2 * p[2]) {
-                c.x += x + 0.5;  // pixel centres
-                c.y += y + 0.5;
-                ++c.pixels;
-            }
-        }
-    }
-    if (c.pixels > 0) {
-        c.x /= c.pixels;
-        c.y /= c.pixels;
-    }
-    return c;
-}
-
-// A square facing the viewer (normal +z): its projection is an axis-aligned rectangle whose
-// centroid is the projection of its centre, exactly, because it is parallel to the image plane.
-scenes::Scene marker_scene(const glm::vec3& centre, float half_size) {
-    scenes::Scene scene;
-    scene.name = "marker";
-    const std::uint32_t red = scenes::pack_rgba8(1.0f, 0.0f, 0.0f);
-    const std::uint32_t material = scenes::pack_material({0.9f, 0.02f, 0});
-    const glm::vec3 n(0.0f, 0.0f, 1.0f);
-    for (const auto& [dx, dy] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}) {
-        scene.vertices.push_back(
-            {centre + glm::vec3(dx * half_size, dy * half_size, 0.0f), n, red, material});
-    }
-    scene.indices = {0, 1, 2, 0, 2, 3};  // counter-clockwise seen from +z
-    scenes::Chunk chunk;
-    chunk.index_count = 6;
-    chunk.bounds = {centre - glm::vec3(half_size, half_size, 0.0f),
-                    centre + glm::vec3(half_size, half_size, 0.0f)};
-    scene.chunks = {chunk};
-    scene.bounds = chunk.bounds;
-    scene.lighting.sun_direction = glm::normalize(glm::vec3(0.2f, 0.5f, 1.0f));
-    return scene;
-}
 
 class StereoMarker : public testing::GpuTest {};
 
@@ -66,7 +19,7 @@ TEST_F(StereoMarker, MarkerLandsOnTheAnalyticPixelInEachEye) {
     const hmd::HmdProfile vive = hmd::load_hmd_profile("vive").value_or_throw();
     const glm::dvec3 head(0.0, 1.7, 0.0);
     const glm::dvec3 marker(0.31, 1.83, -4.0);
-    const scenes::Scene scene = marker_scene(glm::vec3(marker), 0.06f);
+    const scenes::Scene scene = testing::marker_scene(glm::vec3(marker), 0.1f);
     const std::uint32_t width = 336;  // a quarter of the Vive's 1344 x 1512
     const std::uint32_t height = 378;
 
@@ -89,21 +42,25 @@ TEST_F(StereoMarker, MarkerLandsOnTheAnalyticPixelInEachEye) {
         const double expected_x = (tan_x - t.left) / (t.right - t.left) * width;
         const double expected_y = (t.up - tan_y) / (t.up - t.down) * height;
 
-        const Centroid c = red_centroid(stereo.eye_image(eye));
+        const testing::Centroid c = testing::red_centroid(stereo.eye_image(eye));
         SCOPED_TRACE(modes::eye_name(eye));
-        ASSERT_GT(c.pixels, 4);
+        ASSERT_GT(c.weight, 0.0);
         EXPECT_NEAR(c.x, expected_x, 1.0);
         EXPECT_NEAR(c.y, expected_y, 1.0);
     }
     // Sanity of the set-up itself: the two eyes disagree by the disparity of a point at 4 m.
-    const Centroid left = red_centroid(stereo.eye_image(modes::Eye::kLeft));
-    const Centroid right = red_centroid(stereo.eye_image(modes::Eye::kRight));
+    const testing::Centroid left = testing::red_centroid(stereo.eye_image(modes::Eye::kLeft));
+    const testing::Centroid right = testing::red_centroid(stereo.eye_image(modes::Eye::kRight));
     EXPECT_GT(std::abs(left.x - right.x), 1.0);
 }
 
 TEST_F(StereoMarker, PipelineStatisticsCountTheDrawnTriangles) {
     if (!ctx().capabilities().pipeline_statistics) GTEST_SKIP() << "no pipelineStatisticsQuery";
-    const scenes::Scene scene = marker_scene({0.0f, 1.7f, -3.0f}, 0.5f);
+    // One untessellated square facing the viewer: exactly two triangles.
+    scenes::Scene scene;
+    testing::add_quad(scene, {-0.5f, 1.2f, -3.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f},
+                      scenes::pack_rgba8(1.0f, 0.0f, 0.0f));
+    testing::finish_bounds(scene);
     modes::RendererOptions options;
     options.shadow.resolution = 256;
     modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, {64, 64}, options);
