@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
     add_render_command(root, global);
     add_rig_command(root, global);
     add_devices_command(root, global);
+    add_protocol_command(root, global);
+    add_study_command(root, global);
     try {
         root.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

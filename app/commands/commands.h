@@ -10,5 +10,7 @@ namespace monoplane::app {
 void add_render_command(CLI::App& root, const GlobalOptions& global);
 void add_devices_command(CLI::App& root, const GlobalOptions& global);
 void add_rig_command(CLI::App& root, const GlobalOptions& global);
+void add_protocol_command(CLI::App& root, const GlobalOptions& global);
+void add_study_command(CLI::App& root, const GlobalOptions& global);
 
 }  // namespace monoplane::app

@@ -1,0 +1,96 @@
+// `monoplane protocol check FILE` (DESIGN.md section 8): validates a study protocol before anyone
+// sits down for a session, printing every problem with file, line and key, or, if it is valid, a
+// summary of what a session will contain so the experimenter can check the design itself.
+#include <charconv>
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <iterator>
+#include <memory>
+#include <string>
+
+#include "app/commands/commands.h"
+#include "common/result.h"
+#include "study/protocol.h"
+
+namespace monoplane::app {
+namespace {
+
+std::string order_name(study::TrialOrder order) {
+    switch (order) {
+        case study::TrialOrder::Randomized:
+            return "randomized";
+        case study::TrialOrder::Fixed:
+            return "fixed";
+    }
+    return "?";
+}
+
+std::string first_scene_name(study::FirstSceneBalance balance) {
+    switch (balance) {
+        case study::FirstSceneBalance::LatinSquare:
+            return "latin-square";
+        case study::FirstSceneBalance::Random:
+            return "random";
+        case study::FirstSceneBalance::Fixed:
+            return "fixed";
+    }
+    return "?";
+}
+
+// Shortest round-trip text, as the protocol file would write it: "1.6", "39.5", "8".
+std::string number(double value) {
+    char buffer[32];
+    const auto result = std::to_chars(std::begin(buffer), std::end(buffer), value);
+    return std::string(buffer, result.ptr);
+}
+
+std::string hex(std::uint64_t value) {
+    char buffer[17];
+    std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(value));
+    return buffer;
+}
+
+void print_summary(const study::Protocol& p) {
+    std::string scenes;
+    for (const std::string& scene : p.scenes) scenes += (scenes.empty() ? "" : ", ") + scene;
+    std::string distances;
+    for (double m : p.mono_planes) distances += (distances.empty() ? "" : ", ") + number(m);
+    std::cout << "protocol '" << p.name << "' (" << p.source << ", hash " << hex(p.text_hash)
+              << ") is valid\n"
+              << "  scenes:        " << scenes << "\n"
+              << "  mono planes:   " << distances << " m\n"
+              << "  alternatives:  " << study::render_mode_name(p.alternatives[0])
+              << " (reference) vs " << study::render_mode_name(p.alternatives[1]) << "\n"
+              << "  trials:        " << p.trials_per_session() << " per session ("
+              << p.scenes.size() << " scenes x " << p.mono_planes.size() << " distances), plus "
+              << p.practice_trials << " practice\n"
+              << "  order:         " << order_name(p.order) << ", first scene "
+              << first_scene_name(p.first_scene)
+              << (p.require_both_viewed ? ", both alternatives must be viewed"
+                                        : ", confirming without viewing both is allowed")
+              << "\n"
+              << "  clip range:    near " << number(p.near) << " m, far " << number(p.far) << " m\n"
+              << "  questionnaire: " << p.questionnaire.items.size() << " items on a "
+              << p.questionnaire.scale_points << "-point scale\n";
+}
+
+void run_check(const std::string& file) {
+    const study::Protocol protocol = study::load_protocol(file).value_or_throw();
+    print_summary(protocol);
+}
+
+}  // namespace
+
+void add_protocol_command(CLI::App& root, const GlobalOptions& /*global: no GPU involved*/) {
+    CLI::App* cmd = root.add_subcommand("protocol", "Study protocol files (DESIGN.md section 7)");
+    cmd->require_subcommand(1);
+    auto file = std::make_shared<std::string>();
+    CLI::App* check = cmd->add_subcommand(
+        "check", "Validate a protocol; print every problem with file, line and key, or a summary");
+    check->add_option("FILE", *file, "Protocol TOML file, e.g. protocols/fink2019.toml")
+        ->required();
+    check->callback([file] { run_check(*file); });
+}
+
+}  // namespace monoplane::app

@@ -1,0 +1,63 @@
+// Export of the study database (DESIGN.md section 7): one tidy row per trial, identity columns
+// first, as CSV or JSON that pandas and R read without options. docs/data.md lists every column
+// with its type and unit.
+//
+// Every trial of every session is exported, practice trials too, flagged by the `practice`
+// column, so an analysis filters them explicitly (and can check them); undecided trials appear
+// with NA outcome columns (`decided` false). NA is an empty CSV field and JSON null.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/result.h"
+#include "study/study_store.h"
+
+namespace monoplane::study {
+
+enum class ExportFormat { Csv, Json };
+
+// "csv" or "json", as the CLI's --format takes them.
+std::string_view export_format_name(ExportFormat format);
+Result<ExportFormat> parse_export_format(std::string_view name);
+
+// What an export holds: the trials and the sessions they belong to, keyed by session id.
+struct ExportData {
+    std::vector<TrialRecord> trials;
+    std::map<std::int64_t, SessionInfo> sessions;
+};
+
+// Reads every trial and its session. May be called while a study writes (WAL readers do not
+// block the writer); the export is then a consistent snapshot of some moment per query.
+Result<ExportData> collect_export(const StudyStore& store);
+
+// The export's column names, in order (CSV header, JSON keys).
+const std::vector<std::string_view>& export_columns();
+
+// Pure formatting of collected data.
+void write_csv(const ExportData& data, std::ostream& out);
+void write_json(const ExportData& data, std::ostream& out);
+
+// Collects and writes. The path form writes a temporary file beside `path` and renames it over
+// `path` only when complete, so a failure never leaves a truncated export.
+Result<bool> export_trials(const StudyStore& store, ExportFormat format, std::ostream& out);
+Result<bool> export_trials(const StudyStore& store, ExportFormat format,
+                           const std::filesystem::path& path);
+
+// Building blocks, exposed for tests and other writers.
+// RFC 4180: a field with a comma, double quote, CR or LF is quoted, inner quotes doubled.
+std::string csv_field(std::string_view text);
+// A JSON string literal with quotes, escaping '"', '\\' and control characters.
+std::string json_string(std::string_view text);
+// Integer nanoseconds as exact decimal seconds, '.' as the point regardless of locale:
+// 1500000000 -> "1.5", 0 -> "0.0", 1 -> "0.000000001".
+std::string seconds_text(std::int64_t ns);
+// The shortest text that reads back as the same double, '.' as the point ("8", "39.5", "1.6").
+std::string number_text(double value);
+
+}  // namespace monoplane::study

@@ -1,0 +1,490 @@
+// Parsing and validation of study protocols (DESIGN.md section 7). Everything a session will rely
+// on is checked here, before the first trial: a mistake found halfway through a participant's
+// session costs the participant. Every reader records its problems and goes on, so the user sees
+// all of them at once, each with file, line, column and key.
+#include "study/protocol.h"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <span>
+#include <sstream>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "study/condition.h"
+#include "study/toml_problems.h"
+
+namespace monoplane::study {
+namespace {
+
+constexpr std::array<std::string_view, 11> kTopLevelKeys = {
+    "name",  "scenes",      "mono_planes",         "alternatives",
+    "order", "first_scene", "require_both_viewed", "practice_trials",
+    "near",  "far",         "questionnaire"};
+constexpr std::array<std::string_view, 2> kQuestionnaireKeys = {"items", "scale_points"};
+
+// Practice trials precede every session; more than 50 is a typo, not a warm-up.
+constexpr std::int64_t kMaxPracticeTrials = 50;
+// Likert scales in use run from 2 (yes/no) to 11 (0..10) points.
+constexpr std::int64_t kMinScalePoints = 2;
+constexpr std::int64_t kMaxScalePoints = 11;
+
+template <class T>
+struct NamedValue {
+    std::string_view name;
+    T value;
+};
+
+constexpr std::array<NamedValue<TrialOrder>, 2> kOrders = {{
+    {"randomized", TrialOrder::Randomized},
+    {"fixed", TrialOrder::Fixed},
+}};
+constexpr std::array<NamedValue<FirstSceneBalance>, 3> kFirstScenes = {{
+    {"latin-square", FirstSceneBalance::LatinSquare},
+    {"random", FirstSceneBalance::Random},
+    {"fixed", FirstSceneBalance::Fixed},
+}};
+
+// A table being read and its name in messages: "" for the document's root, "questionnaire" for
+// [questionnaire].
+struct Scope {
+    const toml::table& table;
+    std::string name;
+
+    std::string qualified(std::string_view key) const {
+        return name.empty() ? std::string(key) : name + "." + std::string(key);
+    }
+};
+
+// Every message starts with the key, so a user can find it even where the line is ambiguous.
+std::string about(std::string_view qualified_key) {
+    return "key '" + std::string(qualified_key) + "': ";
+}
+
+std::string in_quotes(std::string_view text) {
+    return "'" + std::string(text) + "'";
+}
+
+std::string known_scenes() {
+    return join(study_scene_names());
+}
+
+// Unknown keys are refused rather than ignored: a misspelt `practise_trials` would otherwise
+// silently keep the default.
+void report_unknown_keys(const Scope& scope, std::span<const std::string_view> known,
+                         TomlProblems& problems) {
+    for (const auto& [key, node] : scope.table) {
+        const std::string_view name = key.str();
+        if (std::ranges::find(known, name) != known.end()) continue;
+        std::string message = about(scope.qualified(name)) + "unknown key";
+        const std::string_view closest = closest_match(name, known);
+        if (!closest.empty()) {
+            message += " (did you mean " + in_quotes(scope.qualified(closest)) + "?)";
+        } else {
+            message += " (known keys" + (scope.name.empty() ? "" : " in [" + scope.name + "]") +
+                       ": " + join(known) + ")";
+        }
+        problems.add(key.source(), message);
+    }
+}
+
+const toml::node* find_required(const Scope& scope, std::string_view key, std::string_view expected,
+                                TomlProblems& problems) {
+    const toml::node* node = scope.table.get(key);
+    if (node == nullptr) {
+        // The root's region is line 1, which would point at whatever happens to be there, so a
+        // key missing from the root gets no line; one missing from a table gets its header's.
+        const std::string message =
+            about(scope.qualified(key)) + "required key is missing (" + std::string(expected) + ")";
+        if (scope.name.empty()) {
+            problems.add(message);
+        } else {
+            problems.add(scope.table.source(), message);
+        }
+    }
+    return node;
+}
+
+void report_wrong_type(const toml::node& node, std::string_view qualified_key,
+                       std::string_view expected, TomlProblems& problems) {
+    problems.add(node.source(), about(qualified_key) + "must be " + std::string(expected) +
+                                    ", but is " + std::string(toml_type_phrase(node.type())));
+}
+
+bool is_blank(std::string_view text) {
+    return std::ranges::all_of(text, [](char c) { return c == ' ' || c == '\t' || c == '\n'; });
+}
+
+std::optional<std::string> read_string(const toml::node& node, std::string_view key,
+                                       std::string_view expected, TomlProblems& problems) {
+    const auto* text = node.as_string();
+    if (text == nullptr) {
+        report_wrong_type(node, key, expected, problems);
+        return std::nullopt;
+    }
+    return text->get();
+}
+
+// Integers are accepted where a real number is expected: `far = 1000` means 1000.0.
+std::optional<double> read_number(const toml::node& node, std::string_view key,
+                                  std::string_view expected, TomlProblems& problems) {
+    if (const auto* integer = node.as_integer()) return static_cast<double>(integer->get());
+    if (const auto* real = node.as_floating_point()) return real->get();
+    report_wrong_type(node, key, expected, problems);
+    return std::nullopt;
+}
+
+std::optional<std::int64_t> read_integer_in(const toml::node& node, std::string_view key,
+                                            std::int64_t low, std::int64_t high,
+                                            TomlProblems& problems) {
+    const std::string range = std::to_string(low) + ".." + std::to_string(high);
+    const auto* integer = node.as_integer();
+    if (integer == nullptr) {
+        report_wrong_type(node, key, "an integer in " + range, problems);
+        return std::nullopt;
+    }
+    if (integer->get() < low || integer->get() > high) {
+        problems.add(node.source(), about(key) + std::to_string(integer->get()) +
+                                        " is outside the allowed range " + range);
+        return std::nullopt;
+    }
+    return integer->get();
+}
+
+// An array whose elements all have a type, or nullopt after reporting what is wrong. An empty
+// array is a problem: every list in a protocol must name at least one thing.
+const toml::array* read_nonempty_array(const toml::node& node, std::string_view key,
+                                       std::string_view expected, TomlProblems& problems) {
+    const toml::array* array = node.as_array();
+    if (array == nullptr) {
+        report_wrong_type(node, key, expected, problems);
+        return nullptr;
+    }
+    if (array->empty()) {
+        problems.add(node.source(),
+                     about(key) + "must not be empty; expected " + std::string(expected));
+        return nullptr;
+    }
+    return array;
+}
+
+// A string element of an array, with its node (for the place of a later problem) and its
+// 1-based position in the array (for the message).
+struct StringElement {
+    std::string text;
+    const toml::node* node;
+    std::size_t position;
+};
+
+// The strings of an array; elements that are not strings are reported and left out.
+std::vector<StringElement> read_strings(const toml::array& array, std::string_view key,
+                                        TomlProblems& problems) {
+    std::vector<StringElement> strings;
+    for (std::size_t i = 0; i < array.size(); ++i) {
+        const toml::node& element = array[i];
+        if (const auto* text = element.as_string()) {
+            strings.push_back({text->get(), &element, i + 1});
+        } else {
+            problems.add(element.source(), about(key) + "element " + std::to_string(i + 1) +
+                                               " must be a string, but is " +
+                                               std::string(toml_type_phrase(element.type())));
+        }
+    }
+    return strings;
+}
+
+template <class T, std::size_t N>
+std::optional<T> read_choice(const toml::node& node, std::string_view key,
+                             const std::array<NamedValue<T>, N>& choices, TomlProblems& problems) {
+    std::array<std::string_view, N> names;
+    std::ranges::transform(choices, names.begin(), &NamedValue<T>::name);
+    const std::string allowed = "one of " + join(names);
+    const std::optional<std::string> text =
+        read_string(node, key, "a string, " + allowed, problems);
+    if (!text) return std::nullopt;
+    for (const NamedValue<T>& choice : choices) {
+        if (choice.name == *text) return choice.value;
+    }
+    std::string message =
+        about(key) + "unknown value " + in_quotes(*text) + " (allowed: " + join(names) + ")";
+    const std::string_view closest = closest_match(*text, names);
+    if (!closest.empty()) message += "; did you mean " + in_quotes(closest) + "?";
+    problems.add(node.source(), message);
+    return std::nullopt;
+}
+
+void read_name(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+    constexpr std::string_view kExpected = "a non-empty string";
+    const toml::node* node = find_required(root, "name", kExpected, problems);
+    if (node == nullptr) return;
+    std::optional<std::string> name = read_string(*node, "name", kExpected, problems);
+    if (!name) return;
+    if (is_blank(*name)) {
+        problems.add(node->source(), about("name") + "must not be empty");
+        return;
+    }
+    protocol.name = std::move(*name);
+}
+
+void read_scenes(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+    const std::string expected = "an array of scene names (known scenes: " + known_scenes() + ")";
+    const toml::node* node = find_required(root, "scenes", expected, problems);
+    if (node == nullptr) return;
+    const toml::array* array = read_nonempty_array(*node, "scenes", expected, problems);
+    if (array == nullptr) return;
+    const std::span<const std::string_view> known = study_scene_names();
+    for (auto& [scene, element, position] : read_strings(*array, "scenes", problems)) {
+        if (std::ranges::find(known, scene) == known.end()) {
+            std::string message = about("scenes") + "unknown scene " + in_quotes(scene) +
+                                  " (known scenes: " + known_scenes() + ")";
+            const std::string_view closest = closest_match(scene, known);
+            if (!closest.empty()) message += "; did you mean " + in_quotes(closest) + "?";
+            problems.add(element->source(), message);
+        } else if (std::ranges::find(protocol.scenes, scene) != protocol.scenes.end()) {
+            // A scene listed twice would double its block and unbalance the Latin square.
+            problems.add(element->source(), about("scenes") + "duplicate scene " +
+                                                in_quotes(scene) + "; list each scene once");
+        } else {
+            protocol.scenes.push_back(std::move(scene));
+        }
+    }
+}
+
+// Near and far come first: the mono planes are checked against them.
+bool read_clip_range(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+    constexpr std::string_view kExpected = "a number of metres";
+    const toml::node* near_node = root.table.get("near");
+    const toml::node* far_node = root.table.get("far");
+    bool valid = true;
+    for (auto [key, node, field] : {std::tuple{"near", near_node, &Protocol::near},
+                                    std::tuple{"far", far_node, &Protocol::far}}) {
+        if (node == nullptr) continue;
+        const std::optional<double> value = read_number(*node, key, kExpected, problems);
+        if (!value) {
+            valid = false;
+        } else if (!std::isfinite(*value) || *value <= 0.0) {
+            problems.add(
+                node->source(),
+                about(key) + "must be a finite number of metres > 0, got " + format_number(*value));
+            valid = false;
+        } else {
+            protocol.*field = *value;
+        }
+    }
+    if (valid && !(protocol.near < protocol.far)) {
+        const toml::node* node = far_node != nullptr ? far_node : near_node;
+        problems.add(node->source(), about(node == far_node ? "far" : "near") +
+                                         "the clip range needs near < far, got near = " +
+                                         format_number(protocol.near) +
+                                         " m, far = " + format_number(protocol.far) + " m");
+        valid = false;
+    }
+    return valid;
+}
+
+void read_mono_planes(const Scope& root, bool clip_range_valid, Protocol& protocol,
+                      TomlProblems& problems) {
+    constexpr std::string_view kExpected = "an array of distances in metres, e.g. [3, 8]";
+    const toml::node* node = find_required(root, "mono_planes", kExpected, problems);
+    if (node == nullptr) return;
+    const toml::array* array = read_nonempty_array(*node, "mono_planes", kExpected, problems);
+    if (array == nullptr) return;
+    for (std::size_t i = 0; i < array->size(); ++i) {
+        const toml::node& element = (*array)[i];
+        const std::string position = "element " + std::to_string(i + 1);
+        std::optional<double> m;
+        if (const auto* integer = element.as_integer()) {
+            m = static_cast<double>(integer->get());
+        } else if (const auto* real = element.as_floating_point()) {
+            m = real->get();
+        } else {
+            problems.add(element.source(), about("mono_planes") + position +
+                                               " must be a number of metres, but is " +
+                                               std::string(toml_type_phrase(element.type())));
+        }
+        if (!m) continue;
+        const std::string value = format_number(*m);
+        if (!std::isfinite(*m) || *m <= 0.0) {
+            problems.add(element.source(), about("mono_planes") + position + " = " + value +
+                                               " must be a finite, positive distance in metres");
+            continue;
+        }
+        // At or beyond either end of the clip range hybrid rendering degenerates (section 3).
+        if (clip_range_valid && !(protocol.near < *m && *m < protocol.far)) {
+            problems.add(element.source(), about("mono_planes") + position + " = " + value +
+                                               " m is not strictly inside (near, far) = (" +
+                                               format_number(protocol.near) + ", " +
+                                               format_number(protocol.far) + ") m");
+            continue;
+        }
+        const auto previous = std::ranges::find(protocol.mono_planes, *m);
+        if (previous != protocol.mono_planes.end()) {
+            // Each distance is one trial per scene; a repeat is almost always a typo.
+            problems.add(element.source(), about("mono_planes") + "duplicate distance " + value +
+                                               " m; list each distance once");
+            continue;
+        }
+        protocol.mono_planes.push_back(*m);
+    }
+}
+
+void read_alternatives(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+    const std::string expected =
+        "an array of two render modes, the reference first, e.g. [\"stereo\", \"hybrid\"]";
+    const toml::node* node = find_required(root, "alternatives", expected, problems);
+    if (node == nullptr) return;
+    const toml::array* array = read_nonempty_array(*node, "alternatives", expected, problems);
+    if (array == nullptr) return;
+    if (array->size() != 2) {
+        // 2AFC: exactly two alternatives per trial.
+        problems.add(node->source(), about("alternatives") + "must list exactly two render " +
+                                         "modes (a two-alternative forced choice), but lists " +
+                                         std::to_string(array->size()));
+        return;
+    }
+    std::vector<RenderMode> modes;
+    for (const auto& [name, element, position] : read_strings(*array, "alternatives", problems)) {
+        const Result<RenderMode> mode = parse_render_mode(name);
+        if (mode) {
+            modes.push_back(*mode);
+        } else {
+            problems.add(element->source(), about("alternatives") + mode.error().message);
+        }
+    }
+    if (modes.size() != 2) return;
+    if (modes[0] == modes[1]) {
+        problems.add(node->source(), about("alternatives") + "both alternatives are " +
+                                         in_quotes(render_mode_name(modes[0])) +
+                                         "; a trial must compare two different render modes");
+        return;
+    }
+    protocol.alternatives = {modes[0], modes[1]};
+}
+
+void read_session_options(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+    if (const toml::node* node = root.table.get("order")) {
+        if (auto order = read_choice(*node, "order", kOrders, problems)) protocol.order = *order;
+    }
+    if (const toml::node* node = root.table.get("first_scene")) {
+        if (auto first = read_choice(*node, "first_scene", kFirstScenes, problems)) {
+            protocol.first_scene = *first;
+        }
+    }
+    if (const toml::node* node = root.table.get("require_both_viewed")) {
+        if (const auto* flag = node->as_boolean()) {
+            protocol.require_both_viewed = flag->get();
+        } else {
+            report_wrong_type(*node, "require_both_viewed", "a boolean (true or false)", problems);
+        }
+    }
+    if (const toml::node* node = root.table.get("practice_trials")) {
+        if (auto count =
+                read_integer_in(*node, "practice_trials", 0, kMaxPracticeTrials, problems)) {
+            protocol.practice_trials = static_cast<int>(*count);
+        }
+    }
+}
+
+void read_questionnaire(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+    const toml::node* node = root.table.get("questionnaire");
+    if (node == nullptr) return;  // no questionnaire: the session ends after the last trial
+    const toml::table* table = node->as_table();
+    if (table == nullptr) {
+        report_wrong_type(*node, "questionnaire",
+                          "a table ([questionnaire] with items and optional scale_points)",
+                          problems);
+        return;
+    }
+    const Scope scope{*table, "questionnaire"};
+    report_unknown_keys(scope, kQuestionnaireKeys, problems);
+    if (const toml::node* points = table->get("scale_points")) {
+        if (auto count = read_integer_in(*points, "questionnaire.scale_points", kMinScalePoints,
+                                         kMaxScalePoints, problems)) {
+            protocol.questionnaire.scale_points = static_cast<int>(*count);
+        }
+    }
+    constexpr std::string_view kExpected = "an array of Likert statements (strings)";
+    const toml::node* items_node = find_required(scope, "items", kExpected, problems);
+    if (items_node == nullptr) return;
+    const toml::array* items =
+        read_nonempty_array(*items_node, "questionnaire.items", kExpected, problems);
+    if (items == nullptr) return;
+    for (auto& [item, element, position] : read_strings(*items, "questionnaire.items", problems)) {
+        if (is_blank(item)) {
+            problems.add(element->source(), about("questionnaire.items") + "item " +
+                                                std::to_string(position) +
+                                                " is empty; each item is a statement to rate");
+            continue;
+        }
+        protocol.questionnaire.items.push_back(std::move(item));
+    }
+}
+
+// FNV-1a, 64 bits: a stable, dependency-free fingerprint of the protocol text, stored with every
+// session so analyses can tell protocol versions apart. Not a cryptographic hash.
+std::uint64_t fnv1a64(std::string_view text) {
+    std::uint64_t hash = 0xcbf29ce484222325ull;
+    for (const char c : text) {
+        hash ^= static_cast<unsigned char>(c);
+        hash *= 0x100000001b3ull;
+    }
+    return hash;
+}
+
+Result<std::string> read_text_file(const std::filesystem::path& path) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) {
+        return Error{"protocol '" + path.string() + "' is a directory; expected a TOML file"};
+    }
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        return Error{"cannot open protocol file '" + path.string() + "': " + std::strerror(errno)};
+    }
+    std::ostringstream text;
+    text << file.rdbuf();
+    if (file.bad()) return Error{"cannot read protocol file '" + path.string() + "'"};
+    return text.str();
+}
+
+}  // namespace
+
+Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view source_name) {
+    Result<toml::table> document = parse_toml(toml_text, source_name);
+    if (!document) return document.error();
+
+    TomlProblems problems(source_name);
+    Protocol protocol;
+    const Scope root{*document, ""};
+    report_unknown_keys(root, kTopLevelKeys, problems);
+    read_name(root, protocol, problems);
+    read_scenes(root, protocol, problems);
+    const bool clip_range_valid = read_clip_range(root, protocol, problems);
+    read_mono_planes(root, clip_range_valid, protocol, problems);
+    read_alternatives(root, protocol, problems);
+    read_session_options(root, protocol, problems);
+    read_questionnaire(root, protocol, problems);
+    if (!problems.empty()) return problems.error();
+
+    protocol.source = std::string(source_name);
+    protocol.text = std::string(toml_text);
+    protocol.text_hash = fnv1a64(toml_text);
+    return protocol;
+}
+
+Result<Protocol> load_protocol(const std::filesystem::path& path) {
+    Result<std::string> text = read_text_file(path);
+    if (!text) return text.error();
+    return parse_protocol(*text, path.string());
+}
+
+}  // namespace monoplane::study

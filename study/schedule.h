@@ -1,0 +1,45 @@
+// The seeded, recorded order of a session (DESIGN.md section 7 and 10: Session -> Block -> Trial):
+// practice trials first and apart from the data, then one block per scene whose order is
+// counterbalanced across participants, distances within a block in random order, and per trial
+// a random assignment of the two alternatives to the blind labels 1 and 2.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "study/protocol.h"
+
+namespace monoplane::study {
+
+struct ScheduledTrial {
+    int index = 0;       // position in the session, 0-based, practice trials first
+    bool practice = false;
+    int block = -1;      // -1 for practice; else the block's position (0 = first scene block)
+    std::string scene;
+    double mono_plane = 0.0;
+    // Which alternative each blind label shows: label1_mode = alternatives[label1_alternative].
+    int label1_alternative = 0;  // 0 or 1
+    RenderMode label1_mode = RenderMode::Stereo;
+    RenderMode label2_mode = RenderMode::Hybrid;
+};
+
+struct Schedule {
+    std::uint64_t seed = 0;
+    int participant_index = 0;             // 0-based, selects the Latin square row
+    std::vector<std::string> block_order;  // scenes in block order
+    std::vector<ScheduledTrial> trials;    // practice trials, then the data trials
+
+    int practice_count() const;
+};
+
+// Deterministic: the same protocol, seed and participant index give the same schedule.
+Schedule make_schedule(const Protocol& protocol, std::uint64_t seed, int participant_index);
+
+// Row `row` of a balanced Latin square of order n (Williams design: n rows for even n, 2n for
+// odd n), as a permutation of 0..n-1. Over consecutive rows every item is first equally often and
+// every ordered pair of items is adjacent equally often.
+std::vector<int> balanced_latin_square_row(int n, int row);
+int balanced_latin_square_rows(int n);
+
+}  // namespace monoplane::study

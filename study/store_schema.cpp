@@ -1,0 +1,92 @@
+#include "study/store_schema.h"
+
+#include <array>
+
+namespace monoplane::study {
+namespace {
+
+// Version 1. docs/data.md describes every table and column; keep the two in step.
+// - Integer nanoseconds of the monotonic clock for durations and event times (DESIGN.md 2).
+// - Render modes and event kinds as their stable text names, so the file reads without the code.
+// - 64-bit unsigned values (seed, protocol hash) as text: SQLite integers are signed.
+// - CHECK constraints make a wrong value a refused write rather than a silent bad row.
+constexpr std::string_view kVersion1 = R"sql(
+CREATE TABLE participants (
+    id                INTEGER PRIMARY KEY,
+    code              TEXT NOT NULL UNIQUE
+                      CHECK (length(code) BETWEEN 1 AND 64 AND code NOT GLOB '*[^A-Za-z0-9_-]*'),
+    participant_index INTEGER NOT NULL UNIQUE CHECK (participant_index >= 0),
+    created_utc       TEXT NOT NULL
+);
+CREATE TABLE sessions (
+    id               INTEGER PRIMARY KEY,
+    participant_id   INTEGER NOT NULL REFERENCES participants(id),
+    protocol_name    TEXT NOT NULL,
+    protocol_hash    TEXT NOT NULL,
+    protocol_text    TEXT NOT NULL,
+    seed             TEXT NOT NULL,
+    block_order      TEXT NOT NULL,
+    software_version TEXT NOT NULL,
+    hmd              TEXT NOT NULL,
+    runtime          TEXT NOT NULL,
+    device           TEXT NOT NULL,
+    observer         TEXT NOT NULL,
+    started_utc      TEXT NOT NULL,
+    ended_utc        TEXT,
+    status           TEXT NOT NULL
+                     CHECK (status IN ('running', 'paused', 'completed', 'aborted'))
+);
+CREATE TABLE trials (
+    session_id         INTEGER NOT NULL REFERENCES sessions(id),
+    trial_index        INTEGER NOT NULL CHECK (trial_index >= 0),
+    practice           INTEGER NOT NULL CHECK (practice IN (0, 1)),
+    block              INTEGER NOT NULL CHECK (block >= -1),
+    scene              TEXT NOT NULL,
+    mono_plane         REAL NOT NULL,
+    label1_alternative INTEGER NOT NULL CHECK (label1_alternative IN (0, 1)),
+    label1_mode        TEXT NOT NULL,
+    label2_mode        TEXT NOT NULL,
+    decided            INTEGER NOT NULL DEFAULT 0 CHECK (decided IN (0, 1)),
+    choice             INTEGER CHECK (choice IN (1, 2)),
+    chosen_mode        TEXT,
+    valid              INTEGER CHECK (valid IN (0, 1)),
+    switches           INTEGER CHECK (switches >= 0),
+    time_label1_ns     INTEGER CHECK (time_label1_ns >= 0),
+    time_label2_ns     INTEGER CHECK (time_label2_ns >= 0),
+    decision_time_ns   INTEGER CHECK (decision_time_ns >= 0),
+    decided_utc        TEXT,
+    PRIMARY KEY (session_id, trial_index),
+    CHECK (decided = (choice IS NOT NULL))
+);
+CREATE TABLE events (
+    id          INTEGER PRIMARY KEY,
+    session_id  INTEGER NOT NULL,
+    trial_index INTEGER NOT NULL,
+    kind        TEXT NOT NULL
+                CHECK (kind IN ('shown', 'switched', 'confirmed', 'refused', 'paused', 'resumed',
+                                'aborted')),
+    label       INTEGER NOT NULL CHECK (label IN (0, 1, 2)),
+    time_ns     INTEGER NOT NULL,
+    frame       INTEGER NOT NULL CHECK (frame >= -1),
+    FOREIGN KEY (session_id, trial_index) REFERENCES trials(session_id, trial_index)
+);
+CREATE INDEX events_by_session ON events(session_id, id);
+CREATE TABLE answers (
+    session_id   INTEGER NOT NULL REFERENCES sessions(id),
+    item         INTEGER NOT NULL CHECK (item >= 0),
+    text         TEXT NOT NULL,
+    answer       INTEGER NOT NULL CHECK (answer >= 1),
+    answered_utc TEXT NOT NULL,
+    PRIMARY KEY (session_id, item)
+);
+)sql";
+
+constexpr std::array<std::string_view, 1> kMigrations = {kVersion1};
+
+}  // namespace
+
+std::span<const std::string_view> store_migrations() {
+    return kMigrations;
+}
+
+}  // namespace monoplane::study

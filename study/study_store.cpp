@@ -1,0 +1,754 @@
+#include "study/study_store.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <ctime>
+#include <system_error>
+
+#include "study/store_schema.h"
+#include "study/store_sqlite.h"
+
+namespace monoplane::study {
+namespace {
+
+using sqlite::Connection;
+using sqlite::Statement;
+using sqlite::Transaction;
+
+// The database's names for the enums. Stored in files: never change one (docs/data.md).
+constexpr std::array<std::string_view, 4> kStatusNames = {"running", "paused", "completed",
+                                                          "aborted"};
+constexpr std::array<std::string_view, 7> kEventKindNames = {
+    "shown", "switched", "confirmed", "refused", "paused", "resumed", "aborted"};
+
+std::string_view event_kind_db_name(EventKind kind) {
+    return kEventKindNames.at(static_cast<std::size_t>(kind));
+}
+
+std::optional<EventKind> parse_event_kind(std::string_view name) {
+    for (std::size_t i = 0; i < kEventKindNames.size(); ++i)
+        if (kEventKindNames[i] == name) return static_cast<EventKind>(i);
+    return std::nullopt;
+}
+
+std::optional<SessionStatus> parse_status(std::string_view name) {
+    for (std::size_t i = 0; i < kStatusNames.size(); ++i)
+        if (kStatusNames[i] == name) return static_cast<SessionStatus>(i);
+    return std::nullopt;
+}
+
+std::string utc_now_iso8601() {
+    const std::time_t now = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&now, &tm);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return text;
+}
+
+// 64-bit unsigned values are stored as text (SQLite integers are signed): the seed in decimal
+// as the user types it, the protocol hash in 16 hex digits.
+std::string hash_text(std::uint64_t hash) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
+}
+
+std::optional<std::uint64_t> parse_u64(std::string_view text, int base) {
+    std::uint64_t value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value, base);
+    if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
+    return value;
+}
+
+// Pseudonyms only (the store holds no names): a short code a name cannot hide in.
+bool valid_participant_code(std::string_view code) {
+    if (code.empty() || code.size() > 64) return false;
+    for (char c : code) {
+        const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') ||
+                        (c >= '0' && c <= '9') || c == '_' || c == '-';
+        if (!ok) return false;
+    }
+    return true;
+}
+
+Result<std::int64_t> query_int(const Connection& db, std::string_view sql, std::string_view what) {
+    Result<Statement> stmt = Statement::prepare(db, sql);
+    if (!stmt) return stmt.error();
+    Result<bool> row = stmt.value().step(what);
+    if (!row) return row.error();
+    return *row ? stmt->int64(0) : 0;
+}
+
+// Refuses the schedule before anything is written: a bad one would be stored for good.
+Result<bool> validate_schedule(const Schedule& schedule) {
+    if (schedule.trials.empty()) return Error{"the schedule has no trials"};
+    if (schedule.participant_index < 0)
+        return Error{"the schedule's participant index is negative"};
+    for (const std::string& scene : schedule.block_order)
+        if (scene.empty() || scene.find(',') != std::string::npos)
+            return Error{"scene name '" + scene + "' in the block order is empty or has a comma"};
+    for (std::size_t i = 0; i < schedule.trials.size(); ++i) {
+        const ScheduledTrial& t = schedule.trials[i];
+        const std::string where = "scheduled trial " + std::to_string(i) + ": ";
+        if (t.index != static_cast<int>(i))
+            return Error{where + "index " + std::to_string(t.index) + " is not its position"};
+        if (t.practice != (t.block == -1))
+            return Error{where + "practice trials have block -1 and data trials a block >= 0"};
+        if (t.block < -1) return Error{where + "block is below -1"};
+        if (t.scene.empty()) return Error{where + "no scene"};
+        if (!std::isfinite(t.mono_plane)) return Error{where + "mono plane is not finite"};
+        if (t.label1_alternative != 0 && t.label1_alternative != 1)
+            return Error{where + "label1_alternative must be 0 or 1"};
+    }
+    return true;
+}
+
+std::string join_scenes(const std::vector<std::string>& scenes) {
+    std::string text;
+    for (const std::string& scene : scenes) text += (text.empty() ? "" : ",") + scene;
+    return text;
+}
+
+std::vector<std::string> split_scenes(const std::string& text) {
+    std::vector<std::string> scenes;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t comma = std::min(text.find(',', start), text.size());
+        scenes.push_back(text.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return scenes;
+}
+
+// Creates the file with mode 0600 before SQLite sees it, so no moment exists in which it is
+// readable by others. Returns whether this call created it.
+Result<bool> create_private_file(const std::string& file) {
+    bool created = true;
+    int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0 && errno == EEXIST) {
+        created = false;
+        fd = ::open(file.c_str(), O_RDWR | O_CLOEXEC);
+    }
+    if (fd < 0) {
+        const int err = errno;
+        return Error{"cannot " + std::string(created ? "create" : "open") + " study database '" +
+                     file + "': " + std::strerror(err) +
+                     "; check that its directory exists and is writable by you."};
+    }
+    struct stat st {};
+    const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
+    if (created) ::fchmod(fd, 0600);  // a umask cannot widen it, but make the intent explicit
+    ::close(fd);
+    if (!regular) return Error{"study database '" + file + "' is not a regular file"};
+    return created;
+}
+
+// SQLite gives the -wal and -shm files the database file's mode; this makes sure they are never
+// more open than the database, whatever created them.
+void restrict_sidecars(const std::string& file) {
+    struct stat db {};
+    if (::stat(file.c_str(), &db) != 0) return;
+    for (const char* suffix : {"-wal", "-shm"}) {
+        const std::string side = file + suffix;
+        struct stat st {};
+        if (::stat(side.c_str(), &st) == 0 && (st.st_mode & 077 & ~db.st_mode) != 0)
+            ::chmod(side.c_str(), db.st_mode & 0777);
+    }
+}
+
+void remove_files(const std::string& file) {
+    for (const char* suffix : {"", "-wal", "-shm"}) ::unlink((file + suffix).c_str());
+}
+
+}  // namespace
+
+std::string_view session_status_name(SessionStatus status) {
+    return kStatusNames.at(static_cast<std::size_t>(status));
+}
+
+struct StudyStore::Impl {
+    Connection db;
+
+    Error no_session(std::int64_t id) const {
+        return Error{"no session " + std::to_string(id) + " in study database '" + db.path() + "'"};
+    }
+
+    Result<bool> require_session(std::int64_t id) const {
+        Result<Statement> stmt = Statement::prepare(db, "SELECT 1 FROM sessions WHERE id = ?");
+        if (!stmt) return stmt.error();
+        stmt.value().bind(1, id);
+        Result<bool> row = stmt.value().step("looking up a session");
+        if (!row) return row.error();
+        if (!*row) return no_session(id);
+        return true;
+    }
+
+    // Brings the schema to kSchemaVersion in one transaction, or refuses the file.
+    Result<bool> migrate() {
+        Result<std::int64_t> version =
+            query_int(db, "PRAGMA user_version", "reading the schema version");
+        if (!version) return version.error();
+        if (*version > StudyStore::kSchemaVersion) return newer_schema(*version);
+        if (*version == StudyStore::kSchemaVersion) return check_application_id();
+
+        Result<Transaction> tx = Transaction::begin(db, "migrating the schema");
+        if (!tx) return tx.error();
+        // Another process may have migrated between the read above and the lock.
+        version = query_int(db, "PRAGMA user_version", "reading the schema version");
+        if (!version) return version.error();
+        if (*version > StudyStore::kSchemaVersion) return newer_schema(*version);
+        if (*version == 0) {
+            // A version-0 file with tables belongs to another program: do not write into it.
+            Result<std::int64_t> objects =
+                query_int(db, "SELECT count(*) FROM sqlite_schema", "reading the schema");
+            if (!objects) return objects.error();
+            if (*objects > 0)
+                return Error{
+                    "'" + db.path() + "' is a SQLite database of another program (it has " +
+                    std::to_string(*objects) +
+                    " schema objects but no monoplane schema version); give a new file name."};
+            Result<bool> id =
+                db.exec("PRAGMA application_id = " + std::to_string(kStoreApplicationId));
+            if (!id) return id;
+        } else if (Result<bool> ours = check_application_id(); !ours) {
+            return ours;
+        }
+        const auto steps = store_migrations();
+        static_assert(StudyStore::kSchemaVersion >= 1);
+        for (std::int64_t v = *version; v < StudyStore::kSchemaVersion; ++v) {
+            Result<bool> step = db.exec(steps[static_cast<std::size_t>(v)]);
+            if (!step) return step;
+        }
+        Result<bool> set =
+            db.exec("PRAGMA user_version = " + std::to_string(StudyStore::kSchemaVersion));
+        if (!set) return set;
+        return tx.value().commit("migrating the schema");
+    }
+
+    Error newer_schema(std::int64_t version) const {
+        return Error{"study database '" + db.path() + "' has schema version " +
+                     std::to_string(version) + ", newer than this build of monoplane knows (" +
+                     std::to_string(StudyStore::kSchemaVersion) +
+                     "); open it with a newer monoplane. It was not changed."};
+    }
+
+    Result<bool> check_application_id() const {
+        Result<std::int64_t> id =
+            query_int(db, "PRAGMA application_id", "reading the application id");
+        if (!id) return id.error();
+        if (*id != kStoreApplicationId)
+            return Error{"'" + db.path() +
+                         "' is a SQLite database of another program (application_id " +
+                         std::to_string(*id) + "); give a new file name."};
+        return true;
+    }
+};
+
+StudyStore::StudyStore(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+StudyStore::~StudyStore() = default;
+
+Result<std::unique_ptr<StudyStore>> StudyStore::open(const std::filesystem::path& path) {
+    return open(path, StoreOptions{});
+}
+
+Result<std::unique_ptr<StudyStore>> StudyStore::open(const std::filesystem::path& path,
+                                                     const StoreOptions& options) {
+    const std::string file = path.string();
+    if (file.empty()) return Error{"no study database file given"};
+    Result<bool> created = create_private_file(file);
+    if (!created) return created.error();
+
+    auto impl = std::make_unique<Impl>();
+    Result<bool> opened = [&]() -> Result<bool> {
+        sqlite3* raw = nullptr;
+        // No SQLITE_OPEN_CREATE: the file exists (with mode 0600) by now. FULLMUTEX: the
+        // experimenter window may read from another thread than the runner writes from.
+        const int rc = sqlite3_open_v2(file.c_str(), &raw,
+                                       SQLITE_OPEN_READWRITE | SQLITE_OPEN_FULLMUTEX, nullptr);
+        impl->db = Connection(raw, file, options.busy_timeout_ms);  // closes `raw` even on failure
+        if (rc != SQLITE_OK) return impl->db.error(rc, "opening it");
+        sqlite3_extended_result_codes(raw, 1);
+        sqlite3_busy_timeout(raw, options.busy_timeout_ms);
+        if (sqlite3_db_readonly(raw, "main") == 1)
+            return Error{"study database '" + file +
+                         "' can only be opened read-only; check its permissions."};
+
+        // The first read tells a database from another file (SQLITE_NOTADB) and sees locks.
+        Result<std::int64_t> version =
+            query_int(impl->db, "PRAGMA user_version", "reading the schema version");
+        if (!version) return version.error();
+        if (*version > kSchemaVersion) return impl->newer_schema(*version);
+
+        // WAL: readers (an export, the experimenter's view) never block the study's writes.
+        Result<bool> wal = [&]() -> Result<bool> {
+            Result<Statement> stmt = Statement::prepare(impl->db, "PRAGMA journal_mode = WAL");
+            if (!stmt) return stmt.error();
+            Result<bool> row = stmt.value().step("switching to WAL mode");
+            if (!row) return row.error();
+            if (!*row || stmt->text(0) != "wal")
+                return Error{"study database '" + file + "' could not be switched to WAL mode"};
+            return true;
+        }();  // the statement is finalized here: an open one would block the migration
+        if (!wal) return wal;
+
+        // FULL: the WAL is synced at every commit, so an event is on disk when append_event
+        // returns.
+        for (std::string_view pragma : {"PRAGMA synchronous = FULL", "PRAGMA foreign_keys = ON"})
+            if (Result<bool> ok = impl->db.exec(pragma); !ok) return ok;
+        if (options.max_page_count > 0) {
+            Result<std::int64_t> pages = query_int(
+                impl->db, "PRAGMA max_page_count = " + std::to_string(options.max_page_count),
+                "limiting the database size");
+            if (!pages) return pages.error();
+        }
+        return impl->migrate();
+    }();
+    if (!opened) {
+        impl.reset();  // close before removing what this call created: nothing half-written stays
+        if (*created) remove_files(file);
+        return opened.error();
+    }
+    restrict_sidecars(file);
+    return std::unique_ptr<StudyStore>(new StudyStore(std::move(impl)));
+}
+
+Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Schedule& schedule) {
+    const Connection& db = impl_->db;
+    if (!valid_participant_code(info.participant_code))
+        return Error{"participant code '" + info.participant_code +
+                     "' is invalid: use 1 to 64 letters, digits, '_' or '-' — a pseudonym such "
+                     "as P07, never a name."};
+    if (Result<bool> valid = validate_schedule(schedule); !valid)
+        return Error{"cannot store the schedule: " + valid.error().message};
+
+    Result<Transaction> tx = Transaction::begin(db, "starting a session");
+    if (!tx) return tx.error();
+
+    Result<Statement> existing = Statement::prepare(
+        db,
+        "SELECT s.id FROM sessions s JOIN participants p ON p.id = s.participant_id "
+        "WHERE p.code = ? ORDER BY s.id LIMIT 1");
+    if (!existing) return existing.error();
+    existing.value().bind(1, info.participant_code);
+    Result<bool> found = existing.value().step("looking up the participant");
+    if (!found) return found.error();
+    if (*found) {
+        const std::string id = std::to_string(existing->int64(0));
+        return Error{"participant '" + info.participant_code + "' already has session " + id +
+                     " in '" + db.path() + "'; use `monoplane study resume --db " + db.path() +
+                     " --session " + id + "` to continue it, or choose a new code."};
+    }
+
+    // The Latin square row is the participant's position in this database; a schedule made for
+    // another row (another session began meanwhile) would be stored with the wrong balance.
+    Result<std::int64_t> index =
+        query_int(db, "SELECT count(*) FROM participants", "counting participants");
+    if (!index) return index.error();
+    if (*index != schedule.participant_index)
+        return Error{"the schedule was made for participant index " +
+                     std::to_string(schedule.participant_index) + " but the next participant in '" +
+                     db.path() + "' has index " + std::to_string(*index) +
+                     " (did another session begin meanwhile?); make the schedule again."};
+
+    const std::string now = utc_now_iso8601();
+    Result<Statement> participant = Statement::prepare(
+        db, "INSERT INTO participants (code, participant_index, created_utc) VALUES (?, ?, ?)");
+    if (!participant) return participant.error();
+    participant.value().bind(1, info.participant_code).bind(2, *index).bind(3, now);
+    if (Result<bool> ok = participant.value().run("adding the participant"); !ok) return ok.error();
+    const std::int64_t participant_id = sqlite3_last_insert_rowid(db.get());
+
+    Result<Statement> session = Statement::prepare(
+        db,
+        "INSERT INTO sessions (participant_id, protocol_name, protocol_hash, protocol_text, "
+        "seed, block_order, software_version, hmd, runtime, device, observer, started_utc, "
+        "status) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    if (!session) return session.error();
+    session.value()
+        .bind(1, participant_id)
+        .bind(2, info.protocol_name)
+        .bind(3, hash_text(info.protocol_hash))
+        .bind(4, info.protocol_text)
+        .bind(5, std::to_string(schedule.seed))
+        .bind(6, join_scenes(schedule.block_order))
+        .bind(7, info.software_version)
+        .bind(8, info.hmd)
+        .bind(9, info.runtime)
+        .bind(10, info.device)
+        .bind(11, info.observer)
+        .bind(12, info.started_utc.empty() ? now : info.started_utc)
+        .bind(13, session_status_name(info.status));
+    if (Result<bool> ok = session.value().run("adding the session"); !ok) return ok.error();
+    const std::int64_t session_id = sqlite3_last_insert_rowid(db.get());
+
+    Result<Statement> trial = Statement::prepare(
+        db,
+        "INSERT INTO trials (session_id, trial_index, practice, block, scene, mono_plane, "
+        "label1_alternative, label1_mode, label2_mode) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    if (!trial) return trial.error();
+    for (const ScheduledTrial& t : schedule.trials) {
+        trial.value()
+            .bind(1, session_id)
+            .bind(2, t.index)
+            .bind(3, t.practice ? 1 : 0)
+            .bind(4, t.block)
+            .bind(5, t.scene)
+            .bind(6, t.mono_plane)
+            .bind(7, t.label1_alternative)
+            .bind(8, render_mode_name(t.label1_mode))
+            .bind(9, render_mode_name(t.label2_mode));
+        if (Result<bool> ok = trial.value().run("storing the schedule"); !ok) return ok.error();
+        trial.value().reset();
+    }
+    if (Result<bool> ok = tx.value().commit("starting a session"); !ok) return ok.error();
+    return session_id;
+}
+
+namespace {
+
+// The trial columns in the order read_trial() expects.
+constexpr std::string_view kTrialColumns =
+    "t.trial_index, t.practice, t.block, t.scene, t.mono_plane, t.label1_alternative, "
+    "t.label1_mode, t.label2_mode, t.decided, t.choice, t.chosen_mode, t.valid, t.switches, "
+    "t.time_label1_ns, t.time_label2_ns, t.decision_time_ns";
+constexpr int kTrialColumnCount = 16;
+
+Result<RenderMode> read_mode(const Statement& stmt, int column, const std::string& file) {
+    const std::string name = stmt.text(column);
+    Result<RenderMode> mode = parse_render_mode(name);
+    if (!mode)
+        return Error{"study database '" + file + "' holds an unknown render mode '" + name +
+                     "' (written by a newer monoplane?)"};
+    return mode;
+}
+
+// Reads the kTrialColumns starting at column 0 into a trial and, when decided, its outcome.
+Result<bool> read_trial(const Statement& stmt, const std::string& file, ScheduledTrial& trial,
+                        bool& decided, TrialOutcome& outcome) {
+    trial.index = stmt.int32(0);
+    trial.practice = stmt.int64(1) != 0;
+    trial.block = stmt.int32(2);
+    trial.scene = stmt.text(3);
+    trial.mono_plane = stmt.real(4);
+    trial.label1_alternative = stmt.int32(5);
+    Result<RenderMode> label1 = read_mode(stmt, 6, file);
+    if (!label1) return label1.error();
+    Result<RenderMode> label2 = read_mode(stmt, 7, file);
+    if (!label2) return label2.error();
+    trial.label1_mode = *label1;
+    trial.label2_mode = *label2;
+    decided = stmt.int64(8) != 0;
+    outcome = TrialOutcome{};
+    if (!decided) return true;
+    outcome.choice = stmt.int32(9);
+    Result<RenderMode> chosen = read_mode(stmt, 10, file);
+    if (!chosen) return chosen.error();
+    outcome.chosen_mode = *chosen;
+    outcome.valid = stmt.int64(11) != 0;
+    outcome.switches = stmt.int32(12);
+    outcome.time_on_label_ns[0] = stmt.int64(13);
+    outcome.time_on_label_ns[1] = stmt.int64(14);
+    outcome.decision_time_ns = stmt.int64(15);
+    return true;
+}
+
+}  // namespace
+
+Result<Schedule> StudyStore::load_schedule(std::int64_t session_id) const {
+    const Connection& db = impl_->db;
+    Result<Statement> head =
+        Statement::prepare(db,
+                           "SELECT s.seed, p.participant_index, s.block_order FROM sessions s "
+                           "JOIN participants p ON p.id = s.participant_id WHERE s.id = ?");
+    if (!head) return head.error();
+    head.value().bind(1, session_id);
+    Result<bool> found = head.value().step("loading a schedule");
+    if (!found) return found.error();
+    if (!*found) return impl_->no_session(session_id);
+
+    Schedule schedule;
+    const std::optional<std::uint64_t> seed = parse_u64(head->text(0), 10);
+    if (!seed)
+        return Error{"study database '" + db.path() + "' holds a bad seed '" + head->text(0) + "'"};
+    schedule.seed = *seed;
+    schedule.participant_index = head->int32(1);
+    schedule.block_order = split_scenes(head->text(2));
+
+    Result<Statement> rows =
+        Statement::prepare(db, "SELECT " + std::string(kTrialColumns) +
+                                   " FROM trials t WHERE t.session_id = ? ORDER BY t.trial_index");
+    if (!rows) return rows.error();
+    rows.value().bind(1, session_id);
+    for (;;) {
+        Result<bool> row = rows.value().step("loading a schedule");
+        if (!row) return row.error();
+        if (!*row) break;
+        ScheduledTrial trial;
+        bool decided = false;
+        TrialOutcome outcome;
+        if (Result<bool> ok = read_trial(*rows, db.path(), trial, decided, outcome); !ok)
+            return ok.error();
+        schedule.trials.push_back(std::move(trial));
+    }
+    return schedule;
+}
+
+Result<int> StudyStore::first_undecided_trial(std::int64_t session_id) const {
+    if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok.error();
+    // All decided: the trial count, i.e. one past the last trial.
+    Result<Statement> stmt = Statement::prepare(
+        impl_->db,
+        "SELECT coalesce(min(CASE WHEN decided = 0 THEN trial_index END), count(*)) "
+        "FROM trials WHERE session_id = ?");
+    if (!stmt) return stmt.error();
+    stmt.value().bind(1, session_id);
+    Result<bool> row = stmt.value().step("finding the first undecided trial");
+    if (!row) return row.error();
+    return stmt->int32(0);
+}
+
+Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
+    const Connection& db = impl_->db;
+    Result<Statement> stmt = Statement::prepare(
+        db,
+        "SELECT s.id, p.code, p.participant_index, s.protocol_name, s.protocol_hash, "
+        "s.protocol_text, s.seed, s.software_version, s.hmd, s.runtime, s.device, s.observer, "
+        "s.started_utc, s.status FROM sessions s JOIN participants p ON p.id = s.participant_id "
+        "WHERE s.id = ?");
+    if (!stmt) return stmt.error();
+    stmt.value().bind(1, session_id);
+    Result<bool> found = stmt.value().step("reading a session");
+    if (!found) return found.error();
+    if (!*found) return impl_->no_session(session_id);
+
+    SessionInfo info;
+    info.id = stmt->int64(0);
+    info.participant_code = stmt->text(1);
+    info.participant_index = stmt->int32(2);
+    info.protocol_name = stmt->text(3);
+    const std::optional<std::uint64_t> hash = parse_u64(stmt->text(4), 16);
+    const std::optional<std::uint64_t> seed = parse_u64(stmt->text(6), 10);
+    const std::optional<SessionStatus> status = parse_status(stmt->text(13));
+    if (!hash || !seed || !status)
+        return Error{"study database '" + db.path() +
+                     "' holds a bad hash, seed or status in session " + std::to_string(session_id)};
+    info.protocol_hash = *hash;
+    info.protocol_text = stmt->text(5);
+    info.seed = *seed;
+    info.software_version = stmt->text(7);
+    info.hmd = stmt->text(8);
+    info.runtime = stmt->text(9);
+    info.device = stmt->text(10);
+    info.observer = stmt->text(11);
+    info.started_utc = stmt->text(12);
+    info.status = *status;
+    return info;
+}
+
+Result<std::optional<std::int64_t>> StudyStore::latest_unfinished_session() const {
+    // Aborted sessions count as unfinished: an experimenter may abort (a participant felt
+    // unwell) and resume later; only a completed session is done.
+    Result<Statement> stmt = Statement::prepare(
+        impl_->db, "SELECT id FROM sessions WHERE status <> 'completed' ORDER BY id DESC LIMIT 1");
+    if (!stmt) return stmt.error();
+    Result<bool> row = stmt.value().step("finding an unfinished session");
+    if (!row) return row.error();
+    if (!*row) return std::optional<std::int64_t>();
+    return std::optional<std::int64_t>(stmt->int64(0));
+}
+
+Result<int> StudyStore::participant_count() const {
+    Result<std::int64_t> count =
+        query_int(impl_->db, "SELECT count(*) FROM participants", "counting participants");
+    if (!count) return count.error();
+    return static_cast<int>(*count);
+}
+
+Result<bool> StudyStore::append_event(std::int64_t session_id, const TrialEvent& event) {
+    const auto kind = static_cast<std::size_t>(event.kind);
+    if (kind >= kEventKindNames.size()) return Error{"unknown event kind " + std::to_string(kind)};
+    if (event.label < 0 || event.label > 2)
+        return Error{"event label " + std::to_string(event.label) + " is not 0, 1 or 2"};
+    if (event.frame < -1)
+        return Error{"event frame " + std::to_string(event.frame) + " is below -1"};
+    // One INSERT is one transaction; with synchronous = FULL it is on disk when this returns.
+    Result<Statement> stmt = Statement::prepare(
+        impl_->db,
+        "INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame) "
+        "VALUES (?, ?, ?, ?, ?, ?)");
+    if (!stmt) return stmt.error();
+    stmt.value()
+        .bind(1, session_id)
+        .bind(2, event.trial_index)
+        .bind(3, event_kind_db_name(event.kind))
+        .bind(4, event.label)
+        .bind(5, event.time_ns)
+        .bind(6, event.frame);
+    const std::string what = "appending a '" + std::string(event_kind_db_name(event.kind)) +
+                             "' event for trial " + std::to_string(event.trial_index) +
+                             " of session " + std::to_string(session_id) +
+                             " (the session and trial must exist)";
+    return stmt.value().run(what);
+}
+
+Result<bool> StudyStore::record_outcome(std::int64_t session_id, int trial_index,
+                                        const TrialOutcome& outcome) {
+    const Connection& db = impl_->db;
+    const std::string trial_name =
+        "trial " + std::to_string(trial_index) + " of session " + std::to_string(session_id);
+    if (outcome.choice != 1 && outcome.choice != 2)
+        return Error{"outcome of " + trial_name + ": choice " + std::to_string(outcome.choice) +
+                     " is not label 1 or 2"};
+    if (outcome.switches < 0 || outcome.time_on_label_ns[0] < 0 ||
+        outcome.time_on_label_ns[1] < 0 || outcome.decision_time_ns < 0)
+        return Error{"outcome of " + trial_name + ": switches and times must not be negative"};
+
+    Result<Transaction> tx = Transaction::begin(db, "recording the outcome of " + trial_name);
+    if (!tx) return tx.error();
+    Result<Statement> trial = Statement::prepare(db,
+                                                 "SELECT label1_mode, label2_mode, decided FROM "
+                                                 "trials WHERE session_id = ? AND trial_index = ?");
+    if (!trial) return trial.error();
+    trial.value().bind(1, session_id).bind(2, trial_index);
+    Result<bool> found = trial.value().step("recording the outcome of " + trial_name);
+    if (!found) return found.error();
+    if (!*found) return Error{"no " + trial_name + " in study database '" + db.path() + "'"};
+    // A decision is data: never overwritten, and consistent with the blind assignment.
+    if (trial->int64(2) != 0)
+        return Error{trial_name + " is already decided; a recorded decision is never overwritten"};
+    const std::string label_mode = trial->text(outcome.choice == 1 ? 0 : 1);
+    if (label_mode != render_mode_name(outcome.chosen_mode))
+        return Error{"outcome of " + trial_name + ": chosen mode '" +
+                     std::string(render_mode_name(outcome.chosen_mode)) + "' is not label " +
+                     std::to_string(outcome.choice) + "'s mode '" + label_mode + "'"};
+
+    Result<Statement> update = Statement::prepare(
+        db,
+        "UPDATE trials SET decided = 1, choice = ?, chosen_mode = ?, valid = ?, switches = ?, "
+        "time_label1_ns = ?, time_label2_ns = ?, decision_time_ns = ?, decided_utc = ? "
+        "WHERE session_id = ? AND trial_index = ?");
+    if (!update) return update.error();
+    update.value()
+        .bind(1, outcome.choice)
+        .bind(2, render_mode_name(outcome.chosen_mode))
+        .bind(3, outcome.valid ? 1 : 0)
+        .bind(4, outcome.switches)
+        .bind(5, outcome.time_on_label_ns[0])
+        .bind(6, outcome.time_on_label_ns[1])
+        .bind(7, outcome.decision_time_ns)
+        .bind(8, utc_now_iso8601())
+        .bind(9, session_id)
+        .bind(10, trial_index);
+    if (Result<bool> ok = update.value().run("recording the outcome of " + trial_name); !ok)
+        return ok;
+    return tx.value().commit("recording the outcome of " + trial_name);
+}
+
+Result<bool> StudyStore::set_status(std::int64_t session_id, SessionStatus status) {
+    const bool ended = status == SessionStatus::Completed || status == SessionStatus::Aborted;
+    Result<Statement> stmt =
+        Statement::prepare(impl_->db, "UPDATE sessions SET status = ?, ended_utc = ? WHERE id = ?");
+    if (!stmt) return stmt.error();
+    stmt.value().bind(1, session_status_name(status));
+    if (ended)
+        stmt.value().bind(2, utc_now_iso8601());
+    else
+        stmt.value().bind_null(2);  // resumed: no longer ended
+    stmt.value().bind(3, session_id);
+    if (Result<bool> ok =
+            stmt.value().run("setting the status of session " + std::to_string(session_id));
+        !ok)
+        return ok;
+    if (sqlite3_changes(impl_->db.get()) == 0) return impl_->no_session(session_id);
+    return true;
+}
+
+Result<bool> StudyStore::record_answer(std::int64_t session_id, int item, const std::string& text,
+                                       int answer) {
+    if (item < 0) return Error{"questionnaire item " + std::to_string(item) + " is negative"};
+    if (answer < 1)
+        return Error{"questionnaire answer " + std::to_string(answer) + " to item " +
+                     std::to_string(item) + " is below 1 (Likert answers count from 1)"};
+    Result<Transaction> tx = Transaction::begin(impl_->db, "recording a questionnaire answer");
+    if (!tx) return tx.error();
+    if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok;
+    // Asked again after a resume: the latest answer counts.
+    Result<Statement> stmt = Statement::prepare(
+        impl_->db,
+        "INSERT INTO answers (session_id, item, text, answer, answered_utc) "
+        "VALUES (?, ?, ?, ?, ?) ON CONFLICT (session_id, item) DO UPDATE SET "
+        "text = excluded.text, answer = excluded.answer, answered_utc = excluded.answered_utc");
+    if (!stmt) return stmt.error();
+    stmt.value()
+        .bind(1, session_id)
+        .bind(2, item)
+        .bind(3, text)
+        .bind(4, answer)
+        .bind(5, utc_now_iso8601());
+    if (Result<bool> ok = stmt.value().run("recording a questionnaire answer"); !ok) return ok;
+    return tx.value().commit("recording a questionnaire answer");
+}
+
+Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> session_id) const {
+    const Connection& db = impl_->db;
+    if (session_id)
+        if (Result<bool> ok = impl_->require_session(*session_id); !ok) return ok.error();
+    Result<Statement> stmt = Statement::prepare(
+        db, "SELECT " + std::string(kTrialColumns) +
+                ", t.session_id, p.code FROM trials t JOIN sessions s ON s.id = t.session_id "
+                "JOIN participants p ON p.id = s.participant_id "
+                "WHERE ?1 IS NULL OR t.session_id = ?1 ORDER BY t.session_id, t.trial_index");
+    if (!stmt) return stmt.error();
+    if (session_id)
+        stmt.value().bind(1, *session_id);
+    else
+        stmt.value().bind_null(1);
+    std::vector<TrialRecord> records;
+    for (;;) {
+        Result<bool> row = stmt.value().step("reading trials");
+        if (!row) return row.error();
+        if (!*row) break;
+        TrialRecord record;
+        if (Result<bool> ok =
+                read_trial(*stmt, db.path(), record.trial, record.decided, record.outcome);
+            !ok)
+            return ok.error();
+        record.session_id = stmt->int64(kTrialColumnCount);
+        record.participant_code = stmt->text(kTrialColumnCount + 1);
+        records.push_back(std::move(record));
+    }
+    return records;
+}
+
+Result<std::vector<TrialEvent>> StudyStore::events(std::int64_t session_id) const {
+    const Connection& db = impl_->db;
+    if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok.error();
+    Result<Statement> stmt = Statement::prepare(db,
+                                                "SELECT kind, trial_index, label, time_ns, frame "
+                                                "FROM events WHERE session_id = ? ORDER BY id");
+    if (!stmt) return stmt.error();
+    stmt.value().bind(1, session_id);
+    std::vector<TrialEvent> events;
+    for (;;) {
+        Result<bool> row = stmt.value().step("reading events");
+        if (!row) return row.error();
+        if (!*row) break;
+        const std::optional<EventKind> kind = parse_event_kind(stmt->text(0));
+        if (!kind)
+            return Error{"study database '" + db.path() + "' holds an unknown event kind '" +
+                         stmt->text(0) + "'"};
+        events.push_back(
+            TrialEvent{*kind, stmt->int32(1), stmt->int32(2), stmt->int64(3), stmt->int64(4)});
+    }
+    return events;
+}
+
+}  // namespace monoplane::study

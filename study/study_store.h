@@ -1,0 +1,99 @@
+// The study database (DESIGN.md section 7): SQLite in WAL mode, schema version with migrations in
+// code, every event committed before the next frame starts, unique pseudonymous participant
+// codes, sessions with status, resumable. Nothing is written at the end only: a killed process
+// loses no confirmed decision and no switch.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/result.h"
+#include "study/schedule.h"
+#include "study/trial_events.h"
+#include "study/trial_state_machine.h"
+
+namespace monoplane::study {
+
+enum class SessionStatus { Running, Paused, Completed, Aborted };
+std::string_view session_status_name(SessionStatus status);
+
+struct SessionInfo {
+    std::int64_t id = 0;
+    std::string participant_code;
+    int participant_index = 0;  // order of the participant's first session: Latin square row
+    std::string protocol_name;
+    std::uint64_t protocol_hash = 0;
+    std::string protocol_text;
+    std::uint64_t seed = 0;
+    std::string software_version;
+    std::string hmd;
+    std::string runtime;  // "none", "simulated", or the OpenXR runtime's name
+    std::string device;
+    std::string observer;  // simulated observer's name, "" for a person
+    std::string started_utc;  // ISO 8601
+    SessionStatus status = SessionStatus::Running;
+};
+
+// One row of the export: a trial with its outcome (DESIGN.md section 7; docs/data.md).
+struct TrialRecord {
+    std::int64_t session_id = 0;
+    std::string participant_code;
+    ScheduledTrial trial;
+    bool decided = false;
+    TrialOutcome outcome;
+};
+
+struct StoreOptions {
+    // How long a call waits for another connection's lock before it fails with an error that
+    // names the file.
+    int busy_timeout_ms = 2000;
+    // Test hook: when > 0, the database may not grow beyond this many pages (SQLite clamps it to
+    // the current size), so writes fail as on a full disk. 0: no limit.
+    std::int64_t max_page_count = 0;
+};
+
+class StudyStore {
+public:
+    // Opens or creates the database; creates it readable by its owner only (0600). Errors: an
+    // unwritable or locked file, a file that is no SQLite database, a schema newer than this
+    // build knows. Migrates older schemas forward.
+    static Result<std::unique_ptr<StudyStore>> open(const std::filesystem::path& path);
+    static Result<std::unique_ptr<StudyStore>> open(const std::filesystem::path& path,
+                                                    const StoreOptions& options);
+    ~StudyStore();
+
+    static constexpr int kSchemaVersion = 1;
+
+    // Starts a session: refuses a participant code that already has a session (use resume).
+    // Stores the protocol text and hash, the seed and the whole schedule before the first trial.
+    Result<std::int64_t> begin_session(const SessionInfo& info, const Schedule& schedule);
+
+    // The schedule stored for a session, and where to continue: the first undecided trial.
+    Result<Schedule> load_schedule(std::int64_t session_id) const;
+    Result<int> first_undecided_trial(std::int64_t session_id) const;
+    Result<SessionInfo> session(std::int64_t session_id) const;
+    // The latest session that is not completed (for `study resume` without --session).
+    Result<std::optional<std::int64_t>> latest_unfinished_session() const;
+    // The number of sessions so far: the next participant's Latin square row.
+    Result<int> participant_count() const;
+
+    // Durable when it returns (one transaction each).
+    Result<bool> append_event(std::int64_t session_id, const TrialEvent& event);
+    Result<bool> record_outcome(std::int64_t session_id, int trial_index, const TrialOutcome& outcome);
+    Result<bool> set_status(std::int64_t session_id, SessionStatus status);
+    Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text, int answer);
+
+    Result<std::vector<TrialRecord>> trials(std::optional<std::int64_t> session_id = {}) const;
+    Result<std::vector<TrialEvent>> events(std::int64_t session_id) const;
+
+private:
+    struct Impl;
+    explicit StudyStore(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace monoplane::study

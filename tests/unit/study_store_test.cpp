@@ -1,0 +1,577 @@
+// The study database (DESIGN.md section 7): WAL, schema version, private files, unique
+// pseudonymous participants, exact round trips, resumption, and every failure a clear error that
+// leaves earlier data intact (locked, not a database, newer schema, unwritable, disk full).
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "study/study_store.h"
+
+namespace monoplane::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A raw second connection, as another process or an sqlite3 shell would hold.
+struct RawDb {
+    sqlite3* db = nullptr;
+    explicit RawDb(const fs::path& path) { EXPECT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK); }
+    ~RawDb() { sqlite3_close_v2(db); }
+    int exec(const std::string& sql) {
+        return sqlite3_exec(db, sql.c_str(), nullptr, nullptr, nullptr);
+    }
+    std::int64_t integer(const std::string& sql) {
+        sqlite3_stmt* stmt = nullptr;
+        EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr), SQLITE_OK) << sql;
+        EXPECT_EQ(sqlite3_step(stmt), SQLITE_ROW) << sql;
+        const std::int64_t value = sqlite3_column_int64(stmt, 0);
+        sqlite3_finalize(stmt);
+        return value;
+    }
+    std::string text(const std::string& sql) {
+        sqlite3_stmt* stmt = nullptr;
+        EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr), SQLITE_OK) << sql;
+        EXPECT_EQ(sqlite3_step(stmt), SQLITE_ROW) << sql;
+        const auto* data = reinterpret_cast<const char*>(sqlite3_column_text(stmt, 0));
+        std::string value = data != nullptr ? data : "";
+        sqlite3_finalize(stmt);
+        return value;
+    }
+};
+
+// Two practice trials, then blocks of `per_block` distances for spheres and beams.
+Schedule make_test_schedule(int participant_index, int per_block = 3) {
+    Schedule schedule;
+    schedule.seed = 18446744073709551557ull;  // above 2^63: must survive SQLite's signed integers
+    schedule.participant_index = participant_index;
+    schedule.block_order = {"spheres", "beams"};
+    const double planes[] = {1.6, 8.0, 39.5, 3.0, 31.0};
+    int index = 0;
+    for (int p = 0; p < 2; ++p)
+        schedule.trials.push_back({index++, true, -1, "landscape", 5.0, p,
+                                   p == 0 ? RenderMode::Stereo : RenderMode::Hybrid,
+                                   p == 0 ? RenderMode::Hybrid : RenderMode::Stereo});
+    for (int block = 0; block < 2; ++block)
+        for (int i = 0; i < per_block; ++i) {
+            const int alt = (i + block) % 2;
+            schedule.trials.push_back({index++, false, block, schedule.block_order[block],
+                                       planes[i % 5], alt,
+                                       alt == 0 ? RenderMode::Stereo : RenderMode::Hybrid,
+                                       alt == 0 ? RenderMode::Hybrid : RenderMode::Stereo});
+        }
+    return schedule;
+}
+
+SessionInfo make_info(const std::string& code) {
+    SessionInfo info;
+    info.participant_code = code;
+    info.protocol_name = "fink2019";
+    info.protocol_hash = 0xcbf29ce484222325ull;
+    info.protocol_text = "name = \"fink2019\"\nscenes = [\"beams\"]\n";
+    info.software_version = "0.1.0";
+    info.hmd = "vive";
+    info.runtime = "none";
+    info.device = "simulated";
+    info.observer = "default";
+    info.started_utc = "2024-05-01T09:30:00Z";
+    return info;
+}
+
+class StudyStoreTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        std::string pattern = (fs::path(::testing::TempDir()) / "study_store_XXXXXX").string();
+        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+        dir_ = pattern;
+        db_ = dir_ / "study.db";
+    }
+    void TearDown() override {
+        fs::permissions(dir_, fs::perms::owner_all);
+        fs::remove_all(dir_);
+    }
+
+    std::unique_ptr<StudyStore> open_store(const StoreOptions& options = {}) {
+        Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_, options);
+        EXPECT_TRUE(store.ok()) << store.error().message;
+        return store.ok() ? std::move(store).value() : nullptr;
+    }
+
+    std::int64_t begin(StudyStore& store, const std::string& code) {
+        Result<int> index = store.participant_count();
+        EXPECT_TRUE(index.ok());
+        Result<std::int64_t> id = store.begin_session(make_info(code), make_test_schedule(*index));
+        EXPECT_TRUE(id.ok()) << id.error().message;
+        return id.ok() ? *id : -1;
+    }
+
+    fs::path dir_;
+    fs::path db_;
+};
+
+mode_t file_mode(const fs::path& path) {
+    struct stat st {};
+    EXPECT_EQ(::stat(path.c_str(), &st), 0) << path;
+    return st.st_mode & 0777;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+TEST_F(StudyStoreTest, CreatesAndReopensWithTheSessionIntact) {
+    std::int64_t id = 0;
+    {
+        auto store = open_store();
+        ASSERT_TRUE(store);
+        EXPECT_EQ(*store->participant_count(), 0);
+        id = begin(*store, "P01");
+        EXPECT_EQ(id, 1);
+    }
+    auto store = open_store();
+    ASSERT_TRUE(store);
+    EXPECT_EQ(*store->participant_count(), 1);
+    const Result<SessionInfo> info = store->session(id);
+    ASSERT_TRUE(info.ok()) << info.error().message;
+    const SessionInfo expected = make_info("P01");
+    EXPECT_EQ(info->id, id);
+    EXPECT_EQ(info->participant_code, "P01");
+    EXPECT_EQ(info->participant_index, 0);
+    EXPECT_EQ(info->protocol_name, expected.protocol_name);
+    EXPECT_EQ(info->protocol_hash, expected.protocol_hash);
+    EXPECT_EQ(info->protocol_text, expected.protocol_text);
+    EXPECT_EQ(info->seed, 18446744073709551557ull);
+    EXPECT_EQ(info->software_version, "0.1.0");
+    EXPECT_EQ(info->hmd, "vive");
+    EXPECT_EQ(info->runtime, "none");
+    EXPECT_EQ(info->device, "simulated");
+    EXPECT_EQ(info->observer, "default");
+    EXPECT_EQ(info->started_utc, "2024-05-01T09:30:00Z");
+    EXPECT_EQ(info->status, SessionStatus::Running);
+    EXPECT_FALSE(store->session(id + 1).ok());
+}
+
+TEST_F(StudyStoreTest, FillsTheStartTimeWhenNotGiven) {
+    auto store = open_store();
+    SessionInfo info = make_info("P01");
+    info.started_utc.clear();
+    const Result<std::int64_t> id = store->begin_session(info, make_test_schedule(0));
+    ASSERT_TRUE(id.ok()) << id.error().message;
+    const std::string started = store->session(*id)->started_utc;
+    ASSERT_EQ(started.size(), 20u) << started;  // 2024-05-01T09:30:00Z
+    EXPECT_EQ(started[4], '-');
+    EXPECT_EQ(started[10], 'T');
+    EXPECT_EQ(started[19], 'Z');
+}
+
+TEST_F(StudyStoreTest, UsesWalAndRecordsTheSchemaVersion) {
+    auto store = open_store();
+    ASSERT_TRUE(store);
+    RawDb raw(db_);
+    EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
+    EXPECT_EQ(StudyStore::kSchemaVersion, 1);
+    EXPECT_EQ(raw.integer("PRAGMA application_id"), 0x4D505354);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 5);
+}
+
+TEST_F(StudyStoreTest, FilesAreReadableByTheOwnerOnly) {
+    const mode_t old_mask = ::umask(0);  // even with a permissive umask
+    auto store = open_store();
+    ::umask(old_mask);
+    ASSERT_TRUE(store);
+    begin(*store, "P01");
+    ASSERT_TRUE(store->append_event(1, TrialEvent{EventKind::Shown, 0, 1, 10, 0}).ok());
+    EXPECT_EQ(file_mode(db_), 0600u);
+    ASSERT_TRUE(fs::exists(db_.string() + "-wal"));
+    EXPECT_EQ(file_mode(db_.string() + "-wal"), 0600u);
+    EXPECT_EQ(file_mode(db_.string() + "-shm"), 0600u);
+}
+
+TEST_F(StudyStoreTest, RefusesASecondSessionForAParticipant) {
+    auto store = open_store();
+    const std::int64_t first = begin(*store, "P01");
+    const Result<std::int64_t> again =
+        store->begin_session(make_info("P01"), make_test_schedule(1));
+    ASSERT_FALSE(again.ok());
+    EXPECT_TRUE(contains(again.error().message, "'P01' already has session 1"))
+        << again.error().message;
+    EXPECT_TRUE(contains(again.error().message, "monoplane study resume")) << again.error().message;
+    EXPECT_EQ(*store->participant_count(), 1);
+
+    const std::int64_t second = begin(*store, "P02");
+    EXPECT_EQ(second, first + 1);
+    EXPECT_EQ(store->session(second)->participant_index, 1);  // the next Latin square row
+    EXPECT_EQ(*store->participant_count(), 2);
+}
+
+TEST_F(StudyStoreTest, AcceptsPseudonymsOnly) {
+    auto store = open_store();
+    for (const std::string& bad : std::vector<std::string>{"", "Jane Doe", "J\xc3\xb6rg", "P,01",
+                                                           "a\"b", std::string(65, 'x')}) {
+        const Result<std::int64_t> id = store->begin_session(make_info(bad), make_test_schedule(0));
+        ASSERT_FALSE(id.ok()) << bad;
+        EXPECT_TRUE(contains(id.error().message, "1 to 64 letters, digits, '_' or '-'"))
+            << id.error().message;
+    }
+    EXPECT_EQ(*store->participant_count(), 0);
+    EXPECT_GT(begin(*store, "P_07-b"), 0);
+    EXPECT_GT(begin(*store, std::string(64, 'z')), 0);
+}
+
+TEST_F(StudyStoreTest, RefusesAScheduleMadeForAnotherLatinSquareRow) {
+    auto store = open_store();
+    const Result<std::int64_t> id = store->begin_session(make_info("P01"), make_test_schedule(3));
+    ASSERT_FALSE(id.ok());
+    EXPECT_TRUE(contains(id.error().message, "participant index 3")) << id.error().message;
+    EXPECT_EQ(*store->participant_count(), 0);  // nothing half-written
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sessions"), 0);
+}
+
+TEST_F(StudyStoreTest, StoresTheWholeScheduleBeforeTheFirstTrial) {
+    auto store = open_store();
+    const Schedule schedule = make_test_schedule(0, 5);
+    const Result<std::int64_t> id = store->begin_session(make_info("P01"), schedule);
+    ASSERT_TRUE(id.ok()) << id.error().message;
+    const Result<Schedule> loaded = store->load_schedule(*id);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    EXPECT_EQ(loaded->seed, schedule.seed);
+    EXPECT_EQ(loaded->participant_index, 0);
+    EXPECT_EQ(loaded->block_order, schedule.block_order);
+    ASSERT_EQ(loaded->trials.size(), 12u);
+    for (std::size_t i = 0; i < schedule.trials.size(); ++i) {
+        const ScheduledTrial& a = schedule.trials[i];
+        const ScheduledTrial& b = loaded->trials[i];
+        EXPECT_EQ(b.index, a.index);
+        EXPECT_EQ(b.practice, a.practice);
+        EXPECT_EQ(b.block, a.block);
+        EXPECT_EQ(b.scene, a.scene);
+        EXPECT_EQ(b.mono_plane, a.mono_plane);  // exact: REAL is a double
+        EXPECT_EQ(b.label1_alternative, a.label1_alternative);
+        EXPECT_EQ(b.label1_mode, a.label1_mode);
+        EXPECT_EQ(b.label2_mode, a.label2_mode);
+    }
+    EXPECT_EQ(*store->first_undecided_trial(*id), 0);
+    EXPECT_FALSE(store->load_schedule(*id + 7).ok());
+}
+
+TEST_F(StudyStoreTest, RefusesABadSchedule) {
+    auto store = open_store();
+    Schedule schedule = make_test_schedule(0);
+    schedule.trials[3].index = 9;
+    Result<std::int64_t> id = store->begin_session(make_info("P01"), schedule);
+    ASSERT_FALSE(id.ok());
+    EXPECT_TRUE(contains(id.error().message, "scheduled trial 3")) << id.error().message;
+    schedule = make_test_schedule(0);
+    schedule.trials.clear();
+    EXPECT_FALSE(store->begin_session(make_info("P01"), schedule).ok());
+    EXPECT_EQ(*store->participant_count(), 0);
+}
+
+TEST_F(StudyStoreTest, EventsAndOutcomesRoundTripExactly) {
+    std::int64_t id = 0;
+    const std::vector<TrialEvent> events = {
+        {EventKind::Shown, 2, 1, 1'000'000'123, 60},
+        {EventKind::Switched, 2, 2, 2'500'000'000, 150},
+        {EventKind::Refused, 2, 0, 2'600'000'000, -1},
+        {EventKind::Paused, 2, 0, 3'000'000'000, -1},
+        {EventKind::Resumed, 2, 0, 4'000'000'000, -1},
+        {EventKind::Switched, 2, 1, 4'100'000'001, 250},
+        {EventKind::Confirmed, 2, 1, 9'223'372'036'854'775'807, 9'000'000'000},
+        {EventKind::Aborted, 3, 0, 12, -1},
+    };
+    TrialOutcome outcome;
+    outcome.choice = 1;
+    outcome.chosen_mode = RenderMode::Stereo;  // trial 2 shows stereo under label 1
+    outcome.valid = true;
+    outcome.switches = 2;
+    outcome.time_on_label_ns[0] = 1'500'000'000;
+    outcome.time_on_label_ns[1] = 1'600'000'001;
+    outcome.decision_time_ns = 3'100'000'001;
+    {
+        auto store = open_store();
+        id = begin(*store, "P01");
+        for (const TrialEvent& event : events) {
+            const Result<bool> ok = store->append_event(id, event);
+            ASSERT_TRUE(ok.ok()) << ok.error().message;
+        }
+        const Result<bool> ok = store->record_outcome(id, 2, outcome);
+        ASSERT_TRUE(ok.ok()) << ok.error().message;
+    }
+    auto store = open_store();  // what a resumed session would see
+    const Result<std::vector<TrialEvent>> loaded = store->events(id);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    ASSERT_EQ(loaded->size(), events.size());
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        EXPECT_EQ((*loaded)[i].kind, events[i].kind) << i;
+        EXPECT_EQ((*loaded)[i].trial_index, events[i].trial_index) << i;
+        EXPECT_EQ((*loaded)[i].label, events[i].label) << i;
+        EXPECT_EQ((*loaded)[i].time_ns, events[i].time_ns) << i;
+        EXPECT_EQ((*loaded)[i].frame, events[i].frame) << i;
+    }
+    const Result<std::vector<TrialRecord>> trials = store->trials(id);
+    ASSERT_TRUE(trials.ok()) << trials.error().message;
+    ASSERT_EQ(trials->size(), 8u);
+    const TrialRecord& decided = (*trials)[2];
+    EXPECT_EQ(decided.session_id, id);
+    EXPECT_EQ(decided.participant_code, "P01");
+    EXPECT_EQ(decided.trial.index, 2);
+    EXPECT_EQ(decided.trial.scene, "spheres");
+    EXPECT_EQ(decided.trial.mono_plane, 1.6);
+    EXPECT_TRUE(decided.decided);
+    EXPECT_EQ(decided.outcome.choice, 1);
+    EXPECT_EQ(decided.outcome.chosen_mode, RenderMode::Stereo);
+    EXPECT_TRUE(decided.outcome.valid);
+    EXPECT_EQ(decided.outcome.switches, 2);
+    EXPECT_EQ(decided.outcome.time_on_label_ns[0], 1'500'000'000);
+    EXPECT_EQ(decided.outcome.time_on_label_ns[1], 1'600'000'001);
+    EXPECT_EQ(decided.outcome.decision_time_ns, 3'100'000'001);
+    EXPECT_FALSE((*trials)[3].decided);
+    EXPECT_EQ((*trials)[3].outcome.choice, 0);
+}
+
+TEST_F(StudyStoreTest, RefusesEventsAndOutcomesForUnknownTrialsOrBadValues) {
+    auto store = open_store();
+    const std::int64_t id = begin(*store, "P01");
+    Result<bool> bad = store->append_event(id, TrialEvent{EventKind::Shown, 99, 1, 5, 0});
+    ASSERT_FALSE(bad.ok());
+    EXPECT_TRUE(contains(bad.error().message, "trial 99 of session 1")) << bad.error().message;
+    EXPECT_FALSE(store->append_event(id + 1, TrialEvent{EventKind::Shown, 0, 1, 5, 0}).ok());
+    EXPECT_FALSE(store->append_event(id, TrialEvent{EventKind::Shown, 0, 3, 5, 0}).ok());
+    EXPECT_TRUE(store->events(id)->empty());
+
+    TrialOutcome outcome;
+    outcome.choice = 2;
+    outcome.chosen_mode = RenderMode::Stereo;  // trial 2: label 2 is hybrid
+    bad = store->record_outcome(id, 2, outcome);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_TRUE(contains(bad.error().message, "is not label 2's mode 'hybrid'"))
+        << bad.error().message;
+    outcome.chosen_mode = RenderMode::Hybrid;
+    EXPECT_FALSE(store->record_outcome(id, 42, outcome).ok());
+    outcome.choice = 0;
+    EXPECT_FALSE(store->record_outcome(id, 2, outcome).ok());
+    outcome.choice = 2;
+    ASSERT_TRUE(store->record_outcome(id, 2, outcome).ok());
+    bad = store->record_outcome(id, 2, outcome);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_TRUE(contains(bad.error().message, "already decided")) << bad.error().message;
+}
+
+TEST_F(StudyStoreTest, ResumesAtTheFirstUndecidedTrial) {
+    auto store = open_store();
+    const std::int64_t id = begin(*store, "P01");
+    const Schedule schedule = *store->load_schedule(id);
+    auto decide = [&](int index) {
+        const ScheduledTrial& t = schedule.trials[static_cast<std::size_t>(index)];
+        TrialOutcome outcome;
+        outcome.choice = 2;
+        outcome.chosen_mode = t.label2_mode;
+        outcome.valid = true;
+        outcome.switches = 1;
+        const Result<bool> ok = store->record_outcome(id, index, outcome);
+        ASSERT_TRUE(ok.ok()) << ok.error().message;
+    };
+    for (int index : {0, 1, 3}) decide(index);
+    EXPECT_EQ(*store->first_undecided_trial(id), 2);
+    decide(2);
+    EXPECT_EQ(*store->first_undecided_trial(id), 4);
+    for (int index = 4; index < 8; ++index) decide(index);
+    EXPECT_EQ(*store->first_undecided_trial(id), 8);  // all decided: the trial count
+    EXPECT_FALSE(store->first_undecided_trial(id + 1).ok());
+}
+
+TEST_F(StudyStoreTest, TracksStatusAndTheLatestUnfinishedSession) {
+    auto store = open_store();
+    EXPECT_FALSE(store->latest_unfinished_session()->has_value());
+    const std::int64_t first = begin(*store, "P01");
+    const std::int64_t second = begin(*store, "P02");
+    EXPECT_EQ(store->latest_unfinished_session()->value(), second);
+    ASSERT_TRUE(store->set_status(second, SessionStatus::Completed).ok());
+    EXPECT_EQ(store->session(second)->status, SessionStatus::Completed);
+    EXPECT_EQ(store->latest_unfinished_session()->value(), first);
+    ASSERT_TRUE(store->set_status(first, SessionStatus::Paused).ok());
+    EXPECT_EQ(store->latest_unfinished_session()->value(), first);
+    ASSERT_TRUE(store->set_status(first, SessionStatus::Completed).ok());
+    EXPECT_FALSE(store->latest_unfinished_session()->has_value());
+    EXPECT_FALSE(store->set_status(99, SessionStatus::Aborted).ok());
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sessions WHERE ended_utc IS NOT NULL"), 2);
+    EXPECT_EQ(session_status_name(SessionStatus::Aborted), "aborted");
+}
+
+TEST_F(StudyStoreTest, RecordsQuestionnaireAnswersTheLatestCounting) {
+    auto store = open_store();
+    const std::int64_t id = begin(*store, "P01");
+    ASSERT_TRUE(store->record_answer(id, 0, "I noticed differences", 3).ok());
+    ASSERT_TRUE(store->record_answer(id, 1, "It was comfortable", 6).ok());
+    ASSERT_TRUE(store->record_answer(id, 0, "I noticed differences", 5).ok());  // asked again
+    EXPECT_FALSE(store->record_answer(id, 2, "x", 0).ok());
+    EXPECT_FALSE(store->record_answer(id + 1, 2, "x", 1).ok());
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM answers"), 2);
+    EXPECT_EQ(raw.integer("SELECT answer FROM answers WHERE item = 0"), 5);
+    EXPECT_EQ(raw.text("SELECT text FROM answers WHERE item = 1"), "It was comfortable");
+}
+
+TEST_F(StudyStoreTest, RefusesANewerSchemaWithoutTouchingIt) {
+    { ASSERT_TRUE(open_store()); }
+    {
+        RawDb raw(db_);
+        ASSERT_EQ(raw.exec("PRAGMA user_version = 2"), SQLITE_OK);
+    }
+    const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
+    ASSERT_FALSE(store.ok());
+    const std::string& message = store.error().message;
+    EXPECT_TRUE(contains(message, "schema version 2, newer than this build")) << message;
+    EXPECT_TRUE(contains(message, db_.string())) << message;
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 2);
+    EXPECT_TRUE(fs::exists(db_));
+}
+
+TEST_F(StudyStoreTest, ALockedDatabaseIsAClearErrorNamingTheFile) {
+    StoreOptions quick;
+    quick.busy_timeout_ms = 100;
+    auto store = open_store(quick);
+    const std::int64_t id = begin(*store, "P01");
+    {
+        RawDb other(db_);
+        ASSERT_EQ(other.exec("BEGIN EXCLUSIVE"), SQLITE_OK);  // in WAL: holds the write lock
+        const Result<bool> blocked =
+            store->append_event(id, TrialEvent{EventKind::Shown, 0, 1, 5, 0});
+        ASSERT_FALSE(blocked.ok());
+        EXPECT_TRUE(contains(blocked.error().message, "'" + db_.string() + "' is locked"))
+            << blocked.error().message;
+        const Result<std::int64_t> session =
+            store->begin_session(make_info("P02"), make_test_schedule(1));
+        ASSERT_FALSE(session.ok());
+        EXPECT_TRUE(contains(session.error().message, "is locked")) << session.error().message;
+        // Readers are not blocked (WAL): the experimenter's view and an export keep working.
+        EXPECT_EQ(*store->participant_count(), 1);
+        ASSERT_EQ(other.exec("ROLLBACK"), SQLITE_OK);
+    }
+    ASSERT_TRUE(store->append_event(id, TrialEvent{EventKind::Shown, 0, 1, 5, 0}).ok());
+    EXPECT_EQ(store->events(id)->size(), 1u);
+    EXPECT_EQ(*store->participant_count(), 1);
+}
+
+TEST_F(StudyStoreTest, OpeningADatabaseLockedExclusivelyIsAClearError) {
+    RawDb other(db_);  // a rollback-journal database: an exclusive lock blocks readers too
+    ASSERT_EQ(other.exec("CREATE TABLE t (x); BEGIN EXCLUSIVE; INSERT INTO t VALUES (1);"),
+              SQLITE_OK);
+    StoreOptions quick;
+    quick.busy_timeout_ms = 100;
+    const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_, quick);
+    ASSERT_FALSE(store.ok());
+    EXPECT_TRUE(contains(store.error().message, "'" + db_.string() + "' is locked"))
+        << store.error().message;
+    ASSERT_EQ(other.exec("COMMIT"), SQLITE_OK);
+}
+
+TEST_F(StudyStoreTest, RefusesAFileThatIsNotADatabase) {
+    const std::string text(8192, 'x');
+    std::ofstream(db_) << text;
+    const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
+    ASSERT_FALSE(store.ok());
+    EXPECT_TRUE(contains(store.error().message, "'" + db_.string() + "' is not a SQLite database"))
+        << store.error().message;
+    std::ifstream in(db_);
+    const std::string after((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(after, text);  // untouched
+}
+
+TEST_F(StudyStoreTest, RefusesAnotherProgramsDatabase) {
+    {
+        RawDb other(db_);
+        ASSERT_EQ(other.exec("CREATE TABLE photos (id INTEGER)"), SQLITE_OK);
+    }
+    const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
+    ASSERT_FALSE(store.ok());
+    EXPECT_TRUE(contains(store.error().message, "another program")) << store.error().message;
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema"), 1);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 0);
+}
+
+TEST_F(StudyStoreTest, AnUnwritableDirectoryIsAClearError) {
+    const fs::path locked_dir = dir_ / "readonly";
+    fs::create_directory(locked_dir);
+    fs::permissions(locked_dir, fs::perms::owner_read | fs::perms::owner_exec);
+    fs::path path = locked_dir / "study.db";
+    if (::access(locked_dir.c_str(), W_OK) == 0)
+        path = "/sys/monoplane_study.db";  // root ignores modes
+    const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(path);
+    ASSERT_FALSE(store.ok());
+    const std::string& message = store.error().message;
+    EXPECT_TRUE(contains(message, "cannot create study database '" + path.string() + "'"))
+        << message;
+    EXPECT_TRUE(contains(message, "ermission denied")) << message;
+    EXPECT_FALSE(fs::exists(path));
+
+    const Result<std::unique_ptr<StudyStore>> missing =
+        StudyStore::open(dir_ / "no" / "such" / "dir.db");
+    ASSERT_FALSE(missing.ok());
+    EXPECT_TRUE(contains(missing.error().message, "No such file or directory"))
+        << missing.error().message;
+}
+
+TEST_F(StudyStoreTest, AFullDiskFailsTheWriteAndKeepsEarlierData) {
+    std::int64_t id = 0;
+    {
+        auto store = open_store();
+        id = begin(*store, "P01");
+    }
+    // The database may not grow: writes fail as on a full disk once the last page is used up.
+    StoreOptions full;
+    full.max_page_count = 1;  // SQLite clamps it to the current size
+    int written = 0;
+    std::string message;
+    {
+        auto store = open_store(full);
+        ASSERT_TRUE(store);
+        for (; written < 100000; ++written) {
+            const Result<bool> ok = store->append_event(
+                id, TrialEvent{EventKind::Switched, 2, 1 + written % 2, 1000 + written, written});
+            if (!ok) {
+                message = ok.error().message;
+                break;
+            }
+        }
+        ASSERT_LT(written, 100000) << "the limit never took effect";
+        EXPECT_GT(written, 0) << "the last page had room for some events";
+        EXPECT_TRUE(contains(message, "disk full while appending a 'switched' event")) << message;
+        EXPECT_TRUE(contains(message, db_.string())) << message;
+
+        // A whole session does not fit either, and nothing of it stays behind.
+        const Result<std::int64_t> session =
+            store->begin_session(make_info("P02"), make_test_schedule(1, 400));
+        ASSERT_FALSE(session.ok());
+        EXPECT_TRUE(contains(session.error().message, "disk full while storing the schedule"))
+            << session.error().message;
+        EXPECT_EQ(*store->participant_count(), 1);
+    }
+    auto store = open_store();  // space again
+    const Result<std::vector<TrialEvent>> events = store->events(id);
+    ASSERT_TRUE(events.ok()) << events.error().message;
+    ASSERT_EQ(events->size(), static_cast<std::size_t>(written));
+    if (written > 0) {
+        EXPECT_EQ(events->back().time_ns, 1000 + written - 1);
+        EXPECT_EQ(events->back().frame, written - 1);
+    }
+    EXPECT_EQ(*store->participant_count(), 1);
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM trials"), 8);
+    EXPECT_EQ(raw.text("PRAGMA integrity_check"), "ok");
+    ASSERT_TRUE(store->append_event(id, TrialEvent{EventKind::Confirmed, 2, 1, 5, 7}).ok());
+}
+
+}  // namespace
+}  // namespace monoplane::study
