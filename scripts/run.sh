@@ -1,15 +1,28 @@
 #!/usr/bin/env bash
-# The README's main job. Until the study runner exists: renders BEAMS, LANDSCAPE and SPHERES in
-# stereo at the HTC Vive's per-eye resolution and says where the PNGs are.
+# The README's main job: renders BEAMS, LANDSCAPE and SPHERES in stereo and hybrid at the HTC
+# Vive's per-eye resolution, then runs a study session of the demo protocol with a simulated
+# observer (no headset yet: the simulated OpenXR runtime arrives with the headset issue) and
+# exports its decision log. Says where everything is.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh --target monoplane
-out="${OUT_DIR:-out/stereo}"
+out="${OUT_DIR:-out}"
 for scene in beams landscape spheres; do
-  echo "== $scene"
-  build/monoplane render --scene "$scene" --mode stereo --hmd vive --detail low --out "$out/$scene"
+  echo "== $scene: stereo, and hybrid at m = 8 compared with it"
+  build/monoplane render --scene "$scene" --mode stereo --hmd vive --detail low --out "$out/stereo/$scene"
+  build/monoplane render --scene "$scene" --mode hybrid --mono-plane 8 --hmd vive --detail low \
+    --compare-stereo --out "$out/hybrid-m8/$scene"
 done
+
+echo "== study session: protocols/demo.toml, simulated observer"
+mkdir -p "$out/study"
+participant="demo-$(date -u +%Y%m%dT%H%M%S)"
+build/monoplane study run --protocol protocols/demo.toml --participant "$participant" \
+  --db "$out/study/demo.sqlite" --headset none --observer default
+build/monoplane study export --db "$out/study/demo.sqlite" --format csv --out "$out/study/demo.csv"
+
 echo
-echo "Stereo pairs (left.png, right.png, stats.json) are in:"
-for scene in beams landscape spheres; do echo "  $(realpath "$out/$scene")"; done
+echo "Stereo pairs (left.png, right.png, stats.json):   $(realpath "$out/stereo")/<scene>"
+echo "Hybrid at m = 8 (also mono.png, SSIM heat maps):  $(realpath "$out/hybrid-m8")/<scene>"
+echo "Study database and decision log:                  $(realpath "$out/study")/demo.sqlite, demo.csv"

@@ -88,3 +88,49 @@ execute_process(COMMAND ${MONOPLANE} rig --hmd vive --mono-plane 0.05 RESULT_VAR
 if(rc EQUAL 0 OR NOT log MATCHES "mono_plane|mono plane")
   message(FATAL_ERROR "m <= near must fail naming the mono plane (${rc}): ${log}")
 endif()
+
+# The study from the command line: a session with the simulated observer, its export in both
+# formats, a duplicate participant refused, a completed session not resumable, a bad protocol.
+set(db ${OUT}/study.sqlite)
+file(REMOVE ${db} ${db}-wal ${db}-shm)
+execute_process(COMMAND ${MONOPLANE} study run --protocol ${SOURCE}/protocols/demo.toml
+                        --participant E2E1 --db ${db} --headset none --seed 11
+                RESULT_VARIABLE rc ERROR_VARIABLE log)
+if(NOT rc EQUAL 0 OR NOT log MATCHES "7 of 7 trials decided")
+  message(FATAL_ERROR "study run failed (${rc}): ${log}")
+endif()
+foreach(format csv json)
+  execute_process(COMMAND ${MONOPLANE} study export --db ${db} --format ${format}
+                          --out ${OUT}/study.${format} RESULT_VARIABLE rc ERROR_VARIABLE log)
+  if(NOT rc EQUAL 0 OR NOT EXISTS ${OUT}/study.${format})
+    message(FATAL_ERROR "study export ${format} failed (${rc}): ${log}")
+  endif()
+endforeach()
+file(STRINGS ${OUT}/study.csv rows)
+list(LENGTH rows row_count)
+list(GET rows 0 header)
+if(NOT row_count EQUAL 8 OR NOT header MATCHES "^participant,session,trial_index,block,scene,mono_plane,label1_mode,choice,chosen_mode,valid,switches,time_label1_s,time_label2_s,decision_time_s")
+  message(FATAL_ERROR "study.csv: ${row_count} lines, header ${header}")
+endif()
+file(READ ${OUT}/study.json json)
+string(JSON trials LENGTH "${json}")
+if(NOT trials EQUAL 7)
+  message(FATAL_ERROR "study.json holds ${trials} trials")
+endif()
+execute_process(COMMAND ${MONOPLANE} study run --protocol ${SOURCE}/protocols/demo.toml
+                        --participant E2E1 --db ${db} --headset none
+                RESULT_VARIABLE rc ERROR_VARIABLE log)
+if(rc EQUAL 0 OR NOT log MATCHES "resume")
+  message(FATAL_ERROR "a duplicate participant must be refused, pointing to resume (${rc}): ${log}")
+endif()
+execute_process(COMMAND ${MONOPLANE} study resume --db ${db} --session 1
+                RESULT_VARIABLE rc ERROR_VARIABLE log)
+if(rc EQUAL 0 OR NOT log MATCHES "completed")
+  message(FATAL_ERROR "resuming a completed session must be refused (${rc}): ${log}")
+endif()
+file(WRITE ${OUT}/bad.toml "name = \"bad\"\nscenes = [\"beams\"]\nmono_planes = [3, 3]\nalternatives = [\"stereo\", \"hybrid\"]\nordr = \"fixed\"\n")
+execute_process(COMMAND ${MONOPLANE} protocol check ${OUT}/bad.toml
+                RESULT_VARIABLE rc ERROR_VARIABLE log)
+if(rc EQUAL 0 OR NOT log MATCHES "bad.toml:3" OR NOT log MATCHES "ordr")
+  message(FATAL_ERROR "protocol check must name file, line and key (${rc}): ${log}")
+endif()
