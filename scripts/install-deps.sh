@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libvulkan-dev glslc mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   libglm-dev libstb-dev libcli11-dev libtomlplusplus-dev libboost-math-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libsqlite3-dev libsqlitecpp-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libsqlite3-dev
 )
 
 missing=()
