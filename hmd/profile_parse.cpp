@@ -12,8 +12,8 @@
 
 #include <toml++/toml.h>
 
+#include "common/toml/toml_problems.h"
 #include "hmd/profile.h"
-#include "hmd/toml_problems.h"
 
 namespace monoplane::hmd {
 namespace {
@@ -65,30 +65,6 @@ std::string quoted(std::string_view key) {
     return "'" + std::string(key) + "'";
 }
 
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> previous(b.size() + 1);
-    std::vector<std::size_t> current(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        current[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-            current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
-        }
-        std::swap(previous, current);
-    }
-    return previous[b.size()];
-}
-
-std::string join(std::span<const std::string_view> words) {
-    std::string text;
-    for (std::string_view word : words) {
-        if (!text.empty()) text += ", ";
-        text += word;
-    }
-    return text;
-}
-
 // Unknown keys are refused rather than ignored: a misspelt `tan_lft` would otherwise leave the
 // real key missing at best, or silently keep a default at worst.
 void report_unknown_keys(const Scope& scope, std::span<const std::string_view> known,
@@ -96,12 +72,9 @@ void report_unknown_keys(const Scope& scope, std::span<const std::string_view> k
     for (const auto& [key, node] : scope.table) {
         const std::string_view name = key.str();
         if (std::ranges::find(known, name) != known.end()) continue;
-        const auto distance_to = [&](std::string_view candidate) {
-            return edit_distance(name, candidate);
-        };
-        const std::string_view closest = *std::ranges::min_element(known, {}, distance_to);
+        const std::string_view closest = closest_match(name, known);
         std::string message = "unknown key " + quoted(scope.qualified(name));
-        if (distance_to(closest) <= 2) {
+        if (!closest.empty()) {
             message += " (did you mean " + quoted(scope.qualified(closest)) + "?)";
         } else {
             message += " (known keys" + (scope.name.empty() ? "" : " in [" + scope.name + "]") +

@@ -22,7 +22,7 @@
 #include <toml++/toml.h>
 
 #include "study/condition.h"
-#include "study/toml_problems.h"
+#include "common/toml/toml_problems.h"
 
 namespace monoplane::study {
 namespace {

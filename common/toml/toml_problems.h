@@ -1,7 +1,7 @@
-// Error reporting for TOML documents read by monoplane_study (protocol files): every problem found
-// in a document, each prefixed "source:line:column:" like a compiler's, so a user sees all mistakes
-// in a file at once and editors can jump to them. The same scheme as hmd/toml_problems.h, which
-// study/ may not include (DESIGN.md section 1). Internal: toml++ is a private dependency.
+// Error reporting for the TOML files monoplane reads (HMD profiles, study protocols): every
+// problem found in a document, each prefixed "source:line:column:" like a compiler's, so a user
+// sees all mistakes in a file at once and editors can jump to them. Shared by hmd/ and study/,
+// which may not include each other (DESIGN.md section 1).
 #pragma once
 
 #include <span>
@@ -13,7 +13,7 @@
 
 #include "common/result.h"
 
-namespace monoplane::study {
+namespace monoplane {
 
 class TomlProblems {
   public:
@@ -55,4 +55,4 @@ std::string_view closest_match(std::string_view word, std::span<const std::strin
 // Parses TOML text; a syntax error becomes "source:line:column: TOML syntax error: ...".
 Result<toml::table> parse_toml(std::string_view text, std::string_view source_name);
 
-}  // namespace monoplane::study
+}  // namespace monoplane

@@ -1,11 +1,11 @@
-#include "study/toml_problems.h"
+#include "common/toml/toml_problems.h"
 
 #include <algorithm>
 #include <cassert>
 #include <charconv>
 #include <iterator>
 
-namespace monoplane::study {
+namespace monoplane {
 namespace {
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
@@ -138,4 +138,4 @@ Result<toml::table> parse_toml(std::string_view text, std::string_view source_na
 #endif
 }
 
-}  // namespace monoplane::study
+}  // namespace monoplane
