@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/result.h"
+#include "renderer/rig/rig.h"
 #include "renderer/rig/tangents.h"
 
 namespace monoplane::hmd {
@@ -37,6 +38,10 @@ Result<HmdProfile> parse_hmd_profile(std::string_view toml_text, std::string_vie
 // the same name in the working directory (pass "./vive" for the file). An unknown name that is no
 // existing file gives an error listing the built-in names.
 Result<HmdProfile> load_hmd_profile(std::string_view name_or_path);
+
+// The rig's inputs for this headset at mono plane m: its frusta, per-eye size and default IPD;
+// near, far, k and the allocation keep the rig's defaults for the caller to override.
+rig::RigInputs rig_inputs(const HmdProfile& profile, double mono_plane);
 
 // The built-in profile names, in the order they should be shown to users.
 std::vector<std::string> builtin_hmd_names();

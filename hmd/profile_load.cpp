@@ -66,4 +66,14 @@ Result<HmdProfile> load_hmd_profile(std::string_view name_or_path) {
     return parse_hmd_profile(*text, name_or_path);
 }
 
+rig::RigInputs rig_inputs(const HmdProfile& profile, double mono_plane) {
+    rig::RigInputs inputs;
+    inputs.eyes = {profile.left, profile.right};
+    inputs.eye_width = profile.width;
+    inputs.eye_height = profile.height;
+    inputs.ipd = profile.ipd;
+    inputs.mono_plane = mono_plane;
+    return inputs;
+}
+
 }  // namespace monoplane::hmd

@@ -12,6 +12,7 @@
 
 #include <toml++/toml.h>
 
+#include "common/toml/toml_keys.h"
 #include "common/toml/toml_problems.h"
 #include "hmd/profile.h"
 
@@ -51,59 +52,8 @@ constexpr std::array<TangentRule, 4> kTangentRules = {{
     {"tan_up", &rig::Tangents::up, false, kVerticalSignHint},
 }};
 
-// A table being read and its name in messages: "" for the document's root, "left" for [left].
-struct Scope {
-    const toml::table& table;
-    std::string name;
-
-    std::string qualified(std::string_view key) const {
-        return name.empty() ? std::string(key) : name + "." + std::string(key);
-    }
-};
-
 std::string quoted(std::string_view key) {
     return "'" + std::string(key) + "'";
-}
-
-// Unknown keys are refused rather than ignored: a misspelt `tan_lft` would otherwise leave the
-// real key missing at best, or silently keep a default at worst.
-void report_unknown_keys(const Scope& scope, std::span<const std::string_view> known,
-                         TomlProblems& problems) {
-    for (const auto& [key, node] : scope.table) {
-        const std::string_view name = key.str();
-        if (std::ranges::find(known, name) != known.end()) continue;
-        const std::string_view closest = closest_match(name, known);
-        std::string message = "unknown key " + quoted(scope.qualified(name));
-        if (!closest.empty()) {
-            message += " (did you mean " + quoted(scope.qualified(closest)) + "?)";
-        } else {
-            message += " (known keys" + (scope.name.empty() ? "" : " in [" + scope.name + "]") +
-                       ": " + join(known) + ")";
-        }
-        problems.add(key.source(), message);
-    }
-}
-
-const toml::node* find_required(const Scope& scope, std::string_view key, TomlProblems& problems) {
-    const toml::node* node = scope.table.get(key);
-    if (node == nullptr) {
-        // A key missing inside [left] is reported at the [left] header. The root's region is
-        // line 1, which would point at whatever happens to be there, so it gets no line.
-        const std::string message = "missing required key " + quoted(scope.qualified(key));
-        if (scope.name.empty()) {
-            problems.add(message);
-        } else {
-            problems.add(scope.table.source(), message);
-        }
-    }
-    return node;
-}
-
-void report_wrong_type(const toml::node& node, std::string_view qualified_key,
-                       std::string_view expected, TomlProblems& problems) {
-    problems.add(node.source(), "key " + quoted(qualified_key) + " must be " +
-                                    std::string(expected) + ", but is " +
-                                    std::string(toml_type_phrase(node.type())));
 }
 
 // Integers are accepted where a real number is expected: `tan_up = 1` means 1.0.
@@ -126,8 +76,8 @@ std::optional<double> read_finite_number(const toml::node& node, std::string_vie
     return value;
 }
 
-std::optional<std::string> read_name(const Scope& root, TomlProblems& problems) {
-    const toml::node* node = find_required(root, "name", problems);
+std::optional<std::string> read_name(const TomlScope& root, TomlProblems& problems) {
+    const toml::node* node = find_required(root, "name", "a string", problems);
     if (node == nullptr) return std::nullopt;
     const auto* text = node->as_string();
     if (text == nullptr) {
@@ -141,8 +91,8 @@ std::optional<std::string> read_name(const Scope& root, TomlProblems& problems) 
     return text->get();
 }
 
-std::optional<double> read_ipd(const Scope& root, TomlProblems& problems) {
-    const toml::node* node = find_required(root, "ipd", problems);
+std::optional<double> read_ipd(const TomlScope& root, TomlProblems& problems) {
+    const toml::node* node = find_required(root, "ipd", "a number of metres", problems);
     if (node == nullptr) return std::nullopt;
     const std::optional<double> ipd = read_finite_number(*node, "ipd", problems);
     if (!ipd) return std::nullopt;
@@ -157,8 +107,9 @@ std::optional<double> read_ipd(const Scope& root, TomlProblems& problems) {
     return ipd;
 }
 
-std::optional<int> read_pixels(const Scope& root, std::string_view key, TomlProblems& problems) {
-    const toml::node* node = find_required(root, key, problems);
+std::optional<int> read_pixels(const TomlScope& root, std::string_view key,
+                               TomlProblems& problems) {
+    const toml::node* node = find_required(root, key, "an integer number of pixels", problems);
     if (node == nullptr) return std::nullopt;
     const auto* integer = node->as_integer();
     if (integer == nullptr) {
@@ -175,9 +126,9 @@ std::optional<int> read_pixels(const Scope& root, std::string_view key, TomlProb
     return static_cast<int>(pixels);
 }
 
-std::optional<double> read_tangent(const Scope& eye, const TangentRule& rule,
+std::optional<double> read_tangent(const TomlScope& eye, const TangentRule& rule,
                                    TomlProblems& problems) {
-    const toml::node* node = find_required(eye, rule.key, problems);
+    const toml::node* node = find_required(eye, rule.key, "a number", problems);
     if (node == nullptr) return std::nullopt;
     const std::string key = eye.qualified(rule.key);
     const std::optional<double> tangent = read_finite_number(*node, key, problems);
@@ -203,7 +154,7 @@ std::optional<double> read_tangent(const Scope& eye, const TangentRule& rule,
 // cant_deg (a per-eye yaw for canted displays, e.g. Pimax, Valve Index) is recognised so that
 // such a profile is refused with a reason instead of an "unknown key", and so that the rig's
 // parallel-eye assumption is never silently wrong.
-void refuse_canted_display(const Scope& eye, TomlProblems& problems) {
+void refuse_canted_display(const TomlScope& eye, TomlProblems& problems) {
     const toml::node* node = eye.table.get("cant_deg");
     if (node == nullptr) return;
     const std::string key = eye.qualified("cant_deg");
@@ -215,9 +166,9 @@ void refuse_canted_display(const Scope& eye, TomlProblems& problems) {
     }
 }
 
-std::optional<rig::Tangents> read_eye(const Scope& root, std::string_view eye_name,
+std::optional<rig::Tangents> read_eye(const TomlScope& root, std::string_view eye_name,
                                       TomlProblems& problems) {
-    const toml::node* node = find_required(root, eye_name, problems);
+    const toml::node* node = find_required(root, eye_name, "a table of four tangents", problems);
     if (node == nullptr) return std::nullopt;
     const toml::table* table = node->as_table();
     if (table == nullptr) {
@@ -227,7 +178,7 @@ std::optional<rig::Tangents> read_eye(const Scope& root, std::string_view eye_na
             problems);
         return std::nullopt;
     }
-    const Scope eye{*table, std::string(eye_name)};
+    const TomlScope eye{*table, std::string(eye_name)};
     report_unknown_keys(eye, kEyeKeys, problems);
     refuse_canted_display(eye, problems);
     rig::Tangents tangents;
@@ -244,26 +195,6 @@ std::optional<rig::Tangents> read_eye(const Scope& root, std::string_view eye_na
     return tangents;
 }
 
-Error syntax_error(const toml::parse_error& error, std::string_view source_name) {
-    TomlProblems problems(source_name);
-    problems.add(error.source(), "TOML syntax error: " + std::string(error.description()));
-    return problems.error();
-}
-
-Result<toml::table> parse_toml(std::string_view text, std::string_view source_name) {
-#if TOML_EXCEPTIONS
-    try {
-        return toml::parse(text, source_name);
-    } catch (const toml::parse_error& error) {
-        return syntax_error(error, source_name);
-    }
-#else
-    toml::parse_result result = toml::parse(text, source_name);
-    if (!result) return syntax_error(result.error(), source_name);
-    return std::move(result).table();
-#endif
-}
-
 }  // namespace
 
 Result<HmdProfile> parse_hmd_profile(std::string_view toml_text, std::string_view source_name) {
@@ -272,7 +203,7 @@ Result<HmdProfile> parse_hmd_profile(std::string_view toml_text, std::string_vie
 
     // Every reader records its problems and goes on, so the user sees all of them at once.
     TomlProblems problems(source_name);
-    const Scope root{*document, ""};
+    const TomlScope root{*document, ""};
     report_unknown_keys(root, kTopLevelKeys, problems);
     std::optional<std::string> name = read_name(root, problems);
     const std::optional<double> ipd = read_ipd(root, problems);

@@ -21,8 +21,9 @@
 
 #include <toml++/toml.h>
 
-#include "study/condition.h"
+#include "common/toml/toml_keys.h"
 #include "common/toml/toml_problems.h"
+#include "study/condition.h"
 
 namespace monoplane::study {
 namespace {
@@ -55,70 +56,12 @@ constexpr std::array<NamedValue<FirstSceneBalance>, 3> kFirstScenes = {{
     {"fixed", FirstSceneBalance::Fixed},
 }};
 
-// A table being read and its name in messages: "" for the document's root, "questionnaire" for
-// [questionnaire].
-struct Scope {
-    const toml::table& table;
-    std::string name;
-
-    std::string qualified(std::string_view key) const {
-        return name.empty() ? std::string(key) : name + "." + std::string(key);
-    }
-};
-
-// Every message starts with the key, so a user can find it even where the line is ambiguous.
-std::string about(std::string_view qualified_key) {
-    return "key '" + std::string(qualified_key) + "': ";
-}
-
 std::string in_quotes(std::string_view text) {
     return "'" + std::string(text) + "'";
 }
 
 std::string known_scenes() {
     return join(study_scene_names());
-}
-
-// Unknown keys are refused rather than ignored: a misspelt `practise_trials` would otherwise
-// silently keep the default.
-void report_unknown_keys(const Scope& scope, std::span<const std::string_view> known,
-                         TomlProblems& problems) {
-    for (const auto& [key, node] : scope.table) {
-        const std::string_view name = key.str();
-        if (std::ranges::find(known, name) != known.end()) continue;
-        std::string message = about(scope.qualified(name)) + "unknown key";
-        const std::string_view closest = closest_match(name, known);
-        if (!closest.empty()) {
-            message += " (did you mean " + in_quotes(scope.qualified(closest)) + "?)";
-        } else {
-            message += " (known keys" + (scope.name.empty() ? "" : " in [" + scope.name + "]") +
-                       ": " + join(known) + ")";
-        }
-        problems.add(key.source(), message);
-    }
-}
-
-const toml::node* find_required(const Scope& scope, std::string_view key, std::string_view expected,
-                                TomlProblems& problems) {
-    const toml::node* node = scope.table.get(key);
-    if (node == nullptr) {
-        // The root's region is line 1, which would point at whatever happens to be there, so a
-        // key missing from the root gets no line; one missing from a table gets its header's.
-        const std::string message =
-            about(scope.qualified(key)) + "required key is missing (" + std::string(expected) + ")";
-        if (scope.name.empty()) {
-            problems.add(message);
-        } else {
-            problems.add(scope.table.source(), message);
-        }
-    }
-    return node;
-}
-
-void report_wrong_type(const toml::node& node, std::string_view qualified_key,
-                       std::string_view expected, TomlProblems& problems) {
-    problems.add(node.source(), about(qualified_key) + "must be " + std::string(expected) +
-                                    ", but is " + std::string(toml_type_phrase(node.type())));
 }
 
 bool is_blank(std::string_view text) {
@@ -154,7 +97,7 @@ std::optional<std::int64_t> read_integer_in(const toml::node& node, std::string_
         return std::nullopt;
     }
     if (integer->get() < low || integer->get() > high) {
-        problems.add(node.source(), about(key) + std::to_string(integer->get()) +
+        problems.add(node.source(), toml_key_prefix(key) + std::to_string(integer->get()) +
                                         " is outside the allowed range " + range);
         return std::nullopt;
     }
@@ -172,7 +115,7 @@ const toml::array* read_nonempty_array(const toml::node& node, std::string_view 
     }
     if (array->empty()) {
         problems.add(node.source(),
-                     about(key) + "must not be empty; expected " + std::string(expected));
+                     toml_key_prefix(key) + "must not be empty; expected " + std::string(expected));
         return nullptr;
     }
     return array;
@@ -195,7 +138,8 @@ std::vector<StringElement> read_strings(const toml::array& array, std::string_vi
         if (const auto* text = element.as_string()) {
             strings.push_back({text->get(), &element, i + 1});
         } else {
-            problems.add(element.source(), about(key) + "element " + std::to_string(i + 1) +
+            problems.add(element.source(), toml_key_prefix(key) + "element " +
+                                               std::to_string(i + 1) +
                                                " must be a string, but is " +
                                                std::string(toml_type_phrase(element.type())));
         }
@@ -215,28 +159,28 @@ std::optional<T> read_choice(const toml::node& node, std::string_view key,
     for (const NamedValue<T>& choice : choices) {
         if (choice.name == *text) return choice.value;
     }
-    std::string message =
-        about(key) + "unknown value " + in_quotes(*text) + " (allowed: " + join(names) + ")";
+    std::string message = toml_key_prefix(key) + "unknown value " + in_quotes(*text) +
+                          " (allowed: " + join(names) + ")";
     const std::string_view closest = closest_match(*text, names);
     if (!closest.empty()) message += "; did you mean " + in_quotes(closest) + "?";
     problems.add(node.source(), message);
     return std::nullopt;
 }
 
-void read_name(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+void read_name(const TomlScope& root, Protocol& protocol, TomlProblems& problems) {
     constexpr std::string_view kExpected = "a non-empty string";
     const toml::node* node = find_required(root, "name", kExpected, problems);
     if (node == nullptr) return;
     std::optional<std::string> name = read_string(*node, "name", kExpected, problems);
     if (!name) return;
     if (is_blank(*name)) {
-        problems.add(node->source(), about("name") + "must not be empty");
+        problems.add(node->source(), toml_key_prefix("name") + "must not be empty");
         return;
     }
     protocol.name = std::move(*name);
 }
 
-void read_scenes(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+void read_scenes(const TomlScope& root, Protocol& protocol, TomlProblems& problems) {
     const std::string expected = "an array of scene names (known scenes: " + known_scenes() + ")";
     const toml::node* node = find_required(root, "scenes", expected, problems);
     if (node == nullptr) return;
@@ -245,14 +189,14 @@ void read_scenes(const Scope& root, Protocol& protocol, TomlProblems& problems) 
     const std::span<const std::string_view> known = study_scene_names();
     for (auto& [scene, element, position] : read_strings(*array, "scenes", problems)) {
         if (std::ranges::find(known, scene) == known.end()) {
-            std::string message = about("scenes") + "unknown scene " + in_quotes(scene) +
+            std::string message = toml_key_prefix("scenes") + "unknown scene " + in_quotes(scene) +
                                   " (known scenes: " + known_scenes() + ")";
             const std::string_view closest = closest_match(scene, known);
             if (!closest.empty()) message += "; did you mean " + in_quotes(closest) + "?";
             problems.add(element->source(), message);
         } else if (std::ranges::find(protocol.scenes, scene) != protocol.scenes.end()) {
             // A scene listed twice would double its block and unbalance the Latin square.
-            problems.add(element->source(), about("scenes") + "duplicate scene " +
+            problems.add(element->source(), toml_key_prefix("scenes") + "duplicate scene " +
                                                 in_quotes(scene) + "; list each scene once");
         } else {
             protocol.scenes.push_back(std::move(scene));
@@ -261,7 +205,7 @@ void read_scenes(const Scope& root, Protocol& protocol, TomlProblems& problems) 
 }
 
 // Near and far come first: the mono planes are checked against them.
-bool read_clip_range(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+bool read_clip_range(const TomlScope& root, Protocol& protocol, TomlProblems& problems) {
     constexpr std::string_view kExpected = "a number of metres";
     const toml::node* near_node = root.table.get("near");
     const toml::node* far_node = root.table.get("far");
@@ -273,9 +217,9 @@ bool read_clip_range(const Scope& root, Protocol& protocol, TomlProblems& proble
         if (!value) {
             valid = false;
         } else if (!std::isfinite(*value) || *value <= 0.0) {
-            problems.add(
-                node->source(),
-                about(key) + "must be a finite number of metres > 0, got " + format_number(*value));
+            problems.add(node->source(), toml_key_prefix(key) +
+                                             "must be a finite number of metres > 0, got " +
+                                             format_number(*value));
             valid = false;
         } else {
             protocol.*field = *value;
@@ -283,7 +227,7 @@ bool read_clip_range(const Scope& root, Protocol& protocol, TomlProblems& proble
     }
     if (valid && !(protocol.near < protocol.far)) {
         const toml::node* node = far_node != nullptr ? far_node : near_node;
-        problems.add(node->source(), about(node == far_node ? "far" : "near") +
+        problems.add(node->source(), toml_key_prefix(node == far_node ? "far" : "near") +
                                          "the clip range needs near < far, got near = " +
                                          format_number(protocol.near) +
                                          " m, far = " + format_number(protocol.far) + " m");
@@ -292,7 +236,7 @@ bool read_clip_range(const Scope& root, Protocol& protocol, TomlProblems& proble
     return valid;
 }
 
-void read_mono_planes(const Scope& root, bool clip_range_valid, Protocol& protocol,
+void read_mono_planes(const TomlScope& root, bool clip_range_valid, Protocol& protocol,
                       TomlProblems& problems) {
     constexpr std::string_view kExpected = "an array of distances in metres, e.g. [3, 8]";
     const toml::node* node = find_required(root, "mono_planes", kExpected, problems);
@@ -308,21 +252,22 @@ void read_mono_planes(const Scope& root, bool clip_range_valid, Protocol& protoc
         } else if (const auto* real = element.as_floating_point()) {
             m = real->get();
         } else {
-            problems.add(element.source(), about("mono_planes") + position +
+            problems.add(element.source(), toml_key_prefix("mono_planes") + position +
                                                " must be a number of metres, but is " +
                                                std::string(toml_type_phrase(element.type())));
         }
         if (!m) continue;
         const std::string value = format_number(*m);
         if (!std::isfinite(*m) || *m <= 0.0) {
-            problems.add(element.source(), about("mono_planes") + position + " = " + value +
+            problems.add(element.source(), toml_key_prefix("mono_planes") + position + " = " +
+                                               value +
                                                " must be a finite, positive distance in metres");
             continue;
         }
         // At or beyond either end of the clip range hybrid rendering degenerates (section 3).
         if (clip_range_valid && !(protocol.near < *m && *m < protocol.far)) {
-            problems.add(element.source(), about("mono_planes") + position + " = " + value +
-                                               " m is not strictly inside (near, far) = (" +
+            problems.add(element.source(), toml_key_prefix("mono_planes") + position + " = " +
+                                               value + " m is not strictly inside (near, far) = (" +
                                                format_number(protocol.near) + ", " +
                                                format_number(protocol.far) + ") m");
             continue;
@@ -330,15 +275,15 @@ void read_mono_planes(const Scope& root, bool clip_range_valid, Protocol& protoc
         const auto previous = std::ranges::find(protocol.mono_planes, *m);
         if (previous != protocol.mono_planes.end()) {
             // Each distance is one trial per scene; a repeat is almost always a typo.
-            problems.add(element.source(), about("mono_planes") + "duplicate distance " + value +
-                                               " m; list each distance once");
+            problems.add(element.source(), toml_key_prefix("mono_planes") + "duplicate distance " +
+                                               value + " m; list each distance once");
             continue;
         }
         protocol.mono_planes.push_back(*m);
     }
 }
 
-void read_alternatives(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+void read_alternatives(const TomlScope& root, Protocol& protocol, TomlProblems& problems) {
     const std::string expected =
         "an array of two render modes, the reference first, e.g. [\"stereo\", \"hybrid\"]";
     const toml::node* node = find_required(root, "alternatives", expected, problems);
@@ -347,7 +292,8 @@ void read_alternatives(const Scope& root, Protocol& protocol, TomlProblems& prob
     if (array == nullptr) return;
     if (array->size() != 2) {
         // 2AFC: exactly two alternatives per trial.
-        problems.add(node->source(), about("alternatives") + "must list exactly two render " +
+        problems.add(node->source(), toml_key_prefix("alternatives") +
+                                         "must list exactly two render " +
                                          "modes (a two-alternative forced choice), but lists " +
                                          std::to_string(array->size()));
         return;
@@ -358,12 +304,12 @@ void read_alternatives(const Scope& root, Protocol& protocol, TomlProblems& prob
         if (mode) {
             modes.push_back(*mode);
         } else {
-            problems.add(element->source(), about("alternatives") + mode.error().message);
+            problems.add(element->source(), toml_key_prefix("alternatives") + mode.error().message);
         }
     }
     if (modes.size() != 2) return;
     if (modes[0] == modes[1]) {
-        problems.add(node->source(), about("alternatives") + "both alternatives are " +
+        problems.add(node->source(), toml_key_prefix("alternatives") + "both alternatives are " +
                                          in_quotes(render_mode_name(modes[0])) +
                                          "; a trial must compare two different render modes");
         return;
@@ -371,7 +317,7 @@ void read_alternatives(const Scope& root, Protocol& protocol, TomlProblems& prob
     protocol.alternatives = {modes[0], modes[1]};
 }
 
-void read_session_options(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+void read_session_options(const TomlScope& root, Protocol& protocol, TomlProblems& problems) {
     if (const toml::node* node = root.table.get("order")) {
         if (auto order = read_choice(*node, "order", kOrders, problems)) protocol.order = *order;
     }
@@ -395,7 +341,7 @@ void read_session_options(const Scope& root, Protocol& protocol, TomlProblems& p
     }
 }
 
-void read_questionnaire(const Scope& root, Protocol& protocol, TomlProblems& problems) {
+void read_questionnaire(const TomlScope& root, Protocol& protocol, TomlProblems& problems) {
     const toml::node* node = root.table.get("questionnaire");
     if (node == nullptr) return;  // no questionnaire: the session ends after the last trial
     const toml::table* table = node->as_table();
@@ -405,7 +351,7 @@ void read_questionnaire(const Scope& root, Protocol& protocol, TomlProblems& pro
                           problems);
         return;
     }
-    const Scope scope{*table, "questionnaire"};
+    const TomlScope scope{*table, "questionnaire"};
     report_unknown_keys(scope, kQuestionnaireKeys, problems);
     if (const toml::node* points = table->get("scale_points")) {
         if (auto count = read_integer_in(*points, "questionnaire.scale_points", kMinScalePoints,
@@ -421,7 +367,7 @@ void read_questionnaire(const Scope& root, Protocol& protocol, TomlProblems& pro
     if (items == nullptr) return;
     for (auto& [item, element, position] : read_strings(*items, "questionnaire.items", problems)) {
         if (is_blank(item)) {
-            problems.add(element->source(), about("questionnaire.items") + "item " +
+            problems.add(element->source(), toml_key_prefix("questionnaire.items") + "item " +
                                                 std::to_string(position) +
                                                 " is empty; each item is a statement to rate");
             continue;
@@ -464,7 +410,7 @@ Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view sou
 
     TomlProblems problems(source_name);
     Protocol protocol;
-    const Scope root{*document, ""};
+    const TomlScope root{*document, ""};
     report_unknown_keys(root, kTopLevelKeys, problems);
     read_name(root, protocol, problems);
     read_scenes(root, protocol, problems);

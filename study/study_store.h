@@ -34,7 +34,7 @@ struct SessionInfo {
     std::string runtime;  // "none", "simulated", or the OpenXR runtime's name
     std::string device;
     std::string observer;  // simulated observer's name, "" for a person
-    std::string started_utc;  // ISO 8601
+    std::string started_utc;  // ISO 8601 UTC; empty: begin_session stamps the current time
     SessionStatus status = SessionStatus::Running;
 };
 

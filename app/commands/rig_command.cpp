@@ -43,12 +43,8 @@ struct RigOptions {
 };
 
 rig::RigInputs rig_inputs(const RigOptions& o, const hmd::HmdProfile& profile, double m) {
-    rig::RigInputs in;
-    in.eyes = {profile.left, profile.right};
-    in.eye_width = profile.width;
-    in.eye_height = profile.height;
+    rig::RigInputs in = hmd::rig_inputs(profile, m);
     in.ipd = o.ipd.value_or(profile.ipd);
-    in.mono_plane = m;
     in.near = o.near;
     in.far = o.far;
     in.overlap_k = o.overlap_k;

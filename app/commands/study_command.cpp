@@ -3,7 +3,6 @@
 // in well under a second. The headsets (simulated OpenXR runtime, real OpenXR) arrive with the
 // headset issue.
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
 #include <iostream>
 #include <random>
@@ -36,15 +35,6 @@ struct StudyOptions {
     std::string out;
 };
 
-std::string utc_now_iso8601() {
-    const std::time_t now = std::time(nullptr);
-    std::tm utc{};
-    gmtime_r(&now, &utc);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-    return text;
-}
-
 void require_headless(const std::string& headset) {
     if (headset == "none") return;
     if (headset == "simulated" || headset == "openxr") {
@@ -65,12 +55,7 @@ std::function<double(const study::ScheduledTrial&)> error_model(const hmd::HmdPr
                                   trial.label1_mode == study::RenderMode::HybridFarfield ||
                                   trial.label2_mode == study::RenderMode::HybridFarfield;
         if (!hybrid_shown) return 0.0;
-        rig::RigInputs inputs;
-        inputs.eyes = {hmd.left, hmd.right};
-        inputs.eye_width = hmd.width;
-        inputs.eye_height = hmd.height;
-        inputs.ipd = hmd.ipd;
-        inputs.mono_plane = trial.mono_plane;
+        rig::RigInputs inputs = hmd::rig_inputs(hmd, trial.mono_plane);
         inputs.near = protocol.near;
         inputs.far = protocol.far;
         const auto rig = rig::build_rig(inputs);
@@ -126,7 +111,7 @@ void run_study(const StudyOptions& o) {
     info.runtime = o.headset;
     info.device = "none";
     info.observer = o.observer;
-    info.started_utc = utc_now_iso8601();
+    // started_utc is left empty: the store stamps the session's start when it writes it.
     const std::int64_t session_id = store->begin_session(info, schedule).value_or_throw();
     std::cerr << "session " << session_id << ": participant " << o.participant << " (index "
               << participant_index << "), protocol " << protocol.name << ", seed " << seed << ", "

@@ -228,9 +228,9 @@ TEST_P(MalformedProfile, IsRefusedNamingSourceAndKey) {
 
 const MalformedCase kMalformedCases[] = {
     // Missing keys, at the top level and inside an eye.
-    {"missing name", "name = \"test headset\"\n", "", {"test.toml: missing required key 'name'"}},
-    {"missing ipd", "ipd = 0.064\n", "", {"test.toml: missing required key 'ipd'"}},
-    {"missing width", "width = 1344\n", "", {"test.toml: missing required key 'width'"}},
+    {"missing name", "name = \"test headset\"\n", "", {"test.toml: key 'name': required key is missing"}},
+    {"missing ipd", "ipd = 0.064\n", "", {"test.toml: key 'ipd': required key is missing"}},
+    {"missing width", "width = 1344\n", "", {"test.toml: key 'width': required key is missing"}},
     {"missing tangent", "tan_up = 1.472458\n", "", {"test.toml:12:", "'right.tan_up'"}},
     {"missing eye table", "[right]", "[other]", {"'right'", "'other'"}},
     // Wrong types.
@@ -250,12 +250,12 @@ const MalformedCase kMalformedCases[] = {
     {"typo in eye",
      "tan_left = -1.391937",
      "tan_lft = -1.391937",
-     {"test.toml:7:", "unknown key 'left.tan_lft'", "did you mean 'left.tan_left'"}},
-    {"typo at top", "ipd = 0.064", "ipd = 0.064\nwidht = 10", {"unknown key 'widht'"}},
+     {"test.toml:7:", "key 'left.tan_lft': unknown key", "did you mean 'left.tan_left'"}},
+    {"typo at top", "ipd = 0.064", "ipd = 0.064\nwidht = 10", {"key 'widht': unknown key"}},
     {"foreign key",
      "ipd = 0.064",
      "ipd = 0.064\nrefresh_hz = 90",
-     {"unknown key 'refresh_hz'", "known keys"}},
+     {"key 'refresh_hz': unknown key", "known keys"}},
     // Non-finite numbers.
     {"nan ipd", "ipd = 0.064", "ipd = nan", {"'ipd'", "finite"}},
     {"infinite tangent",
