@@ -28,9 +28,10 @@ ChunkBuilder::ChunkBuilder(std::uint32_t target_max_triangles)
     assert(target_max_triangles_ > 0);
 }
 
-void ChunkBuilder::begin_piece() {
+void ChunkBuilder::begin_piece(std::uint32_t flags) {
     close_piece();
     Piece piece;
+    piece.flags = flags;
     piece.first_vertex = static_cast<std::uint32_t>(vertices_.size());
     piece.first_index = static_cast<std::uint32_t>(indices_.size());
     pieces_.push_back(piece);
@@ -134,6 +135,7 @@ void ChunkBuilder::emit_chunk(const std::vector<std::uint32_t>& group, Scene& sc
     }
     chunk.index_count = static_cast<std::uint32_t>(scene.indices.size()) - chunk.first_index;
     chunk.bounds = bounds_of(scene.vertices.data() + chunk.vertex_offset, chunk_vertices);
+    chunk.flags = pieces_[group.front()].flags;
     scene.chunks.push_back(chunk);
 }
 
@@ -141,8 +143,19 @@ void ChunkBuilder::build_into(Scene& scene) {
     close_piece();
     std::vector<std::uint32_t> order(pieces_.size());
     std::iota(order.begin(), order.end(), 0u);
+    // Pieces with different routing flags never share a chunk: group them by flags first.
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return pieces_[a].flags < pieces_[b].flags;
+    });
     std::vector<std::vector<std::uint32_t>> groups;
-    if (!order.empty()) split(order, 0, order.size(), groups);
+    for (std::size_t begin = 0; begin < order.size();) {
+        std::size_t end = begin;
+        while (end < order.size() && pieces_[order[end]].flags == pieces_[order[begin]].flags) {
+            ++end;
+        }
+        split(order, begin, end, groups);
+        begin = end;
+    }
 
     scene.vertices.clear();
     scene.indices.clear();

@@ -19,8 +19,9 @@ class ChunkBuilder {
     explicit ChunkBuilder(std::uint32_t target_max_triangles);
 
     // Starts a piece: the vertices and triangles added until the next begin_piece() stay together
-    // in one chunk. A piece has at most kMaxChunkTriangles triangles.
-    void begin_piece();
+    // in one chunk. A piece has at most kMaxChunkTriangles triangles. Chunks group only pieces
+    // with the same ChunkFlags.
+    void begin_piece(std::uint32_t flags = kChunkNone);
     // Returns the vertex's index within the current piece.
     std::uint32_t add_vertex(const Vertex& vertex);
     // Indices within the current piece. The triangle is wound counter-clockwise about the mean of
@@ -44,6 +45,7 @@ class ChunkBuilder {
         std::uint32_t first_index = 0;
         std::uint32_t index_count = 0;
         glm::vec3 centre{0.0f};
+        std::uint32_t flags = kChunkNone;
     };
     void close_piece();
     void split(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end,

@@ -20,8 +20,11 @@ const T& for_detail(const PerDetail<T>& values, Detail detail) {
 }
 
 // Test scenes are small, so their chunks are too: a few dozen chunks keep culling testable.
+// Larger scenes get chunks of about a thousand triangles: hybrid rendering pays only when few
+// chunks straddle the mono plane (papers/000 Sect. 4.4 and 7: "a reasonably grained
+// subdivision"), and the GPU culling makes many chunks cheap (one thread each, indirect draws).
 inline std::uint32_t chunk_triangle_target(Detail detail) {
-    return detail == Detail::Test ? 2048u : 4096u;
+    return detail == Detail::Test ? 2048u : 1024u;
 }
 
 }  // namespace monoplane::scenes

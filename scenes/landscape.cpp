@@ -38,6 +38,9 @@ const PerDetail<LandscapeParameters> kParameters = {{
 }};
 
 constexpr float kTerrainRadius = 700.0f;
+// Terrain blocks beginning this far from the centre are forced to the mono camera (the polar
+// grid's blocks begin at about 0.5, 2.2, 10, 45 and 200 m).
+constexpr float kForceMonoTerrainRadius = 40.0f;
 constexpr float kFarthestObject = 450.0f;
 
 enum Stream : std::uint64_t { kRockPlacement = 1, kRockShape, kTreePlacement, kTreeShape };
@@ -221,6 +224,9 @@ Scene generate_landscape(Detail detail, std::uint64_t seed) {
     grid.sectors = parameters.terrain_sectors;
     grid.inner_radius = 0.5f;
     grid.outer_radius = kTerrainRadius;
+    // The terrain's outer blocks span a quarter circle each: their boxes reach back to the viewer
+    // although their pixels are far (papers/003's far-terrain case); force them to C.
+    grid.force_mono_from_radius = kForceMonoTerrainRadius;
     const std::uint32_t ground_material = pack_material({0.9f, 0.03f, 1});
     add_polar_grid(
         builder, grid, [&](glm::vec2 p) { return terrain.height(p); },
@@ -235,6 +241,7 @@ Scene generate_landscape(Detail detail, std::uint64_t seed) {
     scene.detail = detail;
     scene.seed = seed;
     builder.build_into(scene);
+    scene.routing.force_mono_outside_radius = kForceMonoTerrainRadius;
     const auto standing = [&](double x, double z, double eye_height) {
         return glm::dvec3(
             x, terrain.height({static_cast<float>(x), static_cast<float>(z)}) + eye_height, z);

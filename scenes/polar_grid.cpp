@@ -104,7 +104,10 @@ std::size_t add_polar_grid(ChunkBuilder& builder, const PolarGrid& grid,
         for (int first = 0; first < sectors; first += grid.block_sectors) {
             const int last = std::min(sectors, first + grid.block_sectors);
             const auto columns = static_cast<std::uint32_t>(last - first + 1);
-            builder.begin_piece();
+            const bool force_mono =
+                grid.force_mono_from_radius > 0.0f &&
+                radii[static_cast<std::size_t>(ring_first)] >= grid.force_mono_from_radius;
+            builder.begin_piece(force_mono ? kChunkForceMono : kChunkNone);
             for (int i = ring_first; i <= ring_last; ++i) {
                 for (int s = first; s <= last; ++s) builder.add_vertex(point(i, s));
             }

@@ -19,9 +19,13 @@ struct PolarGrid {
     glm::vec2 centre{0.0f};     // (x, z)
     float inner_radius = 0.5f;  // the first ring; inside it a fan around the centre
     float outer_radius = 600.0f;
-    int sectors = 64;        // around the full circle
-    int block_sectors = 16;  // a piece spans this many sectors ...
-    int block_rings = 16;    // ... and this many rings
+    int sectors = 64;  // around the full circle
+    // A piece spans this many sectors and rings (even, so the diagonals alternate across pieces):
+    // small pieces (256 triangles) keep the ground's chunk boxes tight, which culling needs.
+    int block_sectors = 16;
+    int block_rings = 8;
+    // Pieces whose inner ring lies at or beyond this radius are flagged kChunkForceMono (0: none).
+    float force_mono_from_radius = 0.0f;
 };
 
 // Ring radii from inner to outer: r[i+1] = r[i] * (1 + 2 pi / sectors), the last one clamped.

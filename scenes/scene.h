@@ -48,9 +48,22 @@ struct Aabb {
     glm::vec3 max{0.0f};
 };
 
-// Per-chunk routing hints for hybrid rendering (used by the culling issue): the sky dome and
-// far terrain may be forced to the mono camera, near props to the stereo cameras.
+// Per-chunk routing hints for hybrid rendering (papers/003, "Force Mono"): a chunk whose bounds
+// reach into the near region although its pixels never do (far terrain with a large box) may be
+// forced to the mono camera C; a chunk that never reaches beyond the mono plane may be forced to
+// the eyes. ChunkRouting says where flagged geometry lies, so the renderer honours a flag only
+// for mono planes where it cannot remove visible pixels (the sky is always C's in hybrid modes).
 enum ChunkFlags : std::uint32_t { kChunkNone = 0, kChunkForceMono = 1, kChunkForceStereo = 2 };
+
+struct ChunkRouting {
+    // kChunkForceMono chunks lie outside the vertical cylinder of this radius about the world's
+    // y axis (0: no chunk is flagged).
+    float force_mono_outside_radius = 0.0f;
+    // kChunkForceStereo chunks lie inside the sphere of this radius about force_stereo_centre
+    // (0: no chunk is flagged).
+    float force_stereo_inside_radius = 0.0f;
+    glm::vec3 force_stereo_centre{0.0f};
+};
 
 // A contiguous index range with its bounds: the unit of culling and of indirect draws.
 struct Chunk {
@@ -89,6 +102,7 @@ struct Scene {
     Aabb bounds;
     std::vector<Viewpoint> viewpoints;  // the first is "default"
     Lighting lighting;
+    ChunkRouting routing;
 
     std::size_t triangle_count() const { return indices.size() / 3; }
     // The viewpoint with this name, or nullptr.

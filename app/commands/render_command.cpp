@@ -24,6 +24,7 @@ struct RenderOptions {
     double overlap_k = 2.0;
     double blend_band = 0.3;
     std::string debug_view = "none";
+    std::string mono_culling = "occlusion-cull";
     std::string hmd = "vive";
     std::optional<double> ipd;
     int width = 0;
@@ -58,6 +59,7 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
     j.value("view", o.view).value("hmd", profile.name).value("ipd", o.ipd.value_or(profile.ipd));
     j.value("width", width).value("height", height);
     if (o.mode != "stereo") j.value("debug_view", o.debug_view);
+    if (o.mode == "hybrid") j.value("variant", o.mono_culling);
     if (rig) {
         j.value("mono_plane", rig->inputs.mono_plane).value("mono_skipped", rig->mono_skipped);
         j.value("overlap", rig->overlap).value("max_error_px", rig->max_error_px);
@@ -87,8 +89,14 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
         j.value("clipping_primitives", v.clipping_primitives);
         j.value("vertex_invocations", v.vertex_invocations);
         j.value("fragment_invocations", v.fragment_invocations);
+        j.value("draws", static_cast<std::uint64_t>(v.draws));
+        if (v.view == "mono") {
+            j.value("draws_before_occlusion_culling",
+                    static_cast<std::uint64_t>(v.draws_before_occlusion_culling));
+        }
         j.end_object();
-        primitives += v.clipping_invocations;
+        // Scene primitives only: the composites' full-screen triangles are not scene work.
+        if (v.view.find('.') == std::string::npos) primitives += v.clipping_invocations;
         fragments += v.fragment_invocations;
     }
     j.end_object();
@@ -123,6 +131,11 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     }
     if (*mode != modes::Mode::kStereo && !o.mono_plane) {
         throw UserError("--mode " + o.mode + " needs --mono-plane M (metres)");
+    }
+    const auto mono_culling = modes::parse_mono_culling(o.mono_culling);
+    if (!mono_culling) {
+        throw UserError("--variant " + o.mono_culling +
+                        " is not one of no-opt, discard, occlusion-cull");
     }
     const auto debug_view = modes::parse_debug_view(o.debug_view);
     if (!debug_view) {
@@ -178,6 +191,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     inputs.overlap_k = o.overlap_k;
     inputs.view_blend_band = o.blend_band;
     inputs.debug = *debug_view;
+    inputs.mono_culling = *mono_culling;
 
     std::vector<profile::FrameStats> measured;
     const int total = o.warmup + o.frames;
@@ -233,6 +247,11 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
         ->capture_default_str();
     cmd->add_option("--debug-view", options->debug_view,
                     "Hybrid debug view: none, tint-mono, stereo-only or mono-only")
+        ->capture_default_str();
+    cmd->add_option("--variant", options->mono_culling,
+                    "hybrid: how the merged depth pyramid of both eyes saves C's work (papers/000 "
+                    "Sect. 5.1): no-opt, discard (C's hidden fragments) or occlusion-cull (also "
+                    "C's hidden chunks)")
         ->capture_default_str();
     cmd->add_option("--hmd", options->hmd,
                     "HMD profile: vive, vive-pro, symmetric-90, "

@@ -17,6 +17,8 @@
 
 #include "app/commands/commands.h"
 #include "app/commands/json_writer.h"
+#include "charts/line_chart.h"
+#include "charts/svg_writer.h"
 #include "hmd/profile.h"
 #include "renderer/rig/rig.h"
 
@@ -213,146 +215,45 @@ struct Fig2Series {
     double max_error_px = 0.0;  // the supremum, reached at infinite depth
 };
 
-std::string xml_escaped(std::string_view text) {
-    std::string out;
-    for (char ch : text) {
-        switch (ch) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += ch;
-        }
-    }
-    return out;
-}
-
-// A round step (1, 2 or 5 times a power of ten) giving about `ticks` intervals up to `top`.
-double nice_step(double top, int ticks) {
-    const double raw = top / ticks;
-    const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-    for (double factor : {1.0, 2.0, 5.0}) {
-        if (factor * decade >= raw) return factor * decade;
-    }
-    return 10.0 * decade;
-}
-
-std::string tick_label(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
 std::string fig2_svg(const std::vector<Fig2Series>& series, const hmd::HmdProfile& profile,
                      const rig::RigInputs& in) {
-    // Tableau 10: distinguishable and colour-blind-tolerable for up to ten lines.
-    static const char* const kColors[] = {"#4e79a7", "#f28e2b", "#e15759", "#76b7b2", "#59a14f",
-                                          "#edc948", "#b07aa1", "#ff9da7", "#9c755f", "#bab0ac"};
-    constexpr double kWidth = 960.0;
-    constexpr double kHeight = 580.0;
-    constexpr double kLeft = 80.0;
-    constexpr double kRight = 720.0;
-    constexpr double kTop = 90.0;
-    constexpr double kBottom = 510.0;
+    charts::LineChart chart;
+    chart.layout.width = 960.0;
+    chart.layout.height = 580.0;
+    chart.layout.margins = {80.0, 20.0, 90.0, 70.0};
+    chart.layout.legend_width = 220.0;
+    chart.text.title = "Largest pixel offset of hybrid vs stereo over depth";
+    chart.text.subtitle = profile.name + ": w = " + std::to_string(in.eye_width) +
+                          " px, IPD = " + fixed(in.ipd, 6) + " m, k = " + fixed(in.overlap_k, 6);
+    chart.text.note =
+        "horizontal offset, largest over both eyes' fields (cf. Fink et al. 2019, Fig. 2 right); "
+        "monoplane rig --fig2";
 
+    // Depth from the decade at or below the nearest mono plane out to the far plane, where the
+    // error reaches its supremum.
     double depth_min = kInfinity;
-    double error_max = 0.0;
+    for (const Fig2Series& s : series) depth_min = std::min(depth_min, s.mono_plane);
+    chart.x_axis.label = "depth in front of the eyes (m, log scale)";
+    chart.x_axis.scale = charts::ScaleKind::log10;
+    chart.x_axis.min = std::pow(10.0, std::floor(std::log10(depth_min)));
+    chart.x_axis.max = in.far;
+    chart.y_axis.label = "largest horizontal offset (px)";
+    chart.y_axis.include_zero = true;
+    chart.y_axis.target_intervals = 6;
+
+    // One line per m; 200 samples each, too dense for markers.
     for (const Fig2Series& s : series) {
-        depth_min = std::min(depth_min, s.mono_plane);
-        for (double e : s.error_px) error_max = std::max(error_max, e);
-    }
-    const double log_min = std::floor(std::log10(depth_min));
-    const double log_max = std::log10(in.far);
-    const double y_step = nice_step(std::max(error_max, 1e-9), 6);
-    const double y_top = std::ceil(std::max(error_max, 1e-9) / y_step) * y_step;
-    auto x_of = [&](double depth) {
-        return kLeft + (std::log10(depth) - log_min) / (log_max - log_min) * (kRight - kLeft);
-    };
-    auto y_of = [&](double px) { return kBottom - px / y_top * (kBottom - kTop); };
-
-    std::ostringstream svg;
-    svg.precision(6);
-    svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\""
-        << kHeight << "\" viewBox=\"0 0 " << kWidth << " " << kHeight
-        << "\" font-family=\"Helvetica, Arial, sans-serif\" font-size=\"13\">\n";
-    svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    svg << "<text x=\"" << kWidth / 2 << "\" y=\"28\" text-anchor=\"middle\" font-size=\"17\" "
-        << "font-weight=\"bold\">Largest pixel offset of hybrid vs stereo over depth</text>\n";
-    svg << "<text x=\"" << kWidth / 2 << "\" y=\"50\" text-anchor=\"middle\">"
-        << xml_escaped(profile.name) << ": w = " << in.eye_width << " px, IPD = " << in.ipd
-        << " m, k = " << in.overlap_k << "</text>\n";
-    svg << "<text x=\"" << kWidth / 2 << "\" y=\"70\" text-anchor=\"middle\" fill=\"#555\" "
-        << "font-size=\"12\">horizontal offset, largest over both eyes' fields "
-        << "(cf. Fink et al. 2019, Fig. 2 right); monoplane rig --fig2</text>\n";
-
-    // Grid and ticks: decades labelled, 2..9 as light lines; pixel steps.
-    svg << "<g stroke=\"#e5e5e5\" stroke-width=\"1\">\n";
-    for (int decade = static_cast<int>(log_min); decade <= static_cast<int>(log_max); ++decade) {
-        for (int k = 1; k <= 9; ++k) {
-            const double depth = k * std::pow(10.0, decade);
-            if (depth < std::pow(10.0, log_min) || std::log10(depth) > log_max + 1e-12) continue;
-            const double x = x_of(depth);
-            svg << "<line x1=\"" << x << "\" y1=\"" << kTop << "\" x2=\"" << x << "\" y2=\""
-                << kBottom << "\"" << (k == 1 ? " stroke=\"#c8c8c8\"" : "") << "/>\n";
-        }
-    }
-    for (double px = y_step; px <= y_top + 1e-9; px += y_step) {
-        svg << "<line x1=\"" << kLeft << "\" y1=\"" << y_of(px) << "\" x2=\"" << kRight
-            << "\" y2=\"" << y_of(px) << "\"/>\n";
-    }
-    svg << "</g>\n";
-    svg << "<g text-anchor=\"middle\">\n";
-    for (int decade = static_cast<int>(log_min); decade <= static_cast<int>(log_max); ++decade) {
-        const double depth = std::pow(10.0, decade);
-        svg << "<line x1=\"" << x_of(depth) << "\" y1=\"" << kBottom << "\" x2=\"" << x_of(depth)
-            << "\" y2=\"" << kBottom + 6 << "\" stroke=\"black\"/>\n";
-        svg << "<text x=\"" << x_of(depth) << "\" y=\"" << kBottom + 22 << "\">"
-            << tick_label(depth) << "</text>\n";
-    }
-    svg << "</g>\n<g text-anchor=\"end\">\n";
-    for (double px = 0.0; px <= y_top + 1e-9; px += y_step) {
-        svg << "<line x1=\"" << kLeft - 6 << "\" y1=\"" << y_of(px) << "\" x2=\"" << kLeft
-            << "\" y2=\"" << y_of(px) << "\" stroke=\"black\"/>\n";
-        svg << "<text x=\"" << kLeft - 10 << "\" y=\"" << y_of(px) + 4 << "\">" << tick_label(px)
-            << "</text>\n";
-    }
-    svg << "</g>\n";
-    svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << kRight - kLeft
-        << "\" height=\"" << kBottom - kTop << "\" fill=\"none\" stroke=\"black\"/>\n";
-    svg << "<text x=\"" << (kLeft + kRight) / 2 << "\" y=\"" << kBottom + 48
-        << "\" text-anchor=\"middle\">depth in front of the eyes (m, log scale)</text>\n";
-    svg << "<text transform=\"translate(" << kLeft - 52 << " " << (kTop + kBottom) / 2
-        << ") rotate(-90)\" text-anchor=\"middle\">largest horizontal offset (px)</text>\n";
-
-    // One line per m, and a legend on the right.
-    for (std::size_t i = 0; i < series.size(); ++i) {
-        const Fig2Series& s = series[i];
-        const char* color = kColors[i % std::size(kColors)];
-        svg << "<polyline fill=\"none\" stroke=\"" << color
-            << "\" stroke-width=\"2\" stroke-linejoin=\"round\" points=\"";
+        charts::LineSeries line;
+        char name[96];
+        std::snprintf(name, sizeof name, "m = %g m: max %.2f px", s.mono_plane, s.max_error_px);
+        line.name = name;
+        line.marker = charts::MarkerShape::none;
         for (std::size_t k = 0; k < s.depths.size(); ++k) {
-            svg << (k ? " " : "") << x_of(s.depths[k]) << "," << y_of(s.error_px[k]);
+            line.points.push_back({s.depths[k], s.error_px[k], std::nullopt, ""});
         }
-        svg << "\"/>\n";
-        const double legend_y = kTop + 12 + 22.0 * static_cast<double>(i);
-        svg << "<line x1=\"" << kRight + 20 << "\" y1=\"" << legend_y << "\" x2=\"" << kRight + 48
-            << "\" y2=\"" << legend_y << "\" stroke=\"" << color << "\" stroke-width=\"3\"/>\n";
-        char label[96];
-        std::snprintf(label, sizeof label, "m = %g m: max %.2f px", s.mono_plane, s.max_error_px);
-        svg << "<text x=\"" << kRight + 54 << "\" y=\"" << legend_y + 4 << "\">" << label
-            << "</text>\n";
+        chart.series.push_back(std::move(line));
     }
-    svg << "</svg>\n";
-    return svg.str();
+    return charts::render_svg(chart);
 }
 
 void write_fig2(const RigOptions& o, const hmd::HmdProfile& profile) {
@@ -401,8 +302,9 @@ void write_fig2(const RigOptions& o, const hmd::HmdProfile& profile) {
                 << s.error_px_2d[k] << "\n";
         }
     }
-    std::ofstream(out / "fig2.svg") << fig2_svg(series, profile, *shown_inputs);
     if (!csv) throw UserError("--fig2 " + o.fig2_dir + ": cannot write fig2.csv");
+    charts::write_svg_file(out / "fig2.svg", fig2_svg(series, profile, *shown_inputs))
+        .value_or_throw();
     std::cerr << "wrote " << (out / "fig2.csv").string() << " and " << (out / "fig2.svg").string()
               << "\n";
 }

@@ -1,6 +1,6 @@
-// View-frustum culling of chunk bounds on the CPU. The culling issue replaces this with one GPU
-// compute pass for all views; until then the reference stereo mode culls here, as the paper's
-// reference did ("frustum culling was enabled during all configurations").
+// View-frustum culling of chunk bounds on the CPU, in double precision: the reference the GPU
+// culling pass (renderer/passes/culling) is tested against. The renderer itself does no
+// per-chunk work on the CPU.
 #pragma once
 
 #include <array>

@@ -1,19 +1,25 @@
 // The render modes of DESIGN.md section 6 as lists of passes over shared resources:
-//   stereo:          shadow*, per eye {forward+sky}, per eye {tonemap, readback}
-//   hybrid:          shadow*, per eye {forward n..m, no sky}, C {forward m-eps..f + sky},
-//                    per eye {composite C through M_{E->C}, tonemap, readback}, C {tonemap}
+//   stereo:          culling, shadow*, per eye {forward+sky}, per eye {tonemap}
+//   hybrid:          culling, shadow*, per eye {forward n..m, sky only if C has nothing},
+//                    [depth pyramid, [occlusion culling]], C {forward m-eps..f + sky},
+//                    per eye {composite C through M_{E->C}, tonemap}
 //   hybrid-farfield: as hybrid with C at the eyes' centre, no overlap, an offset copy
-// (* only when the light's region changed). With m >= f, hybrid records exactly the stereo
-// list: nothing lies beyond the plane, so C and the composite are skipped.
+// then read-backs (* only when the light's region changed). One GPU culling pass sorts the chunks
+// into the views' indirect draw lists; predicates computed by it skip, on the GPU, C and the
+// composite when C has nothing to draw, and the pyramid when no eye drew anything. With m >= f,
+// hybrid records exactly the stereo list: nothing lies beyond the plane.
 #pragma once
 
 #include <array>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "renderer/modes/view_setup.h"
 #include "renderer/passes/composite/composite_pass.h"
+#include "renderer/passes/culling/chunk_culling_pass.h"
+#include "renderer/passes/depth_pyramid/depth_pyramid_pass.h"
 #include "renderer/passes/forward/forward_pass.h"
 #include "renderer/passes/shadow/shadow_pass.h"
 #include "renderer/passes/tonemap/tonemap_pass.h"
@@ -31,11 +37,20 @@ std::optional<Mode> parse_mode(const std::string& name);
 std::string mode_name(Mode mode);
 std::optional<DebugView> parse_debug_view(const std::string& name);
 
+// How much of C's work the merged depth pyramid of both eyes saves (papers/000 Sect. 4.4 and the
+// three variants of Sect. 5.1, Fig. 5): none ("No Opt.", frustum culling only), C's fragments
+// hidden in both eyes discarded ("Discard"), and C's chunks hidden in both eyes not drawn at all
+// ("Occl. Cull.", with Discard). hybrid-farfield uses frustum culling only.
+enum class MonoCulling { kNoOpt, kDiscard, kOcclusionCull };
+std::optional<MonoCulling> parse_mono_culling(const std::string& name);
+std::string mono_culling_name(MonoCulling culling);  // "no-opt", "discard", "occlusion-cull"
+
 struct RendererOptions {
     passes::ShadowParams shadow;
     passes::TonemapParams tonemap;
-    bool read_back = true;         // display images to the host (PNGs, tests)
-    bool read_back_depth = false;  // linear depth to the host (tests, later analyses)
+    bool read_back = true;              // display images to the host (PNGs, tests)
+    bool read_back_depth = false;       // linear depth to the host (tests, later analyses)
+    bool read_back_draw_lists = false;  // each view's chunk list to the host (tests)
 };
 
 struct FrameInputs {
@@ -44,6 +59,7 @@ struct FrameInputs {
     double overlap_k = 2.0;        // k of eq. 3
     double view_blend_band = 0.3;  // metres below m over which view vectors blend (Sect. 4.3)
     DebugView debug = DebugView::kNone;
+    MonoCulling mono_culling = MonoCulling::kOcclusionCull;
 };
 
 class ModeRenderer {
@@ -59,6 +75,8 @@ class ModeRenderer {
     profile::FrameStats render_frame(const FrameInputs& inputs);
 
     Mode mode() const { return mode_; }
+    // Display images to the host from the next frame on (or not: timed benchmark frames).
+    void set_read_back(bool read_back) { options_.read_back = read_back; }
     // The last frame's images (options.read_back).
     const RgbaImage& eye_image(Eye eye) const;
     // C's tone-mapped image, or nullptr when the last frame had none (stereo, or m >= f).
@@ -68,6 +86,8 @@ class ModeRenderer {
     const std::vector<float>& eye_linear_depth(Eye eye) const;
     // The rig of the last hybrid frame.
     const std::optional<rig::Rig>& last_rig() const { return rig_; }
+    // The chunk indices the last frame drew in a view, in draw order (read_back_draw_lists).
+    std::vector<std::uint32_t> drawn_chunks(passes::CullView view) const;
 
   private:
     struct View;
@@ -76,9 +96,13 @@ class ModeRenderer {
     void ensure_mono_view(int width, int height);
     // Points a view's forward and tone-mapping descriptor sets at its own resources.
     void write_view_sets(const View& view) const;
+    // Makes the pyramid large enough for C's allocation and points its readers at it.
+    void ensure_pyramid();
     void update_view(View& view, const glm::dmat4& view_proj, const glm::dvec3& position,
                      const FrameInputs& inputs, const glm::dvec3& mono_position, double blend_band,
-                     const glm::dmat4& light_view_proj);
+                     const glm::dmat4& light_view_proj, double hidden_depth_threshold = 0.0);
+    // Whether the scene's routing flags may be honoured this frame (scenes::ChunkRouting).
+    void decide_routing(const FrameInputs& inputs, passes::CullFrame& cull) const;
 
     const vk_core::Context& ctx_;
     const scenes::Scene& scene_;
@@ -92,8 +116,11 @@ class ModeRenderer {
     passes::TonemapPass tonemap_;
     passes::CompositePass composite_;
     passes::DrawList shadow_draws_;
+    passes::ChunkCullingPass culling_;
+    passes::DepthPyramidPass pyramid_;
     profile::FrameProfiler profiler_;
     vk::raii::DescriptorPool descriptor_pool_{nullptr};
+    vk::raii::DescriptorSet merged_depth_set_{nullptr};  // after its pool: destroyed before it
     std::array<std::unique_ptr<View>, 2> eyes_;
     std::unique_ptr<MonoView> mono_;
     bool mono_rendered_ = false;

@@ -21,6 +21,10 @@ struct ViewStatistics {
     std::uint64_t clipping_primitives = 0;   // primitives leaving clipping
     std::uint64_t vertex_invocations = 0;
     std::uint64_t fragment_invocations = 0;
+    // Chunks drawn (the GPU culling's indirect draw count); C: after occlusion culling, and
+    // before it in draws_before_occlusion_culling. 0 for views that draw no chunks.
+    std::uint32_t draws = 0;
+    std::uint32_t draws_before_occlusion_culling = 0;
 };
 
 struct FrameStats {

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include <glm/ext/matrix_double3x4.hpp>
+#include <glm/ext/matrix_double4x3.hpp>
 #include <glm/ext/matrix_transform.hpp>
 
 #include "renderer/rig/projection.h"
@@ -385,6 +387,29 @@ glm::dvec2 eye_pixel_hybrid(const Rig& rig, int eye, const glm::dvec3& point) {
     const double to_plane = (rig.inputs.mono_plane + c.z) / distance_from_mono;
     const glm::dvec3 on_plane = c + (point - c) * to_plane;
     return eye_pixel_stereo(rig, eye, on_plane);
+}
+
+glm::dmat3 mono_pixel_to_eye_pixel(const Rig& rig, int eye) {
+    assert(eye == kLeft || eye == kRight);
+    if (rig.mono_skipped) return glm::dmat3(1.0);
+    const double w_c = rig.mono.viewport_width;
+    const double h_c = rig.mono.viewport_height;
+    const double z_plane = rig.mono.mono_plane_ndc_depth;
+    // C's pixel (x, y, 1) -> C's clip coordinates of its point on the plane: (2x/w - 1,
+    // 2y/h - 1, z_plane, 1), a 4 x 3 matrix (glm: 3 columns of 4 rows).
+    glm::dmat3x4 pixel_to_mono_clip(0.0);
+    pixel_to_mono_clip[0] = glm::dvec4(2.0 / w_c, 0.0, 0.0, 0.0);
+    pixel_to_mono_clip[1] = glm::dvec4(0.0, 2.0 / h_c, 0.0, 0.0);
+    pixel_to_mono_clip[2] = glm::dvec4(-1.0, -1.0, z_plane, 1.0);
+    // Eye clip (X, Y, Z, W) -> homogeneous eye pixel ((X/W + 1) w_e / 2, (Y/W + 1) h_e / 2): a
+    // 3 x 4 matrix (4 columns of 3 rows).
+    const double w_e = rig.inputs.eye_width;
+    const double h_e = rig.inputs.eye_height;
+    glm::dmat4x3 eye_clip_to_pixel(0.0);
+    eye_clip_to_pixel[0] = glm::dvec3(w_e / 2.0, 0.0, 0.0);
+    eye_clip_to_pixel[1] = glm::dvec3(0.0, h_e / 2.0, 0.0);
+    eye_clip_to_pixel[3] = glm::dvec3(w_e / 2.0, h_e / 2.0, 1.0);
+    return eye_clip_to_pixel * rig.mono_to_eye[eye] * pixel_to_mono_clip;
 }
 
 }  // namespace monoplane::rig

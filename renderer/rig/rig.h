@@ -18,6 +18,7 @@
 
 #include <array>
 
+#include <glm/ext/matrix_double3x3.hpp>
 #include <glm/ext/matrix_double4x4.hpp>
 #include <glm/ext/vector_double2.hpp>
 #include <glm/ext/vector_double3.hpp>
@@ -113,5 +114,13 @@ PixelError error_at_depth(const Rig& rig, double depth);
 // in front of C; equal to stereo when mono_skipped). The point must lie in front of the eye.
 glm::dvec2 eye_pixel_stereo(const Rig& rig, int eye, const glm::dvec3& point);
 glm::dvec2 eye_pixel_hybrid(const Rig& rig, int eye, const glm::dvec3& point);
+
+// The homography from C's pixels (x right, y down over its viewport_width x viewport_height
+// viewport, centres at i + 0.5) to eye e's pixels, through the mono plane: eq. 5's M_{C->E}
+// restricted to C's points at the plane's depth. An eye pixel q reads C at the inverse image of q,
+// so this tells which eye pixels read a region of C (the merged depth pyramid, Sect. 4.4).
+// Column-major like glm: apply as h = H * (x, y, 1), pixel = h.xy / h.z. Identity when
+// mono_skipped.
+glm::dmat3 mono_pixel_to_eye_pixel(const Rig& rig, int eye);
 
 }  // namespace monoplane::rig

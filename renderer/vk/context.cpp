@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string_view>
 
 namespace monoplane::vk_core {
 namespace {
@@ -91,13 +92,25 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
 
         const auto supported =
             ctx->physical_device_
-                .getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features>();
+                .getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features,
+                              vk::PhysicalDeviceVulkan12Features>();
         const auto& f10 = supported.get<vk::PhysicalDeviceFeatures2>().features;
         const auto& f11 = supported.get<vk::PhysicalDeviceVulkan11Features>();
+        if (!supported.get<vk::PhysicalDeviceVulkan12Features>().drawIndirectCount) {
+            return Error{"device '" + ctx->device_info_.name +
+                         "' lacks drawIndirectCount (Vulkan 1.2), which the GPU culling needs; "
+                         "choose another with --device (see `monoplane devices`)"};
+        }
         DeviceCapabilities& caps = ctx->capabilities_;
         caps.pipeline_statistics = f10.pipelineStatisticsQuery;
         caps.geometry_shader = f10.geometryShader;
         caps.multiview = f11.multiview;
+        const auto device_extensions = ctx->physical_device_.enumerateDeviceExtensionProperties();
+        caps.conditional_rendering = std::any_of(
+            device_extensions.begin(), device_extensions.end(), [](const auto& extension) {
+                return std::string_view(extension.extensionName) ==
+                       VK_EXT_CONDITIONAL_RENDERING_EXTENSION_NAME;
+            });
         const auto properties = ctx->physical_device_.getProperties();
         caps.timestamp_period_ns = properties.limits.timestampPeriod;
         caps.timestamp_valid_bits =
@@ -105,7 +118,8 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
 
         vk::StructureChain<vk::DeviceCreateInfo, vk::PhysicalDeviceFeatures2,
                            vk::PhysicalDeviceVulkan11Features, vk::PhysicalDeviceVulkan12Features,
-                           vk::PhysicalDeviceVulkan13Features>
+                           vk::PhysicalDeviceVulkan13Features,
+                           vk::PhysicalDeviceConditionalRenderingFeaturesEXT>
             chain;
         vk::PhysicalDeviceFeatures& enable10 = chain.get<vk::PhysicalDeviceFeatures2>().features;
         enable10.multiDrawIndirect = VK_TRUE;
@@ -115,8 +129,21 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
         enable10.depthClamp = f10.depthClamp;
         chain.get<vk::PhysicalDeviceVulkan11Features>().multiview = f11.multiview;
         chain.get<vk::PhysicalDeviceVulkan12Features>().hostQueryReset = VK_TRUE;
+        // The GPU culling writes each view's draw count (Vulkan 1.2 core, optional feature).
+        chain.get<vk::PhysicalDeviceVulkan12Features>().drawIndirectCount = VK_TRUE;
+        std::vector<const char*> device_extension_names;
+        if (caps.conditional_rendering) {
+            chain.get<vk::PhysicalDeviceConditionalRenderingFeaturesEXT>().conditionalRendering =
+                VK_TRUE;
+            device_extension_names.push_back(VK_EXT_CONDITIONAL_RENDERING_EXTENSION_NAME);
+        } else {
+            chain.unlink<vk::PhysicalDeviceConditionalRenderingFeaturesEXT>();
+        }
+        chain.get<vk::DeviceCreateInfo>().setPEnabledExtensionNames(device_extension_names);
         chain.get<vk::PhysicalDeviceVulkan13Features>().dynamicRendering = VK_TRUE;
         chain.get<vk::PhysicalDeviceVulkan13Features>().synchronization2 = VK_TRUE;
+        // Required by Vulkan 1.3; glslc expresses compute local sizes with LocalSizeId for it.
+        chain.get<vk::PhysicalDeviceVulkan13Features>().maintenance4 = VK_TRUE;
 
         const float priority = 1.0f;
         const vk::DeviceQueueCreateInfo queue_info({}, ctx->queue_family_, 1, &priority);

@@ -38,6 +38,9 @@ struct DeviceCapabilities {
     bool pipeline_statistics = false;
     bool geometry_shader = false;
     bool multiview = false;
+    // VK_EXT_conditional_rendering: passes whose inputs the GPU culling left empty are skipped
+    // without a round trip to the CPU (the draws and dispatches of such a pass do nothing).
+    bool conditional_rendering = false;
     float timestamp_period_ns = 1.0f;
     std::uint32_t timestamp_valid_bits = 0;
 };

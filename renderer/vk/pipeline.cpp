@@ -45,6 +45,14 @@ vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipe
     return vk::raii::Pipeline(ctx.device(), nullptr, info);
 }
 
+vk::raii::Pipeline make_compute_pipeline(const Context& ctx, vk::PipelineLayout layout,
+                                         vk::ShaderModule compute) {
+    const vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, compute,
+                                                  "main");
+    return vk::raii::Pipeline(ctx.device(), nullptr,
+                              vk::ComputePipelineCreateInfo({}, stage, layout));
+}
+
 void set_viewport_and_scissor(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent) {
     cmd.setViewport(0, vk::Viewport(0.0f, 0.0f, static_cast<float>(extent.width),
                                     static_cast<float>(extent.height), 0.0f, 1.0f));

@@ -31,6 +31,9 @@ struct GraphicsPipelineDesc {
 // Viewport and scissor are dynamic state, set by the pass for each target.
 vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipelineDesc& desc);
 
+vk::raii::Pipeline make_compute_pipeline(const Context& ctx, vk::PipelineLayout layout,
+                                         vk::ShaderModule compute);
+
 void set_viewport_and_scissor(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent);
 
 }  // namespace monoplane::vk_core

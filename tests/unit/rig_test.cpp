@@ -183,6 +183,30 @@ TEST(Rig, MappingsAgreeWithDirectProjection) {
     }
 }
 
+TEST(Rig, MonoPixelToEyePixelIsWhereHybridShowsAPointBeyondThePlane) {
+    for (const double m : {1.6, 8.0, 39.5}) {
+        const Rig rig = built(vive_inputs(m));
+        const glm::dvec2 viewport(rig.mono.viewport_width, rig.mono.viewport_height);
+        for (int eye : {kLeft, kRight}) {
+            const glm::dmat3 h = mono_pixel_to_eye_pixel(rig, eye);
+            for (const glm::dvec3 p :
+                 {glm::dvec3(0.3, -0.7, -(m + 0.5)), glm::dvec3(-5.0, 4.0, -(m + 20.0)),
+                  glm::dvec3(40.0, -9.0, -(3.0 * m + 100.0))}) {
+                // C's pixel of p as the renderer rasterises it (C's viewport of whole pixels),
+                // then where hybrid shows p in the eye (central projection from C onto the plane,
+                // then the eye's own projection).
+                const glm::dvec3 ndc =
+                    ndc_of(rig.mono_projection, glm::dvec4(p - rig.mono_position, 1.0));
+                const glm::dvec2 mono_pixel = (glm::dvec2(ndc) * 0.5 + 0.5) * viewport;
+                const glm::dvec3 mapped = h * glm::dvec3(mono_pixel, 1.0);
+                const glm::dvec2 expected = eye_pixel_hybrid(rig, eye, p);
+                EXPECT_NEAR(mapped.x / mapped.z, expected.x, 1e-6) << "m " << m;
+                EXPECT_NEAR(mapped.y / mapped.z, expected.y, 1e-6) << "m " << m;
+            }
+        }
+    }
+}
+
 TEST(Rig, ErrorGrowsFromZeroAtTheMonoPlaneToTheSupremum) {
     const Rig rig = built(vive_inputs(8.0));
     EXPECT_EQ(error_at_depth(rig, 8.0).horizontal_px, 0.0);

@@ -29,8 +29,9 @@ constexpr std::array<double, 10> kMonoPlanes = {1.6,  3.0,  5.0,  8.0,  12.0,
                                                 16.0, 20.0, 25.0, 31.0, 39.5};
 // Half of a ~110 degree field of view, as a tangent.
 constexpr double kTanHalfFov = 1.43;
-// No chunk may be a sliver of a few triangles: culling per chunk must be worth its draw.
-constexpr std::uint32_t kMinChunkTriangles = 256;
+// No chunk may be a sliver of a few triangles: culling per chunk must be worth its draw (the
+// chunk target is 1024 triangles; a ring block cut short by the terrain's rim may hold fewer).
+constexpr std::uint32_t kMinChunkTriangles = 128;
 
 // Test-detail scenes are generated once per scene and shared by the tests that only read them.
 const Scene& test_scene(SceneId id) {
@@ -72,7 +73,10 @@ void expect_well_formed(const Scene& scene) {
         EXPECT_GE(triangles, kMinChunkTriangles);
         EXPECT_LE(triangles, kMaxChunkTriangles);
         ASSERT_GE(chunk.vertex_offset, 0);
-        EXPECT_EQ(chunk.flags, kChunkNone);
+        // Routing flags only where the scene says where flagged geometry lies.
+        EXPECT_TRUE(chunk.flags == kChunkNone ||
+                    (chunk.flags == kChunkForceMono && scene.routing.force_mono_outside_radius > 0))
+            << "chunk flags " << chunk.flags;
 
         Aabb tight{glm::vec3(std::numeric_limits<float>::max()),
                    glm::vec3(std::numeric_limits<float>::lowest())};
@@ -198,6 +202,28 @@ TEST_P(EveryScene, IdentityAndNames) {
     EXPECT_EQ(scene.name, scene_name(GetParam()));
     EXPECT_EQ(scene.detail, Detail::Test);
     EXPECT_EQ(scene.seed, kDefaultSeed);
+}
+
+// Force-mono chunks (papers/003) must lie where ChunkRouting says, or the renderer could route
+// visible near geometry to C, which clips it at m - eps.
+TEST_P(EveryScene, ForceMonoChunksLieOutsideTheirDeclaredCylinder) {
+    const Scene& scene = test_scene(GetParam());
+    std::size_t flagged = 0;
+    for (const Chunk& chunk : scene.chunks) {
+        if ((chunk.flags & kChunkForceMono) == 0) continue;
+        ++flagged;
+        for (std::uint32_t i = chunk.first_index; i < chunk.first_index + chunk.index_count; ++i) {
+            const glm::vec3 p = scene.vertices[scene.indices[i] + chunk.vertex_offset].position;
+            ASSERT_GE(std::hypot(p.x, p.z), scene.routing.force_mono_outside_radius - 1e-3f);
+        }
+    }
+    // LANDSCAPE forces its far terrain to C; the others flag nothing.
+    if (GetParam() == SceneId::Landscape) {
+        EXPECT_GT(flagged, 0u);
+        EXPECT_FLOAT_EQ(scene.routing.force_mono_outside_radius, 40.0f);
+    } else {
+        EXPECT_EQ(flagged, 0u);
+    }
 }
 
 TEST_P(EveryScene, ChunksTileTheIndexBufferWithTightBounds) {

@@ -97,7 +97,7 @@ void CompositePass::record(const vk::raii::CommandBuffer& cmd, const CompositeTa
                   static_cast<float>(params.pixel_offset.y), 0.0f, 0.0f),
     };
     cmd.pushConstants<PushBlock>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, push);
-    cmd.draw(3, 1, 0, 0);
+    with_predicate(cmd, params.when, [&] { cmd.draw(3, 1, 0, 0); });
     cmd.endRendering();
 }
 

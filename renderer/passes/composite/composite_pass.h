@@ -7,6 +7,9 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
+#include <optional>
+
+#include "renderer/passes/shared/indirect_draws.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
 
@@ -26,6 +29,9 @@ struct CompositeParams {
     CompositeMapping mapping = CompositeMapping::kProjective;
     float tint = 0.0f;              // debug view "mono region tinted": 0 off, 1 full
     bool cover_all_pixels = false;  // debug view "mono only": ignore the near content
+    // Skips the draw (the pass records no work) when C had nothing to draw: the eyes drew the
+    // sky themselves.
+    std::optional<Predicate> when;
 };
 
 struct CompositeTargets {

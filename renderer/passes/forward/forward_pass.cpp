@@ -10,6 +10,9 @@ const std::uint32_t kForwardVert[] = {
 const std::uint32_t kForwardFrag[] = {
 #include "forward.frag.spv.inc"
 };
+const std::uint32_t kForwardDiscardHiddenFrag[] = {
+#include "forward_discard_hidden.frag.spv.inc"
+};
 const std::uint32_t kFullscreenVert[] = {
 #include "fullscreen.vert.spv.inc"
 };
@@ -28,8 +31,13 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx) {
     };
     set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
                                                 vk::DescriptorSetLayoutCreateInfo({}, bindings));
-    const vk::DescriptorSetLayout set_layout = *set_layout_;
-    layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout));
+    const vk::DescriptorSetLayoutBinding merged_depth(0, vk::DescriptorType::eCombinedImageSampler,
+                                                      1, Stage::eFragment);
+    merged_depth_layout_ = vk::raii::DescriptorSetLayout(
+        ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, merged_depth));
+    // One layout for all pipelines; set 1 is bound only for kChunksDiscardHidden.
+    const std::array set_layouts = {*set_layout_, *merged_depth_layout_};
+    layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layouts));
 
     const vk::raii::ShaderModule forward_vert = vk_core::make_shader(ctx, kForwardVert);
     const vk::raii::ShaderModule forward_frag = vk_core::make_shader(ctx, kForwardFrag);
@@ -42,6 +50,10 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx) {
     geometry.color_formats = {kHdrFormat, kLinearDepthFormat};
     geometry.depth_format = kDepthFormat;
     geometry_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
+    const vk::raii::ShaderModule discard_frag =
+        vk_core::make_shader(ctx, kForwardDiscardHiddenFrag);
+    geometry.fragment = *discard_frag;
+    discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
 
     // The sky covers only pixels still at the cleared far depth (0 with reversed Z).
     const vk::raii::ShaderModule fullscreen_vert = vk_core::make_shader(ctx, kFullscreenVert);
@@ -59,8 +71,9 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx) {
 }
 
 void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
-                         vk::DescriptorSet view_set, const SceneGeometry& geometry,
-                         const DrawList& draws) const {
+                         vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
+                         const SceneGeometry& geometry, const IndirectDraws& chunks,
+                         std::span<const ForwardDraw> steps) const {
     using Stage = vk::PipelineStageFlagBits2;
     using Access = vk::AccessFlagBits2;
     for (const vk_core::Image* color : {&targets.hdr, &targets.linear_depth}) {
@@ -71,17 +84,21 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
     }
     vk_core::transition(cmd, targets.depth, vk::ImageLayout::eUndefined,
                         vk::ImageLayout::eDepthAttachmentOptimal,
-                        Stage::eLateFragmentTests | Stage::eFragmentShader,
+                        Stage::eLateFragmentTests | Stage::eFragmentShader | Stage::eComputeShader,
                         Access::eDepthStencilAttachmentWrite | Access::eShaderSampledRead,
                         Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
                         Access::eDepthStencilAttachmentWrite | Access::eDepthStencilAttachmentRead);
+    const vk::AttachmentLoadOp color_load =
+        targets.clear_color ? vk::AttachmentLoadOp::eClear : vk::AttachmentLoadOp::eDontCare;
     const std::array colors = {
         vk::RenderingAttachmentInfo(targets.hdr.view(), vk::ImageLayout::eColorAttachmentOptimal,
-                                    {}, {}, {}, vk::AttachmentLoadOp::eDontCare,
-                                    vk::AttachmentStoreOp::eStore),
-        vk::RenderingAttachmentInfo(targets.linear_depth.view(),
-                                    vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
-                                    vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore),
+                                    {}, {}, {}, color_load, vk::AttachmentStoreOp::eStore,
+                                    vk::ClearValue(vk::ClearColorValue(0.0f, 0.0f, 0.0f, 1.0f))),
+        vk::RenderingAttachmentInfo(
+            targets.linear_depth.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
+            color_load, vk::AttachmentStoreOp::eStore,
+            vk::ClearValue(vk::ClearColorValue(static_cast<float>(MONOPLANE_SKY_LINEAR_DEPTH), 0.0f,
+                                               0.0f, 0.0f))),
     };
     const vk::RenderingAttachmentInfo depth(
         targets.depth.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
@@ -94,12 +111,26 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                            .setPDepthAttachment(&depth));
     vk_core::set_viewport_and_scissor(cmd, targets.area);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, view_set, {});
-    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *geometry_pipeline_);
     geometry.bind(cmd);
-    draws.draw(cmd);
-    if (targets.draw_sky) {
-        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
-        cmd.draw(3, 1, 0, 0);
+    for (const ForwardDraw& draw : steps) {
+        with_predicate(cmd, draw.when, [&] {
+            switch (draw.step) {
+                case ForwardStep::kChunks:
+                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *geometry_pipeline_);
+                    chunks.record(cmd);
+                    break;
+                case ForwardStep::kChunksDiscardHidden:
+                    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
+                                           merged_depth_set, {});
+                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *discard_hidden_pipeline_);
+                    chunks.record(cmd);
+                    break;
+                case ForwardStep::kSky:
+                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
+                    cmd.draw(3, 1, 0, 0);
+                    break;
+            }
+        });
     }
     cmd.endRendering();
 }

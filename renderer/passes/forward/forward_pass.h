@@ -3,6 +3,10 @@
 // Writes: HDR colour, reversed-Z depth, linear depth (metres in front of the eyes' plane).
 #pragma once
 
+#include <optional>
+#include <span>
+
+#include "renderer/passes/shared/indirect_draws.h"
 #include "renderer/passes/shared/scene_geometry.h"
 #include "renderer/passes/shared/view_constants.h"
 #include "renderer/vk/image.h"
@@ -17,9 +21,21 @@ struct ForwardTargets {
     // The region drawn, from the images' top-left corner: the whole image for the eyes, the
     // viewport of eq. 8 inside its larger allocation for C.
     vk::Extent2D area;
-    // The eyes of hybrid modes leave the sky to C: their uncovered pixels are filled by the
-    // composite.
-    bool draw_sky = true;
+    // Clear the colour targets first (black, sky depth) instead of leaving them undefined: only
+    // where pixels may stay unwritten and are read anyway (C's image read back for mono.png
+    // when fragments hidden in both eyes were discarded).
+    bool clear_color = false;
+};
+
+// What a forward pass draws, in order; each step may run under a GPU predicate.
+enum class ForwardStep {
+    kChunks,               // the view's chunk list, every fragment shaded
+    kChunksDiscardHidden,  // the same, discarding fragments hidden in both eyes (C only)
+    kSky,                  // the sky where nothing was drawn
+};
+struct ForwardDraw {
+    ForwardStep step = ForwardStep::kChunks;
+    std::optional<Predicate> when;
 };
 
 class ForwardPass {
@@ -31,17 +47,23 @@ class ForwardPass {
     explicit ForwardPass(const vk_core::Context& ctx);
 
     vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
+    // Set 1 of kChunksDiscardHidden: the merged depth pyramid (binding 0, eGeneral).
+    vk::DescriptorSetLayout merged_depth_layout() const { return *merged_depth_layout_; }
 
     // Expects the targets in eUndefined (their contents are replaced); leaves the colour targets
     // in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
+    // merged_depth_set is needed only by kChunksDiscardHidden steps.
     void record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
-                vk::DescriptorSet view_set, const SceneGeometry& geometry,
-                const DrawList& draws) const;
+                vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
+                const SceneGeometry& geometry, const IndirectDraws& chunks,
+                std::span<const ForwardDraw> steps) const;
 
   private:
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
+    vk::raii::DescriptorSetLayout merged_depth_layout_{nullptr};
     vk::raii::PipelineLayout layout_{nullptr};
     vk::raii::Pipeline geometry_pipeline_{nullptr};
+    vk::raii::Pipeline discard_hidden_pipeline_{nullptr};
     vk::raii::Pipeline sky_pipeline_{nullptr};
 };
 

@@ -50,9 +50,11 @@ void DrawList::assign(const scenes::Scene& scene, std::span<const std::uint32_t>
     count_ = static_cast<std::uint32_t>(chunk_indices.size());
 }
 
-void DrawList::draw(const vk::raii::CommandBuffer& cmd) const {
-    if (count_ == 0) return;
-    cmd.drawIndexedIndirect(commands_.handle(), 0, count_, sizeof(vk::DrawIndexedIndirectCommand));
+IndirectDraws DrawList::indirect() const {
+    IndirectDraws draws;
+    draws.commands = commands_.handle();
+    draws.max_draws = count_;
+    return draws;
 }
 
 }  // namespace monoplane::passes

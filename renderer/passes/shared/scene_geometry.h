@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "renderer/passes/shared/indirect_draws.h"
 #include "renderer/vk/buffer.h"
 #include "scenes/scene.h"
 
@@ -30,14 +31,17 @@ class SceneGeometry {
     std::size_t chunk_count_ = 0;
 };
 
-// Indirect draw commands, one per chunk drawn, in a host-visible buffer sized for all chunks.
+// Indirect draw commands written by the CPU, one per chunk drawn, in a host-visible buffer sized
+// for all chunks: for lists that do not change per frame (the shadow map draws every chunk).
+// Per-view lists are written by the GPU culling pass (renderer/passes/culling).
 class DrawList {
   public:
     DrawList(const vk_core::Context& ctx, std::size_t max_draws);
 
     // Replaces the list with the given chunks (chunk indices into scene.chunks).
     void assign(const scenes::Scene& scene, std::span<const std::uint32_t> chunk_indices);
-    void draw(const vk::raii::CommandBuffer& cmd) const;
+    void draw(const vk::raii::CommandBuffer& cmd) const { indirect().record(cmd); }
+    IndirectDraws indirect() const;
     std::uint32_t count() const { return count_; }
 
   private:

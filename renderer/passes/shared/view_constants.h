@@ -26,7 +26,9 @@ struct ViewConstants {
     vec4 head_forward;          // xyz: unit view direction shared by all cameras of the rig
     vec4 mono_camera_position;  // xyz: C, towards which the eyes' view vectors blend near m
     // x: m; y: width of the band below m over which an eye's view vector blends into C's
-    // (Fink et al. Sect. 4.3; 0 disables it: stereo and C's own pass); z, w: unused.
+    // (Fink et al. Sect. 4.3; 0 disables it: stereo and C's own pass); z (C with the merged
+    // depth pyramid): the eyes' reversed-Z depth of m - eps, above which C's fragment is hidden
+    // in both eyes; w: unused.
     vec4 view_blend;
 };
 

@@ -1,0 +1,203 @@
+#include "renderer/passes/culling/chunk_culling_pass.h"
+
+#include <cstring>
+
+#include <glm/geometric.hpp>
+
+#include "renderer/vk/pipeline.h"
+
+namespace monoplane::passes {
+namespace {
+
+const std::uint32_t kCullChunks[] = {
+#include "cull_chunks.comp.spv.inc"
+};
+
+using Stage = vk::PipelineStageFlagBits2;
+using Access = vk::AccessFlagBits2;
+constexpr vk::DeviceSize kCommandSize = sizeof(vk::DrawIndexedIndirectCommand);
+
+std::vector<ChunkRecord> chunk_records(const scenes::Scene& scene) {
+    std::vector<ChunkRecord> records;
+    records.reserve(scene.chunks.size());
+    for (const scenes::Chunk& chunk : scene.chunks) {
+        std::uint32_t vertex_offset_bits = 0;
+        std::memcpy(&vertex_offset_bits, &chunk.vertex_offset, sizeof(vertex_offset_bits));
+        records.push_back(
+            {glm::vec4(chunk.bounds.min, 0.0f), glm::vec4(chunk.bounds.max, 0.0f),
+             glm::uvec4(chunk.index_count, chunk.first_index, vertex_offset_bits, chunk.flags)});
+    }
+    if (records.empty()) records.push_back({});  // buffers may not be empty
+    return records;
+}
+
+// The six planes of a reversed-Z clip space 0 <= z <= w (Gribb and Hartmann), normalised in
+// double precision before they become floats.
+void write_planes(const glm::dmat4& view_proj, vec4* out) {
+    const glm::dmat4 t = glm::transpose(view_proj);  // t[i] is row i of view_proj
+    const std::array<glm::dvec4, 6> planes = {t[3] + t[0], t[3] - t[0], t[3] + t[1],
+                                              t[3] - t[1], t[2],        t[3] - t[2]};
+    for (std::size_t i = 0; i < planes.size(); ++i) {
+        const double length = glm::length(glm::dvec3(planes[i]));
+        out[i] = glm::vec4(length > 0.0 ? planes[i] / length : planes[i]);
+    }
+}
+
+}  // namespace
+
+ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Scene& scene)
+    : chunk_count_(static_cast<std::uint32_t>(scene.chunks.size())),
+      chunks_(vk_core::make_device_buffer(ctx, std::span<const ChunkRecord>(chunk_records(scene)),
+                                          vk::BufferUsageFlagBits::eStorageBuffer)),
+      commands_(ctx, MONOPLANE_CULL_VIEWS * std::max(chunk_count_, 1u) * kCommandSize,
+                vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
+                    vk::BufferUsageFlagBits::eTransferSrc,
+                vk_core::MemoryUse::kDeviceLocal),
+      counts_(ctx, MONOPLANE_COUNT_WORDS * sizeof(std::uint32_t),
+              vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
+                  vk::BufferUsageFlagBits::eConditionalRenderingEXT |
+                  vk::BufferUsageFlagBits::eTransferSrc,
+              vk_core::MemoryUse::kDeviceLocal),
+      constants_(ctx, sizeof(CullConstants), vk::BufferUsageFlagBits::eUniformBuffer,
+                 vk_core::MemoryUse::kHostVisible),
+      counts_readback_(ctx, counts_.size(), vk::BufferUsageFlagBits::eTransferDst,
+                       vk_core::MemoryUse::kHostVisible),
+      commands_readback_(ctx, commands_.size(), vk::BufferUsageFlagBits::eTransferDst,
+                         vk_core::MemoryUse::kHostVisible),
+      ctx_(ctx) {
+    using Type = vk::DescriptorType;
+    const auto compute = vk::ShaderStageFlagBits::eCompute;
+    const std::array bindings = {
+        vk::DescriptorSetLayoutBinding(0, Type::eStorageBuffer, 1, compute),
+        vk::DescriptorSetLayoutBinding(1, Type::eStorageBuffer, 1, compute),
+        vk::DescriptorSetLayoutBinding(2, Type::eStorageBuffer, 1, compute),
+        vk::DescriptorSetLayoutBinding(3, Type::eUniformBuffer, 1, compute),
+        vk::DescriptorSetLayoutBinding(4, Type::eCombinedImageSampler, 1, compute),
+    };
+    set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
+                                                vk::DescriptorSetLayoutCreateInfo({}, bindings));
+    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 3),
+                                   vk::DescriptorPoolSize(Type::eUniformBuffer, 1),
+                                   vk::DescriptorPoolSize(Type::eCombinedImageSampler, 1)};
+    pool_ = vk::raii::DescriptorPool(
+        ctx.device(), vk::DescriptorPoolCreateInfo(
+                          vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, pool_sizes));
+    const vk::DescriptorSetLayout set_layout = *set_layout_;
+    set_ = std::move(vk::raii::DescriptorSets(
+        ctx.device(), vk::DescriptorSetAllocateInfo(*pool_, set_layout))[0]);
+    const vk::PushConstantRange push(compute, 0, sizeof(std::uint32_t));
+    layout_ =
+        vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout, push));
+    const vk::raii::ShaderModule shader = vk_core::make_shader(ctx, kCullChunks);
+    pipeline_ = vk_core::make_compute_pipeline(ctx, *layout_, *shader);
+
+    const vk::DescriptorBufferInfo chunks_info(chunks_.handle(), 0, VK_WHOLE_SIZE);
+    const vk::DescriptorBufferInfo commands_info(commands_.handle(), 0, VK_WHOLE_SIZE);
+    const vk::DescriptorBufferInfo counts_info(counts_.handle(), 0, VK_WHOLE_SIZE);
+    const vk::DescriptorBufferInfo constants_info(constants_.handle(), 0, VK_WHOLE_SIZE);
+    const std::array writes = {
+        vk::WriteDescriptorSet(*set_, 0, 0, Type::eStorageBuffer, {}, chunks_info),
+        vk::WriteDescriptorSet(*set_, 1, 0, Type::eStorageBuffer, {}, commands_info),
+        vk::WriteDescriptorSet(*set_, 2, 0, Type::eStorageBuffer, {}, counts_info),
+        vk::WriteDescriptorSet(*set_, 3, 0, Type::eUniformBuffer, {}, constants_info),
+    };
+    ctx.device().updateDescriptorSets(writes, {});
+}
+
+void ChunkCullingPass::set_merged_depth(vk::ImageView pyramid, vk::Sampler nearest) const {
+    const vk::DescriptorImageInfo info(nearest, pyramid, vk::ImageLayout::eGeneral);
+    const vk::WriteDescriptorSet write(*set_, 4, 0, vk::DescriptorType::eCombinedImageSampler,
+                                       info);
+    ctx_.device().updateDescriptorSets(write, {});
+}
+
+void ChunkCullingPass::set_frame(const CullFrame& frame) {
+    CullConstants c{};
+    std::uint32_t views = 0;
+    for (std::uint32_t v = 0; v < MONOPLANE_CULL_VIEWS; ++v) {
+        if (!frame.view_proj[v]) continue;
+        views |= 1u << v;
+        write_planes(*frame.view_proj[v], &c.planes[v * 6]);
+    }
+    std::uint32_t honour = 0;
+    if (frame.honour_force_mono) honour |= MONOPLANE_CULL_HONOUR_FORCE_MONO;
+    if (frame.honour_force_stereo) honour |= MONOPLANE_CULL_HONOUR_FORCE_STEREO;
+    c.config = glm::uvec4(chunk_count_, views, 0u, honour);
+    if (frame.view_proj[MONOPLANE_CULL_MONO]) {
+        c.mono_view_proj = glm::mat4(*frame.view_proj[MONOPLANE_CULL_MONO]);
+    }
+    c.occlusion = glm::vec4(
+        static_cast<float>(frame.mono_viewport.x), static_cast<float>(frame.mono_viewport.y),
+        static_cast<float>(frame.hidden_depth_threshold), static_cast<float>(frame.pyramid_mips));
+    constants_.write(&c, sizeof(c));
+}
+
+void ChunkCullingPass::record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const {
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *layout_, 0, *set_, {});
+    cmd.pushConstants<std::uint32_t>(*layout_, vk::ShaderStageFlagBits::eCompute, 0, phase);
+    cmd.dispatch(1, 1, 1);
+    // The lists feed indirect draws, the predicates conditional rendering, and phase 1 rewrites
+    // C's list after the eyes' passes.
+    const vk::MemoryBarrier2 barrier(
+        Stage::eComputeShader, Access::eShaderStorageWrite,
+        Stage::eDrawIndirect | Stage::eConditionalRenderingEXT | Stage::eComputeShader,
+        Access::eIndirectCommandRead | Access::eConditionalRenderingReadEXT |
+            Access::eShaderStorageRead | Access::eShaderStorageWrite);
+    cmd.pipelineBarrier2(vk::DependencyInfo({}, barrier));
+}
+
+void ChunkCullingPass::record_frustum_phase(const vk::raii::CommandBuffer& cmd) const {
+    record_phase(cmd, 0);
+}
+
+void ChunkCullingPass::record_occlusion_phase(const vk::raii::CommandBuffer& cmd) const {
+    record_phase(cmd, 1);
+}
+
+void ChunkCullingPass::record_readback(const vk::raii::CommandBuffer& cmd, bool lists) const {
+    const vk::MemoryBarrier2 barrier(
+        Stage::eComputeShader | Stage::eDrawIndirect | Stage::eConditionalRenderingEXT,
+        Access::eShaderStorageWrite, Stage::eTransfer, Access::eTransferRead);
+    cmd.pipelineBarrier2(vk::DependencyInfo({}, barrier));
+    cmd.copyBuffer(counts_.handle(), counts_readback_.handle(),
+                   vk::BufferCopy(0, 0, counts_.size()));
+    if (lists) {
+        cmd.copyBuffer(commands_.handle(), commands_readback_.handle(),
+                       vk::BufferCopy(0, 0, commands_.size()));
+    }
+}
+
+IndirectDraws ChunkCullingPass::draws(CullView view) const {
+    const auto v = static_cast<std::uint32_t>(view);
+    IndirectDraws draws;
+    draws.commands = commands_.handle();
+    draws.commands_offset = vk::DeviceSize{v} * chunk_count_ * kCommandSize;
+    draws.count = counts_.handle();
+    draws.count_offset = vk::DeviceSize{v} * sizeof(std::uint32_t);
+    draws.max_draws = chunk_count_;
+    return draws;
+}
+
+Predicate ChunkCullingPass::predicate(std::uint32_t word, bool inverted) const {
+    return {counts_.handle(), vk::DeviceSize{word} * sizeof(std::uint32_t), inverted};
+}
+
+std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> ChunkCullingPass::counts() const {
+    std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> values{};
+    std::memcpy(values.data(), counts_readback_.mapped(), sizeof(values));
+    return values;
+}
+
+std::vector<std::uint32_t> ChunkCullingPass::drawn_chunks(CullView view) const {
+    const auto v = static_cast<std::uint32_t>(view);
+    const std::uint32_t count = counts()[v];
+    const auto* commands =
+        reinterpret_cast<const vk::DrawIndexedIndirectCommand*>(commands_readback_.mapped()) +
+        std::size_t{v} * chunk_count_;
+    std::vector<std::uint32_t> chunks(count);
+    for (std::uint32_t i = 0; i < count; ++i) chunks[i] = commands[i].firstInstance;
+    return chunks;
+}
+
+}  // namespace monoplane::passes

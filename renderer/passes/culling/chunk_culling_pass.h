@@ -1,0 +1,84 @@
+// GPU chunk culling (papers/000 Sect. 4.4 "View Frustum Culling" and "Occlusion Culling"): one
+// compute dispatch per frame sorts the scene's chunks into the eyes' lists and C's list and
+// writes their indirect draw commands and counts, with no per-chunk work on the CPU. In the
+// occlusion-cull variant a second dispatch, after the merged depth pyramid, re-sorts C's list.
+// Reads: the chunk table (uploaded once), per-frame planes, the merged depth pyramid (phase 1).
+// Writes: draw commands, counts and the predicates of cull_constants.h.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include <glm/ext/matrix_double4x4.hpp>
+
+#include "renderer/passes/culling/cull_constants.h"
+#include "renderer/passes/shared/indirect_draws.h"
+#include "renderer/vk/buffer.h"
+#include "scenes/scene.h"
+
+namespace monoplane::passes {
+
+enum class CullView {
+    kLeft = MONOPLANE_CULL_LEFT,
+    kRight = MONOPLANE_CULL_RIGHT,
+    kMono = MONOPLANE_CULL_MONO
+};
+
+// One frame's culling inputs: the world -> clip matrix of each view drawn (reversed Z; the
+// eyes' far plane and C's near plane bound the regions), and the occlusion test's parameters.
+struct CullFrame {
+    std::array<std::optional<glm::dmat4>, MONOPLANE_CULL_VIEWS> view_proj;
+    bool honour_force_mono = false;
+    bool honour_force_stereo = false;
+    glm::dvec2 mono_viewport{0.0};        // C's viewport in pixels (eq. 8)
+    double hidden_depth_threshold = 0.0;  // the eyes' reversed-Z depth of m - eps
+    std::uint32_t pyramid_mips = 1;
+};
+
+class ChunkCullingPass {
+  public:
+    ChunkCullingPass(const vk_core::Context& ctx, const scenes::Scene& scene);
+
+    // Points the occlusion test at the merged depth pyramid (a view of all its mips, in
+    // eGeneral). Call between frames, before the first record().
+    void set_merged_depth(vk::ImageView pyramid, vk::Sampler nearest) const;
+    // Writes the frame's constants; call before recording the frame.
+    void set_frame(const CullFrame& frame);
+
+    // Phase 0: all views' lists; phase 1: C's list again, with occlusion culling. Each leaves a
+    // barrier that makes its results visible to indirect draws, predicates and later dispatches.
+    void record_frustum_phase(const vk::raii::CommandBuffer& cmd) const;
+    void record_occlusion_phase(const vk::raii::CommandBuffer& cmd) const;
+    // Copies the counts (and with lists, the draw lists) to host memory, after the frame's
+    // last use of them.
+    void record_readback(const vk::raii::CommandBuffer& cmd, bool lists) const;
+
+    IndirectDraws draws(CullView view) const;
+    // Conditional rendering on a counts word (MONOPLANE_PRED_*).
+    Predicate predicate(std::uint32_t word, bool inverted = false) const;
+
+    // After the frame has completed.
+    std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> counts() const;
+    // The chunk indices of a view's list, in draw order (record_readback with lists).
+    std::vector<std::uint32_t> drawn_chunks(CullView view) const;
+
+  private:
+    void record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const;
+
+    std::uint32_t chunk_count_ = 0;
+    vk_core::Buffer chunks_;
+    vk_core::Buffer commands_;
+    vk_core::Buffer counts_;
+    vk_core::Buffer constants_;
+    vk_core::Buffer counts_readback_;
+    vk_core::Buffer commands_readback_;
+    vk::raii::DescriptorSetLayout set_layout_{nullptr};
+    vk::raii::DescriptorPool pool_{nullptr};
+    vk::raii::DescriptorSet set_{nullptr};
+    vk::raii::PipelineLayout layout_{nullptr};
+    vk::raii::Pipeline pipeline_{nullptr};
+    const vk_core::Context& ctx_;
+};
+
+}  // namespace monoplane::passes

@@ -1,0 +1,158 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Sorts the scene's chunks into the views that need them (Fink et al. 2019, Sect. 4.4): the eyes'
+// lists (inside an eye frustum, whose far plane is m in hybrid modes) and C's list (inside C's
+// frustum, whose near plane is m - eps). A chunk straddling the plane lands in all three. Phase 1
+// re-sorts C's list with occlusion culling against the merged depth pyramid of both eyes.
+//
+// One workgroup walks the chunks in blocks; a prefix sum per block compacts each view's list in
+// chunk order, so the draw order (and any depth tie) is the same every frame and matches the
+// CPU reference.
+#include "renderer/passes/culling/cull_constants.h"
+
+layout(local_size_x = 256) in;
+
+layout(std430, set = 0, binding = 0) readonly buffer Chunks { ChunkRecord chunks[]; };
+struct DrawCommand {
+    uint index_count;
+    uint instance_count;
+    uint first_index;
+    int vertex_offset;
+    uint first_instance;
+};
+layout(std430, set = 0, binding = 1) writeonly buffer Commands { DrawCommand commands[]; };
+layout(std430, set = 0, binding = 2) buffer Counts { uint counts[MONOPLANE_COUNT_WORDS]; };
+layout(std140, set = 0, binding = 3) uniform Constants { CullConstants cull; };
+// Reversed-Z depth, minimum (farthest) over each texel's region of both eyes; mip 0 is level 2.
+layout(set = 0, binding = 4) uniform sampler2D merged_depth;
+layout(push_constant) uniform Push { uint phase; };  // 0: frustum, 1: C's occlusion culling
+
+const uint kBlock = 256;
+shared uint scan[MONOPLANE_CULL_VIEWS][kBlock];
+shared uint written[MONOPLANE_CULL_VIEWS];
+
+bool outside_frustum(uint view, vec3 lo, vec3 hi) {
+    for (uint i = 0; i < 6; ++i) {
+        vec4 p = cull.planes[view * 6 + i];
+        // The box corner furthest along the plane's normal.
+        vec3 corner = vec3(p.x >= 0.0 ? hi.x : lo.x, p.y >= 0.0 ? hi.y : lo.y,
+                           p.z >= 0.0 ? hi.z : lo.z);
+        if (dot(p.xyz, corner) + p.w < 0.0) return true;
+    }
+    return false;
+}
+
+// True when every eye pixel that would read the box's part of C is covered by content nearer
+// than m - eps (Sect. 4.4, "Occlusion Culling"): the box's screen rectangle in C selects the
+// pyramid level at which it spans at most 2 x 2 texels.
+bool hidden_in_both_eyes(vec3 lo, vec3 hi) {
+    vec2 area = cull.occlusion.xy;
+    vec2 rect_min = vec2(1e30);
+    vec2 rect_max = vec2(-1e30);
+    for (int i = 0; i < 8; ++i) {
+        vec3 corner = vec3((i & 1) != 0 ? hi.x : lo.x, (i & 2) != 0 ? hi.y : lo.y,
+                           (i & 4) != 0 ? hi.z : lo.z);
+        vec4 clip = cull.mono_view_proj * vec4(corner, 1.0);
+        // A box reaching behind C has no bounded rectangle: keep it.
+        if (clip.w <= 1e-4) return false;
+        vec2 pixel = (clip.xy / clip.w * 0.5 + 0.5) * area;
+        rect_min = min(rect_min, pixel);
+        rect_max = max(rect_max, pixel);
+    }
+    rect_min = clamp(rect_min, vec2(0.0), area - 1.0);
+    rect_max = clamp(rect_max, vec2(0.0), area - 1.0);
+    // Level 2 of the paper: 4 x 4 pixels per texel.
+    ivec2 first = ivec2(rect_min) >> 2;
+    ivec2 last = ivec2(rect_max) >> 2;
+    int mips = int(cull.occlusion.w);
+    int mip = 0;
+    while (mip + 1 < mips && (last.x - first.x > 1 || last.y - first.y > 1)) {
+        ++mip;
+        first >>= 1;
+        last >>= 1;
+    }
+    ivec2 size = textureSize(merged_depth, mip);
+    first = min(first, size - 1);
+    last = min(last, size - 1);
+    float farthest = 1.0;
+    for (int y = first.y; y <= last.y; ++y) {
+        for (int x = first.x; x <= last.x; ++x) {
+            farthest = min(farthest, texelFetch(merged_depth, ivec2(x, y), mip).r);
+        }
+    }
+    return farthest > cull.occlusion.z;
+}
+
+void main() {
+    uint lane = gl_LocalInvocationIndex;
+    uint chunk_count = cull.config.x;
+    uint views = cull.config.y;
+    bool occlusion_phase = phase == 1u;
+    bool honour_force_mono = (cull.config.w & MONOPLANE_CULL_HONOUR_FORCE_MONO) != 0u;
+    bool honour_force_stereo = (cull.config.w & MONOPLANE_CULL_HONOUR_FORCE_STEREO) != 0u;
+    if (lane < MONOPLANE_CULL_VIEWS) written[lane] = 0u;
+    barrier();
+
+    for (uint base = 0; base < chunk_count; base += kBlock) {
+        uint index = base + lane;
+        bool visible[MONOPLANE_CULL_VIEWS] = bool[](false, false, false);
+        if (index < chunk_count) {
+            ChunkRecord chunk = chunks[index];
+            vec3 lo = chunk.bounds_min.xyz;
+            vec3 hi = chunk.bounds_max.xyz;
+            uint flags = chunk.draw.w;
+            bool eyes_allowed = !(honour_force_mono && (flags & 1u) != 0u);
+            bool mono_allowed = !(honour_force_stereo && (flags & 2u) != 0u);
+            if (!occlusion_phase) {
+                for (uint v = 0; v < MONOPLANE_CULL_MONO; ++v) {
+                    visible[v] = (views & (1u << v)) != 0u && eyes_allowed &&
+                                 !outside_frustum(v, lo, hi);
+                }
+            }
+            visible[MONOPLANE_CULL_MONO] = (views & (1u << MONOPLANE_CULL_MONO)) != 0u &&
+                                           mono_allowed &&
+                                           !outside_frustum(MONOPLANE_CULL_MONO, lo, hi);
+            if (occlusion_phase && visible[MONOPLANE_CULL_MONO]) {
+                visible[MONOPLANE_CULL_MONO] = !hidden_in_both_eyes(lo, hi);
+            }
+        }
+        for (uint v = 0; v < MONOPLANE_CULL_VIEWS; ++v) scan[v][lane] = visible[v] ? 1u : 0u;
+        barrier();
+        // Inclusive prefix sums (Hillis and Steele) of the block's visibility, per view.
+        for (uint offset = 1; offset < kBlock; offset <<= 1) {
+            uint add[MONOPLANE_CULL_VIEWS];
+            for (uint v = 0; v < MONOPLANE_CULL_VIEWS; ++v) {
+                add[v] = lane >= offset ? scan[v][lane - offset] : 0u;
+            }
+            barrier();
+            for (uint v = 0; v < MONOPLANE_CULL_VIEWS; ++v) scan[v][lane] += add[v];
+            barrier();
+        }
+        for (uint v = 0; v < MONOPLANE_CULL_VIEWS; ++v) {
+            if (!visible[v]) continue;
+            ChunkRecord chunk = chunks[index];
+            uint slot = v * chunk_count + written[v] + scan[v][lane] - 1u;
+            // first_instance carries the chunk index (the shaders ignore it): read-back lists
+            // name their chunks.
+            commands[slot] = DrawCommand(chunk.draw.x, 1u, chunk.draw.y, int(chunk.draw.z), index);
+        }
+        barrier();
+        if (lane < MONOPLANE_CULL_VIEWS) written[lane] += scan[lane][kBlock - 1];
+        barrier();
+    }
+
+    if (lane == 0) {
+        uint mono = written[MONOPLANE_CULL_MONO];
+        counts[MONOPLANE_COUNT_MONO] = mono;
+        if (!occlusion_phase) {
+            uint near = written[MONOPLANE_CULL_LEFT] + written[MONOPLANE_CULL_RIGHT];
+            counts[MONOPLANE_COUNT_LEFT] = written[MONOPLANE_CULL_LEFT];
+            counts[MONOPLANE_COUNT_RIGHT] = written[MONOPLANE_CULL_RIGHT];
+            counts[MONOPLANE_COUNT_MONO_CANDIDATES] = mono;
+            counts[MONOPLANE_PRED_MONO_ANY] = mono > 0u ? 1u : 0u;
+            counts[MONOPLANE_PRED_NEAR_ANY] = near > 0u ? 1u : 0u;
+            counts[MONOPLANE_PRED_MONO_DEPTH_TESTED] = mono > 0u && near > 0u ? 1u : 0u;
+            counts[MONOPLANE_PRED_MONO_UNTESTED] = mono > 0u && near == 0u ? 1u : 0u;
+        }
+    }
+}

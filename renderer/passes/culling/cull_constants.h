@@ -1,0 +1,67 @@
+// The chunk-culling pass's inputs and outputs, declared once for C++ and GLSL (std140/std430 with
+// 16-byte members only, so the C++ layout is identical; static_asserts keep it that way).
+#ifndef MONOPLANE_CULL_CONSTANTS_H
+#define MONOPLANE_CULL_CONSTANTS_H
+
+#ifdef __cplusplus
+#include <cstdint>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+namespace monoplane::passes {
+using mat4 = glm::mat4;
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+#endif
+
+// Views of the culling pass: the draw list of view v starts at command v * chunk_count.
+#define MONOPLANE_CULL_LEFT 0
+#define MONOPLANE_CULL_RIGHT 1
+#define MONOPLANE_CULL_MONO 2
+#define MONOPLANE_CULL_VIEWS 3
+
+// config.w bits
+#define MONOPLANE_CULL_HONOUR_FORCE_MONO 1u    // kChunkForceMono chunks skip the eyes' lists
+#define MONOPLANE_CULL_HONOUR_FORCE_STEREO 2u  // kChunkForceStereo chunks skip C's list
+
+// Words of the counts buffer (uint32 each). The first three are each view's number of draws;
+// the others are predicates for conditional rendering, written by the frustum phase.
+#define MONOPLANE_COUNT_LEFT 0
+#define MONOPLANE_COUNT_RIGHT 1
+#define MONOPLANE_COUNT_MONO 2
+#define MONOPLANE_COUNT_MONO_CANDIDATES 3   // C's draws before occlusion culling
+#define MONOPLANE_PRED_MONO_ANY 4           // C has chunks: C, its composite (else the eyes' sky)
+#define MONOPLANE_PRED_NEAR_ANY 5           // an eye has chunks: the merged depth pyramid
+#define MONOPLANE_PRED_MONO_DEPTH_TESTED 6  // both: C may use the pyramid (discard, occlusion)
+#define MONOPLANE_PRED_MONO_UNTESTED 7      // C has chunks and no eye has any: C without it
+#define MONOPLANE_COUNT_WORDS 8
+
+struct CullConstants {
+    // Six planes per view (a, b, c, d; inside where a x + b y + c z + d >= 0), world space,
+    // normalised so that (a, b, c) is a unit vector: distances in metres, float-safe.
+    vec4 planes[MONOPLANE_CULL_VIEWS * 6];
+    // x: chunk count; y: bit v set when view v is drawn this frame; z: unused (the phase is a
+    // push constant); w: MONOPLANE_CULL_HONOUR_* bits.
+    uvec4 config;
+    mat4 mono_view_proj;  // world -> C's clip space (phase 1)
+    // x, y: C's viewport in pixels (eq. 8); z: the eyes' reversed-Z depth of m - eps (a pyramid
+    // value above it means every eye pixel that reads this part of C is covered by nearer
+    // content); w: the pyramid's mip count (mip 0 is level 2 of the paper).
+    vec4 occlusion;
+};
+
+// One chunk as the culling shader reads it (std430: 48 bytes).
+struct ChunkRecord {
+    vec4 bounds_min;  // xyz
+    vec4 bounds_max;  // xyz
+    // x: index count, y: first index, z: vertex offset (bit pattern of an int32), w: flags.
+    uvec4 draw;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(CullConstants) == 18 * 16 + 16 + 64 + 16, "std140 layout shared with GLSL");
+static_assert(sizeof(ChunkRecord) == 48, "std430 layout shared with GLSL");
+}  // namespace monoplane::passes
+#endif
+
+#endif

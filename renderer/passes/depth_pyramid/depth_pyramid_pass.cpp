@@ -1,0 +1,198 @@
+#include "renderer/passes/depth_pyramid/depth_pyramid_pass.h"
+
+#include <algorithm>
+#include <bit>
+
+#include "renderer/vk/memory.h"
+#include "renderer/vk/pipeline.h"
+
+namespace monoplane::passes {
+namespace {
+
+const std::uint32_t kMergeEyeDepths[] = {
+#include "merge_eye_depths.comp.spv.inc"
+};
+const std::uint32_t kReduceDepth[] = {
+#include "reduce_depth.comp.spv.inc"
+};
+
+using Stage = vk::PipelineStageFlagBits2;
+using Access = vk::AccessFlagBits2;
+constexpr vk::Format kFormat = vk::Format::eR32Sfloat;
+constexpr std::uint32_t kGroup = 8;  // the shaders' local size in x and y
+
+std::uint32_t groups(std::uint32_t size) {
+    return (size + kGroup - 1) / kGroup;
+}
+
+void storage_barrier(const vk::raii::CommandBuffer& cmd, vk::PipelineStageFlags2 dst_stage) {
+    const vk::MemoryBarrier2 barrier(Stage::eComputeShader, Access::eShaderStorageWrite, dst_stage,
+                                     Access::eShaderStorageRead | Access::eShaderSampledRead);
+    cmd.pipelineBarrier2(vk::DependencyInfo({}, barrier));
+}
+
+}  // namespace
+
+DepthPyramidPass::DepthPyramidPass(const vk_core::Context& ctx) : ctx_(ctx) {
+    nearest_ = vk::raii::Sampler(
+        ctx.device(),
+        vk::SamplerCreateInfo({}, vk::Filter::eNearest, vk::Filter::eNearest,
+                              vk::SamplerMipmapMode::eNearest, vk::SamplerAddressMode::eClampToEdge,
+                              vk::SamplerAddressMode::eClampToEdge,
+                              vk::SamplerAddressMode::eClampToEdge, 0.0f, VK_FALSE, 1.0f, VK_FALSE,
+                              vk::CompareOp::eNever, 0.0f, VK_LOD_CLAMP_NONE));
+    using Type = vk::DescriptorType;
+    const auto compute = vk::ShaderStageFlagBits::eCompute;
+    const std::array merge_bindings = {
+        vk::DescriptorSetLayoutBinding(0, Type::eCombinedImageSampler, 2, compute),
+        vk::DescriptorSetLayoutBinding(1, Type::eStorageImage, 1, compute),
+    };
+    merge_layout_ = vk::raii::DescriptorSetLayout(
+        ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, merge_bindings));
+    const std::array reduce_bindings = {
+        vk::DescriptorSetLayoutBinding(0, Type::eStorageImage, 1, compute),
+        vk::DescriptorSetLayoutBinding(1, Type::eStorageImage, 1, compute),
+    };
+    reduce_layout_ = vk::raii::DescriptorSetLayout(
+        ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, reduce_bindings));
+    const vk::PushConstantRange push(compute, 0, 6 * sizeof(glm::vec4));
+    const vk::DescriptorSetLayout merge_layout = *merge_layout_;
+    const vk::DescriptorSetLayout reduce_layout = *reduce_layout_;
+    merge_pipeline_layout_ = vk::raii::PipelineLayout(
+        ctx.device(), vk::PipelineLayoutCreateInfo({}, merge_layout, push));
+    reduce_pipeline_layout_ =
+        vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, reduce_layout));
+    const vk::raii::ShaderModule merge = vk_core::make_shader(ctx, kMergeEyeDepths);
+    const vk::raii::ShaderModule reduce = vk_core::make_shader(ctx, kReduceDepth);
+    merge_ = vk_core::make_compute_pipeline(ctx, *merge_pipeline_layout_, *merge);
+    reduce_ = vk_core::make_compute_pipeline(ctx, *reduce_pipeline_layout_, *reduce);
+    // A 1 x 1 pyramid until C exists: the culling pass's descriptor must name a valid image.
+    create_image({1, 1});
+}
+
+DepthPyramidPass::~DepthPyramidPass() = default;
+
+bool DepthPyramidPass::resize(vk::Extent2D mono_allocation) {
+    const vk::Extent2D needed((mono_allocation.width + 3) / 4, (mono_allocation.height + 3) / 4);
+    if (needed.width <= extent_.width && needed.height <= extent_.height) return false;
+    create_image(needed);
+    return true;
+}
+
+void DepthPyramidPass::create_image(vk::Extent2D extent) {
+    extent_ = extent;
+    mips_ = static_cast<std::uint32_t>(std::bit_width(std::max(extent.width, extent.height)));
+    reduce_sets_.clear();
+    merge_set_ = nullptr;
+    pool_ = nullptr;
+    mip_views_.clear();
+    all_mips_ = nullptr;
+    image_ = nullptr;
+    memory_ = nullptr;
+
+    image_ = vk::raii::Image(
+        ctx_.device(),
+        vk::ImageCreateInfo({}, vk::ImageType::e2D, kFormat, vk::Extent3D(extent, 1), mips_, 1,
+                            vk::SampleCountFlagBits::e1, vk::ImageTiling::eOptimal,
+                            vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled |
+                                vk::ImageUsageFlagBits::eTransferDst,
+                            vk::SharingMode::eExclusive));
+    memory_ = vk_core::allocate_memory(ctx_, image_.getMemoryRequirements(),
+                                       vk::MemoryPropertyFlagBits::eDeviceLocal);
+    image_.bindMemory(*memory_, 0);
+    const auto color = vk::ImageAspectFlagBits::eColor;
+    all_mips_ = vk::raii::ImageView(
+        ctx_.device(), vk::ImageViewCreateInfo({}, *image_, vk::ImageViewType::e2D, kFormat, {},
+                                               vk::ImageSubresourceRange(color, 0, mips_, 0, 1)));
+    for (std::uint32_t mip = 0; mip < mips_; ++mip) {
+        mip_views_.emplace_back(
+            ctx_.device(), vk::ImageViewCreateInfo({}, *image_, vk::ImageViewType::e2D, kFormat, {},
+                                                   vk::ImageSubresourceRange(color, mip, 1, 0, 1)));
+    }
+    // The pyramid lives in eGeneral: written as storage, read by texelFetch, never moved. Its
+    // first contents are "nothing needs C" (1), never read before a build.
+    ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+        const vk::ImageMemoryBarrier2 barrier(
+            Stage::eNone, Access::eNone, Stage::eClear, Access::eTransferWrite,
+            vk::ImageLayout::eUndefined, vk::ImageLayout::eGeneral, VK_QUEUE_FAMILY_IGNORED,
+            VK_QUEUE_FAMILY_IGNORED, *image_, vk::ImageSubresourceRange(color, 0, mips_, 0, 1));
+        cmd.pipelineBarrier2(vk::DependencyInfo({}, {}, {}, barrier));
+        cmd.clearColorImage(*image_, vk::ImageLayout::eGeneral,
+                            vk::ClearColorValue(std::array{1.0f, 1.0f, 1.0f, 1.0f}),
+                            vk::ImageSubresourceRange(color, 0, mips_, 0, 1));
+        const vk::MemoryBarrier2 done(Stage::eClear, Access::eTransferWrite,
+                                      Stage::eComputeShader | Stage::eFragmentShader,
+                                      Access::eShaderRead | Access::eShaderWrite);
+        cmd.pipelineBarrier2(vk::DependencyInfo({}, done));
+    });
+
+    using Type = vk::DescriptorType;
+    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eCombinedImageSampler, 2),
+                                   vk::DescriptorPoolSize(Type::eStorageImage, 2 * mips_ + 1)};
+    pool_ = vk::raii::DescriptorPool(
+        ctx_.device(),
+        vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, mips_,
+                                     pool_sizes));
+    const vk::DescriptorSetLayout merge_layout = *merge_layout_;
+    merge_set_ = std::move(vk::raii::DescriptorSets(
+        ctx_.device(), vk::DescriptorSetAllocateInfo(*pool_, merge_layout))[0]);
+    const vk::DescriptorImageInfo level2(nullptr, *mip_views_[0], vk::ImageLayout::eGeneral);
+    ctx_.device().updateDescriptorSets(
+        vk::WriteDescriptorSet(*merge_set_, 1, 0, Type::eStorageImage, level2), {});
+    for (std::uint32_t mip = 1; mip < mips_; ++mip) {
+        const vk::DescriptorSetLayout reduce_layout = *reduce_layout_;
+        reduce_sets_.push_back(std::move(vk::raii::DescriptorSets(
+            ctx_.device(), vk::DescriptorSetAllocateInfo(*pool_, reduce_layout))[0]));
+        const vk::DescriptorImageInfo finer(nullptr, *mip_views_[mip - 1],
+                                            vk::ImageLayout::eGeneral);
+        const vk::DescriptorImageInfo coarser(nullptr, *mip_views_[mip], vk::ImageLayout::eGeneral);
+        const std::array writes = {
+            vk::WriteDescriptorSet(*reduce_sets_.back(), 0, 0, Type::eStorageImage, finer),
+            vk::WriteDescriptorSet(*reduce_sets_.back(), 1, 0, Type::eStorageImage, coarser),
+        };
+        ctx_.device().updateDescriptorSets(writes, {});
+    }
+}
+
+void DepthPyramidPass::set_eye_depths(vk::ImageView left, vk::ImageView right) const {
+    const std::array infos = {
+        vk::DescriptorImageInfo(*nearest_, left, vk::ImageLayout::eDepthReadOnlyOptimal),
+        vk::DescriptorImageInfo(*nearest_, right, vk::ImageLayout::eDepthReadOnlyOptimal),
+    };
+    ctx_.device().updateDescriptorSets(
+        vk::WriteDescriptorSet(*merge_set_, 0, 0, vk::DescriptorType::eCombinedImageSampler, infos),
+        {});
+}
+
+void DepthPyramidPass::record(const vk::raii::CommandBuffer& cmd,
+                              const std::array<glm::dmat3, 2>& mono_to_eye,
+                              const std::optional<Predicate>& when) const {
+    std::array<glm::vec4, 6> rows{};
+    for (int e = 0; e < 2; ++e) {
+        for (int r = 0; r < 3; ++r) {
+            // glm is column-major: element (row r, column c) is m[c][r].
+            rows[3 * e + r] =
+                glm::vec4(mono_to_eye[e][0][r], mono_to_eye[e][1][r], mono_to_eye[e][2][r], 0.0f);
+        }
+    }
+    with_predicate(cmd, when, [&] {
+        cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *merge_);
+        cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *merge_pipeline_layout_, 0,
+                               *merge_set_, {});
+        cmd.pushConstants<std::array<glm::vec4, 6>>(*merge_pipeline_layout_,
+                                                    vk::ShaderStageFlagBits::eCompute, 0, rows);
+        cmd.dispatch(groups(extent_.width), groups(extent_.height), 1);
+        cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *reduce_);
+        for (std::uint32_t mip = 1; mip < mips_; ++mip) {
+            storage_barrier(cmd, Stage::eComputeShader);
+            cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *reduce_pipeline_layout_, 0,
+                                   *reduce_sets_[mip - 1], {});
+            cmd.dispatch(groups(std::max(extent_.width >> mip, 1u)),
+                         groups(std::max(extent_.height >> mip, 1u)), 1);
+        }
+    });
+    // The culling pass (phase 1) and C's fragment shader read the pyramid.
+    storage_barrier(cmd, Stage::eComputeShader | Stage::eFragmentShader);
+}
+
+}  // namespace monoplane::passes
