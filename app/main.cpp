@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     add_devices_command(root, global);
     add_protocol_command(root, global);
     add_study_command(root, global);
+    add_bench_command(root, global);
     try {
         root.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

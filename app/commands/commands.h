@@ -12,5 +12,6 @@ void add_devices_command(CLI::App& root, const GlobalOptions& global);
 void add_rig_command(CLI::App& root, const GlobalOptions& global);
 void add_protocol_command(CLI::App& root, const GlobalOptions& global);
 void add_study_command(CLI::App& root, const GlobalOptions& global);
+void add_bench_command(CLI::App& root, const GlobalOptions& global);
 
 }  // namespace monoplane::app

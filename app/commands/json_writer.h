@@ -54,6 +54,12 @@ class JsonWriter {
         return *this;
     }
 
+    JsonWriter& null(std::string_view key) {
+        prefix(key);
+        out_ += "null";
+        return *this;
+    }
+
     const std::string& str() const { return out_; }
 
   private:

@@ -134,3 +134,52 @@ execute_process(COMMAND ${MONOPLANE} protocol check ${OUT}/bad.toml
 if(rc EQUAL 0 OR NOT log MATCHES "bad.toml:3" OR NOT log MATCHES "ordr")
   message(FATAL_ERROR "protocol check must name file, line and key (${rc}): ${log}")
 endif()
+
+# The benchmark (DESIGN.md section 8) on a tiny sweep: the files, the keys tools read, one run per
+# configuration, m = far equal to stereo in primitives, and bad input refused.
+set(dir ${OUT}/bench)
+file(REMOVE_RECURSE ${dir})
+execute_process(
+  COMMAND ${MONOPLANE} --validation bench --scenes spheres --modes stereo,hybrid,hybrid-farfield
+          --mono-planes 3,far --hmd vive --width 64 --height 72 --detail test --frames 1
+          --warmup 0 --out ${dir}
+  RESULT_VARIABLE rc ERROR_VARIABLE log)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "bench failed (${rc}):\n${log}")
+endif()
+foreach(file bench.json bench.csv spheres_time.svg spheres_primitives.svg
+        spheres_time_vs_error.svg)
+  if(NOT EXISTS ${dir}/${file})
+    message(FATAL_ERROR "bench did not write ${file}")
+  endif()
+endforeach()
+file(READ ${dir}/bench.json json)
+string(JSON runs LENGTH "${json}" runs)
+# stereo + hybrid (3 variants x 2 planes) + hybrid-farfield (2 planes)
+if(NOT runs EQUAL 9)
+  message(FATAL_ERROR "bench.json holds ${runs} runs, expected 9")
+endif()
+math(EXPR last "${runs} - 1")
+foreach(i RANGE ${last})
+  foreach(key scene mode variant mono_plane frame_ms_median frame_ms_p90 passes primitives
+          fragments ssim_vs_stereo max_error_px drift_px)
+    string(JSON value ERROR_VARIABLE missing GET "${json}" runs ${i} ${key})
+    if(missing)
+      message(FATAL_ERROR "bench run ${i} lacks '${key}'")
+    endif()
+  endforeach()
+  string(JSON mode GET "${json}" runs ${i} mode)
+  string(JSON far GET "${json}" runs ${i} mono_plane_is_far)
+  string(JSON primitives GET "${json}" runs ${i} primitives)
+  if(mode STREQUAL "stereo")
+    set(stereo_primitives ${primitives})
+  elseif(far AND NOT primitives EQUAL stereo_primitives)
+    message(FATAL_ERROR "bench: at m = far ${mode} drew ${primitives} primitives, stereo "
+                        "${stereo_primitives}")
+  endif()
+endforeach()
+execute_process(COMMAND ${MONOPLANE} bench --mono-planes 3,nine --out ${OUT}/bad-bench
+                RESULT_VARIABLE rc ERROR_VARIABLE log)
+if(rc EQUAL 0 OR NOT log MATCHES "nine")
+  message(FATAL_ERROR "bench must refuse a bad mono plane, naming it (${rc}): ${log}")
+endif()

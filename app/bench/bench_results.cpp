@@ -1,0 +1,134 @@
+#include "app/bench/bench_results.h"
+
+#include <set>
+#include <sstream>
+
+#include "app/commands/json_writer.h"
+
+namespace monoplane::app {
+
+void add_ratios_to_stereo(BenchReport& report) {
+    std::map<std::string, const BenchRun*> stereo;
+    for (const BenchRun& run : report.runs) {
+        if (run.mode == "stereo") stereo[run.scene] = &run;
+    }
+    for (BenchRun& run : report.runs) {
+        const auto found = stereo.find(run.scene);
+        if (found == stereo.end()) continue;
+        const BenchRun& reference = *found->second;
+        if (reference.frame_ms_median > 0.0) {
+            run.time_ratio = run.frame_ms_median / reference.frame_ms_median;
+        }
+        if (reference.primitives > 0) {
+            run.primitive_ratio =
+                static_cast<double>(run.primitives) / static_cast<double>(reference.primitives);
+        }
+    }
+}
+
+namespace {
+
+void optional_value(JsonWriter& j, std::string_view key, const std::optional<double>& value) {
+    if (value) {
+        j.value(key, *value);
+    } else {
+        j.null(key);
+    }
+}
+
+}  // namespace
+
+std::string bench_json(const BenchReport& report) {
+    JsonWriter j;
+    j.begin_object();
+    j.value("device", report.device).value("hmd", report.hmd);
+    j.value("width", report.width).value("height", report.height);
+    j.value("detail", report.detail).value("view", report.view).value("seed", report.seed);
+    j.value("warmup_frames", report.warmup).value("frames", report.frames);
+    j.begin_array("runs");
+    for (const BenchRun& run : report.runs) {
+        j.begin_object();
+        j.value("scene", run.scene).value("mode", run.mode).value("variant", run.variant);
+        optional_value(j, "mono_plane", run.mono_plane);
+        j.value("mono_plane_is_far", run.mono_plane_is_far);
+        j.value("frame_ms_median", run.frame_ms_median).value("frame_ms_p90", run.frame_ms_p90);
+        j.value("frame_ms_p10", run.frame_ms_p10).value("cpu_ms_median", run.cpu_ms_median);
+        j.begin_object("passes");
+        for (const auto& [name, ms] : run.pass_ms_median) j.value(name, ms);
+        j.end_object();
+        j.begin_object("passes_p10");
+        for (const auto& [name, ms] : run.pass_ms_p10) j.value(name, ms);
+        j.end_object();
+        j.begin_object("passes_p90");
+        for (const auto& [name, ms] : run.pass_ms_p90) j.value(name, ms);
+        j.end_object();
+        j.value("primitives", run.primitives).value("fragments", run.fragments);
+        j.begin_object("view_primitives");
+        for (const auto& [view, n] : run.view_primitives) j.value(view, n);
+        j.end_object();
+        j.begin_object("draws");
+        for (const auto& [view, n] : run.view_draws) j.value(view, n);
+        j.end_object();
+        optional_value(j, "ssim_vs_stereo", run.ssim_vs_stereo);
+        optional_value(j, "max_error_px", run.max_error_px);
+        optional_value(j, "drift_px", run.drift_px);
+        j.value("drift_patches", static_cast<std::uint64_t>(run.drift_patches));
+        optional_value(j, "time_ratio_vs_stereo", run.time_ratio);
+        optional_value(j, "primitive_ratio_vs_stereo", run.primitive_ratio);
+        j.end_object();
+    }
+    j.end_array();
+    j.end_object();
+    return j.str();
+}
+
+namespace {
+
+std::string number(const std::optional<double>& value) {
+    if (!value) return "";
+    std::ostringstream text;
+    text.precision(10);
+    text << *value;
+    return text.str();
+}
+
+}  // namespace
+
+std::string bench_csv(const BenchReport& report) {
+    std::set<std::string> pass_names;
+    for (const BenchRun& run : report.runs) {
+        for (const auto& [name, ms] : run.pass_ms_median) pass_names.insert(name);
+    }
+    std::ostringstream csv;
+    csv << "scene,mode,variant,mono_plane,mono_plane_is_far,frame_ms_median,frame_ms_p10,"
+           "frame_ms_p90,cpu_ms_median,primitives,fragments,primitives_left,primitives_right,"
+           "primitives_mono,draws_left,draws_right,draws_mono,ssim_vs_stereo,max_error_px,"
+           "drift_px,time_ratio_vs_stereo,primitive_ratio_vs_stereo";
+    for (const std::string& name : pass_names) csv << ",pass_ms_" << name;
+    csv << "\n";
+    auto count = [](const std::map<std::string, std::uint64_t>& values, const char* key) {
+        const auto found = values.find(key);
+        return found == values.end() ? std::uint64_t{0} : found->second;
+    };
+    for (const BenchRun& run : report.runs) {
+        csv << run.scene << "," << run.mode << "," << run.variant << "," << number(run.mono_plane)
+            << "," << (run.mono_plane_is_far ? "true" : "false") << ","
+            << number(run.frame_ms_median) << "," << number(run.frame_ms_p10) << ","
+            << number(run.frame_ms_p90) << "," << number(run.cpu_ms_median) << "," << run.primitives
+            << "," << run.fragments << "," << count(run.view_primitives, "left") << ","
+            << count(run.view_primitives, "right") << "," << count(run.view_primitives, "mono")
+            << "," << count(run.view_draws, "left") << "," << count(run.view_draws, "right") << ","
+            << count(run.view_draws, "mono") << "," << number(run.ssim_vs_stereo) << ","
+            << number(run.max_error_px) << "," << number(run.drift_px) << ","
+            << number(run.time_ratio) << "," << number(run.primitive_ratio);
+        for (const std::string& name : pass_names) {
+            const auto found = run.pass_ms_median.find(name);
+            csv << ",";
+            if (found != run.pass_ms_median.end()) csv << number(found->second);
+        }
+        csv << "\n";
+    }
+    return csv.str();
+}
+
+}  // namespace monoplane::app

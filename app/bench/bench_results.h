@@ -1,0 +1,62 @@
+// The results of `monoplane bench` (DESIGN.md section 8): one run per scene x mode x variant x
+// mono plane, and their CSV and JSON forms. Plain data; the sweep is in bench_command.cpp.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace monoplane::app {
+
+struct BenchRun {
+    std::string scene;
+    std::string mode;                  // stereo, hybrid, hybrid-farfield
+    std::string variant;               // hybrid: no-opt, discard, occlusion-cull; otherwise empty
+    std::optional<double> mono_plane;  // none for stereo
+    bool mono_plane_is_far = false;    // m = f: C skipped, hybrid records stereo's passes
+    int frames = 0;
+    double frame_ms_median = 0.0;
+    double frame_ms_p10 = 0.0;
+    double frame_ms_p90 = 0.0;
+    double cpu_ms_median = 0.0;
+    std::map<std::string, double> pass_ms_median;
+    std::map<std::string, double> pass_ms_p10;
+    std::map<std::string, double> pass_ms_p90;
+    // Pipeline statistics of the scene views (left, right, mono): clipping input primitives
+    // and fragment invocations, and the chunks each view drew.
+    std::map<std::string, std::uint64_t> view_primitives;
+    std::map<std::string, std::uint64_t> view_draws;
+    std::uint64_t primitives = 0;
+    std::uint64_t fragments = 0;  // all views, composites included
+    // Accuracy against stereo (hybrid modes below far).
+    std::optional<double> ssim_vs_stereo;  // mean of both eyes, Gaussian SSIM
+    std::optional<double> max_error_px;    // analytic supremum (rig)
+    std::optional<double> drift_px;        // measured: 95th percentile of patch displacements
+    std::size_t drift_patches = 0;
+    // Ratios to stereo in the same run (same scene and resolution).
+    std::optional<double> time_ratio;
+    std::optional<double> primitive_ratio;
+};
+
+struct BenchReport {
+    std::string device;
+    std::string hmd;
+    int width = 0;
+    int height = 0;
+    std::string detail;
+    std::string view;
+    std::uint64_t seed = 0;
+    int warmup = 0;
+    int frames = 0;
+    std::vector<BenchRun> runs;
+};
+
+// Fills time_ratio and primitive_ratio from each scene's stereo run.
+void add_ratios_to_stereo(BenchReport& report);
+
+std::string bench_json(const BenchReport& report);
+std::string bench_csv(const BenchReport& report);
+
+}  // namespace monoplane::app

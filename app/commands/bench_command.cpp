@@ -1,0 +1,424 @@
+// `monoplane bench` (DESIGN.md section 8): sweeps scenes x modes x variants x mono planes,
+// measures GPU time per pass, pipeline statistics and each hybrid configuration's accuracy
+// against stereo, and writes bench.json, bench.csv and the figures of app/bench/bench_plots.h.
+// Speed is reported as ratios to stereo within one run (DESIGN.md section 9).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "app/bench/bench_plots.h"
+#include "app/bench/bench_results.h"
+#include "app/commands/commands.h"
+#include "app/commands/frame_summary.h"
+#include "hmd/profile.h"
+#include "renderer/modes/mode_renderer.h"
+#include "renderer/quality/drift.h"
+#include "renderer/quality/ssim.h"
+#include "renderer/vk/context.h"
+#include "scenes/generate.h"
+#include "study/protocol.h"
+
+namespace monoplane::app {
+namespace {
+
+// The ten distances of protocols/fink2019.toml (papers/000 Sect. 6) and the far plane.
+constexpr const char* kDefaultMonoPlanes = "1.6,3,5,8,12,16,20,25,31,39.5,far";
+
+struct BenchOptions {
+    std::string scenes = "beams,landscape,spheres";
+    std::string modes = "stereo,hybrid,hybrid-farfield";
+    std::string variants = "no-opt,discard,occlusion-cull";
+    std::string mono_planes = kDefaultMonoPlanes;
+    std::string protocol;  // takes the mono planes from a protocol (plus far)
+    std::string hmd = "vive";
+    int width = 0;
+    int height = 0;
+    std::string detail = "low";
+    std::string view = "default";
+    std::uint64_t seed = scenes::kDefaultSeed;
+    int frames = 10;
+    int warmup = 3;
+    bool accuracy = true;
+    std::string out;
+};
+
+std::vector<std::string> split_list(const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ',')) {
+        item.erase(0, item.find_first_not_of(" \t"));
+        item.erase(item.find_last_not_of(" \t") + 1);
+        if (!item.empty()) items.push_back(item);
+    }
+    return items;
+}
+
+// A mono plane of the sweep: metres, or the far plane.
+struct Plane {
+    double metres = 0.0;
+    bool far = false;
+};
+
+std::vector<Plane> parse_planes(const BenchOptions& o, double far) {
+    std::vector<Plane> planes;
+    if (!o.protocol.empty()) {
+        const study::Protocol protocol = study::load_protocol(o.protocol).value_or_throw();
+        for (double m : protocol.mono_planes) planes.push_back({m, false});
+        planes.push_back({far, true});
+        return planes;
+    }
+    for (const std::string& item : split_list(o.mono_planes)) {
+        if (item == "far") {
+            planes.push_back({far, true});
+            continue;
+        }
+        char* end = nullptr;
+        const double m = std::strtod(item.c_str(), &end);
+        if (end == item.c_str() || *end != '\0' || !std::isfinite(m) || m <= 0.1) {
+            throw UserError("--mono-planes: '" + item +
+                            "' is not a distance in metres beyond the near plane (0.1) or 'far'");
+        }
+        planes.push_back({std::min(m, far), m >= far});
+    }
+    if (planes.empty()) throw UserError("--mono-planes: no distance given");
+    return planes;
+}
+
+std::string plane_text(double metres) {
+    std::ostringstream text;
+    text << metres;
+    return text.str();
+}
+
+// One line of progress on stderr, rewritten in place.
+class Progress {
+  public:
+    explicit Progress(int total)
+        : total_(total), start_(std::chrono::steady_clock::now()), terminal_(isatty(2) != 0) {}
+
+    void show(int done, const std::string& what) const {
+        constexpr int kWidth = 24;
+        const int filled = total_ > 0 ? done * kWidth / total_ : kWidth;
+        const double elapsed =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        std::ostringstream line;
+        line << "\r[" << std::string(static_cast<std::size_t>(filled), '#')
+             << std::string(static_cast<std::size_t>(kWidth - filled), '-') << "] " << done << "/"
+             << total_ << " " << what;
+        if (done > 0 && done < total_) {
+            const double remaining = elapsed / done * (total_ - done);
+            line << "  about " << static_cast<int>(remaining / 60) << " min "
+                 << static_cast<int>(std::fmod(remaining, 60.0)) << " s left";
+        }
+        // A terminal gets one line rewritten in place; a log file one line per step.
+        if (terminal_) {
+            std::cerr << std::left << std::setw(110) << line.str() << std::flush;
+        } else {
+            std::cerr << line.str().substr(1) << "\n";
+        }
+    }
+
+  private:
+    int total_;
+    std::chrono::steady_clock::time_point start_;
+    bool terminal_;
+};
+
+// Warm-up frames (shader compilation, the one-off shadow map, C's allocation) then measured
+// frames without read-back.
+BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs,
+                 const BenchOptions& o) {
+    renderer.set_read_back(false);
+    std::vector<profile::FrameStats> frames;
+    for (int i = 0; i < o.warmup + o.frames; ++i) {
+        profile::FrameStats stats = renderer.render_frame(inputs);
+        if (i >= o.warmup) frames.push_back(std::move(stats));
+    }
+    const FrameSummary summary = summarize(frames);
+    BenchRun run;
+    run.frames = summary.frames;
+    run.frame_ms_median = summary.frame_ms_median;
+    run.frame_ms_p90 = summary.frame_ms_p90;
+    run.cpu_ms_median = summary.cpu_ms_median;
+    run.pass_ms_median = summary.pass_ms_median;
+    std::vector<double> frame_ms;
+    std::map<std::string, std::vector<double>> pass_ms;
+    for (const profile::FrameStats& f : frames) {
+        frame_ms.push_back(f.gpu_frame_ms);
+        for (const profile::PassTime& p : f.passes) pass_ms[p.name].push_back(p.gpu_ms);
+    }
+    run.frame_ms_p10 = percentile(frame_ms, 0.1);
+    for (const auto& [name, times] : pass_ms) {
+        run.pass_ms_p10[name] = percentile(times, 0.1);
+        run.pass_ms_p90[name] = percentile(times, 0.9);
+    }
+    for (const profile::ViewStatistics& v : summary.views) {
+        run.fragments += v.fragment_invocations;
+        if (v.view.find('.') != std::string::npos) continue;  // composites: not scene work
+        run.primitives += v.clipping_invocations;
+        run.view_primitives[v.view] = v.clipping_invocations;
+        run.view_draws[v.view] = v.draws;
+    }
+    return run;
+}
+
+// The stereo reference's images and depth, for the accuracy of every hybrid configuration.
+struct Reference {
+    std::array<modes::RgbaImage, 2> images;
+    std::array<std::vector<float>, 2> depth;
+};
+
+struct Accuracy {
+    double ssim = 0.0;
+    double drift_px = 0.0;
+    std::size_t drift_patches = 0;
+};
+
+Accuracy measure_accuracy(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs,
+                          const Reference& reference) {
+    renderer.set_read_back(true);
+    renderer.render_frame(inputs);
+    renderer.set_read_back(false);
+    Accuracy accuracy;
+    for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
+        const int e = static_cast<int>(eye);
+        const quality::ImageView a = quality::rgba_view(reference.images[e]);
+        const quality::ImageView b = quality::rgba_view(renderer.eye_image(eye));
+        accuracy.ssim += 0.5 * quality::ssim(a, b).value_or_throw().mean;
+        // Drift where stereo sees beyond the plane (where hybrid can differ at all).
+        std::vector<std::uint8_t> beyond(reference.depth[e].size());
+        for (std::size_t i = 0; i < beyond.size(); ++i) {
+            beyond[i] = reference.depth[e][i] > inputs.mono_plane ? 1 : 0;
+        }
+        const quality::DriftMeasurement drift =
+            quality::measure_drift(a, b, beyond).value_or_throw();
+        accuracy.drift_px = std::max(accuracy.drift_px, drift.p95_px);
+        accuracy.drift_patches += drift.patches;
+    }
+    return accuracy;
+}
+
+void run_bench(const BenchOptions& o, const GlobalOptions& global) {
+    std::vector<scenes::SceneId> scene_ids;
+    for (const std::string& name : split_list(o.scenes)) {
+        const auto id = scenes::parse_scene_id(name);
+        if (!id) throw UserError("--scenes: '" + name + "' is not beams, landscape or spheres");
+        scene_ids.push_back(*id);
+    }
+    std::vector<modes::Mode> mode_list;
+    for (const std::string& name : split_list(o.modes)) {
+        const auto mode = modes::parse_mode(name);
+        if (!mode) {
+            throw UserError("--modes: '" + name +
+                            "' is not stereo, hybrid or hybrid-farfield (the single-pass stereo "
+                            "modes arrive with their issue)");
+        }
+        mode_list.push_back(*mode);
+    }
+    std::vector<modes::MonoCulling> variants;
+    for (const std::string& name : split_list(o.variants)) {
+        const auto variant = modes::parse_mono_culling(name);
+        if (!variant) {
+            throw UserError("--variants: '" + name + "' is not no-opt, discard or occlusion-cull");
+        }
+        variants.push_back(*variant);
+    }
+    const auto detail = scenes::parse_detail(o.detail);
+    if (!detail) throw UserError("--detail " + o.detail + ": use test, low, medium, high or ultra");
+    if ((o.width > 0) != (o.height > 0)) throw UserError("--width and --height go together");
+    if (scene_ids.empty() || mode_list.empty()) throw UserError("nothing to measure");
+
+    const std::filesystem::path out(o.out);
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (ec || !std::filesystem::is_directory(out)) {
+        throw UserError("--out " + o.out + ": cannot create the directory (" + ec.message() + ")");
+    }
+
+    const hmd::HmdProfile profile = hmd::load_hmd_profile(o.hmd).value_or_throw();
+    const vk::Extent2D extent(static_cast<std::uint32_t>(o.width > 0 ? o.width : profile.width),
+                              static_cast<std::uint32_t>(o.height > 0 ? o.height : profile.height));
+    modes::FrameInputs base;
+    base.views.ipd = profile.ipd;
+    base.views.left = profile.left;
+    base.views.right = profile.right;
+    const std::vector<Plane> planes = parse_planes(o, base.views.far);
+    double nearest = base.views.far;
+    for (const Plane& p : planes) nearest = std::min(nearest, p.metres);
+
+    auto ctx = vk_core::Context::create({global.validation, global.device}).value_or_throw();
+    std::cerr << "device: " << ctx->device_info().name << "\n";
+
+    int total = 0;
+    for (modes::Mode mode : mode_list) {
+        if (mode == modes::Mode::kStereo) total += 1;
+        if (mode == modes::Mode::kHybrid)
+            total += static_cast<int>(planes.size() * variants.size());
+        if (mode == modes::Mode::kHybridFarfield) total += static_cast<int>(planes.size());
+    }
+    total *= static_cast<int>(scene_ids.size());
+    Progress progress(total);
+    int done = 0;
+
+    BenchReport report;
+    report.device = ctx->device_info().name;
+    report.hmd = profile.name;
+    report.width = static_cast<int>(extent.width);
+    report.height = static_cast<int>(extent.height);
+    report.detail = o.detail;
+    report.view = o.view;
+    report.seed = o.seed;
+    report.warmup = o.warmup;
+    report.frames = o.frames;
+
+    for (scenes::SceneId id : scene_ids) {
+        const std::string scene_name(scenes::scene_name(id));
+        progress.show(done, "generating " + scene_name);
+        const scenes::Scene scene = scenes::generate_scene(id, *detail, o.seed);
+        const scenes::Viewpoint* viewpoint = scene.find_viewpoint(o.view);
+        if (!viewpoint)
+            throw UserError("--view " + o.view + ": " + scene_name + " has no such view");
+        modes::FrameInputs inputs = base;
+        inputs.views.head = viewpoint->head;
+
+        // Stereo: the timing reference and the images every hybrid run is compared with.
+        Reference reference;
+        {
+            modes::RendererOptions options;
+            options.read_back_depth = true;
+            modes::ModeRenderer stereo(*ctx, scene, modes::Mode::kStereo, extent, options);
+            const bool timed = std::find(mode_list.begin(), mode_list.end(),
+                                         modes::Mode::kStereo) != mode_list.end();
+            if (timed) {
+                progress.show(done, scene_name + " stereo");
+                BenchRun run = measure(stereo, inputs, o);
+                run.scene = scene_name;
+                run.mode = "stereo";
+                report.runs.push_back(std::move(run));
+                ++done;
+            }
+            if (o.accuracy) {
+                stereo.set_read_back(true);
+                stereo.render_frame(inputs);
+                for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
+                    reference.images[static_cast<int>(eye)] = stereo.eye_image(eye);
+                    reference.depth[static_cast<int>(eye)] = stereo.eye_linear_depth(eye);
+                }
+            }
+        }
+
+        for (modes::Mode mode : mode_list) {
+            if (mode == modes::Mode::kStereo) continue;
+            modes::ModeRenderer renderer(*ctx, scene, mode, extent, {}, nearest);
+            const std::vector<modes::MonoCulling> mode_variants =
+                mode == modes::Mode::kHybrid ? variants : std::vector{modes::MonoCulling::kNoOpt};
+            for (const Plane& plane : planes) {
+                inputs.mono_plane = plane.metres;
+                std::optional<Accuracy> accuracy;
+                for (modes::MonoCulling variant : mode_variants) {
+                    inputs.mono_culling = variant;
+                    std::ostringstream what;
+                    what << scene_name << " " << modes::mode_name(mode)
+                         << (mode == modes::Mode::kHybrid ? " " + modes::mono_culling_name(variant)
+                                                          : "")
+                         << " m=" << (plane.far ? std::string("far") : plane_text(plane.metres));
+                    progress.show(done, what.str());
+                    BenchRun run = measure(renderer, inputs, o);
+                    run.scene = scene_name;
+                    run.mode = modes::mode_name(mode);
+                    if (mode == modes::Mode::kHybrid)
+                        run.variant = modes::mono_culling_name(variant);
+                    run.mono_plane = plane.metres;
+                    run.mono_plane_is_far = plane.far;
+                    if (renderer.last_rig()) run.max_error_px = renderer.last_rig()->max_error_px;
+                    // The variants draw identical images (tests/gpu/culling_test.cpp): measure
+                    // the accuracy once per mono plane.
+                    if (o.accuracy && !accuracy) {
+                        accuracy = measure_accuracy(renderer, inputs, reference);
+                    }
+                    if (accuracy) {
+                        run.ssim_vs_stereo = accuracy->ssim;
+                        run.drift_px = accuracy->drift_px;
+                        run.drift_patches = accuracy->drift_patches;
+                    }
+                    report.runs.push_back(std::move(run));
+                    ++done;
+                }
+            }
+        }
+    }
+    progress.show(done, "done");
+    if (isatty(2)) std::cerr << "\n";
+
+    add_ratios_to_stereo(report);
+    std::ofstream(out / "bench.json") << bench_json(report) << "\n";
+    std::ofstream(out / "bench.csv") << bench_csv(report);
+    const auto plots = write_bench_plots(report, out).value_or_throw();
+    std::cerr << "wrote " << (out / "bench.json").string() << ", bench.csv and " << plots.size()
+              << " figures\n";
+    for (const BenchRun& run : report.runs) {
+        if (!run.time_ratio || run.mode == "stereo") continue;
+        std::cerr << "  " << std::left << std::setw(10) << run.scene << std::setw(16) << run.mode
+                  << std::setw(15) << run.variant << " m " << std::setw(6)
+                  << (run.mono_plane_is_far ? std::string("far") : plane_text(*run.mono_plane))
+                  << " time " << std::fixed << std::setprecision(2) << *run.time_ratio
+                  << "x  primitives " << run.primitive_ratio.value_or(0.0) << "x";
+        if (run.ssim_vs_stereo)
+            std::cerr << "  SSIM " << std::setprecision(4) << *run.ssim_vs_stereo;
+        std::cerr << std::defaultfloat << "\n";
+    }
+    if (global.validation && ctx->validation_messages().count() > 0) {
+        for (const auto& m : ctx->validation_messages().first_messages()) std::cerr << m << "\n";
+        throw UserError(std::to_string(ctx->validation_messages().count()) +
+                        " Vulkan validation message(s)");
+    }
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& root, const GlobalOptions& global) {
+    auto options = std::make_shared<BenchOptions>();
+    CLI::App* cmd = root.add_subcommand(
+        "bench", "Measure time, primitives and accuracy over scenes x modes x mono planes");
+    cmd->add_option("--scenes", options->scenes, "Comma-separated scenes")->capture_default_str();
+    cmd->add_option("--modes", options->modes, "Comma-separated modes")->capture_default_str();
+    cmd->add_option("--variants", options->variants,
+                    "hybrid's variants (papers/000 Sect. 5.1): no-opt, discard, occlusion-cull")
+        ->capture_default_str();
+    cmd->add_option("--mono-planes", options->mono_planes,
+                    "Comma-separated distances in metres; 'far' is the far plane")
+        ->capture_default_str();
+    cmd->add_option("--protocol", options->protocol,
+                    "Take the mono planes from this protocol (plus far) instead");
+    cmd->add_option("--hmd", options->hmd, "HMD profile name or TOML file")->capture_default_str();
+    cmd->add_option("--width", options->width, "Per-eye width (default: the profile's)")
+        ->check(CLI::Range(16, 16384));
+    cmd->add_option("--height", options->height, "Per-eye height (default: the profile's)")
+        ->check(CLI::Range(16, 16384));
+    cmd->add_option("--detail", options->detail, "test, low, medium, high or ultra")
+        ->capture_default_str();
+    cmd->add_option("--view", options->view, "Viewpoint of every scene")->capture_default_str();
+    cmd->add_option("--seed", options->seed, "Scene seed")->capture_default_str();
+    cmd->add_option("--frames", options->frames, "Measured frames per configuration")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    cmd->add_option("--warmup", options->warmup, "Frames before measuring")
+        ->check(CLI::Range(0, 100000))
+        ->capture_default_str();
+    cmd->add_flag("!--no-accuracy", options->accuracy,
+                  "Skip SSIM and drift against stereo (times and counts only)");
+    cmd->add_option("--out", options->out, "Output directory")->required();
+    cmd->callback([options, &global] { run_bench(*options, global); });
+}
+
+}  // namespace monoplane::app
