@@ -573,6 +573,8 @@ profile::FrameStats ModeRenderer::render_frame(const FrameInputs& inputs) {
 }
 
 std::vector<std::uint32_t> ModeRenderer::drawn_chunks(passes::CullView view) const {
+    // Without the option the lists were never copied to the host: nothing to report.
+    if (!options_.read_back_draw_lists) return {};
     return culling_.drawn_chunks(view);
 }
 
