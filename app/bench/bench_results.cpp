@@ -16,7 +16,8 @@ void add_ratios_to_stereo(BenchReport& report) {
         const auto found = stereo.find(run.scene);
         if (found == stereo.end()) continue;
         const BenchRun& reference = *found->second;
-        if (reference.frame_ms_median > 0.0) {
+        if (&run == &reference) run.time_ratio = 1.0;
+        if (!run.time_ratio && reference.frame_ms_median > 0.0) {
             run.time_ratio = run.frame_ms_median / reference.frame_ms_median;
         }
         if (reference.primitives > 0) {
@@ -66,6 +67,9 @@ std::string bench_json(const BenchReport& report) {
         j.begin_object("view_primitives");
         for (const auto& [view, n] : run.view_primitives) j.value(view, n);
         j.end_object();
+        j.begin_object("view_fragments");
+        for (const auto& [view, n] : run.view_fragments) j.value(view, n);
+        j.end_object();
         j.begin_object("draws");
         for (const auto& [view, n] : run.view_draws) j.value(view, n);
         j.end_object();
@@ -74,6 +78,7 @@ std::string bench_json(const BenchReport& report) {
         optional_value(j, "drift_px", run.drift_px);
         j.value("drift_patches", static_cast<std::uint64_t>(run.drift_patches));
         optional_value(j, "time_ratio_vs_stereo", run.time_ratio);
+        optional_value(j, "stereo_frame_ms_median", run.stereo_frame_ms_median);
         optional_value(j, "primitive_ratio_vs_stereo", run.primitive_ratio);
         j.end_object();
     }

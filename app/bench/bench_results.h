@@ -28,6 +28,7 @@ struct BenchRun {
     // and fragment invocations, and the chunks each view drew.
     std::map<std::string, std::uint64_t> view_primitives;
     std::map<std::string, std::uint64_t> view_draws;
+    std::map<std::string, std::uint64_t> view_fragments;  // every view, composites included
     std::uint64_t primitives = 0;
     std::uint64_t fragments = 0;  // all views, composites included
     // Accuracy against stereo (hybrid modes below far).
@@ -35,8 +36,11 @@ struct BenchRun {
     std::optional<double> max_error_px;    // analytic supremum (rig)
     std::optional<double> drift_px;        // measured: 95th percentile of patch displacements
     std::size_t drift_patches = 0;
-    // Ratios to stereo in the same run (same scene and resolution).
+    // Ratios to stereo in the same run (same scene and resolution): time as the median of
+    // per-frame ratios to stereo frames rendered in between (bench_command.cpp), primitives to
+    // the scene's stereo run.
     std::optional<double> time_ratio;
+    std::optional<double> stereo_frame_ms_median;  // of the interleaved stereo frames
     std::optional<double> primitive_ratio;
 };
 

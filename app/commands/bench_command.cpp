@@ -134,15 +134,32 @@ class Progress {
     bool terminal_;
 };
 
-// Warm-up frames (shader compilation, the one-off shadow map, C's allocation) then measured
-// frames without read-back.
+// Warm-up frames (shader compilation, the one-off shadow map, C's allocation), then measured
+// frames without read-back. With a reference renderer (stereo), its frames are interleaved with
+// the measured ones (in alternating order) and the time ratio is the median of the per-pair
+// ratios: a CPU rasterizer on a shared machine drifts by tens of percent over minutes, and only
+// frames taken side by side compare.
 BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs,
-                 const BenchOptions& o) {
+                 const BenchOptions& o, modes::ModeRenderer* reference = nullptr,
+                 const modes::FrameInputs* reference_inputs = nullptr) {
     renderer.set_read_back(false);
+    if (reference) reference->set_read_back(false);
     std::vector<profile::FrameStats> frames;
+    std::vector<double> ratios;
+    std::vector<double> reference_ms;
     for (int i = 0; i < o.warmup + o.frames; ++i) {
+        double paired_ms = 0.0;
+        if (reference && i % 2 == 0)
+            paired_ms = reference->render_frame(*reference_inputs).gpu_frame_ms;
         profile::FrameStats stats = renderer.render_frame(inputs);
-        if (i >= o.warmup) frames.push_back(std::move(stats));
+        if (reference && i % 2 == 1)
+            paired_ms = reference->render_frame(*reference_inputs).gpu_frame_ms;
+        if (i < o.warmup) continue;
+        if (reference && paired_ms > 0.0) {
+            ratios.push_back(stats.gpu_frame_ms / paired_ms);
+            reference_ms.push_back(paired_ms);
+        }
+        frames.push_back(std::move(stats));
     }
     const FrameSummary summary = summarize(frames);
     BenchRun run;
@@ -151,6 +168,10 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
     run.frame_ms_p90 = summary.frame_ms_p90;
     run.cpu_ms_median = summary.cpu_ms_median;
     run.pass_ms_median = summary.pass_ms_median;
+    if (!ratios.empty()) {
+        run.time_ratio = percentile(ratios, 0.5);
+        run.stereo_frame_ms_median = percentile(reference_ms, 0.5);
+    }
     std::vector<double> frame_ms;
     std::map<std::string, std::vector<double>> pass_ms;
     for (const profile::FrameStats& f : frames) {
@@ -164,6 +185,7 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
     }
     for (const profile::ViewStatistics& v : summary.views) {
         run.fragments += v.fragment_invocations;
+        run.view_fragments[v.view] = v.fragment_invocations;
         if (v.view.find('.') != std::string::npos) continue;  // composites: not scene work
         run.primitives += v.clipping_invocations;
         run.view_primitives[v.view] = v.clipping_invocations;
@@ -291,12 +313,14 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
         modes::FrameInputs inputs = base;
         inputs.views.head = viewpoint->head;
 
-        // Stereo: the timing reference and the images every hybrid run is compared with.
+        // Stereo: the timing reference (its frames interleave with every other run's) and the
+        // images every hybrid run is compared with.
         Reference reference;
+        modes::RendererOptions stereo_options;
+        stereo_options.read_back_depth = true;
+        modes::ModeRenderer stereo(*ctx, scene, modes::Mode::kStereo, extent, stereo_options);
+        const modes::FrameInputs stereo_inputs = inputs;
         {
-            modes::RendererOptions options;
-            options.read_back_depth = true;
-            modes::ModeRenderer stereo(*ctx, scene, modes::Mode::kStereo, extent, options);
             const bool timed = std::find(mode_list.begin(), mode_list.end(),
                                          modes::Mode::kStereo) != mode_list.end();
             if (timed) {
@@ -333,7 +357,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
                                                           : "")
                          << " m=" << (plane.far ? std::string("far") : plane_text(plane.metres));
                     progress.show(done, what.str());
-                    BenchRun run = measure(renderer, inputs, o);
+                    BenchRun run = measure(renderer, inputs, o, &stereo, &stereo_inputs);
                     run.scene = scene_name;
                     run.mode = modes::mode_name(mode);
                     if (mode == modes::Mode::kHybrid)
