@@ -183,13 +183,13 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
     std::vector<std::uint32_t> all(scene.chunks.size());
     for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
     shadow_draws_.assign(scene, all);
-    pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view());
+    pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
 }
 
 void ModeRenderer::ensure_pyramid() {
     if (!pyramid_.resize(mono_->extent)) return;
-    pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view());
+    pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
 }
 

@@ -12,6 +12,9 @@ namespace {
 const std::uint32_t kMergeEyeDepths[] = {
 #include "merge_eye_depths.comp.spv.inc"
 };
+const std::uint32_t kEyeDepthBlocks[] = {
+#include "eye_depth_blocks.comp.spv.inc"
+};
 const std::uint32_t kReduceDepth[] = {
 #include "reduce_depth.comp.spv.inc"
 };
@@ -43,9 +46,12 @@ DepthPyramidPass::DepthPyramidPass(const vk_core::Context& ctx) : ctx_(ctx) {
                               vk::CompareOp::eNever, 0.0f, VK_LOD_CLAMP_NONE));
     using Type = vk::DescriptorType;
     const auto compute = vk::ShaderStageFlagBits::eCompute;
+    // Shared by the blocks step (bindings 0, 2) and the merge step (0, 1, 3).
     const std::array merge_bindings = {
         vk::DescriptorSetLayoutBinding(0, Type::eCombinedImageSampler, 2, compute),
         vk::DescriptorSetLayoutBinding(1, Type::eStorageImage, 1, compute),
+        vk::DescriptorSetLayoutBinding(2, Type::eStorageImage, 1, compute),
+        vk::DescriptorSetLayoutBinding(3, Type::eStorageImage, 1, compute),
     };
     merge_layout_ = vk::raii::DescriptorSetLayout(
         ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, merge_bindings));
@@ -62,7 +68,9 @@ DepthPyramidPass::DepthPyramidPass(const vk_core::Context& ctx) : ctx_(ctx) {
         ctx.device(), vk::PipelineLayoutCreateInfo({}, merge_layout, push));
     reduce_pipeline_layout_ =
         vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, reduce_layout));
+    const vk::raii::ShaderModule blocks = vk_core::make_shader(ctx, kEyeDepthBlocks);
     const vk::raii::ShaderModule merge = vk_core::make_shader(ctx, kMergeEyeDepths);
+    blocks_ = vk_core::make_compute_pipeline(ctx, *merge_pipeline_layout_, *blocks);
     const vk::raii::ShaderModule reduce = vk_core::make_shader(ctx, kReduceDepth);
     merge_ = vk_core::make_compute_pipeline(ctx, *merge_pipeline_layout_, *merge);
     reduce_ = vk_core::make_compute_pipeline(ctx, *reduce_pipeline_layout_, *reduce);
@@ -128,7 +136,7 @@ void DepthPyramidPass::create_image(vk::Extent2D extent) {
 
     using Type = vk::DescriptorType;
     const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eCombinedImageSampler, 2),
-                                   vk::DescriptorPoolSize(Type::eStorageImage, 2 * mips_ + 1)};
+                                   vk::DescriptorPoolSize(Type::eStorageImage, 2 * mips_ + 3)};
     pool_ = vk::raii::DescriptorPool(
         ctx_.device(),
         vk::DescriptorPoolCreateInfo(vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, mips_,
@@ -154,14 +162,48 @@ void DepthPyramidPass::create_image(vk::Extent2D extent) {
     }
 }
 
-void DepthPyramidPass::set_eye_depths(vk::ImageView left, vk::ImageView right) const {
-    const std::array infos = {
+void DepthPyramidPass::set_eye_depths(vk::ImageView left, vk::ImageView right,
+                                      vk::Extent2D eye_extent) {
+    const vk::Extent2D blocks((eye_extent.width + 3) / 4, (eye_extent.height + 3) / 4);
+    if (blocks != blocks_extent_) {
+        blocks_view_ = nullptr;
+        blocks_image_ = nullptr;
+        blocks_memory_ = nullptr;
+        blocks_extent_ = blocks;
+        blocks_image_ = vk::raii::Image(
+            ctx_.device(),
+            vk::ImageCreateInfo({}, vk::ImageType::e2D, kFormat, vk::Extent3D(blocks, 1), 1, 2,
+                                vk::SampleCountFlagBits::e1, vk::ImageTiling::eOptimal,
+                                vk::ImageUsageFlagBits::eStorage, vk::SharingMode::eExclusive));
+        blocks_memory_ = vk_core::allocate_memory(ctx_, blocks_image_.getMemoryRequirements(),
+                                                  vk::MemoryPropertyFlagBits::eDeviceLocal);
+        blocks_image_.bindMemory(*blocks_memory_, 0);
+        const vk::ImageSubresourceRange layers(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 2);
+        blocks_view_ = vk::raii::ImageView(
+            ctx_.device(), vk::ImageViewCreateInfo({}, *blocks_image_,
+                                                   vk::ImageViewType::e2DArray, kFormat, {},
+                                                   layers));
+        ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+            const vk::ImageMemoryBarrier2 barrier(
+                Stage::eNone, Access::eNone, Stage::eComputeShader,
+                Access::eShaderStorageWrite | Access::eShaderStorageRead,
+                vk::ImageLayout::eUndefined, vk::ImageLayout::eGeneral, VK_QUEUE_FAMILY_IGNORED,
+                VK_QUEUE_FAMILY_IGNORED, *blocks_image_, layers);
+            cmd.pipelineBarrier2(vk::DependencyInfo({}, {}, {}, barrier));
+        });
+    }
+    const std::array depths = {
         vk::DescriptorImageInfo(*nearest_, left, vk::ImageLayout::eDepthReadOnlyOptimal),
         vk::DescriptorImageInfo(*nearest_, right, vk::ImageLayout::eDepthReadOnlyOptimal),
     };
-    ctx_.device().updateDescriptorSets(
-        vk::WriteDescriptorSet(*merge_set_, 0, 0, vk::DescriptorType::eCombinedImageSampler, infos),
-        {});
+    const vk::DescriptorImageInfo blocks_info(nullptr, *blocks_view_, vk::ImageLayout::eGeneral);
+    const std::array writes = {
+        vk::WriteDescriptorSet(*merge_set_, 0, 0, vk::DescriptorType::eCombinedImageSampler,
+                               depths),
+        vk::WriteDescriptorSet(*merge_set_, 2, 0, vk::DescriptorType::eStorageImage, blocks_info),
+        vk::WriteDescriptorSet(*merge_set_, 3, 0, vk::DescriptorType::eStorageImage, blocks_info),
+    };
+    ctx_.device().updateDescriptorSets(writes, {});
 }
 
 void DepthPyramidPass::record(const vk::raii::CommandBuffer& cmd,
@@ -176,9 +218,12 @@ void DepthPyramidPass::record(const vk::raii::CommandBuffer& cmd,
         }
     }
     with_predicate(cmd, when, [&] {
-        cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *merge_);
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *merge_pipeline_layout_, 0,
                                *merge_set_, {});
+        cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *blocks_);
+        cmd.dispatch(groups(blocks_extent_.width), groups(blocks_extent_.height), 2);
+        storage_barrier(cmd, Stage::eComputeShader);
+        cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *merge_);
         cmd.pushConstants<std::array<glm::vec4, 6>>(*merge_pipeline_layout_,
                                                     vk::ShaderStageFlagBits::eCompute, 0, rows);
         cmd.dispatch(groups(extent_.width), groups(extent_.height), 1);

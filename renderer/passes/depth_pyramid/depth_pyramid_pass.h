@@ -26,8 +26,9 @@ class DepthPyramidPass {
     // (Re)creates the pyramid for C's allocation when it grows; returns true when it did (views
     // of it must be rebound). Call between frames.
     bool resize(vk::Extent2D mono_allocation);
-    // The eyes' depth images (sampled usage); call after resize() changed them or once.
-    void set_eye_depths(vk::ImageView left, vk::ImageView right) const;
+    // The eyes' depth images (sampled usage) and their size; call once and after every
+    // resize() that returned true.
+    void set_eye_depths(vk::ImageView left, vk::ImageView right, vk::Extent2D eye_extent);
 
     // Builds all levels. mono_to_eye: homographies from C's pixels to each eye's pixels
     // (rig::mono_pixel_to_eye_pixel). With a predicate the dispatches run only when it holds.
@@ -48,6 +49,7 @@ class DepthPyramidPass {
     vk::raii::DescriptorSetLayout reduce_layout_{nullptr};
     vk::raii::PipelineLayout merge_pipeline_layout_{nullptr};
     vk::raii::PipelineLayout reduce_pipeline_layout_{nullptr};
+    vk::raii::Pipeline blocks_{nullptr};
     vk::raii::Pipeline merge_{nullptr};
     vk::raii::Pipeline reduce_{nullptr};
     vk::Extent2D extent_{0, 0};
@@ -59,6 +61,11 @@ class DepthPyramidPass {
     vk::raii::DescriptorPool pool_{nullptr};
     vk::raii::DescriptorSet merge_set_{nullptr};
     std::vector<vk::raii::DescriptorSet> reduce_sets_;
+    // Each eye's depth as 4 x 4 block minima (one layer per eye), eGeneral.
+    vk::Extent2D blocks_extent_{0, 0};
+    vk::raii::Image blocks_image_{nullptr};
+    vk::raii::DeviceMemory blocks_memory_{nullptr};
+    vk::raii::ImageView blocks_view_{nullptr};
 };
 
 }  // namespace monoplane::passes

@@ -11,15 +11,16 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform sampler2D eye_depth[2];  // reversed Z, cleared to 0 at m
 layout(set = 0, binding = 1, r32f) uniform writeonly image2D level2;
+layout(set = 0, binding = 3, r32f) uniform readonly image2DArray blocks;  // 4 x 4 minima, per eye
 layout(push_constant) uniform Push {
     // Rows of the homography from C's pixels to eye e's pixels (x right, y down, centres at
     // i + 0.5): mono_to_eye[3 * e + row].xyz.
     vec4 mono_to_eye[6];
 };
 
-// Above this many eye pixels per texel (a grazing mapping) the texel is declared needed rather
+// Above this many eye blocks per texel (a grazing mapping) the texel is declared needed rather
 // than visited: conservative, never wrong.
-const int kMaxVisited = 32 * 32;
+const int kMaxVisited = 8 * 8;
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
@@ -48,6 +49,8 @@ void main() {
         ivec2 first = max(ivec2(ceil(eye_min - 0.5)), ivec2(0));
         ivec2 last = min(ivec2(floor(eye_max - 0.5)), size - 1);
         if (any(greaterThan(first, last))) continue;  // no pixel of this eye reads here
+        first >>= 2;  // the blocks holding those pixels
+        last >>= 2;
         ivec2 span = last - first + 1;
         if (span.x * span.y > kMaxVisited) {
             farthest = 0.0;
@@ -55,7 +58,7 @@ void main() {
         }
         for (int y = first.y; y <= last.y && farthest > 0.0; ++y) {
             for (int x = first.x; x <= last.x; ++x) {
-                farthest = min(farthest, texelFetch(eye_depth[e], ivec2(x, y), 0).r);
+                farthest = min(farthest, imageLoad(blocks, ivec3(x, y, e)).r);
             }
         }
     }
