@@ -413,10 +413,15 @@ profile::FrameStats ModeRenderer::render_frame(const FrameInputs& inputs) {
             mono_steps.push_back(
                 {passes::ForwardStep::kChunks, when(MONOPLANE_PRED_MONO_UNTESTED)});
         }
+        mono_steps.push_back(
+            {passes::ForwardStep::kSkyDiscardHidden, when(MONOPLANE_PRED_MONO_DEPTH_TESTED)});
+        if (predicated) {
+            mono_steps.push_back({passes::ForwardStep::kSky, when(MONOPLANE_PRED_MONO_UNTESTED)});
+        }
     } else {
         mono_steps.push_back({passes::ForwardStep::kChunks, std::nullopt});
+        mono_steps.push_back({passes::ForwardStep::kSky, when(MONOPLANE_PRED_MONO_ANY)});
     }
-    mono_steps.push_back({passes::ForwardStep::kSky, when(MONOPLANE_PRED_MONO_ANY)});
 
     double record_ms = 0.0;
     ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {

@@ -180,9 +180,8 @@ void DepthPyramidPass::set_eye_depths(vk::ImageView left, vk::ImageView right,
         blocks_image_.bindMemory(*blocks_memory_, 0);
         const vk::ImageSubresourceRange layers(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 2);
         blocks_view_ = vk::raii::ImageView(
-            ctx_.device(), vk::ImageViewCreateInfo({}, *blocks_image_,
-                                                   vk::ImageViewType::e2DArray, kFormat, {},
-                                                   layers));
+            ctx_.device(), vk::ImageViewCreateInfo({}, *blocks_image_, vk::ImageViewType::e2DArray,
+                                                   kFormat, {}, layers));
         ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
             const vk::ImageMemoryBarrier2 barrier(
                 Stage::eNone, Access::eNone, Stage::eComputeShader,

@@ -19,6 +19,9 @@ const std::uint32_t kFullscreenVert[] = {
 const std::uint32_t kSkyFrag[] = {
 #include "sky.frag.spv.inc"
 };
+const std::uint32_t kSkyDiscardHiddenFrag[] = {
+#include "sky_discard_hidden.frag.spv.inc"
+};
 }  // namespace
 
 ForwardPass::ForwardPass(const vk_core::Context& ctx) {
@@ -68,6 +71,10 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx) {
     sky.depth_write = false;
     sky.depth_compare = vk::CompareOp::eEqual;
     sky_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
+    const vk::raii::ShaderModule sky_discard_frag =
+        vk_core::make_shader(ctx, kSkyDiscardHiddenFrag);
+    sky.fragment = *sky_discard_frag;
+    sky_discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
 }
 
 void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
@@ -127,6 +134,13 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                     break;
                 case ForwardStep::kSky:
                     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
+                    cmd.draw(3, 1, 0, 0);
+                    break;
+                case ForwardStep::kSkyDiscardHidden:
+                    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
+                                           merged_depth_set, {});
+                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
+                                     *sky_discard_hidden_pipeline_);
                     cmd.draw(3, 1, 0, 0);
                     break;
             }

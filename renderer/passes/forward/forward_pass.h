@@ -32,6 +32,7 @@ enum class ForwardStep {
     kChunks,               // the view's chunk list, every fragment shaded
     kChunksDiscardHidden,  // the same, discarding fragments hidden in both eyes (C only)
     kSky,                  // the sky where nothing was drawn
+    kSkyDiscardHidden,     // the same, skipping pixels hidden in both eyes (C only)
 };
 struct ForwardDraw {
     ForwardStep step = ForwardStep::kChunks;
@@ -65,6 +66,7 @@ class ForwardPass {
     vk::raii::Pipeline geometry_pipeline_{nullptr};
     vk::raii::Pipeline discard_hidden_pipeline_{nullptr};
     vk::raii::Pipeline sky_pipeline_{nullptr};
+    vk::raii::Pipeline sky_discard_hidden_pipeline_{nullptr};
 };
 
 }  // namespace monoplane::passes

@@ -1,0 +1,26 @@
+// The body of sky.frag and sky_discard_hidden.frag (compiled twice).
+// The sky behind the geometry: drawn after it where the depth buffer still holds the far plane.
+#include "renderer/passes/shared/view_constants.h"
+layout(std140, set = 0, binding = 0) uniform ViewBlock { ViewConstants view; };
+#ifdef MONOPLANE_DISCARD_HIDDEN_IN_EYES
+// The merged depth pyramid of both eyes (renderer/passes/depth_pyramid), mip 0 = level 2.
+layout(set = 1, binding = 0) uniform sampler2D merged_depth;
+#endif
+#include "renderer/passes/shared/sky.glsl"
+
+layout(location = 0) in vec2 in_uv;
+layout(location = 0) out vec4 out_color;
+layout(location = 1) out float out_linear_depth;
+
+void main() {
+#ifdef MONOPLANE_DISCARD_HIDDEN_IN_EYES
+    // C's sky where every eye pixel reading it shows nearer content (Sect. 4.4).
+    if (texelFetch(merged_depth, ivec2(gl_FragCoord.xy) >> 2, 0).r > view.view_blend.z) discard;
+#endif
+    vec2 ndc = in_uv * 2.0 - 1.0;
+    vec4 near_point = view.inv_view_proj * vec4(ndc, 1.0, 1.0);
+    vec4 far_point = view.inv_view_proj * vec4(ndc, 0.5, 1.0);
+    vec3 direction = far_point.xyz / far_point.w - near_point.xyz / near_point.w;
+    out_color = vec4(sky_radiance(direction, view), 1.0);
+    out_linear_depth = MONOPLANE_SKY_LINEAR_DEPTH;
+}
