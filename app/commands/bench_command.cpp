@@ -19,6 +19,7 @@
 #include "app/bench/bench_results.h"
 #include "app/commands/commands.h"
 #include "app/commands/frame_summary.h"
+#include "app/commands/validation_report.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/quality/drift.h"
@@ -401,11 +402,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
             std::cerr << "  SSIM " << std::setprecision(4) << *run.ssim_vs_stereo;
         std::cerr << std::defaultfloat << "\n";
     }
-    if (global.validation && ctx->validation_messages().count() > 0) {
-        for (const auto& m : ctx->validation_messages().first_messages()) std::cerr << m << "\n";
-        throw UserError(std::to_string(ctx->validation_messages().count()) +
-                        " Vulkan validation message(s)");
-    }
+    fail_on_validation_messages(*ctx, global);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "app/commands/frame_summary.h"
 #include "app/commands/json_writer.h"
 #include "app/commands/stereo_comparison.h"
+#include "app/commands/validation_report.h"
 #include "app/png.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
@@ -222,11 +223,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     std::cerr << "wrote " << (out / "left.png").string() << ", " << (out / "right.png").string()
               << (mono ? ", mono.png" : "") << " and stats.json\n";
 
-    if (global.validation && ctx->validation_messages().count() > 0) {
-        for (const auto& m : ctx->validation_messages().first_messages()) std::cerr << m << "\n";
-        throw UserError(std::to_string(ctx->validation_messages().count()) +
-                        " Vulkan validation message(s)");
-    }
+    fail_on_validation_messages(*ctx, global);
 }
 
 }  // namespace

@@ -10,15 +10,6 @@
 namespace monoplane::quality {
 namespace {
 
-std::string size_text(const ImageView& image) {
-    return std::to_string(image.width) + "x" + std::to_string(image.height);
-}
-
-std::string describe(const ImageView& image) {
-    return size_text(image) + " with " + std::to_string(image.channels) + " channels and " +
-           std::to_string(image.pixels.size()) + " bytes";
-}
-
 // The first input problem, or an empty string.
 std::string check_inputs(const ImageView& reference, const ImageView& test,
                          std::span<const std::uint8_t> mask, const DriftOptions& options) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 
 namespace monoplane::quality {
 
@@ -30,5 +31,9 @@ ImageView rgba_view(const Image& image) {
 // True when channels is 1, 3 or 4, the size is not zero, and pixels holds exactly
 // width * height * channels bytes. The metrics check this and return an error otherwise.
 bool is_well_formed(const ImageView& image);
+
+// "WxH", and "WxH with C channels and N bytes", for the metrics' error messages.
+std::string size_text(const ImageView& image);
+std::string describe(const ImageView& image);
 
 }  // namespace monoplane::quality

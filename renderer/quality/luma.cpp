@@ -2,8 +2,18 @@
 
 #include <cassert>
 #include <cstddef>
+#include <string>
 
 namespace monoplane::quality {
+
+std::string size_text(const ImageView& image) {
+    return std::to_string(image.width) + "x" + std::to_string(image.height);
+}
+
+std::string describe(const ImageView& image) {
+    return size_text(image) + " with " + std::to_string(image.channels) + " channels and " +
+           std::to_string(image.pixels.size()) + " bytes";
+}
 
 bool is_well_formed(const ImageView& image) {
     const bool known_layout = image.channels == 1 || image.channels == 3 || image.channels == 4;

@@ -10,15 +10,6 @@
 namespace monoplane::quality {
 namespace {
 
-std::string size_text(const ImageView& image) {
-    return std::to_string(image.width) + "x" + std::to_string(image.height);
-}
-
-std::string describe(const ImageView& image) {
-    return size_text(image) + " with " + std::to_string(image.channels) + " channels and " +
-           std::to_string(image.pixels.size()) + " bytes";
-}
-
 bool valid_options(const SsimOptions& options) {
     if (options.half_size < 0) return false;
     return options.window == SsimWindow::box ||

@@ -1,0 +1,13 @@
+// The end of every GPU command run with --validation: any validation message fails the command,
+// with the first messages shown (DESIGN.md section 9).
+#pragma once
+
+#include "app/commands/global_options.h"
+#include "renderer/vk/context.h"
+
+namespace monoplane::app {
+
+// Throws UserError naming the count when validation was on and the layer reported anything.
+void fail_on_validation_messages(const vk_core::Context& ctx, const GlobalOptions& global);
+
+}  // namespace monoplane::app
