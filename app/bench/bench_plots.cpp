@@ -10,6 +10,10 @@
 namespace monoplane::app {
 namespace {
 
+double thousands(std::uint64_t count) {
+    return static_cast<double>(count) / 1000.0;
+}
+
 // Pass names grouped as the paper's Fig. 5 labels its bars.
 std::string pass_group(const std::string& pass) {
     if (pass == "culling" || pass == "depth_pyramid" || pass == "occlusion_culling") {
@@ -161,7 +165,7 @@ std::string primitives_chart(const BenchReport& report, const std::string& scene
         for (const BenchRun* run : runs) {
             const auto found = run->view_primitives.find(view);
             component.values.push_back(
-                found == run->view_primitives.end() ? 0.0 : found->second / 1000.0);
+                found == run->view_primitives.end() ? 0.0 : thousands(found->second));
         }
         chart.components.push_back(component);
     }
@@ -172,7 +176,7 @@ std::string primitives_chart(const BenchReport& report, const std::string& scene
         for (const BenchRun* run : runs) {
             double total = std::numeric_limits<double>::quiet_NaN();
             for (const BenchRun* other : runs_of(report, scene, config)) {
-                if (plane_label(*other) == plane_label(*run)) total = other->primitives / 1000.0;
+                if (plane_label(*other) == plane_label(*run)) total = thousands(other->primitives);
             }
             line.values.push_back(total);
         }
@@ -180,8 +184,8 @@ std::string primitives_chart(const BenchReport& report, const std::string& scene
     }
     if (const BenchRun* stereo = stereo_run(report, scene)) {
         chart.reference_lines.push_back(
-            {stereo->primitives / 1000.0,
-             "stereo " + charts::format_number(stereo->primitives / 1000.0, 1) + "k"});
+            {thousands(stereo->primitives),
+             "stereo " + charts::format_number(thousands(stereo->primitives), 1) + "k"});
     }
     return charts::render_svg(chart);
 }

@@ -495,9 +495,9 @@ profile::FrameStats ModeRenderer::render_frame(const FrameInputs& inputs) {
                     params.eye_to_mono = glm::mat4(rig_->eye_to_mono[e]);
                     // C's image is valid in [0, viewport / allocation] (Sect. 4.2). The image may
                     // be larger than the rig's own allocation: it was sized for an earlier m.
-                    params.uv_scale =
-                        glm::vec2(static_cast<float>(mono_->area.width) / mono_->extent.width,
-                                  static_cast<float>(mono_->area.height) / mono_->extent.height);
+                    params.uv_scale = glm::vec2(static_cast<float>(mono_->area.width),
+                                                static_cast<float>(mono_->area.height)) /
+                                      params.mono_allocation;
                 }
                 if (inputs.debug == DebugView::kTintMono) params.tint = 1.0f;
                 if (inputs.debug == DebugView::kStereoOnly) {

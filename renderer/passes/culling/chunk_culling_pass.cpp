@@ -49,7 +49,8 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
     : chunk_count_(static_cast<std::uint32_t>(scene.chunks.size())),
       chunks_(vk_core::make_device_buffer(ctx, std::span<const ChunkRecord>(chunk_records(scene)),
                                           vk::BufferUsageFlagBits::eStorageBuffer)),
-      commands_(ctx, MONOPLANE_CULL_VIEWS * std::max(chunk_count_, 1u) * kCommandSize,
+      commands_(ctx,
+                vk::DeviceSize{MONOPLANE_CULL_VIEWS} * std::max(chunk_count_, 1u) * kCommandSize,
                 vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
                     vk::BufferUsageFlagBits::eTransferSrc,
                 vk_core::MemoryUse::kDeviceLocal),
@@ -117,7 +118,7 @@ void ChunkCullingPass::set_frame(const CullFrame& frame) {
     for (std::uint32_t v = 0; v < MONOPLANE_CULL_VIEWS; ++v) {
         if (!frame.view_proj[v]) continue;
         views |= 1u << v;
-        write_planes(*frame.view_proj[v], &c.planes[v * 6]);
+        write_planes(*frame.view_proj[v], &c.planes[std::size_t{v} * 6]);
     }
     std::uint32_t honour = 0;
     if (frame.honour_force_mono) honour |= MONOPLANE_CULL_HONOUR_FORCE_MONO;
