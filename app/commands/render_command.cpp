@@ -141,7 +141,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     const auto debug_view = modes::parse_debug_view(o.debug_view);
     if (!debug_view) {
         throw UserError("--debug-view " + o.debug_view +
-                        ": use none, tint-mono, stereo-only or mono-only");
+                        ": use none, tint-mono, stereo-only, mono-only or routing");
     }
     const auto scene_id = scenes::parse_scene_id(o.scene);
     if (!scene_id)
@@ -242,8 +242,11 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
     cmd->add_option("--blend-band", options->blend_band,
                     "Metres below m over which the eyes' view vectors blend into C's (0: off)")
         ->capture_default_str();
-    cmd->add_option("--debug-view", options->debug_view,
-                    "Hybrid debug view: none, tint-mono, stereo-only or mono-only")
+    cmd->add_option(
+           "--debug-view", options->debug_view,
+           "Debug view: none, tint-mono, stereo-only, mono-only (hybrid modes) or routing (chunks "
+           "coloured by the lists the GPU culling put them in: green eyes, blue C, "
+           "magenta both)")
         ->capture_default_str();
     cmd->add_option("--variant", options->mono_culling,
                     "hybrid: how the merged depth pyramid of both eyes saves C's work (papers/000 "

@@ -78,6 +78,7 @@ std::optional<DebugView> parse_debug_view(const std::string& name) {
     if (name == "tint-mono") return DebugView::kTintMono;
     if (name == "stereo-only") return DebugView::kStereoOnly;
     if (name == "mono-only") return DebugView::kMonoOnly;
+    if (name == "routing") return DebugView::kRouting;
     return std::nullopt;
 }
 
@@ -164,6 +165,7 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
     const std::array pool_sizes = {
         vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 3),
         vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 9),
+        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 1),
     };
     descriptor_pool_ = vk::raii::DescriptorPool(
         ctx.device(), vk::DescriptorPoolCreateInfo(
@@ -185,12 +187,27 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
     shadow_draws_.assign(scene, all);
     pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
+    write_merged_depth_set();
 }
 
 void ModeRenderer::ensure_pyramid() {
     if (!pyramid_.resize(mono_->extent)) return;
     pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
+    write_merged_depth_set();
+}
+
+void ModeRenderer::write_merged_depth_set() const {
+    const vk::DescriptorImageInfo merged(pyramid_.sampler(), pyramid_.view(),
+                                         vk::ImageLayout::eGeneral);
+    const vk::DescriptorBufferInfo routing(culling_.routing(), 0, VK_WHOLE_SIZE);
+    const std::array writes = {
+        vk::WriteDescriptorSet(*merged_depth_set_, 0, 0, vk::DescriptorType::eCombinedImageSampler,
+                               merged),
+        vk::WriteDescriptorSet(*merged_depth_set_, 1, 0, vk::DescriptorType::eStorageBuffer, {},
+                               routing),
+    };
+    ctx_.device().updateDescriptorSets(writes, {});
 }
 
 void ModeRenderer::write_view_sets(const View& view) const {
@@ -379,12 +396,6 @@ profile::FrameStats ModeRenderer::render_frame(const FrameInputs& inputs) {
         decide_routing(inputs, cull);
         if (depth_tested) {
             ensure_pyramid();
-            const vk::DescriptorImageInfo merged(pyramid_.sampler(), pyramid_.view(),
-                                                 vk::ImageLayout::eGeneral);
-            ctx_.device().updateDescriptorSets(
-                vk::WriteDescriptorSet(*merged_depth_set_, 0, 0,
-                                       vk::DescriptorType::eCombinedImageSampler, merged),
-                {});
             cull.pyramid_mips = pyramid_.mips();
         }
     }
@@ -423,6 +434,18 @@ profile::FrameStats ModeRenderer::render_frame(const FrameInputs& inputs) {
         mono_steps.push_back({passes::ForwardStep::kSky, when(MONOPLANE_PRED_MONO_ANY)});
     }
 
+    // The debug view "routing" draws the same chunks, recoloured by their lists.
+    if (inputs.debug == DebugView::kRouting) {
+        for (auto* steps : {&eye_steps, &mono_steps}) {
+            for (passes::ForwardDraw& draw : *steps) {
+                if (draw.step == passes::ForwardStep::kChunks ||
+                    draw.step == passes::ForwardStep::kChunksDiscardHidden) {
+                    draw.step = passes::ForwardStep::kChunksShowRouting;
+                }
+            }
+        }
+    }
+
     double record_ms = 0.0;
     ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
         profiler_.begin_frame(cmd);
@@ -438,8 +461,9 @@ profile::FrameStats ModeRenderer::render_frame(const FrameInputs& inputs) {
             const View& view = *eyes_[static_cast<int>(eye)];
             profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".forward");
             profiler_.begin_view(cmd, eye_name(eye));
-            forward_.record(cmd, view.forward_targets(), *view.forward_set, nullptr, geometry_,
-                            culling_.draws(static_cast<passes::CullView>(eye)), eye_steps);
+            forward_.record(cmd, view.forward_targets(), *view.forward_set, *merged_depth_set_,
+                            geometry_, culling_.draws(static_cast<passes::CullView>(eye)),
+                            eye_steps);
             profiler_.end_view(cmd);
             profiler_.end_pass(cmd);
         }

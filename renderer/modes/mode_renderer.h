@@ -31,7 +31,9 @@ namespace monoplane::modes {
 enum class Mode { kStereo, kHybrid, kHybridFarfield };
 
 // Debug views (DESIGN.md section 6) of the hybrid modes.
-enum class DebugView { kNone, kTintMono, kStereoOnly, kMonoOnly };
+// kRouting (any mode) colours each chunk by the lists the GPU culling put it in: green eyes
+// only, blue C only, magenta both (papers/003's tool for choosing force-mono objects).
+enum class DebugView { kNone, kTintMono, kStereoOnly, kMonoOnly, kRouting };
 
 std::optional<Mode> parse_mode(const std::string& name);
 std::string mode_name(Mode mode);
@@ -98,6 +100,8 @@ class ModeRenderer {
     void write_view_sets(const View& view) const;
     // Makes the pyramid large enough for C's allocation and points its readers at it.
     void ensure_pyramid();
+    // Points set 1 of the forward pass at the pyramid and the routing words.
+    void write_merged_depth_set() const;
     void update_view(View& view, const glm::dmat4& view_proj, const glm::dvec3& position,
                      const FrameInputs& inputs, const glm::dvec3& mono_position, double blend_band,
                      const glm::dmat4& light_view_proj, double hidden_depth_threshold = 0.0);

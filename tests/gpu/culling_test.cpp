@@ -194,6 +194,48 @@ TEST_F(Culling, ChunksLandInTheViewsTheirDepthsSelect) {
     }
 }
 
+// The debug view "routing" colours each chunk by its lists: at the pixel where each chunk of
+// the three-depths scene lies (projected by hand through the square frustum), the near chunk is
+// green (eyes only), the far one blue (C only, seen through the composite) and the straddling
+// strip magenta, in every variant.
+TEST_F(Culling, RoutingDebugViewColoursChunksByTheirLists) {
+    const scenes::Scene scene = three_depths_scene();
+    // Left eye at x = -0.032: tangents of a point (x, 1.6 + dy, -z) are ((x + 0.032) / z, dy / z),
+    // pixel ((tan_x + 1) / 2 W, (1 - tan_y) / 2 H).
+    auto pixel_of = [](double x, double dy, double z) {
+        const double tan_x = (x + kIpd / 2.0) / z;
+        const double tan_y = dy / z;
+        return glm::ivec2(static_cast<int>((tan_x + 1.0) / 2.0 * kExtent.width),
+                          static_cast<int>((1.0 - tan_y) / 2.0 * kExtent.height));
+    };
+    const glm::ivec2 near_pixel = pixel_of(-1.0, 0.0, 3.0);   // chunk 0's centre
+    const glm::ivec2 far_pixel = pixel_of(4.0, 0.0, 20.0);    // chunk 1's centre
+    const glm::ivec2 strip_pixel = pixel_of(1.0, -1.0, 5.0);  // chunk 2, 5 m ahead
+    for (MonoCulling variant :
+         {MonoCulling::kNoOpt, MonoCulling::kDiscard, MonoCulling::kOcclusionCull}) {
+        SCOPED_TRACE(modes::mono_culling_name(variant));
+        modes::ModeRenderer hybrid(ctx(), scene, Mode::kHybrid, kExtent, test_options());
+        modes::FrameInputs inputs = square_inputs(8.0);
+        inputs.mono_culling = variant;
+        inputs.debug = modes::DebugView::kRouting;
+        hybrid.render_frame(inputs);
+        const modes::RgbaImage& image = hybrid.eye_image(Eye::kLeft);
+        auto rgb = [&](glm::ivec2 p) {
+            const std::size_t i = (static_cast<std::size_t>(p.y) * image.width + p.x) * 4;
+            return glm::ivec3(image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]);
+        };
+        const glm::ivec3 near = rgb(near_pixel);
+        EXPECT_GT(near.g, near.r + 40);
+        EXPECT_GT(near.g, near.b + 40);
+        const glm::ivec3 far = rgb(far_pixel);
+        EXPECT_GT(far.b, far.r + 40);
+        EXPECT_GT(far.b, far.g + 20);
+        const glm::ivec3 strip = rgb(strip_pixel);
+        EXPECT_GT(strip.r, strip.g + 40);
+        EXPECT_GT(strip.b, strip.g + 40);
+    }
+}
+
 // The plane of `planes` nearest to deciding the box's fate: the smallest |distance| in metres,
 // over the planes, of the box's corner furthest along each (normalised) plane normal. The GPU
 // tests float planes against float bounds; within a millimetre its answer may differ from the

@@ -59,6 +59,8 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
                   vk::BufferUsageFlagBits::eConditionalRenderingEXT |
                   vk::BufferUsageFlagBits::eTransferSrc,
               vk_core::MemoryUse::kDeviceLocal),
+      routing_(ctx, vk::DeviceSize{std::max(chunk_count_, 1u)} * sizeof(std::uint32_t),
+               vk::BufferUsageFlagBits::eStorageBuffer, vk_core::MemoryUse::kDeviceLocal),
       constants_(ctx, sizeof(CullConstants), vk::BufferUsageFlagBits::eUniformBuffer,
                  vk_core::MemoryUse::kHostVisible),
       counts_readback_(ctx, counts_.size(), vk::BufferUsageFlagBits::eTransferDst,
@@ -74,10 +76,11 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
         vk::DescriptorSetLayoutBinding(2, Type::eStorageBuffer, 1, compute),
         vk::DescriptorSetLayoutBinding(3, Type::eUniformBuffer, 1, compute),
         vk::DescriptorSetLayoutBinding(4, Type::eCombinedImageSampler, 1, compute),
+        vk::DescriptorSetLayoutBinding(5, Type::eStorageBuffer, 1, compute),
     };
     set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
                                                 vk::DescriptorSetLayoutCreateInfo({}, bindings));
-    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 3),
+    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 4),
                                    vk::DescriptorPoolSize(Type::eUniformBuffer, 1),
                                    vk::DescriptorPoolSize(Type::eCombinedImageSampler, 1)};
     pool_ = vk::raii::DescriptorPool(
@@ -96,11 +99,13 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
     const vk::DescriptorBufferInfo commands_info(commands_.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorBufferInfo counts_info(counts_.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorBufferInfo constants_info(constants_.handle(), 0, VK_WHOLE_SIZE);
+    const vk::DescriptorBufferInfo routing_info(routing_.handle(), 0, VK_WHOLE_SIZE);
     const std::array writes = {
         vk::WriteDescriptorSet(*set_, 0, 0, Type::eStorageBuffer, {}, chunks_info),
         vk::WriteDescriptorSet(*set_, 1, 0, Type::eStorageBuffer, {}, commands_info),
         vk::WriteDescriptorSet(*set_, 2, 0, Type::eStorageBuffer, {}, counts_info),
         vk::WriteDescriptorSet(*set_, 3, 0, Type::eUniformBuffer, {}, constants_info),
+        vk::WriteDescriptorSet(*set_, 5, 0, Type::eStorageBuffer, {}, routing_info),
     };
     ctx.device().updateDescriptorSets(writes, {});
 }
@@ -140,11 +145,12 @@ void ChunkCullingPass::record_phase(const vk::raii::CommandBuffer& cmd, std::uin
     cmd.dispatch(1, 1, 1);
     // The lists feed indirect draws, the predicates conditional rendering, and phase 1 rewrites
     // C's list after the eyes' passes.
-    const vk::MemoryBarrier2 barrier(
-        Stage::eComputeShader, Access::eShaderStorageWrite,
-        Stage::eDrawIndirect | Stage::eConditionalRenderingEXT | Stage::eComputeShader,
-        Access::eIndirectCommandRead | Access::eConditionalRenderingReadEXT |
-            Access::eShaderStorageRead | Access::eShaderStorageWrite);
+    const vk::MemoryBarrier2 barrier(Stage::eComputeShader, Access::eShaderStorageWrite,
+                                     Stage::eDrawIndirect | Stage::eConditionalRenderingEXT |
+                                         Stage::eComputeShader | Stage::eFragmentShader,
+                                     Access::eIndirectCommandRead |
+                                         Access::eConditionalRenderingReadEXT |
+                                         Access::eShaderStorageRead | Access::eShaderStorageWrite);
     cmd.pipelineBarrier2(vk::DependencyInfo({}, barrier));
 }
 

@@ -55,6 +55,8 @@ class ChunkCullingPass {
     void record_readback(const vk::raii::CommandBuffer& cmd, bool lists) const;
 
     IndirectDraws draws(CullView view) const;
+    // One uint32 of MONOPLANE_ROUTE_* bits per chunk, written every frame (storage buffer).
+    vk::Buffer routing() const { return routing_.handle(); }
     // Conditional rendering on a counts word (MONOPLANE_PRED_*).
     Predicate predicate(std::uint32_t word, bool inverted = false) const;
 
@@ -70,6 +72,7 @@ class ChunkCullingPass {
     vk_core::Buffer chunks_;
     vk_core::Buffer commands_;
     vk_core::Buffer counts_;
+    vk_core::Buffer routing_;
     vk_core::Buffer constants_;
     vk_core::Buffer counts_readback_;
     vk_core::Buffer commands_readback_;

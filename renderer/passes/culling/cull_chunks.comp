@@ -25,6 +25,8 @@ layout(std430, set = 0, binding = 2) buffer Counts { uint counts[MONOPLANE_COUNT
 layout(std140, set = 0, binding = 3) uniform Constants { CullConstants cull; };
 // Reversed-Z depth, minimum (farthest) over each texel's region of both eyes; mip 0 is level 2.
 layout(set = 0, binding = 4) uniform sampler2D merged_depth;
+// Per chunk: the MONOPLANE_ROUTE_* bits of this frame, for the debug view "routing".
+layout(std430, set = 0, binding = 5) buffer Routing { uint routing[]; };
 layout(push_constant) uniform Push { uint phase; };  // 0: frustum, 1: C's occlusion culling
 
 const uint kBlock = 256;
@@ -112,8 +114,13 @@ void main() {
             visible[MONOPLANE_CULL_MONO] = (views & (1u << MONOPLANE_CULL_MONO)) != 0u &&
                                            mono_allowed &&
                                            !outside_frustum(MONOPLANE_CULL_MONO, lo, hi);
-            if (occlusion_phase && visible[MONOPLANE_CULL_MONO]) {
-                visible[MONOPLANE_CULL_MONO] = !hidden_in_both_eyes(lo, hi);
+            if (!occlusion_phase) {
+                routing[index] = (visible[MONOPLANE_CULL_LEFT] ? MONOPLANE_ROUTE_LEFT : 0u) |
+                                 (visible[MONOPLANE_CULL_RIGHT] ? MONOPLANE_ROUTE_RIGHT : 0u) |
+                                 (visible[MONOPLANE_CULL_MONO] ? MONOPLANE_ROUTE_MONO : 0u);
+            } else if (visible[MONOPLANE_CULL_MONO] && hidden_in_both_eyes(lo, hi)) {
+                visible[MONOPLANE_CULL_MONO] = false;
+                routing[index] = (routing[index] & ~MONOPLANE_ROUTE_MONO) | MONOPLANE_ROUTE_HIDDEN;
             }
         }
         for (uint v = 0; v < MONOPLANE_CULL_VIEWS; ++v) scan[v][lane] = visible[v] ? 1u : 0u;

@@ -36,6 +36,13 @@ using uvec4 = glm::uvec4;
 #define MONOPLANE_PRED_MONO_UNTESTED 7      // C has chunks and no eye has any: C without it
 #define MONOPLANE_COUNT_WORDS 8
 
+// Bits of the routing word each chunk gets per frame (the debug view "routing"): the lists it went
+// to, and whether occlusion culling then took it out of C's.
+#define MONOPLANE_ROUTE_LEFT 1u
+#define MONOPLANE_ROUTE_RIGHT 2u
+#define MONOPLANE_ROUTE_MONO 4u
+#define MONOPLANE_ROUTE_HIDDEN 8u
+
 struct CullConstants {
     // Six planes per view (a, b, c, d; inside where a x + b y + c z + d >= 0), world space,
     // normalised so that (a, b, c) is a unit vector: distances in metres, float-safe.

@@ -13,6 +13,12 @@ const std::uint32_t kForwardFrag[] = {
 const std::uint32_t kForwardDiscardHiddenFrag[] = {
 #include "forward_discard_hidden.frag.spv.inc"
 };
+const std::uint32_t kForwardShowRoutingVert[] = {
+#include "forward_show_routing.vert.spv.inc"
+};
+const std::uint32_t kForwardShowRoutingFrag[] = {
+#include "forward_show_routing.frag.spv.inc"
+};
 const std::uint32_t kFullscreenVert[] = {
 #include "fullscreen.vert.spv.inc"
 };
@@ -34,10 +40,13 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx) {
     };
     set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
                                                 vk::DescriptorSetLayoutCreateInfo({}, bindings));
-    const vk::DescriptorSetLayoutBinding merged_depth(0, vk::DescriptorType::eCombinedImageSampler,
-                                                      1, Stage::eFragment);
+    const std::array set1_bindings = {
+        vk::DescriptorSetLayoutBinding(0, vk::DescriptorType::eCombinedImageSampler, 1,
+                                       Stage::eFragment),
+        vk::DescriptorSetLayoutBinding(1, vk::DescriptorType::eStorageBuffer, 1, Stage::eFragment),
+    };
     merged_depth_layout_ = vk::raii::DescriptorSetLayout(
-        ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, merged_depth));
+        ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, set1_bindings));
     // One layout for all pipelines; set 1 is bound only for kChunksDiscardHidden.
     const std::array set_layouts = {*set_layout_, *merged_depth_layout_};
     layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layouts));
@@ -57,6 +66,11 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx) {
         vk_core::make_shader(ctx, kForwardDiscardHiddenFrag);
     geometry.fragment = *discard_frag;
     discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
+    const vk::raii::ShaderModule routing_vert = vk_core::make_shader(ctx, kForwardShowRoutingVert);
+    const vk::raii::ShaderModule routing_frag = vk_core::make_shader(ctx, kForwardShowRoutingFrag);
+    geometry.vertex = *routing_vert;
+    geometry.fragment = *routing_frag;
+    show_routing_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
 
     // The sky covers only pixels still at the cleared far depth (0 with reversed Z).
     const vk::raii::ShaderModule fullscreen_vert = vk_core::make_shader(ctx, kFullscreenVert);
@@ -130,6 +144,12 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
                                            merged_depth_set, {});
                     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *discard_hidden_pipeline_);
+                    chunks.record(cmd);
+                    break;
+                case ForwardStep::kChunksShowRouting:
+                    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
+                                           merged_depth_set, {});
+                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *show_routing_pipeline_);
                     chunks.record(cmd);
                     break;
                 case ForwardStep::kSky:

@@ -33,6 +33,7 @@ enum class ForwardStep {
     kChunksDiscardHidden,  // the same, discarding fragments hidden in both eyes (C only)
     kSky,                  // the sky where nothing was drawn
     kSkyDiscardHidden,     // the same, skipping pixels hidden in both eyes (C only)
+    kChunksShowRouting,    // the debug view "routing": chunks coloured by the lists they are in
 };
 struct ForwardDraw {
     ForwardStep step = ForwardStep::kChunks;
@@ -48,12 +49,13 @@ class ForwardPass {
     explicit ForwardPass(const vk_core::Context& ctx);
 
     vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
-    // Set 1 of kChunksDiscardHidden: the merged depth pyramid (binding 0, eGeneral).
+    // Set 1 of the depth-tested and debug steps: the merged depth pyramid (binding 0, eGeneral)
+    // and the culling pass's per-chunk routing words (binding 1).
     vk::DescriptorSetLayout merged_depth_layout() const { return *merged_depth_layout_; }
 
     // Expects the targets in eUndefined (their contents are replaced); leaves the colour targets
     // in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
-    // merged_depth_set is needed only by kChunksDiscardHidden steps.
+    // merged_depth_set is needed only by the *DiscardHidden and kChunksShowRouting steps.
     void record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
                 vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
                 const SceneGeometry& geometry, const IndirectDraws& chunks,
@@ -65,6 +67,7 @@ class ForwardPass {
     vk::raii::PipelineLayout layout_{nullptr};
     vk::raii::Pipeline geometry_pipeline_{nullptr};
     vk::raii::Pipeline discard_hidden_pipeline_{nullptr};
+    vk::raii::Pipeline show_routing_pipeline_{nullptr};
     vk::raii::Pipeline sky_pipeline_{nullptr};
     vk::raii::Pipeline sky_discard_hidden_pipeline_{nullptr};
 };

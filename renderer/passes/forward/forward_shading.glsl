@@ -9,6 +9,12 @@ layout(set = 0, binding = 1) uniform sampler2DShadow shadow_map;
 // The merged depth pyramid of both eyes (renderer/passes/depth_pyramid), mip 0 = level 2.
 layout(set = 1, binding = 0) uniform sampler2D merged_depth;
 #endif
+#ifdef MONOPLANE_SHOW_ROUTING
+#include "renderer/passes/culling/cull_constants.h"
+// Per chunk, the lists the culling pass put it in this frame (MONOPLANE_ROUTE_*).
+layout(std430, set = 1, binding = 1) readonly buffer Routing { uint routing[]; };
+layout(location = 4) flat in uint in_chunk;
+#endif
 
 #include "renderer/passes/shared/sky.glsl"
 
@@ -112,6 +118,16 @@ void main() {
     float glossiness = (1.0 - roughness) * (1.0 - roughness);
 
     vec3 color = diffuse + highlight + ambient + reflected * fresnel * glossiness;
+#ifdef MONOPLANE_SHOW_ROUTING
+    // Hue by routing, brightness kept: green drawn by the eyes only, blue by C only, magenta by
+    // both (the chunk straddles the overlap band, or its box does: candidates for force-mono).
+    uint route = routing[in_chunk];
+    bool by_eyes = (route & (MONOPLANE_ROUTE_LEFT | MONOPLANE_ROUTE_RIGHT)) != 0u;
+    bool by_mono = (route & MONOPLANE_ROUTE_MONO) != 0u;
+    vec3 hue = by_eyes && by_mono ? vec3(1.0, 0.1, 0.9)
+                                  : (by_mono ? vec3(0.1, 0.35, 1.0) : vec3(0.1, 0.9, 0.15));
+    color = hue * (0.3 + 0.7 * dot(color, vec3(0.2126, 0.7152, 0.0722)));
+#endif
     out_color = vec4(color, 1.0);
     out_linear_depth = linear_depth;
 }
