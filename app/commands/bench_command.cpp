@@ -19,6 +19,7 @@
 #include "app/bench/bench_results.h"
 #include "app/commands/commands.h"
 #include "app/commands/frame_summary.h"
+#include "app/commands/output_directory.h"
 #include "app/commands/validation_report.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
@@ -168,21 +169,13 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
     run.frame_ms_median = summary.frame_ms_median;
     run.frame_ms_p90 = summary.frame_ms_p90;
     run.cpu_ms_median = summary.cpu_ms_median;
+    run.frame_ms_p10 = summary.frame_ms_p10;
     run.pass_ms_median = summary.pass_ms_median;
+    run.pass_ms_p10 = summary.pass_ms_p10;
+    run.pass_ms_p90 = summary.pass_ms_p90;
     if (!ratios.empty()) {
         run.time_ratio = percentile(ratios, 0.5);
         run.stereo_frame_ms_median = percentile(reference_ms, 0.5);
-    }
-    std::vector<double> frame_ms;
-    std::map<std::string, std::vector<double>> pass_ms;
-    for (const profile::FrameStats& f : frames) {
-        frame_ms.push_back(f.gpu_frame_ms);
-        for (const profile::PassTime& p : f.passes) pass_ms[p.name].push_back(p.gpu_ms);
-    }
-    run.frame_ms_p10 = percentile(frame_ms, 0.1);
-    for (const auto& [name, times] : pass_ms) {
-        run.pass_ms_p10[name] = percentile(times, 0.1);
-        run.pass_ms_p90[name] = percentile(times, 0.9);
     }
     for (const profile::ViewStatistics& v : summary.views) {
         run.fragments += v.fragment_invocations;
@@ -261,12 +254,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     if ((o.width > 0) != (o.height > 0)) throw UserError("--width and --height go together");
     if (scene_ids.empty() || mode_list.empty()) throw UserError("nothing to measure");
 
-    const std::filesystem::path out(o.out);
-    std::error_code ec;
-    std::filesystem::create_directories(out, ec);
-    if (ec || !std::filesystem::is_directory(out)) {
-        throw UserError("--out " + o.out + ": cannot create the directory (" + ec.message() + ")");
-    }
+    const std::filesystem::path out = prepare_output_directory("--out", o.out);
 
     const hmd::HmdProfile profile = hmd::load_hmd_profile(o.hmd).value_or_throw();
     const vk::Extent2D extent(static_cast<std::uint32_t>(o.width > 0 ? o.width : profile.width),

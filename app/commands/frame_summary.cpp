@@ -27,9 +27,14 @@ FrameSummary summarize(const std::vector<profile::FrameStats>& frames) {
         for (const profile::PassTime& p : f.passes) passes[p.name].push_back(p.gpu_ms);
     }
     summary.frame_ms_median = percentile(gpu, 0.5);
+    summary.frame_ms_p10 = percentile(gpu, 0.1);
     summary.frame_ms_p90 = percentile(gpu, 0.9);
     summary.cpu_ms_median = percentile(cpu, 0.5);
-    for (auto& [name, times] : passes) summary.pass_ms_median[name] = percentile(times, 0.5);
+    for (auto& [name, times] : passes) {
+        summary.pass_ms_median[name] = percentile(times, 0.5);
+        summary.pass_ms_p10[name] = percentile(times, 0.1);
+        summary.pass_ms_p90[name] = percentile(times, 0.9);
+    }
     if (!frames.empty()) summary.views = frames.back().views;
     return summary;
 }

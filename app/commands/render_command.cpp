@@ -7,6 +7,7 @@
 #include "app/commands/commands.h"
 #include "app/commands/frame_summary.h"
 #include "app/commands/json_writer.h"
+#include "app/commands/output_directory.h"
 #include "app/commands/stereo_comparison.h"
 #include "app/commands/validation_report.h"
 #include "app/png.h"
@@ -153,13 +154,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     if (o.ipd && !(*o.ipd >= 0.0 && *o.ipd <= 0.1))
         throw UserError("--ipd must be within [0, 0.1] m");
 
-    // Validate the output path before any work, so nothing is computed and then lost.
-    const std::filesystem::path out(o.out);
-    std::error_code ec;
-    std::filesystem::create_directories(out, ec);
-    if (ec || !std::filesystem::is_directory(out)) {
-        throw UserError("--out " + o.out + ": cannot create the directory (" + ec.message() + ")");
-    }
+    const std::filesystem::path out = prepare_output_directory("--out", o.out);
 
     const hmd::HmdProfile profile = hmd::load_hmd_profile(o.hmd).value_or_throw();
     const int width = o.width > 0 ? o.width : profile.width;

@@ -17,6 +17,7 @@
 
 #include "app/commands/commands.h"
 #include "app/commands/json_writer.h"
+#include "app/commands/output_directory.h"
 #include "charts/line_chart.h"
 #include "charts/svg_writer.h"
 #include "hmd/profile.h"
@@ -257,14 +258,7 @@ std::string fig2_svg(const std::vector<Fig2Series>& series, const hmd::HmdProfil
 }
 
 void write_fig2(const RigOptions& o, const hmd::HmdProfile& profile) {
-    // Validate the output path before any work, so nothing is computed and then lost.
-    const std::filesystem::path out(o.fig2_dir);
-    std::error_code ec;
-    std::filesystem::create_directories(out, ec);
-    if (ec || !std::filesystem::is_directory(out)) {
-        throw UserError("--fig2 " + o.fig2_dir + ": cannot create the directory (" + ec.message() +
-                        ")");
-    }
+    const std::filesystem::path out = prepare_output_directory("--fig2", o.fig2_dir);
     if (o.fig2_mono_planes.empty()) throw UserError("--mono-planes: give at least one distance");
 
     std::vector<Fig2Series> series;

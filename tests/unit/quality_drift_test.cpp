@@ -13,23 +13,13 @@
 #include <vector>
 
 #include "renderer/quality/drift.h"
+#include "tests/unit/quality_test_image.h"
 
 namespace monoplane::quality {
 namespace {
 
-// Same members as modes::RgbaImage, so rgba_view is exercised the way the renderer will use it.
-struct TestImage {
-    std::uint32_t width = 0;
-    std::uint32_t height = 0;
-    std::vector<std::uint8_t> pixels;
-
-    std::uint8_t* at(std::uint32_t x, std::uint32_t y) {
-        return &pixels[4 * (std::size_t{y} * width + x)];
-    }
-    const std::uint8_t* at(std::uint32_t x, std::uint32_t y) const {
-        return &pixels[4 * (std::size_t{y} * width + x)];
-    }
-};
+using testing::flat_image;
+using testing::TestImage;
 
 constexpr std::uint32_t kWidth = 256;
 constexpr std::uint32_t kHeight = 192;
@@ -38,14 +28,6 @@ constexpr std::uint32_t kHeight = 192;
 // 24): centres x = 15, 39, ..., 231 (cx + 15 < 256: 10 of them) and y = 15, 39, ..., 159
 // (cy + 15 < 192: 7), 70 patches in all.
 constexpr std::size_t kDefaultGridPatches = 10 * 7;
-
-TestImage flat_image(std::uint32_t width, std::uint32_t height, std::uint8_t value) {
-    TestImage image{width, height, std::vector<std::uint8_t>(std::size_t{4} * width * height)};
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-        image.pixels[i] = i % 4 == 3 ? 255 : value;
-    }
-    return image;
-}
 
 // White noise blurred with a Gaussian of sigma 2 px, scaled to mean 128 and standard deviation
 // about 40: textured everywhere (every patch passes the 4.0 std-dev test), smooth enough that

@@ -12,35 +12,13 @@
 #include "renderer/quality/colormap.h"
 #include "renderer/quality/heat_map.h"
 #include "renderer/quality/ssim.h"
+#include "tests/unit/quality_test_image.h"
 
 namespace monoplane::quality {
 namespace {
 
-// Same members as modes::RgbaImage, so rgba_view is exercised the way the renderer will use it.
-struct TestImage {
-    std::uint32_t width = 0;
-    std::uint32_t height = 0;
-    std::vector<std::uint8_t> pixels;
-
-    std::uint8_t* at(std::uint32_t x, std::uint32_t y) {
-        return &pixels[4 * (std::size_t{y} * width + x)];
-    }
-    const std::uint8_t* at(std::uint32_t x, std::uint32_t y) const {
-        return &pixels[4 * (std::size_t{y} * width + x)];
-    }
-};
-
-TestImage flat_image(std::uint32_t width, std::uint32_t height, std::uint8_t r, std::uint8_t g,
-                     std::uint8_t b) {
-    TestImage image{width, height, std::vector<std::uint8_t>(std::size_t{4} * width * height)};
-    for (std::uint32_t i = 0; i < width * height; ++i) {
-        image.pixels[4 * i + 0] = r;
-        image.pixels[4 * i + 1] = g;
-        image.pixels[4 * i + 2] = b;
-        image.pixels[4 * i + 3] = 255;
-    }
-    return image;
-}
+using testing::flat_image;
+using testing::TestImage;
 
 TestImage random_image(std::uint32_t width, std::uint32_t height, std::uint32_t seed) {
     std::mt19937 rng(seed);
