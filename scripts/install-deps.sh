@@ -8,6 +8,7 @@ packages=(
   libvulkan-dev glslc mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   libglm-dev libstb-dev libcli11-dev libtomlplusplus-dev libboost-math-dev
   libgtest-dev libgmock-dev libbenchmark-dev libsqlite3-dev
+  libopenxr-dev libopenxr-loader1 libglfw3-dev libimgui-dev xvfb xauth
 )
 
 missing=()

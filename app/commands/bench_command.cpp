@@ -267,7 +267,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     double nearest = base.views.far;
     for (const Plane& p : planes) nearest = std::min(nearest, p.metres);
 
-    auto ctx = vk_core::Context::create({global.validation, global.device}).value_or_throw();
+    auto ctx = vk_core::Context::create(global.context_options()).value_or_throw();
     std::cerr << "device: " << ctx->device_info().name << "\n";
 
     int total = 0;

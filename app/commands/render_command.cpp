@@ -160,7 +160,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     const int width = o.width > 0 ? o.width : profile.width;
     const int height = o.height > 0 ? o.height : profile.height;
 
-    auto ctx = vk_core::Context::create({global.validation, global.device}).value_or_throw();
+    auto ctx = vk_core::Context::create(global.context_options()).value_or_throw();
     std::cerr << "device: " << ctx->device_info().name << "\n";
     std::cerr << "generating " << o.scene << " (detail " << o.detail << ", seed " << o.seed
               << ")\n";

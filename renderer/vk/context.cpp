@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <optional>
 #include <string_view>
 
 namespace monoplane::vk_core {
@@ -32,6 +33,48 @@ std::uint32_t find_queue_family(const vk::raii::PhysicalDevice& device) {
         if ((families[i].queueFlags & needed) == needed) return i;
     }
     return 0;  // unreachable: select_device() only returns devices with such a family
+}
+
+bool has_extension(const std::vector<vk::ExtensionProperties>& available, std::string_view name) {
+    return std::any_of(available.begin(), available.end(), [name](const auto& extension) {
+        return std::string_view(extension.extensionName) == name;
+    });
+}
+
+// Appends the caller's extensions after checking that they exist; the error names the first
+// missing one and where it would come from.
+std::optional<Error> add_extensions(const std::vector<std::string>& wanted,
+                                    const std::vector<vk::ExtensionProperties>& available,
+                                    const char* what, std::vector<const char*>& names) {
+    for (const std::string& name : wanted) {
+        if (!has_extension(available, name)) {
+            return Error{std::string("the Vulkan ") + what + " extension " + name +
+                         " is not available (a window needs a display and a WSI-capable driver)"};
+        }
+        if (std::find_if(names.begin(), names.end(), [&](const char* n) { return name == n; }) ==
+            names.end()) {
+            names.push_back(name.c_str());
+        }
+    }
+    return std::nullopt;
+}
+
+// The index of the physical device a hook names (an OpenXR runtime's choice), if monoplane can
+// use it.
+Result<int> named_device(const vk::raii::Instance& instance, const std::vector<DeviceInfo>& devices,
+                         const std::function<Result<VkPhysicalDevice>(VkInstance)>& name_device) {
+    Result<VkPhysicalDevice> named = name_device(*instance);
+    if (!named) return named.error();
+    const vk::raii::PhysicalDevices physical(instance);
+    for (std::size_t i = 0; i < physical.size(); ++i) {
+        if (static_cast<VkPhysicalDevice>(*physical[i]) != *named) continue;
+        if (!devices[i].suitable) {
+            return Error{"the device the OpenXR runtime requires, '" + devices[i].name +
+                         "', cannot run monoplane: " + devices[i].unsuitable_reason};
+        }
+        return static_cast<int>(i);
+    }
+    return Error{"the physical device named by the runtime is not one of the instance's devices"};
 }
 
 }  // namespace
@@ -69,9 +112,21 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
             layers.push_back(kValidationLayer);
             extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
         }
+        if (auto missing = add_extensions(options.instance_extensions,
+                                          ctx->loader_.enumerateInstanceExtensionProperties(),
+                                          "instance", extensions)) {
+            return *missing;
+        }
         const vk::ApplicationInfo app_info("monoplane", 1, "monoplane", 1, VK_API_VERSION_1_3);
-        ctx->instance_ = vk::raii::Instance(
-            ctx->loader_, vk::InstanceCreateInfo({}, &app_info, layers, extensions));
+        const vk::InstanceCreateInfo instance_info({}, &app_info, layers, extensions);
+        if (options.hooks.create_instance) {
+            Result<VkInstance> handle =
+                options.hooks.create_instance(static_cast<const VkInstanceCreateInfo&>(instance_info));
+            if (!handle) return handle.error();
+            ctx->instance_ = vk::raii::Instance(ctx->loader_, *handle);
+        } else {
+            ctx->instance_ = vk::raii::Instance(ctx->loader_, instance_info);
+        }
 
         if (options.validation) {
             using Severity = vk::DebugUtilsMessageSeverityFlagBitsEXT;
@@ -84,7 +139,9 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
         }
 
         const std::vector<DeviceInfo> devices = describe_devices(ctx->instance_);
-        Result<int> chosen = select_device(devices, options.device_selector);
+        Result<int> chosen = options.hooks.physical_device
+                                 ? named_device(ctx->instance_, devices, options.hooks.physical_device)
+                                 : select_device(devices, options.device_selector);
         if (!chosen) return chosen.error();
         ctx->device_info_ = devices[*chosen];
         ctx->physical_device_ = std::move(vk::raii::PhysicalDevices(ctx->instance_)[*chosen]);
@@ -132,6 +189,10 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
         // The GPU culling writes each view's draw count (Vulkan 1.2 core, optional feature).
         chain.get<vk::PhysicalDeviceVulkan12Features>().drawIndirectCount = VK_TRUE;
         std::vector<const char*> device_extension_names;
+        if (auto missing = add_extensions(options.device_extensions, device_extensions, "device",
+                                          device_extension_names)) {
+            return *missing;
+        }
         if (caps.conditional_rendering) {
             chain.get<vk::PhysicalDeviceConditionalRenderingFeaturesEXT>().conditionalRendering =
                 VK_TRUE;
@@ -148,7 +209,18 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
         const float priority = 1.0f;
         const vk::DeviceQueueCreateInfo queue_info({}, ctx->queue_family_, 1, &priority);
         chain.get<vk::DeviceCreateInfo>().setQueueCreateInfos(queue_info);
-        ctx->device_ = vk::raii::Device(ctx->physical_device_, chain.get<vk::DeviceCreateInfo>());
+        if (options.hooks.create_device) {
+            Result<VkDevice> handle = options.hooks.create_device(
+                *ctx->physical_device_,
+                static_cast<const VkDeviceCreateInfo&>(chain.get<vk::DeviceCreateInfo>()));
+            if (!handle) return handle.error();
+            ctx->device_ = vk::raii::Device(ctx->physical_device_, *handle);
+        } else {
+            ctx->device_ =
+                vk::raii::Device(ctx->physical_device_, chain.get<vk::DeviceCreateInfo>());
+        }
+        ctx->device_extensions_.assign(device_extension_names.begin(),
+                                       device_extension_names.end());
         ctx->queue_ = vk::raii::Queue(ctx->device_, ctx->queue_family_, 0);
         ctx->command_pool_ = vk::raii::CommandPool(
             ctx->device_,
@@ -159,6 +231,11 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
         return Error{std::string("Vulkan initialisation failed: ") + e.what()};
     }
     return ctx;
+}
+
+bool Context::has_device_extension(std::string_view name) const {
+    return std::find(device_extensions_.begin(), device_extensions_.end(), name) !=
+           device_extensions_.end();
 }
 
 void Context::submit_and_wait(

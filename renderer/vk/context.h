@@ -6,6 +6,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/result.h"
@@ -14,10 +15,27 @@
 
 namespace monoplane::vk_core {
 
+// Lets a caller take over creating the instance and the device while the Context still decides
+// what they need (API version, layers, extensions, features). An OpenXR runtime is such a caller:
+// with XR_KHR_vulkan_enable2 it creates both itself and names the physical device to use.
+struct ContextCreationHooks {
+    // Creates the instance from the Context's create info; returns the handle or a message.
+    std::function<Result<VkInstance>(const VkInstanceCreateInfo&)> create_instance;
+    // The physical device to use (instead of select_device()).
+    std::function<Result<VkPhysicalDevice>(VkInstance)> physical_device;
+    // Creates the device on that physical device from the Context's create info.
+    std::function<Result<VkDevice>(VkPhysicalDevice, const VkDeviceCreateInfo&)> create_device;
+};
+
 struct ContextOptions {
     // Khronos validation layer with a message counter; tests turn it on and fail on any message.
     bool validation = false;
     std::string device_selector;  // see select_device()
+    // Extensions beyond monoplane's own, e.g. a window's surface extensions (GLFW) and
+    // VK_KHR_swapchain; a missing one is an error naming it.
+    std::vector<std::string> instance_extensions;
+    std::vector<std::string> device_extensions;
+    ContextCreationHooks hooks;  // empty members: created here
 };
 
 // Counts validation warnings and errors; keeps the first few messages for the test's report.
@@ -64,6 +82,9 @@ class Context {
     const DeviceCapabilities& capabilities() const { return capabilities_; }
     const ValidationMessages& validation_messages() const { return *validation_messages_; }
 
+    // Whether the device was created with this extension (one of ContextOptions's or our own).
+    bool has_device_extension(std::string_view name) const;
+
     // Runs `record` on a fresh primary command buffer, submits it and waits for completion.
     // May be called from one thread at a time.
     void submit_and_wait(const std::function<void(const vk::raii::CommandBuffer&)>& record) const;
@@ -81,6 +102,7 @@ class Context {
     vk::raii::Queue queue_{nullptr};
     vk::raii::CommandPool command_pool_{nullptr};
     std::uint32_t queue_family_ = 0;
+    std::vector<std::string> device_extensions_;
     DeviceInfo device_info_;
     DeviceCapabilities capabilities_;
 };
