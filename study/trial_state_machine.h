@@ -56,6 +56,7 @@ public:
     int visible_label() const;  // 0 before the first frame, else 1 or 2
     // The label the renderer should draw now (the requested one, visible from the next frame).
     int label_to_draw() const;
+    bool seen(int label) const { return seen_[label - 1]; }  // label 1 or 2 was visible
     const ScheduledTrial& trial() const { return trial_; }
     const TrialOutcome& outcome() const { return outcome_; }
 

@@ -1,13 +1,14 @@
 // `monoplane study run|resume|export` (DESIGN.md section 8): sessions of the 2AFC study. With
 // `--headset none` a simulated observer answers on a virtual clock: no rendering, a whole session
-// in well under a second. The headsets (simulated OpenXR runtime, real OpenXR) arrive with the
-// headset issue.
+// in well under a second. With `--headset simulated|openxr` the session runs on an OpenXR headset
+// (study_headset.h): monoplane's simulated runtime, or whichever runtime is active.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <random>
 
 #include "app/commands/commands.h"
+#include "app/commands/study_headset.h"
 #include "hmd/profile.h"
 #include "renderer/rig/rig.h"
 #include "study/export.h"
@@ -25,7 +26,7 @@ struct StudyOptions {
     std::string participant;
     std::string db;
     std::string headset = "none";
-    std::string observer = "default";
+    std::string observer;  // "": default without a person (none, simulated), none with openxr
     std::string hmd = "vive";
     std::optional<std::uint64_t> seed;
     std::optional<std::int64_t> session;
@@ -33,16 +34,20 @@ struct StudyOptions {
     bool trace = false;
     std::string format = "csv";
     std::string out;
+    HeadsetStudyOptions headset_options;
 };
 
-void require_headless(const std::string& headset) {
-    if (headset == "none") return;
-    if (headset == "simulated" || headset == "openxr") {
-        throw UserError("--headset " + headset +
-                        ": not available yet (the OpenXR session and the simulated runtime arrive "
-                        "with the headset issue); use --headset none");
-    }
+void check_headset(const std::string& headset) {
+    if (headset == "none" || headset == "simulated" || headset == "openxr") return;
     throw UserError("--headset " + headset + ": use none, simulated or openxr");
+}
+
+// Who answers: a simulated observer unless a person holds the controller (openxr) or the
+// simulated runtime's script plays the controller (`--observer none`).
+std::string observer_for(const StudyOptions& o, const std::string& recorded = {}) {
+    if (!o.observer.empty()) return o.observer;
+    if (!recorded.empty()) return recorded;
+    return o.headset == "openxr" ? "none" : "default";
 }
 
 // The observer's stimulus strength: the rig's largest projection error for the trial's hybrid
@@ -79,6 +84,19 @@ study::RunOptions run_options(const StudyOptions& o, const hmd::HmdProfile& hmd,
     return options;
 }
 
+void run_on_headset(
+    const StudyOptions& o, const GlobalOptions& global, study::StudyStore& store,
+    const study::Protocol& protocol, study::Observer* observer, const hmd::HmdProfile& hmd,
+    const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
+    HeadsetStudyOptions options = o.headset_options;
+    options.headset = o.headset;
+    options.hmd = o.hmd;
+    options.trace = o.trace;
+    const study::SessionStatus status = run_headset_session(
+        options, global, store, protocol, observer, error_model(hmd, protocol), begin);
+    std::cerr << "session " << study::session_status_name(status) << "\n";
+}
+
 void finish(study::StudyStore& store, std::int64_t session_id, const study::Protocol& protocol,
             study::Observer& observer, const study::RunOptions& options) {
     const auto status =
@@ -90,8 +108,8 @@ void finish(study::StudyStore& store, std::int64_t session_id, const study::Prot
               << decided << " of " << trials.size() << " trials decided\n";
 }
 
-void run_study(const StudyOptions& o) {
-    require_headless(o.headset);
+void run_study(const StudyOptions& o, const GlobalOptions& global) {
+    check_headset(o.headset);
     const study::Protocol protocol = study::load_protocol(o.protocol).value_or_throw();
     const hmd::HmdProfile hmd = hmd::load_hmd_profile(o.hmd).value_or_throw();
     auto store = study::StudyStore::open(o.db).value_or_throw();
@@ -110,18 +128,32 @@ void run_study(const StudyOptions& o) {
     info.hmd = hmd.name;
     info.runtime = o.headset;
     info.device = "none";
-    info.observer = o.observer;
+    const std::string observer_name = observer_for(o);
+    info.observer = observer_name == "none" ? "" : observer_name;
+    std::unique_ptr<study::Observer> observer;
+    if (observer_name != "none")
+        observer = study::make_observer(observer_name, seed).value_or_throw();
     // started_utc is left empty: the store stamps the session's start when it writes it.
-    const std::int64_t session_id = store->begin_session(info, schedule).value_or_throw();
-    std::cerr << "session " << session_id << ": participant " << o.participant << " (index "
-              << participant_index << "), protocol " << protocol.name << ", seed " << seed << ", "
-              << schedule.trials.size() << " trials\n";
-    auto observer = study::make_observer(o.observer, seed).value_or_throw();
+    const auto begin = [&](const std::string& runtime, const std::string& device) {
+        info.runtime = runtime;
+        info.device = device;
+        const std::int64_t id = store->begin_session(info, schedule).value_or_throw();
+        std::cerr << "session " << id << ": participant " << o.participant << " (index "
+                  << participant_index << "), protocol " << protocol.name << ", seed " << seed
+                  << ", " << schedule.trials.size() << " trials\n";
+        return id;
+    };
+    if (o.headset != "none") {
+        run_on_headset(o, global, *store, protocol, observer.get(), hmd, begin);
+        return;
+    }
+    if (!observer) throw UserError("--headset none needs an observer to answer (not none)");
+    const std::int64_t session_id = begin("none", "none");
     finish(*store, session_id, protocol, *observer, run_options(o, hmd, protocol));
 }
 
-void resume_study(const StudyOptions& o) {
-    require_headless(o.headset);
+void resume_study(const StudyOptions& o, const GlobalOptions& global) {
+    check_headset(o.headset);
     auto store = study::StudyStore::open(o.db).value_or_throw();
     std::int64_t session_id = 0;
     if (o.session) {
@@ -143,10 +175,19 @@ void resume_study(const StudyOptions& o) {
     const int first = store->first_undecided_trial(session_id).value_or_throw();
     std::cerr << "resuming session " << session_id << " (participant " << info.participant_code
               << ") at trial " << first << "\n";
-    const std::string observer_name = info.observer.empty() ? o.observer : info.observer;
-    auto observer =
-        study::make_observer(observer_name, info.seed ^ (0x9E3779B97F4A7C15ull * (first + 1)))
-            .value_or_throw();
+    const std::string observer_name = observer_for(o, info.observer);
+    std::unique_ptr<study::Observer> observer;
+    if (observer_name != "none") {
+        observer =
+            study::make_observer(observer_name, info.seed ^ (0x9E3779B97F4A7C15ull * (first + 1)))
+                .value_or_throw();
+    }
+    if (o.headset != "none") {
+        run_on_headset(o, global, *store, protocol, observer.get(), hmd,
+                       [session_id](const std::string&, const std::string&) { return session_id; });
+        return;
+    }
+    if (!observer) throw UserError("--headset none needs an observer to answer (not none)");
     finish(*store, session_id, protocol, *observer, run_options(o, hmd, protocol));
 }
 
@@ -160,7 +201,36 @@ void export_study(const StudyOptions& o) {
 
 }  // namespace
 
-void add_study_command(CLI::App& root, const GlobalOptions& /*global*/) {
+// The options of a session on a headset, shared by run and resume.
+void add_headset_options(CLI::App* cmd, StudyOptions& o) {
+    HeadsetStudyOptions& h = o.headset_options;
+    cmd->add_option("--window", h.window,
+                    "Experimenter window: auto (when a display exists), on or off")
+        ->capture_default_str();
+    cmd->add_option("--detail", h.detail, "Scene detail: test, low, medium, high")
+        ->capture_default_str();
+    cmd->add_option("--resolution-scale", h.resolution_scale,
+                    "Eye size relative to the runtime's recommendation")
+        ->capture_default_str()
+        ->check(CLI::Range(0.05, 2.0));
+    cmd->add_option("--neutral-s", h.neutral_s, "Neutral screen between trials, seconds")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 60.0));
+    cmd->add_option("--screenshot", h.screenshot,
+                    "PNG of the experimenter window when the session ends");
+    cmd->add_option("--screenshot-frame", h.screenshot_frame,
+                    "Take the --screenshot after this frame instead");
+    cmd->add_option("--sim-script", h.sim_script,
+                    "simulated: the runtime's script (head poses, controller input; "
+                    "docs/simxr.md); default: written from --hmd, --sim-rate, --dump-frames");
+    cmd->add_option("--sim-rate", h.sim_rate_hz, "simulated: display rate in Hz (virtual clock)")
+        ->capture_default_str()
+        ->check(CLI::Range(1.0, 1000.0));
+    cmd->add_option("--dump-frames", h.dump_frames,
+                    "simulated: write every submitted frame's eyes as PNG into this folder");
+}
+
+void add_study_command(CLI::App& root, const GlobalOptions& global) {
     CLI::App* study = root.add_subcommand("study", "Run, resume and export 2AFC study sessions");
     study->require_subcommand(1);
     auto options = std::make_shared<StudyOptions>();
@@ -174,14 +244,17 @@ void add_study_command(CLI::App& root, const GlobalOptions& /*global*/) {
     run->add_option("--headset", options->headset, "none, simulated or openxr")
         ->capture_default_str();
     run->add_option("--observer", options->observer,
-                    "Simulated observer: default, chance, reference")
-        ->capture_default_str();
-    run->add_option("--hmd", options->hmd, "HMD profile (for the observer's error model)")
+                    "Simulated observer: default, chance, reference, or none (a person, or the "
+                    "simulated runtime's scripted controller); default: none with openxr, else "
+                    "default");
+    run->add_option("--hmd", options->hmd,
+                    "HMD profile: the observer's error model, and the simulated headset")
         ->capture_default_str();
     run->add_option("--seed", options->seed, "Session seed (default: drawn and recorded)");
     run->add_option("--pace-ms", options->pace_ms, "Sleep per logged event (tests)");
     run->add_flag("--trace", options->trace, "Print each durable write on stdout");
-    run->callback([options] { run_study(*options); });
+    add_headset_options(run, *options);
+    run->callback([options, &global] { run_study(*options, global); });
 
     CLI::App* resume = study->add_subcommand("resume", "Continue an interrupted session");
     resume->add_option("--db", options->db, "Study database (SQLite)")->required();
@@ -194,7 +267,8 @@ void add_study_command(CLI::App& root, const GlobalOptions& /*global*/) {
     resume->add_option("--hmd", options->hmd, "HMD profile")->capture_default_str();
     resume->add_option("--pace-ms", options->pace_ms, "Sleep per logged event (tests)");
     resume->add_flag("--trace", options->trace, "Print each durable write on stdout");
-    resume->callback([options] { resume_study(*options); });
+    add_headset_options(resume, *options);
+    resume->callback([options, &global] { resume_study(*options, global); });
 
     CLI::App* exp = study->add_subcommand("export", "Export the trials as CSV or JSON");
     exp->add_option("--db", options->db, "Study database (SQLite)")->required();

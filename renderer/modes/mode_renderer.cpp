@@ -607,6 +607,10 @@ std::vector<std::uint32_t> ModeRenderer::drawn_chunks(passes::CullView view) con
     return culling_.drawn_chunks(view);
 }
 
+const vk_core::Image& ModeRenderer::display_image(Eye eye) const {
+    return eyes_[static_cast<int>(eye)]->display;
+}
+
 const RgbaImage& ModeRenderer::eye_image(Eye eye) const {
     return eyes_[static_cast<int>(eye)]->image;
 }

@@ -81,6 +81,10 @@ class ModeRenderer {
     void set_read_back(bool read_back) { options_.read_back = read_back; }
     // The last frame's images (options.read_back).
     const RgbaImage& eye_image(Eye eye) const;
+    // The last frame's tone-mapped eye on the GPU (R8G8B8A8_SRGB, transfer-source usage): in
+    // COLOR_ATTACHMENT_OPTIMAL without read_back, else TRANSFER_SRC_OPTIMAL. For a headset's
+    // swapchain; the next frame overwrites it.
+    const vk_core::Image& display_image(Eye eye) const;
     // C's tone-mapped image, or nullptr when the last frame had none (stereo, or m >= f).
     const RgbaImage* mono_image() const;
     // Metres in front of the eyes' plane per pixel, MONOPLANE_SKY_LINEAR_DEPTH for the sky

@@ -120,8 +120,8 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
         const vk::ApplicationInfo app_info("monoplane", 1, "monoplane", 1, VK_API_VERSION_1_3);
         const vk::InstanceCreateInfo instance_info({}, &app_info, layers, extensions);
         if (options.hooks.create_instance) {
-            Result<VkInstance> handle =
-                options.hooks.create_instance(static_cast<const VkInstanceCreateInfo&>(instance_info));
+            Result<VkInstance> handle = options.hooks.create_instance(
+                static_cast<const VkInstanceCreateInfo&>(instance_info));
             if (!handle) return handle.error();
             ctx->instance_ = vk::raii::Instance(ctx->loader_, *handle);
         } else {
@@ -139,9 +139,10 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
         }
 
         const std::vector<DeviceInfo> devices = describe_devices(ctx->instance_);
-        Result<int> chosen = options.hooks.physical_device
-                                 ? named_device(ctx->instance_, devices, options.hooks.physical_device)
-                                 : select_device(devices, options.device_selector);
+        Result<int> chosen =
+            options.hooks.physical_device
+                ? named_device(ctx->instance_, devices, options.hooks.physical_device)
+                : select_device(devices, options.device_selector);
         if (!chosen) return chosen.error();
         ctx->device_info_ = devices[*chosen];
         ctx->physical_device_ = std::move(vk::raii::PhysicalDevices(ctx->instance_)[*chosen]);

@@ -1,0 +1,452 @@
+#include "app/commands/study_headset.h"
+
+#include <unistd.h>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <thread>
+
+#include "app/commands/validation_report.h"
+#include "app/headset/eye_compositor.h"
+#include "app/headset/openxr_headset.h"
+#include "app/headset/overlay_text.h"
+#include "app/window/experimenter_window.h"
+#include "common/result.h"
+#include "renderer/modes/mode_renderer.h"
+#include "scenes/generate.h"
+#include "study/live_session.h"
+#include "study/observer_input.h"
+
+#ifndef MONOPLANE_SIMXR_MANIFEST
+#error "MONOPLANE_SIMXR_MANIFEST must name the simulated runtime's manifest"
+#endif
+
+namespace monoplane::app {
+namespace {
+
+namespace fs = std::filesystem;
+using study::LiveInput;
+using study::ScreenKind;
+
+// Where the overlays sit, as directions of view (tangents, +y up): the label low and small, in
+// the lower periphery; the questionnaire straight ahead.
+constexpr headset::OverlayPlacement kLabelPlacement{0.0, -0.55, 0.05};
+constexpr headset::OverlayPlacement kPanelPlacement{0.0, 0.05, 0.45};
+
+// A head pose from the two located eyes: the midpoint, the eyes' common orientation and their
+// distance. The rig assumes parallel eyes (DESIGN.md section 4): canted views are refused.
+modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const rig::Pose& seat,
+                                    const study::Protocol& protocol) {
+    const rig::Pose& l = frame.views[0].pose;
+    const rig::Pose& r = frame.views[1].pose;
+    const double cant =
+        2.0 * std::acos(std::min(1.0, std::abs(glm::dot(l.orientation, r.orientation))));
+    if (cant > 0.2 * 3.14159265358979 / 180.0) {
+        throw UserError("the headset's views are canted by " +
+                        std::to_string(cant * 180.0 / 3.14159265358979) +
+                        " degrees; monoplane's rig supports parallel eye views only");
+    }
+    const glm::dvec3 centre = 0.5 * (l.position + r.position);
+    modes::StereoViewInputs inputs;
+    // LOCAL space is anchored where the head was when the session began: the scene's viewpoint.
+    inputs.head.position = seat.position + seat.orientation * centre;
+    inputs.head.orientation = seat.orientation * l.orientation;
+    inputs.ipd = glm::length(r.position - l.position);
+    inputs.left = frame.views[0].tangents;
+    inputs.right = frame.views[1].tangents;
+    inputs.near = protocol.near;
+    inputs.far = protocol.far;
+    return inputs;
+}
+
+modes::Mode renderer_mode(study::RenderMode mode) {
+    const auto parsed = modes::parse_mode(std::string(study::render_mode_name(mode)));
+    if (!parsed) {
+        throw UserError("render mode " + std::string(study::render_mode_name(mode)) +
+                        " is not implemented yet; use stereo, hybrid or hybrid-farfield");
+    }
+    return *parsed;
+}
+
+// The scenes and a renderer per (scene, mode) of the protocol, made before the first trial so
+// that no trial waits for one.
+class StudyRenderers {
+  public:
+    StudyRenderers(const vk_core::Context& ctx, const study::Protocol& protocol,
+                   vk::Extent2D extent, scenes::Detail detail) {
+        const double nearest =
+            *std::min_element(protocol.mono_planes.begin(), protocol.mono_planes.end());
+        modes::RendererOptions options;
+        options.read_back = false;  // the eyes go to the swapchain on the GPU
+        for (const std::string& name : protocol.scenes) {
+            std::cerr << "preparing " << name << "\n";
+            auto scene = std::make_unique<scenes::Scene>(
+                scenes::generate_scene(*scenes::parse_scene_id(name), detail));
+            for (study::RenderMode mode : protocol.alternatives) {
+                const auto key = std::make_pair(name, mode);
+                if (renderers_.count(key)) continue;
+                renderers_[key] = std::make_unique<modes::ModeRenderer>(
+                    ctx, *scene, renderer_mode(mode), extent, options, nearest);
+            }
+            scenes_[name] = std::move(scene);
+        }
+    }
+    modes::ModeRenderer& renderer(const std::string& scene, study::RenderMode mode) {
+        return *renderers_.at({scene, mode});
+    }
+    const rig::Pose& seat(const std::string& scene) const {
+        const scenes::Viewpoint* v = scenes_.at(scene)->find_viewpoint("default");
+        return v->head;
+    }
+
+  private:
+    std::map<std::string, std::unique_ptr<scenes::Scene>> scenes_;  // outlive the renderers
+    std::map<std::pair<std::string, study::RenderMode>, std::unique_ptr<modes::ModeRenderer>>
+        renderers_;
+};
+
+window::Phase window_phase(const study::LiveScreen& screen) {
+    switch (screen.kind) {
+        case ScreenKind::Neutral:
+            return window::Phase::Neutral;
+        case ScreenKind::Trial:
+            return screen.paused ? window::Phase::Paused : window::Phase::Trial;
+        case ScreenKind::Questionnaire:
+            return window::Phase::Questionnaire;
+        case ScreenKind::Finished:
+            return window::Phase::Finished;
+        case ScreenKind::Aborted:
+            return window::Phase::Aborted;
+    }
+    return window::Phase::Starting;
+}
+
+std::vector<std::string> questionnaire_lines(const study::Protocol& protocol, int question,
+                                             int selection) {
+    const study::Questionnaire& q = protocol.questionnaire;
+    std::string scale;
+    for (int v = 1; v <= q.scale_points; ++v) {
+        scale += v == selection ? "[" + std::to_string(v) + "] " : " " + std::to_string(v) + "  ";
+    }
+    return {"Question " + std::to_string(question + 1) + " of " + std::to_string(q.items.size()),
+            q.items[static_cast<std::size_t>(question)],
+            "",
+            "1 = disagree ... " + std::to_string(q.scale_points) + " = agree",
+            scale,
+            "",
+            "trigger: next value    confirm button: choose"};
+}
+
+bool has_display() {
+    const char* x11 = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    return (x11 && *x11) || (wayland && *wayland);
+}
+
+}  // namespace
+
+void select_simulated_runtime(const HeadsetStudyOptions& options) {
+    // The simulated runtime, whatever runtime the machine has active: a dry run must never
+    // reach a real headset.
+    setenv("XR_RUNTIME_JSON", MONOPLANE_SIMXR_MANIFEST, 1);
+    if (!options.sim_script.empty()) {
+        if (!fs::exists(options.sim_script)) {
+            throw UserError("--sim-script " + options.sim_script + ": no such file");
+        }
+        setenv("SIMXR_SCRIPT", fs::absolute(options.sim_script).c_str(), 1);
+        return;
+    }
+    // A built-in profile name stays a name; a file is made absolute, as the script's relative
+    // paths are read against the script's folder.
+    std::string hmd = options.hmd;
+    if (fs::exists(hmd) && fs::is_regular_file(hmd)) hmd = fs::absolute(hmd).string();
+    const fs::path script =
+        fs::temp_directory_path() / ("monoplane-simxr-" + std::to_string(getpid()) + ".toml");
+    std::ofstream out(script);
+    out << "# written by monoplane study run --headset simulated\n";
+    out << "hmd = \"" << hmd << "\"\n";
+    out << "display_rate_hz = " << options.sim_rate_hz << "\n";
+    if (!options.dump_frames.empty()) {
+        fs::create_directories(options.dump_frames);
+        out << "dump_dir = \"" << fs::absolute(options.dump_frames).string() << "\"\n";
+    }
+    if (!out) throw UserError("cannot write the simulated runtime's script " + script.string());
+    setenv("SIMXR_SCRIPT", script.c_str(), 1);
+}
+
+study::SessionStatus run_headset_session(
+    const HeadsetStudyOptions& options, const GlobalOptions& global, study::StudyStore& store,
+    const study::Protocol& protocol, study::Observer* observer,
+    const std::function<double(const study::ScheduledTrial&)>& trial_error_px,
+    const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
+    if (options.headset == "simulated") select_simulated_runtime(options);
+    auto headset = headset::OpenXrHeadset::create().value_or_throw();
+    std::cerr << "OpenXR runtime: " << headset->runtime_name() << ", system "
+              << headset->system_name() << "\n";
+
+    vk_core::ContextOptions context_options = global.context_options();
+    context_options.hooks = headset->vulkan_hooks();
+    bool want_window = options.window == "on" || (options.window == "auto" && has_display());
+    if (want_window) {
+        auto extensions = window::required_instance_extensions();
+        if (!extensions) {
+            if (options.window == "on") throw UserError(extensions.error().message);
+            std::cerr << "no experimenter window: " << extensions.error().message << "\n";
+            want_window = false;
+        } else {
+            context_options.instance_extensions = *extensions;
+            context_options.device_extensions = window::required_device_extensions();
+        }
+    }
+    auto ctx = vk_core::Context::create(context_options).value_or_throw();
+    std::cerr << "device: " << ctx->device_info().name << "\n";
+    headset->create_session(*ctx, options.resolution_scale).value_or_throw();
+    const vk::Extent2D extent = headset->eye_extent();
+    std::cerr << "eye swapchains: " << extent.width << " x " << extent.height << "\n";
+
+    std::unique_ptr<window::ExperimenterWindow> experimenter;
+    if (want_window) {
+        experimenter = window::ExperimenterWindow::create(*ctx, {}, extent).value_or_throw();
+    }
+    const auto detail = scenes::parse_detail(options.detail);
+    if (!detail) throw UserError("--detail " + options.detail + ": use test, low, medium or high");
+    StudyRenderers renderers(*ctx, protocol, extent, *detail);
+    headset::EyeCompositor compositor(*ctx);
+    headset::TextStyle label_style;
+    label_style.scale = 2;
+    label_style.padding = 2;
+    compositor.set_overlay("label1", headset::render_text({"1"}, label_style));
+    compositor.set_overlay("label2", headset::render_text({"2"}, label_style));
+    compositor.set_overlay("paused", headset::render_text({"Paused"}, {}));
+
+    const std::int64_t session_id = begin(headset->runtime_name(), ctx->device_info().name);
+    const study::SessionInfo info = store.session(session_id).value_or_throw();
+    std::deque<std::string> log_tail;
+    study::LiveOptions live_options;
+    live_options.neutral_ns = static_cast<std::int64_t>(options.neutral_s * 1e9);
+    live_options.on_committed = [&](const std::string& what) {
+        if (options.trace) {
+            std::printf("committed %s\n", what.c_str());
+            std::fflush(stdout);
+        }
+        log_tail.push_back(what);
+        if (log_tail.size() > 200) log_tail.pop_front();
+    };
+    auto live =
+        study::LiveSession::open(store, session_id, protocol, live_options).value_or_throw();
+    std::optional<study::ObserverInput> observer_input;
+    if (observer) observer_input.emplace(*observer, protocol, trial_error_px);
+
+    std::vector<window::Command> window_commands;
+    std::vector<int> window_answers(protocol.questionnaire.items.size(), 0);
+    bool unblinded = false;
+    bool exit_requested = false;
+    bool screenshot_saved = false;
+    std::int64_t first_frame_ns = -1;
+    int last_reported_trial = -1;
+    auto request = [&](LiveInput input, std::int64_t time_ns) {
+        const std::string what = live->request(input, time_ns).value_or_throw();
+        if (options.trace)
+            std::printf("request %s: %s\n", std::string(study::live_input_name(input)).c_str(),
+                        what.c_str());
+    };
+
+    for (;;) {
+        if (!headset->poll_events().value_or_throw()) break;
+        if (live->finished() && !exit_requested) {
+            headset->request_exit().value_or_throw();
+            exit_requested = true;
+        }
+        if (!headset->running()) {
+            // Waiting for the runtime (READY, or EXITING after the end): no frames to render.
+            if (experimenter) experimenter->frame({});
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            continue;
+        }
+        const auto frame_start = std::chrono::steady_clock::now();
+        const headset::HeadsetFrame frame = headset->begin_frame().value_or_throw();
+        const std::int64_t now = frame.display_time_ns;
+        if (first_frame_ns < 0) first_frame_ns = now;
+
+        // Input: the controller, then the experimenter's window, then a simulated observer.
+        for (const headset::ControlPress& press : headset->sync_controls().value_or_throw()) {
+            if (press.control == headset::Control::Switch)
+                request(LiveInput::Switch, press.time_ns);
+            if (press.control == headset::Control::Confirm)
+                request(LiveInput::Confirm, press.time_ns);
+            if (press.control == headset::Control::Pause) {
+                request(live->screen().paused ? LiveInput::Resume : LiveInput::Pause,
+                        press.time_ns);
+            }
+        }
+        for (const window::Command& c : window_commands) {
+            using Kind = window::Command::Kind;
+            switch (c.kind) {
+                case Kind::Switch:
+                    request(LiveInput::Switch, now);
+                    break;
+                case Kind::Confirm:
+                    request(LiveInput::Confirm, now);
+                    break;
+                case Kind::Pause:
+                    request(LiveInput::Pause, now);
+                    break;
+                case Kind::Resume:
+                    request(LiveInput::Resume, now);
+                    break;
+                case Kind::Abort:
+                    request(LiveInput::Abort, now);
+                    break;
+                case Kind::Unblind:
+                    unblinded = c.value != 0;
+                    break;
+                case Kind::Answer:
+                    if (c.item >= 0 && c.item < static_cast<int>(window_answers.size()))
+                        window_answers[static_cast<std::size_t>(c.item)] = c.value;
+                    break;
+                case Kind::SubmitAnswers:
+                    for (std::size_t i = 0; i < window_answers.size(); ++i) {
+                        if (live->screen().kind != ScreenKind::Questionnaire) break;
+                        if (window_answers[i] > 0)
+                            live->answer(static_cast<int>(i), window_answers[i]).value_or_throw();
+                    }
+                    break;
+            }
+        }
+        window_commands.clear();
+        if (observer_input) {
+            for (LiveInput input : observer_input->poll(live->screen(), live->progress(), now)) {
+                request(input, now);
+            }
+        }
+
+        const study::LiveScreen screen = live->screen();
+        bool rendered = false;
+        if (frame.should_render) {
+            std::array<vk::Image, 2> targets;
+            for (int e = 0; e < 2; ++e) targets[e] = headset->acquire_eye_image(e).value_or_throw();
+            std::vector<headset::EyeCompositor::Overlay> overlays;
+            modes::ModeRenderer* renderer = nullptr;
+            if (screen.kind == ScreenKind::Trial && !screen.paused && frame.views_valid) {
+                const study::ScheduledTrial& trial = *screen.trial;
+                renderer = &renderers.renderer(trial.scene, screen.mode);
+                modes::FrameInputs inputs;
+                inputs.views = view_inputs(frame, renderers.seat(trial.scene), protocol);
+                inputs.mono_plane = trial.mono_plane;
+                renderer->render_frame(inputs);
+                overlays.push_back({screen.label == 1 ? "label1" : "label2", kLabelPlacement});
+            } else if (screen.kind == ScreenKind::Trial && screen.paused) {
+                overlays.push_back({"paused", kPanelPlacement});
+            } else if (screen.kind == ScreenKind::Questionnaire) {
+                const std::string key = "question" + std::to_string(screen.question) + "-" +
+                                        std::to_string(screen.selection);
+                if (!compositor.has_overlay(key)) {
+                    compositor.set_overlay(
+                        key,
+                        headset::render_text(
+                            questionnaire_lines(protocol, screen.question, screen.selection), {}));
+                }
+                overlays.push_back({key, kPanelPlacement});
+            }
+            ctx->submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+                for (int e = 0; e < 2; ++e) {
+                    const auto eye = static_cast<modes::Eye>(e);
+                    headset::EyeCompositor::MirrorRecorder mirror;
+                    if (experimenter && e == 0) {
+                        mirror = [&](const vk::raii::CommandBuffer& c, vk::Image image,
+                                     vk::ImageLayout layout, vk::Extent2D size) {
+                            experimenter->record_mirror(c, image, layout, size);
+                        };
+                    }
+                    compositor.record_eye(cmd, targets[e], extent, frame.views[e].tangents,
+                                          renderer ? &renderer->display_image(eye) : nullptr,
+                                          overlays, mirror);
+                }
+            });
+            rendered = true;
+        }
+        headset->end_frame(frame).value_or_throw();
+        // What the participant sees changes only with a frame that was shown.
+        if (rendered) live->frame_presented(frame.index, now).value_or_throw();
+
+        const study::LiveProgress progress = live->progress();
+        if (progress.trial_number != last_reported_trial && screen.kind == ScreenKind::Trial) {
+            last_reported_trial = progress.trial_number;
+            std::cerr << "trial " << progress.trial_number << "/" << progress.trial_count << ": "
+                      << screen.trial->scene << " m = " << screen.trial->mono_plane
+                      << (screen.trial->practice ? " (practice)" : "") << "\n";
+        }
+        if (experimenter) {
+            window::ExperimenterView view;
+            view.participant = info.participant_code;
+            view.protocol = protocol.name;
+            view.headset = headset->runtime_name();
+            view.hmd = headset->system_name();
+            view.device = ctx->device_info().name;
+            view.trial_number = progress.trial_number;
+            view.trial_count = progress.trial_count;
+            view.phase = window_phase(screen);
+            view.elapsed_s = static_cast<double>(now - first_frame_ns) * 1e-9;
+            if (screen.trial) {
+                view.practice = screen.trial->practice;
+                view.scene = screen.trial->scene;
+                view.mono_plane = screen.trial->mono_plane;
+                view.label_modes = {
+                    std::string(study::render_mode_name(screen.trial->label1_mode)),
+                    std::string(study::render_mode_name(screen.trial->label2_mode))};
+                if (progress.trial_started_ns >= 0) {
+                    view.trial_elapsed_s =
+                        static_cast<double>(now - progress.trial_started_ns) * 1e-9;
+                }
+            }
+            view.visible_label = progress.visible_label;
+            view.switches = progress.switches;
+            view.both_seen = progress.both_seen;
+            view.unblinded = unblinded;
+            view.log_tail.assign(log_tail.end() - std::min<std::ptrdiff_t>(40, log_tail.size()),
+                                 log_tail.end());
+            view.questionnaire_items = protocol.questionnaire.items;
+            view.scale_points = protocol.questionnaire.scale_points;
+            view.answers = window_answers;
+            view.frame_index = static_cast<std::uint64_t>(frame.index);
+            view.frame_ms = std::chrono::duration<double, std::milli>(
+                                std::chrono::steady_clock::now() - frame_start)
+                                .count();
+            view.status_line = std::string("session ") +
+                               std::string(headset::session_phase_name(headset->phase()));
+            window_commands = experimenter->frame(view);
+            if (!options.screenshot.empty() && frame.index == options.screenshot_frame) {
+                experimenter->save_screenshot(options.screenshot).value_or_throw();
+                std::cerr << "wrote " << options.screenshot << "\n";
+                screenshot_saved = true;
+            }
+            if (experimenter->close_requested() && !live->finished()) {
+                std::cerr << "the experimenter window was closed: ending the session (resume "
+                             "it with `monoplane study resume`)\n";
+                headset->request_exit().value_or_throw();
+                exit_requested = true;
+            }
+        }
+    }
+    if (experimenter && !options.screenshot.empty() && !screenshot_saved) {
+        experimenter->save_screenshot(options.screenshot).value_or_throw();
+        std::cerr << "wrote " << options.screenshot << "\n";
+    }
+    ctx->device().waitIdle();
+    experimenter.reset();
+    headset->destroy_session();
+    fail_on_validation_messages(*ctx, global);
+    const study::SessionInfo end = store.session(session_id).value_or_throw();
+    if (!live->finished()) {
+        std::cerr << "the headset session ended before the study did; `monoplane study resume "
+                     "--db ...` continues at the first undecided trial\n";
+    }
+    return end.status;
+}
+
+}  // namespace monoplane::app

@@ -1,0 +1,51 @@
+// `study run|resume --headset simulated|openxr`: the study core, the renderer and an OpenXR
+// headset wired together (DESIGN.md section 7). Each trial renders its scene in the shown
+// alternative's mode at the trial's m; a switch is drawn in the next frame and logged with the
+// index of the frame that showed it; between trials a neutral screen; at the end the
+// questionnaire, in the headset or entered by the experimenter in the window.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "app/commands/global_options.h"
+#include "hmd/profile.h"
+#include "study/observer.h"
+#include "study/protocol.h"
+#include "study/study_store.h"
+
+namespace monoplane::app {
+
+struct HeadsetStudyOptions {
+    std::string headset;                 // "simulated" or "openxr"
+    std::string window = "auto";         // auto (when a display exists), on, off
+    std::string detail = "low";          // scene detail
+    double resolution_scale = 1.0;       // of the runtime's recommended eye size
+    double neutral_s = 1.0;              // neutral screen between trials
+    bool trace = false;                  // each durable write on stdout
+    std::string screenshot;              // PNG of the experimenter window (tests, docs)...
+    std::int64_t screenshot_frame = -1;  // ...after this frame; -1: when the session ends
+    // Simulated runtime only:
+    std::string sim_script;    // a simxr script; empty: one is written from the options below
+    std::string hmd = "vive";  // the simulated headset's profile
+    double sim_rate_hz = 90.0;
+    std::string dump_frames;  // folder for the submitted frames as PNG
+};
+
+// Points the OpenXR loader at monoplane's simulated runtime and writes its script. Call before
+// the headset is created.
+void select_simulated_runtime(const HeadsetStudyOptions& options);
+
+// Runs the session's remaining trials and questionnaire on the headset. `begin` is called once
+// the headset and device are known (runtime name, device name) and returns the session id (a
+// new session, or the one being resumed). observer: answers for the participant (simulated
+// runs), or null when a person holds the controller.
+study::SessionStatus run_headset_session(
+    const HeadsetStudyOptions& options, const GlobalOptions& global, study::StudyStore& store,
+    const study::Protocol& protocol, study::Observer* observer,
+    const std::function<double(const study::ScheduledTrial&)>& trial_error_px,
+    const std::function<std::int64_t(const std::string& runtime, const std::string& device)>&
+        begin);
+
+}  // namespace monoplane::app

@@ -1,0 +1,129 @@
+// An OpenXR session over Vulkan (XR_KHR_vulkan_enable2), DESIGN.md sections 1 and 7: the runtime
+// creates the Vulkan instance and device on the physical device it names, one swapchain per eye
+// receives the rendered views, xrLocateViews feeds each frame's eye poses and calibrated
+// asymmetric frusta to the rig, and the participant's controller drives switch, confirm and pause
+// through actions bound for khr/simple_controller, HTC Vive, Valve Index and Oculus Touch.
+//
+// The session life cycle follows the specification: READY -> xrBeginSession, STOPPING ->
+// xrEndSession, EXITING or LOSS_PENDING -> the session is over (the study stays resumable).
+// Works with any conformant runtime: SteamVR, Monado, Meta's, and monoplane's own simulated one
+// (app/headset/simxr, chosen through XR_RUNTIME_JSON).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/result.h"
+#include "renderer/rig/pose.h"
+#include "renderer/rig/tangents.h"
+#include "renderer/vk/context.h"
+
+namespace monoplane::headset {
+
+enum class SessionPhase {
+    None,  // no session yet
+    Idle,
+    Ready,
+    Synchronized,
+    Visible,
+    Focused,
+    Stopping,
+    LossPending,
+    Exiting,
+};
+const char* session_phase_name(SessionPhase phase);
+
+// One eye as the runtime located it for a frame, in the LOCAL reference space.
+struct EyeView {
+    rig::Pose pose;
+    rig::Tangents tangents;  // tan of XrFovf's angles: the calibrated, asymmetric frustum
+};
+
+struct HeadsetFrame {
+    std::int64_t index = 0;            // 0-based count of xrWaitFrame calls in this session
+    std::int64_t display_time_ns = 0;  // predicted display time (XrTime, runtime's clock)
+    bool should_render = false;
+    bool views_valid = false;  // orientation and position tracked
+    std::array<EyeView, 2> views;
+};
+
+enum class Control { Switch, Confirm, Pause };
+const char* control_name(Control control);
+
+struct ControlPress {
+    Control control = Control::Switch;
+    std::int64_t time_ns = 0;  // when the runtime saw the button go down (XrTime)
+};
+
+class OpenXrHeadset {
+  public:
+    // Creates the XrInstance with XR_KHR_vulkan_enable2 and finds the HMD. Errors say what to do:
+    // no runtime installed or active, no headset connected, no Vulkan support.
+    static Result<std::unique_ptr<OpenXrHeadset>> create();
+    ~OpenXrHeadset();
+    OpenXrHeadset(const OpenXrHeadset&) = delete;
+    OpenXrHeadset& operator=(const OpenXrHeadset&) = delete;
+
+    const std::string& runtime_name() const { return runtime_name_; }
+    const std::string& system_name() const { return system_name_; }
+
+    // Hooks for vk_core::Context::create: the runtime creates the instance and device and names
+    // the physical device (after its graphics requirements are queried, as the spec demands).
+    vk_core::ContextCreationHooks vulkan_hooks();
+
+    // Creates the session on the Context's device, the LOCAL space, the actions and one swapchain
+    // per eye at the runtime's recommended size times resolution_scale.
+    Result<bool> create_session(const vk_core::Context& ctx, double resolution_scale);
+    vk::Extent2D eye_extent() const { return eye_extent_; }
+    vk::Format swapchain_format() const { return swapchain_format_; }
+
+    // Handles queued events, beginning and ending the session as its state asks. Returns false
+    // once the session is over (EXITING, LOSS_PENDING, or the instance is lost).
+    Result<bool> poll_events();
+    SessionPhase phase() const { return phase_; }
+    bool running() const { return running_; }  // between xrBeginSession and xrEndSession
+
+    // xrWaitFrame, xrBeginFrame and xrLocateViews. Only while running().
+    Result<HeadsetFrame> begin_frame();
+    // The button presses since the last call (xrSyncActions; nothing unless FOCUSED).
+    Result<std::vector<ControlPress>> sync_controls();
+    // The eye's swapchain image for this frame, acquired and waited: it is in
+    // COLOR_ATTACHMENT_OPTIMAL and must be left so. Only between begin_frame and end_frame.
+    Result<vk::Image> acquire_eye_image(int eye);
+    // Releases the acquired images and submits the projection layer (none if nothing was
+    // rendered). The images' writes must have completed (the caller waited for its queue).
+    Result<bool> end_frame(const HeadsetFrame& frame);
+    // Asks the runtime to end the session (it answers with STOPPING).
+    Result<bool> request_exit();
+    // Destroys the swapchains and the session; call before the Vulkan device is destroyed.
+    void destroy_session();
+
+  private:
+    struct Impl;
+    explicit OpenXrHeadset(std::unique_ptr<Impl> impl);
+
+    std::unique_ptr<Impl> impl_;
+    std::string runtime_name_;
+    std::string system_name_;
+    vk::Extent2D eye_extent_;
+    vk::Format swapchain_format_ = vk::Format::eUndefined;
+    SessionPhase phase_ = SessionPhase::None;
+    bool running_ = false;
+};
+
+// The controller mapping (docs/headsets.md): for each interaction profile, the component paths
+// bound to each control. Pure data, shown by `monoplane study run --help` and tested.
+struct ControlBinding {
+    Control control;
+    const char* path;
+};
+struct ProfileBindings {
+    const char* profile;
+    std::vector<ControlBinding> bindings;
+};
+const std::vector<ProfileBindings>& controller_bindings();
+
+}  // namespace monoplane::headset

@@ -1,0 +1,480 @@
+// Actions (spec chapter 11): action sets and actions, suggested bindings for the interaction
+// profile the script simulates, and their states, latched by xrSyncActions from the script's
+// presses at the predicted display time of the latest xrWaitFrame.
+#include <algorithm>
+#include <string_view>
+
+#include "app/headset/simxr/entry_points.h"
+#include "app/headset/simxr/interaction_profiles.h"
+#include "app/headset/simxr/runtime_state.h"
+
+namespace monoplane::simxr {
+namespace {
+
+constexpr std::string_view kTopLevelPaths[] = {"/user/hand/left", "/user/hand/right", "/user/head",
+                                               "/user/gamepad"};
+// spec 11.3.2: booleans bound to a value read as pressed above a runtime-chosen threshold.
+constexpr float kPressThreshold = 0.5f;
+
+bool is_top_level_path(const std::string& path) {
+    return std::ranges::find(kTopLevelPaths, path) != std::end(kTopLevelPaths);
+}
+
+// spec 11.2: action and action set names are one well-formed path segment.
+XrResult check_name(const char* name, const char* localized_name) {
+    const std::string_view text(name);
+    if (text.empty()) return XR_ERROR_NAME_INVALID;
+    for (char c : text) {
+        const bool allowed =
+            (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
+        if (!allowed) return XR_ERROR_PATH_FORMAT_INVALID;
+    }
+    if (localized_name[0] == '\0') return XR_ERROR_LOCALIZED_NAME_INVALID;
+    return XR_SUCCESS;
+}
+
+void forget_action(Action* action) {
+    Instance& instance = *action->set->instance;
+    for (auto& [profile, bindings] : instance.suggested_bindings) {
+        std::erase_if(bindings, [action](const auto& binding) { return binding.first == action; });
+    }
+    if (instance.session != nullptr) {
+        std::erase_if(instance.session->bindings,
+                      [action](const auto& binding) { return binding.first == action; });
+    }
+}
+
+bool is_attached_to(const Session& session, const ActionSet* set) {
+    return std::ranges::find(session.attached_sets, set) != session.attached_sets.end();
+}
+
+// What every xrGetActionState* call checks; fills `components` with the bound component paths
+// that pass the subaction filter and `active` with the action's isActive.
+XrResult resolve_state_query(const Session& session, const XrActionStateGetInfo* info,
+                             XrActionType expected, std::vector<const std::string*>& components,
+                             bool& active) {
+    if (!has_type(info, XR_TYPE_ACTION_STATE_GET_INFO)) return XR_ERROR_VALIDATION_FAILURE;
+    const Action* action = lookup<Action>(info->action);
+    if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (action->type != expected) return XR_ERROR_ACTION_TYPE_MISMATCH;
+    if (!is_attached_to(session, action->set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+    std::string prefix;
+    if (info->subactionPath != XR_NULL_PATH) {
+        if (std::ranges::find(action->subaction_paths, info->subactionPath) ==
+            action->subaction_paths.end()) {
+            return XR_ERROR_PATH_UNSUPPORTED;
+        }
+        prefix = *session.instance->paths.find(info->subactionPath) + "/";
+    }
+    for (const auto& [bound_action, component] : session.bindings) {
+        if (bound_action == action && component.starts_with(prefix)) {
+            components.push_back(&component);
+        }
+    }
+    active = !components.empty() &&
+             std::ranges::find(session.synced_sets, action->set) != session.synced_sets.end();
+    return XR_SUCCESS;
+}
+
+float value_in(const std::map<std::string, float>& values, const std::string& component) {
+    const auto found = values.find(component);
+    return found == values.end() ? 0.0f : found->second;
+}
+
+}  // namespace
+
+void destroy_action_set(ActionSet* set) {
+    for (Action* action : set->actions) {
+        forget_action(action);
+        unregister_object(action);
+    }
+    Instance& instance = *set->instance;
+    std::erase(instance.action_sets, set);
+    if (instance.session != nullptr) {
+        std::erase(instance.session->attached_sets, set);
+        std::erase(instance.session->synced_sets, set);
+    }
+    unregister_object(set);
+}
+
+XrResult XRAPI_CALL xrCreateActionSet(XrInstance handle, const XrActionSetCreateInfo* info,
+                                      XrActionSet* set_handle) {
+    std::lock_guard lock(runtime_mutex());
+    Instance* instance = lookup<Instance>(handle);
+    if (instance == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(info, XR_TYPE_ACTION_SET_CREATE_INFO) || set_handle == nullptr) {
+        return XR_ERROR_VALIDATION_FAILURE;
+    }
+    if (XrResult r = check_name(info->actionSetName, info->localizedActionSetName);
+        r != XR_SUCCESS) {
+        return r;
+    }
+    for (const ActionSet* existing : instance->action_sets) {
+        if (existing->name == info->actionSetName) return XR_ERROR_NAME_DUPLICATED;
+    }
+    auto set = std::make_unique<ActionSet>();
+    set->instance = instance;
+    set->name = info->actionSetName;
+    instance->action_sets.push_back(set.get());
+    *set_handle = register_object<XrActionSet>(std::move(set));
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrDestroyActionSet(XrActionSet handle) {
+    std::lock_guard lock(runtime_mutex());
+    ActionSet* set = lookup<ActionSet>(handle);
+    if (set == nullptr) return XR_ERROR_HANDLE_INVALID;
+    destroy_action_set(set);
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrCreateAction(XrActionSet set_handle, const XrActionCreateInfo* info,
+                                   XrAction* action_handle) {
+    std::lock_guard lock(runtime_mutex());
+    ActionSet* set = lookup<ActionSet>(set_handle);
+    if (set == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(info, XR_TYPE_ACTION_CREATE_INFO) || action_handle == nullptr) {
+        return XR_ERROR_VALIDATION_FAILURE;
+    }
+    // spec: an attached action set is immutable.
+    if (set->attached) return XR_ERROR_ACTIONSETS_ALREADY_ATTACHED;
+    if (XrResult r = check_name(info->actionName, info->localizedActionName); r != XR_SUCCESS) {
+        return r;
+    }
+    for (const Action* existing : set->actions) {
+        if (existing->name == info->actionName) return XR_ERROR_NAME_DUPLICATED;
+    }
+    switch (info->actionType) {
+        case XR_ACTION_TYPE_BOOLEAN_INPUT:
+        case XR_ACTION_TYPE_FLOAT_INPUT:
+        case XR_ACTION_TYPE_VECTOR2F_INPUT:
+        case XR_ACTION_TYPE_POSE_INPUT:
+        case XR_ACTION_TYPE_VIBRATION_OUTPUT:
+            break;
+        default:
+            return XR_ERROR_VALIDATION_FAILURE;
+    }
+    auto action = std::make_unique<Action>();
+    action->set = set;
+    action->name = info->actionName;
+    action->type = info->actionType;
+    for (uint32_t i = 0; i < info->countSubactionPaths; ++i) {
+        const XrPath path = info->subactionPaths[i];
+        const std::string* text = set->instance->paths.find(path);
+        if (text == nullptr) return XR_ERROR_PATH_INVALID;
+        if (!is_top_level_path(*text) ||
+            std::ranges::find(action->subaction_paths, path) != action->subaction_paths.end()) {
+            return XR_ERROR_PATH_UNSUPPORTED;
+        }
+        action->subaction_paths.push_back(path);
+    }
+    set->actions.push_back(action.get());
+    *action_handle = register_object<XrAction>(std::move(action));
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrDestroyAction(XrAction handle) {
+    std::lock_guard lock(runtime_mutex());
+    Action* action = lookup<Action>(handle);
+    if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
+    forget_action(action);
+    std::erase(action->set->actions, action);
+    unregister_object(action);
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrSuggestInteractionProfileBindings(
+    XrInstance handle, const XrInteractionProfileSuggestedBinding* suggested) {
+    std::lock_guard lock(runtime_mutex());
+    Instance* instance = lookup<Instance>(handle);
+    if (instance == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(suggested, XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING) ||
+        suggested->countSuggestedBindings == 0 || suggested->suggestedBindings == nullptr) {
+        return XR_ERROR_VALIDATION_FAILURE;
+    }
+    // spec: once any action set is attached, bindings can no longer be suggested.
+    if (instance->any_session_attached) return XR_ERROR_ACTIONSETS_ALREADY_ATTACHED;
+    const std::string* profile_path = instance->paths.find(suggested->interactionProfile);
+    if (profile_path == nullptr) return XR_ERROR_PATH_INVALID;
+    // spec: an interaction profile or binding path the runtime does not know is
+    // XR_ERROR_PATH_UNSUPPORTED.
+    const InteractionProfile* profile = find_interaction_profile(*profile_path);
+    if (profile == nullptr) return XR_ERROR_PATH_UNSUPPORTED;
+    std::vector<std::pair<Action*, std::string>> bindings;
+    for (uint32_t i = 0; i < suggested->countSuggestedBindings; ++i) {
+        const XrActionSuggestedBinding& binding = suggested->suggestedBindings[i];
+        Action* action = lookup<Action>(binding.action);
+        if (action == nullptr || action->set->instance != instance) {
+            return XR_ERROR_HANDLE_INVALID;
+        }
+        const std::string* path = instance->paths.find(binding.binding);
+        if (path == nullptr) return XR_ERROR_PATH_INVALID;
+        const Component* component = resolve_binding_path(*profile, *path);
+        if (component == nullptr) return XR_ERROR_PATH_UNSUPPORTED;
+        bindings.emplace_back(action, component->path);
+    }
+    // spec: a later call for the same profile replaces the earlier suggestion.
+    instance->suggested_bindings[suggested->interactionProfile] = std::move(bindings);
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrAttachSessionActionSets(XrSession handle,
+                                              const XrSessionActionSetsAttachInfo* info) {
+    std::lock_guard lock(runtime_mutex());
+    Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(info, XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO) || info->countActionSets == 0 ||
+        info->actionSets == nullptr) {
+        return XR_ERROR_VALIDATION_FAILURE;
+    }
+    if (!session->attached_sets.empty()) return XR_ERROR_ACTIONSETS_ALREADY_ATTACHED;
+    std::vector<ActionSet*> sets;
+    for (uint32_t i = 0; i < info->countActionSets; ++i) {
+        ActionSet* set = lookup<ActionSet>(info->actionSets[i]);
+        if (set == nullptr) return XR_ERROR_HANDLE_INVALID;
+        sets.push_back(set);
+    }
+    Instance& instance = *session->instance;
+    for (ActionSet* set : sets) set->attached = true;
+    session->attached_sets = sets;
+    instance.any_session_attached = true;
+
+    const XrPath profile = instance.paths.intern(instance.script.interaction_profile);
+    session->bindings.clear();
+    if (auto found = instance.suggested_bindings.find(profile);
+        found != instance.suggested_bindings.end()) {
+        for (const auto& binding : found->second) {
+            if (is_attached_to(*session, binding.first->set)) session->bindings.push_back(binding);
+        }
+    }
+    // The simulated controllers are the script's profile; an application that suggested nothing
+    // for it gets no bindings and sees XR_NULL_PATH as the current profile.
+    session->interaction_profile = session->bindings.empty() ? XR_NULL_PATH : profile;
+    auto event = xr_struct<XrEventDataInteractionProfileChanged>(
+        XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED);
+    event.session = handle;
+    queue_event(instance, &event, sizeof(event), session);
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrGetCurrentInteractionProfile(XrSession handle, XrPath top_level_path,
+                                                   XrInteractionProfileState* state) {
+    std::lock_guard lock(runtime_mutex());
+    Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(state, XR_TYPE_INTERACTION_PROFILE_STATE)) return XR_ERROR_VALIDATION_FAILURE;
+    const std::string* path = session->instance->paths.find(top_level_path);
+    if (path == nullptr) return XR_ERROR_PATH_INVALID;
+    if (!is_top_level_path(*path)) return XR_ERROR_PATH_UNSUPPORTED;
+    if (session->attached_sets.empty()) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+    const bool hand = path->starts_with("/user/hand/");
+    state->interactionProfile = hand ? session->interaction_profile : XR_NULL_PATH;
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrSyncActions(XrSession handle, const XrActionsSyncInfo* info) {
+    std::lock_guard lock(runtime_mutex());
+    Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(info, XR_TYPE_ACTIONS_SYNC_INFO) ||
+        (info->countActiveActionSets > 0 && info->activeActionSets == nullptr)) {
+        return XR_ERROR_VALIDATION_FAILURE;
+    }
+    std::vector<ActionSet*> sets;
+    for (uint32_t i = 0; i < info->countActiveActionSets; ++i) {
+        ActionSet* set = lookup<ActionSet>(info->activeActionSets[i].actionSet);
+        if (set == nullptr) return XR_ERROR_HANDLE_INVALID;
+        if (!is_attached_to(*session, set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+        const XrPath filter = info->activeActionSets[i].subactionPath;
+        if (filter != XR_NULL_PATH) {
+            const std::string* text = session->instance->paths.find(filter);
+            if (text == nullptr) return XR_ERROR_PATH_INVALID;
+            if (!is_top_level_path(*text)) return XR_ERROR_PATH_UNSUPPORTED;
+        }
+        sets.push_back(set);
+    }
+    // spec 11.5.2: without input focus every action is inactive and the call says why.
+    if (session->state != XR_SESSION_STATE_FOCUSED) {
+        session->synced_sets.clear();
+        return XR_SESSION_NOT_FOCUSED;
+    }
+    const Script& script = session->instance->script;
+    const XrTime time = session->latest_wait_time;
+    session->previous_values = session->values;
+    session->values.clear();
+    for (const auto& [action, component] : session->bindings) {
+        const float value =
+            input_pressed_at(script, component, time - session->base_time) ? 1.0f : 0.0f;
+        session->values[component] = value;
+        if (value != value_in(session->previous_values, component)) {
+            session->last_change[component] = time;
+        }
+    }
+    session->synced_sets = sets;
+    session->sync_time = time;
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrGetActionStateBoolean(XrSession handle, const XrActionStateGetInfo* info,
+                                            XrActionStateBoolean* state) {
+    std::lock_guard lock(runtime_mutex());
+    const Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(state, XR_TYPE_ACTION_STATE_BOOLEAN)) return XR_ERROR_VALIDATION_FAILURE;
+    std::vector<const std::string*> components;
+    bool active = false;
+    if (XrResult r =
+            resolve_state_query(*session, info, XR_ACTION_TYPE_BOOLEAN_INPUT, components, active);
+        r != XR_SUCCESS) {
+        return r;
+    }
+    bool current = false;
+    bool previous = false;
+    XrTime last_change = 0;
+    for (const std::string* component : components) {
+        current = current || value_in(session->values, *component) >= kPressThreshold;
+        previous = previous || value_in(session->previous_values, *component) >= kPressThreshold;
+        if (auto found = session->last_change.find(*component);
+            found != session->last_change.end()) {
+            last_change = std::max(last_change, found->second);
+        }
+    }
+    state->isActive = active ? XR_TRUE : XR_FALSE;
+    state->currentState = active && current ? XR_TRUE : XR_FALSE;
+    state->changedSinceLastSync = active && current != previous ? XR_TRUE : XR_FALSE;
+    state->lastChangeTime = active ? last_change : 0;
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrGetActionStateFloat(XrSession handle, const XrActionStateGetInfo* info,
+                                          XrActionStateFloat* state) {
+    std::lock_guard lock(runtime_mutex());
+    const Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(state, XR_TYPE_ACTION_STATE_FLOAT)) return XR_ERROR_VALIDATION_FAILURE;
+    std::vector<const std::string*> components;
+    bool active = false;
+    if (XrResult r =
+            resolve_state_query(*session, info, XR_ACTION_TYPE_FLOAT_INPUT, components, active);
+        r != XR_SUCCESS) {
+        return r;
+    }
+    float current = 0.0f;
+    float previous = 0.0f;
+    XrTime last_change = 0;
+    for (const std::string* component : components) {
+        current = std::max(current, value_in(session->values, *component));
+        previous = std::max(previous, value_in(session->previous_values, *component));
+        if (auto found = session->last_change.find(*component);
+            found != session->last_change.end()) {
+            last_change = std::max(last_change, found->second);
+        }
+    }
+    state->isActive = active ? XR_TRUE : XR_FALSE;
+    state->currentState = active ? current : 0.0f;
+    state->changedSinceLastSync = active && current != previous ? XR_TRUE : XR_FALSE;
+    state->lastChangeTime = active ? last_change : 0;
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrGetActionStateVector2f(XrSession handle, const XrActionStateGetInfo* info,
+                                             XrActionStateVector2f* state) {
+    std::lock_guard lock(runtime_mutex());
+    const Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(state, XR_TYPE_ACTION_STATE_VECTOR2F)) return XR_ERROR_VALIDATION_FAILURE;
+    std::vector<const std::string*> components;
+    bool active = false;
+    if (XrResult r =
+            resolve_state_query(*session, info, XR_ACTION_TYPE_VECTOR2F_INPUT, components, active);
+        r != XR_SUCCESS) {
+        return r;
+    }
+    // Scripts press buttons; no thumbstick or trackpad ever moves.
+    state->isActive = XR_FALSE;
+    state->currentState = {0.0f, 0.0f};
+    state->changedSinceLastSync = XR_FALSE;
+    state->lastChangeTime = 0;
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL xrGetActionStatePose(XrSession handle, const XrActionStateGetInfo* info,
+                                         XrActionStatePose* state) {
+    std::lock_guard lock(runtime_mutex());
+    const Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(state, XR_TYPE_ACTION_STATE_POSE)) return XR_ERROR_VALIDATION_FAILURE;
+    std::vector<const std::string*> components;
+    bool active = false;
+    if (XrResult r =
+            resolve_state_query(*session, info, XR_ACTION_TYPE_POSE_INPUT, components, active);
+        r != XR_SUCCESS) {
+        return r;
+    }
+    state->isActive = active ? XR_TRUE : XR_FALSE;
+    return XR_SUCCESS;
+}
+
+XrResult XRAPI_CALL
+xrEnumerateBoundSourcesForAction(XrSession handle, const XrBoundSourcesForActionEnumerateInfo* info,
+                                 uint32_t capacity, uint32_t* count, XrPath* sources) {
+    std::lock_guard lock(runtime_mutex());
+    Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(info, XR_TYPE_BOUND_SOURCES_FOR_ACTION_ENUMERATE_INFO)) {
+        return XR_ERROR_VALIDATION_FAILURE;
+    }
+    const Action* action = lookup<Action>(info->action);
+    if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!is_attached_to(*session, action->set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+    std::vector<XrPath> bound;
+    for (const auto& [bound_action, component] : session->bindings) {
+        if (bound_action == action) bound.push_back(session->instance->paths.intern(component));
+    }
+    return fill_array(capacity, count, sources, bound);
+}
+
+XrResult XRAPI_CALL xrGetInputSourceLocalizedName(XrSession handle,
+                                                  const XrInputSourceLocalizedNameGetInfo* info,
+                                                  uint32_t capacity, uint32_t* count,
+                                                  char* buffer) {
+    std::lock_guard lock(runtime_mutex());
+    Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(info, XR_TYPE_INPUT_SOURCE_LOCALIZED_NAME_GET_INFO)) {
+        return XR_ERROR_VALIDATION_FAILURE;
+    }
+    const std::string* path = session->instance->paths.find(info->sourcePath);
+    if (path == nullptr) return XR_ERROR_PATH_INVALID;
+    // The path is the most precise name a simulated device has.
+    return fill_string(capacity, count, buffer, *path);
+}
+
+XrResult XRAPI_CALL xrApplyHapticFeedback(XrSession handle, const XrHapticActionInfo* info,
+                                          const XrHapticBaseHeader* feedback) {
+    std::lock_guard lock(runtime_mutex());
+    const Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(info, XR_TYPE_HAPTIC_ACTION_INFO) || feedback == nullptr) {
+        return XR_ERROR_VALIDATION_FAILURE;
+    }
+    const Action* action = lookup<Action>(info->action);
+    if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (action->type != XR_ACTION_TYPE_VIBRATION_OUTPUT) return XR_ERROR_ACTION_TYPE_MISMATCH;
+    if (!is_attached_to(*session, action->set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+    return session->state == XR_SESSION_STATE_FOCUSED ? XR_SUCCESS : XR_SESSION_NOT_FOCUSED;
+}
+
+XrResult XRAPI_CALL xrStopHapticFeedback(XrSession handle, const XrHapticActionInfo* info) {
+    std::lock_guard lock(runtime_mutex());
+    const Session* session = lookup<Session>(handle);
+    if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (!has_type(info, XR_TYPE_HAPTIC_ACTION_INFO)) return XR_ERROR_VALIDATION_FAILURE;
+    const Action* action = lookup<Action>(info->action);
+    if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
+    if (action->type != XR_ACTION_TYPE_VIBRATION_OUTPUT) return XR_ERROR_ACTION_TYPE_MISMATCH;
+    if (!is_attached_to(*session, action->set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+    return session->state == XR_SESSION_STATE_FOCUSED ? XR_SUCCESS : XR_SESSION_NOT_FOCUSED;
+}
+
+}  // namespace monoplane::simxr

@@ -1,0 +1,46 @@
+// What the experimenter window shows and what the experimenter can ask for: plain data, filled by
+// the study loop every frame, so the window keeps no study state of its own.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace monoplane::window {
+
+enum class Phase { Starting, Trial, Neutral, Paused, Questionnaire, Finished, Aborted };
+
+struct ExperimenterView {
+    std::string participant, protocol, headset, hmd, device;
+    int trial_number = 0;  // 1-based; 0 before the first
+    int trial_count = 0;
+    bool practice = false;
+    std::string scene;
+    double mono_plane = 0.0;
+    double elapsed_s = 0.0, trial_elapsed_s = 0.0;
+    Phase phase = Phase::Starting;
+    int visible_label = 0;  // 1 or 2 (0: none)
+    int switches = 0;
+    bool both_seen = false;
+    bool unblinded = false;  // only then are label_modes shown
+    std::array<std::string, 2> label_modes;
+    std::vector<std::string> log_tail;  // newest last
+    std::vector<std::string> questionnaire_items;
+    int scale_points = 7;
+    std::vector<int> answers;  // per item, 0 = not yet answered (Questionnaire phase)
+    std::string status_line;
+    std::uint64_t frame_index = 0;
+    double frame_ms = 0.0;
+};
+
+// One request of the experimenter (or of the keyboard in a desktop dry run). Answer carries
+// `item` (0-based) and `value` (1..scale_points); Unblind carries value 1 (show the modes) or 0
+// (hide them again).
+struct Command {
+    enum class Kind { Switch, Confirm, Pause, Resume, Abort, Unblind, Answer, SubmitAnswers } kind;
+    int item = 0;
+    int value = 0;
+};
+
+}  // namespace monoplane::window

@@ -1,0 +1,85 @@
+// The experimenter window: a desktop window (GLFW + Dear ImGui on the app's Vulkan device) that
+// the experimenter watches while a participant in the headset runs a 2AFC session. It mirrors the
+// participant's view and shows the session, progress, the blinded trial state, controls, the log
+// tail and, at the end, the questionnaire form. It keeps no study state: the study loop fills an
+// ExperimenterView every frame and acts on the Commands it gets back.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/window/experimenter_view.h"
+#include "app/window/key_commands.h"
+#include "app/window/mirror_texture.h"
+#include "common/result.h"
+#include "renderer/vk/context.h"
+
+struct GLFWwindow;
+struct ImDrawList;
+struct ImDrawCmd;
+
+namespace monoplane::window {
+
+struct WindowOptions {
+    int width = 1280;
+    int height = 800;
+    std::string title = "monoplane: experimenter";
+};
+
+// Instance extensions the Context must be created with so that the window can present on its
+// device. May be called at any time; fails with a message a user can act on when there is no
+// display (GLFW cannot initialise) or no Vulkan window-system support.
+Result<std::vector<std::string>> required_instance_extensions();
+// Device extensions likewise: VK_KHR_swapchain.
+std::vector<std::string> required_device_extensions();
+
+class ExperimenterWindow {
+  public:
+    // May be called once the Context exists, created with the extensions above; one window per
+    // process at a time (Dear ImGui's backends are global). The window must be destroyed before
+    // the Context. `mirror_extent`: the size of the mirror texture (e.g. one eye's aspect).
+    static Result<std::unique_ptr<ExperimenterWindow>> create(const vk_core::Context& ctx,
+                                                              const WindowOptions& options,
+                                                              vk::Extent2D mirror_extent);
+
+    ExperimenterWindow(const ExperimenterWindow&) = delete;
+    ExperimenterWindow& operator=(const ExperimenterWindow&) = delete;
+    ~ExperimenterWindow();
+
+    // Records into the caller's command buffer a scaled copy (blit, aspect kept) of `source` (an
+    // image the caller owns, in `source_layout`, with TRANSFER_SRC usage) into the mirror texture,
+    // leaving `source` in `source_layout` again. Barriers included. Called inside the app's frame
+    // commands, on the Context's queue.
+    void record_mirror(const vk::raii::CommandBuffer& cmd, vk::Image source,
+                       vk::ImageLayout source_layout, vk::Extent2D source_extent);
+
+    // Polls input, draws the panels for `view`, presents; returns the experimenter's commands
+    // since the last call (keys first, then panel buttons). Call once per app frame, after the
+    // app's frame commands were submitted and waited for (same queue, single-threaded). While
+    // minimised it draws nothing but still returns commands.
+    std::vector<Command> frame(const ExperimenterView& view);
+
+    // Whether the experimenter closed the window (the app decides what that means).
+    bool close_requested() const;
+
+    // Writes what the window shows (the last frame's panels, drawn again) to a PNG file. May be
+    // called after frame(); fails while minimised or when the surface cannot be read back.
+    Result<bool> save_screenshot(const std::filesystem::path& png);
+
+    // The window's drawable size in pixels (0 x 0 while minimised).
+    vk::Extent2D extent() const;
+    // Asks the desktop for another window size (tests, scripted dry runs); it takes effect within
+    // a few frames, and the swapchain follows.
+    void request_size(int width, int height);
+    // Where the mirror was drawn in the last frame, in window pixels (for tests and layout).
+    FitRect mirror_rect() const;
+
+  private:
+    struct Impl;
+    explicit ExperimenterWindow(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace monoplane::window

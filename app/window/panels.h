@@ -1,0 +1,32 @@
+// The experimenter window's panels, drawn with Dear ImGui between NewFrame() and Render().
+#pragma once
+
+#include <imgui.h>
+
+#include <vector>
+
+#include "app/window/experimenter_view.h"
+#include "app/window/mirror_texture.h"
+
+namespace monoplane::window {
+
+// How to draw the mirror: its size, and a draw-list callback that binds its texture (the Vulkan
+// backend of ImGui 1.86 ignores texture ids; see imgui_backend_access.h).
+struct MirrorImage {
+    float width = 0, height = 0;
+    ImTextureID texture = nullptr;
+    ImDrawCallback bind = nullptr;
+    void* bind_data = nullptr;
+};
+
+// What the panels remember between frames.
+struct PanelState {
+    FitRect mirror_rect;  // where the mirror was drawn last, in window pixels
+    std::size_t log_lines_seen = 0;
+};
+
+// Draws every panel for `view`; returns the commands the experimenter gave with them.
+std::vector<Command> draw_panels(const ExperimenterView& view, const MirrorImage& mirror,
+                                 PanelState& state);
+
+}  // namespace monoplane::window

@@ -1,0 +1,267 @@
+#include "study/live_session.h"
+
+namespace monoplane::study {
+namespace {
+
+std::string describe(const TrialEvent& e) {
+    return "trial " + std::to_string(e.trial_index) + " " + std::string(event_kind_name(e.kind)) +
+           (e.label > 0 ? " label " + std::to_string(e.label) : std::string()) +
+           (e.frame >= 0 ? " frame " + std::to_string(e.frame) : std::string());
+}
+
+}  // namespace
+
+std::string_view live_input_name(LiveInput input) {
+    switch (input) {
+        case LiveInput::Switch:
+            return "switch";
+        case LiveInput::Confirm:
+            return "confirm";
+        case LiveInput::Pause:
+            return "pause";
+        case LiveInput::Resume:
+            return "resume";
+        case LiveInput::Abort:
+            return "abort";
+    }
+    return "invalid";
+}
+
+std::string_view screen_kind_name(ScreenKind kind) {
+    switch (kind) {
+        case ScreenKind::Neutral:
+            return "neutral";
+        case ScreenKind::Trial:
+            return "trial";
+        case ScreenKind::Questionnaire:
+            return "questionnaire";
+        case ScreenKind::Finished:
+            return "finished";
+        case ScreenKind::Aborted:
+            return "aborted";
+    }
+    return "invalid";
+}
+
+Result<std::unique_ptr<LiveSession>> LiveSession::open(StudyStore& store, std::int64_t session_id,
+                                                       const Protocol& protocol,
+                                                       const LiveOptions& options) {
+    Result<Schedule> schedule = store.load_schedule(session_id);
+    if (!schedule) return schedule.error();
+    Result<int> first = store.first_undecided_trial(session_id);
+    if (!first) return first.error();
+    Result<bool> ok = store.set_status(session_id, SessionStatus::Running);
+    if (!ok) return ok.error();
+    return std::unique_ptr<LiveSession>(
+        new LiveSession(store, session_id, protocol, options, std::move(*schedule), *first));
+}
+
+LiveSession::LiveSession(StudyStore& store, std::int64_t session_id, const Protocol& protocol,
+                         const LiveOptions& options, Schedule schedule, int first_trial)
+    : store_(store),
+      session_id_(session_id),
+      protocol_(protocol),
+      options_(options),
+      schedule_(std::move(schedule)),
+      next_trial_(0),
+      answers_(protocol.questionnaire.items.size(), 0) {
+    while (next_trial_ < schedule_.trials.size() &&
+           schedule_.trials[next_trial_].index < first_trial) {
+        ++next_trial_;
+    }
+    trial_number_ = static_cast<int>(next_trial_);
+}
+
+void LiveSession::committed(const std::string& what) const {
+    if (options_.on_committed) options_.on_committed(what);
+}
+
+Result<bool> LiveSession::log(const std::vector<TrialEvent>& events) {
+    for (const TrialEvent& e : events) {
+        Result<bool> ok = store_.append_event(session_id_, e);
+        if (!ok) return ok;
+        committed(describe(e));
+    }
+    return true;
+}
+
+LiveScreen LiveSession::screen() const {
+    LiveScreen screen;
+    screen.kind = kind_;
+    if (kind_ == ScreenKind::Trial) {
+        const ScheduledTrial& trial = machine_->trial();
+        screen.trial = &trial;
+        screen.paused = machine_->state() == TrialState::Paused;
+        screen.label = machine_->label_to_draw();
+        screen.mode = screen.label == 1 ? trial.label1_mode : trial.label2_mode;
+    }
+    if (kind_ == ScreenKind::Questionnaire) {
+        for (std::size_t i = 0; i < answers_.size(); ++i) {
+            if (answers_[i] == 0) {
+                screen.question = static_cast<int>(i);
+                break;
+            }
+        }
+        screen.selection = selection_;
+    }
+    return screen;
+}
+
+LiveProgress LiveSession::progress() const {
+    LiveProgress p;
+    p.trial_number = trial_number_;
+    p.trial_count = static_cast<int>(schedule_.trials.size());
+    if (machine_) {
+        p.visible_label = machine_->visible_label();
+        p.switches = machine_->outcome().switches;
+        p.both_seen = machine_->seen(1) && machine_->seen(2);
+        p.trial_started_ns = trial_started_ns_;
+    }
+    return p;
+}
+
+bool LiveSession::finished() const {
+    return kind_ == ScreenKind::Finished || kind_ == ScreenKind::Aborted;
+}
+
+Result<bool> LiveSession::finish(SessionStatus status) {
+    Result<bool> ok = store_.set_status(session_id_, status);
+    if (!ok) return ok;
+    kind_ = status == SessionStatus::Completed ? ScreenKind::Finished : ScreenKind::Aborted;
+    committed("session " + std::string(session_status_name(status)));
+    return true;
+}
+
+Result<bool> LiveSession::start_next_trial(std::int64_t time_ns) {
+    if (next_trial_ >= schedule_.trials.size()) {
+        machine_.reset();
+        if (protocol_.questionnaire.items.empty()) return finish(SessionStatus::Completed);
+        kind_ = ScreenKind::Questionnaire;
+        // The middle of the scale: no answer is suggested by the starting position.
+        selection_ = (protocol_.questionnaire.scale_points + 1) / 2;
+        committed("questionnaire");
+        return true;
+    }
+    machine_.emplace(schedule_.trials[next_trial_], protocol_.require_both_viewed);
+    ++next_trial_;
+    trial_number_ = static_cast<int>(next_trial_);
+    trial_started_ns_ = -1;
+    kind_ = ScreenKind::Trial;
+    Result<std::vector<TrialEvent>> events = machine_->start(time_ns);
+    if (!events) return events.error();
+    return log(*events);
+}
+
+Result<bool> LiveSession::frame_presented(std::int64_t frame, std::int64_t time_ns) {
+    if (kind_ == ScreenKind::Neutral) {
+        if (neutral_since_ns_ < 0) neutral_since_ns_ = time_ns;
+        // The trial starts now and its label 1 is visible from the next frame on.
+        if (time_ns - neutral_since_ns_ >= options_.neutral_ns) return start_next_trial(time_ns);
+        return true;
+    }
+    if (kind_ != ScreenKind::Trial) return true;
+    const std::vector<TrialEvent> events = machine_->frame_presented(frame, time_ns);
+    if (trial_started_ns_ < 0 && machine_->visible_label() != 0) trial_started_ns_ = time_ns;
+    return log(events);
+}
+
+Result<bool> LiveSession::record_answer(int item, int value) {
+    const Questionnaire& q = protocol_.questionnaire;
+    Result<bool> ok = store_.record_answer(session_id_, item, q.items[item], value);
+    if (!ok) return ok;
+    answers_[item] = value;
+    committed("answer " + std::to_string(item + 1) + ": " + std::to_string(value));
+    for (int a : answers_) {
+        if (a == 0) {
+            selection_ = (q.scale_points + 1) / 2;
+            return true;
+        }
+    }
+    return finish(SessionStatus::Completed);
+}
+
+Result<bool> LiveSession::answer(int item, int value) {
+    if (kind_ != ScreenKind::Questionnaire) {
+        return Error{"the questionnaire is not being asked (screen: " +
+                     std::string(screen_kind_name(kind_)) + ")"};
+    }
+    if (item < 0 || item >= static_cast<int>(answers_.size()) || value < 1 ||
+        value > protocol_.questionnaire.scale_points) {
+        return Error{"questionnaire answer out of range: item " + std::to_string(item + 1) +
+                     ", value " + std::to_string(value)};
+    }
+    return record_answer(item, value);
+}
+
+Result<std::string> LiveSession::request(LiveInput input, std::int64_t time_ns) {
+    const std::string name(live_input_name(input));
+    if (input == LiveInput::Abort && !finished()) {
+        if (machine_ && kind_ == ScreenKind::Trial) {
+            Result<std::vector<TrialEvent>> events = machine_->abort(time_ns);
+            if (events) {
+                Result<bool> ok = log(*events);
+                if (!ok) return ok.error();
+            }
+        }
+        Result<bool> ok = finish(SessionStatus::Aborted);
+        if (!ok) return ok.error();
+        return std::string("session aborted");
+    }
+    if (kind_ == ScreenKind::Questionnaire) {
+        const int scale = protocol_.questionnaire.scale_points;
+        if (input == LiveInput::Switch) {
+            selection_ = selection_ % scale + 1;
+            return "questionnaire selection " + std::to_string(selection_);
+        }
+        if (input == LiveInput::Confirm) {
+            const int item = screen().question;
+            Result<bool> ok = record_answer(item, selection_);
+            if (!ok) return ok.error();
+            return "answered item " + std::to_string(item + 1);
+        }
+        return name + " ignored during the questionnaire";
+    }
+    if (kind_ != ScreenKind::Trial) {
+        return name + " ignored on the " + std::string(screen_kind_name(kind_)) + " screen";
+    }
+    Result<std::vector<TrialEvent>> events = std::vector<TrialEvent>{};
+    switch (input) {
+        case LiveInput::Switch:
+            events = machine_->request_switch(time_ns);
+            break;
+        case LiveInput::Confirm:
+            events = machine_->request_confirm(time_ns);
+            break;
+        case LiveInput::Pause:
+            events = machine_->pause(time_ns);
+            break;
+        case LiveInput::Resume:
+            events = machine_->resume(time_ns);
+            break;
+        case LiveInput::Abort:
+            break;
+    }
+    if (!events) {
+        // Refused or not applicable now: the refusal is part of the record, the rest is not.
+        if (input == LiveInput::Confirm && machine_->last_refusal()) {
+            Result<bool> ok = log({*machine_->last_refusal()});
+            if (!ok) return ok.error();
+        }
+        return events.error().message;
+    }
+    Result<bool> ok = log(*events);
+    if (!ok) return ok.error();
+    if (machine_->state() == TrialState::Decided) {
+        ok = store_.record_outcome(session_id_, machine_->trial().index, machine_->outcome());
+        if (!ok) return ok.error();
+        committed("trial " + std::to_string(machine_->trial().index) + " outcome choice " +
+                  std::to_string(machine_->outcome().choice));
+        kind_ = ScreenKind::Neutral;
+        neutral_since_ns_ = time_ns;
+        return "trial " + std::to_string(machine_->trial().index) + " decided: label " +
+               std::to_string(machine_->outcome().choice);
+    }
+    return name;
+}
+
+}  // namespace monoplane::study

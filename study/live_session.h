@@ -1,0 +1,107 @@
+// A session driven frame by frame by a display and live input (DESIGN.md section 7): the headset
+// path of `study run`. Between trials, and before the first, a neutral screen; then each trial of
+// the stored schedule through the 2AFC state machine; then the questionnaire, answered one item
+// at a time on a Likert scale (switch moves the selection, confirm accepts it) or all at once by
+// the experimenter; then the session's status. Every event is written to the store inside the
+// call that caused it, so it is durable before the next frame starts.
+//
+// Time: the caller passes the monotonic time of each request and of each presented frame (in a
+// headset session, the runtime's predicted display time). A requested change of label becomes
+// visible with the next presented frame, whose index the events carry.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "common/result.h"
+#include "study/protocol.h"
+#include "study/study_store.h"
+#include "study/trial_state_machine.h"
+
+namespace monoplane::study {
+
+enum class LiveInput { Switch, Confirm, Pause, Resume, Abort };
+std::string_view live_input_name(LiveInput input);
+
+enum class ScreenKind { Neutral, Trial, Questionnaire, Finished, Aborted };
+std::string_view screen_kind_name(ScreenKind kind);
+
+// What the next frame shows.
+struct LiveScreen {
+    ScreenKind kind = ScreenKind::Neutral;
+    bool paused = false;  // Trial: the experimenter paused it (the trial stays on screen)
+    const ScheduledTrial* trial = nullptr;  // Trial: the trial; else null
+    int label = 0;                          // Trial: the label to draw, 1 or 2
+    RenderMode mode = RenderMode::Stereo;   // Trial: that label's mode
+    int question = 0;                       // Questionnaire: the item asked, 0-based
+    int selection = 0;                      // Questionnaire: the answer selected, 1..scale
+};
+
+// Progress for the experimenter's window (not logged: derived from what is).
+struct LiveProgress {
+    int trial_number = 0;  // 1-based position of the current or last trial; 0 before the first
+    int trial_count = 0;
+    int visible_label = 0;
+    int switches = 0;
+    bool both_seen = false;
+    std::int64_t trial_started_ns = -1;  // first visibility of the current trial
+};
+
+struct LiveOptions {
+    // The neutral screen's duration between trials and before the first.
+    std::int64_t neutral_ns = 1'000'000'000;
+    // Called after each durable write with a one-line description (log tail, tests).
+    std::function<void(const std::string&)> on_committed;
+};
+
+class LiveSession {
+  public:
+    // Continues a stored session at its first undecided trial and marks it running.
+    static Result<std::unique_ptr<LiveSession>> open(StudyStore& store, std::int64_t session_id,
+                                                     const Protocol& protocol,
+                                                     const LiveOptions& options);
+
+    LiveScreen screen() const;
+    LiveProgress progress() const;
+    bool finished() const;  // completed or aborted
+
+    // A participant's or experimenter's request. A request that does not apply now (a switch on
+    // the neutral screen, a refused confirmation) is not an error: the returned line says what
+    // happened. Errors are failures to write the log.
+    Result<std::string> request(LiveInput input, std::int64_t time_ns);
+    // The experimenter's answer to questionnaire item `item` (1..scale), entered in the window:
+    // recorded at once; the questionnaire moves past answered items.
+    Result<bool> answer(int item, int value);
+    // Frame `frame` became visible at time_ns: pending changes take effect and are logged; the
+    // neutral screen ends and the next trial starts when its time is up.
+    Result<bool> frame_presented(std::int64_t frame, std::int64_t time_ns);
+
+  private:
+    LiveSession(StudyStore& store, std::int64_t session_id, const Protocol& protocol,
+                const LiveOptions& options, Schedule schedule, int first_trial);
+
+    Result<bool> log(const std::vector<TrialEvent>& events);
+    void committed(const std::string& what) const;
+    Result<bool> start_next_trial(std::int64_t time_ns);
+    Result<bool> record_answer(int item, int value);
+    Result<bool> finish(SessionStatus status);
+
+    StudyStore& store_;
+    std::int64_t session_id_;
+    Protocol protocol_;
+    LiveOptions options_;
+    Schedule schedule_;
+    std::size_t next_trial_;  // position in schedule_.trials of the next trial to start
+    ScreenKind kind_ = ScreenKind::Neutral;
+    std::optional<TrialStateMachine> machine_;
+    std::int64_t neutral_since_ns_ = -1;  // -1: from the next frame
+    int trial_number_ = 0;
+    std::int64_t trial_started_ns_ = -1;
+    std::vector<int> answers_;  // per questionnaire item, 0: not yet answered
+    int selection_ = 0;
+};
+
+}  // namespace monoplane::study

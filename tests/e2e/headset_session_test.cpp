@@ -1,0 +1,200 @@
+// A whole demo-protocol session through the simulated OpenXR runtime (issue 6, item 5): the
+// monoplane executable runs `study run --headset simulated` with controller input from a simxr
+// script (HTC Vive controllers: trigger switches, trackpad confirms), the Khronos validation
+// layer on; then the database is checked (every trial decided, every switch logged with the index
+// of the frame that showed it, the questionnaire answered through the controller) and the frames
+// the runtime dumped are compared: label 1 and label 2 of a trial differ where stereo and hybrid
+// differ, and two frames of the same label do not.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <stb/stb_image.h>
+
+#include "study/study_store.h"
+
+namespace monoplane {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string source_dir() {
+    const char* dir = std::getenv("MONOPLANE_SOURCE_DIR");
+    return dir ? dir : ".";
+}
+
+int run(const std::string& command, std::string* output = nullptr) {
+    const std::string log = (fs::temp_directory_path() / "monoplane_headset_e2e.log").string();
+    const int status = std::system((command + " > " + log + " 2>&1").c_str());
+    std::ifstream in(log);
+    std::stringstream text;
+    text << in.rdbuf();
+    if (output) *output = text.str();
+    return WEXITSTATUS(status);
+}
+
+struct Png {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgba;
+};
+
+Png load(const fs::path& path) {
+    Png png;
+    int channels = 0;
+    unsigned char* data = stbi_load(path.c_str(), &png.width, &png.height, &channels, 4);
+    if (data) {
+        png.rgba.assign(data, data + std::size_t(png.width) * png.height * 4);
+        stbi_image_free(data);
+    }
+    return png;
+}
+
+// Mean absolute channel difference over rows [row0, row1).
+double mean_difference(const Png& a, const Png& b, int row0, int row1) {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (int y = row0; y < row1; ++y) {
+        for (int x = 0; x < a.width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const std::size_t i = (std::size_t(y) * a.width + x) * 4 + c;
+                sum += std::abs(int(a.rgba[i]) - int(b.rgba[i]));
+                ++n;
+            }
+        }
+    }
+    return n ? sum / n : 0.0;
+}
+
+fs::path frame_png(const fs::path& dir, std::int64_t frame, const char* eye) {
+    char name[64];
+    std::snprintf(name, sizeof name, "frame_%06lld_%s.png", static_cast<long long>(frame), eye);
+    return dir / name;
+}
+
+class HeadsetSessionTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / "monoplane_headset_e2e";
+        fs::remove_all(dir_);
+        fs::create_directories(dir_ / "frames");
+    }
+    fs::path dir_;
+};
+
+// The controller's script: a Vive trigger press (switch) every 0.5 s and a trackpad press
+// (confirm) 0.25 s after each, for 40 s. With a 0.3 s neutral screen the presses fall on every
+// phase of a trial: switches before label 1 shows are refused, confirmations before both labels
+// were seen are refused and logged, the rest decide; in the questionnaire the trigger moves the
+// selection and the trackpad answers.
+std::string controller_script(const fs::path& frames) {
+    std::ostringstream s;
+    s << "hmd = \"vive\"\n"
+      << "display_rate_hz = 20\n"
+      << "interaction_profile = \"/interaction_profiles/htc/vive_controller\"\n"
+      << "dump_dir = \"" << frames.string() << "\"\n";
+    for (int k = 0; k < 80; ++k) {
+        s << "[[input]]\nt = " << 0.5 * k + 0.1
+          << "\npath = \"/user/hand/right/input/trigger/click\"\nduration = 0.1\n";
+        s << "[[input]]\nt = " << 0.5 * k + 0.35
+          << "\npath = \"/user/hand/right/input/trackpad/click\"\nduration = 0.1\n";
+    }
+    return s.str();
+}
+
+TEST_F(HeadsetSessionTest, DemoSessionThroughTheSimulatedRuntime) {
+    const fs::path script = dir_ / "controller.toml";
+    std::ofstream(script) << controller_script(dir_ / "frames");
+    const fs::path db = dir_ / "demo.sqlite";
+    std::string output;
+    const int rc =
+        run(std::string(MONOPLANE_EXE) + " --validation study run --protocol " + source_dir() +
+                "/protocols/demo.toml --participant E2E --db " + db.string() +
+                " --headset simulated --observer none --sim-script " + script.string() +
+                " --window off --detail test --resolution-scale 0.1 --neutral-s 0.3 "
+                "--seed 11",
+            &output);
+    ASSERT_EQ(rc, 0) << output;
+
+    auto store = study::StudyStore::open(db);
+    ASSERT_TRUE(store) << store.error().message;
+    const auto info = (*store)->session(1);
+    ASSERT_TRUE(info);
+    EXPECT_EQ(info->status, study::SessionStatus::Completed);
+    EXPECT_NE(info->runtime.find("simxr"), std::string::npos) << info->runtime;
+    const auto trials = (*store)->trials(1);
+    ASSERT_TRUE(trials);
+    ASSERT_EQ(trials->size(), 7u);  // demo.toml: 3 scenes x 2 distances + 1 practice
+    for (const auto& t : *trials) {
+        EXPECT_TRUE(t.decided) << "trial " << t.trial.index;
+        EXPECT_TRUE(t.outcome.valid) << "trial " << t.trial.index;
+        EXPECT_GE(t.outcome.switches, 1);
+    }
+    const auto events = (*store)->events(1);
+    ASSERT_TRUE(events);
+    int switched = 0, refused = 0;
+    for (const auto& e : *events) {
+        if (e.kind == study::EventKind::Switched || e.kind == study::EventKind::Shown) {
+            EXPECT_GE(e.frame, 0) << "trial " << e.trial_index;
+        }
+        switched += e.kind == study::EventKind::Switched;
+        refused += e.kind == study::EventKind::Refused;
+    }
+    int counted = 0;
+    for (const auto& t : *trials) counted += t.outcome.switches;
+    EXPECT_EQ(switched, counted);
+    EXPECT_GT(refused, 0);  // the script confirms too early in some trials
+
+    // A data trial comparing stereo with hybrid at m = 3: its label 1 and label 2 frames.
+    const study::TrialRecord* chosen = nullptr;
+    for (const auto& t : *trials) {
+        if (!t.trial.practice && t.trial.mono_plane == 3.0) chosen = &t;
+    }
+    ASSERT_NE(chosen, nullptr);
+    std::int64_t shown = -1, switched_to_2 = -1;
+    for (const auto& e : *events) {
+        if (e.trial_index != chosen->trial.index) continue;
+        if (e.kind == study::EventKind::Shown) shown = e.frame;
+        if (e.kind == study::EventKind::Switched && e.label == 2 && switched_to_2 < 0)
+            switched_to_2 = e.frame;
+    }
+    ASSERT_GE(shown, 0);
+    ASSERT_GT(switched_to_2, shown + 1);
+    const Png label1 = load(frame_png(dir_ / "frames", shown, "left"));
+    const Png label1_later = load(frame_png(dir_ / "frames", shown + 1, "left"));
+    const Png label2 = load(frame_png(dir_ / "frames", switched_to_2, "left"));
+    ASSERT_GT(label1.width, 0);
+    ASSERT_EQ(label1.width, label2.width);
+    ASSERT_EQ(label1.width, label1_later.width);
+    // The upper half holds the scene beyond the label: the modes differ there (hybrid maps C's
+    // image beyond m = 3), the same label on a still head does not.
+    const int half = label1.height / 2;
+    EXPECT_GT(mean_difference(label1, label2, 0, half), 0.05);
+    EXPECT_EQ(mean_difference(label1, label1_later, 0, half), 0.0);
+    // The label itself (lower part) differs between "1" and "2".
+    EXPECT_GT(mean_difference(label1, label2, half, label1.height), 0.0);
+}
+
+TEST(HeadsetWithoutRuntime, ClearMessageAndNonZeroExit) {
+    const fs::path dir = fs::temp_directory_path() / "monoplane_headset_none";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    std::string output;
+    const int rc = run("XR_RUNTIME_JSON=" + (dir / "missing.json").string() + " " +
+                           std::string(MONOPLANE_EXE) + " study run --protocol " + source_dir() +
+                           "/protocols/demo.toml --participant P --db " +
+                           (dir / "db.sqlite").string() + " --headset openxr --window off",
+                       &output);
+    EXPECT_NE(rc, 0);
+    EXPECT_LT(rc, 128) << "crashed: " << output;
+    EXPECT_NE(output.find("OpenXR runtime"), std::string::npos) << output;
+    EXPECT_NE(output.find("--headset simulated"), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace monoplane

@@ -1,0 +1,90 @@
+// Session life cycle (spec 9.3) and the virtual clock, through the real loader.
+#include "tests/simxr/runtime_fixture.h"
+
+namespace monoplane::simxr::testing {
+namespace {
+
+using States = std::vector<XrSessionState>;
+
+TEST_F(SimxrTest, SessionWalksThroughTheSpecLifeCycle) {
+    start("display_rate_hz = 100\n");
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_IDLE, XR_SESSION_STATE_READY}));
+    const XrSessionBeginInfo info = begin_info();
+    ASSERT_EQ(xrBeginSession(session_, &info), XR_SUCCESS);
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_SYNCHRONIZED}));
+
+    const XrFrameState frame0 = empty_frame();
+    EXPECT_FALSE(frame0.shouldRender);  // SYNCHRONIZED: frames are not shown yet
+    EXPECT_EQ(frame0.predictedDisplayPeriod, 10'000'000);
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_VISIBLE, XR_SESSION_STATE_FOCUSED}));
+    const XrFrameState frame1 = empty_frame();
+    EXPECT_TRUE(frame1.shouldRender);
+    // Frame n is displayed at frame 0's time + n periods; waiting never sleeps.
+    EXPECT_EQ(frame1.predictedDisplayTime - frame0.predictedDisplayTime, 10'000'000);
+    const XrFrameState frame2 = empty_frame();
+    EXPECT_EQ(frame2.predictedDisplayTime - frame0.predictedDisplayTime, 20'000'000);
+
+    ASSERT_EQ(xrRequestExitSession(session_), XR_SUCCESS);
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_VISIBLE, XR_SESSION_STATE_SYNCHRONIZED,
+                                     XR_SESSION_STATE_STOPPING}));
+    ASSERT_EQ(xrEndSession(session_), XR_SUCCESS);
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_IDLE, XR_SESSION_STATE_EXITING}));
+}
+
+TEST_F(SimxrTest, ExitAfterStopsTheSessionAtThatTime) {
+    start("display_rate_hz = 100\nexit_after_s = 0.1\n");
+    begin_and_focus();  // frame 0 ends, FOCUSED arrives
+    int stopping_frame = -1;
+    for (int frame = 1; frame < 20 && stopping_frame < 0; ++frame) {
+        empty_frame();
+        for (XrSessionState state : poll_states()) {
+            if (state == XR_SESSION_STATE_STOPPING) stopping_frame = frame;
+        }
+    }
+    // Frame 10 is the first whose predicted time (0.1 s after frame 0) reaches exit_after_s.
+    EXPECT_EQ(stopping_frame, 10);
+    EXPECT_EQ(xrEndSession(session_), XR_SUCCESS);
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_IDLE, XR_SESSION_STATE_EXITING}));
+}
+
+TEST_F(SimxrTest, LoseSessionAtMakesTheSessionLost) {
+    start("display_rate_hz = 100\nlose_session_at_s = 0.05\n");
+    begin_and_focus();
+    bool lost = false;
+    for (int frame = 1; frame <= 5; ++frame) {
+        empty_frame();
+        for (XrSessionState state : poll_states())
+            lost = lost || state == XR_SESSION_STATE_LOSS_PENDING;
+    }
+    EXPECT_TRUE(lost);
+    auto state = xr_struct<XrFrameState>(XR_TYPE_FRAME_STATE);
+    EXPECT_EQ(xrWaitFrame(session_, nullptr, &state), XR_ERROR_SESSION_LOST);
+}
+
+TEST_F(SimxrTest, ReportsItsSystemAndViews) {
+    start("hmd = \"vive\"\n");
+    auto properties = xr_struct<XrSystemProperties>(XR_TYPE_SYSTEM_PROPERTIES);
+    ASSERT_EQ(xrGetSystemProperties(instance_, system_, &properties), XR_SUCCESS);
+    EXPECT_TRUE(properties.trackingProperties.positionTracking);
+    uint32_t count = 0;
+    ASSERT_EQ(
+        xrEnumerateViewConfigurationViews(
+            instance_, system_, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 0, &count, nullptr),
+        XR_SUCCESS);
+    ASSERT_EQ(count, 2u);
+    std::vector<XrViewConfigurationView> views(
+        2, xr_struct<XrViewConfigurationView>(XR_TYPE_VIEW_CONFIGURATION_VIEW));
+    ASSERT_EQ(
+        xrEnumerateViewConfigurationViews(
+            instance_, system_, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 2, &count, views.data()),
+        XR_SUCCESS);
+    EXPECT_EQ(views[0].recommendedImageRectWidth, 1344u);
+    EXPECT_EQ(views[1].recommendedImageRectHeight, 1512u);
+    EXPECT_EQ(views[0].recommendedSwapchainSampleCount, 1u);
+    char name[XR_MAX_RESULT_STRING_SIZE];
+    ASSERT_EQ(xrResultToString(instance_, XR_ERROR_SESSION_NOT_READY, name), XR_SUCCESS);
+    EXPECT_STREQ(name, "XR_ERROR_SESSION_NOT_READY");
+}
+
+}  // namespace
+}  // namespace monoplane::simxr::testing

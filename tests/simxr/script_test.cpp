@@ -1,0 +1,209 @@
+// simxr's script: values, defaults, located errors, pose interpolation, press windows.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <glm/gtc/quaternion.hpp>
+
+#include "app/headset/simxr/script.h"
+
+namespace monoplane::simxr {
+namespace {
+
+const std::filesystem::path kSource = "/scripts/session.toml";
+
+Script parse_ok(const std::string& text) {
+    auto script = parse_script(text, kSource);
+    EXPECT_TRUE(script.ok()) << (script.ok() ? "" : script.error().message);
+    return script.ok() ? std::move(script).value() : Script{};
+}
+
+std::string parse_error(const std::string& text) {
+    auto script = parse_script(text, kSource);
+    EXPECT_FALSE(script.ok());
+    return script.ok() ? "" : script.error().message;
+}
+
+TEST(SimxrScript, EmptyScriptKeepsEveryDefault) {
+    const Script script = parse_ok("");
+    EXPECT_EQ(script.hmd.ipd, 0.064);
+    EXPECT_EQ(script.hmd.width, 1344);
+    EXPECT_EQ(script.display_rate_hz, 90.0);
+    EXPECT_EQ(script.physical_device, "");
+    EXPECT_EQ(script.interaction_profile, "/interaction_profiles/khr/simple_controller");
+    EXPECT_TRUE(script.dump_dir.empty());
+    EXPECT_EQ(script.dump_every, 1);
+    EXPECT_EQ(script.exit_after_s, 0.0);
+    EXPECT_EQ(script.lose_session_at_s, 0.0);
+    EXPECT_TRUE(script.poses.empty());
+    EXPECT_TRUE(script.inputs.empty());
+    EXPECT_EQ(script.frame_period_ns(), 11'111'111);
+}
+
+TEST(SimxrScript, ReadsEveryKey) {
+    const Script script = parse_ok(R"(
+hmd = "symmetric-90"
+display_rate_hz = 120
+physical_device = "llvmpipe"
+interaction_profile = "/interaction_profiles/htc/vive_controller"
+dump_dir = "frames"
+dump_every = 5
+exit_after_s = 3.5
+lose_session_at_s = 7
+[[pose]]
+t = 0.0
+position = [0.0, 1.7, 0.5]
+yaw_pitch_roll_deg = [10, 0, 0]
+[[input]]
+t = 1.0
+path = "/user/hand/right/input/trigger/click"
+duration = 0.25
+)");
+    EXPECT_EQ(script.hmd_name, "symmetric-90");
+    EXPECT_EQ(script.display_rate_hz, 120.0);
+    EXPECT_EQ(script.physical_device, "llvmpipe");
+    EXPECT_EQ(script.interaction_profile, "/interaction_profiles/htc/vive_controller");
+    // Relative paths resolve against the script's folder.
+    EXPECT_EQ(script.dump_dir, std::filesystem::path("/scripts/frames"));
+    EXPECT_EQ(script.dump_every, 5);
+    EXPECT_EQ(script.exit_after_s, 3.5);
+    EXPECT_EQ(script.lose_session_at_s, 7.0);
+    ASSERT_EQ(script.poses.size(), 1u);
+    EXPECT_EQ(script.poses[0].position, glm::dvec3(0.0, 1.7, 0.5));
+    EXPECT_EQ(script.poses[0].yaw_pitch_roll_deg, glm::dvec3(10.0, 0.0, 0.0));
+    ASSERT_EQ(script.inputs.size(), 1u);
+    EXPECT_EQ(script.inputs[0].path, "/user/hand/right/input/trigger/click");
+    EXPECT_EQ(script.inputs[0].duration, 0.25);
+}
+
+TEST(SimxrScript, HmdFileResolvesAgainstTheScriptFolder) {
+    const auto folder = std::filesystem::temp_directory_path() / "simxr_script_test_hmd";
+    std::filesystem::create_directories(folder);
+    std::ofstream(folder / "narrow.toml") << R"(name = "narrow"
+ipd = 0.06
+width = 640
+height = 480
+[left]
+tan_left = -0.5
+tan_right = 0.5
+tan_up = 0.4
+tan_down = -0.4
+[right]
+tan_left = -0.5
+tan_right = 0.5
+tan_up = 0.4
+tan_down = -0.4
+)";
+    std::ofstream(folder / "script.toml") << "hmd = \"narrow.toml\"\n";
+    auto script = load_script(folder / "script.toml");
+    ASSERT_TRUE(script.ok()) << script.error().message;
+    EXPECT_EQ(script->hmd.name, "narrow");
+    EXPECT_EQ(script->hmd.width, 640);
+    std::filesystem::remove_all(folder);
+}
+
+TEST(SimxrScript, ErrorsNameFileLineAndKey) {
+    const std::string message = parse_error("dump_every = 1\ndisplay_rate_hz = \"fast\"\n");
+    EXPECT_NE(message.find("/scripts/session.toml:2:"), std::string::npos) << message;
+    EXPECT_NE(message.find("display_rate_hz"), std::string::npos) << message;
+}
+
+TEST(SimxrScript, ReportsAllProblemsAtOnce) {
+    const std::string message = parse_error(R"(hmd = "no-such-headset"
+dispay_rate_hz = 90
+dump_every = 0
+[[input]]
+t = 1.0
+path = "/user/hand/right/input/trigger/click"
+)");
+    EXPECT_NE(message.find(":1:"), std::string::npos) << message;
+    EXPECT_NE(message.find("'hmd'"), std::string::npos) << message;
+    EXPECT_NE(message.find("did you mean 'display_rate_hz'"), std::string::npos) << message;
+    EXPECT_NE(message.find(":3:"), std::string::npos) << message;
+    // simple_controller has no trigger.
+    EXPECT_NE(message.find(":6:"), std::string::npos) << message;
+    EXPECT_NE(message.find("input[0].path"), std::string::npos) << message;
+}
+
+TEST(SimxrScript, RefusesBadRangesAndOrder) {
+    EXPECT_NE(parse_error("display_rate_hz = 0").find("display_rate_hz"), std::string::npos);
+    EXPECT_NE(parse_error("exit_after_s = -1").find("exit_after_s"), std::string::npos);
+    EXPECT_NE(parse_error("interaction_profile = \"/interaction_profiles/acme/stick\"")
+                  .find("interaction_profile"),
+              std::string::npos);
+    EXPECT_NE(parse_error("[[pose]]\nt = 1\n[[pose]]\nt = 0.5\n").find("pose[1].t"),
+              std::string::npos);
+    EXPECT_NE(parse_error("[[pose]]\nt = 0\nposition = [0, 1]\n").find("pose[0].position"),
+              std::string::npos);
+    EXPECT_NE(parse_error("[pose]\nt = 0\n").find("[[pose]]"), std::string::npos);
+    EXPECT_NE(
+        parse_error("[[input]]\npath = \"/user/hand/left/input/menu/click\"\n").find("input[0].t"),
+        std::string::npos);
+    EXPECT_NE(parse_error("[[input]]\nt = 0\npath = \"/user/hand/left/input/grip/pose\"\n")
+                  .find("no button"),
+              std::string::npos);
+}
+
+TEST(SimxrScript, PoseInterpolatesAndHolds) {
+    const Script script = parse_ok(R"(
+[[pose]]
+t = 1.0
+position = [0.0, 1.6, 0.0]
+[[pose]]
+t = 2.0
+position = [1.0, 1.6, -2.0]
+yaw_pitch_roll_deg = [90, 0, 0]
+)");
+    // Before the first keyframe: held.
+    EXPECT_EQ(head_pose_at(script, 0.0).position, glm::dvec3(0.0, 1.6, 0.0));
+    const rig::Pose middle = head_pose_at(script, 1.5);
+    EXPECT_NEAR(middle.position.x, 0.5, 1e-12);
+    EXPECT_NEAR(middle.position.z, -1.0, 1e-12);
+    // Yaw 45 degrees to the left: forward (-z) turns towards -x.
+    const glm::dvec3 forward = middle.orientation * glm::dvec3(0.0, 0.0, -1.0);
+    EXPECT_NEAR(forward.x, -std::sqrt(0.5), 1e-12);
+    EXPECT_NEAR(forward.z, -std::sqrt(0.5), 1e-12);
+    // After the last keyframe: held.
+    const rig::Pose after = head_pose_at(script, 10.0);
+    EXPECT_EQ(after.position, glm::dvec3(1.0, 1.6, -2.0));
+    const glm::dvec3 after_forward = after.orientation * glm::dvec3(0.0, 0.0, -1.0);
+    EXPECT_NEAR(after_forward.x, -1.0, 1e-12);
+}
+
+TEST(SimxrScript, PitchLooksUpAndRollTiltsLeft) {
+    const Script script = parse_ok("[[pose]]\nt = 0\nyaw_pitch_roll_deg = [0, 90, 0]\n");
+    const glm::dvec3 forward = head_pose_at(script, 0.0).orientation * glm::dvec3(0, 0, -1);
+    EXPECT_NEAR(forward.y, 1.0, 1e-12);
+    const Script rolled = parse_ok("[[pose]]\nt = 0\nyaw_pitch_roll_deg = [0, 0, 90]\n");
+    const glm::dvec3 right = head_pose_at(rolled, 0.0).orientation * glm::dvec3(1, 0, 0);
+    EXPECT_NEAR(right.y, 1.0, 1e-12);
+}
+
+TEST(SimxrScript, PressWindowIsHalfOpen) {
+    const Script script = parse_ok(R"(
+display_rate_hz = 100
+[[input]]
+t = 1.0
+path = "/user/hand/right/input/select/click"
+duration = 0.05
+[[input]]
+t = 2.0
+path = "/user/hand/left/input/menu/click"
+)");
+    const std::string select = "/user/hand/right/input/select/click";
+    EXPECT_FALSE(input_pressed_at(script, select, 999'999'999));
+    EXPECT_TRUE(input_pressed_at(script, select, 1'000'000'000));
+    EXPECT_TRUE(input_pressed_at(script, select, 1'049'999'999));
+    EXPECT_FALSE(input_pressed_at(script, select, 1'050'000'000));
+    EXPECT_FALSE(input_pressed_at(script, "/user/hand/left/input/select/click", 1'000'000'000));
+    // No duration: one frame period (10 ms at 100 Hz).
+    const std::string menu = "/user/hand/left/input/menu/click";
+    EXPECT_TRUE(input_pressed_at(script, menu, 2'000'000'000));
+    EXPECT_TRUE(input_pressed_at(script, menu, 2'009'999'999));
+    EXPECT_FALSE(input_pressed_at(script, menu, 2'010'000'000));
+}
+
+}  // namespace
+}  // namespace monoplane::simxr
