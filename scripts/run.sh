@@ -18,11 +18,11 @@ done
 echo "== study session: protocols/demo.toml on the simulated OpenXR headset, simulated observer"
 mkdir -p "$out/study"
 participant="demo-$(date -u +%Y%m%dT%H%M%S)"
-# A quarter of the Vive's resolution and a 30 Hz virtual display keep it to minutes on a CPU
+# A fifth of the Vive's resolution and a 15 Hz virtual display keep it to minutes on a CPU
 # rasterizer; every frame goes through the same OpenXR path as a real headset's.
 build/monoplane study run --protocol protocols/demo.toml --participant "$participant" \
   --db "$out/study/demo.sqlite" --headset simulated --observer default --hmd vive \
-  --resolution-scale 0.25 --sim-rate 30 --detail low
+  --resolution-scale 0.2 --sim-rate 15 --detail low
 build/monoplane study export --db "$out/study/demo.sqlite" --format csv --out "$out/study/demo.csv"
 
 echo

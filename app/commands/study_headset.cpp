@@ -11,6 +11,8 @@
 #include <map>
 #include <thread>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include "app/commands/validation_report.h"
 #include "app/headset/eye_compositor.h"
 #include "app/headset/openxr_headset.h"
@@ -38,10 +40,37 @@ using study::ScreenKind;
 constexpr headset::OverlayPlacement kLabelPlacement{0.0, -0.55, 0.05};
 constexpr headset::OverlayPlacement kPanelPlacement{0.0, 0.05, 0.45};
 
-// A head pose from the two located eyes: the midpoint, the eyes' common orientation and their
-// distance. The rig assumes parallel eyes (DESIGN.md section 4): canted views are refused.
-modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const rig::Pose& seat,
-                                    const study::Protocol& protocol) {
+// The participant's seat: the head pose of the first tracked frame, turned about the vertical
+// only, is where the scene's viewpoint is. LOCAL space puts its origin near the starting head on
+// most runtimes but not all (some at floor level, simxr at 1.6 m); recentring on the first frame
+// makes every runtime start the participant exactly at the viewpoint, looking along it, while
+// later head motion (and the head's own pitch and roll) is kept.
+class SeatAnchor {
+  public:
+    // The head pose relative to the anchor, setting the anchor from the first call.
+    rig::Pose relative(const rig::Pose& head) {
+        if (!set_) {
+            const glm::dvec3 forward = head.orientation * glm::dvec3(0.0, 0.0, -1.0);
+            const double yaw = std::atan2(-forward.x, -forward.z);
+            inverse_yaw_ = glm::angleAxis(-yaw, glm::dvec3(0.0, 1.0, 0.0));
+            origin_ = head.position;
+            set_ = true;
+        }
+        rig::Pose pose;
+        pose.position = inverse_yaw_ * (head.position - origin_);
+        pose.orientation = inverse_yaw_ * head.orientation;
+        return pose;
+    }
+
+  private:
+    bool set_ = false;
+    glm::dvec3 origin_{0.0};
+    glm::dquat inverse_yaw_{1.0, 0.0, 0.0, 0.0};
+};
+
+// The head from the two located eyes: their midpoint and common orientation. The rig assumes
+// parallel eyes (DESIGN.md section 4): canted views are refused.
+rig::Pose located_head(const headset::HeadsetFrame& frame) {
     const rig::Pose& l = frame.views[0].pose;
     const rig::Pose& r = frame.views[1].pose;
     const double cant =
@@ -51,12 +80,20 @@ modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const ri
                         std::to_string(cant * 180.0 / 3.14159265358979) +
                         " degrees; monoplane's rig supports parallel eye views only");
     }
-    const glm::dvec3 centre = 0.5 * (l.position + r.position);
+    rig::Pose head;
+    head.position = 0.5 * (l.position + r.position);
+    head.orientation = l.orientation;
+    return head;
+}
+
+// The renderer's viewer: the head relative to the seat, placed at the scene's viewpoint, with
+// the runtime's eye distance and calibrated frusta.
+modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const rig::Pose& head,
+                                    const rig::Pose& seat, const study::Protocol& protocol) {
     modes::StereoViewInputs inputs;
-    // LOCAL space is anchored where the head was when the session began: the scene's viewpoint.
-    inputs.head.position = seat.position + seat.orientation * centre;
-    inputs.head.orientation = seat.orientation * l.orientation;
-    inputs.ipd = glm::length(r.position - l.position);
+    inputs.head.position = seat.position + seat.orientation * head.position;
+    inputs.head.orientation = seat.orientation * head.orientation;
+    inputs.ipd = glm::length(frame.views[1].pose.position - frame.views[0].pose.position);
     inputs.left = frame.views[0].tangents;
     inputs.right = frame.views[1].tangents;
     inputs.near = protocol.near;
@@ -247,6 +284,7 @@ study::SessionStatus run_headset_session(
     bool unblinded = false;
     bool exit_requested = false;
     bool screenshot_saved = false;
+    SeatAnchor anchor;
     std::int64_t first_frame_ns = -1;
     int last_reported_trial = -1;
     auto request = [&](LiveInput input, std::int64_t time_ns) {
@@ -272,6 +310,8 @@ study::SessionStatus run_headset_session(
         const headset::HeadsetFrame frame = headset->begin_frame().value_or_throw();
         const std::int64_t now = frame.display_time_ns;
         if (first_frame_ns < 0) first_frame_ns = now;
+        rig::Pose head;
+        if (frame.views_valid) head = anchor.relative(located_head(frame));
 
         // Input: the controller, then the experimenter's window, then a simulated observer.
         for (const headset::ControlPress& press : headset->sync_controls().value_or_throw()) {
@@ -336,7 +376,7 @@ study::SessionStatus run_headset_session(
                 const study::ScheduledTrial& trial = *screen.trial;
                 renderer = &renderers.renderer(trial.scene, screen.mode);
                 modes::FrameInputs inputs;
-                inputs.views = view_inputs(frame, renderers.seat(trial.scene), protocol);
+                inputs.views = view_inputs(frame, head, renderers.seat(trial.scene), protocol);
                 inputs.mono_plane = trial.mono_plane;
                 renderer->render_frame(inputs);
                 overlays.push_back({screen.label == 1 ? "label1" : "label2", kLabelPlacement});
@@ -443,8 +483,12 @@ study::SessionStatus run_headset_session(
     fail_on_validation_messages(*ctx, global);
     const study::SessionInfo end = store.session(session_id).value_or_throw();
     if (!live->finished()) {
-        std::cerr << "the headset session ended before the study did; `monoplane study resume "
-                     "--db ...` continues at the first undecided trial\n";
+        // Not an error of the study's data (everything decided is stored), but the session did
+        // not finish: the exit status says so, for scripts that run sessions.
+        throw UserError("the OpenXR session ended (" +
+                        std::string(headset::session_phase_name(headset->phase())) +
+                        ") before the study did; `monoplane study resume --db ...` continues at "
+                        "the first undecided trial");
     }
     return end.status;
 }

@@ -71,6 +71,19 @@ double mean_difference(const Png& a, const Png& b, int row0, int row1) {
     return n ? sum / n : 0.0;
 }
 
+// The share of pixels in rows [row0, row1) whose channels differ at all.
+double differing_pixels(const Png& a, const Png& b, int row0, int row1) {
+    std::size_t differ = 0, n = 0;
+    for (int y = row0; y < row1; ++y) {
+        for (int x = 0; x < a.width; ++x, ++n) {
+            const std::size_t i = (std::size_t(y) * a.width + x) * 4;
+            differ += a.rgba[i] != b.rgba[i] || a.rgba[i + 1] != b.rgba[i + 1] ||
+                      a.rgba[i + 2] != b.rgba[i + 2];
+        }
+    }
+    return n ? double(differ) / double(n) : 0.0;
+}
+
 fs::path frame_png(const fs::path& dir, std::int64_t frame, const char* eye) {
     char name[64];
     std::snprintf(name, sizeof name, "frame_%06lld_%s.png", static_cast<long long>(frame), eye);
@@ -178,6 +191,73 @@ TEST_F(HeadsetSessionTest, DemoSessionThroughTheSimulatedRuntime) {
     EXPECT_EQ(mean_difference(label1, label1_later, 0, half), 0.0);
     // The label itself (lower part) differs between "1" and "2".
     EXPECT_GT(mean_difference(label1, label2, half, label1.height), 0.0);
+
+    // What the runtime located reached the rig: the headset's frame of label 1 equals the
+    // `render` command's image of the same scene, mode and m from the scene's viewpoint with the
+    // Vive profile's frusta and IPD (simxr reports those; the seat is the first tracked pose).
+    const std::string mode(study::render_mode_name(chosen->trial.label1_mode));
+    const fs::path reference = dir_ / "reference";
+    ASSERT_EQ(run(std::string(MONOPLANE_EXE) + " render --scene " + chosen->trial.scene +
+                  " --mode " + mode + " --mono-plane 3 --hmd vive --detail test --width " +
+                  std::to_string(label1.width) + " --height " + std::to_string(label1.height) +
+                  " --out " + reference.string()),
+              0);
+    const Png rendered = load(reference / "left.png");
+    ASSERT_EQ(rendered.width, label1.width);
+    ASSERT_EQ(rendered.height, label1.height);
+    // Poses cross OpenXR as floats (XrPosef): a few edge pixels may round the other way.
+    EXPECT_LT(differing_pixels(label1, rendered, 0, half), 0.002);
+    EXPECT_LT(mean_difference(label1, rendered, 0, half), 0.01);
+    // The other mode differs in far more pixels: the comparison above is a real constraint.
+    EXPECT_GT(differing_pixels(label1, label2, 0, half), 0.01);
+}
+
+// The runtime loses the session mid-study (LOSS_PENDING, as when a headset is unplugged): the
+// command fails with a message, every decision made so far is stored, and `study resume` on a
+// fresh simulated headset finishes the session.
+TEST_F(HeadsetSessionTest, LostSessionIsResumable) {
+    std::string script = controller_script(dir_ / "frames");
+    const fs::path lossy = dir_ / "lossy.toml";
+    std::ofstream(lossy) << "lose_session_at_s = 4.0\n" << script;
+    const fs::path db = dir_ / "lost.sqlite";
+    const std::string common = std::string(MONOPLANE_EXE) + " --validation study ";
+    std::string output;
+    const int rc = run(
+        common + "run --protocol " + source_dir() + "/protocols/demo.toml --participant L --db " +
+            db.string() + " --headset simulated --observer none --sim-script " + lossy.string() +
+            " --window off --detail test --resolution-scale 0.1 --neutral-s 0.3 --seed 5",
+        &output);
+    EXPECT_EQ(rc, 1) << output;
+    EXPECT_NE(output.find("loss pending"), std::string::npos) << output;
+    EXPECT_NE(output.find("study resume"), std::string::npos) << output;
+    int decided_before = 0;
+    {
+        auto store = study::StudyStore::open(db);
+        ASSERT_TRUE(store) << store.error().message;
+        EXPECT_EQ((*store)->session(1)->status, study::SessionStatus::Running);
+        const auto trials = (*store)->trials(1);
+        ASSERT_TRUE(trials);
+        for (const auto& t : *trials) decided_before += t.decided;
+    }
+    EXPECT_GT(decided_before, 0);
+    EXPECT_LT(decided_before, 7);
+
+    const fs::path fresh = dir_ / "fresh.toml";
+    std::ofstream(fresh) << script;
+    ASSERT_EQ(run(common + "resume --db " + db.string() +
+                      " --headset simulated --observer none --sim-script " + fresh.string() +
+                      " --window off --detail test --resolution-scale 0.1 --neutral-s 0.3",
+                  &output),
+              0)
+        << output;
+    auto store = study::StudyStore::open(db);
+    ASSERT_TRUE(store);
+    EXPECT_EQ((*store)->session(1)->status, study::SessionStatus::Completed);
+    const auto trials = (*store)->trials(1);
+    ASSERT_TRUE(trials);
+    int decided = 0;
+    for (const auto& t : *trials) decided += t.decided;
+    EXPECT_EQ(decided, 7);
 }
 
 TEST(HeadsetWithoutRuntime, ClearMessageAndNonZeroExit) {
