@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
     add_protocol_command(root, global);
     add_study_command(root, global);
     add_bench_command(root, global);
+    add_analyze_command(root, global);
+    add_simulate_command(root, global);
     try {
         root.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

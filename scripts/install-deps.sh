@@ -9,6 +9,7 @@ packages=(
   libglm-dev libstb-dev libcli11-dev libtomlplusplus-dev libboost-math-dev
   libgtest-dev libgmock-dev libbenchmark-dev libsqlite3-dev
   libopenxr-dev libopenxr-loader1 libglfw3-dev libimgui-dev xvfb xauth
+  librsvg2-dev fonts-dejavu-core
 )
 
 missing=()

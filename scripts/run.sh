@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The README's main job: renders BEAMS, LANDSCAPE and SPHERES in stereo and hybrid at the HTC
 # Vive's per-eye resolution, then runs a study session of the demo protocol on the simulated
-# OpenXR headset (simxr) with a simulated observer at the controls, and exports its decision log.
-# Says where everything is.
+# OpenXR headset (simxr) with a simulated observer at the controls, exports its decision log, and
+# analyses it (report.html, summary.json, tables, figures; docs/analysis.md). Says where
+# everything is.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -25,7 +26,11 @@ build/monoplane study run --protocol protocols/demo.toml --participant "$partici
   --resolution-scale 0.2 --sim-rate 15 --detail low
 build/monoplane study export --db "$out/study/demo.sqlite" --format csv --out "$out/study/demo.csv"
 
+echo "== analysis of the study database (every session in it)"
+build/monoplane analyze --db "$out/study/demo.sqlite" --out "$out/analysis"
+
 echo
 echo "Stereo pairs (left.png, right.png, stats.json):   $(realpath "$out/stereo")/<scene>"
 echo "Hybrid at m = 8 (also mono.png, SSIM heat maps):  $(realpath "$out/hybrid-m8")/<scene>"
 echo "Study database and decision log:                  $(realpath "$out/study")/demo.sqlite, demo.csv"
+echo "Analysis report (open in a browser):              $(realpath "$out/analysis")/report.html"

@@ -751,4 +751,21 @@ Result<std::vector<TrialEvent>> StudyStore::events(std::int64_t session_id) cons
     return events;
 }
 
+Result<std::vector<QuestionnaireAnswer>> StudyStore::answers(std::int64_t session_id) const {
+    const Connection& db = impl_->db;
+    if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok.error();
+    Result<Statement> stmt = Statement::prepare(
+        db, "SELECT item, text, answer FROM answers WHERE session_id = ? ORDER BY item");
+    if (!stmt) return stmt.error();
+    stmt.value().bind(1, session_id);
+    std::vector<QuestionnaireAnswer> answers;
+    for (;;) {
+        Result<bool> row = stmt.value().step("reading questionnaire answers");
+        if (!row) return row.error();
+        if (!*row) break;
+        answers.push_back(QuestionnaireAnswer{stmt->int32(0), stmt->text(1), stmt->int32(2)});
+    }
+    return answers;
+}
+
 }  // namespace monoplane::study

@@ -47,6 +47,13 @@ struct TrialRecord {
     TrialOutcome outcome;
 };
 
+// One recorded Likert answer (record_answer).
+struct QuestionnaireAnswer {
+    int item = 0;
+    std::string text;
+    int answer = 0;
+};
+
 struct StoreOptions {
     // How long a call waits for another connection's lock before it fails with an error that
     // names the file.
@@ -89,6 +96,8 @@ public:
 
     Result<std::vector<TrialRecord>> trials(std::optional<std::int64_t> session_id = {}) const;
     Result<std::vector<TrialEvent>> events(std::int64_t session_id) const;
+    // The questionnaire answers of a session, by item (the latest answer to each item).
+    Result<std::vector<QuestionnaireAnswer>> answers(std::int64_t session_id) const;
 
 private:
     struct Impl;

@@ -13,5 +13,7 @@ void add_rig_command(CLI::App& root, const GlobalOptions& global);
 void add_protocol_command(CLI::App& root, const GlobalOptions& global);
 void add_study_command(CLI::App& root, const GlobalOptions& global);
 void add_bench_command(CLI::App& root, const GlobalOptions& global);
+void add_analyze_command(CLI::App& root, const GlobalOptions& global);
+void add_simulate_command(CLI::App& root, const GlobalOptions& global);
 
 }  // namespace monoplane::app

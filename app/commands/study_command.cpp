@@ -9,8 +9,8 @@
 
 #include "app/commands/commands.h"
 #include "app/commands/study_headset.h"
+#include "app/commands/study_rows.h"
 #include "hmd/profile.h"
-#include "renderer/rig/rig.h"
 #include "study/export.h"
 #include "study/observer.h"
 #include "study/protocol.h"
@@ -50,22 +50,10 @@ std::string observer_for(const StudyOptions& o, const std::string& recorded = {}
     return o.headset == "openxr" ? "none" : "default";
 }
 
-// The observer's stimulus strength: the rig's largest projection error for the trial's hybrid
-// alternative at its mono plane (DESIGN.md section 3); 0 when both alternatives are stereo-like.
+// The observer's stimulus strength (study_rows.h).
 std::function<double(const study::ScheduledTrial&)> error_model(const hmd::HmdProfile& hmd,
                                                                 const study::Protocol& protocol) {
-    return [hmd, protocol](const study::ScheduledTrial& trial) {
-        const bool hybrid_shown = trial.label1_mode == study::RenderMode::Hybrid ||
-                                  trial.label2_mode == study::RenderMode::Hybrid ||
-                                  trial.label1_mode == study::RenderMode::HybridFarfield ||
-                                  trial.label2_mode == study::RenderMode::HybridFarfield;
-        if (!hybrid_shown) return 0.0;
-        rig::RigInputs inputs = hmd::rig_inputs(hmd, trial.mono_plane);
-        inputs.near = protocol.near;
-        inputs.far = protocol.far;
-        const auto rig = rig::build_rig(inputs);
-        return rig ? rig->max_error_px : 0.0;
-    };
+    return trial_error_model(hmd, protocol);
 }
 
 study::RunOptions run_options(const StudyOptions& o, const hmd::HmdProfile& hmd,

@@ -1,0 +1,243 @@
+#include "analysis/logistic_regression.h"
+
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+
+#include <boost/math/distributions/normal.hpp>
+
+#include "analysis/exclusions.h"
+#include "analysis/linear_algebra.h"
+
+namespace monoplane::analysis {
+namespace {
+
+constexpr int kMaxIterations = 50;
+// R's glm.control: stop when the deviance changes by less than this, relative.
+constexpr double kDevianceTolerance = 1e-10;
+// A fitted probability this close to 0 or 1 means the likelihood has no maximum in the finite
+// parameter space: the estimates are still growing (R warns "fitted probabilities numerically 0
+// or 1 occurred" at a smaller threshold; here it stops the fit).
+constexpr double kBoundaryProbability = 1e-8;
+
+struct Design {
+    Matrix x;  // n x k
+    std::vector<double> y;
+    std::vector<int> cluster;  // participant index of each row
+    std::vector<std::string> names;
+    int clusters = 0;
+};
+
+double logistic(double eta) {
+    return eta >= 0 ? 1.0 / (1.0 + std::exp(-eta)) : std::exp(eta) / (1.0 + std::exp(eta));
+}
+
+Result<Design> build_design(const std::vector<TrialRow>& trials, const LogisticOptions& options) {
+    std::vector<const TrialRow*> rows;
+    std::set<std::string> scenes;
+    std::set<double> distances;
+    std::map<std::string, int> participants;
+    std::map<std::string, std::pair<int, int>> outcomes_by_scene;  // scene -> {test, reference}
+    for (const TrialRow& trial : trials) {
+        if (!is_analysable(trial)) continue;
+        if (options.log2_distance && !(trial.mono_plane > 0.0))
+            return Error{"logistic regression: log2 distance needs distances > 0 m, a trial has " +
+                         std::to_string(trial.mono_plane)};
+        rows.push_back(&trial);
+        scenes.insert(trial.scene);
+        distances.insert(trial.mono_plane);
+        participants.emplace(trial.participant, static_cast<int>(participants.size()));
+        auto& outcome = outcomes_by_scene[trial.scene];
+        ++(trial.chose_test ? outcome.first : outcome.second);
+    }
+
+    Design design;
+    design.names = {"intercept", options.log2_distance ? "log2_mono_plane_m" : "mono_plane_m"};
+    std::vector<std::string> dummies;
+    if (options.scene_terms)
+        for (auto it = scenes.begin(); it != scenes.end(); ++it)
+            if (it != scenes.begin()) dummies.push_back(*it);
+    for (const std::string& scene : dummies) design.names.push_back("scene[" + scene + "]");
+
+    const std::size_t n = rows.size();
+    const std::size_t k = design.names.size();
+    if (n <= k)
+        return Error{"logistic regression: " + std::to_string(n) +
+                     " analysable trials are too few for " + std::to_string(k) + " coefficients"};
+    // The sandwich's meat is a sum of G outer products of one score each, so its rank is at most
+    // G - 1 (the scores sum to zero at the estimate): with G <= K some coefficient gets a zero
+    // or undefined standard error (Cameron and Miller 2015, sect. VI).
+    if (participants.size() <= k)
+        return Error{"logistic regression: clustered standard errors need more participants "
+                     "than coefficients; the trials come from " +
+                     std::to_string(participants.size()) + " participant(s) for " +
+                     std::to_string(k) + " coefficients"};
+    if (distances.size() < 2)
+        return Error{
+            "logistic regression: the trials have only one distance, so its effect "
+            "cannot be estimated (singular design)"};
+    int test_total = 0;
+    for (const auto& [scene, outcome] : outcomes_by_scene) test_total += outcome.first;
+    if (test_total == 0 || test_total == static_cast<int>(n))
+        return Error{
+            "logistic regression: every analysable trial has the same outcome (complete "
+            "separation); the odds cannot be estimated"};
+    if (options.scene_terms) {
+        for (const auto& [scene, outcome] : outcomes_by_scene)
+            if (outcome.first == 0 || outcome.second == 0)
+                return Error{"logistic regression: in scene '" + scene +
+                             "' every trial chose the " +
+                             (outcome.first == 0 ? "reference" : "test") +
+                             " alternative (quasi-complete separation): its coefficient has no "
+                             "finite estimate; fit without scene terms or report the rates"};
+    }
+
+    design.x = Matrix(n, k);
+    design.y.resize(n);
+    design.cluster.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const TrialRow& t = *rows[i];
+        design.x(i, 0) = 1.0;
+        design.x(i, 1) = options.log2_distance ? std::log2(t.mono_plane) : t.mono_plane;
+        for (std::size_t d = 0; d < dummies.size(); ++d)
+            design.x(i, 2 + d) = t.scene == dummies[d] ? 1.0 : 0.0;
+        design.y[i] = t.chose_test ? 1.0 : 0.0;
+        design.cluster[i] = participants.at(t.participant);
+    }
+    design.clusters = static_cast<int>(participants.size());
+    return design;
+}
+
+struct State {
+    std::vector<double> mu;
+    double log_likelihood = 0;
+};
+
+State evaluate(const Design& d, const std::vector<double>& beta) {
+    State s;
+    s.mu.resize(d.y.size());
+    for (std::size_t i = 0; i < d.y.size(); ++i) {
+        double eta = 0.0;
+        for (std::size_t j = 0; j < beta.size(); ++j) eta += d.x(i, j) * beta[j];
+        s.mu[i] = logistic(eta);
+        // log(1 - mu) as log(logistic(-eta)) keeps precision when mu is near 1.
+        s.log_likelihood += d.y[i] > 0.5 ? std::log(s.mu[i]) : std::log(logistic(-eta));
+    }
+    return s;
+}
+
+// X'WX with W = diag(mu (1 - mu)): the Fisher information, the sandwich's bread.
+Matrix information(const Design& d, const std::vector<double>& mu) {
+    const std::size_t k = d.x.columns();
+    Matrix info(k, k);
+    for (std::size_t i = 0; i < mu.size(); ++i) {
+        const double w = mu[i] * (1.0 - mu[i]);
+        for (std::size_t a = 0; a < k; ++a)
+            for (std::size_t b = 0; b < k; ++b) info(a, b) += w * d.x(i, a) * d.x(i, b);
+    }
+    return info;
+}
+
+}  // namespace
+
+Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
+                                     const LogisticOptions& options) {
+    Result<Design> built = build_design(trials, options);
+    if (!built) return built.error();
+    const Design& d = *built;
+    const std::size_t n = d.y.size();
+    const std::size_t k = d.x.columns();
+    const Error singular{
+        "logistic regression: the design is singular (a column is a combination of others, e.g. "
+        "a scene seen at one distance only); fit without scene terms"};
+
+    // Newton-Raphson (= IRLS for the canonical logit link) from b = 0, halving a step that
+    // lowers the likelihood.
+    std::vector<double> beta(k, 0.0);
+    State state = evaluate(d, beta);
+    LogisticFit fit;
+    for (int iteration = 1; iteration <= kMaxIterations; ++iteration) {
+        const std::optional<Matrix> covariance =
+            inverse_positive_definite(information(d, state.mu));
+        if (!covariance) return singular;
+        std::vector<double> score(k, 0.0);
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < k; ++j) score[j] += d.x(i, j) * (d.y[i] - state.mu[i]);
+        std::vector<double> step(k, 0.0);
+        for (std::size_t a = 0; a < k; ++a)
+            for (std::size_t b = 0; b < k; ++b) step[a] += (*covariance)(a, b) * score[b];
+
+        std::vector<double> next(k);
+        State next_state;
+        double scale = 1.0;
+        for (int halving = 0; halving < 30; ++halving, scale /= 2.0) {
+            for (std::size_t j = 0; j < k; ++j) next[j] = beta[j] + scale * step[j];
+            next_state = evaluate(d, next);
+            if (std::isfinite(next_state.log_likelihood) &&
+                next_state.log_likelihood >= state.log_likelihood - 1e-12)
+                break;
+        }
+        // Deviance = -2 log-likelihood for 0/1 outcomes; R's convergence test.
+        const double deviance = -2.0 * next_state.log_likelihood;
+        const double change = std::abs(deviance + 2.0 * state.log_likelihood);
+        beta = next;
+        state = std::move(next_state);
+        fit.iterations = iteration;
+        if (change / (std::abs(deviance) + 0.1) < kDevianceTolerance) {
+            fit.converged = true;
+            break;
+        }
+    }
+    const Error separation{
+        "logistic regression: the choices are (quasi-)completely separated by the predictors "
+        "(fitted probabilities of 0 or 1): the estimates have no finite maximum; report the "
+        "rates per distance instead"};
+    if (!fit.converged) return separation;
+    for (double mu : state.mu)
+        if (mu < kBoundaryProbability || mu > 1.0 - kBoundaryProbability) return separation;
+
+    // Sandwich: bread = (X'WX)^-1 at the estimate, meat = sum_g s_g s_g'.
+    const std::optional<Matrix> bread = inverse_positive_definite(information(d, state.mu));
+    if (!bread) return singular;
+    std::vector<std::vector<double>> cluster_score(d.clusters, std::vector<double>(k, 0.0));
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < k; ++j)
+            cluster_score[d.cluster[i]][j] += d.x(i, j) * (d.y[i] - state.mu[i]);
+    Matrix meat(k, k);
+    for (const std::vector<double>& s : cluster_score)
+        for (std::size_t a = 0; a < k; ++a)
+            for (std::size_t b = 0; b < k; ++b) meat(a, b) += s[a] * s[b];
+    const double g = d.clusters;
+    const double correction = g / (g - 1.0) * (static_cast<double>(n) - 1.0) /
+                              (static_cast<double>(n) - static_cast<double>(k));
+    const Matrix covariance = *bread * meat * *bread;
+
+    const boost::math::normal_distribution<double> normal;
+    const double z975 = boost::math::quantile(normal, 0.975);
+    for (std::size_t j = 0; j < k; ++j) {
+        Coefficient c;
+        c.name = d.names[j];
+        c.estimate = beta[j];
+        const double variance = correction * covariance(j, j);
+        if (!std::isfinite(variance) || !(variance > 0.0)) {
+            return Error{"logistic regression: the clustered variance of '" + c.name +
+                         "' is not positive: the participants' choices do not vary enough "
+                         "to estimate it"};
+        }
+        c.std_error = std::sqrt(variance);
+        c.z = c.estimate / c.std_error;
+        c.p = 2.0 * boost::math::cdf(boost::math::complement(normal, std::abs(c.z)));
+        c.odds_ratio = std::exp(c.estimate);
+        c.ci_lower = std::exp(c.estimate - z975 * c.std_error);
+        c.ci_upper = std::exp(c.estimate + z975 * c.std_error);
+        fit.coefficients.push_back(c);
+    }
+    fit.n = static_cast<int>(n);
+    fit.clusters = d.clusters;
+    fit.log_likelihood = state.log_likelihood;
+    fit.distance_term = d.names[1];
+    return fit;
+}
+
+}  // namespace monoplane::analysis

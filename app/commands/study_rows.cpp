@@ -1,0 +1,105 @@
+#include "app/commands/study_rows.h"
+
+#include <map>
+#include <memory>
+#include <system_error>
+
+#include "renderer/rig/rig.h"
+#include "study/export.h"
+#include "study/render_mode.h"
+
+namespace monoplane::app {
+
+std::function<double(const study::ScheduledTrial&)> trial_error_model(
+    const hmd::HmdProfile& hmd, const study::Protocol& protocol) {
+    auto cache = std::make_shared<std::map<double, double>>();
+    return
+        [hmd, near = protocol.near, far = protocol.far, cache](const study::ScheduledTrial& trial) {
+            const bool hybrid_shown = trial.label1_mode == study::RenderMode::Hybrid ||
+                                      trial.label2_mode == study::RenderMode::Hybrid ||
+                                      trial.label1_mode == study::RenderMode::HybridFarfield ||
+                                      trial.label2_mode == study::RenderMode::HybridFarfield;
+            if (!hybrid_shown) return 0.0;
+            if (const auto found = cache->find(trial.mono_plane); found != cache->end()) {
+                return found->second;
+            }
+            rig::RigInputs inputs = hmd::rig_inputs(hmd, trial.mono_plane);
+            inputs.near = near;
+            inputs.far = far;
+            const auto rig = rig::build_rig(inputs);
+            const double error = rig ? rig->max_error_px : 0.0;
+            cache->emplace(trial.mono_plane, error);
+            return error;
+        };
+}
+
+analysis::TrialRow trial_row(const study::TrialRecord& record, const study::SessionInfo& session,
+                             const std::string& source, const std::string& reference_mode) {
+    analysis::TrialRow row;
+    row.source = source;
+    row.session_id = record.session_id;
+    row.participant = record.participant_code;
+    row.protocol = session.protocol_name;
+    row.trial_index = record.trial.index;
+    row.practice = record.trial.practice;
+    row.block = record.trial.block;
+    row.scene = record.trial.scene;
+    row.mono_plane = record.trial.mono_plane;
+    row.label1_mode = std::string(study::render_mode_name(record.trial.label1_mode));
+    row.label2_mode = std::string(study::render_mode_name(record.trial.label2_mode));
+    row.reference_mode = reference_mode;
+    row.decided = record.decided;
+    if (record.decided) {
+        row.valid = record.outcome.valid;
+        row.chosen_mode = std::string(study::render_mode_name(record.outcome.chosen_mode));
+        row.switches = record.outcome.switches;
+        row.decision_time_s = static_cast<double>(record.outcome.decision_time_ns) * 1e-9;
+    }
+    return row;
+}
+
+Result<analysis::Dataset> read_study_database(const std::filesystem::path& path) {
+    std::error_code ec;
+    // StudyStore::open creates a missing database; an analysis must not.
+    if (!std::filesystem::is_regular_file(path, ec)) {
+        return Error{"--db " + path.string() + ": no such file"};
+    }
+    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(path);
+    if (!store) return Error{"--db " + path.string() + ": " + store.error().message};
+    Result<study::ExportData> data = study::collect_export(*store.value());
+    if (!data) return Error{"--db " + path.string() + ": " + data.error().message};
+    if (data->sessions.empty()) {
+        return Error{"--db " + path.string() +
+                     ": the database holds no sessions (run one with "
+                     "`monoplane study run`)"};
+    }
+    analysis::Dataset dataset;
+    const std::string source = path.string();
+    dataset.sources.push_back(source);
+    std::map<std::int64_t, std::string> reference;
+    std::map<std::int64_t, int> scale_points;
+    for (const auto& [id, session] : data->sessions) {
+        // The protocol as the session ran it: its first alternative is the reference.
+        Result<study::Protocol> protocol =
+            study::parse_protocol(session.protocol_text, "session " + std::to_string(id));
+        reference[id] = protocol ? std::string(study::render_mode_name(protocol->alternatives[0]))
+                                 : std::string();
+        scale_points[id] = protocol ? protocol->questionnaire.scale_points : 7;
+        Result<std::vector<study::QuestionnaireAnswer>> answers = store.value()->answers(id);
+        if (!answers) return Error{"--db " + path.string() + ": " + answers.error().message};
+        for (const study::QuestionnaireAnswer& a : *answers) {
+            dataset.answers.push_back(analysis::AnswerRow{
+                source, id, session.participant_code, a.item, a.text, a.answer, scale_points[id]});
+        }
+    }
+    for (const study::TrialRecord& record : data->trials) {
+        const auto session = data->sessions.find(record.session_id);
+        if (session == data->sessions.end()) continue;  // collect_export pairs them
+        dataset.trials.push_back(
+            trial_row(record, session->second, source, reference[record.session_id]));
+    }
+    analysis::derive_session_fields(dataset.trials);
+    return dataset;
+}
+
+}  // namespace monoplane::app
