@@ -53,7 +53,7 @@ Result<std::unique_ptr<LiveSession>> LiveSession::open(StudyStore& store, std::i
     Result<bool> ok = store.set_status(session_id, SessionStatus::Running);
     if (!ok) return ok.error();
     return std::unique_ptr<LiveSession>(
-        new LiveSession(store, session_id, protocol, options, std::move(*schedule), *first));
+        new LiveSession(store, session_id, protocol, options, *schedule, *first));
 }
 
 LiveSession::LiveSession(StudyStore& store, std::int64_t session_id, const Protocol& protocol,

@@ -448,8 +448,10 @@ study::SessionStatus run_headset_session(
             view.switches = progress.switches;
             view.both_seen = progress.both_seen;
             view.unblinded = unblinded;
-            view.log_tail.assign(log_tail.end() - std::min<std::ptrdiff_t>(40, log_tail.size()),
-                                 log_tail.end());
+            view.log_tail.assign(
+                log_tail.end() -
+                    std::min<std::ptrdiff_t>(40, static_cast<std::ptrdiff_t>(log_tail.size())),
+                log_tail.end());
             view.questionnaire_items = protocol.questionnaire.items;
             view.scale_points = protocol.questionnaire.scale_points;
             view.answers = window_answers;

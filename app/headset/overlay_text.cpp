@@ -39,28 +39,31 @@ modes::RgbaImage render_text(const std::vector<std::string>& lines, const TextSt
     image.height = static_cast<std::uint32_t>(
         (static_cast<int>(lines.size()) * kLineHeight + 2 * style.padding) * s);
     image.pixels.resize(std::size_t{image.width} * image.height * 4);
-    for (std::size_t i = 0; i < image.pixels.size(); i += 4) {
-        std::copy(style.background.begin(), style.background.end(), image.pixels.begin() + i);
-    }
+    const auto paint = [&image](std::size_t pixel, const Rgba8& colour) {
+        std::copy(colour.begin(), colour.end(), &image.pixels[pixel * 4]);
+    };
+    for (std::size_t p = 0; p < image.pixels.size() / 4; ++p) paint(p, style.background);
+    const auto scale = static_cast<float>(s);
+    const auto width = static_cast<int>(image.width);
+    const auto height = static_cast<int>(image.height);
     std::vector<FontVertex> quads(4096);
     for (std::size_t l = 0; l < lines.size(); ++l) {
         std::string text = printable(lines[l]);
         const int count = stb_easy_font_print(
             static_cast<float>(style.padding),
-            static_cast<float>(style.padding + static_cast<int>(l) * kLineHeight), text.data(),
+            static_cast<float>(style.padding + (static_cast<int>(l) * kLineHeight)), text.data(),
             nullptr, quads.data(), static_cast<int>(quads.size() * sizeof(FontVertex)));
         for (int q = 0; q < count; ++q) {
             // Each quad is an axis-aligned rectangle; its corners 0 and 2 are opposite.
             const FontVertex& a = quads[static_cast<std::size_t>(q) * 4];
             const FontVertex& c = quads[static_cast<std::size_t>(q) * 4 + 2];
-            const int x0 = static_cast<int>(std::lround(std::min(a.x, c.x) * s));
-            const int x1 = static_cast<int>(std::lround(std::max(a.x, c.x) * s));
-            const int y0 = static_cast<int>(std::lround(std::min(a.y, c.y) * s));
-            const int y1 = static_cast<int>(std::lround(std::max(a.y, c.y) * s));
-            for (int y = std::max(0, y0); y < std::min<int>(y1, image.height); ++y) {
-                for (int x = std::max(0, x0); x < std::min<int>(x1, image.width); ++x) {
-                    const std::size_t i = (std::size_t(y) * image.width + std::size_t(x)) * 4;
-                    std::copy(style.ink.begin(), style.ink.end(), image.pixels.begin() + i);
+            const int x0 = static_cast<int>(std::lround(std::min(a.x, c.x) * scale));
+            const int x1 = static_cast<int>(std::lround(std::max(a.x, c.x) * scale));
+            const int y0 = static_cast<int>(std::lround(std::min(a.y, c.y) * scale));
+            const int y1 = static_cast<int>(std::lround(std::max(a.y, c.y) * scale));
+            for (int y = std::max(0, y0); y < std::min(y1, height); ++y) {
+                for (int x = std::max(0, x0); x < std::min(x1, width); ++x) {
+                    paint(std::size_t(y) * image.width + std::size_t(x), style.ink);
                 }
             }
         }

@@ -29,8 +29,16 @@ std::string source_dir() {
     return dir ? dir : ".";
 }
 
+// ctest runs the tests of this file in parallel processes: each gets its own folder and log.
+fs::path test_folder() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    return fs::temp_directory_path() /
+           ("monoplane_e2e_" + std::string(info->test_suite_name()) + "_" + info->name());
+}
+
 int run(const std::string& command, std::string* output = nullptr) {
-    const std::string log = (fs::temp_directory_path() / "monoplane_headset_e2e.log").string();
+    fs::create_directories(test_folder());
+    const std::string log = (test_folder() / "command.log").string();
     const int status = std::system((command + " > " + log + " 2>&1").c_str());
     std::ifstream in(log);
     std::stringstream text;
@@ -93,7 +101,7 @@ fs::path frame_png(const fs::path& dir, std::int64_t frame, const char* eye) {
 class HeadsetSessionTest : public ::testing::Test {
   protected:
     void SetUp() override {
-        dir_ = fs::temp_directory_path() / "monoplane_headset_e2e";
+        dir_ = test_folder();
         fs::remove_all(dir_);
         fs::create_directories(dir_ / "frames");
     }
@@ -261,7 +269,7 @@ TEST_F(HeadsetSessionTest, LostSessionIsResumable) {
 }
 
 TEST(HeadsetWithoutRuntime, ClearMessageAndNonZeroExit) {
-    const fs::path dir = fs::temp_directory_path() / "monoplane_headset_none";
+    const fs::path dir = test_folder() / "run";
     fs::remove_all(dir);
     fs::create_directories(dir);
     std::string output;
