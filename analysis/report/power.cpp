@@ -45,7 +45,7 @@ std::string power_csv(const PowerStudy& study) {
 }
 
 std::string power_json(const PowerStudy& study) {
-    JsonWriter json;
+    JsonWriter json(kReportJson);
     json.begin_object()
         .value("protocol", study.protocol)
         .value("observer", study.observer)

@@ -15,6 +15,7 @@ namespace monoplane::analysis::report {
 namespace {
 
 using charts::format_fixed;
+using charts::xml_escaped;
 
 std::string joined(const std::set<std::string>& names) {
     std::string out;
@@ -59,6 +60,16 @@ std::string p_value(double p) {
     if (!std::isfinite(p)) return "&ndash;";
     if (p < 0.001) return "&lt;&nbsp;0.001";
     return format_fixed(p, 3);
+}
+
+// "p &lt; 0.001" or "p = 0.042", for a sentence.
+std::string p_statement(double p) {
+    return p < 0.001 ? "p " + p_value(p) : "p = " + p_value(p);
+}
+
+// A coefficient's 95 % confidence interval of the odds ratio, "[0.9812, 1.2034]".
+std::string odds_ratio_ci(const Coefficient& c) {
+    return "[" + fixed(c.ci_lower, 4) + ", " + fixed(c.ci_upper, 4) + "]";
 }
 
 std::string metres(double m) {
@@ -117,7 +128,7 @@ Table rate_table(const std::vector<ChoiceRate>& rates, bool with_scene, bool wit
         t.header.push_back(h);
         t.numeric.push_back(true);
     }
-    t.header[t.header.size() - 6] = html_escaped(test_mode) + " chosen";
+    t.header[t.header.size() - 6] = xml_escaped(test_mode) + " chosen";
     for (const ChoiceRate& r : rates) {
         std::vector<std::string> row;
         if (with_scene) row.push_back(scene_name(r.scene));
@@ -292,14 +303,14 @@ std::vector<Figure> report_figures(const AnalysisResults& r) {
 }
 
 std::string report_html(const AnalysisResults& r, const std::vector<Figure>& figures) {
-    const std::string test = html_escaped(r.test_mode);
-    const std::string reference = html_escaped(r.reference_mode);
+    const std::string test = xml_escaped(r.test_mode);
+    const std::string reference = xml_escaped(r.reference_mode);
     auto figure = [&](const std::string& name) {
         for (const Figure& f : figures) {
             if (f.name != name) continue;
-            return "<figure id=\"figure-" + html_escaped(f.name) + "\">\n" + inline_svg(f.svg) +
-                   "<figcaption>" + html_escaped(f.caption) + " (also figures/" +
-                   html_escaped(f.name) + ".svg and .png)</figcaption>\n</figure>\n";
+            return "<figure id=\"figure-" + xml_escaped(f.name) + "\">\n" + inline_svg(f.svg) +
+                   "<figcaption>" + xml_escaped(f.caption) + " (also figures/" +
+                   xml_escaped(f.name) + ".svg and .png)</figcaption>\n</figure>\n";
         }
         return std::string();
     };
@@ -308,8 +319,8 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
         "<title>" +
-        html_escaped(r.title) + "</title>\n<style>" + kCss + "</style>\n</head>\n<body>\n";
-    h += "<h1>" + html_escaped(r.title) + "</h1>\n";
+        xml_escaped(r.title) + "</title>\n<style>" + kCss + "</style>\n</head>\n<body>\n";
+    h += "<h1>" + xml_escaped(r.title) + "</h1>\n";
     h += "<p class=\"note\">" + std::to_string(r.sources.size()) + " source(s), " +
          std::to_string(r.sessions) + " session(s), " + std::to_string(r.participants) +
          " participant(s). Two-alternative forced choice between <b>" + reference +
@@ -332,7 +343,7 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
                     "practice", "data trials", "analysed",     "questionnaire answers"};
         t.numeric = {false, true, true, true, true, true, true, true};
         for (const SourceCounts& c : r.sources) {
-            t.rows.push_back({"<code>" + html_escaped(c.source) + "</code>",
+            t.rows.push_back({"<code>" + xml_escaped(c.source) + "</code>",
                               std::to_string(c.sessions), std::to_string(c.participants),
                               std::to_string(c.trials), std::to_string(c.practice),
                               std::to_string(c.data_trials), std::to_string(c.analysed),
@@ -367,10 +378,8 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
             h += "<p class=\"key\">Of " + std::to_string(o.n) + " valid decisions, " +
                  std::to_string(o.test_chosen) + " (" + percent(o.rate, 2) + ", 95&nbsp;% Wilson " +
                  interval_percent(o.wilson) + ") chose <b>" + test +
-                 "</b>; exact two-sided binomial test against 50&nbsp;%: p " +
-                 (o.binomial_p < 0.001 ? std::string("&lt;&nbsp;0.001")
-                                       : "= " + p_value(o.binomial_p)) +
-                 ".</p>\n";
+                 "</b>; exact two-sided binomial test against 50&nbsp;%: " +
+                 p_statement(o.binomial_p) + ".</p>\n";
         } else {
             h += "<p class=\"warn\">No valid decisions to analyse.</p>\n";
         }
@@ -406,7 +415,7 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
                                   fixed(x.cramers_v, 3), ""});
             } else {
                 t.rows.push_back({chi_row_label(*c), "&ndash;", "&ndash;", "&ndash;", "&ndash;",
-                                  "&ndash;", "&ndash;", "not computed: " + html_escaped(c->error)});
+                                  "&ndash;", "&ndash;", "not computed: " + xml_escaped(c->error)});
             }
         }
         h += t.html();
@@ -438,11 +447,10 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
         t.numeric = {false, true, true, true, true, true, true};
         for (const Coefficient& c : f.coefficients) {
             const bool distance = c.name == f.distance_term;
-            const std::string name = "<code>" + html_escaped(c.name) + "</code>";
+            const std::string name = "<code>" + xml_escaped(c.name) + "</code>";
             t.rows.push_back({distance ? "<b>" + name + "</b>" : name, fixed(c.estimate, 4),
                               fixed(c.std_error, 4), fixed(c.z, 3), p_value(c.p),
-                              fixed(c.odds_ratio, 4),
-                              "[" + fixed(c.ci_lower, 4) + ", " + fixed(c.ci_upper, 4) + "]"});
+                              fixed(c.odds_ratio, 4), odds_ratio_ci(c)});
         }
         h += t.html();
         h += "<p class=\"note\">n = " + std::to_string(f.n) + " decisions in " +
@@ -450,18 +458,16 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
              std::to_string(f.iterations) + " Newton iterations, " +
              (f.converged ? "converged" : "<b>not converged</b>") + "; log-likelihood " +
              fixed(f.log_likelihood, 3) + ". The distance term is <code>" +
-             html_escaped(f.distance_term) + "</code>.</p>\n";
+             xml_escaped(f.distance_term) + "</code>.</p>\n";
         for (const Coefficient& c : f.coefficients) {
             if (c.name != f.distance_term) continue;
             h += "<p class=\"key\">Distance effect: odds ratio " + fixed(c.odds_ratio, 4) +
                  " per " + (r.logistic_options.log2_distance ? "doubling of m" : "metre of m") +
-                 " (95&nbsp;% CI [" + fixed(c.ci_lower, 4) + ", " + fixed(c.ci_upper, 4) +
-                 "]), p " + (c.p < 0.001 ? std::string("&lt;&nbsp;0.001") : "= " + p_value(c.p)) +
-                 ".</p>\n";
+                 " (95&nbsp;% CI " + odds_ratio_ci(c) + "), " + p_statement(c.p) + ".</p>\n";
         }
     } else {
         h += "<p class=\"warn\"><b>Not estimable</b> on these data: " +
-             html_escaped(r.logistic_error) + "</p>\n";
+             xml_escaped(r.logistic_error) + "</p>\n";
     }
 
     // Order.
@@ -506,7 +512,7 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
                 counts += std::to_string(item.counts[k]);
             }
             const Summary& s = item.summary;
-            t.rows.push_back({std::to_string(item.item + 1), html_escaped(item.text),
+            t.rows.push_back({std::to_string(item.item + 1), xml_escaped(item.text),
                               std::to_string(s.n), fixed(s.mean, 2), fixed(s.sd, 2),
                               fixed(s.median, 1), fixed(s.q1, 1) + "&ndash;" + fixed(s.q3, 1),
                               counts + " <span class=\"note\">(1.." +
@@ -521,23 +527,19 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
 
 namespace {
 
+// An interval as [lower, upper].
+void interval_json(JsonWriter& json, std::string_view key, const Interval& interval) {
+    json.begin_array(key).value("", interval.lower).value("", interval.upper).end_array();
+}
+
 void rate_json(JsonWriter& json, const ChoiceRate& r, std::string_view key = {}) {
     json.begin_object(key);
     if (!r.scene.empty()) json.value("scene", r.scene);
     if (std::isfinite(r.mono_plane)) json.value("mono_plane", r.mono_plane);
-    json.value("test_chosen", r.test_chosen)
-        .value("n", r.n)
-        .value("rate", r.rate)
-        .begin_array("wilson")
-        .value("", r.wilson.lower)
-        .value("", r.wilson.upper)
-        .end_array()
-        .begin_array("clopper_pearson")
-        .value("", r.clopper_pearson.lower)
-        .value("", r.clopper_pearson.upper)
-        .end_array()
-        .value("binomial_p", r.binomial_p)
-        .end_object();
+    json.value("test_chosen", r.test_chosen).value("n", r.n).value("rate", r.rate);
+    interval_json(json, "wilson", r.wilson);
+    interval_json(json, "clopper_pearson", r.clopper_pearson);
+    json.value("binomial_p", r.binomial_p).end_object();
 }
 
 void chi_json(JsonWriter& json, const ChiSquareResult& c, std::string_view key) {
@@ -587,7 +589,7 @@ std::string rate_fields(const ChoiceRate& r) {
 }  // namespace
 
 std::string summary_json(const AnalysisResults& r) {
-    JsonWriter json;
+    JsonWriter json(kReportJson);
     json.begin_object().value("schema_version", 1).value("title", r.title);
     json.begin_array("sources");
     for (const SourceCounts& c : r.sources) {
@@ -631,13 +633,9 @@ std::string summary_json(const AnalysisResults& r) {
             .value("sessions", f.sessions)
             .value("test_chosen", f.rate.test_chosen)
             .value("n", f.rate.n)
-            .value("rate", f.rate.rate)
-            .begin_array("wilson")
-            .value("", f.rate.wilson.lower)
-            .value("", f.rate.wilson.upper)
-            .end_array()
-            .value("binomial_p", f.rate.binomial_p)
-            .end_object();
+            .value("rate", f.rate.rate);
+        interval_json(json, "wilson", f.rate.wilson);
+        json.value("binomial_p", f.rate.binomial_p).end_object();
     }
     json.end_array();
     json.begin_object("chi_square");

@@ -1,12 +1,13 @@
-// Text formats the report writes: a small JSON writer (stable key order, no NaN: JSON has none, so
-// a non-finite number is written null) and RFC 4180 CSV fields. Numbers are formatted the same
-// on every platform and locale, so two runs over the same data give the same files.
+// Text formats the report writes: RFC 4180 CSV fields and the JSON layout of its files (the writer
+// is common/json_writer.h; HTML text is escaped with charts::xml_escaped). Numbers are formatted
+// the same on every platform and locale, so two runs over the same data give the same files.
 #pragma once
 
-#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "common/json_writer.h"
 
 namespace monoplane::analysis::report {
 
@@ -19,40 +20,7 @@ std::string csv_field(std::string_view text);
 // One CSV line (with "\n") from already formatted fields.
 std::string csv_line(const std::vector<std::string>& fields);
 
-// Text with &, <, >, " and ' as entities: safe as HTML element content and attribute value.
-std::string html_escaped(std::string_view text);
-
-class JsonWriter {
-  public:
-    JsonWriter& begin_object(std::string_view key = {});
-    JsonWriter& end_object();
-    JsonWriter& begin_array(std::string_view key = {});
-    JsonWriter& end_array();
-
-    JsonWriter& value(std::string_view key, std::string_view text);
-    JsonWriter& value(std::string_view key, const char* text) {
-        return value(key, std::string_view(text));
-    }
-    JsonWriter& value(std::string_view key, const std::string& text) {
-        return value(key, std::string_view(text));
-    }
-    JsonWriter& value(std::string_view key, double number);  // null when not finite
-    JsonWriter& value(std::string_view key, int number);
-    JsonWriter& value(std::string_view key, std::int64_t number);
-    JsonWriter& value(std::string_view key, bool flag);
-    JsonWriter& null(std::string_view key);
-
-    // The document, one key per line, indented by two spaces per level.
-    const std::string& str() const { return out_; }
-
-  private:
-    JsonWriter& open(std::string_view key, char bracket);
-    JsonWriter& close(char bracket);
-    void prefix(std::string_view key);
-    void quoted(std::string_view text);
-
-    std::string out_;
-    std::vector<bool> first_;
-};
+// summary.json and power.json: one key per line, numbers with every digit (as number_text).
+inline constexpr JsonFormat kReportJson{.indented = true, .significant_digits = 0};
 
 }  // namespace monoplane::analysis::report

@@ -3,7 +3,7 @@
 #include <set>
 #include <sstream>
 
-#include "app/commands/json_writer.h"
+#include "common/json_writer.h"
 
 namespace monoplane::app {
 

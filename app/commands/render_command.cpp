@@ -6,11 +6,11 @@
 
 #include "app/commands/commands.h"
 #include "app/commands/frame_summary.h"
-#include "app/commands/json_writer.h"
 #include "app/commands/output_directory.h"
 #include "app/commands/stereo_comparison.h"
 #include "app/commands/validation_report.h"
 #include "app/png.h"
+#include "common/json_writer.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/vk/context.h"

@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "app/commands/commands.h"
-#include "app/commands/json_writer.h"
 #include "app/commands/output_directory.h"
 #include "charts/line_chart.h"
 #include "charts/svg_writer.h"
+#include "common/json_writer.h"
 #include "hmd/profile.h"
 #include "renderer/rig/rig.h"
 

@@ -22,6 +22,18 @@ XrResult check_system(XrInstance handle, XrSystemId system, Instance** instance)
     return XR_SUCCESS;
 }
 
+// check_system, and `type` must be the one view configuration simxr has.
+XrResult check_stereo_system(XrInstance handle, XrSystemId system, XrViewConfigurationType type,
+                             Instance** instance) {
+    if (XrResult result = check_system(handle, system, instance); result != XR_SUCCESS) {
+        return result;
+    }
+    if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) {
+        return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
+    }
+    return XR_SUCCESS;
+}
+
 template <class T>
 void copy_text(T& destination, std::string_view text) {
     const std::size_t length = std::min(text.size(), sizeof(destination) - 1);
@@ -148,11 +160,9 @@ XrResult XRAPI_CALL xrEnumerateEnvironmentBlendModes(XrInstance handle, XrSystem
                                                      XrEnvironmentBlendMode* modes) {
     std::lock_guard lock(runtime_mutex());
     Instance* instance = nullptr;
-    if (XrResult result = check_system(handle, system, &instance); result != XR_SUCCESS) {
+    if (XrResult result = check_stereo_system(handle, system, view_configuration, &instance);
+        result != XR_SUCCESS) {
         return result;
-    }
-    if (view_configuration != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) {
-        return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
     }
     return fill_array<XrEnvironmentBlendMode>(capacity, count, modes,
                                               {XR_ENVIRONMENT_BLEND_MODE_OPAQUE});
@@ -175,11 +185,9 @@ XrResult XRAPI_CALL xrGetViewConfigurationProperties(XrInstance handle, XrSystem
                                                      XrViewConfigurationProperties* properties) {
     std::lock_guard lock(runtime_mutex());
     Instance* instance = nullptr;
-    if (XrResult result = check_system(handle, system, &instance); result != XR_SUCCESS) {
+    if (XrResult result = check_stereo_system(handle, system, type, &instance);
+        result != XR_SUCCESS) {
         return result;
-    }
-    if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) {
-        return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
     }
     if (!has_type(properties, XR_TYPE_VIEW_CONFIGURATION_PROPERTIES)) {
         return XR_ERROR_VALIDATION_FAILURE;
@@ -195,11 +203,9 @@ XrResult XRAPI_CALL xrEnumerateViewConfigurationViews(XrInstance handle, XrSyste
                                                       XrViewConfigurationView* views) {
     std::lock_guard lock(runtime_mutex());
     Instance* instance = nullptr;
-    if (XrResult result = check_system(handle, system, &instance); result != XR_SUCCESS) {
+    if (XrResult result = check_stereo_system(handle, system, type, &instance);
+        result != XR_SUCCESS) {
         return result;
-    }
-    if (type != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) {
-        return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
     }
     if (count == nullptr) return XR_ERROR_VALIDATION_FAILURE;
     *count = 2;
