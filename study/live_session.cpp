@@ -1,15 +1,6 @@
 #include "study/live_session.h"
 
 namespace monoplane::study {
-namespace {
-
-std::string describe(const TrialEvent& e) {
-    return "trial " + std::to_string(e.trial_index) + " " + std::string(event_kind_name(e.kind)) +
-           (e.label > 0 ? " label " + std::to_string(e.label) : std::string()) +
-           (e.frame >= 0 ? " frame " + std::to_string(e.frame) : std::string());
-}
-
-}  // namespace
 
 std::string_view live_input_name(LiveInput input) {
     switch (input) {

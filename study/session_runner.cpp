@@ -28,12 +28,6 @@ class VirtualDisplay {
     std::int64_t now_ns_ = 0;
 };
 
-std::string describe(const TrialEvent& e) {
-    return "trial " + std::to_string(e.trial_index) + " " + std::string(event_kind_name(e.kind)) +
-           " label " + std::to_string(e.label) + " t " + std::to_string(e.time_ns) + " frame " +
-           std::to_string(e.frame);
-}
-
 class Run {
   public:
     Run(StudyStore& store, std::int64_t session_id, const RunOptions& options)

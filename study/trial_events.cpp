@@ -23,4 +23,10 @@ std::string_view event_kind_name(EventKind kind) {
     return "unknown";  // only for a value outside the enum, which is a programming error
 }
 
+std::string describe(const TrialEvent& e) {
+    return "trial " + std::to_string(e.trial_index) + " " + std::string(event_kind_name(e.kind)) +
+           " label " + std::to_string(e.label) + " t " + std::to_string(e.time_ns) + " frame " +
+           std::to_string(e.frame);
+}
+
 }  // namespace monoplane::study

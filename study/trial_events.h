@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <string_view>
 
 namespace monoplane::study {
@@ -14,7 +15,7 @@ enum class EventKind {
     Refused,    // a confirmation refused because both labels were not yet seen
     Paused,     // by the experimenter
     Resumed,
-    Aborted,    // by the experimenter: the session ends, the trial stays undecided
+    Aborted,  // by the experimenter: the session ends, the trial stays undecided
 };
 
 std::string_view event_kind_name(EventKind kind);
@@ -22,9 +23,13 @@ std::string_view event_kind_name(EventKind kind);
 struct TrialEvent {
     EventKind kind = EventKind::Shown;
     int trial_index = 0;
-    int label = 0;               // 1 or 2 where it applies, else 0
-    std::int64_t time_ns = 0;    // monotonic clock
-    std::int64_t frame = -1;     // frame index at which the change became visible; -1: none
+    int label = 0;             // 1 or 2 where it applies, else 0
+    std::int64_t time_ns = 0;  // monotonic clock
+    std::int64_t frame = -1;   // frame index at which the change became visible; -1: none
 };
+
+// One line for logs and traces: "trial 3 switched label 2 t 123 frame 11" (the crash test
+// parses it; keep the form).
+std::string describe(const TrialEvent& event);
 
 }  // namespace monoplane::study

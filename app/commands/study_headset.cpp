@@ -372,13 +372,12 @@ study::SessionStatus run_headset_session(
             for (int e = 0; e < 2; ++e) targets[e] = headset->acquire_eye_image(e).value_or_throw();
             std::vector<headset::EyeCompositor::Overlay> overlays;
             modes::ModeRenderer* renderer = nullptr;
+            modes::FrameInputs inputs;
             if (screen.kind == ScreenKind::Trial && !screen.paused && frame.views_valid) {
                 const study::ScheduledTrial& trial = *screen.trial;
                 renderer = &renderers.renderer(trial.scene, screen.mode);
-                modes::FrameInputs inputs;
                 inputs.views = view_inputs(frame, head, renderers.seat(trial.scene), protocol);
                 inputs.mono_plane = trial.mono_plane;
-                renderer->render_frame(inputs);
                 overlays.push_back({screen.label == 1 ? "label1" : "label2", kLabelPlacement});
             } else if (screen.kind == ScreenKind::Trial && screen.paused) {
                 overlays.push_back({"paused", kPanelPlacement});
@@ -393,7 +392,7 @@ study::SessionStatus run_headset_session(
                 }
                 overlays.push_back({key, kPanelPlacement});
             }
-            ctx->submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+            const auto record_eyes = [&](const vk::raii::CommandBuffer& cmd) {
                 for (int e = 0; e < 2; ++e) {
                     const auto eye = static_cast<modes::Eye>(e);
                     headset::EyeCompositor::MirrorRecorder mirror;
@@ -407,7 +406,14 @@ study::SessionStatus run_headset_session(
                                           renderer ? &renderer->display_image(eye) : nullptr,
                                           overlays, mirror);
                 }
-            });
+            };
+            // The eyes' copies ride in the renderer's submission: one submission and one wait
+            // per frame.
+            if (renderer) {
+                renderer->render_frame(inputs, record_eyes);
+            } else {
+                ctx->submit_and_wait(record_eyes);
+            }
             rendered = true;
         }
         headset->end_frame(frame).value_or_throw();

@@ -315,7 +315,9 @@ void ModeRenderer::decide_routing(const FrameInputs& inputs, passes::CullFrame& 
     }
 }
 
-profile::FrameStats ModeRenderer::render_frame(const FrameInputs& inputs) {
+profile::FrameStats ModeRenderer::render_frame(
+    const FrameInputs& inputs,
+    const std::function<void(const vk::raii::CommandBuffer&)>& record_after) {
     const auto cpu_start = std::chrono::steady_clock::now();
     const StereoViewInputs& views = inputs.views;
 
@@ -566,6 +568,7 @@ profile::FrameStats ModeRenderer::render_frame(const FrameInputs& inputs) {
         record_ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start)
                 .count();
+        if (record_after) record_after(cmd);
     });
     if (shadow_needed) shadow_light_view_proj_ = light_view_proj;
     mono_rendered_ = use_mono && options_.read_back;

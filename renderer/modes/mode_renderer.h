@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -74,7 +75,11 @@ class ModeRenderer {
     ~ModeRenderer();
 
     // Renders one frame and waits for it. Fails (UserError) for inputs the rig refuses.
-    profile::FrameStats render_frame(const FrameInputs& inputs);
+    // record_after: commands recorded after the frame's last pass into the same submission
+    // (a headset's swapchain copies), so a frame costs one submission and one wait; not timed.
+    profile::FrameStats render_frame(
+        const FrameInputs& inputs,
+        const std::function<void(const vk::raii::CommandBuffer&)>& record_after = {});
 
     Mode mode() const { return mode_; }
     // Display images to the host from the next frame on (or not: timed benchmark frames).

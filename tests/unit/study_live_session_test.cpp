@@ -6,7 +6,6 @@
 // trial started by frame n shows label 1 at frame n + 1), the neutral screen lasts neutral_ns from
 // its first frame (or from the decision), a confirmation is refused until both labels were seen.
 #include <gtest/gtest.h>
-#include <sqlite3.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -39,30 +38,6 @@ std::int64_t at(std::int64_t frame) {
 bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
-
-// A raw second connection: the store has no read API for questionnaire answers.
-struct RawDb {
-    sqlite3* db = nullptr;
-    explicit RawDb(const fs::path& path) { EXPECT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK); }
-    ~RawDb() { sqlite3_close_v2(db); }
-    std::int64_t integer(const std::string& sql) {
-        sqlite3_stmt* stmt = nullptr;
-        EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr), SQLITE_OK) << sql;
-        EXPECT_EQ(sqlite3_step(stmt), SQLITE_ROW) << sql;
-        const std::int64_t value = sqlite3_column_int64(stmt, 0);
-        sqlite3_finalize(stmt);
-        return value;
-    }
-    std::string text(const std::string& sql) {
-        sqlite3_stmt* stmt = nullptr;
-        EXPECT_EQ(sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt, nullptr), SQLITE_OK) << sql;
-        EXPECT_EQ(sqlite3_step(stmt), SQLITE_ROW) << sql;
-        const auto* data = reinterpret_cast<const char*>(sqlite3_column_text(stmt, 0));
-        std::string value = data != nullptr ? data : "";
-        sqlite3_finalize(stmt);
-        return value;
-    }
-};
 
 // 2 scenes x 2 distances, in the listed order, after `practice` practice trials.
 std::string protocol_text(bool require_both_viewed, int scale_points, int items, int practice = 1) {
@@ -179,6 +154,13 @@ class LiveSessionTest : public ::testing::Test {
         return info.ok() ? info->status : SessionStatus::Running;
     }
 
+    // The session's stored questionnaire answers, by item.
+    std::vector<QuestionnaireAnswer> answers(std::int64_t id) {
+        Result<std::vector<QuestionnaireAnswer>> stored = store_->answers(id);
+        EXPECT_TRUE(stored.ok()) << stored.error().message;
+        return stored.ok() ? *stored : std::vector<QuestionnaireAnswer>{};
+    }
+
     // From frame `frame` on, presents frames until a trial's label is visible; returns the next
     // frame to present.
     static std::int64_t until_visible(LiveSession& s, std::int64_t frame) {
@@ -260,7 +242,8 @@ TEST_F(LiveSessionTest, NeutralScreenLastsFromTheFirstFrameThenLabel1ShowsAtTheN
     EXPECT_EQ(p.trial_started_ns, at(15));
     EXPECT_EQ(p.switches, 0);
     EXPECT_FALSE(p.both_seen);
-    EXPECT_NE(std::find(committed_.begin(), committed_.end(), "trial 0 shown label 1 frame 15"),
+    EXPECT_NE(std::find(committed_.begin(), committed_.end(),
+                        "trial 0 shown label 1 t " + std::to_string(at(15)) + " frame 15"),
               committed_.end());
     present(*s, 16);
     EXPECT_EQ(events(id).size(), 1u);  // nothing changed
@@ -567,10 +550,11 @@ TEST_F(LiveSessionTest, QuestionnaireAfterTheLastTrial) {
     EXPECT_EQ(request(*s, LiveInput::Confirm, n), "answered item 1");
     present(*s, n++);
     {
-        RawDb raw(db_);
-        EXPECT_EQ(raw.integer("SELECT count(*) FROM answers"), 1);
-        EXPECT_EQ(raw.integer("SELECT answer FROM answers WHERE item = 0"), 4);
-        EXPECT_EQ(raw.text("SELECT text FROM answers WHERE item = 0"), "Item A");
+        const auto stored = answers(id);
+        ASSERT_EQ(stored.size(), 1u);
+        EXPECT_EQ(stored[0].item, 0);
+        EXPECT_EQ(stored[0].answer, 4);
+        EXPECT_EQ(stored[0].text, "Item A");
     }
     screen = s->screen();
     EXPECT_EQ(screen.kind, ScreenKind::Questionnaire);
@@ -583,20 +567,18 @@ TEST_F(LiveSessionTest, QuestionnaireAfterTheLastTrial) {
     EXPECT_FALSE(s->answer(2, 3).ok());
     EXPECT_FALSE(s->answer(-1, 3).ok());
     EXPECT_EQ(s->screen().question, 1);
-    {
-        RawDb raw(db_);
-        EXPECT_EQ(raw.integer("SELECT count(*) FROM answers"), 1);
-    }
+    EXPECT_EQ(answers(id).size(), 1u);
     const Result<bool> ok = s->answer(1, 5);
     ASSERT_TRUE(ok.ok()) << ok.error().message;
     EXPECT_TRUE(s->finished());
     EXPECT_EQ(s->screen().kind, ScreenKind::Finished);
     EXPECT_EQ(status(id), SessionStatus::Completed);
     {
-        RawDb raw(db_);
-        EXPECT_EQ(raw.integer("SELECT count(*) FROM answers"), 2);
-        EXPECT_EQ(raw.integer("SELECT answer FROM answers WHERE item = 1"), 5);
-        EXPECT_EQ(raw.text("SELECT text FROM answers WHERE item = 1"), "Item B");
+        const auto stored = answers(id);
+        ASSERT_EQ(stored.size(), 2u);
+        EXPECT_EQ(stored[1].item, 1);
+        EXPECT_EQ(stored[1].answer, 5);
+        EXPECT_EQ(stored[1].text, "Item B");
     }
     EXPECT_EQ(request(*s, LiveInput::Confirm, n), "confirm ignored on the finished screen");
     EXPECT_FALSE(s->answer(0, 1).ok());
@@ -628,11 +610,11 @@ TEST_F(LiveSessionTest, QuestionnaireAnsweredOutOfOrderFromTheWindow) {
     EXPECT_EQ(request(*s, LiveInput::Confirm, n), "answered item 3");
     EXPECT_TRUE(s->finished());
     EXPECT_EQ(status(id), SessionStatus::Completed);
-    RawDb raw(db_);
-    EXPECT_EQ(raw.integer("SELECT count(*) FROM answers"), 3);
-    EXPECT_EQ(raw.integer("SELECT answer FROM answers WHERE item = 0"), 1);
-    EXPECT_EQ(raw.integer("SELECT answer FROM answers WHERE item = 1"), 4);
-    EXPECT_EQ(raw.integer("SELECT answer FROM answers WHERE item = 2"), 2);
+    const auto stored = answers(id);
+    ASSERT_EQ(stored.size(), 3u);
+    EXPECT_EQ(stored[0].answer, 1);
+    EXPECT_EQ(stored[1].answer, 4);
+    EXPECT_EQ(stored[2].answer, 2);
 }
 
 TEST_F(LiveSessionTest, WithoutQuestionnaireTheLastDecisionCompletesTheSession) {
@@ -838,14 +820,12 @@ class ObserverInputTest : public LiveSessionTest {
             }
         }
 
-        RawDb raw(db_);
-        EXPECT_EQ(
-            raw.integer("SELECT count(*) FROM answers WHERE session_id = " + std::to_string(id)),
-            2);
+        const auto stored = answers(id);
+        ASSERT_EQ(stored.size(), 2u);
         for (int item = 0; item < 2; ++item) {
-            const std::int64_t answer =
-                raw.integer("SELECT answer FROM answers WHERE session_id = " + std::to_string(id) +
-                            " AND item = " + std::to_string(item));
+            const auto& answer_row = stored[static_cast<std::size_t>(item)];
+            EXPECT_EQ(answer_row.item, item);
+            const int answer = answer_row.answer;
             EXPECT_EQ(answer, (*twin)->answer(item, 7)) << "item " << item;
             EXPECT_GE(answer, 1);
             EXPECT_LE(answer, 7);
@@ -932,9 +912,10 @@ TEST_F(ObserverInputTest, RefusedConfirmationMakesTheObserverViewTheOtherLabel) 
         EXPECT_EQ(r.outcome.decision_time_ns, e[3].time_ns - e[0].time_ns);
     }
     // From the middle (3): item 0 wants 1 (3 -> 4 -> 5 -> 1), item 1 wants 5.
-    RawDb raw(db_);
-    EXPECT_EQ(raw.integer("SELECT answer FROM answers WHERE item = 0"), 1);
-    EXPECT_EQ(raw.integer("SELECT answer FROM answers WHERE item = 1"), 5);
+    const auto stored = answers(id);
+    ASSERT_EQ(stored.size(), 2u);
+    EXPECT_EQ(stored[0].answer, 1);
+    EXPECT_EQ(stored[1].answer, 5);
 }
 
 // Without require_both_viewed the same observer confirms label 1 after its one dwell.
