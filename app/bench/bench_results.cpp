@@ -45,6 +45,7 @@ std::string bench_json(const BenchReport& report) {
     j.value("device", report.device).value("hmd", report.hmd);
     j.value("width", report.width).value("height", report.height);
     j.value("detail", report.detail).value("view", report.view).value("seed", report.seed);
+    j.value("anti_aliasing", report.anti_aliasing).value("ssao", report.ssao);
     j.value("warmup_frames", report.warmup).value("frames", report.frames);
     j.begin_array("runs");
     for (const BenchRun& run : report.runs) {

@@ -51,6 +51,8 @@ struct BenchReport {
     int height = 0;
     std::string detail;
     std::string view;
+    std::string anti_aliasing = "none";  // of every run, the stereo reference included
+    std::string ssao = "off";
     std::uint64_t seed = 0;
     int warmup = 0;
     int frames = 0;

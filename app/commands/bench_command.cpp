@@ -50,6 +50,8 @@ struct BenchOptions {
     int frames = 10;
     int warmup = 3;
     bool accuracy = true;
+    std::string anti_aliasing = "none";
+    std::string ssao = "off";
     std::string out;
 };
 
@@ -281,6 +283,26 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     Progress progress(total);
     int done = 0;
 
+    modes::RendererOptions renderer_options;
+    const auto anti_aliasing = modes::parse_anti_aliasing(o.anti_aliasing);
+    if (!anti_aliasing) {
+        throw UserError("--anti-aliasing " + o.anti_aliasing +
+                        ": use none, taa, msaa2, msaa4 or msaa8");
+    }
+    renderer_options.anti_aliasing = *anti_aliasing;
+    if (o.ssao != "off") {
+        renderer_options.ssao = passes::parse_ssao_variant(o.ssao);
+        if (!renderer_options.ssao) {
+            throw UserError("--ssao " + o.ssao + ": use off, per-eye or stereo");
+        }
+    }
+    if (msaa_samples(*anti_aliasing) != vk::SampleCountFlagBits::e1 &&
+        std::any_of(mode_list.begin(), mode_list.end(),
+                    [](modes::Mode m) { return m != modes::Mode::kStereo; })) {
+        throw UserError("--anti-aliasing " + o.anti_aliasing +
+                        " works in stereo mode only (docs/hybrid.md, \"Anti-aliasing\"): add "
+                        "--modes stereo, or use taa");
+    }
     BenchReport report;
     report.device = ctx->device_info().name;
     report.hmd = profile.name;
@@ -289,6 +311,8 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     report.detail = o.detail;
     report.view = o.view;
     report.seed = o.seed;
+    report.anti_aliasing = o.anti_aliasing;
+    report.ssao = o.ssao;
     report.warmup = o.warmup;
     report.frames = o.frames;
 
@@ -305,7 +329,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
         // Stereo: the timing reference (its frames interleave with every other run's) and the
         // images every hybrid run is compared with.
         Reference reference;
-        modes::RendererOptions stereo_options;
+        modes::RendererOptions stereo_options = renderer_options;
         stereo_options.read_back_depth = true;
         modes::ModeRenderer stereo(*ctx, scene, modes::Mode::kStereo, extent, stereo_options);
         const modes::FrameInputs stereo_inputs = inputs;
@@ -332,7 +356,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
 
         for (modes::Mode mode : mode_list) {
             if (mode == modes::Mode::kStereo) continue;
-            modes::ModeRenderer renderer(*ctx, scene, mode, extent, {}, nearest);
+            modes::ModeRenderer renderer(*ctx, scene, mode, extent, renderer_options, nearest);
             const std::vector<modes::MonoCulling> mode_variants =
                 mode == modes::Mode::kHybrid ? variants : std::vector{modes::MonoCulling::kNoOpt};
             for (const Plane& plane : planes) {
@@ -426,6 +450,11 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
         ->capture_default_str();
     cmd->add_flag("!--no-accuracy", options->accuracy,
                   "Skip SSIM and drift against stereo (times and counts only)");
+    cmd->add_option("--anti-aliasing", options->anti_aliasing,
+                    "none, taa or msaa2|msaa4|msaa8 for every run (MSAA: stereo modes only)")
+        ->capture_default_str();
+    cmd->add_option("--ssao", options->ssao, "off, per-eye or stereo for every run")
+        ->capture_default_str();
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->callback([options, &global] { run_bench(*options, global); });
 }

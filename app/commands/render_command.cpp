@@ -1,9 +1,11 @@
 // `monoplane render`: one scene, one mode, one viewpoint -> left.png, right.png, stats.json.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <optional>
 
+#include "app/commands/ao_consistency.h"
 #include "app/commands/commands.h"
 #include "app/commands/frame_summary.h"
 #include "app/commands/output_directory.h"
@@ -13,6 +15,7 @@
 #include "common/json_writer.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
+#include "renderer/rig/pose_path.h"
 #include "renderer/vk/context.h"
 #include "scenes/generate.h"
 
@@ -40,6 +43,10 @@ struct RenderOptions {
     std::string out;
     bool json = false;
     bool compare_stereo = false;
+    std::string anti_aliasing = "none";
+    std::string ssao = "off";
+    std::string pose_path = "static";
+    double fps = 90.0;
 };
 
 std::string joined(const std::vector<std::string>& names) {
@@ -53,6 +60,7 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
                          int height, const FrameSummary& s, const std::optional<rig::Rig>& rig,
                          const modes::RgbaImage* mono,
                          const std::optional<StereoComparison>& comparison,
+                         const std::optional<quality::InconsistencyMap>& ao,
                          const std::filesystem::path& out) {
     JsonWriter j;
     j.begin_object();
@@ -62,6 +70,8 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
     j.value("width", width).value("height", height);
     if (o.mode != "stereo") j.value("debug_view", o.debug_view);
     if (o.mode == "hybrid") j.value("variant", o.mono_culling);
+    j.value("anti_aliasing", o.anti_aliasing).value("ssao", o.ssao);
+    j.value("pose_path", o.pose_path).value("fps", o.fps);
     if (rig) {
         j.value("mono_plane", rig->inputs.mono_plane).value("mono_skipped", rig->mono_skipped);
         j.value("overlap", rig->overlap).value("max_error_px", rig->max_error_px);
@@ -116,9 +126,24 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
         }
         j.end_object();
     }
+    if (ao) {
+        // papers/002 Sect. 4.1 over the left eye's pixels.
+        j.begin_object("ao_inconsistency");
+        j.value("mean", ao->mean).value("max", ao->max);
+        j.value("compared_pixels", static_cast<std::uint64_t>(ao->compared));
+        j.value("one_eye_only_pixels", static_cast<std::uint64_t>(ao->one_eye_only));
+        j.value("normal_rejected_pixels", static_cast<std::uint64_t>(ao->normal_rejected));
+        j.value("sky_pixels", static_cast<std::uint64_t>(ao->sky));
+        j.end_object();
+    }
     j.begin_object("files");
     j.value("left", (out / "left.png").string()).value("right", (out / "right.png").string());
     if (mono) j.value("mono", (out / "mono.png").string());
+    if (ao) {
+        j.value("ao_left", (out / "ao_left.png").string());
+        j.value("ao_right", (out / "ao_right.png").string());
+        j.value("ao_inconsistency", (out / "ao_inconsistency.png").string());
+    }
     j.end_object();
     j.end_object();
     return j.str();
@@ -153,6 +178,22 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     if ((o.width > 0) != (o.height > 0)) throw UserError("--width and --height go together");
     if (o.ipd && !(*o.ipd >= 0.0 && *o.ipd <= 0.1))
         throw UserError("--ipd must be within [0, 0.1] m");
+    const auto anti_aliasing = modes::parse_anti_aliasing(o.anti_aliasing);
+    if (!anti_aliasing) {
+        throw UserError("--anti-aliasing " + o.anti_aliasing +
+                        ": use none, taa, msaa2, msaa4 or msaa8");
+    }
+    std::optional<passes::SsaoVariant> ssao;
+    if (o.ssao != "off") {
+        ssao = passes::parse_ssao_variant(o.ssao);
+        if (!ssao) throw UserError("--ssao " + o.ssao + ": use off, per-eye or stereo");
+    }
+    const auto pose_path = rig::builtin_pose_path(o.pose_path);
+    if (!pose_path) {
+        throw UserError("--pose-path " + o.pose_path + ": use " +
+                        joined(rig::builtin_pose_path_names()));
+    }
+    if (!(o.fps > 0.0 && std::isfinite(o.fps))) throw UserError("--fps must be positive");
 
     const std::filesystem::path out = prepare_output_directory("--out", o.out);
 
@@ -174,6 +215,11 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
 
     modes::RendererOptions renderer_options;
     renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
+    renderer_options.anti_aliasing = *anti_aliasing;
+    renderer_options.ssao = ssao;
+    // E(p) reprojects the eyes' AO through their depth.
+    renderer_options.read_back_ao = ssao.has_value();
+    renderer_options.read_back_depth = ssao.has_value();
     modes::ModeRenderer renderer(
         *ctx, scene, *mode,
         vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
@@ -192,6 +238,9 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     std::vector<profile::FrameStats> measured;
     const int total = o.warmup + o.frames;
     for (int frame = 0; frame < total; ++frame) {
+        // Frame n at n / fps along the path: TAA's jitter and history follow the frame index.
+        inputs.views.head = rig::pose_along(*pose_path, viewpoint->head, frame / o.fps);
+        inputs.frame_index = static_cast<std::uint64_t>(frame);
         profile::FrameStats stats = renderer.render_frame(inputs);
         if (frame >= o.warmup) measured.push_back(std::move(stats));
         if (total > 1) std::cerr << "\rframe " << frame + 1 << "/" << total << std::flush;
@@ -202,6 +251,13 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     write_png(out / "right.png", renderer.eye_image(modes::Eye::kRight)).value_or_throw();
     const modes::RgbaImage* mono = renderer.mono_image();
     if (mono) write_png(out / "mono.png", *mono).value_or_throw();
+    std::optional<quality::InconsistencyMap> ao;
+    if (ssao) {
+        ao = ao_inconsistency(renderer, inputs);
+        write_ao_pictures(renderer, *ao, out);
+        std::cerr << "AO inconsistency E (papers/002 Sect. 4.1): mean " << ao->mean << " over "
+                  << ao->compared << " pixels\n";
+    }
     std::optional<StereoComparison> comparison;
     if (o.compare_stereo && *mode != modes::Mode::kStereo) {
         std::cerr << "rendering the stereo reference for SSIM\n";
@@ -212,7 +268,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     }
     const std::string json =
         summary_json(o, profile, scene, *ctx, width, height, summarize(measured),
-                     renderer.last_rig(), mono, comparison, out);
+                     renderer.last_rig(), mono, comparison, ao, out);
     std::ofstream(out / "stats.json") << json << "\n";
     if (o.json) std::cout << json << "\n";
     std::cerr << "wrote " << (out / "left.png").string() << ", " << (out / "right.png").string()
@@ -274,6 +330,19 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
         ->capture_default_str();
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->add_flag("--json", options->json, "Print the statistics as JSON on stdout");
+    cmd->add_option("--anti-aliasing", options->anti_aliasing,
+                    "none, taa (every mode; give it frames to converge, e.g. --warmup 16) or "
+                    "msaa2|msaa4|msaa8 (stereo only)")
+        ->capture_default_str();
+    cmd->add_option("--ssao", options->ssao,
+                    "Ambient occlusion: off, per-eye (HBAO+ in each eye) or stereo (papers/002); "
+                    "writes ao_left.png, ao_right.png, ao_inconsistency.png and E's mean")
+        ->capture_default_str();
+    cmd->add_option("--pose-path", options->pose_path,
+                    "Head motion over the frames: static, sway, turn or walk")
+        ->capture_default_str();
+    cmd->add_option("--fps", options->fps, "Frame rate of the pose path (frame n at n / fps s)")
+        ->capture_default_str();
     cmd->add_flag("--compare-stereo", options->compare_stereo,
                   "Hybrid modes: also render stereo and write SSIM and local-SSIM heat maps");
     cmd->callback([options, &global] { run_render(*options, global); });

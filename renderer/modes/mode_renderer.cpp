@@ -6,6 +6,7 @@
 #include "common/result.h"
 #include "renderer/modes/farfield_rig.h"
 #include "renderer/passes/culling/cull_constants.h"
+#include "renderer/rig/temporal_jitter.h"
 
 namespace monoplane::modes {
 namespace {
@@ -34,9 +35,9 @@ glm::dvec3 to_world(const rig::Pose& head, const glm::dvec3& in_head) {
 }
 
 void copy_to_buffer(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image,
-                    vk::Extent2D extent, const vk_core::Buffer& buffer) {
-    vk_core::transition(cmd, image, vk::ImageLayout::eColorAttachmentOptimal,
-                        vk::ImageLayout::eTransferSrcOptimal, Stage::eColorAttachmentOutput,
+                    vk::Extent2D extent, const vk_core::Buffer& buffer, vk::ImageLayout from) {
+    vk_core::transition(cmd, image, from, vk::ImageLayout::eTransferSrcOptimal,
+                        Stage::eColorAttachmentOutput | Stage::eFragmentShader,
                         Access::eColorAttachmentWrite, Stage::eTransfer, Access::eTransferRead);
     cmd.copyImageToBuffer(
         image.handle(), vk::ImageLayout::eTransferSrcOptimal, buffer.handle(),
@@ -101,6 +102,51 @@ std::string mono_culling_name(MonoCulling culling) {
     return "?";
 }
 
+std::optional<AntiAliasing> parse_anti_aliasing(const std::string& name) {
+    if (name == "none") return AntiAliasing::kNone;
+    if (name == "taa") return AntiAliasing::kTaa;
+    if (name == "msaa2") return AntiAliasing::kMsaa2;
+    if (name == "msaa4") return AntiAliasing::kMsaa4;
+    if (name == "msaa8") return AntiAliasing::kMsaa8;
+    return std::nullopt;
+}
+
+std::string anti_aliasing_name(AntiAliasing aa) {
+    switch (aa) {
+        case AntiAliasing::kNone:
+            return "none";
+        case AntiAliasing::kTaa:
+            return "taa";
+        case AntiAliasing::kMsaa2:
+            return "msaa2";
+        case AntiAliasing::kMsaa4:
+            return "msaa4";
+        case AntiAliasing::kMsaa8:
+            return "msaa8";
+    }
+    return "?";
+}
+
+vk::SampleCountFlagBits msaa_samples(AntiAliasing aa) {
+    switch (aa) {
+        case AntiAliasing::kMsaa2:
+            return vk::SampleCountFlagBits::e2;
+        case AntiAliasing::kMsaa4:
+            return vk::SampleCountFlagBits::e4;
+        case AntiAliasing::kMsaa8:
+            return vk::SampleCountFlagBits::e8;
+        default:
+            return vk::SampleCountFlagBits::e1;
+    }
+}
+
+// What a view's targets must support beyond the basic forward pass.
+struct ViewFeatures {
+    bool velocity = false;  // TAA: velocity, and (eyes) two history images
+    bool history = false;
+    vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
+};
+
 // The targets and per-frame data of one camera.
 struct ModeRenderer::View {
     vk::Extent2D extent;  // the images' size (C: its allocation)
@@ -116,8 +162,23 @@ struct ModeRenderer::View {
     vk::raii::DescriptorSet tonemap_set{nullptr};
     RgbaImage image;
     std::vector<float> linear;
+    // TAA: screen-space velocity, and the eyes' two output images (this frame's and the history).
+    std::optional<vk_core::Image> velocity;
+    std::array<std::optional<vk_core::Image>, 2> history;
+    std::array<vk::raii::DescriptorSet, 2> taa_sets{nullptr, nullptr};
+    std::array<vk::raii::DescriptorSet, 2> tonemap_taa_sets{nullptr, nullptr};
+    glm::dmat4 previous_unjittered{1.0};  // last frame's world -> clip without jitter
+    bool has_previous = false;
+    // MSAA: the multisampled targets the forward pass resolves into hdr and linear_depth.
+    std::optional<vk_core::Image> hdr_samples;
+    std::optional<vk_core::Image> linear_depth_samples;
+    std::optional<vk_core::Image> depth_samples;
+    std::optional<passes::MultisampleTargets> multisample;
+    std::unique_ptr<passes::SsaoView> ssao;
+    std::vector<float> ao;
+    EyeFrameGeometry geometry;
 
-    View(const vk_core::Context& ctx, vk::Extent2D size)
+    View(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
         : extent(size),
           area(size),
           hdr(ctx, {size, passes::ForwardPass::kHdrFormat, kColorTarget}),
@@ -132,10 +193,46 @@ struct ModeRenderer::View {
           readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
                    vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible),
           depth_readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
-                         vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {}
+                         vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {
+        if (features.velocity) {
+            velocity.emplace(ctx, vk_core::ImageDesc{size, passes::ForwardPass::kVelocityFormat,
+                                                     vk::ImageUsageFlagBits::eColorAttachment |
+                                                         vk::ImageUsageFlagBits::eSampled});
+        }
+        if (features.history) {
+            for (auto& image : history) {
+                image.emplace(ctx, vk_core::ImageDesc{size, passes::TaaPass::kOutputFormat,
+                                                      vk::ImageUsageFlagBits::eColorAttachment |
+                                                          vk::ImageUsageFlagBits::eSampled});
+            }
+        }
+        if (features.samples != vk::SampleCountFlagBits::e1) {
+            // Transient: only their resolve is kept.
+            const vk::ImageUsageFlags usage = vk::ImageUsageFlagBits::eColorAttachment |
+                                              vk::ImageUsageFlagBits::eTransientAttachment;
+            hdr_samples.emplace(ctx, vk_core::ImageDesc{size, passes::ForwardPass::kHdrFormat,
+                                                        usage, 1, features.samples});
+            linear_depth_samples.emplace(
+                ctx, vk_core::ImageDesc{size, passes::ForwardPass::kLinearDepthFormat, usage, 1,
+                                        features.samples});
+            depth_samples.emplace(
+                ctx, vk_core::ImageDesc{size, passes::ForwardPass::kDepthFormat,
+                                        vk::ImageUsageFlagBits::eDepthStencilAttachment |
+                                            vk::ImageUsageFlagBits::eTransientAttachment,
+                                        1, features.samples});
+            multisample.emplace(
+                passes::MultisampleTargets{*hdr_samples, *linear_depth_samples, *depth_samples});
+        }
+    }
 
     passes::ForwardTargets forward_targets(bool clear_color = false) const {
-        return {hdr, depth, linear_depth, area, clear_color};
+        return {hdr,
+                depth,
+                linear_depth,
+                area,
+                clear_color,
+                velocity ? &*velocity : nullptr,
+                multisample ? &*multisample : nullptr};
     }
 };
 
@@ -144,6 +241,35 @@ struct ModeRenderer::MonoView : View {
     using View::View;
 };
 
+namespace {
+
+// Refuses option combinations the renderer does not implement, with the reason.
+const RendererOptions& checked(const vk_core::Context& ctx, Mode mode,
+                               const RendererOptions& options) {
+    const vk::SampleCountFlagBits samples = msaa_samples(options.anti_aliasing);
+    if (samples != vk::SampleCountFlagBits::e1) {
+        if (mode != Mode::kStereo) {
+            throw UserError("MSAA (" + anti_aliasing_name(options.anti_aliasing) +
+                            ") is available in stereo mode only: in the hybrid modes C's image "
+                            "is mapped into the eyes after the resolve would have happened "
+                            "(papers/000 Sect. 4.5; docs/hybrid.md). Use --anti-aliasing taa.");
+        }
+        const vk::PhysicalDeviceLimits limits = ctx.physical_device().getProperties().limits;
+        const vk::SampleCountFlags supported =
+            limits.framebufferColorSampleCounts & limits.framebufferDepthSampleCounts;
+        if (!(supported & samples)) {
+            throw UserError(anti_aliasing_name(options.anti_aliasing) + " is not supported by " +
+                            ctx.device_info().name);
+        }
+    }
+    if (options.read_back_ao && !options.ssao) {
+        throw UserError("reading back ambient occlusion needs SSAO switched on");
+    }
+    return options;
+}
+
+}  // namespace
+
 ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& scene, Mode mode,
                            vk::Extent2D eye_extent, const RendererOptions& options,
                            double nearest_mono_plane)
@@ -151,36 +277,43 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
       scene_(scene),
       mode_(mode),
       eye_extent_(eye_extent),
-      options_(options),
+      options_(checked(ctx, mode, options)),
       nearest_mono_plane_(nearest_mono_plane),
       geometry_(ctx, scene),
       shadow_(ctx, options.shadow),
-      forward_(ctx),
+      forward_(ctx, passes::ForwardConfig{options.anti_aliasing == AntiAliasing::kTaa,
+                                          msaa_samples(options.anti_aliasing)}),
       tonemap_(ctx),
-      composite_(ctx),
+      composite_(ctx, options.anti_aliasing == AntiAliasing::kTaa),
       shadow_draws_(ctx, scene.chunks.size()),
       culling_(ctx, scene),
       pyramid_(ctx),
+      taa_(ctx),
       profiler_(ctx) {
+    if (options.ssao) ssao_ = std::make_unique<passes::SsaoPass>(ctx, options.ssao_params);
     const std::array pool_sizes = {
         vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 3),
-        vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 9),
+        vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 40),
         vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 1),
     };
     descriptor_pool_ = vk::raii::DescriptorPool(
         ctx.device(), vk::DescriptorPoolCreateInfo(
-                          vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 8, pool_sizes));
+                          vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 20, pool_sizes));
     const vk::DescriptorSetLayout merged_depth_layout = forward_.merged_depth_layout();
     merged_depth_set_ = std::move(vk::raii::DescriptorSets(
         ctx.device(), vk::DescriptorSetAllocateInfo(*descriptor_pool_, merged_depth_layout))[0]);
+    const bool taa = options.anti_aliasing == AntiAliasing::kTaa;
     for (auto& eye : eyes_) {
-        eye = std::make_unique<View>(ctx, eye_extent);
+        eye = std::make_unique<View>(ctx, eye_extent,
+                                     ViewFeatures{taa, taa, msaa_samples(options.anti_aliasing)});
         const std::array layouts = {forward_.set_layout(), tonemap_.set_layout()};
         vk::raii::DescriptorSets sets(ctx.device(),
                                       vk::DescriptorSetAllocateInfo(*descriptor_pool_, layouts));
         eye->forward_set = std::move(sets[0]);
         eye->tonemap_set = std::move(sets[1]);
         write_view_sets(*eye);
+        if (taa) write_taa_sets(*eye);
+        if (ssao_) eye->ssao = ssao_->make_view(eye->constants, eye->linear_depth, eye_extent);
     }
     std::vector<std::uint32_t> all(scene.chunks.size());
     for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
@@ -188,6 +321,35 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
     pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
     write_merged_depth_set();
+}
+
+void ModeRenderer::write_taa_sets(View& view) const {
+    for (int parity = 0; parity < 2; ++parity) {
+        const std::array layouts = {taa_.set_layout(), tonemap_.set_layout()};
+        vk::raii::DescriptorSets sets(ctx_.device(),
+                                      vk::DescriptorSetAllocateInfo(*descriptor_pool_, layouts));
+        view.taa_sets[parity] = std::move(sets[0]);
+        view.tonemap_taa_sets[parity] = std::move(sets[1]);
+        // Parity p writes history[p] and reads history[1 - p].
+        const auto read_only = vk::ImageLayout::eShaderReadOnlyOptimal;
+        const std::array<vk::DescriptorImageInfo, 4> inputs = {
+            vk::DescriptorImageInfo(taa_.nearest_sampler(), view.hdr.view(), read_only),
+            vk::DescriptorImageInfo(taa_.nearest_sampler(), view.velocity->view(), read_only),
+            vk::DescriptorImageInfo(taa_.nearest_sampler(), view.linear_depth.view(), read_only),
+            vk::DescriptorImageInfo(taa_.bilinear_sampler(), view.history[1 - parity]->view(),
+                                    read_only),
+        };
+        const vk::DescriptorImageInfo output(tonemap_.sampler(), view.history[parity]->view(),
+                                             read_only);
+        std::vector<vk::WriteDescriptorSet> writes;
+        for (std::uint32_t i = 0; i < inputs.size(); ++i) {
+            writes.emplace_back(*view.taa_sets[parity], i, 0,
+                                vk::DescriptorType::eCombinedImageSampler, inputs[i]);
+        }
+        writes.emplace_back(*view.tonemap_taa_sets[parity], 0, 0,
+                            vk::DescriptorType::eCombinedImageSampler, output);
+        ctx_.device().updateDescriptorSets(writes, {});
+    }
 }
 
 void ModeRenderer::ensure_pyramid() {
@@ -237,7 +399,8 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     }
     // Allocated once for the nearest m in normal use (eq. 8); grown only if a frame needs more.
     mono_.reset();
-    mono_ = std::make_unique<MonoView>(ctx_, needed);
+    const bool taa = options_.anti_aliasing == AntiAliasing::kTaa;
+    mono_ = std::make_unique<MonoView>(ctx_, needed, ViewFeatures{taa, false});
     const std::array layouts = {forward_.set_layout(), tonemap_.set_layout(),
                                 composite_.set_layout()};
     vk::raii::DescriptorSets sets(ctx_.device(),
@@ -251,16 +414,25 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     const vk::DescriptorImageInfo linear_info(composite_.nearest_sampler(),
                                               mono_->linear_depth.view(),
                                               vk::ImageLayout::eShaderReadOnlyOptimal);
-    const std::array writes = {
+    std::vector writes = {
         vk::WriteDescriptorSet(*mono_->composite_set, 0, 0,
                                vk::DescriptorType::eCombinedImageSampler, bilinear_hdr),
         vk::WriteDescriptorSet(*mono_->composite_set, 1, 0,
                                vk::DescriptorType::eCombinedImageSampler, linear_info),
     };
+    const vk::DescriptorImageInfo velocity_info(composite_.nearest_sampler(),
+                                                taa ? mono_->velocity->view() : vk::ImageView{},
+                                                vk::ImageLayout::eShaderReadOnlyOptimal);
+    if (taa) {
+        writes.emplace_back(*mono_->composite_set, 2, 0, vk::DescriptorType::eCombinedImageSampler,
+                            velocity_info);
+    }
     ctx_.device().updateDescriptorSets(writes, {});
+    if (ssao_) mono_->ssao = ssao_->make_view(mono_->constants, mono_->linear_depth, needed);
 }
 
-void ModeRenderer::update_view(View& view, const glm::dmat4& view_proj, const glm::dvec3& position,
+void ModeRenderer::update_view(View& view, const glm::dmat4& view_proj,
+                               const glm::dmat4& unjittered, const glm::dvec3& position,
                                const FrameInputs& inputs, const glm::dvec3& mono_position,
                                double blend_band, const glm::dmat4& light_view_proj,
                                double hidden_depth_threshold) {
@@ -283,7 +455,14 @@ void ModeRenderer::update_view(View& view, const glm::dmat4& view_proj, const gl
     c.mono_camera_position = glm::vec4(glm::vec3(mono_position), 1.0f);
     c.view_blend = glm::vec4(static_cast<float>(inputs.mono_plane), static_cast<float>(blend_band),
                              static_cast<float>(hidden_depth_threshold), 0.0f);
+    c.velocity_view_proj = glm::mat4(unjittered);
+    // A restarted history has no previous frame: zero velocity.
+    const bool continues = history_valid_ && view.has_previous;
+    c.prev_view_proj = glm::mat4(continues ? view.previous_unjittered : unjittered);
     view.constants.write(&c, sizeof(c));
+    view.previous_unjittered = unjittered;
+    view.has_previous = true;
+    view.geometry = {view_proj, position};
 }
 
 void ModeRenderer::decide_routing(const FrameInputs& inputs, passes::CullFrame& cull) const {
@@ -320,6 +499,19 @@ profile::FrameStats ModeRenderer::render_frame(
     const std::function<void(const vk::raii::CommandBuffer&)>& record_after) {
     const auto cpu_start = std::chrono::steady_clock::now();
     const StereoViewInputs& views = inputs.views;
+
+    // TAA: this frame's jitter, and whether the history continues (consecutive frames of the
+    // same configuration; a study switching between renderers restarts it).
+    const bool taa = options_.anti_aliasing == AntiAliasing::kTaa;
+    const std::uint64_t frame_index = inputs.frame_index.value_or(next_frame_index_);
+    history_valid_ = taa && frame_index == next_frame_index_ && frame_index > 0 &&
+                     history_mono_plane_ == inputs.mono_plane;
+    history_restarted_ = !history_valid_;
+    next_frame_index_ = frame_index + 1;
+    history_mono_plane_ = inputs.mono_plane;
+    const glm::dvec2 jitter_px = taa ? rig::halton_jitter(frame_index) : glm::dvec2(0.0);
+    const glm::dmat4 eye_jitter =
+        rig::jitter_matrix(jitter_px, glm::dvec2(eye_extent_.width, eye_extent_.height));
 
     const scenes::Aabb region =
         shadow_region(scene_, views.head.position, options_.shadow.region_radius_m);
@@ -360,6 +552,7 @@ profile::FrameStats ModeRenderer::render_frame(
         depth_tested && inputs.mono_culling == MonoCulling::kOcclusionCull;
 
     passes::CullFrame cull;
+    glm::dmat4 mono_jitter(1.0);
     const glm::dvec3 mono_in_head = farfield || !use_mono ? glm::dvec3(0.0) : rig_->mono_position;
     const glm::dvec3 mono_position = to_world(views.head, mono_in_head);
     for (Eye eye : {Eye::kLeft, Eye::kRight}) {
@@ -369,9 +562,9 @@ profile::FrameStats ModeRenderer::render_frame(
             use_mono ? rig_->eye_projection[e] * rig::view_matrix(views.head, offset)
                      : eye_view_proj(views, eye);
         const double band = use_mono && !farfield ? inputs.view_blend_band : 0.0;
-        update_view(*eyes_[e], view_proj, to_world(views.head, offset), inputs, mono_position, band,
-                    light_view_proj);
-        cull.view_proj[e] = view_proj;
+        update_view(*eyes_[e], eye_jitter * view_proj, view_proj, to_world(views.head, offset),
+                    inputs, mono_position, band, light_view_proj);
+        cull.view_proj[e] = view_proj;  // a sub-pixel jitter changes no chunk's visibility
     }
     if (use_mono) {
         glm::dmat4 mono_view_proj;
@@ -390,8 +583,11 @@ profile::FrameStats ModeRenderer::render_frame(
         const glm::dvec4 plane = rig_->eye_projection[0] *
                                  glm::dvec4(0.0, 0.0, -(inputs.mono_plane - rig_->overlap), 1.0);
         const double threshold = plane.z / plane.w;
-        update_view(*mono_, mono_view_proj, mono_position, inputs, mono_position, 0.0,
-                    light_view_proj, threshold);
+        // The same jitter in C's pixels (Sect. 4.5).
+        mono_jitter =
+            rig::jitter_matrix(jitter_px, glm::dvec2(mono_->area.width, mono_->area.height));
+        update_view(*mono_, mono_jitter * mono_view_proj, mono_view_proj, mono_position, inputs,
+                    mono_position, 0.0, light_view_proj, threshold);
         cull.view_proj[MONOPLANE_CULL_MONO] = mono_view_proj;
         cull.mono_viewport = glm::dvec2(mono_->area.width, mono_->area.height);
         cull.hidden_depth_threshold = threshold;
@@ -480,7 +676,10 @@ profile::FrameStats ModeRenderer::render_frame(
                                         Access::eShaderSampledRead);
                 }
                 std::array<glm::dmat3, 2> mono_to_eye;
-                for (int e = 0; e < 2; ++e) mono_to_eye[e] = rig::mono_pixel_to_eye_pixel(*rig_, e);
+                for (int e = 0; e < 2; ++e) {
+                    mono_to_eye[e] = rig::jittered_pixel_mapping(
+                        rig::mono_pixel_to_eye_pixel(*rig_, e), jitter_px);
+                }
                 pyramid_.record(cmd, mono_to_eye, when(MONOPLANE_PRED_MONO_DEPTH_TESTED));
                 for (const auto& eye : eyes_) {
                     vk_core::transition(cmd, eye->depth, vk::ImageLayout::eDepthReadOnlyOptimal,
@@ -499,15 +698,26 @@ profile::FrameStats ModeRenderer::render_frame(
             }
             profiler_.begin_pass(cmd, "mono.forward");
             profiler_.begin_view(cmd, "mono");
-            // Pixels hidden in both eyes stay unwritten; C's image read back shows them black.
-            const bool clear_color = depth_tested && options_.read_back;
+            // Pixels hidden in both eyes stay unwritten; C's image read back shows them black,
+            // and C's SSAO must not read stale depths there.
+            const bool clear_color = depth_tested && (options_.read_back || ssao_);
             forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,
                             *merged_depth_set_, geometry_, culling_.draws(passes::CullView::kMono),
                             mono_steps);
             profiler_.end_view(cmd);
             profiler_.end_pass(cmd);
-            to_shader_read(cmd, mono_->hdr);
             to_shader_read(cmd, mono_->linear_depth);
+            if (ssao_) {
+                // The far region's AO, computed once for both eyes (C alone sees it).
+                profiler_.begin_pass(cmd, "mono.ssao");
+                passes::with_predicate(cmd, when(MONOPLANE_PRED_MONO_ANY), [&] {
+                    ssao_->record_view(cmd, *mono_->ssao, mono_->area);
+                    ssao_->record_apply(cmd, *mono_->ssao, mono_->hdr, mono_->area);
+                });
+                profiler_.end_pass(cmd);
+            }
+            to_shader_read(cmd, mono_->hdr);
+            if (mono_->velocity) to_shader_read(cmd, *mono_->velocity);
             for (Eye eye : {Eye::kLeft, Eye::kRight}) {
                 const int e = static_cast<int>(eye);
                 const View& view = *eyes_[e];
@@ -517,8 +727,17 @@ profile::FrameStats ModeRenderer::render_frame(
                 if (farfield) {
                     params.mapping = passes::CompositeMapping::kOffsetCopy;
                     params.pixel_offset = farfield->offsets[e];
+                    // Same pixel size: NDC velocities scale with the images' widths.
+                    params.velocity_scale = glm::vec2(static_cast<float>(mono_->area.width) /
+                                                          static_cast<float>(eye_extent_.width),
+                                                      static_cast<float>(mono_->area.height) /
+                                                          static_cast<float>(eye_extent_.height));
                 } else {
-                    params.eye_to_mono = glm::mat4(rig_->eye_to_mono[e]);
+                    // Eq. 5 between the jittered clip spaces: C's image and the eye's are both
+                    // displaced by the jitter, so the mapping undoes one and applies the other.
+                    params.eye_to_mono =
+                        glm::mat4(mono_jitter * rig_->eye_to_mono[e] * glm::inverse(eye_jitter));
+                    params.velocity_scale = glm::vec2(rig::mono_velocity_to_eye(*rig_, e));
                     // C's image is valid in [0, viewport / allocation] (Sect. 4.2). The image may
                     // be larger than the rig's own allocation: it was sized for an earlier m.
                     params.uv_scale = glm::vec2(static_cast<float>(mono_->area.width),
@@ -533,18 +752,27 @@ profile::FrameStats ModeRenderer::render_frame(
                 params.when = when(MONOPLANE_PRED_MONO_ANY);
                 profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".composite");
                 profiler_.begin_view(cmd, std::string(eye_name(eye)) + ".composite");
-                composite_.record(cmd, {view.hdr, view.linear_depth, view.depth},
+                composite_.record(cmd,
+                                  {view.hdr, view.linear_depth, view.depth,
+                                   view.velocity ? &*view.velocity : nullptr},
                                   *mono_->composite_set, params);
                 profiler_.end_view(cmd);
                 profiler_.end_pass(cmd);
             }
         }
-        // Per-eye post-processing runs on the assembled image.
+        // Post-processing runs on the assembled images. Linear depth is read from here on.
+        for (const auto& eye : eyes_) to_shader_read(cmd, eye->linear_depth);
+        if (ssao_) record_ssao(cmd, use_mono);
         for (Eye eye : {Eye::kLeft, Eye::kRight}) {
-            const View& view = *eyes_[static_cast<int>(eye)];
+            View& view = *eyes_[static_cast<int>(eye)];
             to_shader_read(cmd, view.hdr);
+            vk::DescriptorSet tonemap_input = *view.tonemap_set;
+            if (taa) {
+                record_taa(cmd, view, eye);
+                tonemap_input = *view.tonemap_taa_sets[history_parity_];
+            }
             profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".tonemap");
-            tonemap_.record(cmd, view.display, *view.tonemap_set, options_.tonemap);
+            tonemap_.record(cmd, view.display, tonemap_input, options_.tonemap);
             profiler_.end_pass(cmd);
         }
         // C's own tone-mapped image exists only to be looked at (mono.png).
@@ -555,14 +783,19 @@ profile::FrameStats ModeRenderer::render_frame(
         }
         // Read-backs after the last pass: they are not part of the frame's GPU time.
         for (const auto& view : eyes_) {
-            if (options_.read_back)
-                copy_to_buffer(cmd, view->display, view->extent, view->readback);
-            if (options_.read_back_depth) {
-                copy_to_buffer(cmd, view->linear_depth, view->extent, view->depth_readback);
+            if (options_.read_back) {
+                copy_to_buffer(cmd, view->display, view->extent, view->readback,
+                               vk::ImageLayout::eColorAttachmentOptimal);
             }
+            if (options_.read_back_depth) {
+                copy_to_buffer(cmd, view->linear_depth, view->extent, view->depth_readback,
+                               vk::ImageLayout::eShaderReadOnlyOptimal);
+            }
+            if (options_.read_back_ao) ssao_->record_readback(cmd, *view->ssao);
         }
         if (use_mono && options_.read_back) {
-            copy_to_buffer(cmd, mono_->display, mono_->area, mono_->readback);
+            copy_to_buffer(cmd, mono_->display, mono_->area, mono_->readback,
+                           vk::ImageLayout::eColorAttachmentOptimal);
         }
         culling_.record_readback(cmd, options_.read_back_draw_lists);
         record_ms =
@@ -572,6 +805,7 @@ profile::FrameStats ModeRenderer::render_frame(
     });
     if (shadow_needed) shadow_light_view_proj_ = light_view_proj;
     mono_rendered_ = use_mono && options_.read_back;
+    if (taa) history_parity_ = 1 - history_parity_;
 
     profile::FrameStats stats = profiler_.collect();
     stats.cpu_record_ms = record_ms;
@@ -594,6 +828,9 @@ profile::FrameStats ModeRenderer::render_frame(
         for (auto& eye : eyes_) read_image(*eye, eye->extent, eye->image);
         if (use_mono) read_image(*mono_, mono_->area, mono_->image);
     }
+    if (options_.read_back_ao) {
+        for (auto& eye : eyes_) eye->ao = eye->ssao->ao_values();
+    }
     if (options_.read_back_depth) {
         for (auto& eye : eyes_) {
             const auto* values = reinterpret_cast<const float*>(eye->depth_readback.mapped());
@@ -602,6 +839,34 @@ profile::FrameStats ModeRenderer::render_frame(
         }
     }
     return stats;
+}
+
+void ModeRenderer::record_ssao(const vk::raii::CommandBuffer& cmd, bool use_mono) {
+    profiler_.begin_pass(cmd, "ssao");
+    ssao_->record_pair(cmd, *eyes_[0]->ssao, *eyes_[1]->ssao, eye_extent_, *options_.ssao);
+    for (const auto& eye : eyes_) {
+        // In hybrid the far region already carries C's AO: only the near content takes the eyes'.
+        ssao_->record_apply(cmd, *eye->ssao, eye->hdr, eye_extent_,
+                            use_mono ? &eye->depth : nullptr);
+    }
+    profiler_.end_pass(cmd);
+}
+
+void ModeRenderer::record_taa(const vk::raii::CommandBuffer& cmd, View& view, Eye eye) {
+    to_shader_read(cmd, *view.velocity);
+    const vk_core::Image& history = *view.history[1 - history_parity_];
+    if (!history_valid_) {
+        // Never written (or stale): bound for the shader's interface, not read on a reset.
+        vk_core::transition(cmd, history, vk::ImageLayout::eUndefined,
+                            vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eFragmentShader,
+                            Access::eShaderSampledRead, Stage::eFragmentShader,
+                            Access::eShaderSampledRead);
+    }
+    profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".taa");
+    const vk_core::Image& output = *view.history[history_parity_];
+    taa_.record(cmd, output, *view.taa_sets[history_parity_], options_.taa, !history_valid_);
+    profiler_.end_pass(cmd);
+    to_shader_read(cmd, output);
 }
 
 std::vector<std::uint32_t> ModeRenderer::drawn_chunks(passes::CullView view) const {
@@ -624,6 +889,14 @@ const RgbaImage* ModeRenderer::mono_image() const {
 
 const std::vector<float>& ModeRenderer::eye_linear_depth(Eye eye) const {
     return eyes_[static_cast<int>(eye)]->linear;
+}
+
+const std::vector<float>& ModeRenderer::eye_ao(Eye eye) const {
+    return eyes_[static_cast<int>(eye)]->ao;
+}
+
+const EyeFrameGeometry& ModeRenderer::eye_geometry(Eye eye) const {
+    return eyes_[static_cast<int>(eye)]->geometry;
 }
 
 }  // namespace monoplane::modes

@@ -1,8 +1,9 @@
 // The render modes of DESIGN.md section 6 as lists of passes over shared resources:
-//   stereo:          culling, shadow*, per eye {forward+sky}, per eye {tonemap}
+//   stereo:          culling, shadow*, per eye {forward+sky}, [ssao], per eye {[taa], tonemap}
 //   hybrid:          culling, shadow*, per eye {forward n..m, sky only if C has nothing},
-//                    [depth pyramid, [occlusion culling]], C {forward m-eps..f + sky},
-//                    per eye {composite C through M_{E->C}, tonemap}
+//                    [depth pyramid, [occlusion culling]], C {forward m-eps..f + sky, [ssao]},
+//                    per eye {composite C through M_{E->C}}, [ssao of the near content],
+//                    per eye {[taa], tonemap}
 //   hybrid-farfield: as hybrid with C at the eyes' centre, no overlap, an offset copy
 // then read-backs (* only when the light's region changed). One GPU culling pass sorts the chunks
 // into the views' indirect draw lists; predicates computed by it skip, on the GPU, C and the
@@ -11,6 +12,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -23,6 +25,8 @@
 #include "renderer/passes/depth_pyramid/depth_pyramid_pass.h"
 #include "renderer/passes/forward/forward_pass.h"
 #include "renderer/passes/shadow/shadow_pass.h"
+#include "renderer/passes/ssao/ssao_pass.h"
+#include "renderer/passes/taa/taa_pass.h"
 #include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/profile/frame_profiler.h"
 #include "renderer/rig/rig.h"
@@ -48,9 +52,22 @@ enum class MonoCulling { kNoOpt, kDiscard, kOcclusionCull };
 std::optional<MonoCulling> parse_mono_culling(const std::string& name);
 std::string mono_culling_name(MonoCulling culling);  // "no-opt", "discard", "occlusion-cull"
 
+// Anti-aliasing (papers/000 Sect. 4.5). TAA works in every mode; MSAA only in stereo, because
+// resolving before the composite leaves C's samples out and resolving after it would need every
+// sample mapped (docs/hybrid.md, "Anti-aliasing").
+enum class AntiAliasing { kNone, kTaa, kMsaa2, kMsaa4, kMsaa8 };
+std::optional<AntiAliasing> parse_anti_aliasing(const std::string& name);  // "none", "taa", "msaa4"
+std::string anti_aliasing_name(AntiAliasing aa);
+vk::SampleCountFlagBits msaa_samples(AntiAliasing aa);  // e1 for none and TAA
+
 struct RendererOptions {
     passes::ShadowParams shadow;
     passes::TonemapParams tonemap;
+    AntiAliasing anti_aliasing = AntiAliasing::kNone;
+    passes::TaaParams taa;
+    std::optional<passes::SsaoVariant> ssao;  // none: no ambient occlusion
+    passes::SsaoParams ssao_params;
+    bool read_back_ao = false;          // the eyes' AO to the host (needs ssao)
     bool read_back = true;              // display images to the host (PNGs, tests)
     bool read_back_depth = false;       // linear depth to the host (tests, later analyses)
     bool read_back_draw_lists = false;  // each view's chunk list to the host (tests)
@@ -63,6 +80,16 @@ struct FrameInputs {
     double view_blend_band = 0.3;  // metres below m over which view vectors blend (Sect. 4.3)
     DebugView debug = DebugView::kNone;
     MonoCulling mono_culling = MonoCulling::kOcclusionCull;
+    // Drives TAA's jitter and tells whether the history continues: a frame whose index does not
+    // follow the renderer's previous one starts the history anew. Unset: the next index.
+    std::optional<std::uint64_t> frame_index;
+};
+
+// Where an eye looked from in the last frame, as rasterised (TAA's jitter included): what a
+// measurement on its read-back images needs to reproject pixels.
+struct EyeFrameGeometry {
+    glm::dmat4 view_proj{1.0};
+    glm::dvec3 position{0.0};
 };
 
 class ModeRenderer {
@@ -95,6 +122,12 @@ class ModeRenderer {
     // Metres in front of the eyes' plane per pixel, MONOPLANE_SKY_LINEAR_DEPTH for the sky
     // (options.read_back_depth).
     const std::vector<float>& eye_linear_depth(Eye eye) const;
+    // The eye's ambient occlusion in [0, 1] per pixel (options.ssao and read_back_ao); in hybrid
+    // mode the far region shows C's AO as mapped into the eye.
+    const std::vector<float>& eye_ao(Eye eye) const;
+    const EyeFrameGeometry& eye_geometry(Eye eye) const;
+    // Whether the last frame started TAA's history anew (no TAA: always).
+    bool history_restarted() const { return history_restarted_; }
     // The rig of the last hybrid frame.
     const std::optional<rig::Rig>& last_rig() const { return rig_; }
     // The chunk indices the last frame drew in a view, in draw order (read_back_draw_lists).
@@ -111,9 +144,16 @@ class ModeRenderer {
     void ensure_pyramid();
     // Points set 1 of the forward pass at the pyramid and the routing words.
     void write_merged_depth_set() const;
-    void update_view(View& view, const glm::dmat4& view_proj, const glm::dvec3& position,
-                     const FrameInputs& inputs, const glm::dvec3& mono_position, double blend_band,
+    // view_proj: as rasterised (jittered under TAA); unjittered: the same without the jitter,
+    // for velocity.
+    void update_view(View& view, const glm::dmat4& view_proj, const glm::dmat4& unjittered,
+                     const glm::dvec3& position, const FrameInputs& inputs,
+                     const glm::dvec3& mono_position, double blend_band,
                      const glm::dmat4& light_view_proj, double hidden_depth_threshold = 0.0);
+    // Allocates a view's TAA and tone-mapping sets over its history images.
+    void write_taa_sets(View& view) const;
+    void record_taa(const vk::raii::CommandBuffer& cmd, View& view, Eye eye);
+    void record_ssao(const vk::raii::CommandBuffer& cmd, bool use_mono);
     // Whether the scene's routing flags may be honoured this frame (scenes::ChunkRouting).
     void decide_routing(const FrameInputs& inputs, passes::CullFrame& cull) const;
 
@@ -131,6 +171,8 @@ class ModeRenderer {
     passes::DrawList shadow_draws_;
     passes::ChunkCullingPass culling_;
     passes::DepthPyramidPass pyramid_;
+    passes::TaaPass taa_;
+    std::unique_ptr<passes::SsaoPass> ssao_;
     profile::FrameProfiler profiler_;
     vk::raii::DescriptorPool descriptor_pool_{nullptr};
     vk::raii::DescriptorSet merged_depth_set_{nullptr};  // after its pool: destroyed before it
@@ -139,6 +181,12 @@ class ModeRenderer {
     bool mono_rendered_ = false;
     std::optional<rig::Rig> rig_;
     std::optional<glm::dmat4> shadow_light_view_proj_;
+    // TAA's history: which of each view's two output images holds it, and what it continues.
+    std::uint64_t next_frame_index_ = 0;
+    int history_parity_ = 0;
+    bool history_valid_ = false;
+    bool history_restarted_ = true;
+    double history_mono_plane_ = -1.0;
 };
 
 }  // namespace monoplane::modes

@@ -412,4 +412,18 @@ glm::dmat3 mono_pixel_to_eye_pixel(const Rig& rig, int eye) {
     return eye_clip_to_pixel * rig.mono_to_eye[eye] * pixel_to_mono_clip;
 }
 
+glm::dvec2 mono_velocity_to_eye(const Rig& rig, int eye) {
+    assert(eye == kLeft || eye == kRight);
+    if (rig.mono_skipped) return glm::dvec2(1.0);
+    const double z = rig.mono.mono_plane_ndc_depth;
+    auto mapped = [&](double x, double y) {
+        const glm::dvec4 q = rig.mono_to_eye[eye] * glm::dvec4(x, y, z, 1.0);
+        return glm::dvec2(q) / q.w;
+    };
+    const glm::dvec2 q00 = mapped(-1.0, -1.0);
+    const glm::dvec2 q10 = mapped(1.0, -1.0);
+    const glm::dvec2 q01 = mapped(-1.0, 1.0);
+    return 0.5 * glm::dvec2(q10.x - q00.x, q01.y - q00.y);
+}
+
 }  // namespace monoplane::rig

@@ -123,4 +123,11 @@ glm::dvec2 eye_pixel_hybrid(const Rig& rig, int eye, const glm::dvec3& point);
 // mono_skipped.
 glm::dmat3 mono_pixel_to_eye_pixel(const Rig& rig, int eye);
 
+// Eq. 9's (1/2) S for eye e: the diagonal factors turning a screen-space velocity in C's NDC
+// into the eye's NDC, v_E = (1/2) S v_C, with S = diag(x_q10 - x_q00, y_q01 - y_q00) from C's
+// quad Q (eq. 6) mapped into the eye (eq. 7) and dehomogenised. Q lies on the mono plane, as in
+// the composite (see MonoCamera::mono_plane_ndc_depth); the cameras share their orientation, so
+// the mapping between the planes is affine and S the same everywhere. (1, 1) when mono_skipped.
+glm::dvec2 mono_velocity_to_eye(const Rig& rig, int eye);
+
 }  // namespace monoplane::rig

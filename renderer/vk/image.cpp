@@ -15,7 +15,7 @@ Image::Image(const Context& ctx, const ImageDesc& desc)
                                            : vk::ImageAspectFlagBits::eColor) {
     const vk::ImageCreateInfo info({}, vk::ImageType::e2D, desc.format,
                                    vk::Extent3D(desc.extent, 1), 1, desc.layers,
-                                   vk::SampleCountFlagBits::e1, vk::ImageTiling::eOptimal,
+                                   desc.samples, vk::ImageTiling::eOptimal,
                                    desc.usage, vk::SharingMode::eExclusive);
     image_ = vk::raii::Image(ctx.device(), info);
     memory_ = allocate_memory(ctx, image_.getMemoryRequirements(),
@@ -26,6 +26,14 @@ Image::Image(const Context& ctx, const ImageDesc& desc)
         ctx.device(),
         vk::ImageViewCreateInfo({}, *image_, view_type, desc.format, {},
                                 vk::ImageSubresourceRange(aspect_, 0, 1, 0, desc.layers)));
+}
+
+vk::raii::Sampler make_clamped_sampler(const Context& ctx, vk::Filter filter) {
+    return vk::raii::Sampler(
+        ctx.device(), vk::SamplerCreateInfo({}, filter, filter, vk::SamplerMipmapMode::eNearest,
+                                            vk::SamplerAddressMode::eClampToEdge,
+                                            vk::SamplerAddressMode::eClampToEdge,
+                                            vk::SamplerAddressMode::eClampToEdge));
 }
 
 void transition(const vk::raii::CommandBuffer& cmd, const Image& image, vk::ImageLayout from,

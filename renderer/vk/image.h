@@ -10,6 +10,7 @@ struct ImageDesc {
     vk::Format format = vk::Format::eR8G8B8A8Unorm;
     vk::ImageUsageFlags usage;
     std::uint32_t layers = 1;
+    vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;  // > 1: an MSAA target
 };
 
 class Image {
@@ -31,6 +32,10 @@ class Image {
 };
 
 bool is_depth_format(vk::Format format);
+
+// A sampler with the given filter, no mipmaps, clamped to the edge: what full-screen passes read
+// their inputs with.
+vk::raii::Sampler make_clamped_sampler(const Context& ctx, vk::Filter filter);
 
 // One image layout transition with a full synchronization2 barrier between the given stages.
 void transition(const vk::raii::CommandBuffer& cmd, const Image& image, vk::ImageLayout from,

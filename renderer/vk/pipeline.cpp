@@ -23,14 +23,14 @@ vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipe
     vk::PipelineRasterizationStateCreateInfo raster(
         {}, VK_FALSE, VK_FALSE, vk::PolygonMode::eFill, desc.cull, vk::FrontFace::eCounterClockwise,
         desc.depth_bias ? VK_TRUE : VK_FALSE, 0.0f, 0.0f, 0.0f, 1.0f);
-    const vk::PipelineMultisampleStateCreateInfo multisample({}, vk::SampleCountFlagBits::e1);
+    const vk::PipelineMultisampleStateCreateInfo multisample({}, desc.samples);
     const vk::PipelineDepthStencilStateCreateInfo depth({}, desc.depth_test, desc.depth_write,
                                                         desc.depth_compare);
     std::vector<vk::PipelineColorBlendAttachmentState> blend(
         desc.color_formats.size(),
-        vk::PipelineColorBlendAttachmentState().setColorWriteMask(
+        desc.blend.value_or(vk::PipelineColorBlendAttachmentState().setColorWriteMask(
             vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
-            vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA));
+            vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA)));
     const vk::PipelineColorBlendStateCreateInfo color_blend({}, VK_FALSE, vk::LogicOp::eCopy,
                                                             blend);
     std::vector<vk::DynamicState> dynamic = {vk::DynamicState::eViewport,

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -26,6 +27,10 @@ struct GraphicsPipelineDesc {
     // Reversed Z (DESIGN.md section 2): nearer is greater.
     vk::CompareOp depth_compare = vk::CompareOp::eGreaterOrEqual;
     bool depth_bias = false;
+    // MSAA: the rasterisation samples of every attachment (ImageDesc::samples).
+    vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
+    // Blending of every colour attachment; none by default (the output replaces the target).
+    std::optional<vk::PipelineColorBlendAttachmentState> blend;
 };
 
 // Viewport and scissor are dynamic state, set by the pass for each target.

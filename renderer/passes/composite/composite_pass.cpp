@@ -1,6 +1,8 @@
 #include "renderer/passes/composite/composite_pass.h"
 
 #include <array>
+#include <cassert>
+#include <vector>
 
 #include "renderer/passes/forward/forward_pass.h"
 
@@ -12,6 +14,9 @@ const std::uint32_t kFullscreenVert[] = {
 const std::uint32_t kCompositeFrag[] = {
 #include "composite.frag.spv.inc"
 };
+const std::uint32_t kCompositeVelocityFrag[] = {
+#include "composite_velocity.frag.spv.inc"
+};
 
 // The shader's push-constant block, std430.
 struct PushBlock {
@@ -19,27 +24,23 @@ struct PushBlock {
     glm::vec4 uv_limits;
     glm::vec4 eye_extent_mode;
     glm::vec4 pixel_offset;
+    glm::vec4 velocity_scale;
 };
-static_assert(sizeof(PushBlock) == 112, "must match composite.frag");
+static_assert(sizeof(PushBlock) == 128, "must match composite_body.glsl");
 
-vk::raii::Sampler make_sampler(const vk_core::Context& ctx, vk::Filter filter) {
-    return vk::raii::Sampler(
-        ctx.device(), vk::SamplerCreateInfo({}, filter, filter, vk::SamplerMipmapMode::eNearest,
-                                            vk::SamplerAddressMode::eClampToEdge,
-                                            vk::SamplerAddressMode::eClampToEdge,
-                                            vk::SamplerAddressMode::eClampToEdge));
-}
 }  // namespace
 
-CompositePass::CompositePass(const vk_core::Context& ctx)
-    : bilinear_(make_sampler(ctx, vk::Filter::eLinear)),
-      nearest_(make_sampler(ctx, vk::Filter::eNearest)) {
-    const std::array bindings = {
-        vk::DescriptorSetLayoutBinding(0, vk::DescriptorType::eCombinedImageSampler, 1,
-                                       vk::ShaderStageFlagBits::eFragment),
-        vk::DescriptorSetLayoutBinding(1, vk::DescriptorType::eCombinedImageSampler, 1,
-                                       vk::ShaderStageFlagBits::eFragment),
-    };
+CompositePass::CompositePass(const vk_core::Context& ctx, bool velocity)
+    : velocity_(velocity),
+      bilinear_(vk_core::make_clamped_sampler(ctx, vk::Filter::eLinear)),
+      nearest_(vk_core::make_clamped_sampler(ctx, vk::Filter::eNearest)) {
+    // Binding 2 (C's velocity) exists only with velocity: every binding of a set must be written
+    // before it is bound, and lavapipe reads every one.
+    std::vector<vk::DescriptorSetLayoutBinding> bindings;
+    for (std::uint32_t binding = 0; binding < (velocity ? 3u : 2u); ++binding) {
+        bindings.emplace_back(binding, vk::DescriptorType::eCombinedImageSampler, 1,
+                              vk::ShaderStageFlagBits::eFragment);
+    }
     set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
                                                 vk::DescriptorSetLayoutCreateInfo({}, bindings));
     const vk::DescriptorSetLayout set_layout = *set_layout_;
@@ -47,12 +48,14 @@ CompositePass::CompositePass(const vk_core::Context& ctx)
     layout_ =
         vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout, push));
     const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
-    const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, kCompositeFrag);
+    const vk::raii::ShaderModule frag = velocity ? vk_core::make_shader(ctx, kCompositeVelocityFrag)
+                                                 : vk_core::make_shader(ctx, kCompositeFrag);
     vk_core::GraphicsPipelineDesc desc;
     desc.layout = *layout_;
     desc.vertex = *vert;
     desc.fragment = *frag;
     desc.color_formats = {ForwardPass::kHdrFormat, ForwardPass::kLinearDepthFormat};
+    if (velocity) desc.color_formats.push_back(ForwardPass::kVelocityFormat);
     desc.depth_format = ForwardPass::kDepthFormat;
     desc.cull = vk::CullModeFlagBits::eNone;
     desc.depth_write = false;
@@ -67,14 +70,15 @@ CompositePass::CompositePass(const vk_core::Context& ctx)
 void CompositePass::record(const vk::raii::CommandBuffer& cmd, const CompositeTargets& targets,
                            vk::DescriptorSet mono_set, const CompositeParams& params) const {
     const vk::Extent2D extent = targets.hdr.desc().extent;
-    const std::array colors = {
-        vk::RenderingAttachmentInfo(targets.hdr.view(), vk::ImageLayout::eColorAttachmentOptimal,
-                                    {}, {}, {}, vk::AttachmentLoadOp::eLoad,
-                                    vk::AttachmentStoreOp::eStore),
-        vk::RenderingAttachmentInfo(targets.linear_depth.view(),
-                                    vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
-                                    vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore),
-    };
+    std::vector<vk::RenderingAttachmentInfo> colors;
+    std::vector<const vk_core::Image*> written = {&targets.hdr, &targets.linear_depth};
+    assert(!velocity_ || targets.velocity != nullptr);
+    if (velocity_) written.push_back(targets.velocity);
+    for (const vk_core::Image* image : written) {
+        colors.emplace_back(image->view(), vk::ImageLayout::eColorAttachmentOptimal,
+                            vk::ResolveModeFlagBits::eNone, nullptr, vk::ImageLayout::eUndefined,
+                            vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
+    }
     const vk::RenderingAttachmentInfo depth(
         targets.depth.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
         vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
@@ -95,6 +99,7 @@ void CompositePass::record(const vk::raii::CommandBuffer& cmd, const CompositeTa
                   static_cast<float>(params.mapping), params.tint),
         glm::vec4(static_cast<float>(params.pixel_offset.x),
                   static_cast<float>(params.pixel_offset.y), 0.0f, 0.0f),
+        glm::vec4(params.velocity_scale, 0.0f, 0.0f),
     };
     cmd.pushConstants<PushBlock>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, push);
     with_predicate(cmd, params.when, [&] { cmd.draw(3, 1, 0, 0); });

@@ -1,7 +1,8 @@
 // The mono-to-stereo composite of one eye (Fink et al. 2019, Sect. 4.2; papers/003 for the
 // engine-style copy). Reads: C's HDR and linear depth (set 0). Writes: the eye's HDR and linear
 // depth where its depth buffer still holds the cleared far value (no near content), or
-// everywhere for the debug view "mono only".
+// everywhere for the debug view "mono only"; with velocity (TAA) also C's velocity through eq. 9
+// (set 0, binding 2, read texel-exact).
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -26,6 +27,9 @@ struct CompositeParams {
     glm::vec2 uv_scale{1.0f};         // C's viewport / allocation (eq. 8)
     glm::vec2 mono_allocation{1.0f};  // C's image size in pixels
     glm::ivec2 pixel_offset{0};       // for kOffsetCopy
+    // C's NDC velocity -> the eye's (diagonal): 1/2 S of eq. 9 for kProjective, C's size over
+    // the eye's for kOffsetCopy. Used with CompositePass's velocity output (TAA).
+    glm::vec2 velocity_scale{1.0f};
     CompositeMapping mapping = CompositeMapping::kProjective;
     float tint = 0.0f;              // debug view "mono region tinted": 0 off, 1 full
     bool cover_all_pixels = false;  // debug view "mono only": ignore the near content
@@ -35,14 +39,15 @@ struct CompositeParams {
 };
 
 struct CompositeTargets {
-    const vk_core::Image& hdr;           // eye HDR, eColorAttachmentOptimal
-    const vk_core::Image& linear_depth;  // eye linear depth, eColorAttachmentOptimal
-    const vk_core::Image& depth;         // eye depth, eDepthAttachmentOptimal (read only)
+    const vk_core::Image& hdr;                 // eye HDR, eColorAttachmentOptimal
+    const vk_core::Image& linear_depth;        // eye linear depth, eColorAttachmentOptimal
+    const vk_core::Image& depth;               // eye depth, eDepthAttachmentOptimal (read only)
+    const vk_core::Image* velocity = nullptr;  // eye velocity; required with `velocity`
 };
 
 class CompositePass {
   public:
-    explicit CompositePass(const vk_core::Context& ctx);
+    explicit CompositePass(const vk_core::Context& ctx, bool velocity = false);
 
     vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
     vk::Sampler bilinear_sampler() const { return *bilinear_; }
@@ -53,6 +58,7 @@ class CompositePass {
                 vk::DescriptorSet mono_set, const CompositeParams& params) const;
 
   private:
+    bool velocity_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::Sampler bilinear_{nullptr};
     vk::raii::Sampler nearest_{nullptr};

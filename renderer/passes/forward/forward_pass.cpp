@@ -1,6 +1,8 @@
 #include "renderer/passes/forward/forward_pass.h"
 
 #include <array>
+#include <cassert>
+#include <vector>
 
 namespace monoplane::passes {
 namespace {
@@ -28,9 +30,39 @@ const std::uint32_t kSkyFrag[] = {
 const std::uint32_t kSkyDiscardHiddenFrag[] = {
 #include "sky_discard_hidden.frag.spv.inc"
 };
+const std::uint32_t kForwardVelocityFrag[] = {
+#include "forward_velocity.frag.spv.inc"
+};
+const std::uint32_t kForwardDiscardHiddenVelocityFrag[] = {
+#include "forward_discard_hidden_velocity.frag.spv.inc"
+};
+const std::uint32_t kForwardShowRoutingVelocityFrag[] = {
+#include "forward_show_routing_velocity.frag.spv.inc"
+};
+const std::uint32_t kSkyVelocityFrag[] = {
+#include "sky_velocity.frag.spv.inc"
+};
+const std::uint32_t kSkyDiscardHiddenVelocityFrag[] = {
+#include "sky_discard_hidden_velocity.frag.spv.inc"
+};
+
+// The fragment shaders of one configuration: with or without the velocity output.
+struct FragmentShaders {
+    std::span<const std::uint32_t> forward, discard_hidden, show_routing, sky, sky_discard_hidden;
+};
+
+FragmentShaders fragment_shaders(bool velocity) {
+    if (velocity) {
+        return {kForwardVelocityFrag, kForwardDiscardHiddenVelocityFrag,
+                kForwardShowRoutingVelocityFrag, kSkyVelocityFrag, kSkyDiscardHiddenVelocityFrag};
+    }
+    return {kForwardFrag, kForwardDiscardHiddenFrag, kForwardShowRoutingFrag, kSkyFrag,
+            kSkyDiscardHiddenFrag};
+}
 }  // namespace
 
-ForwardPass::ForwardPass(const vk_core::Context& ctx) {
+ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& config)
+    : config_(config) {
     using Stage = vk::ShaderStageFlagBits;
     const std::array bindings = {
         vk::DescriptorSetLayoutBinding(0, vk::DescriptorType::eUniformBuffer, 1,
@@ -51,42 +83,46 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx) {
     const std::array set_layouts = {*set_layout_, *merged_depth_layout_};
     layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layouts));
 
+    const FragmentShaders frag = fragment_shaders(config.velocity);
+    std::vector<vk::Format> color_formats = {kHdrFormat, kLinearDepthFormat};
+    if (config.velocity) color_formats.push_back(kVelocityFormat);
     const vk::raii::ShaderModule forward_vert = vk_core::make_shader(ctx, kForwardVert);
-    const vk::raii::ShaderModule forward_frag = vk_core::make_shader(ctx, kForwardFrag);
+    const vk::raii::ShaderModule forward_frag = vk_core::make_shader(ctx, frag.forward);
     vk_core::GraphicsPipelineDesc geometry;
     geometry.layout = *layout_;
     geometry.vertex = *forward_vert;
     geometry.fragment = *forward_frag;
     geometry.vertex_bindings = SceneGeometry::vertex_bindings();
     geometry.vertex_attributes = SceneGeometry::vertex_attributes();
-    geometry.color_formats = {kHdrFormat, kLinearDepthFormat};
+    geometry.color_formats = color_formats;
     geometry.depth_format = kDepthFormat;
+    geometry.samples = config.samples;
     geometry_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
-    const vk::raii::ShaderModule discard_frag =
-        vk_core::make_shader(ctx, kForwardDiscardHiddenFrag);
+    const vk::raii::ShaderModule discard_frag = vk_core::make_shader(ctx, frag.discard_hidden);
     geometry.fragment = *discard_frag;
     discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
     const vk::raii::ShaderModule routing_vert = vk_core::make_shader(ctx, kForwardShowRoutingVert);
-    const vk::raii::ShaderModule routing_frag = vk_core::make_shader(ctx, kForwardShowRoutingFrag);
+    const vk::raii::ShaderModule routing_frag = vk_core::make_shader(ctx, frag.show_routing);
     geometry.vertex = *routing_vert;
     geometry.fragment = *routing_frag;
     show_routing_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
 
     // The sky covers only pixels still at the cleared far depth (0 with reversed Z).
     const vk::raii::ShaderModule fullscreen_vert = vk_core::make_shader(ctx, kFullscreenVert);
-    const vk::raii::ShaderModule sky_frag = vk_core::make_shader(ctx, kSkyFrag);
+    const vk::raii::ShaderModule sky_frag = vk_core::make_shader(ctx, frag.sky);
     vk_core::GraphicsPipelineDesc sky;
     sky.layout = *layout_;
     sky.vertex = *fullscreen_vert;
     sky.fragment = *sky_frag;
-    sky.color_formats = {kHdrFormat, kLinearDepthFormat};
+    sky.color_formats = color_formats;
     sky.depth_format = kDepthFormat;
+    sky.samples = config.samples;
     sky.cull = vk::CullModeFlagBits::eNone;
     sky.depth_write = false;
     sky.depth_compare = vk::CompareOp::eEqual;
     sky_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
     const vk::raii::ShaderModule sky_discard_frag =
-        vk_core::make_shader(ctx, kSkyDiscardHiddenFrag);
+        vk_core::make_shader(ctx, frag.sky_discard_hidden);
     sky.fragment = *sky_discard_frag;
     sky_discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
 }
@@ -97,13 +133,23 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                          std::span<const ForwardDraw> steps) const {
     using Stage = vk::PipelineStageFlagBits2;
     using Access = vk::AccessFlagBits2;
-    for (const vk_core::Image* color : {&targets.hdr, &targets.linear_depth}) {
+    const MultisampleTargets* ms = targets.multisample;
+    assert((config_.samples != vk::SampleCountFlagBits::e1) == (ms != nullptr));
+    assert(!config_.velocity || targets.velocity != nullptr);
+    std::vector<const vk_core::Image*> colors_written = {&targets.hdr, &targets.linear_depth};
+    if (config_.velocity) colors_written.push_back(targets.velocity);
+    if (ms) {
+        colors_written.push_back(&ms->hdr);
+        colors_written.push_back(&ms->linear_depth);
+    }
+    for (const vk_core::Image* color : colors_written) {
         vk_core::transition(cmd, *color, vk::ImageLayout::eUndefined,
                             vk::ImageLayout::eColorAttachmentOptimal, Stage::eFragmentShader,
                             Access::eShaderSampledRead, Stage::eColorAttachmentOutput,
                             Access::eColorAttachmentWrite);
     }
-    vk_core::transition(cmd, targets.depth, vk::ImageLayout::eUndefined,
+    const vk_core::Image& depth_image = ms ? ms->depth : targets.depth;
+    vk_core::transition(cmd, depth_image, vk::ImageLayout::eUndefined,
                         vk::ImageLayout::eDepthAttachmentOptimal,
                         Stage::eLateFragmentTests | Stage::eFragmentShader | Stage::eComputeShader,
                         Access::eDepthStencilAttachmentWrite | Access::eShaderSampledRead,
@@ -111,18 +157,34 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                         Access::eDepthStencilAttachmentWrite | Access::eDepthStencilAttachmentRead);
     const vk::AttachmentLoadOp color_load =
         targets.clear_color ? vk::AttachmentLoadOp::eClear : vk::AttachmentLoadOp::eDontCare;
-    const std::array colors = {
-        vk::RenderingAttachmentInfo(targets.hdr.view(), vk::ImageLayout::eColorAttachmentOptimal,
-                                    {}, {}, {}, color_load, vk::AttachmentStoreOp::eStore,
-                                    vk::ClearValue(vk::ClearColorValue(0.0f, 0.0f, 0.0f, 1.0f))),
-        vk::RenderingAttachmentInfo(
-            targets.linear_depth.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
-            color_load, vk::AttachmentStoreOp::eStore,
-            vk::ClearValue(vk::ClearColorValue(static_cast<float>(MONOPLANE_SKY_LINEAR_DEPTH), 0.0f,
-                                               0.0f, 0.0f))),
+    auto attachment = [&](const vk_core::Image& image, const vk_core::Image* multisampled,
+                          const vk::ClearColorValue& clear) {
+        vk::RenderingAttachmentInfo info(image.view(), vk::ImageLayout::eColorAttachmentOptimal, {},
+                                         {}, {}, color_load, vk::AttachmentStoreOp::eStore,
+                                         vk::ClearValue(clear));
+        if (multisampled) {
+            // Draw into the samples, keep only their average: the samples are never read again.
+            info.setImageView(multisampled->view())
+                .setResolveMode(vk::ResolveModeFlagBits::eAverage)
+                .setResolveImageView(image.view())
+                .setResolveImageLayout(vk::ImageLayout::eColorAttachmentOptimal)
+                .setStoreOp(vk::AttachmentStoreOp::eDontCare);
+        }
+        return info;
     };
+    std::vector<vk::RenderingAttachmentInfo> colors = {
+        attachment(targets.hdr, ms ? &ms->hdr : nullptr,
+                   vk::ClearColorValue(0.0f, 0.0f, 0.0f, 1.0f)),
+        attachment(
+            targets.linear_depth, ms ? &ms->linear_depth : nullptr,
+            vk::ClearColorValue(static_cast<float>(MONOPLANE_SKY_LINEAR_DEPTH), 0.0f, 0.0f, 0.0f)),
+    };
+    if (config_.velocity) {
+        colors.push_back(
+            attachment(*targets.velocity, nullptr, vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f)));
+    }
     const vk::RenderingAttachmentInfo depth(
-        targets.depth.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
+        depth_image.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
         vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
         vk::ClearValue(vk::ClearDepthStencilValue(0.0f, 0)));  // reversed Z: far is 0
     cmd.beginRendering(vk::RenderingInfo()

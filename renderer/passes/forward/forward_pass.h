@@ -1,6 +1,7 @@
 // Forward shading of one view into an HDR target, then the sky where nothing was drawn.
 // Reads: view constants (set 0, binding 0), the shadow map (binding 1).
-// Writes: HDR colour, reversed-Z depth, linear depth (metres in front of the eyes' plane).
+// Writes: HDR colour, reversed-Z depth, linear depth (metres in front of the eyes' plane), and with
+// ForwardConfig::velocity the screen-space velocity TAA reprojects with.
 #pragma once
 
 #include <optional>
@@ -14,6 +15,14 @@
 
 namespace monoplane::passes {
 
+// The multisampled images an MSAA pass draws into; ForwardTargets' hdr and linear depth then
+// receive their resolve (the average of the samples), and its depth image is not written.
+struct MultisampleTargets {
+    const vk_core::Image& hdr;           // kHdrFormat, ForwardConfig::samples
+    const vk_core::Image& linear_depth;  // kLinearDepthFormat, likewise
+    const vk_core::Image& depth;         // kDepthFormat, likewise
+};
+
 struct ForwardTargets {
     const vk_core::Image& hdr;           // kHdrFormat, colour attachment
     const vk_core::Image& depth;         // kDepthFormat, reversed Z
@@ -25,6 +34,15 @@ struct ForwardTargets {
     // where pixels may stay unwritten and are read anyway (C's image read back for mono.png
     // when fragments hidden in both eyes were discarded).
     bool clear_color = false;
+    // kVelocityFormat: required with ForwardConfig::velocity, ignored without.
+    const vk_core::Image* velocity = nullptr;
+    // Required with ForwardConfig::samples > 1.
+    const MultisampleTargets* multisample = nullptr;
+};
+
+struct ForwardConfig {
+    bool velocity = false;  // write screen-space velocity (TAA)
+    vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;  // MSAA (stereo modes)
 };
 
 // What a forward pass draws, in order; each step may run under a GPU predicate.
@@ -45,8 +63,12 @@ class ForwardPass {
     static constexpr vk::Format kHdrFormat = vk::Format::eR16G16B16A16Sfloat;
     static constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
     static constexpr vk::Format kLinearDepthFormat = vk::Format::eR32Sfloat;
+    // NDC now minus NDC in the previous frame: a pixel is 2 / width, well within half precision.
+    static constexpr vk::Format kVelocityFormat = vk::Format::eR16G16Sfloat;
 
-    explicit ForwardPass(const vk_core::Context& ctx);
+    explicit ForwardPass(const vk_core::Context& ctx, const ForwardConfig& config = {});
+
+    const ForwardConfig& config() const { return config_; }
 
     vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
     // Set 1 of the depth-tested and debug steps: the merged depth pyramid (binding 0, eGeneral)
@@ -54,7 +76,7 @@ class ForwardPass {
     vk::DescriptorSetLayout merged_depth_layout() const { return *merged_depth_layout_; }
 
     // Expects the targets in eUndefined (their contents are replaced); leaves the colour targets
-    // in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
+    // (velocity included) in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
     // merged_depth_set is needed only by the *DiscardHidden and kChunksShowRouting steps.
     void record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
                 vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
@@ -62,6 +84,7 @@ class ForwardPass {
                 std::span<const ForwardDraw> steps) const;
 
   private:
+    ForwardConfig config_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::DescriptorSetLayout merged_depth_layout_{nullptr};
     vk::raii::PipelineLayout layout_{nullptr};

@@ -26,6 +26,10 @@ layout(location = 0) out vec4 out_color;
 // Distance in front of the eyes' plane along the head's forward axis: the same for all three
 // cameras of the rig (they share the head's orientation), so hybrid can assemble it per pixel.
 layout(location = 1) out float out_linear_depth;
+#ifdef MONOPLANE_WRITE_VELOCITY
+#include "renderer/passes/shared/velocity.glsl"
+layout(location = 2) out vec2 out_velocity;  // NDC units, for TAA
+#endif
 
 const float PI = 3.14159265358979;
 
@@ -130,4 +134,7 @@ void main() {
 #endif
     out_color = vec4(color, 1.0);
     out_linear_depth = linear_depth;
+#ifdef MONOPLANE_WRITE_VELOCITY
+    out_velocity = ndc_velocity(vec4(in_world, 1.0));
+#endif
 }

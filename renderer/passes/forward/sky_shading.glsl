@@ -11,6 +11,10 @@ layout(set = 1, binding = 0) uniform sampler2D merged_depth;
 layout(location = 0) in vec2 in_uv;
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_linear_depth;
+#ifdef MONOPLANE_WRITE_VELOCITY
+#include "renderer/passes/shared/velocity.glsl"
+layout(location = 2) out vec2 out_velocity;  // NDC units, for TAA: the sky at infinity
+#endif
 
 void main() {
 #ifdef MONOPLANE_DISCARD_HIDDEN_IN_EYES
@@ -23,4 +27,7 @@ void main() {
     vec3 direction = far_point.xyz / far_point.w - near_point.xyz / near_point.w;
     out_color = vec4(sky_radiance(direction, view), 1.0);
     out_linear_depth = MONOPLANE_SKY_LINEAR_DEPTH;
+#ifdef MONOPLANE_WRITE_VELOCITY
+    out_velocity = ndc_velocity(vec4(direction, 0.0));
+#endif
 }

@@ -30,13 +30,18 @@ struct ViewConstants {
     // depth pyramid): the eyes' reversed-Z depth of m - eps, above which C's fragment is hidden
     // in both eyes; w: unused.
     vec4 view_blend;
+    // Screen-space velocity for TAA (Karis 2014; Fink et al. Sect. 4.5): world -> clip of this
+    // view in this frame and in the previous one, both without the sub-pixel jitter that
+    // view_proj carries, so a static scene seen from a static head has zero velocity.
+    mat4 velocity_view_proj;
+    mat4 prev_view_proj;
 };
 
 // Linear depth written for the sky: "nothing here" for later passes and tests.
 #define MONOPLANE_SKY_LINEAR_DEPTH 1.0e30
 
 #ifdef __cplusplus
-static_assert(sizeof(ViewConstants) == 3 * 64 + 11 * 16, "std140 layout shared with GLSL");
+static_assert(sizeof(ViewConstants) == 5 * 64 + 11 * 16, "std140 layout shared with GLSL");
 }  // namespace monoplane::passes
 #endif
 

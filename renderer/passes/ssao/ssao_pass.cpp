@@ -1,0 +1,491 @@
+#include "renderer/passes/ssao/ssao_pass.h"
+
+#include <array>
+#include <cassert>
+#include <cstring>
+#include <initializer_list>
+#include <span>
+
+#include "renderer/passes/forward/forward_pass.h"
+
+namespace monoplane::passes {
+namespace {
+
+const std::uint32_t kFullscreenVert[] = {
+#include "fullscreen.vert.spv.inc"
+};
+const std::uint32_t kHbaoEstimate[] = {
+#include "hbao_estimate.comp.spv.inc"
+};
+const std::uint32_t kStereoVisibility[] = {
+#include "stereo_visibility.comp.spv.inc"
+};
+const std::uint32_t kStereoEstimate[] = {
+#include "stereo_estimate.comp.spv.inc"
+};
+const std::uint32_t kBilateralFilter[] = {
+#include "bilateral_filter.comp.spv.inc"
+};
+const std::uint32_t kSsaoApply[] = {
+#include "ssao_apply.frag.spv.inc"
+};
+
+using Stage = vk::PipelineStageFlagBits2;
+using Access = vk::AccessFlagBits2;
+using Type = vk::DescriptorType;
+
+constexpr std::uint32_t kGroup = 8;  // the compute shaders' local size in x and y
+constexpr vk::Format kOtherPixelFormat = vk::Format::eR32Uint;  // L: p* packed, or "not visible"
+
+// Mirrors ssao_common.glsl's flags.
+constexpr std::int32_t kFlagVertical = 1;
+constexpr std::int32_t kFlagStereo = 2;
+constexpr std::int32_t kFlagReproject = 4;
+
+// The compute shaders' push-constant block (ssao_common.glsl), std430.
+struct PushBlock {
+    std::int32_t area_width;
+    std::int32_t area_height;
+    std::int32_t directions;
+    std::int32_t steps;
+    float radius;
+    float angle_bias;
+    float strength;
+    float eta;
+    float sigma_min;
+    float sigma_max;
+    float back_check_px;
+    std::int32_t taps;
+    std::int32_t flags;
+};
+static_assert(sizeof(PushBlock) == 52, "must match ssao_common.glsl");
+
+struct ApplyPush {
+    float area_width;
+    float area_height;
+};
+static_assert(sizeof(ApplyPush) == 8, "must match ssao_apply.frag");
+
+std::uint32_t groups(std::uint32_t size) {
+    return (size + kGroup - 1) / kGroup;
+}
+
+// Storage writes of one step -> reads (and rewrites) of the next.
+void compute_barrier(const vk::raii::CommandBuffer& cmd) {
+    const vk::MemoryBarrier2 barrier(Stage::eComputeShader, Access::eShaderStorageWrite,
+                                     Stage::eComputeShader,
+                                     Access::eShaderStorageRead | Access::eShaderStorageWrite);
+    cmd.pipelineBarrier2(vk::DependencyInfo({}, barrier));
+}
+
+// hdr *= AO: the output (AO, AO, AO, 1) blends as dst * src; the target's alpha is kept. The
+// depth test (reversed Z, the triangle at 0) passes only where the eye's depth holds near content.
+vk::raii::Pipeline make_apply_pipeline(const vk_core::Context& ctx, vk::PipelineLayout layout,
+                                       vk::ShaderModule vert, vk::ShaderModule frag,
+                                       bool near_only) {
+    const std::array stages = {
+        vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eVertex, vert, "main"),
+        vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eFragment, frag, "main"),
+    };
+    const vk::PipelineVertexInputStateCreateInfo vertex_input;
+    const vk::PipelineInputAssemblyStateCreateInfo input_assembly(
+        {}, vk::PrimitiveTopology::eTriangleList);
+    const vk::PipelineViewportStateCreateInfo viewport({}, 1, nullptr, 1, nullptr);
+    const vk::PipelineRasterizationStateCreateInfo raster(
+        {}, VK_FALSE, VK_FALSE, vk::PolygonMode::eFill, vk::CullModeFlagBits::eNone,
+        vk::FrontFace::eCounterClockwise, VK_FALSE, 0.0f, 0.0f, 0.0f, 1.0f);
+    const vk::PipelineMultisampleStateCreateInfo multisample({}, vk::SampleCountFlagBits::e1);
+    const vk::PipelineDepthStencilStateCreateInfo depth({}, near_only, VK_FALSE,
+                                                        vk::CompareOp::eLess);
+    const auto blend =
+        vk::PipelineColorBlendAttachmentState()
+            .setBlendEnable(VK_TRUE)
+            .setSrcColorBlendFactor(vk::BlendFactor::eZero)
+            .setDstColorBlendFactor(vk::BlendFactor::eSrcColor)
+            .setColorBlendOp(vk::BlendOp::eAdd)
+            .setSrcAlphaBlendFactor(vk::BlendFactor::eZero)
+            .setDstAlphaBlendFactor(vk::BlendFactor::eOne)
+            .setAlphaBlendOp(vk::BlendOp::eAdd)
+            .setColorWriteMask(vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+                               vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA);
+    const vk::PipelineColorBlendStateCreateInfo color_blend({}, VK_FALSE, vk::LogicOp::eCopy,
+                                                            blend);
+    const std::array dynamic = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
+    const vk::PipelineDynamicStateCreateInfo dynamic_state({}, dynamic);
+    const vk::Format color_format = ForwardPass::kHdrFormat;
+    const vk::PipelineRenderingCreateInfo rendering(
+        0, color_format, near_only ? ForwardPass::kDepthFormat : vk::Format::eUndefined);
+    const vk::GraphicsPipelineCreateInfo info(
+        {}, stages, &vertex_input, &input_assembly, nullptr, &viewport, &raster, &multisample,
+        &depth, &color_blend, &dynamic_state, layout, nullptr, 0, nullptr, -1, &rendering);
+    return vk::raii::Pipeline(ctx.device(), nullptr, info);
+}
+
+}  // namespace
+
+std::optional<SsaoVariant> parse_ssao_variant(const std::string& name) {
+    if (name == "per-eye") return SsaoVariant::kPerView;
+    if (name == "stereo") return SsaoVariant::kStereoConsistent;
+    return std::nullopt;
+}
+
+std::string ssao_variant_name(SsaoVariant variant) {
+    switch (variant) {
+        case SsaoVariant::kPerView:
+            return "per-eye";
+        case SsaoVariant::kStereoConsistent:
+            return "stereo";
+    }
+    return "?";
+}
+
+struct SsaoView::State {
+    vk::Extent2D extent;
+    // Scratch, always eGeneral: the estimate, the horizontal filter pass, the visibility map L.
+    vk_core::Image raw;
+    vk_core::Image filtered_x;
+    vk_core::Image other_pixel;
+    // The result, eShaderReadOnlyOptimal between recordings (eGeneral while written).
+    vk_core::Image ao;
+    vk_core::Buffer readback;
+    bool read_back = false;
+    vk::raii::DescriptorPool pool{nullptr};
+    vk::raii::DescriptorSet compute_set{nullptr};  // ssao_common.glsl's bindings of one view
+    vk::raii::DescriptorSet apply_set{nullptr};    // the AO, sampled
+
+    State(const vk_core::Context& ctx, vk::Extent2D size)
+        : extent(size),
+          raw(ctx, {size, SsaoPass::kAoFormat, vk::ImageUsageFlagBits::eStorage}),
+          filtered_x(ctx, {size, SsaoPass::kAoFormat, vk::ImageUsageFlagBits::eStorage}),
+          other_pixel(ctx, {size, kOtherPixelFormat, vk::ImageUsageFlagBits::eStorage}),
+          ao(ctx,
+             {size, SsaoPass::kAoFormat,
+              vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled |
+                  vk::ImageUsageFlagBits::eTransferSrc | vk::ImageUsageFlagBits::eTransferDst}),
+          readback(ctx, vk::DeviceSize{size.width} * size.height * sizeof(float),
+                   vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {}
+};
+
+SsaoView::SsaoView(std::unique_ptr<State> state) : state_(std::move(state)) {}
+SsaoView::~SsaoView() = default;
+
+const vk_core::Image& SsaoView::ao() const {
+    return state_->ao;
+}
+
+vk::Extent2D SsaoView::extent() const {
+    return state_->extent;
+}
+
+std::vector<float> SsaoView::ao_values() const {
+    if (!state_->read_back) return {};
+    std::vector<float> values(std::size_t{state_->extent.width} * state_->extent.height);
+    std::memcpy(values.data(), state_->readback.mapped(), values.size() * sizeof(float));
+    return values;
+}
+
+struct SsaoPass::Impl {
+    vk::raii::Sampler nearest{nullptr};
+    vk::raii::DescriptorSetLayout view_layout{nullptr};
+    vk::raii::DescriptorSetLayout apply_layout{nullptr};
+    vk::raii::PipelineLayout compute_layout{nullptr};  // set 0: this view, set 1: the other
+    vk::raii::PipelineLayout apply_pipeline_layout{nullptr};
+    vk::raii::Pipeline hbao_estimate{nullptr};
+    vk::raii::Pipeline stereo_visibility{nullptr};
+    vk::raii::Pipeline stereo_estimate{nullptr};
+    vk::raii::Pipeline bilateral_filter{nullptr};
+    vk::raii::Pipeline apply_everywhere{nullptr};
+    vk::raii::Pipeline apply_near_only{nullptr};
+
+    PushBlock push(const SsaoParams& params, vk::Extent2D area, std::int32_t flags) const {
+        return {static_cast<std::int32_t>(area.width),
+                static_cast<std::int32_t>(area.height),
+                params.directions,
+                params.steps,
+                params.radius,
+                params.angle_bias,
+                params.strength,
+                params.eta,
+                params.sigma_min,
+                params.sigma_max,
+                params.back_check_px,
+                params.filter_taps,
+                flags};
+    }
+
+    // One dispatch over the area with `self` as set 0 and `other` as set 1.
+    void dispatch(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipeline,
+                  const SsaoView& self, const SsaoView& other, const PushBlock& block,
+                  vk::Extent2D area) const {
+        cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline);
+        const std::array sets = {*self.state_->compute_set, *other.state_->compute_set};
+        cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *compute_layout, 0, sets, {});
+        cmd.pushConstants<PushBlock>(*compute_layout, vk::ShaderStageFlagBits::eCompute, 0, block);
+        cmd.dispatch(groups(area.width), groups(area.height), 1);
+    }
+
+    // Before the first step: the inputs' writes (the forward pass's colour output, a copy, a
+    // compute pass), chained after the caller's transition to eShaderReadOnlyOptimal, become
+    // visible to the compute shaders; the views' AO images become writable.
+    static void begin(const vk::raii::CommandBuffer& cmd,
+                      std::initializer_list<const SsaoView*> views) {
+        const vk::MemoryBarrier2 inputs(
+            Stage::eColorAttachmentOutput | Stage::eFragmentShader | Stage::eComputeShader |
+                Stage::eTransfer,
+            Access::eColorAttachmentWrite | Access::eShaderWrite | Access::eTransferWrite,
+            Stage::eComputeShader,
+            Access::eShaderSampledRead | Access::eShaderStorageRead | Access::eShaderStorageWrite);
+        cmd.pipelineBarrier2(vk::DependencyInfo({}, inputs));
+        for (const SsaoView* view : views) {
+            vk_core::transition(cmd, view->state_->ao, vk::ImageLayout::eShaderReadOnlyOptimal,
+                                vk::ImageLayout::eGeneral,
+                                Stage::eFragmentShader | Stage::eComputeShader, Access::eNone,
+                                Stage::eComputeShader, Access::eShaderStorageWrite);
+        }
+    }
+
+    // After the last step: the AO images go back to eShaderReadOnlyOptimal for the apply pass,
+    // a later compute pass or the read-back.
+    static void finish(const vk::raii::CommandBuffer& cmd,
+                       std::initializer_list<const SsaoView*> views) {
+        for (const SsaoView* view : views) {
+            vk_core::transition(cmd, view->state_->ao, vk::ImageLayout::eGeneral,
+                                vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eComputeShader,
+                                Access::eShaderStorageWrite,
+                                Stage::eFragmentShader | Stage::eComputeShader,
+                                Access::eShaderSampledRead);
+        }
+    }
+};
+
+SsaoPass::SsaoPass(const vk_core::Context& ctx, const SsaoParams& params)
+    : ctx_(ctx), params_(params), impl_(std::make_unique<Impl>()) {
+    assert(params.directions > 0 && params.steps > 0 && params.filter_taps > 0);
+    assert(params.radius > 0.0f && params.sigma_min > 0.0f && params.sigma_min <= params.sigma_max);
+    Impl& impl = *impl_;
+    impl.nearest = vk::raii::Sampler(
+        ctx.device(),
+        vk::SamplerCreateInfo({}, vk::Filter::eNearest, vk::Filter::eNearest,
+                              vk::SamplerMipmapMode::eNearest, vk::SamplerAddressMode::eClampToEdge,
+                              vk::SamplerAddressMode::eClampToEdge,
+                              vk::SamplerAddressMode::eClampToEdge));
+    const auto compute = vk::ShaderStageFlagBits::eCompute;
+    const std::array view_bindings = {
+        vk::DescriptorSetLayoutBinding(0, Type::eUniformBuffer, 1, compute),
+        vk::DescriptorSetLayoutBinding(1, Type::eCombinedImageSampler, 1, compute),
+        vk::DescriptorSetLayoutBinding(2, Type::eStorageImage, 1, compute),
+        vk::DescriptorSetLayoutBinding(3, Type::eStorageImage, 1, compute),
+        vk::DescriptorSetLayoutBinding(4, Type::eStorageImage, 1, compute),
+        vk::DescriptorSetLayoutBinding(5, Type::eStorageImage, 1, compute),
+    };
+    impl.view_layout = vk::raii::DescriptorSetLayout(
+        ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, view_bindings));
+    const vk::DescriptorSetLayoutBinding apply_binding(0, Type::eCombinedImageSampler, 1,
+                                                       vk::ShaderStageFlagBits::eFragment);
+    impl.apply_layout = vk::raii::DescriptorSetLayout(
+        ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, apply_binding));
+
+    const std::array compute_sets = {*impl.view_layout, *impl.view_layout};
+    const vk::PushConstantRange compute_push(compute, 0, sizeof(PushBlock));
+    impl.compute_layout = vk::raii::PipelineLayout(
+        ctx.device(), vk::PipelineLayoutCreateInfo({}, compute_sets, compute_push));
+    const vk::DescriptorSetLayout apply_set = *impl.apply_layout;
+    const vk::PushConstantRange apply_push(vk::ShaderStageFlagBits::eFragment, 0,
+                                           sizeof(ApplyPush));
+    impl.apply_pipeline_layout = vk::raii::PipelineLayout(
+        ctx.device(), vk::PipelineLayoutCreateInfo({}, apply_set, apply_push));
+
+    const auto make = [&](std::span<const std::uint32_t> spirv) {
+        const vk::raii::ShaderModule module = vk_core::make_shader(ctx, spirv);
+        return vk_core::make_compute_pipeline(ctx, *impl.compute_layout, *module);
+    };
+    impl.hbao_estimate = make(kHbaoEstimate);
+    impl.stereo_visibility = make(kStereoVisibility);
+    impl.stereo_estimate = make(kStereoEstimate);
+    impl.bilateral_filter = make(kBilateralFilter);
+
+    const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
+    const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, kSsaoApply);
+    impl.apply_everywhere =
+        make_apply_pipeline(ctx, *impl.apply_pipeline_layout, *vert, *frag, false);
+    impl.apply_near_only =
+        make_apply_pipeline(ctx, *impl.apply_pipeline_layout, *vert, *frag, true);
+}
+
+SsaoPass::~SsaoPass() = default;
+
+std::unique_ptr<SsaoView> SsaoPass::make_view(const vk_core::Buffer& constants,
+                                              const vk_core::Image& linear_depth,
+                                              vk::Extent2D extent) const {
+    assert(linear_depth.desc().extent == extent);
+    assert(constants.size() >= sizeof(ViewConstants));
+    auto state = std::make_unique<SsaoView::State>(ctx_, extent);
+
+    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eUniformBuffer, 1),
+                                   vk::DescriptorPoolSize(Type::eCombinedImageSampler, 2),
+                                   vk::DescriptorPoolSize(Type::eStorageImage, 4)};
+    state->pool = vk::raii::DescriptorPool(
+        ctx_.device(), vk::DescriptorPoolCreateInfo(
+                           vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, pool_sizes));
+    const std::array layouts = {*impl_->view_layout, *impl_->apply_layout};
+    vk::raii::DescriptorSets sets(ctx_.device(),
+                                  vk::DescriptorSetAllocateInfo(*state->pool, layouts));
+    state->compute_set = std::move(sets[0]);
+    state->apply_set = std::move(sets[1]);
+
+    const vk::DescriptorBufferInfo constants_info(constants.handle(), 0, sizeof(ViewConstants));
+    const vk::DescriptorImageInfo depth_info(*impl_->nearest, linear_depth.view(),
+                                             vk::ImageLayout::eShaderReadOnlyOptimal);
+    const auto storage = [](const vk_core::Image& image) {
+        return vk::DescriptorImageInfo(nullptr, image.view(), vk::ImageLayout::eGeneral);
+    };
+    const vk::DescriptorImageInfo other_pixel_info = storage(state->other_pixel);
+    const vk::DescriptorImageInfo raw_info = storage(state->raw);
+    const vk::DescriptorImageInfo filtered_info = storage(state->filtered_x);
+    const vk::DescriptorImageInfo ao_info = storage(state->ao);
+    const vk::DescriptorImageInfo ao_sampled(*impl_->nearest, state->ao.view(),
+                                             vk::ImageLayout::eShaderReadOnlyOptimal);
+    const vk::DescriptorSet set = *state->compute_set;
+    const std::array writes = {
+        vk::WriteDescriptorSet(set, 0, 0, Type::eUniformBuffer, {}, constants_info),
+        vk::WriteDescriptorSet(set, 1, 0, Type::eCombinedImageSampler, depth_info),
+        vk::WriteDescriptorSet(set, 2, 0, Type::eStorageImage, other_pixel_info),
+        vk::WriteDescriptorSet(set, 3, 0, Type::eStorageImage, raw_info),
+        vk::WriteDescriptorSet(set, 4, 0, Type::eStorageImage, filtered_info),
+        vk::WriteDescriptorSet(set, 5, 0, Type::eStorageImage, ao_info),
+        vk::WriteDescriptorSet(*state->apply_set, 0, 0, Type::eCombinedImageSampler, ao_sampled),
+    };
+    ctx_.device().updateDescriptorSets(writes, {});
+
+    // Scratch images live in eGeneral; the AO starts as 1 everywhere (outside the area it stays
+    // so) in the layout every recording expects.
+    ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+        for (const vk_core::Image* image : {&state->raw, &state->filtered_x, &state->other_pixel}) {
+            vk_core::transition(cmd, *image, vk::ImageLayout::eUndefined, vk::ImageLayout::eGeneral,
+                                Stage::eNone, Access::eNone, Stage::eComputeShader,
+                                Access::eShaderStorageRead | Access::eShaderStorageWrite);
+        }
+        vk_core::transition(cmd, state->ao, vk::ImageLayout::eUndefined,
+                            vk::ImageLayout::eTransferDstOptimal, Stage::eNone, Access::eNone,
+                            Stage::eClear, Access::eTransferWrite);
+        cmd.clearColorImage(state->ao.handle(), vk::ImageLayout::eTransferDstOptimal,
+                            vk::ClearColorValue(std::array{1.0f, 1.0f, 1.0f, 1.0f}),
+                            vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1));
+        vk_core::transition(cmd, state->ao, vk::ImageLayout::eTransferDstOptimal,
+                            vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eClear,
+                            Access::eTransferWrite, Stage::eFragmentShader | Stage::eComputeShader,
+                            Access::eShaderSampledRead);
+    });
+    return std::unique_ptr<SsaoView>(new SsaoView(std::move(state)));
+}
+
+void SsaoPass::record_view(const vk::raii::CommandBuffer& cmd, SsaoView& view,
+                           vk::Extent2D area) const {
+    assert(area.width <= view.extent().width && area.height <= view.extent().height);
+    const Impl& impl = *impl_;
+    Impl::begin(cmd, {&view});
+    impl.dispatch(cmd, impl.hbao_estimate, view, view, impl.push(params_, area, 0), area);
+    compute_barrier(cmd);
+    impl.dispatch(cmd, impl.bilateral_filter, view, view, impl.push(params_, area, 0), area);
+    compute_barrier(cmd);
+    impl.dispatch(cmd, impl.bilateral_filter, view, view, impl.push(params_, area, kFlagVertical),
+                  area);
+    Impl::finish(cmd, {&view});
+}
+
+void SsaoPass::record_pair(const vk::raii::CommandBuffer& cmd, SsaoView& left, SsaoView& right,
+                           vk::Extent2D area, SsaoVariant variant) const {
+    assert(left.extent() == right.extent());
+    if (variant == SsaoVariant::kPerView) {
+        record_view(cmd, left, area);
+        record_view(cmd, right, area);
+        return;
+    }
+    assert(area.width <= left.extent().width && area.height <= left.extent().height);
+    const Impl& impl = *impl_;
+    Impl::begin(cmd, {&left, &right});
+    // Sect. 3.1: the visibility maps L^l and L^r by reverse reprojection with a back-check.
+    const PushBlock plain = impl.push(params_, area, 0);
+    impl.dispatch(cmd, impl.stereo_visibility, left, right, plain, area);
+    impl.dispatch(cmd, impl.stereo_visibility, right, left, plain, area);
+    compute_barrier(cmd);
+    // Sect. 3.1: the left eye's stereo estimate; Sect. 3.2: the right eye reprojects it where
+    // L^r allows and estimates the rest from scratch.
+    impl.dispatch(cmd, impl.stereo_estimate, left, right, plain, area);
+    compute_barrier(cmd);
+    impl.dispatch(cmd, impl.stereo_estimate, right, left, impl.push(params_, area, kFlagReproject),
+                  area);
+    compute_barrier(cmd);
+    // Sect. 3.3: the stereo filter, horizontally in both views, then vertically on that.
+    const PushBlock horizontal = impl.push(params_, area, kFlagStereo);
+    impl.dispatch(cmd, impl.bilateral_filter, left, right, horizontal, area);
+    impl.dispatch(cmd, impl.bilateral_filter, right, left, horizontal, area);
+    compute_barrier(cmd);
+    const PushBlock vertical = impl.push(params_, area, kFlagStereo | kFlagVertical);
+    impl.dispatch(cmd, impl.bilateral_filter, left, right, vertical, area);
+    impl.dispatch(cmd, impl.bilateral_filter, right, left, vertical, area);
+    Impl::finish(cmd, {&left, &right});
+}
+
+void SsaoPass::record_apply(const vk::raii::CommandBuffer& cmd, const SsaoView& view,
+                            const vk_core::Image& hdr, vk::Extent2D area,
+                            const vk_core::Image* near_only_depth) const {
+    assert(hdr.desc().format == ForwardPass::kHdrFormat);
+    assert(!near_only_depth || near_only_depth->desc().format == ForwardPass::kDepthFormat);
+    const Impl& impl = *impl_;
+    // Earlier rendering into the HDR (and the depth) finished before the blend reads it.
+    const vk::MemoryBarrier2 targets(
+        Stage::eColorAttachmentOutput | Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
+        Access::eColorAttachmentWrite | Access::eDepthStencilAttachmentWrite,
+        Stage::eColorAttachmentOutput | Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
+        Access::eColorAttachmentRead | Access::eColorAttachmentWrite |
+            Access::eDepthStencilAttachmentRead);
+    cmd.pipelineBarrier2(vk::DependencyInfo({}, targets));
+    const vk::RenderingAttachmentInfo color(hdr.view(), vk::ImageLayout::eColorAttachmentOptimal,
+                                            {}, {}, {}, vk::AttachmentLoadOp::eLoad,
+                                            vk::AttachmentStoreOp::eStore);
+    auto rendering = vk::RenderingInfo()
+                         .setRenderArea(vk::Rect2D({0, 0}, area))
+                         .setLayerCount(1)
+                         .setColorAttachments(color);
+    vk::RenderingAttachmentInfo depth;
+    if (near_only_depth) {
+        depth = vk::RenderingAttachmentInfo(
+            near_only_depth->view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
+            vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
+        rendering.setPDepthAttachment(&depth);
+    }
+    cmd.beginRendering(rendering);
+    vk_core::set_viewport_and_scissor(cmd, area);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
+                     near_only_depth ? *impl.apply_near_only : *impl.apply_everywhere);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *impl.apply_pipeline_layout, 0,
+                           *view.state_->apply_set, {});
+    const ApplyPush push{static_cast<float>(area.width), static_cast<float>(area.height)};
+    cmd.pushConstants<ApplyPush>(*impl.apply_pipeline_layout, vk::ShaderStageFlagBits::eFragment, 0,
+                                 push);
+    cmd.draw(3, 1, 0, 0);
+    cmd.endRendering();
+}
+
+void SsaoPass::record_readback(const vk::raii::CommandBuffer& cmd, SsaoView& view) const {
+    SsaoView::State& state = *view.state_;
+    vk_core::transition(cmd, state.ao, vk::ImageLayout::eShaderReadOnlyOptimal,
+                        vk::ImageLayout::eTransferSrcOptimal,
+                        Stage::eComputeShader | Stage::eFragmentShader, Access::eNone, Stage::eCopy,
+                        Access::eTransferRead);
+    cmd.copyImageToBuffer(
+        state.ao.handle(), vk::ImageLayout::eTransferSrcOptimal, state.readback.handle(),
+        vk::BufferImageCopy(0, 0, 0,
+                            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
+                            {0, 0, 0}, vk::Extent3D(state.extent, 1)));
+    vk_core::transition(cmd, state.ao, vk::ImageLayout::eTransferSrcOptimal,
+                        vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eCopy, Access::eNone,
+                        Stage::eFragmentShader | Stage::eComputeShader, Access::eShaderSampledRead);
+    const vk::MemoryBarrier2 to_host(Stage::eCopy, Access::eTransferWrite, Stage::eHost,
+                                     Access::eHostRead);
+    cmd.pipelineBarrier2(vk::DependencyInfo({}, to_host));
+    state.read_back = true;
+}
+
+}  // namespace monoplane::passes

@@ -1,0 +1,79 @@
+#include "renderer/passes/taa/taa_pass.h"
+
+#include <array>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+namespace monoplane::passes {
+namespace {
+const std::uint32_t kFullscreenVert[] = {
+#include "fullscreen.vert.spv.inc"
+};
+const std::uint32_t kTaaResolveFrag[] = {
+#include "taa_resolve.frag.spv.inc"
+};
+
+struct PushBlock {
+    glm::vec4 params;
+    glm::vec4 extent;
+};
+static_assert(sizeof(PushBlock) == 32, "must match taa_resolve.frag");
+
+}  // namespace
+
+TaaPass::TaaPass(const vk_core::Context& ctx)
+    : nearest_(vk_core::make_clamped_sampler(ctx, vk::Filter::eNearest)),
+      bilinear_(vk_core::make_clamped_sampler(ctx, vk::Filter::eLinear)) {
+    std::array<vk::DescriptorSetLayoutBinding, 4> bindings;
+    for (std::uint32_t i = 0; i < bindings.size(); ++i) {
+        bindings[i] = vk::DescriptorSetLayoutBinding(i, vk::DescriptorType::eCombinedImageSampler,
+                                                     1, vk::ShaderStageFlagBits::eFragment);
+    }
+    set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
+                                                vk::DescriptorSetLayoutCreateInfo({}, bindings));
+    const vk::DescriptorSetLayout set_layout = *set_layout_;
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(PushBlock));
+    layout_ =
+        vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout, push));
+    const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
+    const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, kTaaResolveFrag);
+    vk_core::GraphicsPipelineDesc desc;
+    desc.layout = *layout_;
+    desc.vertex = *vert;
+    desc.fragment = *frag;
+    desc.color_formats = {kOutputFormat};
+    desc.cull = vk::CullModeFlagBits::eNone;
+    desc.depth_test = false;
+    desc.depth_write = false;
+    pipeline_ = vk_core::make_graphics_pipeline(ctx, desc);
+}
+
+void TaaPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& output,
+                     vk::DescriptorSet inputs, const TaaParams& params, bool reset) const {
+    using Stage = vk::PipelineStageFlagBits2;
+    using Access = vk::AccessFlagBits2;
+    // The output was last read as the history (or by tone mapping) two frames ago.
+    vk_core::transition(cmd, output, vk::ImageLayout::eUndefined,
+                        vk::ImageLayout::eColorAttachmentOptimal, Stage::eFragmentShader,
+                        Access::eShaderSampledRead, Stage::eColorAttachmentOutput,
+                        Access::eColorAttachmentWrite);
+    const vk::RenderingAttachmentInfo color(output.view(), vk::ImageLayout::eColorAttachmentOptimal,
+                                            {}, {}, {}, vk::AttachmentLoadOp::eDontCare,
+                                            vk::AttachmentStoreOp::eStore);
+    const vk::Extent2D extent = output.desc().extent;
+    cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, extent), 1, 0, color));
+    vk_core::set_viewport_and_scissor(cmd, extent);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline_);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, inputs, {});
+    const glm::vec2 size(static_cast<float>(extent.width), static_cast<float>(extent.height));
+    const PushBlock push{
+        glm::vec4(params.history_weight, params.velocity_box_widening, reset ? 1.0f : 0.0f, 0.0f),
+        glm::vec4(size, 1.0f / size),
+    };
+    cmd.pushConstants<PushBlock>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, push);
+    cmd.draw(3, 1, 0, 0);
+    cmd.endRendering();
+}
+
+}  // namespace monoplane::passes
