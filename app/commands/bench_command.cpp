@@ -19,6 +19,7 @@
 #include "app/bench/bench_results.h"
 #include "app/commands/commands.h"
 #include "app/commands/frame_summary.h"
+#include "app/commands/image_quality_options.h"
 #include "app/commands/output_directory.h"
 #include "app/commands/validation_report.h"
 #include "hmd/profile.h"
@@ -269,6 +270,16 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     double nearest = base.views.far;
     for (const Plane& p : planes) nearest = std::min(nearest, p.metres);
 
+    modes::RendererOptions renderer_options;
+    apply_image_quality_flags(o.anti_aliasing, o.ssao, renderer_options);
+    if (modes::msaa_samples(renderer_options.anti_aliasing) != vk::SampleCountFlagBits::e1 &&
+        std::any_of(mode_list.begin(), mode_list.end(),
+                    [](modes::Mode m) { return m != modes::Mode::kStereo; })) {
+        throw UserError(
+            "--anti-aliasing " + o.anti_aliasing +
+            " works in stereo mode only (docs/hybrid.md, \"MSAA: stereo only, and why\"): add "
+            "--modes stereo, or use taa");
+    }
     auto ctx = vk_core::Context::create(global.context_options()).value_or_throw();
     std::cerr << "device: " << ctx->device_info().name << "\n";
 
@@ -283,26 +294,6 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     Progress progress(total);
     int done = 0;
 
-    modes::RendererOptions renderer_options;
-    const auto anti_aliasing = modes::parse_anti_aliasing(o.anti_aliasing);
-    if (!anti_aliasing) {
-        throw UserError("--anti-aliasing " + o.anti_aliasing +
-                        ": use none, taa, msaa2, msaa4 or msaa8");
-    }
-    renderer_options.anti_aliasing = *anti_aliasing;
-    if (o.ssao != "off") {
-        renderer_options.ssao = passes::parse_ssao_variant(o.ssao);
-        if (!renderer_options.ssao) {
-            throw UserError("--ssao " + o.ssao + ": use off, per-eye or stereo");
-        }
-    }
-    if (msaa_samples(*anti_aliasing) != vk::SampleCountFlagBits::e1 &&
-        std::any_of(mode_list.begin(), mode_list.end(),
-                    [](modes::Mode m) { return m != modes::Mode::kStereo; })) {
-        throw UserError("--anti-aliasing " + o.anti_aliasing +
-                        " works in stereo mode only (docs/hybrid.md, \"Anti-aliasing\"): add "
-                        "--modes stereo, or use taa");
-    }
     BenchReport report;
     report.device = ctx->device_info().name;
     report.hmd = profile.name;

@@ -8,6 +8,7 @@
 #include "app/commands/ao_consistency.h"
 #include "app/commands/commands.h"
 #include "app/commands/frame_summary.h"
+#include "app/commands/image_quality_options.h"
 #include "app/commands/output_directory.h"
 #include "app/commands/stereo_comparison.h"
 #include "app/commands/validation_report.h"
@@ -178,22 +179,18 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     if ((o.width > 0) != (o.height > 0)) throw UserError("--width and --height go together");
     if (o.ipd && !(*o.ipd >= 0.0 && *o.ipd <= 0.1))
         throw UserError("--ipd must be within [0, 0.1] m");
-    const auto anti_aliasing = modes::parse_anti_aliasing(o.anti_aliasing);
-    if (!anti_aliasing) {
-        throw UserError("--anti-aliasing " + o.anti_aliasing +
-                        ": use none, taa, msaa2, msaa4 or msaa8");
-    }
-    std::optional<passes::SsaoVariant> ssao;
-    if (o.ssao != "off") {
-        ssao = passes::parse_ssao_variant(o.ssao);
-        if (!ssao) throw UserError("--ssao " + o.ssao + ": use off, per-eye or stereo");
-    }
     const auto pose_path = rig::builtin_pose_path(o.pose_path);
     if (!pose_path) {
         throw UserError("--pose-path " + o.pose_path + ": use " +
                         joined(rig::builtin_pose_path_names()));
     }
     if (!(o.fps > 0.0 && std::isfinite(o.fps))) throw UserError("--fps must be positive");
+    modes::RendererOptions renderer_options;
+    apply_image_quality_flags(o.anti_aliasing, o.ssao, renderer_options);
+    // E(p) reprojects the eyes' AO through their depth.
+    const bool ssao = renderer_options.ssao.has_value();
+    renderer_options.read_back_ao = ssao;
+    renderer_options.read_back_depth = ssao;
 
     const std::filesystem::path out = prepare_output_directory("--out", o.out);
 
@@ -213,13 +210,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         throw UserError("--view " + o.view + ": " + o.scene + " has the views " + joined(names));
     }
 
-    modes::RendererOptions renderer_options;
     renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
-    renderer_options.anti_aliasing = *anti_aliasing;
-    renderer_options.ssao = ssao;
-    // E(p) reprojects the eyes' AO through their depth.
-    renderer_options.read_back_ao = ssao.has_value();
-    renderer_options.read_back_depth = ssao.has_value();
     modes::ModeRenderer renderer(
         *ctx, scene, *mode,
         vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),

@@ -506,7 +506,6 @@ profile::FrameStats ModeRenderer::render_frame(
     const std::uint64_t frame_index = inputs.frame_index.value_or(next_frame_index_);
     history_valid_ = taa && frame_index == next_frame_index_ && frame_index > 0 &&
                      history_mono_plane_ == inputs.mono_plane;
-    history_restarted_ = !history_valid_;
     next_frame_index_ = frame_index + 1;
     history_mono_plane_ = inputs.mono_plane;
     const glm::dvec2 jitter_px = taa ? rig::halton_jitter(frame_index) : glm::dvec2(0.0);

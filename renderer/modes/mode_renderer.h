@@ -54,7 +54,7 @@ std::string mono_culling_name(MonoCulling culling);  // "no-opt", "discard", "oc
 
 // Anti-aliasing (papers/000 Sect. 4.5). TAA works in every mode; MSAA only in stereo, because
 // resolving before the composite leaves C's samples out and resolving after it would need every
-// sample mapped (docs/hybrid.md, "Anti-aliasing").
+// sample mapped (docs/hybrid.md, "MSAA: stereo only, and why").
 enum class AntiAliasing { kNone, kTaa, kMsaa2, kMsaa4, kMsaa8 };
 std::optional<AntiAliasing> parse_anti_aliasing(const std::string& name);  // "none", "taa", "msaa4"
 std::string anti_aliasing_name(AntiAliasing aa);
@@ -127,7 +127,7 @@ class ModeRenderer {
     const std::vector<float>& eye_ao(Eye eye) const;
     const EyeFrameGeometry& eye_geometry(Eye eye) const;
     // Whether the last frame started TAA's history anew (no TAA: always).
-    bool history_restarted() const { return history_restarted_; }
+    bool history_restarted() const { return !history_valid_; }
     // The rig of the last hybrid frame.
     const std::optional<rig::Rig>& last_rig() const { return rig_; }
     // The chunk indices the last frame drew in a view, in draw order (read_back_draw_lists).
@@ -185,7 +185,6 @@ class ModeRenderer {
     std::uint64_t next_frame_index_ = 0;
     int history_parity_ = 0;
     bool history_valid_ = false;
-    bool history_restarted_ = true;
     double history_mono_plane_ = -1.0;
 };
 

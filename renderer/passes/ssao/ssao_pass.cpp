@@ -83,21 +83,17 @@ void compute_barrier(const vk::raii::CommandBuffer& cmd) {
 vk::raii::Pipeline make_apply_pipeline(const vk_core::Context& ctx, vk::PipelineLayout layout,
                                        vk::ShaderModule vert, vk::ShaderModule frag,
                                        bool near_only) {
-    const std::array stages = {
-        vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eVertex, vert, "main"),
-        vk::PipelineShaderStageCreateInfo({}, vk::ShaderStageFlagBits::eFragment, frag, "main"),
-    };
-    const vk::PipelineVertexInputStateCreateInfo vertex_input;
-    const vk::PipelineInputAssemblyStateCreateInfo input_assembly(
-        {}, vk::PrimitiveTopology::eTriangleList);
-    const vk::PipelineViewportStateCreateInfo viewport({}, 1, nullptr, 1, nullptr);
-    const vk::PipelineRasterizationStateCreateInfo raster(
-        {}, VK_FALSE, VK_FALSE, vk::PolygonMode::eFill, vk::CullModeFlagBits::eNone,
-        vk::FrontFace::eCounterClockwise, VK_FALSE, 0.0f, 0.0f, 0.0f, 1.0f);
-    const vk::PipelineMultisampleStateCreateInfo multisample({}, vk::SampleCountFlagBits::e1);
-    const vk::PipelineDepthStencilStateCreateInfo depth({}, near_only, VK_FALSE,
-                                                        vk::CompareOp::eLess);
-    const auto blend =
+    vk_core::GraphicsPipelineDesc desc;
+    desc.layout = layout;
+    desc.vertex = vert;
+    desc.fragment = frag;
+    desc.color_formats = {ForwardPass::kHdrFormat};
+    desc.depth_format = near_only ? ForwardPass::kDepthFormat : vk::Format::eUndefined;
+    desc.cull = vk::CullModeFlagBits::eNone;
+    desc.depth_test = near_only;
+    desc.depth_write = false;
+    desc.depth_compare = vk::CompareOp::eLess;
+    desc.blend =
         vk::PipelineColorBlendAttachmentState()
             .setBlendEnable(VK_TRUE)
             .setSrcColorBlendFactor(vk::BlendFactor::eZero)
@@ -108,17 +104,7 @@ vk::raii::Pipeline make_apply_pipeline(const vk_core::Context& ctx, vk::Pipeline
             .setAlphaBlendOp(vk::BlendOp::eAdd)
             .setColorWriteMask(vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
                                vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA);
-    const vk::PipelineColorBlendStateCreateInfo color_blend({}, VK_FALSE, vk::LogicOp::eCopy,
-                                                            blend);
-    const std::array dynamic = {vk::DynamicState::eViewport, vk::DynamicState::eScissor};
-    const vk::PipelineDynamicStateCreateInfo dynamic_state({}, dynamic);
-    const vk::Format color_format = ForwardPass::kHdrFormat;
-    const vk::PipelineRenderingCreateInfo rendering(
-        0, color_format, near_only ? ForwardPass::kDepthFormat : vk::Format::eUndefined);
-    const vk::GraphicsPipelineCreateInfo info(
-        {}, stages, &vertex_input, &input_assembly, nullptr, &viewport, &raster, &multisample,
-        &depth, &color_blend, &dynamic_state, layout, nullptr, 0, nullptr, -1, &rendering);
-    return vk::raii::Pipeline(ctx.device(), nullptr, info);
+    return vk_core::make_graphics_pipeline(ctx, desc);
 }
 
 }  // namespace
@@ -263,12 +249,7 @@ SsaoPass::SsaoPass(const vk_core::Context& ctx, const SsaoParams& params)
     assert(params.directions > 0 && params.steps > 0 && params.filter_taps > 0);
     assert(params.radius > 0.0f && params.sigma_min > 0.0f && params.sigma_min <= params.sigma_max);
     Impl& impl = *impl_;
-    impl.nearest = vk::raii::Sampler(
-        ctx.device(),
-        vk::SamplerCreateInfo({}, vk::Filter::eNearest, vk::Filter::eNearest,
-                              vk::SamplerMipmapMode::eNearest, vk::SamplerAddressMode::eClampToEdge,
-                              vk::SamplerAddressMode::eClampToEdge,
-                              vk::SamplerAddressMode::eClampToEdge));
+    impl.nearest = vk_core::make_clamped_sampler(ctx, vk::Filter::eNearest);
     const auto compute = vk::ShaderStageFlagBits::eCompute;
     const std::array view_bindings = {
         vk::DescriptorSetLayoutBinding(0, Type::eUniformBuffer, 1, compute),

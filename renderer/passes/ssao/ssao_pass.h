@@ -36,7 +36,7 @@ struct SsaoParams {
     int filter_taps = 13;        // N of the separable bilateral filter (papers/002 Sect. 3.3)
     float sigma_min = 0.02f;     // metres: clamp of sigma = r / 3
     float sigma_max = 0.5f;      // metres
-    float eta = 0.05f;           // w = smoothstep(alpha, 0.5 - eta, 0.5)
+    float eta = 0.05f;           // w = smoothstep(0.5 - eta, 0.5, alpha), GLSL order
     float back_check_px = 1.0f;  // reverse reprojection accepts a round trip within this distance
 };
 

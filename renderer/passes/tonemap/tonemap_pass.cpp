@@ -15,12 +15,7 @@ TonemapPass::TonemapPass(const vk_core::Context& ctx) {
                                                  vk::ShaderStageFlagBits::eFragment);
     set_layout_ =
         vk::raii::DescriptorSetLayout(ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, binding));
-    sampler_ = vk::raii::Sampler(
-        ctx.device(),
-        vk::SamplerCreateInfo({}, vk::Filter::eNearest, vk::Filter::eNearest,
-                              vk::SamplerMipmapMode::eNearest, vk::SamplerAddressMode::eClampToEdge,
-                              vk::SamplerAddressMode::eClampToEdge,
-                              vk::SamplerAddressMode::eClampToEdge));
+    sampler_ = vk_core::make_clamped_sampler(ctx, vk::Filter::eNearest);
     const vk::DescriptorSetLayout set_layout = *set_layout_;
     const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(TonemapParams));
     layout_ =

@@ -1,0 +1,19 @@
+#include "app/commands/image_quality_options.h"
+
+namespace monoplane::app {
+
+void apply_image_quality_flags(const std::string& anti_aliasing, const std::string& ssao,
+                               modes::RendererOptions& options) {
+    const auto aa = modes::parse_anti_aliasing(anti_aliasing);
+    if (!aa) {
+        throw UserError("--anti-aliasing " + anti_aliasing +
+                        ": use none, taa, msaa2, msaa4 or msaa8");
+    }
+    options.anti_aliasing = *aa;
+    options.ssao.reset();
+    if (ssao == "off") return;
+    options.ssao = passes::parse_ssao_variant(ssao);
+    if (!options.ssao) throw UserError("--ssao " + ssao + ": use off, per-eye or stereo");
+}
+
+}  // namespace monoplane::app

@@ -1,0 +1,15 @@
+// --anti-aliasing and --ssao, as `render` and `bench` take them.
+#pragma once
+
+#include <string>
+
+#include "renderer/modes/mode_renderer.h"
+
+namespace monoplane::app {
+
+// Sets options.anti_aliasing and options.ssao from the flags' values ("none|taa|msaa2|msaa4|
+// msaa8", "off|per-eye|stereo"); throws UserError naming the flag for any other value.
+void apply_image_quality_flags(const std::string& anti_aliasing, const std::string& ssao,
+                               modes::RendererOptions& options);
+
+}  // namespace monoplane::app
