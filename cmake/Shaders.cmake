@@ -25,3 +25,28 @@ function(monoplane_embed_shaders)
   target_sources(${ARG_TARGET} PRIVATE ${outputs})
   target_include_directories(${ARG_TARGET} PRIVATE ${out_dir})
 endfunction()
+
+# Compiles SOURCE again with -D for each of DEFINES into NAME.spv.inc: the variants of a shader
+# that differ only in preprocessor switches (e.g. single-pass stereo), without a file for each.
+function(monoplane_embed_shader_variant)
+  cmake_parse_arguments(ARG "" "TARGET;SOURCE;NAME" "DEFINES" ${ARGN})
+  file(RELATIVE_PATH rel_dir ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})
+  set(out_dir ${PROJECT_BINARY_DIR}/shaders/${rel_dir})
+  file(MAKE_DIRECTORY ${out_dir})
+  set(out ${out_dir}/${ARG_NAME}.spv.inc)
+  set(define_flags "")
+  foreach(define ${ARG_DEFINES})
+    list(APPEND define_flags -D${define})
+  endforeach()
+  add_custom_command(
+    OUTPUT ${out}
+    COMMAND Vulkan::glslc --target-env=vulkan1.3 -O -Werror -mfmt=num ${define_flags}
+            -I ${PROJECT_SOURCE_DIR} -MD -MF ${out}.d
+            -o ${out} ${CMAKE_CURRENT_SOURCE_DIR}/${ARG_SOURCE}
+    DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${ARG_SOURCE}
+    DEPFILE ${out}.d
+    COMMENT "glslc ${rel_dir}/${ARG_NAME} (${ARG_SOURCE} ${define_flags})"
+    VERBATIM)
+  target_sources(${ARG_TARGET} PRIVATE ${out})
+  target_include_directories(${ARG_TARGET} PRIVATE ${out_dir})
+endfunction()

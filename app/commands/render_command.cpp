@@ -26,6 +26,7 @@ namespace {
 struct RenderOptions {
     std::string scene = "spheres";
     std::string mode = "stereo";
+    std::string stereo_pass;  // empty: the mode's (two for stereo and the hybrid modes)
     std::optional<double> mono_plane;
     double overlap_k = 2.0;
     double blend_band = 0.3;
@@ -56,7 +57,8 @@ std::string joined(const std::vector<std::string>& names) {
     return text;
 }
 
-std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
+std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& choice,
+                         const hmd::HmdProfile& profile,
                          const scenes::Scene& scene, const vk_core::Context& ctx, int width,
                          int height, const FrameSummary& s, const std::optional<rig::Rig>& rig,
                          const modes::RgbaImage* mono,
@@ -69,8 +71,9 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
     j.value("detail", o.detail).value("seed", static_cast<std::uint64_t>(o.seed));
     j.value("view", o.view).value("hmd", profile.name).value("ipd", o.ipd.value_or(profile.ipd));
     j.value("width", width).value("height", height);
-    if (o.mode != "stereo") j.value("debug_view", o.debug_view);
-    if (o.mode == "hybrid") j.value("variant", o.mono_culling);
+    j.value("stereo_pass", modes::stereo_pass_name(choice.stereo_pass));
+    if (choice.mode != modes::Mode::kStereo) j.value("debug_view", o.debug_view);
+    if (choice.mode == modes::Mode::kHybrid) j.value("variant", o.mono_culling);
     j.value("anti_aliasing", o.anti_aliasing).value("ssao", o.ssao);
     j.value("pose_path", o.pose_path).value("fps", o.fps);
     if (rig) {
@@ -101,6 +104,8 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
         j.value("clipping_invocations", v.clipping_invocations);
         j.value("clipping_primitives", v.clipping_primitives);
         j.value("vertex_invocations", v.vertex_invocations);
+        j.value("geometry_invocations", v.geometry_invocations);
+        j.value("geometry_primitives", v.geometry_primitives);
         j.value("fragment_invocations", v.fragment_invocations);
         j.value("draws", static_cast<std::uint64_t>(v.draws));
         if (v.view == "mono") {
@@ -116,6 +121,7 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
     j.value("primitives", primitives).value("fragments", fragments);
     if (comparison) {
         j.value("ssim_vs_stereo", comparison->ssim_mean());
+        j.value("max_channel_difference_vs_stereo", comparison->max_channel_difference());
         j.begin_object("ssim");
         for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
             const EyeComparison& c = comparison->eyes[static_cast<int>(eye)];
@@ -151,12 +157,21 @@ std::string summary_json(const RenderOptions& o, const hmd::HmdProfile& profile,
 }
 
 void run_render(const RenderOptions& o, const GlobalOptions& global) {
-    const auto mode = modes::parse_mode(o.mode);
-    if (!mode) {
+    auto choice = modes::parse_render_mode(o.mode);
+    if (!choice) {
         throw UserError("--mode " + o.mode +
-                        ": unknown or not available yet; use stereo, hybrid or hybrid-farfield "
-                        "(stereo-multiview and stereo-gs arrive with their issue)");
+                        ": unknown; use stereo, stereo-multiview, stereo-gs, hybrid or "
+                        "hybrid-farfield");
     }
+    if (!o.stereo_pass.empty()) {
+        const auto pass = modes::parse_stereo_pass(o.stereo_pass);
+        if (!pass) throw UserError("--stereo-pass " + o.stereo_pass + ": use two, multiview or gs");
+        if (choice->stereo_pass != modes::StereoPass::kTwoPasses && *pass != choice->stereo_pass) {
+            throw UserError("--stereo-pass " + o.stereo_pass + " contradicts --mode " + o.mode);
+        }
+        choice->stereo_pass = *pass;
+    }
+    const std::optional<modes::Mode> mode = choice->mode;
     if (*mode != modes::Mode::kStereo && !o.mono_plane) {
         throw UserError("--mode " + o.mode + " needs --mono-plane M (metres)");
     }
@@ -186,6 +201,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     }
     if (!(o.fps > 0.0 && std::isfinite(o.fps))) throw UserError("--fps must be positive");
     modes::RendererOptions renderer_options;
+    renderer_options.stereo_pass = choice->stereo_pass;
     apply_image_quality_flags(o.anti_aliasing, o.ssao, renderer_options);
     // E(p) reprojects the eyes' AO through their depth.
     const bool ssao = renderer_options.ssao.has_value();
@@ -250,7 +266,8 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
                   << ao->compared << " pixels\n";
     }
     std::optional<StereoComparison> comparison;
-    if (o.compare_stereo && *mode != modes::Mode::kStereo) {
+    if (o.compare_stereo &&
+        (*mode != modes::Mode::kStereo || choice->stereo_pass != modes::StereoPass::kTwoPasses)) {
         std::cerr << "rendering the stereo reference for SSIM\n";
         comparison = compare_with_stereo(
             *ctx, scene,
@@ -258,7 +275,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
             renderer_options, inputs, renderer, out);
     }
     const std::string json =
-        summary_json(o, profile, scene, *ctx, width, height, summarize(measured),
+        summary_json(o, *choice, profile, scene, *ctx, width, height, summarize(measured),
                      renderer.last_rig(), mono, comparison, ao, out);
     std::ofstream(out / "stats.json") << json << "\n";
     if (o.json) std::cout << json << "\n";
@@ -275,8 +292,13 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
     CLI::App* cmd = root.add_subcommand("render", "Render one scene in one mode to PNG files");
     cmd->add_option("--scene", options->scene, "beams, landscape or spheres")
         ->capture_default_str();
-    cmd->add_option("--mode", options->mode, "stereo, hybrid or hybrid-farfield")
+    cmd->add_option("--mode", options->mode,
+                    "stereo, stereo-multiview, stereo-gs, hybrid or hybrid-farfield")
         ->capture_default_str();
+    cmd->add_option("--stereo-pass", options->stereo_pass,
+                    "How the eyes' forward passes are drawn (stereo, and hybrid's near region): "
+                    "two (one pass per eye), multiview (VK_KHR_multiview) or gs (geometry-shader "
+                    "duplication, papers/001); default two, or the mode's");
     cmd->add_option("--mono-plane", options->mono_plane,
                     "Mono-plane distance m in metres (hybrid modes)");
     cmd->add_option("--k", options->overlap_k, "Overlap constant k of eq. 3: eps = k s m")
@@ -335,7 +357,8 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
     cmd->add_option("--fps", options->fps, "Frame rate of the pose path (frame n at n / fps s)")
         ->capture_default_str();
     cmd->add_flag("--compare-stereo", options->compare_stereo,
-                  "Hybrid modes: also render stereo and write SSIM and local-SSIM heat maps");
+                  "Hybrid and single-pass modes: also render two-pass stereo and write SSIM, the "
+                  "largest channel difference and local-SSIM heat maps");
     cmd->callback([options, &global] { run_render(*options, global); });
 }
 

@@ -42,7 +42,8 @@ void copy_to_buffer(const vk::raii::CommandBuffer& cmd, const vk_core::Image& im
     cmd.copyImageToBuffer(
         image.handle(), vk::ImageLayout::eTransferSrcOptimal, buffer.handle(),
         vk::BufferImageCopy(0, 0, 0,
-                            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
+                            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0,
+                                                       image.base_layer(), 1),
                             {0, 0, 0}, vk::Extent3D(extent, 1)));
 }
 
@@ -70,6 +71,45 @@ std::string mode_name(Mode mode) {
             return "hybrid";
         case Mode::kHybridFarfield:
             return "hybrid-farfield";
+    }
+    return "?";
+}
+
+std::optional<StereoPass> parse_stereo_pass(const std::string& name) {
+    if (name == "two") return StereoPass::kTwoPasses;
+    if (name == "multiview") return StereoPass::kMultiview;
+    if (name == "gs") return StereoPass::kGeometryShader;
+    return std::nullopt;
+}
+
+std::string stereo_pass_name(StereoPass pass) {
+    switch (pass) {
+        case StereoPass::kTwoPasses:
+            return "two";
+        case StereoPass::kMultiview:
+            return "multiview";
+        case StereoPass::kGeometryShader:
+            return "gs";
+    }
+    return "?";
+}
+
+std::optional<RenderModeChoice> parse_render_mode(const std::string& name) {
+    if (name == "stereo-multiview") return RenderModeChoice{Mode::kStereo, StereoPass::kMultiview};
+    if (name == "stereo-gs") return RenderModeChoice{Mode::kStereo, StereoPass::kGeometryShader};
+    if (const auto mode = parse_mode(name)) return RenderModeChoice{*mode, StereoPass::kTwoPasses};
+    return std::nullopt;
+}
+
+std::string render_mode_name(const RenderModeChoice& choice) {
+    if (choice.mode != Mode::kStereo) return mode_name(choice.mode);
+    switch (choice.stereo_pass) {
+        case StereoPass::kTwoPasses:
+            return "stereo";
+        case StereoPass::kMultiview:
+            return "stereo-multiview";
+        case StereoPass::kGeometryShader:
+            return "stereo-gs";
     }
     return "?";
 }
@@ -147,85 +187,73 @@ struct ViewFeatures {
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
 };
 
-// The targets and per-frame data of one camera.
-struct ModeRenderer::View {
-    vk::Extent2D extent;  // the images' size (C: its allocation)
-    vk::Extent2D area;    // the region drawn (C: its viewport, eq. 8)
+// The images a forward pass writes: one camera's, or both eyes' as two-layer images (single-pass
+// stereo), or one layer of those. Not movable: multisample refers to its own members.
+struct ModeRenderer::ForwardImages {
     vk_core::Image hdr;
     vk_core::Image depth;
     vk_core::Image linear_depth;
-    vk_core::Image display;
-    vk_core::Buffer constants;
-    vk_core::Buffer readback;
-    vk_core::Buffer depth_readback;
-    vk::raii::DescriptorSet forward_set{nullptr};
-    vk::raii::DescriptorSet tonemap_set{nullptr};
-    RgbaImage image;
-    std::vector<float> linear;
-    // TAA: screen-space velocity, and the eyes' two output images (this frame's and the history).
+    // TAA: screen-space velocity.
     std::optional<vk_core::Image> velocity;
-    std::array<std::optional<vk_core::Image>, 2> history;
-    std::array<vk::raii::DescriptorSet, 2> taa_sets{nullptr, nullptr};
-    std::array<vk::raii::DescriptorSet, 2> tonemap_taa_sets{nullptr, nullptr};
-    glm::dmat4 previous_unjittered{1.0};  // last frame's world -> clip without jitter
-    bool has_previous = false;
     // MSAA: the multisampled targets the forward pass resolves into hdr and linear_depth.
     std::optional<vk_core::Image> hdr_samples;
     std::optional<vk_core::Image> linear_depth_samples;
     std::optional<vk_core::Image> depth_samples;
     std::optional<passes::MultisampleTargets> multisample;
-    std::unique_ptr<passes::SsaoView> ssao;
-    std::vector<float> ao;
-    EyeFrameGeometry geometry;
 
-    View(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
-        : extent(size),
-          area(size),
-          hdr(ctx, {size, passes::ForwardPass::kHdrFormat, kColorTarget}),
+    ForwardImages(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features,
+                  std::uint32_t layers)
+        : hdr(ctx, {size, passes::ForwardPass::kHdrFormat, kColorTarget, layers}),
           // Sampled: the merged depth pyramid reads the eyes' depth.
           depth(ctx, {size, passes::ForwardPass::kDepthFormat,
                       vk::ImageUsageFlagBits::eDepthStencilAttachment |
-                          vk::ImageUsageFlagBits::eSampled}),
-          linear_depth(ctx, {size, passes::ForwardPass::kLinearDepthFormat, kColorTarget}),
-          display(ctx, {size, passes::TonemapPass::kDisplayFormat, kColorTarget}),
-          constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
-                    vk_core::MemoryUse::kHostVisible),
-          readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
-                   vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible),
-          depth_readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
-                         vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {
+                          vk::ImageUsageFlagBits::eSampled,
+                      layers}),
+          linear_depth(ctx, {size, passes::ForwardPass::kLinearDepthFormat, kColorTarget, layers}) {
         if (features.velocity) {
             velocity.emplace(ctx, vk_core::ImageDesc{size, passes::ForwardPass::kVelocityFormat,
                                                      vk::ImageUsageFlagBits::eColorAttachment |
-                                                         vk::ImageUsageFlagBits::eSampled});
-        }
-        if (features.history) {
-            for (auto& image : history) {
-                image.emplace(ctx, vk_core::ImageDesc{size, passes::TaaPass::kOutputFormat,
-                                                      vk::ImageUsageFlagBits::eColorAttachment |
-                                                          vk::ImageUsageFlagBits::eSampled});
-            }
+                                                         vk::ImageUsageFlagBits::eSampled,
+                                                     layers});
         }
         if (features.samples != vk::SampleCountFlagBits::e1) {
             // Transient: only their resolve is kept.
             const vk::ImageUsageFlags usage = vk::ImageUsageFlagBits::eColorAttachment |
                                               vk::ImageUsageFlagBits::eTransientAttachment;
             hdr_samples.emplace(ctx, vk_core::ImageDesc{size, passes::ForwardPass::kHdrFormat,
-                                                        usage, 1, features.samples});
+                                                        usage, layers, features.samples});
             linear_depth_samples.emplace(
-                ctx, vk_core::ImageDesc{size, passes::ForwardPass::kLinearDepthFormat, usage, 1,
-                                        features.samples});
+                ctx, vk_core::ImageDesc{size, passes::ForwardPass::kLinearDepthFormat, usage,
+                                        layers, features.samples});
             depth_samples.emplace(
                 ctx, vk_core::ImageDesc{size, passes::ForwardPass::kDepthFormat,
                                         vk::ImageUsageFlagBits::eDepthStencilAttachment |
                                             vk::ImageUsageFlagBits::eTransientAttachment,
-                                        1, features.samples});
+                                        layers, features.samples});
             multisample.emplace(
                 passes::MultisampleTargets{*hdr_samples, *linear_depth_samples, *depth_samples});
         }
     }
 
-    passes::ForwardTargets forward_targets(bool clear_color = false) const {
+    // One layer of `both`, which must outlive it.
+    ForwardImages(const vk_core::Context& ctx, const ForwardImages& both, std::uint32_t layer)
+        : hdr(vk_core::Image::layer_of(ctx, both.hdr, layer)),
+          depth(vk_core::Image::layer_of(ctx, both.depth, layer)),
+          linear_depth(vk_core::Image::layer_of(ctx, both.linear_depth, layer)) {
+        if (both.velocity) velocity = vk_core::Image::layer_of(ctx, *both.velocity, layer);
+        if (both.multisample) {
+            hdr_samples = vk_core::Image::layer_of(ctx, *both.hdr_samples, layer);
+            linear_depth_samples = vk_core::Image::layer_of(ctx, *both.linear_depth_samples, layer);
+            depth_samples = vk_core::Image::layer_of(ctx, *both.depth_samples, layer);
+            multisample.emplace(
+                passes::MultisampleTargets{*hdr_samples, *linear_depth_samples, *depth_samples});
+        }
+    }
+
+    ForwardImages(const ForwardImages&) = delete;
+    ForwardImages& operator=(const ForwardImages&) = delete;
+
+    passes::ForwardTargets forward_targets(vk::Extent2D area, bool clear_color = false) const {
         return {hdr,
                 depth,
                 linear_depth,
@@ -233,6 +261,73 @@ struct ModeRenderer::View {
                 clear_color,
                 velocity ? &*velocity : nullptr,
                 multisample ? &*multisample : nullptr};
+    }
+};
+
+// The targets and per-frame data of one camera. The eyes' forward images are the layers of one
+// pair of two-layer images, whichever way they are drawn (ModeRenderer::eye_layers_).
+struct ModeRenderer::View : ForwardImages {
+    vk::Extent2D extent;  // the images' size (C: its allocation)
+    vk::Extent2D area;    // the region drawn (C: its viewport, eq. 8)
+    vk_core::Image display;
+    vk_core::Buffer constants;
+    passes::ViewConstants written_constants{};  // what constants holds this frame
+    vk_core::Buffer readback;
+    vk_core::Buffer depth_readback;
+    vk::raii::DescriptorSet forward_set{nullptr};
+    vk::raii::DescriptorSet tonemap_set{nullptr};
+    RgbaImage image;
+    std::vector<float> linear;
+    // TAA: the eyes' two output images (this frame's and the history).
+    std::array<std::optional<vk_core::Image>, 2> history;
+    std::array<vk::raii::DescriptorSet, 2> taa_sets{nullptr, nullptr};
+    std::array<vk::raii::DescriptorSet, 2> tonemap_taa_sets{nullptr, nullptr};
+    glm::dmat4 previous_unjittered{1.0};  // last frame's world -> clip without jitter
+    bool has_previous = false;
+    std::unique_ptr<passes::SsaoView> ssao;
+    std::vector<float> ao;
+    EyeFrameGeometry geometry;
+
+    // A camera with forward images of its own (C).
+    View(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
+        : ForwardImages(ctx, size, features, 1), extent(size), area(size), display(ctx, {size, passes::TonemapPass::kDisplayFormat, kColorTarget}),
+          constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
+                    vk_core::MemoryUse::kHostVisible),
+          readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
+                   vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible),
+          depth_readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
+                         vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {
+        add_history(ctx, features);
+    }
+
+    // An eye: layer `layer` of both eyes' forward images.
+    View(const vk_core::Context& ctx, const ForwardImages& both, std::uint32_t layer,
+         const ViewFeatures& features)
+        : ForwardImages(ctx, both, layer),
+          extent(both.hdr.desc().extent),
+          area(extent),
+          display(ctx, {extent, passes::TonemapPass::kDisplayFormat, kColorTarget}),
+          constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
+                    vk_core::MemoryUse::kHostVisible),
+          readback(ctx, vk::DeviceSize{extent.width} * extent.height * 4,
+                   vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible),
+          depth_readback(ctx, vk::DeviceSize{extent.width} * extent.height * 4,
+                         vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {
+        add_history(ctx, features);
+    }
+
+    passes::ForwardTargets forward_targets(bool clear_color = false) const {
+        return ForwardImages::forward_targets(area, clear_color);
+    }
+
+  private:
+    void add_history(const vk_core::Context& ctx, const ViewFeatures& features) {
+        if (!features.history) return;
+        for (auto& image : history) {
+            image.emplace(ctx, vk_core::ImageDesc{extent, passes::TaaPass::kOutputFormat,
+                                                  vk::ImageUsageFlagBits::eColorAttachment |
+                                                      vk::ImageUsageFlagBits::eSampled});
+        }
     }
 };
 
@@ -282,7 +377,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
       geometry_(ctx, scene),
       shadow_(ctx, options.shadow),
       forward_(ctx, passes::ForwardConfig{options.anti_aliasing == AntiAliasing::kTaa,
-                                          msaa_samples(options.anti_aliasing)}),
+                                          msaa_samples(options.anti_aliasing),
+                                          passes::StereoDuplication::kNone, options.vertex_work}),
       tonemap_(ctx),
       composite_(ctx, options.anti_aliasing == AntiAliasing::kTaa),
       shadow_draws_(ctx, scene.chunks.size()),
@@ -292,20 +388,48 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
       profiler_(ctx) {
     if (options.ssao) ssao_ = std::make_unique<passes::SsaoPass>(ctx, options.ssao_params);
     const std::array pool_sizes = {
-        vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 3),
-        vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 40),
+        vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 4),
+        vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 41),
         vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 1),
     };
     descriptor_pool_ = vk::raii::DescriptorPool(
         ctx.device(), vk::DescriptorPoolCreateInfo(
-                          vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 20, pool_sizes));
+                          vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 21, pool_sizes));
     const vk::DescriptorSetLayout merged_depth_layout = forward_.merged_depth_layout();
     merged_depth_set_ = std::move(vk::raii::DescriptorSets(
         ctx.device(), vk::DescriptorSetAllocateInfo(*descriptor_pool_, merged_depth_layout))[0]);
     const bool taa = options.anti_aliasing == AntiAliasing::kTaa;
-    for (auto& eye : eyes_) {
-        eye = std::make_unique<View>(ctx, eye_extent,
-                                     ViewFeatures{taa, taa, msaa_samples(options.anti_aliasing)});
+    const ViewFeatures eye_features{taa, taa, msaa_samples(options.anti_aliasing)};
+    eye_layers_ = std::make_unique<ForwardImages>(ctx, eye_extent, eye_features, 2);
+    if (options.stereo_pass != StereoPass::kTwoPasses) {
+        const passes::StereoDuplication duplication =
+            options.stereo_pass == StereoPass::kMultiview
+                ? passes::StereoDuplication::kMultiview
+                : passes::StereoDuplication::kGeometryShader;
+        eyes_forward_ = std::make_unique<passes::ForwardPass>(
+            ctx, passes::ForwardConfig{taa, msaa_samples(options.anti_aliasing), duplication,
+                                       options.vertex_work});
+        eye_pair_constants_.emplace(ctx, 2 * sizeof(passes::ViewConstants),
+                                    vk::BufferUsageFlagBits::eUniformBuffer,
+                                    vk_core::MemoryUse::kHostVisible);
+        const vk::DescriptorSetLayout pair_layout = eyes_forward_->set_layout();
+        eye_pair_set_ = std::move(vk::raii::DescriptorSets(
+            ctx.device(), vk::DescriptorSetAllocateInfo(*descriptor_pool_, pair_layout))[0]);
+        const vk::DescriptorBufferInfo constants_info(eye_pair_constants_->handle(), 0,
+                                                      VK_WHOLE_SIZE);
+        const vk::DescriptorImageInfo shadow_info(shadow_.sampler(), shadow_.view(),
+                                                  vk::ImageLayout::eShaderReadOnlyOptimal);
+        const std::array writes = {
+            vk::WriteDescriptorSet(*eye_pair_set_, 0, 0, vk::DescriptorType::eUniformBuffer, {},
+                                   constants_info),
+            vk::WriteDescriptorSet(*eye_pair_set_, 1, 0,
+                                   vk::DescriptorType::eCombinedImageSampler, shadow_info),
+        };
+        ctx.device().updateDescriptorSets(writes, {});
+    }
+    for (std::uint32_t e = 0; e < 2; ++e) {
+        auto& eye = eyes_[e];
+        eye = std::make_unique<View>(ctx, *eye_layers_, e, eye_features);
         const std::array layouts = {forward_.set_layout(), tonemap_.set_layout()};
         vk::raii::DescriptorSets sets(ctx.device(),
                                       vk::DescriptorSetAllocateInfo(*descriptor_pool_, layouts));
@@ -460,6 +584,7 @@ void ModeRenderer::update_view(View& view, const glm::dmat4& view_proj,
     const bool continues = history_valid_ && view.has_previous;
     c.prev_view_proj = glm::mat4(continues ? view.previous_unjittered : unjittered);
     view.constants.write(&c, sizeof(c));
+    view.written_constants = c;
     view.previous_unjittered = unjittered;
     view.has_previous = true;
     view.geometry = {view_proj, position};
@@ -597,6 +722,11 @@ profile::FrameStats ModeRenderer::render_frame(
         }
     }
     culling_.set_frame(cull);
+    if (eye_pair_constants_) {
+        // view_block.glsl's views[2]: left, then right (std140 arrays of this struct are packed).
+        const std::array pair = {eyes_[0]->written_constants, eyes_[1]->written_constants};
+        eye_pair_constants_->write(pair.data(), sizeof(pair));
+    }
 
     // GPU predicates (VK_EXT_conditional_rendering) where the device has them; without, every
     // pass runs and relies on empty draw counts alone.
@@ -654,15 +784,26 @@ profile::FrameStats ModeRenderer::render_frame(
             shadow_.record(cmd, geometry_, shadow_draws_, glm::mat4(light_view_proj));
             profiler_.end_pass(cmd);
         }
-        for (Eye eye : {Eye::kLeft, Eye::kRight}) {
-            const View& view = *eyes_[static_cast<int>(eye)];
-            profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".forward");
-            profiler_.begin_view(cmd, eye_name(eye));
-            forward_.record(cmd, view.forward_targets(), *view.forward_set, *merged_depth_set_,
-                            geometry_, culling_.draws(static_cast<passes::CullView>(eye)),
-                            eye_steps);
+        if (eyes_forward_) {
+            // Both eyes in one pass, from the list of chunks either eye needs.
+            profiler_.begin_pass(cmd, "eyes.forward");
+            profiler_.begin_view(cmd, "eyes");
+            eyes_forward_->record(cmd, eye_layers_->forward_targets(eye_extent_), *eye_pair_set_,
+                                  *merged_depth_set_, geometry_,
+                                  culling_.draws(passes::CullView::kBothEyes), eye_steps);
             profiler_.end_view(cmd);
             profiler_.end_pass(cmd);
+        } else {
+            for (Eye eye : {Eye::kLeft, Eye::kRight}) {
+                const View& view = *eyes_[static_cast<int>(eye)];
+                profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".forward");
+                profiler_.begin_view(cmd, eye_name(eye));
+                forward_.record(cmd, view.forward_targets(), *view.forward_set,
+                                *merged_depth_set_, geometry_,
+                                culling_.draws(static_cast<passes::CullView>(eye)), eye_steps);
+                profiler_.end_view(cmd);
+                profiler_.end_pass(cmd);
+            }
         }
         if (use_mono) {
             if (depth_tested) {
@@ -812,6 +953,7 @@ profile::FrameStats ModeRenderer::render_frame(
     for (profile::ViewStatistics& view : stats.views) {
         if (view.view == "left") view.draws = counts[MONOPLANE_COUNT_LEFT];
         if (view.view == "right") view.draws = counts[MONOPLANE_COUNT_RIGHT];
+        if (view.view == "eyes") view.draws = counts[MONOPLANE_COUNT_BOTH_EYES];
         if (view.view == "mono") {
             view.draws = counts[MONOPLANE_COUNT_MONO];
             view.draws_before_occlusion_culling = counts[MONOPLANE_COUNT_MONO_CANDIDATES];

@@ -1,5 +1,6 @@
 // The render modes of DESIGN.md section 6 as lists of passes over shared resources:
 //   stereo:          culling, shadow*, per eye {forward+sky}, [ssao], per eye {[taa], tonemap}
+//                    (stereo-multiview, stereo-gs: one forward+sky pass for both eyes)
 //   hybrid:          culling, shadow*, per eye {forward n..m, sky only if C has nothing},
 //                    [depth pyramid, [occlusion culling]], C {forward m-eps..f + sky, [ssao]},
 //                    per eye {composite C through M_{E->C}}, [ssao of the near content],
@@ -35,6 +36,24 @@ namespace monoplane::modes {
 
 enum class Mode { kStereo, kHybrid, kHybridFarfield };
 
+// How the eyes' forward passes are drawn, in stereo and in hybrid's near region: one pass per eye,
+// or one pass for both (papers/001's geometry-shader duplication, or VK_KHR_multiview) into the
+// layers of two-layer targets. All three draw the same images (tests/gpu/single_pass_stereo_test).
+enum class StereoPass { kTwoPasses, kMultiview, kGeometryShader };
+std::optional<StereoPass> parse_stereo_pass(const std::string& name);  // "two", "multiview", "gs"
+std::string stereo_pass_name(StereoPass pass);
+
+// A mode as the CLI, protocols and bench.json name it: stereo-multiview and stereo-gs are stereo
+// with a single-pass StereoPass (DESIGN.md section 6).
+struct RenderModeChoice {
+    Mode mode = Mode::kStereo;
+    StereoPass stereo_pass = StereoPass::kTwoPasses;
+};
+std::optional<RenderModeChoice> parse_render_mode(const std::string& name);
+// "stereo", "stereo-multiview", "stereo-gs", "hybrid", "hybrid-farfield" (the hybrid modes'
+// stereo pass is not part of their name).
+std::string render_mode_name(const RenderModeChoice& choice);
+
 // Debug views (DESIGN.md section 6) of the hybrid modes.
 // kRouting (any mode) colours each chunk by the lists the GPU culling put it in: green eyes
 // only, blue C only, magenta both (papers/003's tool for choosing force-mono objects).
@@ -61,6 +80,9 @@ std::string anti_aliasing_name(AntiAliasing aa);
 vk::SampleCountFlagBits msaa_samples(AntiAliasing aa);  // e1 for none and TAA
 
 struct RendererOptions {
+    StereoPass stereo_pass = StereoPass::kTwoPasses;
+    // The benchmark's vertex-heavy configuration (passes::ForwardConfig::vertex_work).
+    std::uint32_t vertex_work = 0;
     passes::ShadowParams shadow;
     passes::TonemapParams tonemap;
     AntiAliasing anti_aliasing = AntiAliasing::kNone;
@@ -134,6 +156,7 @@ class ModeRenderer {
     std::vector<std::uint32_t> drawn_chunks(passes::CullView view) const;
 
   private:
+    struct ForwardImages;
     struct View;
     struct MonoView;
 
@@ -166,6 +189,7 @@ class ModeRenderer {
     passes::SceneGeometry geometry_;
     passes::ShadowPass shadow_;
     passes::ForwardPass forward_;
+    std::unique_ptr<passes::ForwardPass> eyes_forward_;  // single-pass stereo: both eyes at once
     passes::TonemapPass tonemap_;
     passes::CompositePass composite_;
     passes::DrawList shadow_draws_;
@@ -176,6 +200,10 @@ class ModeRenderer {
     profile::FrameProfiler profiler_;
     vk::raii::DescriptorPool descriptor_pool_{nullptr};
     vk::raii::DescriptorSet merged_depth_set_{nullptr};  // after its pool: destroyed before it
+    // Single-pass stereo: both eyes' ViewConstants in one buffer, and eyes_forward_'s set 0.
+    std::optional<vk_core::Buffer> eye_pair_constants_;
+    vk::raii::DescriptorSet eye_pair_set_{nullptr};
+    std::unique_ptr<ForwardImages> eye_layers_;  // both eyes' forward images; outlives eyes_
     std::array<std::unique_ptr<View>, 2> eyes_;
     std::unique_ptr<MonoView> mono_;
     bool mono_rendered_ = false;

@@ -7,11 +7,12 @@ namespace monoplane::profile {
 namespace {
 
 using Stat = vk::QueryPipelineStatisticFlagBits;
-// The order of the results follows the bit order of the flags.
 const vk::QueryPipelineStatisticFlags kStatistics =
     Stat::eInputAssemblyPrimitives | Stat::eVertexShaderInvocations | Stat::eClippingInvocations |
     Stat::eClippingPrimitives | Stat::eFragmentShaderInvocations;
-constexpr std::size_t kStatisticCount = 5;
+// Counted only where the device has geometry shaders (the flags require the feature).
+const vk::QueryPipelineStatisticFlags kGeometryStatistics =
+    Stat::eGeometryShaderInvocations | Stat::eGeometryShaderPrimitives;
 
 }  // namespace
 
@@ -19,9 +20,11 @@ FrameProfiler::FrameProfiler(const vk_core::Context& ctx) : ctx_(ctx) {
     timestamps_ = vk::raii::QueryPool(
         ctx.device(), vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2 * kMaxPasses));
     if (ctx.capabilities().pipeline_statistics) {
+        statistic_flags_ = kStatistics;
+        if (ctx.capabilities().geometry_shader) statistic_flags_ |= kGeometryStatistics;
         statistics_ = vk::raii::QueryPool(
             ctx.device(), vk::QueryPoolCreateInfo({}, vk::QueryType::ePipelineStatistics, kMaxViews,
-                                                  kStatistics));
+                                                  statistic_flags_));
     }
 }
 
@@ -83,17 +86,50 @@ FrameStats FrameProfiler::collect() const {
         stats.gpu_frame_ms = elapsed_ms(ticks.front(), ticks.back());
     }
     if (*statistics_ && !view_names_.empty()) {
+        // One value per enabled flag, in the order of the flags' bits.
+        std::vector<Stat> enabled;
+        for (std::uint32_t bit = 0; bit < 32; ++bit) {
+            const auto flag = static_cast<Stat>(1u << bit);
+            if (statistic_flags_ & flag) enabled.push_back(flag);
+        }
         const auto count = static_cast<std::uint32_t>(view_names_.size());
-        const std::size_t stride = kStatisticCount * sizeof(std::uint64_t);
+        const std::size_t stride = enabled.size() * sizeof(std::uint64_t);
         const auto [result, values] = statistics_.getResults<std::uint64_t>(
             0, count, count * stride, stride,
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
         assert(result == vk::Result::eSuccess);
         for (std::size_t i = 0; i < view_names_.size(); ++i) {
-            const std::uint64_t* v = values.data() + i * kStatisticCount;
-            // Bit order: input assembly primitives (bit 1), vertex shader invocations (bit 2),
-            // clipping invocations (bit 5), clipping primitives (bit 6), fragment invocations (7).
-            stats.views.push_back({view_names_[i], v[0], v[2], v[3], v[1], v[4]});
+            ViewStatistics view;
+            view.view = view_names_[i];
+            for (std::size_t k = 0; k < enabled.size(); ++k) {
+                const std::uint64_t value = values[i * enabled.size() + k];
+                switch (enabled[k]) {
+                    case Stat::eInputAssemblyPrimitives:
+                        view.input_primitives = value;
+                        break;
+                    case Stat::eVertexShaderInvocations:
+                        view.vertex_invocations = value;
+                        break;
+                    case Stat::eGeometryShaderInvocations:
+                        view.geometry_invocations = value;
+                        break;
+                    case Stat::eGeometryShaderPrimitives:
+                        view.geometry_primitives = value;
+                        break;
+                    case Stat::eClippingInvocations:
+                        view.clipping_invocations = value;
+                        break;
+                    case Stat::eClippingPrimitives:
+                        view.clipping_primitives = value;
+                        break;
+                    case Stat::eFragmentShaderInvocations:
+                        view.fragment_invocations = value;
+                        break;
+                    default:
+                        break;
+                }
+            }
+            stats.views.push_back(std::move(view));
         }
     }
     return stats;

@@ -33,6 +33,7 @@ class FrameProfiler {
     const vk_core::Context& ctx_;
     vk::raii::QueryPool timestamps_{nullptr};
     vk::raii::QueryPool statistics_{nullptr};
+    vk::QueryPipelineStatisticFlags statistic_flags_;
     std::vector<std::string> pass_names_;
     std::vector<std::string> view_names_;
     bool pass_open_ = false;

@@ -15,11 +15,15 @@ struct PassTime {
 
 // Counters of VK_QUERY_TYPE_PIPELINE_STATISTICS for all draws of one view.
 struct ViewStatistics {
-    std::string view;                        // "left", "right", later "mono"
+    std::string view;  // "left", "right", "mono", "eyes" (single pass), "left.composite", ...
     std::uint64_t input_primitives = 0;      // input assembly primitives
     std::uint64_t clipping_invocations = 0;  // primitives entering clipping
     std::uint64_t clipping_primitives = 0;   // primitives leaving clipping
     std::uint64_t vertex_invocations = 0;
+    // Geometry shader (single-pass stereo by duplication): invocations (one per input triangle)
+    // and primitives emitted; 0 without a geometry shader or where the device has none.
+    std::uint64_t geometry_invocations = 0;
+    std::uint64_t geometry_primitives = 0;
     std::uint64_t fragment_invocations = 0;
     // Chunks drawn (the GPU culling's indirect draw count); C: after occlusion culling, and
     // before it in draws_before_occlusion_culling. 0 for views that draw no chunks.

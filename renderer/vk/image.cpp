@@ -21,11 +21,26 @@ Image::Image(const Context& ctx, const ImageDesc& desc)
     memory_ = allocate_memory(ctx, image_.getMemoryRequirements(),
                               vk::MemoryPropertyFlagBits::eDeviceLocal);
     image_.bindMemory(*memory_, 0);
+    handle_ = *image_;
     const auto view_type = desc.layers > 1 ? vk::ImageViewType::e2DArray : vk::ImageViewType::e2D;
     view_ = vk::raii::ImageView(
         ctx.device(),
         vk::ImageViewCreateInfo({}, *image_, view_type, desc.format, {},
                                 vk::ImageSubresourceRange(aspect_, 0, 1, 0, desc.layers)));
+}
+
+Image Image::layer_of(const Context& ctx, const Image& parent, std::uint32_t layer) {
+    Image image;
+    image.desc_ = parent.desc_;
+    image.desc_.layers = 1;
+    image.aspect_ = parent.aspect_;
+    image.handle_ = parent.handle_;
+    image.base_layer_ = parent.base_layer_ + layer;
+    image.view_ = vk::raii::ImageView(
+        ctx.device(), vk::ImageViewCreateInfo(
+                          {}, parent.handle_, vk::ImageViewType::e2D, parent.desc_.format, {},
+                          vk::ImageSubresourceRange(image.aspect_, 0, 1, image.base_layer_, 1)));
+    return image;
 }
 
 vk::raii::Sampler make_clamped_sampler(const Context& ctx, vk::Filter filter) {
@@ -42,7 +57,7 @@ void transition(const vk::raii::CommandBuffer& cmd, const Image& image, vk::Imag
     const vk::ImageMemoryBarrier2 barrier(
         src_stage, src_access, dst_stage, dst_access, from, to, VK_QUEUE_FAMILY_IGNORED,
         VK_QUEUE_FAMILY_IGNORED, image.handle(),
-        vk::ImageSubresourceRange(image.aspect(), 0, 1, 0, image.desc().layers));
+        vk::ImageSubresourceRange(image.aspect(), 0, 1, image.base_layer(), image.desc().layers));
     cmd.pipelineBarrier2(vk::DependencyInfo({}, {}, {}, barrier));
 }
 

@@ -1,4 +1,6 @@
-// A 2D image (optionally layered) with its memory and a view over all its layers.
+// A 2D image (optionally layered) with its memory and a view over all its layers, or one layer of
+// such an image (layer_of): what single-pass stereo draws both eyes into, while every later pass
+// reads and writes one eye's layer as if it were an image of its own.
 #pragma once
 
 #include "renderer/vk/context.h"
@@ -17,15 +19,21 @@ class Image {
   public:
     Image() = default;
     Image(const Context& ctx, const ImageDesc& desc);
+    // A 2D view of one layer of `parent`, which must outlive it. Its desc() has one layer, and
+    // transition() and copies address that layer only (base_layer()).
+    static Image layer_of(const Context& ctx, const Image& parent, std::uint32_t layer);
 
-    vk::Image handle() const { return *image_; }
+    vk::Image handle() const { return handle_; }
+    std::uint32_t base_layer() const { return base_layer_; }
     vk::ImageView view() const { return *view_; }
     const ImageDesc& desc() const { return desc_; }
     vk::ImageAspectFlags aspect() const { return aspect_; }
 
   private:
-    vk::raii::Image image_{nullptr};
+    vk::raii::Image image_{nullptr};  // null for a layer of another image
     vk::raii::DeviceMemory memory_{nullptr};
+    vk::Image handle_{};
+    std::uint32_t base_layer_ = 0;
     vk::raii::ImageView view_{nullptr};
     ImageDesc desc_;
     vk::ImageAspectFlags aspect_;

@@ -10,7 +10,11 @@ vk::raii::ShaderModule make_shader(const Context& ctx, std::span<const std::uint
 vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipelineDesc& desc) {
     std::vector<vk::PipelineShaderStageCreateInfo> stages;
     stages.emplace_back(vk::PipelineShaderStageCreateFlags(), vk::ShaderStageFlagBits::eVertex,
-                        desc.vertex, "main");
+                        desc.vertex, "main", desc.vertex_specialization);
+    if (desc.geometry) {
+        stages.emplace_back(vk::PipelineShaderStageCreateFlags(),
+                            vk::ShaderStageFlagBits::eGeometry, desc.geometry, "main");
+    }
     if (desc.fragment) {
         stages.emplace_back(vk::PipelineShaderStageCreateFlags(),
                             vk::ShaderStageFlagBits::eFragment, desc.fragment, "main");
@@ -37,7 +41,8 @@ vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipe
                                              vk::DynamicState::eScissor};
     if (desc.depth_bias) dynamic.push_back(vk::DynamicState::eDepthBias);
     const vk::PipelineDynamicStateCreateInfo dynamic_state({}, dynamic);
-    const vk::PipelineRenderingCreateInfo rendering(0, desc.color_formats, desc.depth_format);
+    const vk::PipelineRenderingCreateInfo rendering(desc.view_mask, desc.color_formats,
+                                                    desc.depth_format);
 
     const vk::GraphicsPipelineCreateInfo info(
         {}, stages, &vertex_input, &input_assembly, nullptr, &viewport, &raster, &multisample,

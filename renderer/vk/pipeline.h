@@ -16,6 +16,9 @@ vk::raii::ShaderModule make_shader(const Context& ctx, std::span<const std::uint
 struct GraphicsPipelineDesc {
     vk::PipelineLayout layout;
     vk::ShaderModule vertex;
+    // Constants the vertex shader's specialization constants take (optional).
+    const vk::SpecializationInfo* vertex_specialization = nullptr;
+    vk::ShaderModule geometry;  // optional (single-pass stereo duplicating primitives)
     vk::ShaderModule fragment;  // may be null for depth-only passes
     std::vector<vk::VertexInputBindingDescription> vertex_bindings;
     std::vector<vk::VertexInputAttributeDescription> vertex_attributes;
@@ -31,6 +34,9 @@ struct GraphicsPipelineDesc {
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
     // Blending of every colour attachment; none by default (the output replaces the target).
     std::optional<vk::PipelineColorBlendAttachmentState> blend;
+    // VK_KHR_multiview: the views each draw covers (bit i: layer i); 0 without multiview. Must
+    // equal the view mask of the rendering the pipeline is used in.
+    std::uint32_t view_mask = 0;
 };
 
 // Viewport and scissor are dynamic state, set by the pass for each target.

@@ -50,7 +50,7 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
       chunks_(vk_core::make_device_buffer(ctx, std::span<const ChunkRecord>(chunk_records(scene)),
                                           vk::BufferUsageFlagBits::eStorageBuffer)),
       commands_(ctx,
-                vk::DeviceSize{MONOPLANE_CULL_VIEWS} * std::max(chunk_count_, 1u) * kCommandSize,
+                vk::DeviceSize{MONOPLANE_CULL_LISTS} * std::max(chunk_count_, 1u) * kCommandSize,
                 vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
                     vk::BufferUsageFlagBits::eTransferSrc,
                 vk_core::MemoryUse::kDeviceLocal),

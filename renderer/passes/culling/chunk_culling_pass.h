@@ -22,7 +22,8 @@ namespace monoplane::passes {
 enum class CullView {
     kLeft = MONOPLANE_CULL_LEFT,
     kRight = MONOPLANE_CULL_RIGHT,
-    kMono = MONOPLANE_CULL_MONO
+    kMono = MONOPLANE_CULL_MONO,
+    kBothEyes = MONOPLANE_CULL_BOTH_EYES,  // a list only: either eye's chunks (single-pass stereo)
 };
 
 // One frame's culling inputs: the world -> clip matrix of each view drawn (reversed Z; the

@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // Sorts the scene's chunks into the views that need them (Fink et al. 2019, Sect. 4.4): the eyes'
 // lists (inside an eye frustum, whose far plane is m in hybrid modes) and C's list (inside C's
-// frustum, whose near plane is m - eps). A chunk straddling the plane lands in all three. Phase 1
-// re-sorts C's list with occlusion culling against the merged depth pyramid of both eyes.
+// frustum, whose near plane is m - eps). A chunk straddling the plane lands in all three. A fourth
+// list holds the chunks of either eye's list, for single-pass stereo. Phase 1 re-sorts C's list
+// with occlusion culling against the merged depth pyramid of both eyes.
 //
 // One workgroup walks the chunks in blocks; a prefix sum per block compacts each view's list in
 // chunk order, so the draw order (and any depth tie) is the same every frame and matches the
@@ -30,8 +31,8 @@ layout(std430, set = 0, binding = 5) buffer Routing { uint routing[]; };
 layout(push_constant) uniform Push { uint phase; };  // 0: frustum, 1: C's occlusion culling
 
 const uint kBlock = 256;
-shared uint scan[MONOPLANE_CULL_VIEWS][kBlock];
-shared uint written[MONOPLANE_CULL_VIEWS];
+shared uint scan[MONOPLANE_CULL_LISTS][kBlock];
+shared uint written[MONOPLANE_CULL_LISTS];
 
 bool outside_frustum(uint view, vec3 lo, vec3 hi) {
     for (uint i = 0; i < 6; ++i) {
@@ -92,12 +93,12 @@ void main() {
     bool occlusion_phase = phase == 1u;
     bool honour_force_mono = (cull.config.w & MONOPLANE_CULL_HONOUR_FORCE_MONO) != 0u;
     bool honour_force_stereo = (cull.config.w & MONOPLANE_CULL_HONOUR_FORCE_STEREO) != 0u;
-    if (lane < MONOPLANE_CULL_VIEWS) written[lane] = 0u;
+    if (lane < MONOPLANE_CULL_LISTS) written[lane] = 0u;
     barrier();
 
     for (uint base = 0; base < chunk_count; base += kBlock) {
         uint index = base + lane;
-        bool visible[MONOPLANE_CULL_VIEWS] = bool[](false, false, false);
+        bool visible[MONOPLANE_CULL_LISTS] = bool[](false, false, false, false);
         if (index < chunk_count) {
             ChunkRecord chunk = chunks[index];
             vec3 lo = chunk.bounds_min.xyz;
@@ -110,6 +111,8 @@ void main() {
                     visible[v] = (views & (1u << v)) != 0u && eyes_allowed &&
                                  !outside_frustum(v, lo, hi);
                 }
+                visible[MONOPLANE_CULL_BOTH_EYES] =
+                    visible[MONOPLANE_CULL_LEFT] || visible[MONOPLANE_CULL_RIGHT];
             }
             visible[MONOPLANE_CULL_MONO] = (views & (1u << MONOPLANE_CULL_MONO)) != 0u &&
                                            mono_allowed &&
@@ -123,19 +126,19 @@ void main() {
                 routing[index] = (routing[index] & ~MONOPLANE_ROUTE_MONO) | MONOPLANE_ROUTE_HIDDEN;
             }
         }
-        for (uint v = 0; v < MONOPLANE_CULL_VIEWS; ++v) scan[v][lane] = visible[v] ? 1u : 0u;
+        for (uint v = 0; v < MONOPLANE_CULL_LISTS; ++v) scan[v][lane] = visible[v] ? 1u : 0u;
         barrier();
         // Inclusive prefix sums (Hillis and Steele) of the block's visibility, per view.
         for (uint offset = 1; offset < kBlock; offset <<= 1) {
-            uint add[MONOPLANE_CULL_VIEWS];
-            for (uint v = 0; v < MONOPLANE_CULL_VIEWS; ++v) {
+            uint add[MONOPLANE_CULL_LISTS];
+            for (uint v = 0; v < MONOPLANE_CULL_LISTS; ++v) {
                 add[v] = lane >= offset ? scan[v][lane - offset] : 0u;
             }
             barrier();
-            for (uint v = 0; v < MONOPLANE_CULL_VIEWS; ++v) scan[v][lane] += add[v];
+            for (uint v = 0; v < MONOPLANE_CULL_LISTS; ++v) scan[v][lane] += add[v];
             barrier();
         }
-        for (uint v = 0; v < MONOPLANE_CULL_VIEWS; ++v) {
+        for (uint v = 0; v < MONOPLANE_CULL_LISTS; ++v) {
             if (!visible[v]) continue;
             ChunkRecord chunk = chunks[index];
             uint slot = v * chunk_count + written[v] + scan[v][lane] - 1u;
@@ -144,7 +147,7 @@ void main() {
             commands[slot] = DrawCommand(chunk.draw.x, 1u, chunk.draw.y, int(chunk.draw.z), index);
         }
         barrier();
-        if (lane < MONOPLANE_CULL_VIEWS) written[lane] += scan[lane][kBlock - 1];
+        if (lane < MONOPLANE_CULL_LISTS) written[lane] += scan[lane][kBlock - 1];
         barrier();
     }
 
@@ -155,6 +158,7 @@ void main() {
             uint near = written[MONOPLANE_CULL_LEFT] + written[MONOPLANE_CULL_RIGHT];
             counts[MONOPLANE_COUNT_LEFT] = written[MONOPLANE_CULL_LEFT];
             counts[MONOPLANE_COUNT_RIGHT] = written[MONOPLANE_CULL_RIGHT];
+            counts[MONOPLANE_COUNT_BOTH_EYES] = written[MONOPLANE_CULL_BOTH_EYES];
             counts[MONOPLANE_COUNT_MONO_CANDIDATES] = mono;
             counts[MONOPLANE_PRED_MONO_ANY] = mono > 0u ? 1u : 0u;
             counts[MONOPLANE_PRED_NEAR_ANY] = near > 0u ? 1u : 0u;

@@ -14,27 +14,33 @@ using vec4 = glm::vec4;
 using uvec4 = glm::uvec4;
 #endif
 
-// Views of the culling pass: the draw list of view v starts at command v * chunk_count.
+// Views of the culling pass, each with its frustum, and the draw lists it writes: list l starts
+// at command l * chunk_count. The last list is no view of its own: the chunks in either eye's
+// list, which single-pass stereo draws once for both eyes.
 #define MONOPLANE_CULL_LEFT 0
 #define MONOPLANE_CULL_RIGHT 1
 #define MONOPLANE_CULL_MONO 2
 #define MONOPLANE_CULL_VIEWS 3
+#define MONOPLANE_CULL_BOTH_EYES 3
+#define MONOPLANE_CULL_LISTS 4
 
 // config.w bits
 #define MONOPLANE_CULL_HONOUR_FORCE_MONO 1u    // kChunkForceMono chunks skip the eyes' lists
 #define MONOPLANE_CULL_HONOUR_FORCE_STEREO 2u  // kChunkForceStereo chunks skip C's list
 
-// Words of the counts buffer (uint32 each). The first three are each view's number of draws;
-// the others are predicates for conditional rendering, written by the frustum phase.
+// Words of the counts buffer (uint32 each). The first four are each list's number of draws (word
+// l counts list l); the others are predicates for conditional rendering, written by the frustum
+// phase.
 #define MONOPLANE_COUNT_LEFT 0
 #define MONOPLANE_COUNT_RIGHT 1
 #define MONOPLANE_COUNT_MONO 2
-#define MONOPLANE_COUNT_MONO_CANDIDATES 3   // C's draws before occlusion culling
-#define MONOPLANE_PRED_MONO_ANY 4           // C has chunks: C, its composite (else the eyes' sky)
-#define MONOPLANE_PRED_NEAR_ANY 5           // an eye has chunks: the merged depth pyramid
-#define MONOPLANE_PRED_MONO_DEPTH_TESTED 6  // both: C may use the pyramid (discard, occlusion)
-#define MONOPLANE_PRED_MONO_UNTESTED 7      // C has chunks and no eye has any: C without it
-#define MONOPLANE_COUNT_WORDS 8
+#define MONOPLANE_COUNT_BOTH_EYES 3
+#define MONOPLANE_COUNT_MONO_CANDIDATES 4   // C's draws before occlusion culling
+#define MONOPLANE_PRED_MONO_ANY 5           // C has chunks: C, its composite (else the eyes' sky)
+#define MONOPLANE_PRED_NEAR_ANY 6           // an eye has chunks: the merged depth pyramid
+#define MONOPLANE_PRED_MONO_DEPTH_TESTED 7  // both: C may use the pyramid (discard, occlusion)
+#define MONOPLANE_PRED_MONO_UNTESTED 8      // C has chunks and no eye has any: C without it
+#define MONOPLANE_COUNT_WORDS 9
 
 // Bits of the routing word each chunk gets per frame (the debug view "routing"): the lists it went
 // to, and whether occlusion culling then took it out of C's.

@@ -4,6 +4,8 @@
 #include <cassert>
 #include <vector>
 
+#include "common/result.h"
+
 namespace monoplane::passes {
 namespace {
 const std::uint32_t kForwardVert[] = {
@@ -46,27 +48,140 @@ const std::uint32_t kSkyDiscardHiddenVelocityFrag[] = {
 #include "sky_discard_hidden_velocity.frag.spv.inc"
 };
 
-// The fragment shaders of one configuration: with or without the velocity output.
-struct FragmentShaders {
+const std::uint32_t kForwardMultiviewVert[] = {
+#include "forward_multiview.vert.spv.inc"
+};
+const std::uint32_t kForwardShowRoutingMultiviewVert[] = {
+#include "forward_show_routing_multiview.vert.spv.inc"
+};
+const std::uint32_t kForwardMultiviewFrag[] = {
+#include "forward_multiview.frag.spv.inc"
+};
+const std::uint32_t kForwardVelocityMultiviewFrag[] = {
+#include "forward_velocity_multiview.frag.spv.inc"
+};
+const std::uint32_t kForwardShowRoutingMultiviewFrag[] = {
+#include "forward_show_routing_multiview.frag.spv.inc"
+};
+const std::uint32_t kForwardShowRoutingVelocityMultiviewFrag[] = {
+#include "forward_show_routing_velocity_multiview.frag.spv.inc"
+};
+const std::uint32_t kSkyMultiviewFrag[] = {
+#include "sky_multiview.frag.spv.inc"
+};
+const std::uint32_t kSkyVelocityMultiviewFrag[] = {
+#include "sky_velocity_multiview.frag.spv.inc"
+};
+const std::uint32_t kForwardGsVert[] = {
+#include "forward_gs.vert.spv.inc"
+};
+const std::uint32_t kForwardShowRoutingGsVert[] = {
+#include "forward_show_routing_gs.vert.spv.inc"
+};
+const std::uint32_t kForwardGsFrag[] = {
+#include "forward_gs.frag.spv.inc"
+};
+const std::uint32_t kForwardVelocityGsFrag[] = {
+#include "forward_velocity_gs.frag.spv.inc"
+};
+const std::uint32_t kForwardShowRoutingGsFrag[] = {
+#include "forward_show_routing_gs.frag.spv.inc"
+};
+const std::uint32_t kForwardShowRoutingVelocityGsFrag[] = {
+#include "forward_show_routing_velocity_gs.frag.spv.inc"
+};
+const std::uint32_t kSkyGsFrag[] = {
+#include "sky_gs.frag.spv.inc"
+};
+const std::uint32_t kSkyVelocityGsFrag[] = {
+#include "sky_velocity_gs.frag.spv.inc"
+};
+const std::uint32_t kStereoDuplicateGeom[] = {
+#include "stereo_duplicate.geom.spv.inc"
+};
+const std::uint32_t kStereoDuplicateShowRoutingGeom[] = {
+#include "stereo_duplicate_show_routing.geom.spv.inc"
+};
+const std::uint32_t kStereoDuplicateSkyGeom[] = {
+#include "stereo_duplicate_sky.geom.spv.inc"
+};
+
+// The shaders of one configuration. The single-pass forms have no discard-hidden variants: those
+// are C's, drawn one view at a time.
+struct ShaderSet {
+    std::span<const std::uint32_t> vertex, show_routing_vertex;
+    std::span<const std::uint32_t> geometry, show_routing_geometry, sky_geometry;  // GS form only
     std::span<const std::uint32_t> forward, discard_hidden, show_routing, sky, sky_discard_hidden;
 };
 
-FragmentShaders fragment_shaders(bool velocity) {
-    if (velocity) {
-        return {kForwardVelocityFrag, kForwardDiscardHiddenVelocityFrag,
-                kForwardShowRoutingVelocityFrag, kSkyVelocityFrag, kSkyDiscardHiddenVelocityFrag};
+ShaderSet shader_set(const ForwardConfig& config) {
+    const bool v = config.velocity;
+    switch (config.stereo) {
+        case StereoDuplication::kMultiview:
+            return {kForwardMultiviewVert,
+                    kForwardShowRoutingMultiviewVert,
+                    {},
+                    {},
+                    {},
+                    v ? std::span<const std::uint32_t>(kForwardVelocityMultiviewFrag)
+                      : kForwardMultiviewFrag,
+                    {},
+                    v ? std::span<const std::uint32_t>(kForwardShowRoutingVelocityMultiviewFrag)
+                      : kForwardShowRoutingMultiviewFrag,
+                    v ? std::span<const std::uint32_t>(kSkyVelocityMultiviewFrag)
+                      : kSkyMultiviewFrag,
+                    {}};
+        case StereoDuplication::kGeometryShader:
+            return {kForwardGsVert,
+                    kForwardShowRoutingGsVert,
+                    kStereoDuplicateGeom,
+                    kStereoDuplicateShowRoutingGeom,
+                    kStereoDuplicateSkyGeom,
+                    v ? std::span<const std::uint32_t>(kForwardVelocityGsFrag) : kForwardGsFrag,
+                    {},
+                    v ? std::span<const std::uint32_t>(kForwardShowRoutingVelocityGsFrag)
+                      : kForwardShowRoutingGsFrag,
+                    v ? std::span<const std::uint32_t>(kSkyVelocityGsFrag) : kSkyGsFrag,
+                    {}};
+        case StereoDuplication::kNone:
+            break;
     }
-    return {kForwardFrag, kForwardDiscardHiddenFrag, kForwardShowRoutingFrag, kSkyFrag,
-            kSkyDiscardHiddenFrag};
+    if (v) {
+        return {kForwardVert,
+                kForwardShowRoutingVert,
+                {},
+                {},
+                {},
+                kForwardVelocityFrag,
+                kForwardDiscardHiddenVelocityFrag,
+                kForwardShowRoutingVelocityFrag,
+                kSkyVelocityFrag,
+                kSkyDiscardHiddenVelocityFrag};
+    }
+    return {kForwardVert,       kForwardShowRoutingVert, {},       {},
+            {},                 kForwardFrag,            kForwardDiscardHiddenFrag,
+            kForwardShowRoutingFrag, kSkyFrag,           kSkyDiscardHiddenFrag};
 }
 }  // namespace
 
 ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& config)
     : config_(config) {
     using Stage = vk::ShaderStageFlagBits;
+    const bool gs = config.stereo == StereoDuplication::kGeometryShader;
+    if (gs && !ctx.capabilities().geometry_shader) {
+        throw UserError("device '" + ctx.device_info().name +
+                        "' has no geometry shaders: single-pass stereo by primitive duplication "
+                        "(stereo-gs, --stereo-pass gs) is not available; try multiview");
+    }
+    if (config.stereo == StereoDuplication::kMultiview && !ctx.capabilities().multiview) {
+        throw UserError("device '" + ctx.device_info().name +
+                        "' has no VK_KHR_multiview: stereo-multiview (--stereo-pass multiview) is "
+                        "not available; try gs");
+    }
+    const vk::ShaderStageFlags constant_stages =
+        Stage::eVertex | Stage::eFragment | (gs ? Stage::eGeometry : vk::ShaderStageFlags());
     const std::array bindings = {
-        vk::DescriptorSetLayoutBinding(0, vk::DescriptorType::eUniformBuffer, 1,
-                                       Stage::eVertex | Stage::eFragment),
+        vk::DescriptorSetLayoutBinding(0, vk::DescriptorType::eUniformBuffer, 1, constant_stages),
         vk::DescriptorSetLayoutBinding(1, vk::DescriptorType::eCombinedImageSampler, 1,
                                        Stage::eFragment),
     };
@@ -79,52 +194,73 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& confi
     };
     merged_depth_layout_ = vk::raii::DescriptorSetLayout(
         ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, set1_bindings));
-    // One layout for all pipelines; set 1 is bound only for kChunksDiscardHidden.
+    // One layout for all pipelines; set 1 is bound only for the steps that read it.
     const std::array set_layouts = {*set_layout_, *merged_depth_layout_};
     layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layouts));
 
-    const FragmentShaders frag = fragment_shaders(config.velocity);
+    const ShaderSet shaders = shader_set(config);
+    auto module = [&](std::span<const std::uint32_t> spirv) {
+        return spirv.empty() ? vk::raii::ShaderModule(nullptr) : vk_core::make_shader(ctx, spirv);
+    };
     std::vector<vk::Format> color_formats = {kHdrFormat, kLinearDepthFormat};
     if (config.velocity) color_formats.push_back(kVelocityFormat);
-    const vk::raii::ShaderModule forward_vert = vk_core::make_shader(ctx, kForwardVert);
-    const vk::raii::ShaderModule forward_frag = vk_core::make_shader(ctx, frag.forward);
+    const std::uint32_t view_mask = config.stereo == StereoDuplication::kMultiview ? 0b11u : 0u;
+    // forward_vertex.glsl's kVertexWork (constant_id 0).
+    const auto vertex_work = static_cast<std::int32_t>(config.vertex_work);
+    const vk::SpecializationMapEntry work_entry(0, 0, sizeof(vertex_work));
+    const vk::SpecializationInfo vertex_specialization(1, &work_entry, sizeof(vertex_work),
+                                                       &vertex_work);
+    const vk::raii::ShaderModule forward_vert = module(shaders.vertex);
+    const vk::raii::ShaderModule forward_geom = module(shaders.geometry);
+    const vk::raii::ShaderModule forward_frag = module(shaders.forward);
     vk_core::GraphicsPipelineDesc geometry;
     geometry.layout = *layout_;
     geometry.vertex = *forward_vert;
+    geometry.vertex_specialization = &vertex_specialization;
+    geometry.geometry = *forward_geom;
     geometry.fragment = *forward_frag;
     geometry.vertex_bindings = SceneGeometry::vertex_bindings();
     geometry.vertex_attributes = SceneGeometry::vertex_attributes();
     geometry.color_formats = color_formats;
     geometry.depth_format = kDepthFormat;
     geometry.samples = config.samples;
+    geometry.view_mask = view_mask;
     geometry_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
-    const vk::raii::ShaderModule discard_frag = vk_core::make_shader(ctx, frag.discard_hidden);
-    geometry.fragment = *discard_frag;
-    discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
-    const vk::raii::ShaderModule routing_vert = vk_core::make_shader(ctx, kForwardShowRoutingVert);
-    const vk::raii::ShaderModule routing_frag = vk_core::make_shader(ctx, frag.show_routing);
+    if (!shaders.discard_hidden.empty()) {
+        const vk::raii::ShaderModule discard_frag = module(shaders.discard_hidden);
+        geometry.fragment = *discard_frag;
+        discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
+    }
+    const vk::raii::ShaderModule routing_vert = module(shaders.show_routing_vertex);
+    const vk::raii::ShaderModule routing_geom = module(shaders.show_routing_geometry);
+    const vk::raii::ShaderModule routing_frag = module(shaders.show_routing);
     geometry.vertex = *routing_vert;
+    geometry.geometry = *routing_geom;
     geometry.fragment = *routing_frag;
     show_routing_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
 
     // The sky covers only pixels still at the cleared far depth (0 with reversed Z).
     const vk::raii::ShaderModule fullscreen_vert = vk_core::make_shader(ctx, kFullscreenVert);
-    const vk::raii::ShaderModule sky_frag = vk_core::make_shader(ctx, frag.sky);
+    const vk::raii::ShaderModule sky_geom = module(shaders.sky_geometry);
+    const vk::raii::ShaderModule sky_frag = module(shaders.sky);
     vk_core::GraphicsPipelineDesc sky;
     sky.layout = *layout_;
     sky.vertex = *fullscreen_vert;
+    sky.geometry = *sky_geom;
     sky.fragment = *sky_frag;
     sky.color_formats = color_formats;
     sky.depth_format = kDepthFormat;
     sky.samples = config.samples;
+    sky.view_mask = view_mask;
     sky.cull = vk::CullModeFlagBits::eNone;
     sky.depth_write = false;
     sky.depth_compare = vk::CompareOp::eEqual;
     sky_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
-    const vk::raii::ShaderModule sky_discard_frag =
-        vk_core::make_shader(ctx, frag.sky_discard_hidden);
-    sky.fragment = *sky_discard_frag;
-    sky_discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
+    if (!shaders.sky_discard_hidden.empty()) {
+        const vk::raii::ShaderModule sky_discard_frag = module(shaders.sky_discard_hidden);
+        sky.fragment = *sky_discard_frag;
+        sky_discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
+    }
 }
 
 void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
@@ -187,9 +323,15 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
         depth_image.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
         vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
         vk::ClearValue(vk::ClearDepthStencilValue(0.0f, 0)));  // reversed Z: far is 0
+    // Single-pass stereo draws both layers of the targets: every draw covers both views with
+    // multiview; the geometry shader picks the layer of each triangle it emits otherwise.
+    const bool gs = config_.stereo == StereoDuplication::kGeometryShader;
+    const bool multiview = config_.stereo == StereoDuplication::kMultiview;
+    assert(targets.hdr.desc().layers == (config_.stereo == StereoDuplication::kNone ? 1u : 2u));
     cmd.beginRendering(vk::RenderingInfo()
                            .setRenderArea(vk::Rect2D({0, 0}, targets.area))
-                           .setLayerCount(1)
+                           .setLayerCount(gs ? 2 : 1)
+                           .setViewMask(multiview ? 0b11u : 0u)
                            .setColorAttachments(colors)
                            .setPDepthAttachment(&depth));
     vk_core::set_viewport_and_scissor(cmd, targets.area);
@@ -203,6 +345,7 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                     chunks.record(cmd);
                     break;
                 case ForwardStep::kChunksDiscardHidden:
+                    assert(*discard_hidden_pipeline_);
                     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
                                            merged_depth_set, {});
                     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *discard_hidden_pipeline_);
@@ -219,6 +362,7 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                     cmd.draw(3, 1, 0, 0);
                     break;
                 case ForwardStep::kSkyDiscardHidden:
+                    assert(*sky_discard_hidden_pipeline_);
                     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
                                            merged_depth_set, {});
                     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,

@@ -40,9 +40,22 @@ struct ForwardTargets {
     const MultisampleTargets* multisample = nullptr;
 };
 
+// How one forward pass draws both eyes, or kNone for a pass drawing one view. With a form, the
+// targets are two-layer images (layer 0 the left eye, 1 the right) and set 0's constants are both
+// eyes' ViewConstants in that order (renderer/passes/shared/view_block.glsl).
+enum class StereoDuplication {
+    kNone,
+    kMultiview,       // VK_KHR_multiview: every draw covers both layers, gl_ViewIndex picks the eye
+    kGeometryShader,  // papers/001: vertices shaded once, each triangle emitted into both layers
+};
+
 struct ForwardConfig {
     bool velocity = false;  // write screen-space velocity (TAA)
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;  // MSAA (stereo modes)
+    StereoDuplication stereo = StereoDuplication::kNone;
+    // The benchmark's vertex-heavy configuration: rounds of synthetic per-vertex work that leave
+    // the image unchanged (forward_vertex.glsl); 0 in normal rendering.
+    std::uint32_t vertex_work = 0;
 };
 
 // What a forward pass draws, in order; each step may run under a GPU predicate.
@@ -77,7 +90,8 @@ class ForwardPass {
 
     // Expects the targets in eUndefined (their contents are replaced); leaves the colour targets
     // (velocity included) in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
-    // merged_depth_set is needed only by the *DiscardHidden and kChunksShowRouting steps.
+    // merged_depth_set is needed only by the *DiscardHidden and kChunksShowRouting steps, which
+    // a single-pass stereo configuration does not have (they are C's).
     void record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
                 vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
                 const SceneGeometry& geometry, const IndirectDraws& chunks,

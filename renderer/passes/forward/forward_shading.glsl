@@ -1,9 +1,12 @@
-// The body of forward.frag and forward_discard_hidden.frag (compiled twice).
+// The body of forward.frag and its variants (discard hidden, show routing, velocity, and the
+// single-pass stereo forms of view_block.glsl).
 // Forward shading as in Fink et al. 2019, Sect. 5: a directional light with a shadow map and
 // 3x3 percentage-closer filtering, sky reflections, albedo (procedural patterns), HDR output.
-#include "renderer/passes/shared/view_constants.h"
-
-layout(std140, set = 0, binding = 0) uniform ViewBlock { ViewConstants view; };
+#ifdef MONOPLANE_STEREO_GS
+layout(location = 5) flat in int in_view;  // the eye stereo_duplicate.geom drew this copy for
+#define MONOPLANE_VIEW_INDEX in_view
+#endif
+#include "renderer/passes/shared/view_block.glsl"
 layout(set = 0, binding = 1) uniform sampler2DShadow shadow_map;
 #ifdef MONOPLANE_DISCARD_HIDDEN_IN_EYES
 // The merged depth pyramid of both eyes (renderer/passes/depth_pyramid), mip 0 = level 2.

@@ -1,8 +1,11 @@
-// The body of forward.vert and forward_show_routing.vert (compiled twice).
-#include "renderer/passes/shared/view_constants.h"
+// The body of forward.vert and forward_show_routing.vert (compiled twice, and again for
+// single-pass stereo: MONOPLANE_STEREO_MULTIVIEW projects into the view gl_ViewIndex names;
+// MONOPLANE_STEREO_GS projects nothing, stereo_duplicate.geom does it once per eye).
+#ifdef MONOPLANE_STEREO_GS
+#define MONOPLANE_VIEW_INDEX 0  // the eyes share everything this stage reads
+#endif
+#include "renderer/passes/shared/view_block.glsl"
 #include "renderer/passes/shared/scene_vertex.glsl"
-
-layout(std140, set = 0, binding = 0) uniform ViewBlock { ViewConstants view; };
 
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
@@ -12,13 +15,29 @@ layout(location = 3) flat out uint out_material;
 layout(location = 4) flat out uint out_chunk;  // the draw's first instance: its chunk index
 #endif
 
+// The benchmark's vertex-heavy configuration (papers/001 Table 1: single-pass stereo gains most
+// where vertices cost most): rounds of dependent per-vertex arithmetic, as skinning or procedural
+// animation would cost. 0 (the default) compiles it out. The result is added times
+// view.view_blend.w, which is always 0: the work cannot be skipped, the image does not change.
+layout(constant_id = 0) const int kVertexWork = 0;
+
+vec3 vertex_work(vec3 p) {
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < kVertexWork; ++i) sum += sin(p * float(i + 1) + sum.zxy);
+    return sum;
+}
+
 void main() {
-    out_world = in_position;
+    vec3 world = in_position;
+    if (kVertexWork > 0) world += view.view_blend.w * vertex_work(in_position);
+    out_world = world;
     out_normal = in_normal;
     out_albedo = in_albedo.rgb;
     out_material = in_material;
 #ifdef MONOPLANE_SHOW_ROUTING
     out_chunk = uint(gl_InstanceIndex);
 #endif
-    gl_Position = view.view_proj * vec4(in_position, 1.0);
+#ifndef MONOPLANE_STEREO_GS
+    gl_Position = view.view_proj * vec4(world, 1.0);
+#endif
 }

@@ -1,7 +1,10 @@
-// The body of sky.frag and sky_discard_hidden.frag (compiled twice).
+// The body of sky.frag and its variants (discard hidden, velocity, single-pass stereo).
 // The sky behind the geometry: drawn after it where the depth buffer still holds the far plane.
-#include "renderer/passes/shared/view_constants.h"
-layout(std140, set = 0, binding = 0) uniform ViewBlock { ViewConstants view; };
+#ifdef MONOPLANE_STEREO_GS
+layout(location = 5) flat in int in_view;  // the eye stereo_duplicate.geom drew this copy for
+#define MONOPLANE_VIEW_INDEX in_view
+#endif
+#include "renderer/passes/shared/view_block.glsl"
 #ifdef MONOPLANE_DISCARD_HIDDEN_IN_EYES
 // The merged depth pyramid of both eyes (renderer/passes/depth_pyramid), mip 0 = level 2.
 layout(set = 1, binding = 0) uniform sampler2D merged_depth;
