@@ -24,6 +24,10 @@ void add_ratios_to_stereo(BenchReport& report) {
             run.primitive_ratio =
                 static_cast<double>(run.primitives) / static_cast<double>(reference.primitives);
         }
+        if (reference.vertex_invocations > 0) {
+            run.vertex_invocation_ratio = static_cast<double>(run.vertex_invocations) /
+                                          static_cast<double>(reference.vertex_invocations);
+        }
     }
 }
 
@@ -46,11 +50,13 @@ std::string bench_json(const BenchReport& report) {
     j.value("width", report.width).value("height", report.height);
     j.value("detail", report.detail).value("view", report.view).value("seed", report.seed);
     j.value("anti_aliasing", report.anti_aliasing).value("ssao", report.ssao);
+    j.value("vertex_work", static_cast<std::uint64_t>(report.vertex_work));
     j.value("warmup_frames", report.warmup).value("frames", report.frames);
     j.begin_array("runs");
     for (const BenchRun& run : report.runs) {
         j.begin_object();
         j.value("scene", run.scene).value("mode", run.mode).value("variant", run.variant);
+        j.value("stereo_pass", run.stereo_pass);
         optional_value(j, "mono_plane", run.mono_plane);
         j.value("mono_plane_is_far", run.mono_plane_is_far);
         j.value("frame_ms_median", run.frame_ms_median).value("frame_ms_p90", run.frame_ms_p90);
@@ -65,6 +71,8 @@ std::string bench_json(const BenchReport& report) {
         for (const auto& [name, ms] : run.pass_ms_p90) j.value(name, ms);
         j.end_object();
         j.value("primitives", run.primitives).value("fragments", run.fragments);
+        j.value("vertex_invocations", run.vertex_invocations);
+        j.value("geometry_invocations", run.geometry_invocations);
         j.begin_object("view_primitives");
         for (const auto& [view, n] : run.view_primitives) j.value(view, n);
         j.end_object();
@@ -81,6 +89,12 @@ std::string bench_json(const BenchReport& report) {
         optional_value(j, "time_ratio_vs_stereo", run.time_ratio);
         optional_value(j, "stereo_frame_ms_median", run.stereo_frame_ms_median);
         optional_value(j, "primitive_ratio_vs_stereo", run.primitive_ratio);
+        optional_value(j, "vertex_invocation_ratio_vs_stereo", run.vertex_invocation_ratio);
+        if (run.max_channel_difference) {
+            j.value("max_channel_difference_vs_stereo", *run.max_channel_difference);
+        } else {
+            j.null("max_channel_difference_vs_stereo");
+        }
         j.end_object();
     }
     j.end_array();
@@ -109,7 +123,9 @@ std::string bench_csv(const BenchReport& report) {
     csv << "scene,mode,variant,mono_plane,mono_plane_is_far,frame_ms_median,frame_ms_p10,"
            "frame_ms_p90,cpu_ms_median,primitives,fragments,primitives_left,primitives_right,"
            "primitives_mono,draws_left,draws_right,draws_mono,ssim_vs_stereo,max_error_px,"
-           "drift_px,time_ratio_vs_stereo,primitive_ratio_vs_stereo";
+           "drift_px,time_ratio_vs_stereo,primitive_ratio_vs_stereo,stereo_pass,"
+           "vertex_invocations,geometry_invocations,vertex_invocation_ratio_vs_stereo,"
+           "max_channel_difference_vs_stereo";
     for (const std::string& name : pass_names) csv << ",pass_ms_" << name;
     csv << "\n";
     auto count = [](const std::map<std::string, std::uint64_t>& values, const char* key) {
@@ -126,7 +142,10 @@ std::string bench_csv(const BenchReport& report) {
             << "," << count(run.view_draws, "left") << "," << count(run.view_draws, "right") << ","
             << count(run.view_draws, "mono") << "," << number(run.ssim_vs_stereo) << ","
             << number(run.max_error_px) << "," << number(run.drift_px) << ","
-            << number(run.time_ratio) << "," << number(run.primitive_ratio);
+            << number(run.time_ratio) << "," << number(run.primitive_ratio) << ","
+            << run.stereo_pass << "," << run.vertex_invocations << ","
+            << run.geometry_invocations << "," << number(run.vertex_invocation_ratio) << ","
+            << (run.max_channel_difference ? std::to_string(*run.max_channel_difference) : "");
         for (const std::string& name : pass_names) {
             const auto found = run.pass_ms_median.find(name);
             csv << ",";

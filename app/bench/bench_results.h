@@ -12,7 +12,10 @@ namespace monoplane::app {
 
 struct BenchRun {
     std::string scene;
-    std::string mode;                  // stereo, hybrid, hybrid-farfield
+    std::string mode;  // stereo, stereo-multiview, stereo-gs, hybrid, hybrid-farfield
+    // How the eyes' forward passes were drawn: two, multiview or gs (for stereo-multiview and
+    // stereo-gs, their form; for the hybrid modes, their near passes').
+    std::string stereo_pass = "two";
     std::string variant;               // hybrid: no-opt, discard, occlusion-cull; otherwise empty
     std::optional<double> mono_plane;  // none for stereo
     bool mono_plane_is_far = false;    // m = f: C skipped, hybrid records stereo's passes
@@ -31,17 +34,25 @@ struct BenchRun {
     std::map<std::string, std::uint64_t> view_fragments;  // every view, composites included
     std::uint64_t primitives = 0;
     std::uint64_t fragments = 0;  // all views, composites included
+    // Vertex and geometry shader invocations of the scene views (papers/001: single-pass stereo
+    // shades each vertex once for both eyes).
+    std::uint64_t vertex_invocations = 0;
+    std::uint64_t geometry_invocations = 0;
     // Accuracy against stereo (hybrid modes below far).
     std::optional<double> ssim_vs_stereo;  // mean of both eyes, Gaussian SSIM
     std::optional<double> max_error_px;    // analytic supremum (rig)
     std::optional<double> drift_px;        // measured: 95th percentile of patch displacements
     std::size_t drift_patches = 0;
+    // Single-pass stereo: the largest channel difference (8-bit levels) of either eye's image
+    // from two-pass stereo's; 0 or 1 where they draw the same images.
+    std::optional<int> max_channel_difference;
     // Ratios to stereo in the same run (same scene and resolution): time as the median of
     // per-frame ratios to stereo frames rendered in between (bench_command.cpp), primitives to
     // the scene's stereo run.
     std::optional<double> time_ratio;
     std::optional<double> stereo_frame_ms_median;  // of the interleaved stereo frames
     std::optional<double> primitive_ratio;
+    std::optional<double> vertex_invocation_ratio;  // to the scene's stereo run
 };
 
 struct BenchReport {
@@ -53,13 +64,14 @@ struct BenchReport {
     std::string view;
     std::string anti_aliasing = "none";  // of every run, the stereo reference included
     std::string ssao = "off";
+    std::uint32_t vertex_work = 0;  // the vertex-heavy configuration's rounds (0: none)
     std::uint64_t seed = 0;
     int warmup = 0;
     int frames = 0;
     std::vector<BenchRun> runs;
 };
 
-// Fills time_ratio and primitive_ratio from each scene's stereo run.
+// Fills time_ratio, primitive_ratio and vertex_invocation_ratio from each scene's stereo run.
 void add_ratios_to_stereo(BenchReport& report);
 
 std::string bench_json(const BenchReport& report);

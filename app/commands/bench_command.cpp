@@ -4,6 +4,7 @@
 // Speed is reported as ratios to stereo within one run (DESIGN.md section 9).
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -53,6 +54,8 @@ struct BenchOptions {
     bool accuracy = true;
     std::string anti_aliasing = "none";
     std::string ssao = "off";
+    std::string stereo_pass = "two";
+    std::uint32_t vertex_work = 0;
     std::string out;
 };
 
@@ -185,6 +188,8 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
         run.view_fragments[v.view] = v.fragment_invocations;
         if (v.view.find('.') != std::string::npos) continue;  // composites: not scene work
         run.primitives += v.clipping_invocations;
+        run.vertex_invocations += v.vertex_invocations;
+        run.geometry_invocations += v.geometry_invocations;
         run.view_primitives[v.view] = v.clipping_invocations;
         run.view_draws[v.view] = v.draws;
     }
@@ -202,6 +207,23 @@ struct Accuracy {
     double drift_px = 0.0;
     std::size_t drift_patches = 0;
 };
+
+// Single-pass stereo against two-pass stereo: the largest channel difference of either eye.
+int max_channel_difference(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs,
+                           const Reference& reference) {
+    renderer.set_read_back(true);
+    renderer.render_frame(inputs);
+    renderer.set_read_back(false);
+    int largest = 0;
+    for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
+        const std::vector<std::uint8_t>& a = reference.images[static_cast<int>(eye)].pixels;
+        const std::vector<std::uint8_t>& b = renderer.eye_image(eye).pixels;
+        for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+            largest = std::max(largest, std::abs(int{a[i]} - int{b[i]}));
+        }
+    }
+    return largest;
+}
 
 Accuracy measure_accuracy(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs,
                           const Reference& reference) {
@@ -234,16 +256,23 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
         if (!id) throw UserError("--scenes: '" + name + "' is not beams, landscape or spheres");
         scene_ids.push_back(*id);
     }
-    std::vector<modes::Mode> mode_list;
+    std::vector<modes::RenderModeChoice> mode_list;
     for (const std::string& name : split_list(o.modes)) {
-        const auto mode = modes::parse_mode(name);
+        const auto mode = modes::parse_render_mode(name);
         if (!mode) {
             throw UserError("--modes: '" + name +
-                            "' is not stereo, hybrid or hybrid-farfield (the single-pass stereo "
-                            "modes arrive with their issue)");
+                            "' is not stereo, stereo-multiview, stereo-gs, hybrid or "
+                            "hybrid-farfield");
         }
         mode_list.push_back(*mode);
     }
+    const auto hybrid_stereo_pass = modes::parse_stereo_pass(o.stereo_pass);
+    if (!hybrid_stereo_pass) {
+        throw UserError("--stereo-pass " + o.stereo_pass + ": use two, multiview or gs");
+    }
+    auto is_two_pass_stereo = [](const modes::RenderModeChoice& m) {
+        return m.mode == modes::Mode::kStereo && m.stereo_pass == modes::StereoPass::kTwoPasses;
+    };
     std::vector<modes::MonoCulling> variants;
     for (const std::string& name : split_list(o.variants)) {
         const auto variant = modes::parse_mono_culling(name);
@@ -272,9 +301,11 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
 
     modes::RendererOptions renderer_options;
     apply_image_quality_flags(o.anti_aliasing, o.ssao, renderer_options);
+    renderer_options.vertex_work = o.vertex_work;
     if (modes::msaa_samples(renderer_options.anti_aliasing) != vk::SampleCountFlagBits::e1 &&
-        std::any_of(mode_list.begin(), mode_list.end(),
-                    [](modes::Mode m) { return m != modes::Mode::kStereo; })) {
+        std::any_of(mode_list.begin(), mode_list.end(), [](const modes::RenderModeChoice& m) {
+            return m.mode != modes::Mode::kStereo;
+        })) {
         throw UserError(
             "--anti-aliasing " + o.anti_aliasing +
             " works in stereo mode only (docs/hybrid.md, \"MSAA: stereo only, and why\"): add "
@@ -284,11 +315,11 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     std::cerr << "device: " << ctx->device_info().name << "\n";
 
     int total = 0;
-    for (modes::Mode mode : mode_list) {
-        if (mode == modes::Mode::kStereo) total += 1;
-        if (mode == modes::Mode::kHybrid)
+    for (const modes::RenderModeChoice& choice : mode_list) {
+        if (choice.mode == modes::Mode::kStereo) total += 1;
+        if (choice.mode == modes::Mode::kHybrid)
             total += static_cast<int>(planes.size() * variants.size());
-        if (mode == modes::Mode::kHybridFarfield) total += static_cast<int>(planes.size());
+        if (choice.mode == modes::Mode::kHybridFarfield) total += static_cast<int>(planes.size());
     }
     total *= static_cast<int>(scene_ids.size());
     Progress progress(total);
@@ -304,6 +335,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     report.seed = o.seed;
     report.anti_aliasing = o.anti_aliasing;
     report.ssao = o.ssao;
+    report.vertex_work = o.vertex_work;
     report.warmup = o.warmup;
     report.frames = o.frames;
 
@@ -322,11 +354,12 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
         Reference reference;
         modes::RendererOptions stereo_options = renderer_options;
         stereo_options.read_back_depth = true;
+        stereo_options.stereo_pass = modes::StereoPass::kTwoPasses;
         modes::ModeRenderer stereo(*ctx, scene, modes::Mode::kStereo, extent, stereo_options);
         const modes::FrameInputs stereo_inputs = inputs;
         {
-            const bool timed = std::find(mode_list.begin(), mode_list.end(),
-                                         modes::Mode::kStereo) != mode_list.end();
+            const bool timed =
+                std::any_of(mode_list.begin(), mode_list.end(), is_two_pass_stereo);
             if (timed) {
                 progress.show(done, scene_name + " stereo");
                 BenchRun run = measure(stereo, inputs, o);
@@ -345,9 +378,30 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
             }
         }
 
-        for (modes::Mode mode : mode_list) {
-            if (mode == modes::Mode::kStereo) continue;
-            modes::ModeRenderer renderer(*ctx, scene, mode, extent, renderer_options, nearest);
+        for (const modes::RenderModeChoice& choice : mode_list) {
+            if (is_two_pass_stereo(choice)) continue;
+            const modes::Mode mode = choice.mode;
+            modes::RendererOptions options = renderer_options;
+            options.stereo_pass =
+                mode == modes::Mode::kStereo ? choice.stereo_pass : *hybrid_stereo_pass;
+            const std::string pass_name = modes::stereo_pass_name(options.stereo_pass);
+            if (mode == modes::Mode::kStereo) {
+                // Single-pass stereo: the same images as stereo in one pass (papers/001).
+                const std::string name = modes::render_mode_name(choice);
+                progress.show(done, scene_name + " " + name);
+                modes::ModeRenderer renderer(*ctx, scene, mode, extent, options);
+                BenchRun run = measure(renderer, inputs, o, &stereo, &stereo_inputs);
+                run.scene = scene_name;
+                run.mode = name;
+                run.stereo_pass = pass_name;
+                if (o.accuracy) {
+                    run.max_channel_difference = max_channel_difference(renderer, inputs, reference);
+                }
+                report.runs.push_back(std::move(run));
+                ++done;
+                continue;
+            }
+            modes::ModeRenderer renderer(*ctx, scene, mode, extent, options, nearest);
             const std::vector<modes::MonoCulling> mode_variants =
                 mode == modes::Mode::kHybrid ? variants : std::vector{modes::MonoCulling::kNoOpt};
             for (const Plane& plane : planes) {
@@ -364,6 +418,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
                     BenchRun run = measure(renderer, inputs, o, &stereo, &stereo_inputs);
                     run.scene = scene_name;
                     run.mode = modes::mode_name(mode);
+                    run.stereo_pass = pass_name;
                     if (mode == modes::Mode::kHybrid)
                         run.variant = modes::mono_culling_name(variant);
                     run.mono_plane = plane.metres;
@@ -398,9 +453,14 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
         if (!run.time_ratio || run.mode == "stereo") continue;
         std::cerr << "  " << std::left << std::setw(10) << run.scene << std::setw(16) << run.mode
                   << std::setw(15) << run.variant << " m " << std::setw(6)
-                  << (run.mono_plane_is_far ? std::string("far") : plane_text(*run.mono_plane))
+                  << (!run.mono_plane        ? std::string("-")
+                      : run.mono_plane_is_far ? std::string("far")
+                                              : plane_text(*run.mono_plane))
                   << " time " << std::fixed << std::setprecision(2) << *run.time_ratio
-                  << "x  primitives " << run.primitive_ratio.value_or(0.0) << "x";
+                  << "x  primitives " << run.primitive_ratio.value_or(0.0) << "x  vertices "
+                  << run.vertex_invocation_ratio.value_or(0.0) << "x";
+        if (run.max_channel_difference)
+            std::cerr << "  max difference " << *run.max_channel_difference << "/255";
         if (run.ssim_vs_stereo)
             std::cerr << "  SSIM " << std::setprecision(4) << *run.ssim_vs_stereo;
         std::cerr << std::defaultfloat << "\n";
@@ -415,7 +475,10 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
     CLI::App* cmd = root.add_subcommand(
         "bench", "Measure time, primitives and accuracy over scenes x modes x mono planes");
     cmd->add_option("--scenes", options->scenes, "Comma-separated scenes")->capture_default_str();
-    cmd->add_option("--modes", options->modes, "Comma-separated modes")->capture_default_str();
+    cmd->add_option("--modes", options->modes,
+                    "Comma-separated modes: stereo, stereo-multiview, stereo-gs, hybrid, "
+                    "hybrid-farfield")
+        ->capture_default_str();
     cmd->add_option("--variants", options->variants,
                     "hybrid's variants (papers/000 Sect. 5.1): no-opt, discard, occlusion-cull")
         ->capture_default_str();
@@ -445,6 +508,15 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
                     "none, taa or msaa2|msaa4|msaa8 for every run (MSAA: stereo modes only)")
         ->capture_default_str();
     cmd->add_option("--ssao", options->ssao, "off, per-eye or stereo for every run")
+        ->capture_default_str();
+    cmd->add_option("--stereo-pass", options->stereo_pass,
+                    "The hybrid modes' near passes: two, multiview or gs (single-pass stereo is "
+                    "measured by --modes stereo-multiview,stereo-gs)")
+        ->capture_default_str();
+    cmd->add_option("--vertex-work", options->vertex_work,
+                    "Vertex-heavy configuration (papers/001 Table 1): rounds of synthetic "
+                    "per-vertex work in every run (0: none; the images do not change)")
+        ->check(CLI::Range(0, 4096))
         ->capture_default_str();
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->callback([options, &global] { run_bench(*options, global); });
