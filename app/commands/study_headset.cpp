@@ -101,11 +101,14 @@ modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const ri
     return inputs;
 }
 
-modes::Mode renderer_mode(study::RenderMode mode) {
-    const auto parsed = modes::parse_mode(std::string(study::render_mode_name(mode)));
+// The renderer's mode and stereo pass for a protocol's mode name (stereo-multiview and stereo-gs
+// are stereo drawn in one pass).
+modes::RenderModeChoice renderer_mode(study::RenderMode mode) {
+    const auto parsed = modes::parse_render_mode(std::string(study::render_mode_name(mode)));
     if (!parsed) {
         throw UserError("render mode " + std::string(study::render_mode_name(mode)) +
-                        " is not implemented yet; use stereo, hybrid or hybrid-farfield");
+                        " is not implemented; use stereo, stereo-multiview, stereo-gs, hybrid or "
+                        "hybrid-farfield");
     }
     return *parsed;
 }
@@ -127,8 +130,11 @@ class StudyRenderers {
             for (study::RenderMode mode : protocol.alternatives) {
                 const auto key = std::make_pair(name, mode);
                 if (renderers_.count(key)) continue;
+                const modes::RenderModeChoice choice = renderer_mode(mode);
+                modes::RendererOptions mode_options = options;
+                mode_options.stereo_pass = choice.stereo_pass;
                 renderers_[key] = std::make_unique<modes::ModeRenderer>(
-                    ctx, *scene, renderer_mode(mode), extent, options, nearest);
+                    ctx, *scene, choice.mode, extent, mode_options, nearest);
             }
             scenes_[name] = std::move(scene);
         }

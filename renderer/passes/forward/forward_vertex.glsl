@@ -38,6 +38,9 @@ void main() {
     out_chunk = uint(gl_InstanceIndex);
 #endif
 #ifndef MONOPLANE_STEREO_GS
-    gl_Position = view.view_proj * vec4(world, 1.0);
+    // precise (no fused multiply-add): stereo_duplicate.geom computes the same product and must
+    // round it the same way, or a pixel on a triangle's edge may be covered in one form only.
+    precise vec4 clip = view.view_proj * vec4(world, 1.0);
+    gl_Position = clip;
 #endif
 }

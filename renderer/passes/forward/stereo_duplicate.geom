@@ -56,7 +56,8 @@ bool outside_one_plane(vec4 a, vec4 b, vec4 c) {
 
 void main() {
     for (int eye = 0; eye < 2; ++eye) {
-        vec4 clip[3];
+        // precise, as in forward_vertex.glsl: the same rounding as two-pass stereo's.
+        precise vec4 clip[3];
         for (int i = 0; i < 3; ++i) clip[i] = views[eye].view_proj * vec4(in_world[i], 1.0);
         if (outside_one_plane(clip[0], clip[1], clip[2])) continue;
         for (int i = 0; i < 3; ++i) {
