@@ -143,8 +143,8 @@ std::string bench_csv(const BenchReport& report) {
             << count(run.view_draws, "mono") << "," << number(run.ssim_vs_stereo) << ","
             << number(run.max_error_px) << "," << number(run.drift_px) << ","
             << number(run.time_ratio) << "," << number(run.primitive_ratio) << ","
-            << run.stereo_pass << "," << run.vertex_invocations << ","
-            << run.geometry_invocations << "," << number(run.vertex_invocation_ratio) << ","
+            << run.stereo_pass << "," << run.vertex_invocations << "," << run.geometry_invocations
+            << "," << number(run.vertex_invocation_ratio) << ","
             << (run.max_channel_difference ? std::to_string(*run.max_channel_difference) : "");
         for (const std::string& name : pass_names) {
             const auto found = run.pass_ms_median.find(name);

@@ -4,8 +4,8 @@
 // Speed is reported as ratios to stereo within one run (DESIGN.md section 9).
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -358,8 +358,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
         modes::ModeRenderer stereo(*ctx, scene, modes::Mode::kStereo, extent, stereo_options);
         const modes::FrameInputs stereo_inputs = inputs;
         {
-            const bool timed =
-                std::any_of(mode_list.begin(), mode_list.end(), is_two_pass_stereo);
+            const bool timed = std::any_of(mode_list.begin(), mode_list.end(), is_two_pass_stereo);
             if (timed) {
                 progress.show(done, scene_name + " stereo");
                 BenchRun run = measure(stereo, inputs, o);
@@ -395,7 +394,8 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
                 run.mode = name;
                 run.stereo_pass = pass_name;
                 if (o.accuracy) {
-                    run.max_channel_difference = max_channel_difference(renderer, inputs, reference);
+                    run.max_channel_difference =
+                        max_channel_difference(renderer, inputs, reference);
                 }
                 report.runs.push_back(std::move(run));
                 ++done;
@@ -453,7 +453,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
         if (!run.time_ratio || run.mode == "stereo") continue;
         std::cerr << "  " << std::left << std::setw(10) << run.scene << std::setw(16) << run.mode
                   << std::setw(15) << run.variant << " m " << std::setw(6)
-                  << (!run.mono_plane        ? std::string("-")
+                  << (!run.mono_plane         ? std::string("-")
                       : run.mono_plane_is_far ? std::string("far")
                                               : plane_text(*run.mono_plane))
                   << " time " << std::fixed << std::setprecision(2) << *run.time_ratio

@@ -58,10 +58,9 @@ std::string joined(const std::vector<std::string>& names) {
 }
 
 std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& choice,
-                         const hmd::HmdProfile& profile,
-                         const scenes::Scene& scene, const vk_core::Context& ctx, int width,
-                         int height, const FrameSummary& s, const std::optional<rig::Rig>& rig,
-                         const modes::RgbaImage* mono,
+                         const hmd::HmdProfile& profile, const scenes::Scene& scene,
+                         const vk_core::Context& ctx, int width, int height, const FrameSummary& s,
+                         const std::optional<rig::Rig>& rig, const modes::RgbaImage* mono,
                          const std::optional<StereoComparison>& comparison,
                          const std::optional<quality::InconsistencyMap>& ao,
                          const std::filesystem::path& out) {

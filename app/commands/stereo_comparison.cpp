@@ -32,9 +32,9 @@ StereoComparison compare_with_stereo(const vk_core::Context& ctx, const scenes::
             quality::ssim(a, b, quality::SsimOptions::box(4)).value_or_throw();
         c.ssim_local_w4 = local.mean;
         for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
-            c.max_channel_difference = std::max(
-                c.max_channel_difference, std::abs(int{reference.pixels[i]} -
-                                                   int{approximation.pixels[i]}));
+            c.max_channel_difference =
+                std::max(c.max_channel_difference,
+                         std::abs(int{reference.pixels[i]} - int{approximation.pixels[i]}));
         }
 
         // The far region: where the reference sees something beyond the mono plane.

@@ -41,10 +41,10 @@ void copy_to_buffer(const vk::raii::CommandBuffer& cmd, const vk_core::Image& im
                         Access::eColorAttachmentWrite, Stage::eTransfer, Access::eTransferRead);
     cmd.copyImageToBuffer(
         image.handle(), vk::ImageLayout::eTransferSrcOptimal, buffer.handle(),
-        vk::BufferImageCopy(0, 0, 0,
-                            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0,
-                                                       image.base_layer(), 1),
-                            {0, 0, 0}, vk::Extent3D(extent, 1)));
+        vk::BufferImageCopy(
+            0, 0, 0,
+            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, image.base_layer(), 1),
+            {0, 0, 0}, vk::Extent3D(extent, 1)));
 }
 
 void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image) {
@@ -205,10 +205,10 @@ struct ModeRenderer::ForwardImages {
                   std::uint32_t layers)
         : hdr(ctx, {size, passes::ForwardPass::kHdrFormat, kColorTarget, layers}),
           // Sampled: the merged depth pyramid reads the eyes' depth.
-          depth(ctx, {size, passes::ForwardPass::kDepthFormat,
-                      vk::ImageUsageFlagBits::eDepthStencilAttachment |
-                          vk::ImageUsageFlagBits::eSampled,
-                      layers}),
+          depth(ctx,
+                {size, passes::ForwardPass::kDepthFormat,
+                 vk::ImageUsageFlagBits::eDepthStencilAttachment | vk::ImageUsageFlagBits::eSampled,
+                 layers}),
           linear_depth(ctx, {size, passes::ForwardPass::kLinearDepthFormat, kColorTarget, layers}) {
         if (features.velocity) {
             velocity.emplace(ctx, vk_core::ImageDesc{size, passes::ForwardPass::kVelocityFormat,
@@ -290,7 +290,10 @@ struct ModeRenderer::View : ForwardImages {
 
     // A camera with forward images of its own (C).
     View(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
-        : ForwardImages(ctx, size, features, 1), extent(size), area(size), display(ctx, {size, passes::TonemapPass::kDisplayFormat, kColorTarget}),
+        : ForwardImages(ctx, size, features, 1),
+          extent(size),
+          area(size),
+          display(ctx, {size, passes::TonemapPass::kDisplayFormat, kColorTarget}),
           constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
                     vk_core::MemoryUse::kHostVisible),
           readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
@@ -422,8 +425,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
         const std::array writes = {
             vk::WriteDescriptorSet(*eye_pair_set_, 0, 0, vk::DescriptorType::eUniformBuffer, {},
                                    constants_info),
-            vk::WriteDescriptorSet(*eye_pair_set_, 1, 0,
-                                   vk::DescriptorType::eCombinedImageSampler, shadow_info),
+            vk::WriteDescriptorSet(*eye_pair_set_, 1, 0, vk::DescriptorType::eCombinedImageSampler,
+                                   shadow_info),
         };
         ctx.device().updateDescriptorSets(writes, {});
     }
@@ -798,9 +801,9 @@ profile::FrameStats ModeRenderer::render_frame(
                 const View& view = *eyes_[static_cast<int>(eye)];
                 profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".forward");
                 profiler_.begin_view(cmd, eye_name(eye));
-                forward_.record(cmd, view.forward_targets(), *view.forward_set,
-                                *merged_depth_set_, geometry_,
-                                culling_.draws(static_cast<passes::CullView>(eye)), eye_steps);
+                forward_.record(cmd, view.forward_targets(), *view.forward_set, *merged_depth_set_,
+                                geometry_, culling_.draws(static_cast<passes::CullView>(eye)),
+                                eye_steps);
                 profiler_.end_view(cmd);
                 profiler_.end_pass(cmd);
             }

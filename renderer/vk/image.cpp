@@ -13,10 +13,9 @@ Image::Image(const Context& ctx, const ImageDesc& desc)
     : desc_(desc),
       aspect_(is_depth_format(desc.format) ? vk::ImageAspectFlagBits::eDepth
                                            : vk::ImageAspectFlagBits::eColor) {
-    const vk::ImageCreateInfo info({}, vk::ImageType::e2D, desc.format,
-                                   vk::Extent3D(desc.extent, 1), 1, desc.layers,
-                                   desc.samples, vk::ImageTiling::eOptimal,
-                                   desc.usage, vk::SharingMode::eExclusive);
+    const vk::ImageCreateInfo info(
+        {}, vk::ImageType::e2D, desc.format, vk::Extent3D(desc.extent, 1), 1, desc.layers,
+        desc.samples, vk::ImageTiling::eOptimal, desc.usage, vk::SharingMode::eExclusive);
     image_ = vk::raii::Image(ctx.device(), info);
     memory_ = allocate_memory(ctx, image_.getMemoryRequirements(),
                               vk::MemoryPropertyFlagBits::eDeviceLocal);

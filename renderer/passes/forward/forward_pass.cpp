@@ -118,19 +118,19 @@ ShaderSet shader_set(const ForwardConfig& config) {
     const bool v = config.velocity;
     switch (config.stereo) {
         case StereoDuplication::kMultiview:
-            return {kForwardMultiviewVert,
-                    kForwardShowRoutingMultiviewVert,
-                    {},
-                    {},
-                    {},
-                    v ? std::span<const std::uint32_t>(kForwardVelocityMultiviewFrag)
-                      : kForwardMultiviewFrag,
-                    {},
-                    v ? std::span<const std::uint32_t>(kForwardShowRoutingVelocityMultiviewFrag)
-                      : kForwardShowRoutingMultiviewFrag,
-                    v ? std::span<const std::uint32_t>(kSkyVelocityMultiviewFrag)
-                      : kSkyMultiviewFrag,
-                    {}};
+            return {
+                kForwardMultiviewVert,
+                kForwardShowRoutingMultiviewVert,
+                {},
+                {},
+                {},
+                v ? std::span<const std::uint32_t>(kForwardVelocityMultiviewFrag)
+                  : kForwardMultiviewFrag,
+                {},
+                v ? std::span<const std::uint32_t>(kForwardShowRoutingVelocityMultiviewFrag)
+                  : kForwardShowRoutingMultiviewFrag,
+                v ? std::span<const std::uint32_t>(kSkyVelocityMultiviewFrag) : kSkyMultiviewFrag,
+                {}};
         case StereoDuplication::kGeometryShader:
             return {kForwardGsVert,
                     kForwardShowRoutingGsVert,
@@ -158,9 +158,16 @@ ShaderSet shader_set(const ForwardConfig& config) {
                 kSkyVelocityFrag,
                 kSkyDiscardHiddenVelocityFrag};
     }
-    return {kForwardVert,       kForwardShowRoutingVert, {},       {},
-            {},                 kForwardFrag,            kForwardDiscardHiddenFrag,
-            kForwardShowRoutingFrag, kSkyFrag,           kSkyDiscardHiddenFrag};
+    return {kForwardVert,
+            kForwardShowRoutingVert,
+            {},
+            {},
+            {},
+            kForwardFrag,
+            kForwardDiscardHiddenFrag,
+            kForwardShowRoutingFrag,
+            kSkyFrag,
+            kSkyDiscardHiddenFrag};
 }
 }  // namespace
 
