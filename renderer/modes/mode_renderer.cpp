@@ -264,8 +264,8 @@ struct ModeRenderer::ForwardImages {
     }
 };
 
-// The targets and per-frame data of one camera. The eyes' forward images are the layers of one
-// pair of two-layer images, whichever way they are drawn (ModeRenderer::eye_layers_).
+// The targets and per-frame data of one camera. With single-pass stereo the eyes' forward images
+// are the layers of one set of two-layer images (ModeRenderer::eye_layers_).
 struct ModeRenderer::View : ForwardImages {
     vk::Extent2D extent;  // the images' size (C: its allocation)
     vk::Extent2D area;    // the region drawn (C: its viewport, eq. 8)
@@ -288,7 +288,7 @@ struct ModeRenderer::View : ForwardImages {
     std::vector<float> ao;
     EyeFrameGeometry geometry;
 
-    // A camera with forward images of its own (C).
+    // A camera with forward images of its own (C, and the eyes of two-pass stereo).
     View(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
         : ForwardImages(ctx, size, features, 1),
           extent(size),
@@ -403,8 +403,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
         ctx.device(), vk::DescriptorSetAllocateInfo(*descriptor_pool_, merged_depth_layout))[0]);
     const bool taa = options.anti_aliasing == AntiAliasing::kTaa;
     const ViewFeatures eye_features{taa, taa, msaa_samples(options.anti_aliasing)};
-    eye_layers_ = std::make_unique<ForwardImages>(ctx, eye_extent, eye_features, 2);
     if (options.stereo_pass != StereoPass::kTwoPasses) {
+        eye_layers_ = std::make_unique<ForwardImages>(ctx, eye_extent, eye_features, 2);
         const passes::StereoDuplication duplication =
             options.stereo_pass == StereoPass::kMultiview
                 ? passes::StereoDuplication::kMultiview
@@ -432,7 +432,10 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
     }
     for (std::uint32_t e = 0; e < 2; ++e) {
         auto& eye = eyes_[e];
-        eye = std::make_unique<View>(ctx, *eye_layers_, e, eye_features);
+        // Two passes draw into images of each eye's own: lavapipe (Mesa 22.3) does not resolve
+        // MSAA into a layer other than 0 of a layered image.
+        eye = eye_layers_ ? std::make_unique<View>(ctx, *eye_layers_, e, eye_features)
+                          : std::make_unique<View>(ctx, eye_extent, eye_features);
         const std::array layouts = {forward_.set_layout(), tonemap_.set_layout()};
         vk::raii::DescriptorSets sets(ctx.device(),
                                       vk::DescriptorSetAllocateInfo(*descriptor_pool_, layouts));

@@ -203,7 +203,8 @@ class ModeRenderer {
     // Single-pass stereo: both eyes' ViewConstants in one buffer, and eyes_forward_'s set 0.
     std::optional<vk_core::Buffer> eye_pair_constants_;
     vk::raii::DescriptorSet eye_pair_set_{nullptr};
-    std::unique_ptr<ForwardImages> eye_layers_;  // both eyes' forward images; outlives eyes_
+    // Single-pass stereo: both eyes' forward images as two-layer images; outlives eyes_.
+    std::unique_ptr<ForwardImages> eye_layers_;
     std::array<std::unique_ptr<View>, 2> eyes_;
     std::unique_ptr<MonoView> mono_;
     bool mono_rendered_ = false;
