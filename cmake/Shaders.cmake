@@ -4,30 +4,15 @@
 # included as `static const uint32_t kWords[] = {#include "a.vert.spv.inc"};`.
 function(monoplane_embed_shaders)
   cmake_parse_arguments(ARG "" "TARGET" "SOURCES" ${ARGN})
-  file(RELATIVE_PATH rel_dir ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})
-  set(out_dir ${PROJECT_BINARY_DIR}/shaders/${rel_dir})
-  file(MAKE_DIRECTORY ${out_dir})
-  set(outputs "")
   foreach(src ${ARG_SOURCES})
     get_filename_component(name ${src} NAME)
-    set(out ${out_dir}/${name}.spv.inc)
-    add_custom_command(
-      OUTPUT ${out}
-      COMMAND Vulkan::glslc --target-env=vulkan1.3 -O -Werror -mfmt=num
-              -I ${PROJECT_SOURCE_DIR} -MD -MF ${out}.d
-              -o ${out} ${CMAKE_CURRENT_SOURCE_DIR}/${src}
-      DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${src}
-      DEPFILE ${out}.d
-      COMMENT "glslc ${rel_dir}/${name}"
-      VERBATIM)
-    list(APPEND outputs ${out})
+    monoplane_embed_shader_variant(TARGET ${ARG_TARGET} SOURCE ${src} NAME ${name})
   endforeach()
-  target_sources(${ARG_TARGET} PRIVATE ${outputs})
-  target_include_directories(${ARG_TARGET} PRIVATE ${out_dir})
 endfunction()
 
-# Compiles SOURCE again with -D for each of DEFINES into NAME.spv.inc: the variants of a shader
-# that differ only in preprocessor switches (e.g. single-pass stereo), without a file for each.
+# monoplane_embed_shader_variant(TARGET target SOURCE a.frag NAME a_gs.frag [DEFINES X Y])
+# Compiles SOURCE with -D for each of DEFINES into NAME.spv.inc: also the variants of a shader that
+# differ only in preprocessor switches (e.g. single-pass stereo), without a file for each.
 function(monoplane_embed_shader_variant)
   cmake_parse_arguments(ARG "" "TARGET;SOURCE;NAME" "DEFINES" ${ARGN})
   file(RELATIVE_PATH rel_dir ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})
@@ -45,7 +30,7 @@ function(monoplane_embed_shader_variant)
             -o ${out} ${CMAKE_CURRENT_SOURCE_DIR}/${ARG_SOURCE}
     DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${ARG_SOURCE}
     DEPFILE ${out}.d
-    COMMENT "glslc ${rel_dir}/${ARG_NAME} (${ARG_SOURCE} ${define_flags})"
+    COMMENT "glslc ${rel_dir}/${ARG_NAME}"
     VERBATIM)
   target_sources(${ARG_TARGET} PRIVATE ${out})
   target_include_directories(${ARG_TARGET} PRIVATE ${out_dir})

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -25,6 +24,7 @@
 #include "app/commands/validation_report.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
+#include "renderer/quality/channel_difference.h"
 #include "renderer/quality/drift.h"
 #include "renderer/quality/ssim.h"
 #include "renderer/vk/context.h"
@@ -216,11 +216,10 @@ int max_channel_difference(modes::ModeRenderer& renderer, const modes::FrameInpu
     renderer.set_read_back(false);
     int largest = 0;
     for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
-        const std::vector<std::uint8_t>& a = reference.images[static_cast<int>(eye)].pixels;
-        const std::vector<std::uint8_t>& b = renderer.eye_image(eye).pixels;
-        for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
-            largest = std::max(largest, std::abs(int{a[i]} - int{b[i]}));
-        }
+        largest = std::max(largest, quality::max_channel_difference(
+                                        quality::rgba_view(reference.images[static_cast<int>(eye)]),
+                                        quality::rgba_view(renderer.eye_image(eye)))
+                                        .value_or_throw());
     }
     return largest;
 }
@@ -266,10 +265,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
         }
         mode_list.push_back(*mode);
     }
-    const auto hybrid_stereo_pass = modes::parse_stereo_pass(o.stereo_pass);
-    if (!hybrid_stereo_pass) {
-        throw UserError("--stereo-pass " + o.stereo_pass + ": use two, multiview or gs");
-    }
+    const modes::StereoPass hybrid_stereo_pass = parse_stereo_pass_flag(o.stereo_pass);
     auto is_two_pass_stereo = [](const modes::RenderModeChoice& m) {
         return m.mode == modes::Mode::kStereo && m.stereo_pass == modes::StereoPass::kTwoPasses;
     };
@@ -382,7 +378,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
             const modes::Mode mode = choice.mode;
             modes::RendererOptions options = renderer_options;
             options.stereo_pass =
-                mode == modes::Mode::kStereo ? choice.stereo_pass : *hybrid_stereo_pass;
+                mode == modes::Mode::kStereo ? choice.stereo_pass : hybrid_stereo_pass;
             const std::string pass_name = modes::stereo_pass_name(options.stereo_pass);
             if (mode == modes::Mode::kStereo) {
                 // Single-pass stereo: the same images as stereo in one pass (papers/001).

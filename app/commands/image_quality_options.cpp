@@ -16,4 +16,10 @@ void apply_image_quality_flags(const std::string& anti_aliasing, const std::stri
     if (!options.ssao) throw UserError("--ssao " + ssao + ": use off, per-eye or stereo");
 }
 
+modes::StereoPass parse_stereo_pass_flag(const std::string& stereo_pass) {
+    const auto pass = modes::parse_stereo_pass(stereo_pass);
+    if (!pass) throw UserError("--stereo-pass " + stereo_pass + ": use two, multiview or gs");
+    return *pass;
+}
+
 }  // namespace monoplane::app

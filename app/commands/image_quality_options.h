@@ -1,4 +1,4 @@
-// --anti-aliasing and --ssao, as `render` and `bench` take them.
+// --anti-aliasing, --ssao and --stereo-pass, as `render` and `bench` take them.
 #pragma once
 
 #include <string>
@@ -11,5 +11,8 @@ namespace monoplane::app {
 // msaa8", "off|per-eye|stereo"); throws UserError naming the flag for any other value.
 void apply_image_quality_flags(const std::string& anti_aliasing, const std::string& ssao,
                                modes::RendererOptions& options);
+
+// --stereo-pass's value ("two|multiview|gs"); throws UserError naming the flag for any other.
+modes::StereoPass parse_stereo_pass_flag(const std::string& stereo_pass);
 
 }  // namespace monoplane::app

@@ -163,15 +163,14 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
                         "hybrid-farfield");
     }
     if (!o.stereo_pass.empty()) {
-        const auto pass = modes::parse_stereo_pass(o.stereo_pass);
-        if (!pass) throw UserError("--stereo-pass " + o.stereo_pass + ": use two, multiview or gs");
-        if (choice->stereo_pass != modes::StereoPass::kTwoPasses && *pass != choice->stereo_pass) {
+        const modes::StereoPass pass = parse_stereo_pass_flag(o.stereo_pass);
+        if (choice->stereo_pass != modes::StereoPass::kTwoPasses && pass != choice->stereo_pass) {
             throw UserError("--stereo-pass " + o.stereo_pass + " contradicts --mode " + o.mode);
         }
-        choice->stereo_pass = *pass;
+        choice->stereo_pass = pass;
     }
-    const std::optional<modes::Mode> mode = choice->mode;
-    if (*mode != modes::Mode::kStereo && !o.mono_plane) {
+    const modes::Mode mode = choice->mode;
+    if (mode != modes::Mode::kStereo && !o.mono_plane) {
         throw UserError("--mode " + o.mode + " needs --mono-plane M (metres)");
     }
     const auto mono_culling = modes::parse_mono_culling(o.mono_culling);
@@ -227,7 +226,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
 
     renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
     modes::ModeRenderer renderer(
-        *ctx, scene, *mode,
+        *ctx, scene, mode,
         vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
         renderer_options);
     modes::FrameInputs inputs;
@@ -266,7 +265,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     }
     std::optional<StereoComparison> comparison;
     if (o.compare_stereo &&
-        (*mode != modes::Mode::kStereo || choice->stereo_pass != modes::StereoPass::kTwoPasses)) {
+        (mode != modes::Mode::kStereo || choice->stereo_pass != modes::StereoPass::kTwoPasses)) {
         std::cerr << "rendering the stereo reference for SSIM\n";
         comparison = compare_with_stereo(
             *ctx, scene,

@@ -1,8 +1,7 @@
 #include "app/commands/stereo_comparison.h"
 
-#include <cstdlib>
-
 #include "app/png.h"
+#include "renderer/quality/channel_difference.h"
 #include "renderer/quality/heat_map.h"
 #include "renderer/quality/ssim.h"
 
@@ -31,11 +30,7 @@ StereoComparison compare_with_stereo(const vk_core::Context& ctx, const scenes::
         const quality::SsimResult local =
             quality::ssim(a, b, quality::SsimOptions::box(4)).value_or_throw();
         c.ssim_local_w4 = local.mean;
-        for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
-            c.max_channel_difference =
-                std::max(c.max_channel_difference,
-                         std::abs(int{reference.pixels[i]} - int{approximation.pixels[i]}));
-        }
+        c.max_channel_difference = quality::max_channel_difference(a, b).value_or_throw();
 
         // The far region: where the reference sees something beyond the mono plane.
         const std::vector<float>& depth = stereo.eye_linear_depth(eye);

@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 
 #include "common/result.h"
 #include "renderer/modes/farfield_rig.h"
@@ -56,115 +58,102 @@ void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& im
 
 }  // namespace
 
-std::optional<Mode> parse_mode(const std::string& name) {
-    if (name == "stereo") return Mode::kStereo;
-    if (name == "hybrid") return Mode::kHybrid;
-    if (name == "hybrid-farfield") return Mode::kHybridFarfield;
+namespace {
+
+// Each enum's CLI names, for parse_* and *_name alike.
+template <class Enum>
+using NameTable = std::initializer_list<std::pair<Enum, const char*>>;
+
+constexpr NameTable<Mode> kModeNames = {{Mode::kStereo, "stereo"},
+                                        {Mode::kHybrid, "hybrid"},
+                                        {Mode::kHybridFarfield, "hybrid-farfield"}};
+constexpr NameTable<StereoPass> kStereoPassNames = {{StereoPass::kTwoPasses, "two"},
+                                                    {StereoPass::kMultiview, "multiview"},
+                                                    {StereoPass::kGeometryShader, "gs"}};
+// The stereo mode's name with each stereo pass (DESIGN.md section 6).
+constexpr NameTable<StereoPass> kStereoModeNames = {{StereoPass::kTwoPasses, "stereo"},
+                                                    {StereoPass::kMultiview, "stereo-multiview"},
+                                                    {StereoPass::kGeometryShader, "stereo-gs"}};
+constexpr NameTable<DebugView> kDebugViewNames = {{DebugView::kNone, "none"},
+                                                  {DebugView::kTintMono, "tint-mono"},
+                                                  {DebugView::kStereoOnly, "stereo-only"},
+                                                  {DebugView::kMonoOnly, "mono-only"},
+                                                  {DebugView::kRouting, "routing"}};
+constexpr NameTable<MonoCulling> kMonoCullingNames = {
+    {MonoCulling::kNoOpt, "no-opt"},
+    {MonoCulling::kDiscard, "discard"},
+    {MonoCulling::kOcclusionCull, "occlusion-cull"}};
+constexpr NameTable<AntiAliasing> kAntiAliasingNames = {{AntiAliasing::kNone, "none"},
+                                                        {AntiAliasing::kTaa, "taa"},
+                                                        {AntiAliasing::kMsaa2, "msaa2"},
+                                                        {AntiAliasing::kMsaa4, "msaa4"},
+                                                        {AntiAliasing::kMsaa8, "msaa8"}};
+
+template <class Enum>
+std::optional<Enum> parse_name(NameTable<Enum> table, const std::string& name) {
+    for (const auto& [value, text] : table) {
+        if (name == text) return value;
+    }
     return std::nullopt;
+}
+
+template <class Enum>
+std::string name_of(NameTable<Enum> table, Enum value) {
+    for (const auto& [entry, text] : table) {
+        if (entry == value) return text;
+    }
+    return "?";
+}
+
+}  // namespace
+
+std::optional<Mode> parse_mode(const std::string& name) {
+    return parse_name(kModeNames, name);
 }
 
 std::string mode_name(Mode mode) {
-    switch (mode) {
-        case Mode::kStereo:
-            return "stereo";
-        case Mode::kHybrid:
-            return "hybrid";
-        case Mode::kHybridFarfield:
-            return "hybrid-farfield";
-    }
-    return "?";
+    return name_of(kModeNames, mode);
 }
 
 std::optional<StereoPass> parse_stereo_pass(const std::string& name) {
-    if (name == "two") return StereoPass::kTwoPasses;
-    if (name == "multiview") return StereoPass::kMultiview;
-    if (name == "gs") return StereoPass::kGeometryShader;
-    return std::nullopt;
+    return parse_name(kStereoPassNames, name);
 }
 
 std::string stereo_pass_name(StereoPass pass) {
-    switch (pass) {
-        case StereoPass::kTwoPasses:
-            return "two";
-        case StereoPass::kMultiview:
-            return "multiview";
-        case StereoPass::kGeometryShader:
-            return "gs";
-    }
-    return "?";
+    return name_of(kStereoPassNames, pass);
 }
 
 std::optional<RenderModeChoice> parse_render_mode(const std::string& name) {
-    if (name == "stereo-multiview") return RenderModeChoice{Mode::kStereo, StereoPass::kMultiview};
-    if (name == "stereo-gs") return RenderModeChoice{Mode::kStereo, StereoPass::kGeometryShader};
+    if (const auto pass = parse_name(kStereoModeNames, name)) {
+        return RenderModeChoice{Mode::kStereo, *pass};
+    }
     if (const auto mode = parse_mode(name)) return RenderModeChoice{*mode, StereoPass::kTwoPasses};
     return std::nullopt;
 }
 
 std::string render_mode_name(const RenderModeChoice& choice) {
     if (choice.mode != Mode::kStereo) return mode_name(choice.mode);
-    switch (choice.stereo_pass) {
-        case StereoPass::kTwoPasses:
-            return "stereo";
-        case StereoPass::kMultiview:
-            return "stereo-multiview";
-        case StereoPass::kGeometryShader:
-            return "stereo-gs";
-    }
-    return "?";
+    return name_of(kStereoModeNames, choice.stereo_pass);
 }
 
 std::optional<DebugView> parse_debug_view(const std::string& name) {
-    if (name == "none") return DebugView::kNone;
-    if (name == "tint-mono") return DebugView::kTintMono;
-    if (name == "stereo-only") return DebugView::kStereoOnly;
-    if (name == "mono-only") return DebugView::kMonoOnly;
-    if (name == "routing") return DebugView::kRouting;
-    return std::nullopt;
+    return parse_name(kDebugViewNames, name);
 }
 
 std::optional<MonoCulling> parse_mono_culling(const std::string& name) {
-    if (name == "no-opt") return MonoCulling::kNoOpt;
-    if (name == "discard") return MonoCulling::kDiscard;
-    if (name == "occlusion-cull") return MonoCulling::kOcclusionCull;
-    return std::nullopt;
+    return parse_name(kMonoCullingNames, name);
 }
 
 std::string mono_culling_name(MonoCulling culling) {
-    switch (culling) {
-        case MonoCulling::kNoOpt:
-            return "no-opt";
-        case MonoCulling::kDiscard:
-            return "discard";
-        case MonoCulling::kOcclusionCull:
-            return "occlusion-cull";
-    }
-    return "?";
+    return name_of(kMonoCullingNames, culling);
 }
 
 std::optional<AntiAliasing> parse_anti_aliasing(const std::string& name) {
-    if (name == "none") return AntiAliasing::kNone;
-    if (name == "taa") return AntiAliasing::kTaa;
-    if (name == "msaa2") return AntiAliasing::kMsaa2;
-    if (name == "msaa4") return AntiAliasing::kMsaa4;
-    if (name == "msaa8") return AntiAliasing::kMsaa8;
-    return std::nullopt;
+    return parse_name(kAntiAliasingNames, name);
 }
 
 std::string anti_aliasing_name(AntiAliasing aa) {
-    switch (aa) {
-        case AntiAliasing::kNone:
-            return "none";
-        case AntiAliasing::kTaa:
-            return "taa";
-        case AntiAliasing::kMsaa2:
-            return "msaa2";
-        case AntiAliasing::kMsaa4:
-            return "msaa4";
-        case AntiAliasing::kMsaa8:
-            return "msaa8";
-    }
-    return "?";
+    return name_of(kAntiAliasingNames, aa);
 }
 
 vk::SampleCountFlagBits msaa_samples(AntiAliasing aa) {
@@ -235,19 +224,13 @@ struct ModeRenderer::ForwardImages {
         }
     }
 
-    // One layer of `both`, which must outlive it.
+    // One layer of `both` (which must outlive it): what an eye's later passes read and write. The
+    // multisampled images are not viewed per layer: only the single pass draws into them.
     ForwardImages(const vk_core::Context& ctx, const ForwardImages& both, std::uint32_t layer)
         : hdr(vk_core::Image::layer_of(ctx, both.hdr, layer)),
           depth(vk_core::Image::layer_of(ctx, both.depth, layer)),
           linear_depth(vk_core::Image::layer_of(ctx, both.linear_depth, layer)) {
         if (both.velocity) velocity = vk_core::Image::layer_of(ctx, *both.velocity, layer);
-        if (both.multisample) {
-            hdr_samples = vk_core::Image::layer_of(ctx, *both.hdr_samples, layer);
-            linear_depth_samples = vk_core::Image::layer_of(ctx, *both.linear_depth_samples, layer);
-            depth_samples = vk_core::Image::layer_of(ctx, *both.depth_samples, layer);
-            multisample.emplace(
-                passes::MultisampleTargets{*hdr_samples, *linear_depth_samples, *depth_samples});
-        }
     }
 
     ForwardImages(const ForwardImages&) = delete;
@@ -266,20 +249,45 @@ struct ModeRenderer::ForwardImages {
 
 // The targets and per-frame data of one camera. With single-pass stereo the eyes' forward images
 // are the layers of one set of two-layer images (ModeRenderer::eye_layers_).
-struct ModeRenderer::View : ForwardImages {
-    vk::Extent2D extent;  // the images' size (C: its allocation)
-    vk::Extent2D area;    // the region drawn (C: its viewport, eq. 8)
+namespace {
+
+// What a camera owns beyond its forward images: its tone-mapped image, its constants, its
+// read-back buffers and, under TAA, its two history images (this frame's output and the last).
+struct ViewOutputs {
     vk_core::Image display;
     vk_core::Buffer constants;
-    passes::ViewConstants written_constants{};  // what constants holds this frame
     vk_core::Buffer readback;
     vk_core::Buffer depth_readback;
+    std::array<std::optional<vk_core::Image>, 2> history;
+
+    ViewOutputs(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
+        : display(ctx, {size, passes::TonemapPass::kDisplayFormat, kColorTarget}),
+          constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
+                    vk_core::MemoryUse::kHostVisible),
+          readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
+                   vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible),
+          depth_readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
+                         vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {
+        if (!features.history) return;
+        for (auto& image : history) {
+            image.emplace(ctx, vk_core::ImageDesc{size, passes::TaaPass::kOutputFormat,
+                                                  vk::ImageUsageFlagBits::eColorAttachment |
+                                                      vk::ImageUsageFlagBits::eSampled});
+        }
+    }
+};
+
+}  // namespace
+
+struct ModeRenderer::View : ForwardImages, ViewOutputs {
+    vk::Extent2D extent;                        // the images' size (C: its allocation)
+    vk::Extent2D area;                          // the region drawn (C: its viewport, eq. 8)
+    passes::ViewConstants written_constants{};  // what constants holds this frame
     vk::raii::DescriptorSet forward_set{nullptr};
     vk::raii::DescriptorSet tonemap_set{nullptr};
     RgbaImage image;
     std::vector<float> linear;
-    // TAA: the eyes' two output images (this frame's and the history).
-    std::array<std::optional<vk_core::Image>, 2> history;
+    // TAA: the sets reading and writing the history images.
     std::array<vk::raii::DescriptorSet, 2> taa_sets{nullptr, nullptr};
     std::array<vk::raii::DescriptorSet, 2> tonemap_taa_sets{nullptr, nullptr};
     glm::dmat4 previous_unjittered{1.0};  // last frame's world -> clip without jitter
@@ -291,46 +299,20 @@ struct ModeRenderer::View : ForwardImages {
     // A camera with forward images of its own (C, and the eyes of two-pass stereo).
     View(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
         : ForwardImages(ctx, size, features, 1),
+          ViewOutputs(ctx, size, features),
           extent(size),
-          area(size),
-          display(ctx, {size, passes::TonemapPass::kDisplayFormat, kColorTarget}),
-          constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
-                    vk_core::MemoryUse::kHostVisible),
-          readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
-                   vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible),
-          depth_readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
-                         vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {
-        add_history(ctx, features);
-    }
+          area(size) {}
 
     // An eye: layer `layer` of both eyes' forward images.
     View(const vk_core::Context& ctx, const ForwardImages& both, std::uint32_t layer,
          const ViewFeatures& features)
         : ForwardImages(ctx, both, layer),
+          ViewOutputs(ctx, both.hdr.desc().extent, features),
           extent(both.hdr.desc().extent),
-          area(extent),
-          display(ctx, {extent, passes::TonemapPass::kDisplayFormat, kColorTarget}),
-          constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
-                    vk_core::MemoryUse::kHostVisible),
-          readback(ctx, vk::DeviceSize{extent.width} * extent.height * 4,
-                   vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible),
-          depth_readback(ctx, vk::DeviceSize{extent.width} * extent.height * 4,
-                         vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {
-        add_history(ctx, features);
-    }
+          area(extent) {}
 
     passes::ForwardTargets forward_targets(bool clear_color = false) const {
         return ForwardImages::forward_targets(area, clear_color);
-    }
-
-  private:
-    void add_history(const vk_core::Context& ctx, const ViewFeatures& features) {
-        if (!features.history) return;
-        for (auto& image : history) {
-            image.emplace(ctx, vk_core::ImageDesc{extent, passes::TaaPass::kOutputFormat,
-                                                  vk::ImageUsageFlagBits::eColorAttachment |
-                                                      vk::ImageUsageFlagBits::eSampled});
-        }
     }
 };
 

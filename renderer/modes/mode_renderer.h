@@ -104,7 +104,7 @@ struct FrameInputs {
     MonoCulling mono_culling = MonoCulling::kOcclusionCull;
     // Drives TAA's jitter and tells whether the history continues: a frame whose index does not
     // follow the renderer's previous one starts the history anew. Unset: the next index.
-    std::optional<std::uint64_t> frame_index;
+    std::optional<std::uint64_t> frame_index{};
 };
 
 // Where an eye looked from in the last frame, as rasterised (TAA's jitter included): what a

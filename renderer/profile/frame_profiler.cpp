@@ -7,12 +7,22 @@ namespace monoplane::profile {
 namespace {
 
 using Stat = vk::QueryPipelineStatisticFlagBits;
-const vk::QueryPipelineStatisticFlags kStatistics =
-    Stat::eInputAssemblyPrimitives | Stat::eVertexShaderInvocations | Stat::eClippingInvocations |
-    Stat::eClippingPrimitives | Stat::eFragmentShaderInvocations;
-// Counted only where the device has geometry shaders (the flags require the feature).
-const vk::QueryPipelineStatisticFlags kGeometryStatistics =
-    Stat::eGeometryShaderInvocations | Stat::eGeometryShaderPrimitives;
+
+// The counters gathered, in the order of their flags' bits: the order a query's results come in.
+struct Counter {
+    Stat flag;
+    std::uint64_t ViewStatistics::*field;
+    bool needs_geometry_shader;  // the flag requires the geometryShader feature
+};
+constexpr std::array<Counter, 7> kCounters = {{
+    {Stat::eInputAssemblyPrimitives, &ViewStatistics::input_primitives, false},
+    {Stat::eVertexShaderInvocations, &ViewStatistics::vertex_invocations, false},
+    {Stat::eGeometryShaderInvocations, &ViewStatistics::geometry_invocations, true},
+    {Stat::eGeometryShaderPrimitives, &ViewStatistics::geometry_primitives, true},
+    {Stat::eClippingInvocations, &ViewStatistics::clipping_invocations, false},
+    {Stat::eClippingPrimitives, &ViewStatistics::clipping_primitives, false},
+    {Stat::eFragmentShaderInvocations, &ViewStatistics::fragment_invocations, false},
+}};
 
 }  // namespace
 
@@ -20,11 +30,15 @@ FrameProfiler::FrameProfiler(const vk_core::Context& ctx) : ctx_(ctx) {
     timestamps_ = vk::raii::QueryPool(
         ctx.device(), vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2 * kMaxPasses));
     if (ctx.capabilities().pipeline_statistics) {
-        statistic_flags_ = kStatistics;
-        if (ctx.capabilities().geometry_shader) statistic_flags_ |= kGeometryStatistics;
+        vk::QueryPipelineStatisticFlags flags;
+        for (const Counter& counter : kCounters) {
+            if (counter.needs_geometry_shader && !ctx.capabilities().geometry_shader) continue;
+            flags |= counter.flag;
+            counter_fields_.push_back(counter.field);
+        }
         statistics_ = vk::raii::QueryPool(
-            ctx.device(), vk::QueryPoolCreateInfo({}, vk::QueryType::ePipelineStatistics, kMaxViews,
-                                                  statistic_flags_));
+            ctx.device(),
+            vk::QueryPoolCreateInfo({}, vk::QueryType::ePipelineStatistics, kMaxViews, flags));
     }
 }
 
@@ -86,14 +100,9 @@ FrameStats FrameProfiler::collect() const {
         stats.gpu_frame_ms = elapsed_ms(ticks.front(), ticks.back());
     }
     if (*statistics_ && !view_names_.empty()) {
-        // One value per enabled flag, in the order of the flags' bits.
-        std::vector<Stat> enabled;
-        for (std::uint32_t bit = 0; bit < 32; ++bit) {
-            const auto flag = static_cast<Stat>(1u << bit);
-            if (statistic_flags_ & flag) enabled.push_back(flag);
-        }
+        const std::size_t per_view = counter_fields_.size();
         const auto count = static_cast<std::uint32_t>(view_names_.size());
-        const std::size_t stride = enabled.size() * sizeof(std::uint64_t);
+        const std::size_t stride = per_view * sizeof(std::uint64_t);
         const auto [result, values] = statistics_.getResults<std::uint64_t>(
             0, count, count * stride, stride,
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
@@ -101,33 +110,8 @@ FrameStats FrameProfiler::collect() const {
         for (std::size_t i = 0; i < view_names_.size(); ++i) {
             ViewStatistics view;
             view.view = view_names_[i];
-            for (std::size_t k = 0; k < enabled.size(); ++k) {
-                const std::uint64_t value = values[i * enabled.size() + k];
-                switch (enabled[k]) {
-                    case Stat::eInputAssemblyPrimitives:
-                        view.input_primitives = value;
-                        break;
-                    case Stat::eVertexShaderInvocations:
-                        view.vertex_invocations = value;
-                        break;
-                    case Stat::eGeometryShaderInvocations:
-                        view.geometry_invocations = value;
-                        break;
-                    case Stat::eGeometryShaderPrimitives:
-                        view.geometry_primitives = value;
-                        break;
-                    case Stat::eClippingInvocations:
-                        view.clipping_invocations = value;
-                        break;
-                    case Stat::eClippingPrimitives:
-                        view.clipping_primitives = value;
-                        break;
-                    case Stat::eFragmentShaderInvocations:
-                        view.fragment_invocations = value;
-                        break;
-                    default:
-                        break;
-                }
+            for (std::size_t k = 0; k < per_view; ++k) {
+                view.*counter_fields_[k] = values[i * per_view + k];
             }
             stats.views.push_back(std::move(view));
         }

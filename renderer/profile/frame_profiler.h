@@ -33,7 +33,8 @@ class FrameProfiler {
     const vk_core::Context& ctx_;
     vk::raii::QueryPool timestamps_{nullptr};
     vk::raii::QueryPool statistics_{nullptr};
-    vk::QueryPipelineStatisticFlags statistic_flags_;
+    // The ViewStatistics field of each value a statistics query returns, in order.
+    std::vector<std::uint64_t ViewStatistics::*> counter_fields_;
     std::vector<std::string> pass_names_;
     std::vector<std::string> view_names_;
     bool pass_open_ = false;

@@ -106,7 +106,9 @@ TEST_F(AntiAliasingTest, TaaConvergesOnAStaticView) {
                   << " of pixels (8-bit levels^2): TAA " << with_taa << ", jitter without history "
                   << jittered << "\n";
         // Where the jitter moves an edge, TAA removes over 90 % of the flicker.
-        if (q >= 0.9) EXPECT_LT(with_taa, 0.1 * jittered) << "percentile " << q;
+        if (q >= 0.9) {
+            EXPECT_LT(with_taa, 0.1 * jittered) << "percentile " << q;
+        }
     }
     EXPECT_GT(temporal_variance_percentile(control_frames, 0.99), 1000.0);  // edges really move
     EXPECT_LT(temporal_variance_percentile(taa_frames, 0.5), 1.0);          // most pixels are still

@@ -22,11 +22,16 @@
 #include "renderer/modes/frustum_culling.h"
 #include "renderer/modes/mode_renderer.h"
 #include "scenes/generate.h"
+#include "tests/gpu/frame_checks.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/gpu/hybrid_test_scenes.h"
 
 namespace monoplane {
 namespace {
+
+using testing::has_pass;
+using testing::max_channel_difference;
+using testing::view_of;
 
 using modes::Eye;
 using modes::Mode;
@@ -74,32 +79,6 @@ std::uint64_t triangles(const scenes::Scene& scene, const Chunks& chunks) {
     std::uint64_t count = 0;
     for (std::uint32_t c : chunks) count += scene.chunks[c].index_count / 3;
     return count;
-}
-
-// FrameStats::views, and with them the indirect draw counts, exist only where the device has
-// pipelineStatisticsQuery: the tests check them there, and the read-back lists everywhere.
-const profile::ViewStatistics& view_of(const profile::FrameStats& stats, const std::string& name) {
-    for (const profile::ViewStatistics& v : stats.views) {
-        if (v.view == name) return v;
-    }
-    ADD_FAILURE() << "no statistics for the view " << name;
-    static const profile::ViewStatistics missing;
-    return missing;
-}
-
-bool has_pass(const profile::FrameStats& stats, const std::string& name) {
-    return std::any_of(stats.passes.begin(), stats.passes.end(),
-                       [&](const profile::PassTime& p) { return p.name == name; });
-}
-
-int max_channel_difference(const modes::RgbaImage& a, const modes::RgbaImage& b) {
-    EXPECT_EQ(a.pixels.size(), b.pixels.size());
-    if (a.pixels.size() != b.pixels.size()) return 255;
-    int worst = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        worst = std::max(worst, std::abs(a.pixels[i] - b.pixels[i]));
-    }
-    return worst;
 }
 
 // A square quad facing +z (the viewer at the origin looking down -z), centred at `centre`.

@@ -17,10 +17,15 @@
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
 #include "scenes/generate.h"
+#include "tests/gpu/frame_checks.h"
 #include "tests/gpu/gpu_test.h"
 
 namespace monoplane {
 namespace {
+
+using testing::has_pass;
+using testing::max_channel_difference;
+using testing::view_of;
 
 using modes::AntiAliasing;
 using modes::Eye;
@@ -54,18 +59,6 @@ std::uint64_t triangles(const scenes::Scene& scene, const Chunks& chunks) {
     return count;
 }
 
-int max_channel_difference(const modes::RgbaImage& a, const modes::RgbaImage& b) {
-    EXPECT_EQ(a.width, b.width);
-    EXPECT_EQ(a.height, b.height);
-    EXPECT_EQ(a.pixels.size(), b.pixels.size());
-    if (a.pixels.size() != b.pixels.size() || a.pixels.empty()) return 255;
-    int worst = 0;
-    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
-        worst = std::max(worst, std::abs(a.pixels[i] - b.pixels[i]));
-    }
-    return worst;
-}
-
 // The mean of an image's colour channels, 0 to 255: an eye left black reads near 0.
 double mean_level(const modes::RgbaImage& image) {
     double sum = 0.0;
@@ -73,20 +66,6 @@ double mean_level(const modes::RgbaImage& image) {
         if (i % 4 != 3) sum += image.pixels[i];
     }
     return image.pixels.empty() ? 0.0 : sum / (0.75 * static_cast<double>(image.pixels.size()));
-}
-
-const profile::ViewStatistics& view_of(const profile::FrameStats& stats, const std::string& name) {
-    for (const profile::ViewStatistics& v : stats.views) {
-        if (v.view == name) return v;
-    }
-    ADD_FAILURE() << "no statistics for the view " << name;
-    static const profile::ViewStatistics missing;
-    return missing;
-}
-
-bool has_pass(const profile::FrameStats& stats, const std::string& name) {
-    return std::any_of(stats.passes.begin(), stats.passes.end(),
-                       [&](const profile::PassTime& p) { return p.name == name; });
 }
 
 // One renderer's last frame: both eyes' images and the frame's statistics.
