@@ -17,6 +17,7 @@ set(gpu "vulkan/|GLFW/|openxr/|renderer/vk/|renderer/passes/|renderer/modes/|ren
 check(renderer/rig "${gpu}|scenes/|hmd/|study/|analysis/")
 check(scenes "${gpu}|study/|analysis/|hmd/")
 check(hmd "${gpu}|scenes/|study/|analysis/")
+check(renderer/plan "${gpu}|scenes/|hmd/|study/|analysis/")
 check(renderer/quality "${gpu}|scenes/|hmd/|study/|analysis/")
 check(charts "${gpu}|renderer/|scenes/|hmd/|study/|analysis/")
 check(study "${gpu}|renderer/|analysis/|hmd/|scenes/")

@@ -1,5 +1,6 @@
 #include "renderer/modes/mode_renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <initializer_list>
@@ -49,6 +50,27 @@ void copy_to_buffer(const vk::raii::CommandBuffer& cmd, const vk_core::Image& im
             {0, 0, 0}, vk::Extent3D(extent, 1)));
 }
 
+// The forward pass's step for a planned draw (one to one).
+passes::ForwardStep forward_step(DrawStep step) {
+    switch (step) {
+        case DrawStep::kMaskHidden:
+            return passes::ForwardStep::kMaskHidden;
+        case DrawStep::kDepthPrepass:
+            return passes::ForwardStep::kDepthPrepass;
+        case DrawStep::kChunks:
+            return passes::ForwardStep::kChunks;
+        case DrawStep::kChunksDiscardHidden:
+            return passes::ForwardStep::kChunksDiscardHidden;
+        case DrawStep::kChunksShowRouting:
+            return passes::ForwardStep::kChunksShowRouting;
+        case DrawStep::kSky:
+            return passes::ForwardStep::kSky;
+        case DrawStep::kSkyDiscardHidden:
+            return passes::ForwardStep::kSkyDiscardHidden;
+    }
+    return passes::ForwardStep::kChunks;
+}
+
 void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image) {
     vk_core::transition(cmd, image, vk::ImageLayout::eColorAttachmentOptimal,
                         vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eColorAttachmentOutput,
@@ -57,104 +79,6 @@ void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& im
 }
 
 }  // namespace
-
-namespace {
-
-// Each enum's CLI names, for parse_* and *_name alike.
-template <class Enum>
-using NameTable = std::initializer_list<std::pair<Enum, const char*>>;
-
-constexpr NameTable<Mode> kModeNames = {{Mode::kStereo, "stereo"},
-                                        {Mode::kHybrid, "hybrid"},
-                                        {Mode::kHybridFarfield, "hybrid-farfield"}};
-constexpr NameTable<StereoPass> kStereoPassNames = {{StereoPass::kTwoPasses, "two"},
-                                                    {StereoPass::kMultiview, "multiview"},
-                                                    {StereoPass::kGeometryShader, "gs"}};
-// The stereo mode's name with each stereo pass (DESIGN.md section 6).
-constexpr NameTable<StereoPass> kStereoModeNames = {{StereoPass::kTwoPasses, "stereo"},
-                                                    {StereoPass::kMultiview, "stereo-multiview"},
-                                                    {StereoPass::kGeometryShader, "stereo-gs"}};
-constexpr NameTable<DebugView> kDebugViewNames = {{DebugView::kNone, "none"},
-                                                  {DebugView::kTintMono, "tint-mono"},
-                                                  {DebugView::kStereoOnly, "stereo-only"},
-                                                  {DebugView::kMonoOnly, "mono-only"},
-                                                  {DebugView::kRouting, "routing"}};
-constexpr NameTable<MonoCulling> kMonoCullingNames = {
-    {MonoCulling::kNoOpt, "no-opt"},
-    {MonoCulling::kDiscard, "discard"},
-    {MonoCulling::kOcclusionCull, "occlusion-cull"}};
-constexpr NameTable<AntiAliasing> kAntiAliasingNames = {{AntiAliasing::kNone, "none"},
-                                                        {AntiAliasing::kTaa, "taa"},
-                                                        {AntiAliasing::kMsaa2, "msaa2"},
-                                                        {AntiAliasing::kMsaa4, "msaa4"},
-                                                        {AntiAliasing::kMsaa8, "msaa8"}};
-
-template <class Enum>
-std::optional<Enum> parse_name(NameTable<Enum> table, const std::string& name) {
-    for (const auto& [value, text] : table) {
-        if (name == text) return value;
-    }
-    return std::nullopt;
-}
-
-template <class Enum>
-std::string name_of(NameTable<Enum> table, Enum value) {
-    for (const auto& [entry, text] : table) {
-        if (entry == value) return text;
-    }
-    return "?";
-}
-
-}  // namespace
-
-std::optional<Mode> parse_mode(const std::string& name) {
-    return parse_name(kModeNames, name);
-}
-
-std::string mode_name(Mode mode) {
-    return name_of(kModeNames, mode);
-}
-
-std::optional<StereoPass> parse_stereo_pass(const std::string& name) {
-    return parse_name(kStereoPassNames, name);
-}
-
-std::string stereo_pass_name(StereoPass pass) {
-    return name_of(kStereoPassNames, pass);
-}
-
-std::optional<RenderModeChoice> parse_render_mode(const std::string& name) {
-    if (const auto pass = parse_name(kStereoModeNames, name)) {
-        return RenderModeChoice{Mode::kStereo, *pass};
-    }
-    if (const auto mode = parse_mode(name)) return RenderModeChoice{*mode, StereoPass::kTwoPasses};
-    return std::nullopt;
-}
-
-std::string render_mode_name(const RenderModeChoice& choice) {
-    if (choice.mode != Mode::kStereo) return mode_name(choice.mode);
-    return name_of(kStereoModeNames, choice.stereo_pass);
-}
-
-std::optional<DebugView> parse_debug_view(const std::string& name) {
-    return parse_name(kDebugViewNames, name);
-}
-
-std::optional<MonoCulling> parse_mono_culling(const std::string& name) {
-    return parse_name(kMonoCullingNames, name);
-}
-
-std::string mono_culling_name(MonoCulling culling) {
-    return name_of(kMonoCullingNames, culling);
-}
-
-std::optional<AntiAliasing> parse_anti_aliasing(const std::string& name) {
-    return parse_name(kAntiAliasingNames, name);
-}
-
-std::string anti_aliasing_name(AntiAliasing aa) {
-    return name_of(kAntiAliasingNames, aa);
-}
 
 vk::SampleCountFlagBits msaa_samples(AntiAliasing aa) {
     switch (aa) {
@@ -607,64 +531,87 @@ void ModeRenderer::decide_routing(const FrameInputs& inputs, passes::CullFrame& 
     }
 }
 
-profile::FrameStats ModeRenderer::render_frame(
-    const FrameInputs& inputs,
-    const std::function<void(const vk::raii::CommandBuffer&)>& record_after) {
-    const auto cpu_start = std::chrono::steady_clock::now();
+// This frame's decisions and matrices, made before anything is recorded and read by every pass
+// recorder (the plan says which passes run; this says with what).
+struct ModeRenderer::FrameState {
+    const FrameInputs* inputs = nullptr;
+    bool taa = false;
+    bool use_mono = false;  // C is drawn (a hybrid mode with something beyond m - eps)
+    std::optional<FarfieldRig> farfield;
+    glm::dvec2 jitter_px{0.0};
+    glm::dmat4 eye_jitter{1.0};
+    glm::dmat4 mono_jitter{1.0};
+    glm::dmat4 light_view_proj{1.0};
+    bool shadow_needed = false;
+    bool predicated = false;  // GPU predicates (VK_EXT_conditional_rendering)
+    // Colour images a pass left as attachments that a later pass samples (frame_plan.h's
+    // resource names): transitioned once, before their first reader.
+    std::vector<std::string> attachments_written;
+};
+
+ModeRenderer::FrameState ModeRenderer::prepare_frame(const FrameInputs& inputs) {
+    FrameState frame;
+    frame.inputs = &inputs;
     const StereoViewInputs& views = inputs.views;
 
     // TAA: this frame's jitter, and whether the history continues (consecutive frames of the
     // same configuration; a study switching between renderers restarts it).
-    const bool taa = options_.anti_aliasing == AntiAliasing::kTaa;
+    frame.taa = options_.anti_aliasing == AntiAliasing::kTaa;
     const std::uint64_t frame_index = inputs.frame_index.value_or(next_frame_index_);
-    history_valid_ = taa && frame_index == next_frame_index_ && frame_index > 0 &&
+    history_valid_ = frame.taa && frame_index == next_frame_index_ && frame_index > 0 &&
                      history_mono_plane_ == inputs.mono_plane;
     next_frame_index_ = frame_index + 1;
     history_mono_plane_ = inputs.mono_plane;
-    const glm::dvec2 jitter_px = taa ? rig::halton_jitter(frame_index) : glm::dvec2(0.0);
-    const glm::dmat4 eye_jitter =
-        rig::jitter_matrix(jitter_px, glm::dvec2(eye_extent_.width, eye_extent_.height));
+    frame.jitter_px = frame.taa ? rig::halton_jitter(frame_index) : glm::dvec2(0.0);
+    frame.eye_jitter =
+        rig::jitter_matrix(frame.jitter_px, glm::dvec2(eye_extent_.width, eye_extent_.height));
 
     const scenes::Aabb region =
         shadow_region(scene_, views.head.position, options_.shadow.region_radius_m);
-    const glm::dmat4 light_view_proj =
+    frame.light_view_proj =
         passes::fit_light_view_proj(glm::dvec3(scene_.lighting.sun_direction), region);
-    const bool shadow_needed = shadow_light_view_proj_ != light_view_proj;
+    frame.shadow_needed = shadow_light_view_proj_ != frame.light_view_proj;
+    frame.predicated = ctx_.capabilities().conditional_rendering;
 
+    build_frame_rig(inputs, frame);
+    update_frame_views(inputs, frame);
+    return frame;
+}
+
+void ModeRenderer::build_frame_rig(const FrameInputs& inputs, FrameState& frame) {
     // The rig (hybrid modes). m >= f leaves C out and hybrid records the stereo pass list.
-    bool use_mono = false;
-    std::optional<FarfieldRig> farfield;
     rig_.reset();
-    if (mode_ != Mode::kStereo) {
-        rig::RigInputs rig_inputs;
-        rig_inputs.eyes = {views.left, views.right};
-        rig_inputs.eye_width = static_cast<int>(eye_extent_.width);
-        rig_inputs.eye_height = static_cast<int>(eye_extent_.height);
-        rig_inputs.ipd = views.ipd;
-        rig_inputs.mono_plane = inputs.mono_plane;
-        rig_inputs.near = views.near;
-        rig_inputs.far = views.far;
-        rig_inputs.overlap_k = inputs.overlap_k;
-        if (nearest_mono_plane_ > 0.0 && nearest_mono_plane_ <= inputs.mono_plane) {
-            rig_inputs.nearest_mono_plane = nearest_mono_plane_;
-        }
-        rig_ = rig::build_rig(rig_inputs).value_or_throw();
-        use_mono = !rig_->mono_skipped;
-        if (use_mono && mode_ == Mode::kHybridFarfield) {
-            farfield =
-                build_farfield_rig(rig_inputs.eyes, rig_inputs.eye_width, rig_inputs.eye_height,
-                                   views.ipd, inputs.mono_plane, views.far);
-        }
+    if (mode_ == Mode::kStereo) return;
+    const StereoViewInputs& views = inputs.views;
+    rig::RigInputs rig_inputs;
+    rig_inputs.eyes = {views.left, views.right};
+    rig_inputs.eye_width = static_cast<int>(eye_extent_.width);
+    rig_inputs.eye_height = static_cast<int>(eye_extent_.height);
+    rig_inputs.ipd = views.ipd;
+    rig_inputs.mono_plane = inputs.mono_plane;
+    rig_inputs.near = views.near;
+    rig_inputs.far = views.far;
+    rig_inputs.overlap_k = inputs.overlap_k;
+    if (nearest_mono_plane_ > 0.0 && nearest_mono_plane_ <= inputs.mono_plane) {
+        rig_inputs.nearest_mono_plane = nearest_mono_plane_;
     }
-    // C's work saved by the merged depth pyramid: monoplane's hybrid only (the far field's
-    // offset copy is another mapping), and never in the debug views that show C's whole image.
+    rig_ = rig::build_rig(rig_inputs).value_or_throw();
+    frame.use_mono = !rig_->mono_skipped;
+    if (frame.use_mono && mode_ == Mode::kHybridFarfield) {
+        frame.farfield =
+            build_farfield_rig(rig_inputs.eyes, rig_inputs.eye_width, rig_inputs.eye_height,
+                               views.ipd, inputs.mono_plane, views.far);
+    }
+}
+
+void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& frame) {
+    const StereoViewInputs& views = inputs.views;
+    const bool use_mono = frame.use_mono;
+    const auto& farfield = frame.farfield;
+    // C's work saved by the merged depth pyramid (the plan's rule, renderer/plan/frame_plan.cpp).
     const bool depth_tested = use_mono && !farfield && inputs.mono_culling != MonoCulling::kNoOpt &&
                               inputs.debug != DebugView::kMonoOnly;
-    const bool occlusion_culled =
-        depth_tested && inputs.mono_culling == MonoCulling::kOcclusionCull;
-
     passes::CullFrame cull;
-    glm::dmat4 mono_jitter(1.0);
     const glm::dvec3 mono_in_head = farfield || !use_mono ? glm::dvec3(0.0) : rig_->mono_position;
     const glm::dvec3 mono_position = to_world(views.head, mono_in_head);
     for (Eye eye : {Eye::kLeft, Eye::kRight}) {
@@ -674,8 +621,9 @@ profile::FrameStats ModeRenderer::render_frame(
             use_mono ? rig_->eye_projection[e] * rig::view_matrix(views.head, offset)
                      : eye_view_proj(views, eye);
         const double band = use_mono && !farfield ? inputs.view_blend_band : 0.0;
-        update_view(*eyes_[e], eye_jitter * view_proj, view_proj, to_world(views.head, offset),
-                    inputs, mono_position, band, light_view_proj);
+        update_view(*eyes_[e], frame.eye_jitter * view_proj, view_proj,
+                    to_world(views.head, offset), inputs, mono_position, band,
+                    frame.light_view_proj);
         cull.view_proj[e] = view_proj;  // a sub-pixel jitter changes no chunk's visibility
     }
     if (use_mono) {
@@ -696,10 +644,10 @@ profile::FrameStats ModeRenderer::render_frame(
                                  glm::dvec4(0.0, 0.0, -(inputs.mono_plane - rig_->overlap), 1.0);
         const double threshold = plane.z / plane.w;
         // The same jitter in C's pixels (Sect. 4.5).
-        mono_jitter =
-            rig::jitter_matrix(jitter_px, glm::dvec2(mono_->area.width, mono_->area.height));
-        update_view(*mono_, mono_jitter * mono_view_proj, mono_view_proj, mono_position, inputs,
-                    mono_position, 0.0, light_view_proj, threshold);
+        frame.mono_jitter =
+            rig::jitter_matrix(frame.jitter_px, glm::dvec2(mono_->area.width, mono_->area.height));
+        update_view(*mono_, frame.mono_jitter * mono_view_proj, mono_view_proj, mono_position,
+                    inputs, mono_position, 0.0, frame.light_view_proj, threshold);
         cull.view_proj[MONOPLANE_CULL_MONO] = mono_view_proj;
         cull.mono_viewport = glm::dvec2(mono_->area.width, mono_->area.height);
         cull.hidden_depth_threshold = threshold;
@@ -715,226 +663,277 @@ profile::FrameStats ModeRenderer::render_frame(
         const std::array pair = {eyes_[0]->written_constants, eyes_[1]->written_constants};
         eye_pair_constants_->write(pair.data(), sizeof(pair));
     }
+}
 
-    // GPU predicates (VK_EXT_conditional_rendering) where the device has them; without, every
-    // pass runs and relies on empty draw counts alone.
-    const bool predicated = ctx_.capabilities().conditional_rendering;
-    auto when = [&](std::uint32_t word, bool inverted = false) -> std::optional<passes::Predicate> {
-        if (!predicated) return std::nullopt;
-        return culling_.predicate(word, inverted);
-    };
-    std::vector<passes::ForwardDraw> eye_steps = {{passes::ForwardStep::kChunks, std::nullopt}};
-    if (!use_mono) {
-        eye_steps.push_back({passes::ForwardStep::kSky, std::nullopt});
-    } else if (predicated) {
-        // Nothing for C to draw: the eyes draw their own sky and C and the composite are skipped.
-        eye_steps.push_back({passes::ForwardStep::kSky, when(MONOPLANE_PRED_MONO_ANY, true)});
-    }
-    std::vector<passes::ForwardDraw> mono_steps;
-    if (depth_tested) {
-        mono_steps.push_back(
-            {passes::ForwardStep::kChunksDiscardHidden, when(MONOPLANE_PRED_MONO_DEPTH_TESTED)});
-        // No eye drew anything: no pyramid was built, nothing is hidden.
-        if (predicated) {
-            mono_steps.push_back(
-                {passes::ForwardStep::kChunks, when(MONOPLANE_PRED_MONO_UNTESTED)});
-        }
-        mono_steps.push_back(
-            {passes::ForwardStep::kSkyDiscardHidden, when(MONOPLANE_PRED_MONO_DEPTH_TESTED)});
-        if (predicated) {
-            mono_steps.push_back({passes::ForwardStep::kSky, when(MONOPLANE_PRED_MONO_UNTESTED)});
-        }
-    } else {
-        mono_steps.push_back({passes::ForwardStep::kChunks, std::nullopt});
-        mono_steps.push_back({passes::ForwardStep::kSky, when(MONOPLANE_PRED_MONO_ANY)});
-    }
+FramePlan ModeRenderer::plan(const FrameInputs& inputs, const FrameState& frame) const {
+    PlanOptions options;
+    options.mode = mode_;
+    options.stereo_pass = options_.stereo_pass;
+    options.anti_aliasing = options_.anti_aliasing;
+    options.ssao = options_.ssao.has_value();
+    options.depth_prepass = options_.depth_prepass;
+    options.read_back = options_.read_back;
+    options.read_back_depth = options_.read_back_depth;
+    options.read_back_ao = options_.read_back_ao;
+    options.read_back_draw_lists = options_.read_back_draw_lists;
+    PlanFrame planned;
+    planned.mono_skipped = !frame.use_mono;
+    planned.mono_culling = inputs.mono_culling;
+    planned.debug = inputs.debug;
+    planned.shadow_needed = frame.shadow_needed;
+    return plan_frame(options, planned, PlanDevice{frame.predicated});
+}
 
-    // The debug view "routing" draws the same chunks, recoloured by their lists.
-    if (inputs.debug == DebugView::kRouting) {
-        for (auto* steps : {&eye_steps, &mono_steps}) {
-            for (passes::ForwardDraw& draw : *steps) {
-                if (draw.step == passes::ForwardStep::kChunks ||
-                    draw.step == passes::ForwardStep::kChunksDiscardHidden) {
-                    draw.step = passes::ForwardStep::kChunksShowRouting;
-                }
-            }
-        }
-    }
+profile::FrameStats ModeRenderer::render_frame(
+    const FrameInputs& inputs,
+    const std::function<void(const vk::raii::CommandBuffer&)>& record_after) {
+    const auto cpu_start = std::chrono::steady_clock::now();
+    FrameState frame = prepare_frame(inputs);
+    last_plan_ = plan(inputs, frame);
 
     double record_ms = 0.0;
     ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
         profiler_.begin_frame(cmd);
-        profiler_.begin_pass(cmd, "culling");
-        culling_.record_frustum_phase(cmd);
-        profiler_.end_pass(cmd);
-        if (shadow_needed) {
-            profiler_.begin_pass(cmd, "shadow");
-            shadow_.record(cmd, geometry_, shadow_draws_, glm::mat4(light_view_proj));
-            profiler_.end_pass(cmd);
-        }
-        if (eyes_forward_) {
-            // Both eyes in one pass, from the list of chunks either eye needs.
-            profiler_.begin_pass(cmd, "eyes.forward");
-            profiler_.begin_view(cmd, "eyes");
-            eyes_forward_->record(cmd, eye_layers_->forward_targets(eye_extent_), *eye_pair_set_,
-                                  *merged_depth_set_, geometry_,
-                                  culling_.draws(passes::CullView::kBothEyes), eye_steps);
-            profiler_.end_view(cmd);
-            profiler_.end_pass(cmd);
-        } else {
-            for (Eye eye : {Eye::kLeft, Eye::kRight}) {
-                const View& view = *eyes_[static_cast<int>(eye)];
-                profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".forward");
-                profiler_.begin_view(cmd, eye_name(eye));
-                forward_.record(cmd, view.forward_targets(), *view.forward_set, *merged_depth_set_,
-                                geometry_, culling_.draws(static_cast<passes::CullView>(eye)),
-                                eye_steps);
-                profiler_.end_view(cmd);
-                profiler_.end_pass(cmd);
-            }
-        }
-        if (use_mono) {
-            if (depth_tested) {
-                profiler_.begin_pass(cmd, "depth_pyramid");
-                for (const auto& eye : eyes_) {
-                    vk_core::transition(cmd, eye->depth, vk::ImageLayout::eDepthAttachmentOptimal,
-                                        vk::ImageLayout::eDepthReadOnlyOptimal,
-                                        Stage::eLateFragmentTests,
-                                        Access::eDepthStencilAttachmentWrite, Stage::eComputeShader,
-                                        Access::eShaderSampledRead);
-                }
-                std::array<glm::dmat3, 2> mono_to_eye;
-                for (int e = 0; e < 2; ++e) {
-                    mono_to_eye[e] = rig::jittered_pixel_mapping(
-                        rig::mono_pixel_to_eye_pixel(*rig_, e), jitter_px);
-                }
-                pyramid_.record(cmd, mono_to_eye, when(MONOPLANE_PRED_MONO_DEPTH_TESTED));
-                for (const auto& eye : eyes_) {
-                    vk_core::transition(cmd, eye->depth, vk::ImageLayout::eDepthReadOnlyOptimal,
-                                        vk::ImageLayout::eDepthAttachmentOptimal,
-                                        Stage::eComputeShader, Access::eShaderSampledRead,
-                                        Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
-                                        Access::eDepthStencilAttachmentRead);
-                }
-                profiler_.end_pass(cmd);
-                if (occlusion_culled) {
-                    profiler_.begin_pass(cmd, "occlusion_culling");
-                    passes::with_predicate(cmd, when(MONOPLANE_PRED_MONO_DEPTH_TESTED),
-                                           [&] { culling_.record_occlusion_phase(cmd); });
-                    profiler_.end_pass(cmd);
-                }
-            }
-            profiler_.begin_pass(cmd, "mono.forward");
-            profiler_.begin_view(cmd, "mono");
-            // Pixels hidden in both eyes stay unwritten; C's image read back shows them black,
-            // and C's SSAO must not read stale depths there.
-            const bool clear_color = depth_tested && (options_.read_back || ssao_);
-            forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,
-                            *merged_depth_set_, geometry_, culling_.draws(passes::CullView::kMono),
-                            mono_steps);
-            profiler_.end_view(cmd);
-            profiler_.end_pass(cmd);
-            to_shader_read(cmd, mono_->linear_depth);
-            if (ssao_) {
-                // The far region's AO, computed once for both eyes (C alone sees it).
-                profiler_.begin_pass(cmd, "mono.ssao");
-                passes::with_predicate(cmd, when(MONOPLANE_PRED_MONO_ANY), [&] {
-                    ssao_->record_view(cmd, *mono_->ssao, mono_->area);
-                    ssao_->record_apply(cmd, *mono_->ssao, mono_->hdr, mono_->area);
-                });
-                profiler_.end_pass(cmd);
-            }
-            to_shader_read(cmd, mono_->hdr);
-            if (mono_->velocity) to_shader_read(cmd, *mono_->velocity);
-            for (Eye eye : {Eye::kLeft, Eye::kRight}) {
-                const int e = static_cast<int>(eye);
-                const View& view = *eyes_[e];
-                passes::CompositeParams params;
-                params.mono_allocation = glm::vec2(static_cast<float>(mono_->extent.width),
-                                                   static_cast<float>(mono_->extent.height));
-                if (farfield) {
-                    params.mapping = passes::CompositeMapping::kOffsetCopy;
-                    params.pixel_offset = farfield->offsets[e];
-                    // Same pixel size: NDC velocities scale with the images' widths.
-                    params.velocity_scale = glm::vec2(static_cast<float>(mono_->area.width) /
-                                                          static_cast<float>(eye_extent_.width),
-                                                      static_cast<float>(mono_->area.height) /
-                                                          static_cast<float>(eye_extent_.height));
-                } else {
-                    // Eq. 5 between the jittered clip spaces: C's image and the eye's are both
-                    // displaced by the jitter, so the mapping undoes one and applies the other.
-                    params.eye_to_mono =
-                        glm::mat4(mono_jitter * rig_->eye_to_mono[e] * glm::inverse(eye_jitter));
-                    params.velocity_scale = glm::vec2(rig::mono_velocity_to_eye(*rig_, e));
-                    // C's image is valid in [0, viewport / allocation] (Sect. 4.2). The image may
-                    // be larger than the rig's own allocation: it was sized for an earlier m.
-                    params.uv_scale = glm::vec2(static_cast<float>(mono_->area.width),
-                                                static_cast<float>(mono_->area.height)) /
-                                      params.mono_allocation;
-                }
-                if (inputs.debug == DebugView::kTintMono) params.tint = 1.0f;
-                if (inputs.debug == DebugView::kStereoOnly) {
-                    params.mapping = passes::CompositeMapping::kNothing;
-                }
-                params.cover_all_pixels = inputs.debug == DebugView::kMonoOnly;
-                params.when = when(MONOPLANE_PRED_MONO_ANY);
-                profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".composite");
-                profiler_.begin_view(cmd, std::string(eye_name(eye)) + ".composite");
-                composite_.record(cmd,
-                                  {view.hdr, view.linear_depth, view.depth,
-                                   view.velocity ? &*view.velocity : nullptr},
-                                  *mono_->composite_set, params);
-                profiler_.end_view(cmd);
-                profiler_.end_pass(cmd);
-            }
-        }
-        // Post-processing runs on the assembled images. Linear depth is read from here on.
-        for (const auto& eye : eyes_) to_shader_read(cmd, eye->linear_depth);
-        if (ssao_) record_ssao(cmd, use_mono);
-        for (Eye eye : {Eye::kLeft, Eye::kRight}) {
-            View& view = *eyes_[static_cast<int>(eye)];
-            to_shader_read(cmd, view.hdr);
-            vk::DescriptorSet tonemap_input = *view.tonemap_set;
-            if (taa) {
-                record_taa(cmd, view, eye);
-                tonemap_input = *view.tonemap_taa_sets[history_parity_];
-            }
-            profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".tonemap");
-            tonemap_.record(cmd, view.display, tonemap_input, options_.tonemap);
-            profiler_.end_pass(cmd);
-        }
-        // C's own tone-mapped image exists only to be looked at (mono.png).
-        if (use_mono && options_.read_back) {
-            profiler_.begin_pass(cmd, "mono.tonemap");
-            tonemap_.record(cmd, mono_->display, *mono_->tonemap_set, options_.tonemap);
-            profiler_.end_pass(cmd);
-        }
-        // Read-backs after the last pass: they are not part of the frame's GPU time.
-        for (const auto& view : eyes_) {
-            if (options_.read_back) {
-                copy_to_buffer(cmd, view->display, view->extent, view->readback,
-                               vk::ImageLayout::eColorAttachmentOptimal);
-            }
-            if (options_.read_back_depth) {
-                copy_to_buffer(cmd, view->linear_depth, view->extent, view->depth_readback,
-                               vk::ImageLayout::eShaderReadOnlyOptimal);
-            }
-            if (options_.read_back_ao) ssao_->record_readback(cmd, *view->ssao);
-        }
-        if (use_mono && options_.read_back) {
-            copy_to_buffer(cmd, mono_->display, mono_->area, mono_->readback,
-                           vk::ImageLayout::eColorAttachmentOptimal);
-        }
-        culling_.record_readback(cmd, options_.read_back_draw_lists);
+        for (const PlannedPass* pass : last_plan_.executed()) record_pass(cmd, *pass, frame);
         record_ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start)
                 .count();
         if (record_after) record_after(cmd);
     });
-    if (shadow_needed) shadow_light_view_proj_ = light_view_proj;
-    mono_rendered_ = use_mono && options_.read_back;
-    if (taa) history_parity_ = 1 - history_parity_;
+    if (frame.shadow_needed) shadow_light_view_proj_ = frame.light_view_proj;
+    mono_rendered_ = frame.use_mono && options_.read_back;
+    if (frame.taa) history_parity_ = 1 - history_parity_;
+    return collect_frame(record_ms, frame.use_mono);
+}
 
+const vk_core::Image* ModeRenderer::planned_image(const std::string& resource) const {
+    const std::size_t dot = resource.find('.');
+    if (dot == std::string::npos) return nullptr;
+    const std::string view = resource.substr(0, dot);
+    const std::string image = resource.substr(dot + 1);
+    const View* owner = view == "left"    ? eyes_[0].get()
+                        : view == "right" ? eyes_[1].get()
+                        : view == "mono"  ? mono_.get()
+                                          : nullptr;
+    if (owner == nullptr) return nullptr;
+    if (image == "hdr") return &owner->hdr;
+    if (image == "linear_depth") return &owner->linear_depth;
+    if (image == "velocity") return owner->velocity ? &*owner->velocity : nullptr;
+    return nullptr;  // depth, history, ao, display: their passes transition them
+}
+
+void ModeRenderer::record_pass(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                               FrameState& frame) {
+    // The plan's reads: colour images an earlier pass left as attachments become sampled.
+    for (const std::string& read : pass.reads) {
+        auto written =
+            std::find(frame.attachments_written.begin(), frame.attachments_written.end(), read);
+        if (written == frame.attachments_written.end()) continue;
+        if (const vk_core::Image* image = planned_image(read)) to_shader_read(cmd, *image);
+        frame.attachments_written.erase(written);
+    }
+    const bool timed = pass.kind != PassKind::kReadback;  // read-backs are not GPU frame time
+    if (timed) profiler_.begin_pass(cmd, pass.name);
+    if (!pass.statistics_scope.empty()) profiler_.begin_view(cmd, pass.statistics_scope);
+    record_planned(cmd, pass, frame);
+    if (!pass.statistics_scope.empty()) profiler_.end_view(cmd);
+    if (timed) profiler_.end_pass(cmd);
+    // The plan's writes: what this pass left as colour attachments.
+    for (const std::string& write : pass.writes) {
+        if (planned_image(write) != nullptr &&
+            std::find(frame.attachments_written.begin(), frame.attachments_written.end(), write) ==
+                frame.attachments_written.end()) {
+            frame.attachments_written.push_back(write);
+        }
+    }
+}
+
+std::optional<passes::Predicate> ModeRenderer::predicate(GpuPredicate when) const {
+    switch (when) {
+        case GpuPredicate::kAlways:
+            return std::nullopt;
+        case GpuPredicate::kMonoAny:
+            return culling_.predicate(MONOPLANE_PRED_MONO_ANY, false);
+        case GpuPredicate::kMonoNone:
+            return culling_.predicate(MONOPLANE_PRED_MONO_ANY, true);
+        case GpuPredicate::kMonoDepthTested:
+            return culling_.predicate(MONOPLANE_PRED_MONO_DEPTH_TESTED, false);
+        case GpuPredicate::kMonoUntested:
+            return culling_.predicate(MONOPLANE_PRED_MONO_UNTESTED, false);
+    }
+    return std::nullopt;
+}
+
+void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                                  const FrameState& frame) {
+    switch (pass.kind) {
+        case PassKind::kCulling:
+            culling_.record_frustum_phase(cmd);
+            break;
+        case PassKind::kShadow:
+            shadow_.record(cmd, geometry_, shadow_draws_, glm::mat4(frame.light_view_proj));
+            break;
+        case PassKind::kForward:
+            record_forward(cmd, pass);
+            break;
+        case PassKind::kDepthPyramid:
+            record_pyramid(cmd, pass, frame);
+            break;
+        case PassKind::kOcclusionCulling:
+            passes::with_predicate(cmd, predicate(pass.when),
+                                   [&] { culling_.record_occlusion_phase(cmd); });
+            break;
+        case PassKind::kMonoSsao:
+            // The far region's AO, computed once for both eyes (C alone sees it).
+            passes::with_predicate(cmd, predicate(pass.when), [&] {
+                ssao_->record_view(cmd, *mono_->ssao, mono_->area);
+                ssao_->record_apply(cmd, *mono_->ssao, mono_->hdr, mono_->area);
+            });
+            break;
+        case PassKind::kComposite:
+            record_composite(cmd, pass, frame);
+            break;
+        case PassKind::kSsao:
+            ssao_->record_pair(cmd, *eyes_[0]->ssao, *eyes_[1]->ssao, eye_extent_, *options_.ssao);
+            for (const auto& eye : eyes_) {
+                // In hybrid the far region already carries C's AO: only the near content takes
+                // the eyes'.
+                ssao_->record_apply(cmd, *eye->ssao, eye->hdr, eye_extent_,
+                                    frame.use_mono ? &eye->depth : nullptr);
+            }
+            break;
+        case PassKind::kTaa:
+            record_taa(cmd, *eyes_[pass.view == "left" ? 0 : 1]);
+            break;
+        case PassKind::kTonemap:
+            record_tonemap(cmd, pass, frame);
+            break;
+        case PassKind::kReadback:
+            record_readback(cmd, frame);
+            break;
+    }
+}
+
+void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass) {
+    std::vector<passes::ForwardDraw> draws;
+    for (const PlannedDraw& draw : pass.draws) {
+        draws.push_back({forward_step(draw.step), predicate(draw.when)});
+    }
+    if (pass.view == "eyes") {
+        // Both eyes in one pass, from the list of chunks either eye needs.
+        eyes_forward_->record(cmd, eye_layers_->forward_targets(eye_extent_), *eye_pair_set_,
+                              *merged_depth_set_, geometry_,
+                              culling_.draws(passes::CullView::kBothEyes), draws);
+        return;
+    }
+    if (pass.view == "mono") {
+        // Pixels hidden in both eyes stay unwritten; C's image read back shows them black,
+        // and C's SSAO must not read stale depths there.
+        const bool masked = std::any_of(pass.draws.begin(), pass.draws.end(), [](const auto& d) {
+            return d.step == DrawStep::kMaskHidden || d.step == DrawStep::kChunksDiscardHidden;
+        });
+        const bool clear_color = masked && (options_.read_back || ssao_);
+        forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,
+                        *merged_depth_set_, geometry_, culling_.draws(passes::CullView::kMono),
+                        draws);
+        return;
+    }
+    const int e = pass.view == "left" ? 0 : 1;
+    forward_.record(cmd, eyes_[e]->forward_targets(), *eyes_[e]->forward_set, *merged_depth_set_,
+                    geometry_, culling_.draws(static_cast<passes::CullView>(e)), draws);
+}
+
+void ModeRenderer::record_pyramid(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                                  const FrameState& frame) {
+    for (const auto& eye : eyes_) {
+        vk_core::transition(cmd, eye->depth, vk::ImageLayout::eDepthAttachmentOptimal,
+                            vk::ImageLayout::eDepthReadOnlyOptimal, Stage::eLateFragmentTests,
+                            Access::eDepthStencilAttachmentWrite, Stage::eComputeShader,
+                            Access::eShaderSampledRead);
+    }
+    std::array<glm::dmat3, 2> mono_to_eye;
+    for (int e = 0; e < 2; ++e) {
+        mono_to_eye[e] =
+            rig::jittered_pixel_mapping(rig::mono_pixel_to_eye_pixel(*rig_, e), frame.jitter_px);
+    }
+    pyramid_.record(cmd, mono_to_eye, predicate(pass.when));
+    for (const auto& eye : eyes_) {
+        vk_core::transition(cmd, eye->depth, vk::ImageLayout::eDepthReadOnlyOptimal,
+                            vk::ImageLayout::eDepthAttachmentOptimal, Stage::eComputeShader,
+                            Access::eShaderSampledRead,
+                            Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
+                            Access::eDepthStencilAttachmentRead);
+    }
+}
+
+void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                                    const FrameState& frame) {
+    const FrameInputs& inputs = *frame.inputs;
+    const int e = pass.view == "left" ? 0 : 1;
+    const View& view = *eyes_[e];
+    passes::CompositeParams params;
+    params.mono_allocation = glm::vec2(static_cast<float>(mono_->extent.width),
+                                       static_cast<float>(mono_->extent.height));
+    if (frame.farfield) {
+        params.mapping = passes::CompositeMapping::kOffsetCopy;
+        params.pixel_offset = frame.farfield->offsets[e];
+        // Same pixel size: NDC velocities scale with the images' widths.
+        params.velocity_scale = glm::vec2(
+            static_cast<float>(mono_->area.width) / static_cast<float>(eye_extent_.width),
+            static_cast<float>(mono_->area.height) / static_cast<float>(eye_extent_.height));
+    } else {
+        // Eq. 5 between the jittered clip spaces: C's image and the eye's are both displaced by
+        // the jitter, so the mapping undoes one and applies the other.
+        params.eye_to_mono =
+            glm::mat4(frame.mono_jitter * rig_->eye_to_mono[e] * glm::inverse(frame.eye_jitter));
+        params.velocity_scale = glm::vec2(rig::mono_velocity_to_eye(*rig_, e));
+        // C's image is valid in [0, viewport / allocation] (Sect. 4.2). The image may be larger
+        // than the rig's own allocation: it was sized for an earlier m.
+        params.uv_scale = glm::vec2(static_cast<float>(mono_->area.width),
+                                    static_cast<float>(mono_->area.height)) /
+                          params.mono_allocation;
+    }
+    if (inputs.debug == DebugView::kTintMono) params.tint = 1.0f;
+    if (inputs.debug == DebugView::kStereoOnly) params.mapping = passes::CompositeMapping::kNothing;
+    params.cover_all_pixels = inputs.debug == DebugView::kMonoOnly;
+    params.when = predicate(pass.when);
+    composite_.record(
+        cmd, {view.hdr, view.linear_depth, view.depth, view.velocity ? &*view.velocity : nullptr},
+        *mono_->composite_set, params);
+}
+
+void ModeRenderer::record_tonemap(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                                  const FrameState& frame) {
+    if (pass.view == "mono") {
+        tonemap_.record(cmd, mono_->display, *mono_->tonemap_set, options_.tonemap);
+        return;
+    }
+    const View& view = *eyes_[pass.view == "left" ? 0 : 1];
+    const vk::DescriptorSet input =
+        frame.taa ? *view.tonemap_taa_sets[history_parity_] : *view.tonemap_set;
+    tonemap_.record(cmd, view.display, input, options_.tonemap);
+}
+
+void ModeRenderer::record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame) {
+    for (const auto& view : eyes_) {
+        if (options_.read_back) {
+            copy_to_buffer(cmd, view->display, view->extent, view->readback,
+                           vk::ImageLayout::eColorAttachmentOptimal);
+        }
+        if (options_.read_back_depth) {
+            copy_to_buffer(cmd, view->linear_depth, view->extent, view->depth_readback,
+                           vk::ImageLayout::eShaderReadOnlyOptimal);
+        }
+        if (options_.read_back_ao) ssao_->record_readback(cmd, *view->ssao);
+    }
+    if (frame.use_mono && options_.read_back) {
+        copy_to_buffer(cmd, mono_->display, mono_->area, mono_->readback,
+                       vk::ImageLayout::eColorAttachmentOptimal);
+    }
+    culling_.record_readback(cmd, options_.read_back_draw_lists);
+}
+
+profile::FrameStats ModeRenderer::collect_frame(double record_ms, bool use_mono) {
     profile::FrameStats stats = profiler_.collect();
     stats.cpu_record_ms = record_ms;
     const auto counts = culling_.counts();
@@ -970,19 +969,7 @@ profile::FrameStats ModeRenderer::render_frame(
     return stats;
 }
 
-void ModeRenderer::record_ssao(const vk::raii::CommandBuffer& cmd, bool use_mono) {
-    profiler_.begin_pass(cmd, "ssao");
-    ssao_->record_pair(cmd, *eyes_[0]->ssao, *eyes_[1]->ssao, eye_extent_, *options_.ssao);
-    for (const auto& eye : eyes_) {
-        // In hybrid the far region already carries C's AO: only the near content takes the eyes'.
-        ssao_->record_apply(cmd, *eye->ssao, eye->hdr, eye_extent_,
-                            use_mono ? &eye->depth : nullptr);
-    }
-    profiler_.end_pass(cmd);
-}
-
-void ModeRenderer::record_taa(const vk::raii::CommandBuffer& cmd, View& view, Eye eye) {
-    to_shader_read(cmd, *view.velocity);
+void ModeRenderer::record_taa(const vk::raii::CommandBuffer& cmd, View& view) {
     const vk_core::Image& history = *view.history[1 - history_parity_];
     if (!history_valid_) {
         // Never written (or stale): bound for the shader's interface, not read on a reset.
@@ -991,10 +978,8 @@ void ModeRenderer::record_taa(const vk::raii::CommandBuffer& cmd, View& view, Ey
                             Access::eShaderSampledRead, Stage::eFragmentShader,
                             Access::eShaderSampledRead);
     }
-    profiler_.begin_pass(cmd, std::string(eye_name(eye)) + ".taa");
     const vk_core::Image& output = *view.history[history_parity_];
     taa_.record(cmd, output, *view.taa_sets[history_parity_], options_.taa, !history_valid_);
-    profiler_.end_pass(cmd);
     to_shader_read(cmd, output);
 }
 

@@ -1,15 +1,11 @@
-// The render modes of DESIGN.md section 6 as lists of passes over shared resources:
-//   stereo:          culling, shadow*, per eye {forward+sky}, [ssao], per eye {[taa], tonemap}
-//                    (stereo-multiview, stereo-gs: one forward+sky pass for both eyes)
-//   hybrid:          culling, shadow*, per eye {forward n..m, sky only if C has nothing},
-//                    [depth pyramid, [occlusion culling]], C {forward m-eps..f + sky, [ssao]},
-//                    per eye {composite C through M_{E->C}}, [ssao of the near content],
-//                    per eye {[taa], tonemap}
-//   hybrid-farfield: as hybrid with C at the eyes' centre, no overlap, an offset copy
-// then read-backs (* only when the light's region changed). One GPU culling pass sorts the chunks
-// into the views' indirect draw lists; predicates computed by it skip, on the GPU, C and the
-// composite when C has nothing to draw, and the pyramid when no eye drew anything. With m >= f,
-// hybrid records exactly the stereo list: nothing lies beyond the plane.
+// The render modes of DESIGN.md section 6, executed from the frame plan (renderer/plan/
+// frame_plan.h: which passes run, in what order, what each reads and writes): the renderer owns
+// the views' images and the passes, prepares a frame's matrices and culling, asks plan_frame for
+// the passes and records each. Colour images an earlier pass left as attachments are made
+// readable before the first pass the plan says reads them; depth and the passes' own images are
+// still transitioned by their passes. One GPU culling pass sorts the chunks into the views'
+// indirect draw lists; predicates computed by it skip, on the GPU, C and the composite when C has
+// nothing to draw, and the pyramid when no eye drew anything.
 #pragma once
 
 #include <array>
@@ -29,55 +25,15 @@
 #include "renderer/passes/ssao/ssao_pass.h"
 #include "renderer/passes/taa/taa_pass.h"
 #include "renderer/passes/tonemap/tonemap_pass.h"
+#include "renderer/plan/frame_plan.h"
+#include "renderer/plan/render_choices.h"
 #include "renderer/profile/frame_profiler.h"
 #include "renderer/rig/rig.h"
 
 namespace monoplane::modes {
 
-enum class Mode { kStereo, kHybrid, kHybridFarfield };
-
-// How the eyes' forward passes are drawn, in stereo and in hybrid's near region: one pass per eye,
-// or one pass for both (papers/001's geometry-shader duplication, or VK_KHR_multiview) into the
-// layers of two-layer targets. All three draw the same images (tests/gpu/single_pass_stereo_test).
-enum class StereoPass { kTwoPasses, kMultiview, kGeometryShader };
-std::optional<StereoPass> parse_stereo_pass(const std::string& name);  // "two", "multiview", "gs"
-std::string stereo_pass_name(StereoPass pass);
-
-// A mode as the CLI, protocols and bench.json name it: stereo-multiview and stereo-gs are stereo
-// with a single-pass StereoPass (DESIGN.md section 6).
-struct RenderModeChoice {
-    Mode mode = Mode::kStereo;
-    StereoPass stereo_pass = StereoPass::kTwoPasses;
-};
-std::optional<RenderModeChoice> parse_render_mode(const std::string& name);
-// "stereo", "stereo-multiview", "stereo-gs", "hybrid", "hybrid-farfield" (the hybrid modes'
-// stereo pass is not part of their name).
-std::string render_mode_name(const RenderModeChoice& choice);
-
-// Debug views (DESIGN.md section 6) of the hybrid modes.
-// kRouting (any mode) colours each chunk by the lists the GPU culling put it in: green eyes
-// only, blue C only, magenta both (papers/003's tool for choosing force-mono objects).
-enum class DebugView { kNone, kTintMono, kStereoOnly, kMonoOnly, kRouting };
-
-std::optional<Mode> parse_mode(const std::string& name);
-std::string mode_name(Mode mode);
-std::optional<DebugView> parse_debug_view(const std::string& name);
-
-// How much of C's work the merged depth pyramid of both eyes saves (papers/000 Sect. 4.4 and the
-// three variants of Sect. 5.1, Fig. 5): none ("No Opt.", frustum culling only), C's fragments
-// hidden in both eyes discarded ("Discard"), and C's chunks hidden in both eyes not drawn at all
-// ("Occl. Cull.", with Discard). hybrid-farfield uses frustum culling only.
-enum class MonoCulling { kNoOpt, kDiscard, kOcclusionCull };
-std::optional<MonoCulling> parse_mono_culling(const std::string& name);
-std::string mono_culling_name(MonoCulling culling);  // "no-opt", "discard", "occlusion-cull"
-
-// Anti-aliasing (papers/000 Sect. 4.5). TAA works in every mode; MSAA only in stereo, because
-// resolving before the composite leaves C's samples out and resolving after it would need every
-// sample mapped (docs/hybrid.md, "MSAA: stereo only, and why").
-enum class AntiAliasing { kNone, kTaa, kMsaa2, kMsaa4, kMsaa8 };
-std::optional<AntiAliasing> parse_anti_aliasing(const std::string& name);  // "none", "taa", "msaa4"
-std::string anti_aliasing_name(AntiAliasing aa);
-vk::SampleCountFlagBits msaa_samples(AntiAliasing aa);  // e1 for none and TAA
+// MSAA's sample count for Vulkan: e1 for none and TAA.
+vk::SampleCountFlagBits msaa_samples(AntiAliasing aa);
 
 struct RendererOptions {
     StereoPass stereo_pass = StereoPass::kTwoPasses;
@@ -89,7 +45,11 @@ struct RendererOptions {
     passes::TaaParams taa;
     std::optional<passes::SsaoVariant> ssao;  // none: no ambient occlusion
     passes::SsaoParams ssao_params;
-    bool read_back_ao = false;          // the eyes' AO to the host (needs ssao)
+    bool read_back_ao = false;  // the eyes' AO to the host (needs ssao)
+    // A depth-only pass before each forward pass, whose shading then tests for equality: each
+    // visible pixel shaded once whatever the draw order. Off by default: on llvmpipe the pass
+    // costs more than the shading it saves (docs/benchmarks.md, "Shading each pixel once").
+    bool depth_prepass = false;
     bool read_back = true;              // display images to the host (PNGs, tests)
     bool read_back_depth = false;       // linear depth to the host (tests, later analyses)
     bool read_back_draw_lists = false;  // each view's chunk list to the host (tests)
@@ -154,6 +114,8 @@ class ModeRenderer {
     const std::optional<rig::Rig>& last_rig() const { return rig_; }
     // The chunk indices the last frame drew in a view, in draw order (read_back_draw_lists).
     std::vector<std::uint32_t> drawn_chunks(passes::CullView view) const;
+    // The plan the last frame executed (render --json, bench.json).
+    const FramePlan& last_plan() const { return last_plan_; }
 
   private:
     struct ForwardImages;
@@ -175,8 +137,33 @@ class ModeRenderer {
                      const glm::dmat4& light_view_proj, double hidden_depth_threshold = 0.0);
     // Allocates a view's TAA and tone-mapping sets over its history images.
     void write_taa_sets(View& view) const;
-    void record_taa(const vk::raii::CommandBuffer& cmd, View& view, Eye eye);
-    void record_ssao(const vk::raii::CommandBuffer& cmd, bool use_mono);
+
+    // A frame: its state, the plan for it, and one recorder per kind of pass.
+    struct FrameState;
+    FrameState prepare_frame(const FrameInputs& inputs);
+    void build_frame_rig(const FrameInputs& inputs, FrameState& frame);
+    void update_frame_views(const FrameInputs& inputs, FrameState& frame);
+    FramePlan plan(const FrameInputs& inputs, const FrameState& frame) const;
+    // The image a plan resource names, when the executor transitions it (colour images the
+    // passes leave as attachments), else nullptr.
+    const vk_core::Image* planned_image(const std::string& resource) const;
+    std::optional<passes::Predicate> predicate(GpuPredicate when) const;
+    // Transitions for the pass's reads, its profiler scopes, and its commands.
+    void record_pass(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                     FrameState& frame);
+    void record_planned(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                        const FrameState& frame);
+    void record_forward(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass);
+    void record_pyramid(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                        const FrameState& frame);
+    void record_composite(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                          const FrameState& frame);
+    void record_taa(const vk::raii::CommandBuffer& cmd, View& view);
+    void record_tonemap(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                        const FrameState& frame);
+    void record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame);
+    // The submitted frame's statistics and read-backs.
+    profile::FrameStats collect_frame(double record_ms, bool use_mono);
     // Whether the scene's routing flags may be honoured this frame (scenes::ChunkRouting).
     void decide_routing(const FrameInputs& inputs, passes::CullFrame& cull) const;
 
@@ -209,6 +196,7 @@ class ModeRenderer {
     std::unique_ptr<MonoView> mono_;
     bool mono_rendered_ = false;
     std::optional<rig::Rig> rig_;
+    FramePlan last_plan_;
     std::optional<glm::dmat4> shadow_light_view_proj_;
     // TAA's history: which of each view's two output images holds it, and what it continues.
     std::uint64_t next_frame_index_ = 0;

@@ -48,6 +48,10 @@ const std::uint32_t kSkyDiscardHiddenVelocityFrag[] = {
 #include "sky_discard_hidden_velocity.frag.spv.inc"
 };
 
+const std::uint32_t kMaskHiddenFrag[] = {
+#include "mask_hidden.frag.spv.inc"
+};
+
 const std::uint32_t kForwardMultiviewVert[] = {
 #include "forward_multiview.vert.spv.inc"
 };
@@ -232,11 +236,28 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& confi
     geometry.depth_format = kDepthFormat;
     geometry.samples = config.samples;
     geometry.view_mask = view_mask;
-    geometry_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
+    // Each chunk pipeline twice: testing and writing depth, and after a depth pre-pass, testing
+    // for the depth the pre-pass left (the same vertex shader, invariant gl_Position).
+    auto make_chunk_pipelines = [&](vk::raii::Pipeline& first, vk::raii::Pipeline& after_prepass) {
+        geometry.depth_write = true;
+        geometry.depth_compare = vk::CompareOp::eGreaterOrEqual;
+        first = vk_core::make_graphics_pipeline(ctx, geometry);
+        geometry.depth_write = false;
+        geometry.depth_compare = vk::CompareOp::eEqual;
+        after_prepass = vk_core::make_graphics_pipeline(ctx, geometry);
+        geometry.depth_write = true;
+        geometry.depth_compare = vk::CompareOp::eGreaterOrEqual;
+    };
+    make_chunk_pipelines(geometry_pipeline_, geometry_after_prepass_pipeline_);
+    // Depth only: no fragment shader and no colour written; nearer is greater, as always.
+    vk_core::GraphicsPipelineDesc prepass = geometry;
+    prepass.fragment = nullptr;
+    prepass.blend = vk::PipelineColorBlendAttachmentState().setColorWriteMask({});
+    depth_prepass_pipeline_ = vk_core::make_graphics_pipeline(ctx, prepass);
     if (!shaders.discard_hidden.empty()) {
         const vk::raii::ShaderModule discard_frag = module(shaders.discard_hidden);
         geometry.fragment = *discard_frag;
-        discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
+        make_chunk_pipelines(discard_hidden_pipeline_, discard_hidden_after_prepass_pipeline_);
     }
     const vk::raii::ShaderModule routing_vert = module(shaders.show_routing_vertex);
     const vk::raii::ShaderModule routing_geom = module(shaders.show_routing_geometry);
@@ -244,7 +265,7 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& confi
     geometry.vertex = *routing_vert;
     geometry.geometry = *routing_geom;
     geometry.fragment = *routing_frag;
-    show_routing_pipeline_ = vk_core::make_graphics_pipeline(ctx, geometry);
+    make_chunk_pipelines(show_routing_pipeline_, show_routing_after_prepass_pipeline_);
 
     // The sky covers only pixels still at the cleared far depth (0 with reversed Z).
     const vk::raii::ShaderModule fullscreen_vert = vk_core::make_shader(ctx, kFullscreenVert);
@@ -267,6 +288,17 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& confi
         const vk::raii::ShaderModule sky_discard_frag = module(shaders.sky_discard_hidden);
         sky.fragment = *sky_discard_frag;
         sky_discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
+    }
+    if (config.stereo == StereoDuplication::kNone) {
+        // Every pixel at once, whatever the depth; only the hidden ones survive the discard.
+        const vk::raii::ShaderModule mask_frag = vk_core::make_shader(ctx, kMaskHiddenFrag);
+        vk_core::GraphicsPipelineDesc mask = sky;
+        mask.geometry = nullptr;
+        mask.fragment = *mask_frag;
+        mask.depth_write = true;
+        mask.depth_compare = vk::CompareOp::eAlways;
+        mask.blend = vk::PipelineColorBlendAttachmentState().setColorWriteMask({});
+        mask_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, mask);
     }
 }
 
@@ -344,24 +376,47 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
     vk_core::set_viewport_and_scissor(cmd, targets.area);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, view_set, {});
     geometry.bind(cmd);
+    // Whether a depth pre-pass precedes the chunk steps: they then test for its depths.
+    bool prepassed = false;
+    auto chunk_pipeline = [&](const vk::raii::Pipeline& first,
+                              const vk::raii::Pipeline& after_prepass) {
+        return prepassed ? *after_prepass : *first;
+    };
     for (const ForwardDraw& draw : steps) {
         with_predicate(cmd, draw.when, [&] {
             switch (draw.step) {
+                case ForwardStep::kMaskHidden:
+                    assert(*mask_hidden_pipeline_);
+                    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
+                                           merged_depth_set, {});
+                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *mask_hidden_pipeline_);
+                    cmd.draw(3, 1, 0, 0);
+                    break;
+                case ForwardStep::kDepthPrepass:
+                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *depth_prepass_pipeline_);
+                    chunks.record(cmd);
+                    break;
                 case ForwardStep::kChunks:
-                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *geometry_pipeline_);
+                    cmd.bindPipeline(
+                        vk::PipelineBindPoint::eGraphics,
+                        chunk_pipeline(geometry_pipeline_, geometry_after_prepass_pipeline_));
                     chunks.record(cmd);
                     break;
                 case ForwardStep::kChunksDiscardHidden:
                     assert(*discard_hidden_pipeline_);
                     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
                                            merged_depth_set, {});
-                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *discard_hidden_pipeline_);
+                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
+                                     chunk_pipeline(discard_hidden_pipeline_,
+                                                    discard_hidden_after_prepass_pipeline_));
                     chunks.record(cmd);
                     break;
                 case ForwardStep::kChunksShowRouting:
                     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
                                            merged_depth_set, {});
-                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *show_routing_pipeline_);
+                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
+                                     chunk_pipeline(show_routing_pipeline_,
+                                                    show_routing_after_prepass_pipeline_));
                     chunks.record(cmd);
                     break;
                 case ForwardStep::kSky:
@@ -378,6 +433,8 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                     break;
             }
         });
+        // A predicated pre-pass runs under the same predicate as the chunk steps after it.
+        if (draw.step == ForwardStep::kDepthPrepass) prepassed = true;
     }
     cmd.endRendering();
 }

@@ -59,7 +59,12 @@ struct ForwardConfig {
 };
 
 // What a forward pass draws, in order; each step may run under a GPU predicate.
+// With kDepthPrepass first, the chunk steps after it test depth for equality and write none, so
+// each visible pixel is shaded about once whatever the draw order (docs/benchmarks.md measures
+// the fragments it saves); without it they test and write as usual.
 enum class ForwardStep {
+    kMaskHidden,           // C only, before the pre-pass: pixels hidden in both eyes at depth 1
+    kDepthPrepass,         // the view's chunk list, depth only (no fragment shader)
     kChunks,               // the view's chunk list, every fragment shaded
     kChunksDiscardHidden,  // the same, discarding fragments hidden in both eyes (C only)
     kSky,                  // the sky where nothing was drawn
@@ -102,9 +107,14 @@ class ForwardPass {
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::DescriptorSetLayout merged_depth_layout_{nullptr};
     vk::raii::PipelineLayout layout_{nullptr};
+    vk::raii::Pipeline depth_prepass_pipeline_{nullptr};
+    vk::raii::Pipeline mask_hidden_pipeline_{nullptr};  // one-view passes only (C's)
     vk::raii::Pipeline geometry_pipeline_{nullptr};
+    vk::raii::Pipeline geometry_after_prepass_pipeline_{nullptr};
     vk::raii::Pipeline discard_hidden_pipeline_{nullptr};
+    vk::raii::Pipeline discard_hidden_after_prepass_pipeline_{nullptr};
     vk::raii::Pipeline show_routing_pipeline_{nullptr};
+    vk::raii::Pipeline show_routing_after_prepass_pipeline_{nullptr};
     vk::raii::Pipeline sky_pipeline_{nullptr};
     vk::raii::Pipeline sky_discard_hidden_pipeline_{nullptr};
 };

@@ -39,7 +39,10 @@ void main() {
 #endif
 #ifndef MONOPLANE_STEREO_GS
     // precise (no fused multiply-add): stereo_duplicate.geom computes the same product and must
-    // round it the same way, or a pixel on a triangle's edge may be covered in one form only.
+    // round it the same way, or a pixel on a triangle's edge may be covered in one form only. The
+    // depth pre-pass (ForwardStep::kDepthPrepass) relies on it too: its pipeline and the shading
+    // pipeline after it run this code and compare depths for equality. (`invariant gl_Position`
+    // would say so in GLSL, but Mesa 22.3's SPIR-V reader warns on the decoration it produces.)
     precise vec4 clip = view.view_proj * vec4(world, 1.0);
     gl_Position = clip;
 #endif

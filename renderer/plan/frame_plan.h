@@ -1,0 +1,141 @@
+// The frame plan: which passes a frame runs, in what order, what each reads and writes, under
+// which GPU predicate, and, for a pass the frame leaves out, why. A pure function of the mode, the
+// renderer's options, the frame's rig and the device's capabilities: the renderer
+// (renderer/modes/mode_renderer.h) only executes it, render --json and bench.json report it
+// (DESIGN.md section 8, "plan"), and tests/unit/frame_plan_test.cpp checks it without a GPU.
+//
+// The plans (docs/architecture.md prints them as plan_frame produces them):
+//   stereo:          culling, shadow*, per eye {forward: chunks, sky}, [ssao],
+//                    per eye {[taa], tonemap}, read-back
+//                    (stereo-multiview, stereo-gs: one eyes.forward for both eyes)
+//   hybrid:          culling, shadow*, per eye {forward n..m: chunks, sky only if C has nothing},
+//                    [depth pyramid, [occlusion culling]], C {forward m-eps..f + sky}, [C's ssao],
+//                    per eye {composite C through M_{E->C}}, [ssao of the near content],
+//                    per eye {[taa], tonemap}, [C's tonemap], read-back
+//   hybrid-farfield: as hybrid with C at the eyes' centre, no pyramid, an offset copy
+// (* only when the light's region changed). With m >= f (the rig's mono_skipped) hybrid's executed
+// passes are exactly stereo's: nothing lies beyond the plane.
+//
+// When may this be called: any time; it allocates and touches no device.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/plan/render_choices.h"
+
+namespace monoplane::modes {
+
+// What a pass does; the executor records each kind with one function.
+enum class PassKind {
+    kCulling,           // GPU chunk culling into the views' indirect draw lists and predicates
+    kShadow,            // the sun's shadow map
+    kForward,           // a view's forward pass (steps below); view "left", "right", "eyes", "mono"
+    kDepthPyramid,      // the merged depth pyramid of both eyes (papers/000 Sect. 4.4)
+    kOcclusionCulling,  // C's list re-sorted against the pyramid
+    kMonoSsao,          // C's ambient occlusion, once for both eyes (hybrid)
+    kComposite,         // C mapped into an eye (eq. 5) or offset-copied (hybrid-farfield)
+    kSsao,              // the eyes' ambient occlusion (near content only in hybrid)
+    kTaa,               // an eye's temporal anti-aliasing resolve
+    kTonemap,           // an eye's (or C's) tone mapping into its display image
+    kReadback,          // images, depths, AO and draw lists to the host; not part of GPU time
+};
+std::string pass_kind_name(PassKind kind);
+
+// A predicate the GPU evaluates from the culling pass's words (VK_EXT_conditional_rendering):
+// the plan cannot know, the GPU skips. Without conditional rendering every predicate is kAlways.
+enum class GpuPredicate {
+    kAlways,
+    kMonoAny,          // C's list is not empty
+    kMonoNone,         // C's list is empty (the eyes then draw their own sky)
+    kMonoDepthTested,  // C has something and an eye drew something (a pyramid was built)
+    kMonoUntested,     // C has something and no eye drew anything
+};
+std::string gpu_predicate_name(GpuPredicate predicate);  // "always", "mono-any", ...
+
+// One draw of a forward pass, in order (passes::ForwardStep, one to one).
+enum class DrawStep {
+    kMaskHidden,           // C: pixels hidden in both eyes set to the nearest depth first
+    kDepthPrepass,         // the view's chunks, depth only; later chunk steps test for equality
+    kChunks,               // the view's chunk list, shaded
+    kChunksDiscardHidden,  // the same, discarding fragments hidden in both eyes (C, no mask)
+    kChunksShowRouting,    // debug view "routing"
+    kSky,                  // the sky where nothing was drawn
+    kSkyDiscardHidden,     // the same, skipping pixels hidden in both eyes (C, no mask)
+};
+std::string draw_step_name(DrawStep step);  // "mask-hidden", "depth-prepass", "chunks", ...
+
+struct PlannedDraw {
+    DrawStep step = DrawStep::kChunks;
+    GpuPredicate when = GpuPredicate::kAlways;
+    bool operator==(const PlannedDraw&) const = default;
+};
+
+struct PlannedPass {
+    PassKind kind = PassKind::kCulling;
+    // The profiler's scope and the key of bench.json's "passes": "culling", "shadow",
+    // "left.forward", "eyes.forward", "mono.forward", "depth_pyramid", "occlusion_culling",
+    // "mono.ssao", "left.composite", "ssao", "left.taa", "left.tonemap", "mono.tonemap",
+    // "readback".
+    std::string name;
+    // "left", "right", "eyes" (both, single-pass stereo), "mono" (C), or "" for passes over
+    // every view (culling, shadow, pyramid, ssao, read-back).
+    std::string view;
+    // The pipeline-statistics scope of the pass (per-view counters in render/bench), or "".
+    // Forward passes count under their view, composites under "<eye>.composite".
+    std::string statistics_scope;
+    // Resources by name, "<view>.<image>" for a view's images (hdr, depth, linear_depth,
+    // velocity, ao, history, display) and "draw_lists", "predicates", "shadow_map",
+    // "merged_depth", "host" for the shared ones.
+    std::vector<std::string> reads;
+    std::vector<std::string> writes;
+    GpuPredicate when = GpuPredicate::kAlways;  // the whole pass
+    std::vector<PlannedDraw> draws;             // kForward only
+    // Set when this frame leaves the pass out: why, for a reader ("light region unchanged: the
+    // shadow map is reused", "m >= far: nothing lies beyond the mono plane", ...).
+    std::optional<std::string> skipped;
+};
+
+struct FramePlan {
+    std::vector<PlannedPass> passes;  // in execution order, skipped ones where they would run
+    // The passes that run, in order.
+    std::vector<const PlannedPass*> executed() const;
+    // The names of the passes that run, in order (what tests compare).
+    std::vector<std::string> executed_names() const;
+    // The pass of that name, or nullptr.
+    const PlannedPass* find(const std::string& name) const;
+};
+
+// What the renderer was built with (RendererOptions, less what does not change the plan).
+struct PlanOptions {
+    Mode mode = Mode::kStereo;
+    StereoPass stereo_pass = StereoPass::kTwoPasses;
+    AntiAliasing anti_aliasing = AntiAliasing::kNone;
+    bool ssao = false;           // any SSAO variant
+    bool depth_prepass = false;  // RendererOptions::depth_prepass
+    bool read_back = true;       // display images (and C's tone-mapped image) to the host
+    bool read_back_depth = false;
+    bool read_back_ao = false;
+    bool read_back_draw_lists = false;
+};
+
+// What this frame brings.
+struct PlanFrame {
+    // The rig's verdict (rig::Rig::mono_skipped): nothing lies beyond the mono plane (m >= far),
+    // so hybrid draws no C. Ignored in stereo.
+    bool mono_skipped = false;
+    MonoCulling mono_culling = MonoCulling::kOcclusionCull;
+    DebugView debug = DebugView::kNone;
+    // The light's region moved since the shadow map was drawn (or it never was).
+    bool shadow_needed = true;
+};
+
+struct PlanDevice {
+    bool conditional_rendering = false;  // VK_EXT_conditional_rendering: GPU predicates
+};
+
+FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device);
+
+}  // namespace monoplane::modes
