@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "common/json_writer.h"
+#include "renderer/plan/frame_plan_json.h"
 
 namespace monoplane::app {
 
@@ -51,6 +52,7 @@ std::string bench_json(const BenchReport& report) {
     j.value("detail", report.detail).value("view", report.view).value("seed", report.seed);
     j.value("anti_aliasing", report.anti_aliasing).value("ssao", report.ssao);
     j.value("vertex_work", static_cast<std::uint64_t>(report.vertex_work));
+    j.value("depth_prepass", report.depth_prepass);
     j.value("warmup_frames", report.warmup).value("frames", report.frames);
     j.begin_array("runs");
     for (const BenchRun& run : report.runs) {
@@ -79,9 +81,13 @@ std::string bench_json(const BenchReport& report) {
         j.begin_object("view_fragments");
         for (const auto& [view, n] : run.view_fragments) j.value(view, n);
         j.end_object();
+        j.begin_object("view_fragments_per_pixel");
+        for (const auto& [view, n] : run.view_fragments_per_pixel) j.value(view, n);
+        j.end_object();
         j.begin_object("draws");
         for (const auto& [view, n] : run.view_draws) j.value(view, n);
         j.end_object();
+        modes::write_plan_json(j, run.plan);
         optional_value(j, "ssim_vs_stereo", run.ssim_vs_stereo);
         optional_value(j, "max_error_px", run.max_error_px);
         optional_value(j, "drift_px", run.drift_px);

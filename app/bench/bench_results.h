@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/plan/frame_plan.h"
+
 namespace monoplane::app {
 
 struct BenchRun {
@@ -32,6 +34,10 @@ struct BenchRun {
     std::map<std::string, std::uint64_t> view_primitives;
     std::map<std::string, std::uint64_t> view_draws;
     std::map<std::string, std::uint64_t> view_fragments;  // every view, composites included
+    // Fragment-shader invocations per pixel of each view (its drawn area: an eye's image, C's
+    // viewport of eq. 8, both eyes' for single-pass "eyes"); llvmpipe counts every covered
+    // pixel of every 2x2 quad, whether or not the depth test then rejects it.
+    std::map<std::string, double> view_fragments_per_pixel;
     std::uint64_t primitives = 0;
     std::uint64_t fragments = 0;  // all views, composites included
     // Vertex and geometry shader invocations of the scene views (papers/001: single-pass stereo
@@ -53,6 +59,8 @@ struct BenchRun {
     std::optional<double> stereo_frame_ms_median;  // of the interleaved stereo frames
     std::optional<double> primitive_ratio;
     std::optional<double> vertex_invocation_ratio;  // to the scene's stereo run
+    // The plan of the last measured frame (renderer/plan/frame_plan.h).
+    modes::FramePlan plan;
 };
 
 struct BenchReport {
@@ -65,6 +73,7 @@ struct BenchReport {
     std::string anti_aliasing = "none";  // of every run, the stereo reference included
     std::string ssao = "off";
     std::uint32_t vertex_work = 0;  // the vertex-heavy configuration's rounds (0: none)
+    bool depth_prepass = false;     // RendererOptions::depth_prepass in every run
     std::uint64_t seed = 0;
     int warmup = 0;
     int frames = 0;

@@ -56,6 +56,7 @@ struct BenchOptions {
     std::string ssao = "off";
     std::string stereo_pass = "two";
     std::uint32_t vertex_work = 0;
+    bool depth_prepass = false;
     std::string out;
 };
 
@@ -142,6 +143,21 @@ class Progress {
     bool terminal_;
 };
 
+// The pixels a view's passes cover: an eye's image (its composite too), both eyes' for the
+// single-pass "eyes", C's viewport (eq. 8) for "mono"; 0 for a view it does not know.
+std::uint64_t view_pixels(const modes::ModeRenderer& renderer, const std::string& view) {
+    const vk::Extent2D eye = renderer.eye_extent();
+    const std::uint64_t eye_pixels = std::uint64_t{eye.width} * eye.height;
+    if (view == "left" || view == "right" || view.ends_with(".composite")) return eye_pixels;
+    if (view == "eyes") return 2 * eye_pixels;
+    if (view == "mono" && renderer.last_rig()) {
+        const rig::MonoCamera& mono = renderer.last_rig()->mono;
+        return static_cast<std::uint64_t>(mono.viewport_width) *
+               static_cast<std::uint64_t>(mono.viewport_height);
+    }
+    return 0;
+}
+
 // Warm-up frames (shader compilation, the one-off shadow map, C's allocation), then measured
 // frames without read-back. With a reference renderer (stereo), its frames are interleaved with
 // the measured ones (in alternating order) and the time ratio is the median of the per-pair
@@ -183,9 +199,14 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
         run.time_ratio = percentile(ratios, 0.5);
         run.stereo_frame_ms_median = percentile(reference_ms, 0.5);
     }
+    run.plan = renderer.last_plan();
     for (const profile::ViewStatistics& v : summary.views) {
         run.fragments += v.fragment_invocations;
         run.view_fragments[v.view] = v.fragment_invocations;
+        if (const std::uint64_t pixels = view_pixels(renderer, v.view); pixels > 0) {
+            run.view_fragments_per_pixel[v.view] =
+                static_cast<double>(v.fragment_invocations) / static_cast<double>(pixels);
+        }
         if (v.view.find('.') != std::string::npos) continue;  // composites: not scene work
         run.primitives += v.clipping_invocations;
         run.vertex_invocations += v.vertex_invocations;
@@ -298,6 +319,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     modes::RendererOptions renderer_options;
     apply_image_quality_flags(o.anti_aliasing, o.ssao, renderer_options);
     renderer_options.vertex_work = o.vertex_work;
+    renderer_options.depth_prepass = o.depth_prepass;
     if (modes::msaa_samples(renderer_options.anti_aliasing) != vk::SampleCountFlagBits::e1 &&
         std::any_of(mode_list.begin(), mode_list.end(), [](const modes::RenderModeChoice& m) {
             return m.mode != modes::Mode::kStereo;
@@ -332,6 +354,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     report.anti_aliasing = o.anti_aliasing;
     report.ssao = o.ssao;
     report.vertex_work = o.vertex_work;
+    report.depth_prepass = o.depth_prepass;
     report.warmup = o.warmup;
     report.frames = o.frames;
 
@@ -514,6 +537,9 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
                     "per-vertex work in every run (0: none; the images do not change)")
         ->check(CLI::Range(0, 4096))
         ->capture_default_str();
+    cmd->add_flag("--depth-prepass", options->depth_prepass,
+                  "A depth-only pass before every forward pass, the stereo reference's included "
+                  "(each visible pixel shaded once; off by default, docs/benchmarks.md)");
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->callback([options, &global] { run_bench(*options, global); });
 }

@@ -16,6 +16,7 @@
 #include "common/json_writer.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
+#include "renderer/plan/frame_plan_json.h"
 #include "renderer/rig/pose_path.h"
 #include "renderer/vk/context.h"
 #include "scenes/generate.h"
@@ -49,6 +50,7 @@ struct RenderOptions {
     std::string ssao = "off";
     std::string pose_path = "static";
     double fps = 90.0;
+    bool depth_prepass = false;
 };
 
 std::string joined(const std::vector<std::string>& names) {
@@ -63,7 +65,7 @@ std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& 
                          const std::optional<rig::Rig>& rig, const modes::RgbaImage* mono,
                          const std::optional<StereoComparison>& comparison,
                          const std::optional<quality::InconsistencyMap>& ao,
-                         const std::filesystem::path& out) {
+                         const modes::FramePlan& plan, const std::filesystem::path& out) {
     JsonWriter j;
     j.begin_object();
     j.value("command", "render").value("scene", scene.name).value("mode", o.mode);
@@ -142,6 +144,8 @@ std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& 
         j.value("sky_pixels", static_cast<std::uint64_t>(ao->sky));
         j.end_object();
     }
+    j.value("depth_prepass", o.depth_prepass);
+    modes::write_plan_json(j, plan);  // the last frame's
     j.begin_object("files");
     j.value("left", (out / "left.png").string()).value("right", (out / "right.png").string());
     if (mono) j.value("mono", (out / "mono.png").string());
@@ -225,6 +229,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     }
 
     renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
+    renderer_options.depth_prepass = o.depth_prepass;
     modes::ModeRenderer renderer(
         *ctx, scene, mode,
         vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
@@ -274,7 +279,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     }
     const std::string json =
         summary_json(o, *choice, profile, scene, *ctx, width, height, summarize(measured),
-                     renderer.last_rig(), mono, comparison, ao, out);
+                     renderer.last_rig(), mono, comparison, ao, renderer.last_plan(), out);
     std::ofstream(out / "stats.json") << json << "\n";
     if (o.json) std::cout << json << "\n";
     std::cerr << "wrote " << (out / "left.png").string() << ", " << (out / "right.png").string()
@@ -341,6 +346,9 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
         ->capture_default_str();
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->add_flag("--json", options->json, "Print the statistics as JSON on stdout");
+    cmd->add_flag("--depth-prepass", options->depth_prepass,
+                  "A depth-only pass before every forward pass (each visible pixel shaded once; "
+                  "off by default: on llvmpipe it costs more than it saves, docs/benchmarks.md)");
     cmd->add_option("--anti-aliasing", options->anti_aliasing,
                     "none, taa (every mode; give it frames to converge, e.g. --warmup 16) or "
                     "msaa2|msaa4|msaa8 (stereo only)")

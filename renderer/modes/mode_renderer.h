@@ -91,6 +91,7 @@ class ModeRenderer {
         const std::function<void(const vk::raii::CommandBuffer&)>& record_after = {});
 
     Mode mode() const { return mode_; }
+    vk::Extent2D eye_extent() const { return eye_extent_; }
     // Display images to the host from the next frame on (or not: timed benchmark frames).
     void set_read_back(bool read_back) { options_.read_back = read_back; }
     // The last frame's images (options.read_back).

@@ -56,6 +56,23 @@ string(JSON skipped GET "${json}" mono_skipped)
 if(NOT ssim GREATER 0.5 OR NOT ssim LESS 1.0 OR skipped)
   message(FATAL_ERROR "hybrid: ssim_vs_stereo ${ssim}, mono_skipped ${skipped}: ${json}")
 endif()
+# The executed frame plan (DESIGN.md section 8): hybrid at m = 3 with occlusion culling runs C and
+# both composites; the mono tone mapping runs because the images are read back.
+string(JSON passes LENGTH "${json}" plan)
+set(executed "")
+math(EXPR last "${passes} - 1")
+foreach(i RANGE ${last})
+  string(JSON name GET "${json}" plan ${i} pass)
+  string(JSON why GET "${json}" plan ${i} skipped)
+  if(why STREQUAL "null" OR why STREQUAL "")
+    list(APPEND executed ${name})
+  endif()
+endforeach()
+set(expected culling shadow left.forward right.forward depth_pyramid occlusion_culling mono.forward
+    left.composite right.composite left.tonemap right.tonemap mono.tonemap readback)
+if(NOT executed STREQUAL expected)
+  message(FATAL_ERROR "hybrid plan: executed '${executed}', expected '${expected}': ${json}")
+endif()
 
 # The rig as other tools read it (DESIGN.md section 8), for the Vive at m = 8: s = 0.0230 m and
 # a largest offset of about 3.9 px, the paper's "4 pixels".

@@ -1,0 +1,16 @@
+// The executed frame plan as render --json and bench.json report it (DESIGN.md section 8):
+// "plan": [{"pass": name, "view": v, "skipped": reason-or-null, "draws": [...]}, ...], every
+// planned pass in order, skipped ones with their reason.
+#pragma once
+
+#include <string_view>
+
+#include "common/json_writer.h"
+#include "renderer/plan/frame_plan.h"
+
+namespace monoplane::modes {
+
+// Writes the array under `key` into the open object of `j`.
+void write_plan_json(JsonWriter& j, const FramePlan& plan, std::string_view key = "plan");
+
+}  // namespace monoplane::modes
