@@ -59,14 +59,10 @@ passes::ForwardStep forward_step(DrawStep step) {
             return passes::ForwardStep::kDepthPrepass;
         case DrawStep::kChunks:
             return passes::ForwardStep::kChunks;
-        case DrawStep::kChunksDiscardHidden:
-            return passes::ForwardStep::kChunksDiscardHidden;
         case DrawStep::kChunksShowRouting:
             return passes::ForwardStep::kChunksShowRouting;
         case DrawStep::kSky:
             return passes::ForwardStep::kSky;
-        case DrawStep::kSkyDiscardHidden:
-            return passes::ForwardStep::kSkyDiscardHidden;
     }
     return passes::ForwardStep::kChunks;
 }
@@ -830,7 +826,7 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const Plan
         // Pixels hidden in both eyes stay unwritten; C's image read back shows them black,
         // and C's SSAO must not read stale depths there.
         const bool masked = std::any_of(pass.draws.begin(), pass.draws.end(), [](const auto& d) {
-            return d.step == DrawStep::kMaskHidden || d.step == DrawStep::kChunksDiscardHidden;
+            return d.step == DrawStep::kMaskHidden;
         });
         const bool clear_color = masked && (options_.read_back || ssao_);
         forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,

@@ -309,14 +309,10 @@ std::string draw_step_name(DrawStep step) {
             return "depth-prepass";
         case DrawStep::kChunks:
             return "chunks";
-        case DrawStep::kChunksDiscardHidden:
-            return "chunks-discard-hidden";
         case DrawStep::kChunksShowRouting:
             return "chunks-show-routing";
         case DrawStep::kSky:
             return "sky";
-        case DrawStep::kSkyDiscardHidden:
-            return "sky-discard-hidden";
     }
     return "?";
 }

@@ -57,13 +57,11 @@ std::string gpu_predicate_name(GpuPredicate predicate);  // "always", "mono-any"
 
 // One draw of a forward pass, in order (passes::ForwardStep, one to one).
 enum class DrawStep {
-    kMaskHidden,           // C: pixels hidden in both eyes set to the nearest depth first
-    kDepthPrepass,         // the view's chunks, depth only; later chunk steps test for equality
-    kChunks,               // the view's chunk list, shaded
-    kChunksDiscardHidden,  // the same, discarding fragments hidden in both eyes (C, no mask)
-    kChunksShowRouting,    // debug view "routing"
-    kSky,                  // the sky where nothing was drawn
-    kSkyDiscardHidden,     // the same, skipping pixels hidden in both eyes (C, no mask)
+    kMaskHidden,         // C: pixels hidden in both eyes set to the nearest depth first
+    kDepthPrepass,       // the view's chunks, depth only; later chunk steps test for equality
+    kChunks,             // the view's chunk list, shaded
+    kChunksShowRouting,  // debug view "routing"
+    kSky,                // the sky where nothing was drawn
 };
 std::string draw_step_name(DrawStep step);  // "mask-hidden", "depth-prepass", "chunks", ...
 

@@ -1,4 +1,4 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Forward shading of every fragment (the eyes, and C without the merged depth pyramid).
+// Forward shading of every fragment that passes the depth test (every view).
 #include "renderer/passes/forward/forward_shading.glsl"

@@ -14,9 +14,6 @@ const std::uint32_t kForwardVert[] = {
 const std::uint32_t kForwardFrag[] = {
 #include "forward.frag.spv.inc"
 };
-const std::uint32_t kForwardDiscardHiddenFrag[] = {
-#include "forward_discard_hidden.frag.spv.inc"
-};
 const std::uint32_t kForwardShowRoutingVert[] = {
 #include "forward_show_routing.vert.spv.inc"
 };
@@ -29,14 +26,8 @@ const std::uint32_t kFullscreenVert[] = {
 const std::uint32_t kSkyFrag[] = {
 #include "sky.frag.spv.inc"
 };
-const std::uint32_t kSkyDiscardHiddenFrag[] = {
-#include "sky_discard_hidden.frag.spv.inc"
-};
 const std::uint32_t kForwardVelocityFrag[] = {
 #include "forward_velocity.frag.spv.inc"
-};
-const std::uint32_t kForwardDiscardHiddenVelocityFrag[] = {
-#include "forward_discard_hidden_velocity.frag.spv.inc"
 };
 const std::uint32_t kForwardShowRoutingVelocityFrag[] = {
 #include "forward_show_routing_velocity.frag.spv.inc"
@@ -44,10 +35,6 @@ const std::uint32_t kForwardShowRoutingVelocityFrag[] = {
 const std::uint32_t kSkyVelocityFrag[] = {
 #include "sky_velocity.frag.spv.inc"
 };
-const std::uint32_t kSkyDiscardHiddenVelocityFrag[] = {
-#include "sky_discard_hidden_velocity.frag.spv.inc"
-};
-
 const std::uint32_t kMaskHiddenFrag[] = {
 #include "mask_hidden.frag.spv.inc"
 };
@@ -110,12 +97,11 @@ const std::uint32_t kStereoDuplicateSkyGeom[] = {
 #include "stereo_duplicate_sky.geom.spv.inc"
 };
 
-// The shaders of one configuration. The single-pass forms have no discard-hidden variants: those
-// are C's, drawn one view at a time.
+// The shaders of one configuration.
 struct ShaderSet {
     std::span<const std::uint32_t> vertex, show_routing_vertex;
     std::span<const std::uint32_t> geometry, show_routing_geometry, sky_geometry;  // GS form only
-    std::span<const std::uint32_t> forward, discard_hidden, show_routing, sky, sky_discard_hidden;
+    std::span<const std::uint32_t> forward, show_routing, sky;
 };
 
 ShaderSet shader_set(const ForwardConfig& config) {
@@ -130,11 +116,9 @@ ShaderSet shader_set(const ForwardConfig& config) {
                 {},
                 v ? std::span<const std::uint32_t>(kForwardVelocityMultiviewFrag)
                   : kForwardMultiviewFrag,
-                {},
                 v ? std::span<const std::uint32_t>(kForwardShowRoutingVelocityMultiviewFrag)
                   : kForwardShowRoutingMultiviewFrag,
-                v ? std::span<const std::uint32_t>(kSkyVelocityMultiviewFrag) : kSkyMultiviewFrag,
-                {}};
+                v ? std::span<const std::uint32_t>(kSkyVelocityMultiviewFrag) : kSkyMultiviewFrag};
         case StereoDuplication::kGeometryShader:
             return {kForwardGsVert,
                     kForwardShowRoutingGsVert,
@@ -142,11 +126,9 @@ ShaderSet shader_set(const ForwardConfig& config) {
                     kStereoDuplicateShowRoutingGeom,
                     kStereoDuplicateSkyGeom,
                     v ? std::span<const std::uint32_t>(kForwardVelocityGsFrag) : kForwardGsFrag,
-                    {},
                     v ? std::span<const std::uint32_t>(kForwardShowRoutingVelocityGsFrag)
                       : kForwardShowRoutingGsFrag,
-                    v ? std::span<const std::uint32_t>(kSkyVelocityGsFrag) : kSkyGsFrag,
-                    {}};
+                    v ? std::span<const std::uint32_t>(kSkyVelocityGsFrag) : kSkyGsFrag};
         case StereoDuplication::kNone:
             break;
     }
@@ -157,21 +139,11 @@ ShaderSet shader_set(const ForwardConfig& config) {
                 {},
                 {},
                 kForwardVelocityFrag,
-                kForwardDiscardHiddenVelocityFrag,
                 kForwardShowRoutingVelocityFrag,
-                kSkyVelocityFrag,
-                kSkyDiscardHiddenVelocityFrag};
+                kSkyVelocityFrag};
     }
-    return {kForwardVert,
-            kForwardShowRoutingVert,
-            {},
-            {},
-            {},
-            kForwardFrag,
-            kForwardDiscardHiddenFrag,
-            kForwardShowRoutingFrag,
-            kSkyFrag,
-            kSkyDiscardHiddenFrag};
+    return {kForwardVert, kForwardShowRoutingVert, {},      {}, {},
+            kForwardFrag, kForwardShowRoutingFrag, kSkyFrag};
 }
 }  // namespace
 
@@ -254,11 +226,6 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& confi
     prepass.fragment = nullptr;
     prepass.blend = vk::PipelineColorBlendAttachmentState().setColorWriteMask({});
     depth_prepass_pipeline_ = vk_core::make_graphics_pipeline(ctx, prepass);
-    if (!shaders.discard_hidden.empty()) {
-        const vk::raii::ShaderModule discard_frag = module(shaders.discard_hidden);
-        geometry.fragment = *discard_frag;
-        make_chunk_pipelines(discard_hidden_pipeline_, discard_hidden_after_prepass_pipeline_);
-    }
     const vk::raii::ShaderModule routing_vert = module(shaders.show_routing_vertex);
     const vk::raii::ShaderModule routing_geom = module(shaders.show_routing_geometry);
     const vk::raii::ShaderModule routing_frag = module(shaders.show_routing);
@@ -284,11 +251,6 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& confi
     sky.depth_write = false;
     sky.depth_compare = vk::CompareOp::eEqual;
     sky_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
-    if (!shaders.sky_discard_hidden.empty()) {
-        const vk::raii::ShaderModule sky_discard_frag = module(shaders.sky_discard_hidden);
-        sky.fragment = *sky_discard_frag;
-        sky_discard_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
-    }
     if (config.stereo == StereoDuplication::kNone) {
         // Every pixel at once, whatever the depth; only the hidden ones survive the discard.
         const vk::raii::ShaderModule mask_frag = vk_core::make_shader(ctx, kMaskHiddenFrag);
@@ -402,15 +364,6 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                         chunk_pipeline(geometry_pipeline_, geometry_after_prepass_pipeline_));
                     chunks.record(cmd);
                     break;
-                case ForwardStep::kChunksDiscardHidden:
-                    assert(*discard_hidden_pipeline_);
-                    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
-                                           merged_depth_set, {});
-                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
-                                     chunk_pipeline(discard_hidden_pipeline_,
-                                                    discard_hidden_after_prepass_pipeline_));
-                    chunks.record(cmd);
-                    break;
                 case ForwardStep::kChunksShowRouting:
                     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
                                            merged_depth_set, {});
@@ -421,14 +374,6 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                     break;
                 case ForwardStep::kSky:
                     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
-                    cmd.draw(3, 1, 0, 0);
-                    break;
-                case ForwardStep::kSkyDiscardHidden:
-                    assert(*sky_discard_hidden_pipeline_);
-                    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
-                                           merged_depth_set, {});
-                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
-                                     *sky_discard_hidden_pipeline_);
                     cmd.draw(3, 1, 0, 0);
                     break;
             }

@@ -63,13 +63,11 @@ struct ForwardConfig {
 // each visible pixel is shaded about once whatever the draw order (docs/benchmarks.md measures
 // the fragments it saves); without it they test and write as usual.
 enum class ForwardStep {
-    kMaskHidden,           // C only, before the pre-pass: pixels hidden in both eyes at depth 1
-    kDepthPrepass,         // the view's chunk list, depth only (no fragment shader)
-    kChunks,               // the view's chunk list, every fragment shaded
-    kChunksDiscardHidden,  // the same, discarding fragments hidden in both eyes (C only)
-    kSky,                  // the sky where nothing was drawn
-    kSkyDiscardHidden,     // the same, skipping pixels hidden in both eyes (C only)
-    kChunksShowRouting,    // the debug view "routing": chunks coloured by the lists they are in
+    kMaskHidden,         // C only, before the pre-pass: pixels hidden in both eyes at depth 1
+    kDepthPrepass,       // the view's chunk list, depth only (no fragment shader)
+    kChunks,             // the view's chunk list, every fragment shaded
+    kSky,                // the sky where nothing was drawn
+    kChunksShowRouting,  // the debug view "routing": chunks coloured by the lists they are in
 };
 struct ForwardDraw {
     ForwardStep step = ForwardStep::kChunks;
@@ -95,8 +93,7 @@ class ForwardPass {
 
     // Expects the targets in eUndefined (their contents are replaced); leaves the colour targets
     // (velocity included) in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
-    // merged_depth_set is needed only by the *DiscardHidden and kChunksShowRouting steps, which
-    // a single-pass stereo configuration does not have (they are C's).
+    // merged_depth_set is needed only by the kMaskHidden and kChunksShowRouting steps (set 1).
     void record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
                 vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
                 const SceneGeometry& geometry, const IndirectDraws& chunks,
@@ -111,12 +108,9 @@ class ForwardPass {
     vk::raii::Pipeline mask_hidden_pipeline_{nullptr};  // one-view passes only (C's)
     vk::raii::Pipeline geometry_pipeline_{nullptr};
     vk::raii::Pipeline geometry_after_prepass_pipeline_{nullptr};
-    vk::raii::Pipeline discard_hidden_pipeline_{nullptr};
-    vk::raii::Pipeline discard_hidden_after_prepass_pipeline_{nullptr};
     vk::raii::Pipeline show_routing_pipeline_{nullptr};
     vk::raii::Pipeline show_routing_after_prepass_pipeline_{nullptr};
     vk::raii::Pipeline sky_pipeline_{nullptr};
-    vk::raii::Pipeline sky_discard_hidden_pipeline_{nullptr};
 };
 
 }  // namespace monoplane::passes

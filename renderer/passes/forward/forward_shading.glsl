@@ -1,4 +1,4 @@
-// The body of forward.frag and its variants (discard hidden, show routing, velocity, and the
+// The body of forward.frag and its variants (show routing, velocity, and the
 // single-pass stereo forms of view_block.glsl).
 // Forward shading as in Fink et al. 2019, Sect. 5: a directional light with a shadow map and
 // 3x3 percentage-closer filtering, sky reflections, albedo (procedural patterns), HDR output.
@@ -8,10 +8,6 @@ layout(location = 5) flat in int in_view;  // the eye stereo_duplicate.geom drew
 #endif
 #include "renderer/passes/shared/view_block.glsl"
 layout(set = 0, binding = 1) uniform sampler2DShadow shadow_map;
-#ifdef MONOPLANE_DISCARD_HIDDEN_IN_EYES
-// The merged depth pyramid of both eyes (renderer/passes/depth_pyramid), mip 0 = level 2.
-layout(set = 1, binding = 0) uniform sampler2D merged_depth;
-#endif
 #ifdef MONOPLANE_SHOW_ROUTING
 #include "renderer/passes/culling/cull_constants.h"
 // Per chunk, the lists the culling pass put it in this frame (MONOPLANE_ROUTE_*).
@@ -79,11 +75,6 @@ float sun_visibility(vec3 world, vec3 normal) {
 }
 
 void main() {
-#ifdef MONOPLANE_DISCARD_HIDDEN_IN_EYES
-    // C's fragments that no eye will show (Sect. 4.4, "Discarding Mono Fragments"): every eye
-    // pixel reading this part of C is covered by content nearer than m - eps.
-    if (texelFetch(merged_depth, ivec2(gl_FragCoord.xy) >> 2, 0).r > view.view_blend.z) discard;
-#endif
     float linear_depth = dot(in_world - view.head_position.xyz, view.head_forward.xyz);
     // Hybrid (Sect. 4.3): across a band below m the eye's view vector turns into C's, so that
     // highlights and reflections meet C's shading at the mono plane without a seam.

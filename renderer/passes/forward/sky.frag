@@ -1,4 +1,4 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// The sky of the eyes, and of C without the merged depth pyramid.
+// The sky of every view (C's pixels hidden in both eyes are rejected by mask_hidden.frag's depth).
 #include "renderer/passes/forward/sky_shading.glsl"

@@ -1,14 +1,10 @@
-// The body of sky.frag and its variants (discard hidden, velocity, single-pass stereo).
+// The body of sky.frag and its variants (velocity, single-pass stereo).
 // The sky behind the geometry: drawn after it where the depth buffer still holds the far plane.
 #ifdef MONOPLANE_STEREO_GS
 layout(location = 5) flat in int in_view;  // the eye stereo_duplicate.geom drew this copy for
 #define MONOPLANE_VIEW_INDEX in_view
 #endif
 #include "renderer/passes/shared/view_block.glsl"
-#ifdef MONOPLANE_DISCARD_HIDDEN_IN_EYES
-// The merged depth pyramid of both eyes (renderer/passes/depth_pyramid), mip 0 = level 2.
-layout(set = 1, binding = 0) uniform sampler2D merged_depth;
-#endif
 #include "renderer/passes/shared/sky.glsl"
 
 layout(location = 0) in vec2 in_uv;
@@ -20,10 +16,6 @@ layout(location = 2) out vec2 out_velocity;  // NDC units, for TAA: the sky at i
 #endif
 
 void main() {
-#ifdef MONOPLANE_DISCARD_HIDDEN_IN_EYES
-    // C's sky where every eye pixel reading it shows nearer content (Sect. 4.4).
-    if (texelFetch(merged_depth, ivec2(gl_FragCoord.xy) >> 2, 0).r > view.view_blend.z) discard;
-#endif
     vec2 ndc = in_uv * 2.0 - 1.0;
     vec4 near_point = view.inv_view_proj * vec4(ndc, 1.0, 1.0);
     vec4 far_point = view.inv_view_proj * vec4(ndc, 0.5, 1.0);
