@@ -20,6 +20,8 @@
 #include "app/window/experimenter_window.h"
 #include "common/result.h"
 #include "renderer/modes/mode_renderer.h"
+#include "renderer/modes/scene_resources.h"
+#include "renderer/vk/memory.h"
 #include "scenes/generate.h"
 #include "study/live_session.h"
 #include "study/observer_input.h"
@@ -123,10 +125,16 @@ class StudyRenderers {
             *std::min_element(protocol.mono_planes.begin(), protocol.mono_planes.end());
         modes::RendererOptions options;
         options.read_back = false;  // the eyes go to the swapchain on the GPU
+        const std::uint64_t bytes_before = vk_core::live_device_bytes();
+        std::uint64_t scene_bytes = 0;
         for (const std::string& name : protocol.scenes) {
             std::cerr << "preparing " << name << "\n";
             auto scene = std::make_unique<scenes::Scene>(
                 scenes::generate_scene(*scenes::parse_scene_id(name), detail));
+            // Geometry, chunk table and shadow map once per scene, for all its alternatives.
+            const std::uint64_t before_scene = vk_core::live_device_bytes();
+            auto resources = std::make_shared<modes::SceneResources>(ctx, *scene, options.shadow);
+            scene_bytes += vk_core::live_device_bytes() - before_scene;
             for (study::RenderMode mode : protocol.alternatives) {
                 const auto key = std::make_pair(name, mode);
                 if (renderers_.count(key)) continue;
@@ -134,10 +142,16 @@ class StudyRenderers {
                 modes::RendererOptions mode_options = options;
                 mode_options.stereo_pass = choice.stereo_pass;
                 renderers_[key] = std::make_unique<modes::ModeRenderer>(
-                    ctx, *scene, choice.mode, extent, mode_options, nearest);
+                    ctx, resources, choice.mode, extent, mode_options, nearest);
             }
             scenes_[name] = std::move(scene);
         }
+        constexpr double kMiB = 1024.0 * 1024.0;
+        std::cerr << "prepared " << renderers_.size() << " renderers of " << scenes_.size()
+                  << " scenes: "
+                  << static_cast<double>(vk_core::live_device_bytes() - bytes_before) / kMiB
+                  << " MiB of device memory, " << static_cast<double>(scene_bytes) / kMiB
+                  << " MiB of it the scenes' geometry and shadow maps, uploaded once each\n";
     }
     modes::ModeRenderer& renderer(const std::string& scene, study::RenderMode mode) {
         return *renderers_.at({scene, mode});

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "renderer/vk/context.h"
+#include "renderer/vk/memory.h"
 
 namespace monoplane::window {
 
@@ -26,7 +27,7 @@ class MirrorTexture {
   private:
     vk::Extent2D extent_;
     vk::raii::Image image_{nullptr};
-    vk::raii::DeviceMemory memory_{nullptr};
+    vk_core::DeviceMemory memory_{nullptr};
     vk::raii::ImageView view_{nullptr};
     vk::raii::DescriptorSet set_{nullptr};
 };

@@ -243,6 +243,17 @@ struct ModeRenderer::MonoView : View {
 
 namespace {
 
+// Refuses shared scene resources made for other shadow parameters than the renderer's.
+std::shared_ptr<SceneResources> checked(std::shared_ptr<SceneResources> resources,
+                                        const RendererOptions& options) {
+    if (!(resources->shadow_params() == options.shadow)) {
+        throw UserError(
+            "a renderer's shadow parameters differ from those its scene's shared "
+            "resources were made with: make one SceneResources per shadow setting");
+    }
+    return resources;
+}
+
 // Refuses option combinations the renderer does not implement, with the reason.
 const RendererOptions& checked(const vk_core::Context& ctx, Mode mode,
                                const RendererOptions& options) {
@@ -273,21 +284,25 @@ const RendererOptions& checked(const vk_core::Context& ctx, Mode mode,
 ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& scene, Mode mode,
                            vk::Extent2D eye_extent, const RendererOptions& options,
                            double nearest_mono_plane)
+    : ModeRenderer(ctx, std::make_shared<SceneResources>(ctx, scene, options.shadow), mode,
+                   eye_extent, options, nearest_mono_plane) {}
+
+ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneResources> resources,
+                           Mode mode, vk::Extent2D eye_extent, const RendererOptions& options,
+                           double nearest_mono_plane)
     : ctx_(ctx),
-      scene_(scene),
+      resources_(checked(std::move(resources), options)),
+      scene_(resources_->scene()),
       mode_(mode),
       eye_extent_(eye_extent),
       options_(checked(ctx, mode, options)),
       nearest_mono_plane_(nearest_mono_plane),
-      geometry_(ctx, scene),
-      shadow_(ctx, options.shadow),
       forward_(ctx, passes::ForwardConfig{options.anti_aliasing == AntiAliasing::kTaa,
                                           msaa_samples(options.anti_aliasing),
                                           passes::StereoDuplication::kNone, options.vertex_work}),
       tonemap_(ctx),
       composite_(ctx, options.anti_aliasing == AntiAliasing::kTaa),
-      shadow_draws_(ctx, scene.chunks.size()),
-      culling_(ctx, scene),
+      culling_(ctx, scene_, resources_->chunk_table()),
       pyramid_(ctx),
       taa_(ctx),
       profiler_(ctx) {
@@ -322,7 +337,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
             ctx.device(), vk::DescriptorSetAllocateInfo(*descriptor_pool_, pair_layout))[0]);
         const vk::DescriptorBufferInfo constants_info(eye_pair_constants_->handle(), 0,
                                                       VK_WHOLE_SIZE);
-        const vk::DescriptorImageInfo shadow_info(shadow_.sampler(), shadow_.view(),
+        const vk::DescriptorImageInfo shadow_info(resources_->shadow().sampler(),
+                                                  resources_->shadow().view(),
                                                   vk::ImageLayout::eShaderReadOnlyOptimal);
         const std::array writes = {
             vk::WriteDescriptorSet(*eye_pair_set_, 0, 0, vk::DescriptorType::eUniformBuffer, {},
@@ -347,9 +363,6 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& sce
         if (taa) write_taa_sets(*eye);
         if (ssao_) eye->ssao = ssao_->make_view(eye->constants, eye->linear_depth, eye_extent);
     }
-    std::vector<std::uint32_t> all(scene.chunks.size());
-    for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
-    shadow_draws_.assign(scene, all);
     pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
     write_merged_depth_set();
@@ -406,7 +419,8 @@ void ModeRenderer::write_merged_depth_set() const {
 
 void ModeRenderer::write_view_sets(const View& view) const {
     const vk::DescriptorBufferInfo constants_info(view.constants.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorImageInfo shadow_info(shadow_.sampler(), shadow_.view(),
+    const vk::DescriptorImageInfo shadow_info(resources_->shadow().sampler(),
+                                              resources_->shadow().view(),
                                               vk::ImageLayout::eShaderReadOnlyOptimal);
     const vk::DescriptorImageInfo hdr_info(tonemap_.sampler(), view.hdr.view(),
                                            vk::ImageLayout::eShaderReadOnlyOptimal);
@@ -480,7 +494,7 @@ void ModeRenderer::update_view(View& view, const glm::dmat4& view_proj,
     c.sky_zenith = glm::vec4(lighting.sky_zenith, 0.0f);
     c.sky_horizon = glm::vec4(lighting.sky_horizon, 0.0f);
     c.ground_albedo = glm::vec4(lighting.ground_albedo, 0.0f);
-    c.shadow_params = glm::vec4(shadow_.texel_size(), 0.0f, 0.0f, 0.0f);
+    c.shadow_params = glm::vec4(resources_->shadow().texel_size(), 0.0f, 0.0f, 0.0f);
     c.head_position = glm::vec4(glm::vec3(head.position), 1.0f);
     c.head_forward =
         glm::vec4(glm::vec3(glm::normalize(head.orientation * glm::dvec3(0.0, 0.0, -1.0))), 0.0f);
@@ -566,7 +580,7 @@ ModeRenderer::FrameState ModeRenderer::prepare_frame(const FrameInputs& inputs) 
         shadow_region(scene_, views.head.position, options_.shadow.region_radius_m);
     frame.light_view_proj =
         passes::fit_light_view_proj(glm::dvec3(scene_.lighting.sun_direction), region);
-    frame.shadow_needed = shadow_light_view_proj_ != frame.light_view_proj;
+    frame.shadow_needed = resources_->shadow_needed(frame.light_view_proj);
     frame.predicated = ctx_.capabilities().conditional_rendering;
 
     build_frame_rig(inputs, frame);
@@ -696,7 +710,6 @@ profile::FrameStats ModeRenderer::render_frame(
                 .count();
         if (record_after) record_after(cmd);
     });
-    if (frame.shadow_needed) shadow_light_view_proj_ = frame.light_view_proj;
     mono_rendered_ = frame.use_mono && options_.read_back;
     if (frame.taa) history_parity_ = 1 - history_parity_;
     return collect_frame(record_ms, frame.use_mono);
@@ -767,7 +780,7 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const Plan
             culling_.record_frustum_phase(cmd);
             break;
         case PassKind::kShadow:
-            shadow_.record(cmd, geometry_, shadow_draws_, glm::mat4(frame.light_view_proj));
+            resources_->record_shadow(cmd, frame.light_view_proj);
             break;
         case PassKind::kForward:
             record_forward(cmd, pass);
@@ -818,7 +831,7 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const Plan
     if (pass.view == "eyes") {
         // Both eyes in one pass, from the list of chunks either eye needs.
         eyes_forward_->record(cmd, eye_layers_->forward_targets(eye_extent_), *eye_pair_set_,
-                              *merged_depth_set_, geometry_,
+                              *merged_depth_set_, resources_->geometry(),
                               culling_.draws(passes::CullView::kBothEyes), draws);
         return;
     }
@@ -830,13 +843,14 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const Plan
         });
         const bool clear_color = masked && (options_.read_back || ssao_);
         forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,
-                        *merged_depth_set_, geometry_, culling_.draws(passes::CullView::kMono),
-                        draws);
+                        *merged_depth_set_, resources_->geometry(),
+                        culling_.draws(passes::CullView::kMono), draws);
         return;
     }
     const int e = pass.view == "left" ? 0 : 1;
     forward_.record(cmd, eyes_[e]->forward_targets(), *eyes_[e]->forward_set, *merged_depth_set_,
-                    geometry_, culling_.draws(static_cast<passes::CullView>(e)), draws);
+                    resources_->geometry(), culling_.draws(static_cast<passes::CullView>(e)),
+                    draws);
 }
 
 void ModeRenderer::record_pyramid(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/modes/scene_resources.h"
 #include "renderer/modes/view_setup.h"
 #include "renderer/passes/composite/composite_pass.h"
 #include "renderer/passes/culling/chunk_culling_pass.h"
@@ -78,7 +79,13 @@ class ModeRenderer {
   public:
     // The scene must outlive the renderer. nearest_mono_plane sizes C's render target once
     // (eq. 8 allocation); 0 sizes it for the first frame's m and grows it if a later m needs more.
+    // Uploads the scene for this renderer alone.
     ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& scene, Mode mode,
+                 vk::Extent2D eye_extent, const RendererOptions& options,
+                 double nearest_mono_plane = 0.0);
+    // The same over a scene's shared GPU resources (geometry, chunk table, shadow map), made with
+    // options.shadow; refuses (UserError) resources made with other shadow parameters.
+    ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneResources> resources, Mode mode,
                  vk::Extent2D eye_extent, const RendererOptions& options,
                  double nearest_mono_plane = 0.0);
     ~ModeRenderer();
@@ -169,18 +176,16 @@ class ModeRenderer {
     void decide_routing(const FrameInputs& inputs, passes::CullFrame& cull) const;
 
     const vk_core::Context& ctx_;
+    std::shared_ptr<SceneResources> resources_;
     const scenes::Scene& scene_;
     Mode mode_;
     vk::Extent2D eye_extent_;
     RendererOptions options_;
     double nearest_mono_plane_;
-    passes::SceneGeometry geometry_;
-    passes::ShadowPass shadow_;
     passes::ForwardPass forward_;
     std::unique_ptr<passes::ForwardPass> eyes_forward_;  // single-pass stereo: both eyes at once
     passes::TonemapPass tonemap_;
     passes::CompositePass composite_;
-    passes::DrawList shadow_draws_;
     passes::ChunkCullingPass culling_;
     passes::DepthPyramidPass pyramid_;
     passes::TaaPass taa_;
@@ -198,7 +203,6 @@ class ModeRenderer {
     bool mono_rendered_ = false;
     std::optional<rig::Rig> rig_;
     FramePlan last_plan_;
-    std::optional<glm::dmat4> shadow_light_view_proj_;
     // TAA's history: which of each view's two output images holds it, and what it continues.
     std::uint64_t next_frame_index_ = 0;
     int history_parity_ = 0;

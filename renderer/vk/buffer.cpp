@@ -17,7 +17,7 @@ Buffer::Buffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFlags usa
     memory_ = allocate_memory(ctx, buffer_.getMemoryRequirements(), properties);
     buffer_.bindMemory(*memory_, 0);
     if (use == MemoryUse::kHostVisible) {
-        mapped_ = static_cast<std::byte*>(memory_.mapMemory(0, VK_WHOLE_SIZE));
+        mapped_ = static_cast<std::byte*>(memory_.map());
     }
 }
 

@@ -5,6 +5,7 @@
 #include <span>
 
 #include "renderer/vk/context.h"
+#include "renderer/vk/memory.h"
 
 namespace monoplane::vk_core {
 
@@ -28,7 +29,7 @@ class Buffer {
 
   private:
     vk::raii::Buffer buffer_{nullptr};
-    vk::raii::DeviceMemory memory_{nullptr};
+    DeviceMemory memory_{nullptr};
     vk::DeviceSize size_ = 0;
     std::byte* mapped_ = nullptr;
 };

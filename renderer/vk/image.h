@@ -4,6 +4,7 @@
 #pragma once
 
 #include "renderer/vk/context.h"
+#include "renderer/vk/memory.h"
 
 namespace monoplane::vk_core {
 
@@ -31,7 +32,7 @@ class Image {
 
   private:
     vk::raii::Image image_{nullptr};  // null for a layer of another image
-    vk::raii::DeviceMemory memory_{nullptr};
+    DeviceMemory memory_{nullptr};
     vk::Image handle_{};
     std::uint32_t base_layer_ = 0;
     vk::raii::ImageView view_{nullptr};

@@ -1,18 +1,58 @@
 #include "renderer/vk/memory.h"
 
-namespace monoplane::vk_core {
+#include <atomic>
+#include <utility>
 
-vk::raii::DeviceMemory allocate_memory(const Context& ctx, const vk::MemoryRequirements& needs,
-                                       vk::MemoryPropertyFlags properties) {
+namespace monoplane::vk_core {
+namespace {
+
+std::atomic<std::uint64_t> g_live_bytes{0};
+
+}  // namespace
+
+DeviceMemory::DeviceMemory(vk::raii::DeviceMemory memory, vk::DeviceSize bytes)
+    : memory_(std::move(memory)), bytes_(bytes) {
+    g_live_bytes += bytes_;
+}
+
+DeviceMemory::DeviceMemory(DeviceMemory&& other) noexcept
+    : memory_(std::move(other.memory_)), bytes_(std::exchange(other.bytes_, 0)) {}
+
+DeviceMemory& DeviceMemory::operator=(DeviceMemory&& other) noexcept {
+    if (this != &other) {
+        release();
+        memory_ = std::move(other.memory_);
+        bytes_ = std::exchange(other.bytes_, 0);
+    }
+    return *this;
+}
+
+DeviceMemory::~DeviceMemory() {
+    release();
+}
+
+void DeviceMemory::release() {
+    memory_ = nullptr;
+    g_live_bytes -= std::exchange(bytes_, 0);
+}
+
+DeviceMemory allocate_memory(const Context& ctx, const vk::MemoryRequirements& needs,
+                             vk::MemoryPropertyFlags properties) {
     const auto memory = ctx.physical_device().getMemoryProperties();
     for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i) {
         const bool allowed = (needs.memoryTypeBits & (1u << i)) != 0;
         if (allowed && (memory.memoryTypes[i].propertyFlags & properties) == properties) {
-            return vk::raii::DeviceMemory(ctx.device(), vk::MemoryAllocateInfo(needs.size, i));
+            return DeviceMemory(
+                vk::raii::DeviceMemory(ctx.device(), vk::MemoryAllocateInfo(needs.size, i)),
+                needs.size);
         }
     }
     throw vk::SystemError(vk::make_error_code(vk::Result::eErrorOutOfDeviceMemory),
                           "no memory type with the requested properties");
+}
+
+std::uint64_t live_device_bytes() {
+    return g_live_bytes.load();
 }
 
 }  // namespace monoplane::vk_core

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -21,6 +22,8 @@
 #include "hmd/profile.h"
 #include "renderer/modes/frustum_culling.h"
 #include "renderer/modes/mode_renderer.h"
+#include "renderer/modes/scene_resources.h"
+#include "renderer/vk/memory.h"
 #include "scenes/generate.h"
 #include "tests/gpu/frame_checks.h"
 #include "tests/gpu/gpu_test.h"
@@ -654,6 +657,45 @@ TEST_F(Culling, SecondFrameFromTheSamePoseDrawsNoShadowMap) {
         EXPECT_EQ(renderer.drawn_chunks(CullView::kMono),
                   mode == Mode::kStereo ? Chunks{} : Chunks({1, 2}));
     }
+}
+
+// A study's renderers of one scene (one per alternative) share its upload: the second renderer
+// costs the scene's vertex and index bytes less than one with its own copy, and the shadow map
+// one renderer drew serves the next from the same pose.
+TEST_F(Culling, RenderersOfOneSceneShareItsUploadAndShadowMap) {
+    const scenes::Scene scene = three_depths_scene();
+    const std::uint64_t geometry_bytes = scene.vertices.size() * sizeof(scenes::Vertex) +
+                                         scene.indices.size() * sizeof(std::uint32_t);
+    ASSERT_GT(geometry_bytes, 0u);
+
+    std::uint64_t before = vk_core::live_device_bytes();
+    modes::ModeRenderer own(ctx(), scene, Mode::kHybrid, kExtent, test_options());
+    const std::uint64_t own_bytes = vk_core::live_device_bytes() - before;
+
+    auto shared = std::make_shared<modes::SceneResources>(ctx(), scene, test_options().shadow);
+    modes::ModeRenderer stereo(ctx(), shared, Mode::kStereo, kExtent, test_options());
+    before = vk_core::live_device_bytes();
+    modes::ModeRenderer hybrid(ctx(), shared, Mode::kHybrid, kExtent, test_options());
+    const std::uint64_t shared_bytes = vk_core::live_device_bytes() - before;
+    EXPECT_LE(shared_bytes + geometry_bytes, own_bytes)
+        << "own " << own_bytes << " B, shared " << shared_bytes << " B";
+
+    // The stereo renderer draws the shadow map; the hybrid one, from the same pose, reuses it
+    // and shows what a renderer that drew its own shows.
+    const profile::FrameStats first = stereo.render_frame(square_inputs(8.0));
+    const profile::FrameStats second = hybrid.render_frame(square_inputs(8.0));
+    const profile::FrameStats reference = own.render_frame(square_inputs(8.0));
+    EXPECT_TRUE(has_pass(first, "shadow"));
+    EXPECT_FALSE(has_pass(second, "shadow"));
+    EXPECT_TRUE(has_pass(reference, "shadow"));
+    for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
+        EXPECT_EQ(hybrid.eye_image(eye).pixels, own.eye_image(eye).pixels) << modes::eye_name(eye);
+    }
+
+    // Resources made for other shadow parameters are refused.
+    modes::RendererOptions other = test_options();
+    other.shadow.resolution = 512;
+    EXPECT_THROW(modes::ModeRenderer(ctx(), shared, Mode::kStereo, kExtent, other), UserError);
 }
 
 }  // namespace

@@ -45,10 +45,16 @@ void write_planes(const glm::dmat4& view_proj, vec4* out) {
 
 }  // namespace
 
-ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Scene& scene)
+vk_core::Buffer ChunkCullingPass::make_chunk_table(const vk_core::Context& ctx,
+                                                   const scenes::Scene& scene) {
+    return vk_core::make_device_buffer(ctx, std::span<const ChunkRecord>(chunk_records(scene)),
+                                       vk::BufferUsageFlagBits::eStorageBuffer);
+}
+
+ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Scene& scene,
+                                   const vk_core::Buffer& chunk_table)
     : chunk_count_(static_cast<std::uint32_t>(scene.chunks.size())),
-      chunks_(vk_core::make_device_buffer(ctx, std::span<const ChunkRecord>(chunk_records(scene)),
-                                          vk::BufferUsageFlagBits::eStorageBuffer)),
+      chunks_(chunk_table),
       commands_(ctx,
                 vk::DeviceSize{MONOPLANE_CULL_LISTS} * std::max(chunk_count_, 1u) * kCommandSize,
                 vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |

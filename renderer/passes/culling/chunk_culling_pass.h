@@ -39,7 +39,14 @@ struct CullFrame {
 
 class ChunkCullingPass {
   public:
-    ChunkCullingPass(const vk_core::Context& ctx, const scenes::Scene& scene);
+    // The scene's chunk table on the GPU (bounds, draw ranges, routing flags): made once per
+    // scene and shared by every renderer of it (renderer/modes/scene_resources.h).
+    static vk_core::Buffer make_chunk_table(const vk_core::Context& ctx,
+                                            const scenes::Scene& scene);
+
+    // chunk_table: make_chunk_table of the same scene; it must outlive the pass.
+    ChunkCullingPass(const vk_core::Context& ctx, const scenes::Scene& scene,
+                     const vk_core::Buffer& chunk_table);
 
     // Points the occlusion test at the merged depth pyramid (a view of all its mips, in
     // eGeneral). Call between frames, before the first record().
@@ -70,7 +77,7 @@ class ChunkCullingPass {
     void record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const;
 
     std::uint32_t chunk_count_ = 0;
-    vk_core::Buffer chunks_;
+    const vk_core::Buffer& chunks_;
     vk_core::Buffer commands_;
     vk_core::Buffer counts_;
     vk_core::Buffer routing_;

@@ -55,7 +55,7 @@ class DepthPyramidPass {
     vk::Extent2D extent_{0, 0};
     std::uint32_t mips_ = 0;
     vk::raii::Image image_{nullptr};
-    vk::raii::DeviceMemory memory_{nullptr};
+    vk_core::DeviceMemory memory_{nullptr};
     vk::raii::ImageView all_mips_{nullptr};
     std::vector<vk::raii::ImageView> mip_views_;
     vk::raii::DescriptorPool pool_{nullptr};
@@ -64,7 +64,7 @@ class DepthPyramidPass {
     // Each eye's depth as 4 x 4 block minima (one layer per eye), eGeneral.
     vk::Extent2D blocks_extent_{0, 0};
     vk::raii::Image blocks_image_{nullptr};
-    vk::raii::DeviceMemory blocks_memory_{nullptr};
+    vk_core::DeviceMemory blocks_memory_{nullptr};
     vk::raii::ImageView blocks_view_{nullptr};
 };
 

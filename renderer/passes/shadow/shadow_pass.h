@@ -14,6 +14,7 @@ struct ShadowParams {
     float region_radius_m = 160.0f;  // shadows are computed within this distance of the viewer
     float depth_bias_constant = 1.25f;
     float depth_bias_slope = 1.75f;
+    bool operator==(const ShadowParams&) const = default;
 };
 
 // Orthographic world -> shadow clip transform (depth 0 nearest the sun) that encloses `region`.

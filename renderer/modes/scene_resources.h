@@ -1,0 +1,51 @@
+// What every renderer of one scene shares on the GPU: its geometry (vertex and index buffers),
+// its chunk table for the culling pass, the shadow map's draw list and the shadow map itself. A
+// study with 3 scenes x 2 alternatives uploads each scene once, not once per renderer (study run
+// prints the device memory it holds).
+//
+// When may this be used: by renderers whose frames do not overlap on the GPU (each frame is
+// submitted and waited for, as ModeRenderer does); the shadow map is redrawn by whichever
+// renderer first needs another light region. The scene must outlive the resources.
+#pragma once
+
+#include <optional>
+
+#include <glm/mat4x4.hpp>
+
+#include "renderer/passes/shadow/shadow_pass.h"
+#include "renderer/passes/shared/scene_geometry.h"
+#include "renderer/vk/buffer.h"
+#include "scenes/scene.h"
+
+namespace monoplane::modes {
+
+class SceneResources {
+  public:
+    SceneResources(const vk_core::Context& ctx, const scenes::Scene& scene,
+                   const passes::ShadowParams& shadow);
+
+    const scenes::Scene& scene() const { return scene_; }
+    const passes::SceneGeometry& geometry() const { return geometry_; }
+    const vk_core::Buffer& chunk_table() const { return chunk_table_; }
+    const passes::ShadowParams& shadow_params() const { return shadow_params_; }
+    const passes::ShadowPass& shadow() const { return shadow_; }
+
+    // Whether the shadow map must be drawn for this light transform (it holds another, or none).
+    bool shadow_needed(const glm::dmat4& light_view_proj) const {
+        return shadow_light_view_proj_ != light_view_proj;
+    }
+    // Records the shadow map for the light transform; call when shadow_needed says so, in a
+    // submission that completes before another renderer reads the map.
+    void record_shadow(const vk::raii::CommandBuffer& cmd, const glm::dmat4& light_view_proj);
+
+  private:
+    const scenes::Scene& scene_;
+    passes::ShadowParams shadow_params_;
+    passes::SceneGeometry geometry_;
+    vk_core::Buffer chunk_table_;
+    passes::ShadowPass shadow_;
+    passes::DrawList shadow_draws_;  // every chunk
+    std::optional<glm::dmat4> shadow_light_view_proj_;
+};
+
+}  // namespace monoplane::modes
