@@ -1,6 +1,11 @@
 #include "renderer/modes/frustum_culling.h"
 
+#include <algorithm>
+#include <numeric>
+
+#include <glm/common.hpp>
 #include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
 
 namespace monoplane::modes {
 
@@ -27,6 +32,21 @@ std::vector<std::uint32_t> visible_chunks(const scenes::Scene& scene, const glm:
         if (intersects(planes, scene.chunks[i].bounds)) visible.push_back(i);
     }
     return visible;
+}
+
+std::vector<std::uint32_t> front_to_back_order(const scenes::Scene& scene,
+                                               const glm::dvec3& viewer) {
+    std::vector<double> distance(scene.chunks.size());
+    for (std::size_t i = 0; i < scene.chunks.size(); ++i) {
+        const scenes::Aabb& box = scene.chunks[i].bounds;
+        const glm::dvec3 nearest = glm::clamp(viewer, glm::dvec3(box.min), glm::dvec3(box.max));
+        distance[i] = glm::length(nearest - viewer);
+    }
+    std::vector<std::uint32_t> order(scene.chunks.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return distance[a] < distance[b]; });
+    return order;
 }
 
 }  // namespace monoplane::modes

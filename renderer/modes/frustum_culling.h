@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <glm/ext/matrix_double4x4.hpp>
+#include <glm/ext/vector_double3.hpp>
 #include <glm/ext/vector_double4.hpp>
 
 #include "scenes/scene.h"
@@ -20,6 +21,12 @@ std::array<glm::dvec4, 6> frustum_planes(const glm::dmat4& view_proj);
 
 // True unless the box lies wholly outside one plane (conservative).
 bool intersects(const std::array<glm::dvec4, 6>& planes, const scenes::Aabb& box);
+
+// The chunk indices ordered by the distance from `viewer` to their bounds (0 inside), nearest
+// first, ties by index: the culling pass lists draws in this order, so early depth testing
+// rejects most hidden fragments before they are shaded (docs/benchmarks.md). Deterministic.
+std::vector<std::uint32_t> front_to_back_order(const scenes::Scene& scene,
+                                               const glm::dvec3& viewer);
 
 // Indices of the chunks whose bounds intersect the frustum of view_proj.
 std::vector<std::uint32_t> visible_chunks(const scenes::Scene& scene, const glm::dmat4& view_proj);

@@ -8,6 +8,7 @@
 
 #include "common/result.h"
 #include "renderer/modes/farfield_rig.h"
+#include "renderer/modes/frustum_culling.h"
 #include "renderer/passes/culling/cull_constants.h"
 #include "renderer/rig/temporal_jitter.h"
 
@@ -667,6 +668,8 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
             cull.pyramid_mips = pyramid_.mips();
         }
     }
+    // Nearest chunks first (one order for every view: the eyes and C look from the head).
+    cull.draw_order = front_to_back_order(scene_, views.head.position);
     culling_.set_frame(cull);
     if (eye_pair_constants_) {
         // view_block.glsl's views[2]: left, then right (std140 arrays of this struct are packed).
@@ -767,8 +770,6 @@ std::optional<passes::Predicate> ModeRenderer::predicate(GpuPredicate when) cons
             return culling_.predicate(MONOPLANE_PRED_MONO_ANY, true);
         case GpuPredicate::kMonoDepthTested:
             return culling_.predicate(MONOPLANE_PRED_MONO_DEPTH_TESTED, false);
-        case GpuPredicate::kMonoUntested:
-            return culling_.predicate(MONOPLANE_PRED_MONO_UNTESTED, false);
     }
     return std::nullopt;
 }

@@ -295,8 +295,6 @@ std::string gpu_predicate_name(GpuPredicate predicate) {
             return "mono-none";
         case GpuPredicate::kMonoDepthTested:
             return "mono-depth-tested";
-        case GpuPredicate::kMonoUntested:
-            return "mono-untested";
     }
     return "?";
 }

@@ -51,7 +51,6 @@ enum class GpuPredicate {
     kMonoAny,          // C's list is not empty
     kMonoNone,         // C's list is empty (the eyes then draw their own sky)
     kMonoDepthTested,  // C has something and an eye drew something (a pyramid was built)
-    kMonoUntested,     // C has something and no eye drew anything
 };
 std::string gpu_predicate_name(GpuPredicate predicate);  // "always", "mono-any", ...
 

@@ -71,6 +71,13 @@ modes::FrameInputs square_inputs(double m, const rig::Pose& head = standing()) {
     return inputs;
 }
 
+// A draw list as a set (ascending chunk indices), for tests of which chunks a view drew; the
+// order they were drawn in is tested by compare_with_reference.
+Chunks sorted(Chunks chunks) {
+    std::sort(chunks.begin(), chunks.end());
+    return chunks;
+}
+
 modes::RendererOptions test_options() {
     modes::RendererOptions options;
     options.shadow.resolution = 256;
@@ -145,9 +152,9 @@ TEST_F(Culling, ChunksLandInTheViewsTheirDepthsSelect) {
         modes::FrameInputs inputs = square_inputs(8.0);
         inputs.mono_culling = variant;
         const profile::FrameStats stats = hybrid.render_frame(inputs);
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kLeft), near_and_straddling);
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kRight), near_and_straddling);
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kMono), far_and_straddling);
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kLeft)), near_and_straddling);
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kRight)), near_and_straddling);
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kMono)), far_and_straddling);
         if (!statistics()) continue;
         // So the near chunk is drawn twice, the far one once, the straddling one three times.
         EXPECT_EQ(view_of(stats, "left").draws, 2u);
@@ -249,12 +256,33 @@ struct Comparison {
     }
 };
 
-// The GPU's list of one view against the CPU reference for the same world -> clip matrix.
+// The distance from a viewer to a box (0 inside): the nearest point of the box, axis by axis.
+double distance_to_box(const glm::dvec3& viewer, const scenes::Aabb& box) {
+    double squared = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double below = static_cast<double>(box.min[axis]) - viewer[axis];
+        const double above = viewer[axis] - static_cast<double>(box.max[axis]);
+        const double gap = std::max({below, above, 0.0});
+        squared += gap * gap;
+    }
+    return std::sqrt(squared);
+}
+
+// The GPU's list of one view against the CPU reference for the same world -> clip matrix, and
+// its order: nearest chunk first as seen from the viewer (ties by index), each chunk once.
 Comparison compare_with_reference(const scenes::Scene& scene, const glm::dmat4& view_proj,
-                                  const Chunks& gpu, const std::string& what) {
+                                  const glm::dvec3& viewer, const Chunks& gpu,
+                                  const std::string& what) {
     SCOPED_TRACE(what);
-    EXPECT_TRUE(std::is_sorted(gpu.begin(), gpu.end()));  // chunk order, as the shader promises
-    EXPECT_EQ(std::adjacent_find(gpu.begin(), gpu.end()), gpu.end());
+    for (std::size_t i = 1; i < gpu.size(); ++i) {
+        const double before = distance_to_box(viewer, scene.chunks[gpu[i - 1]].bounds);
+        const double after = distance_to_box(viewer, scene.chunks[gpu[i]].bounds);
+        EXPECT_TRUE(before < after || (before == after && gpu[i - 1] < gpu[i]))
+            << "draw " << i << ": chunk " << gpu[i - 1] << " at " << before << " m before chunk "
+            << gpu[i] << " at " << after << " m";
+    }
+    const std::set<std::uint32_t> distinct(gpu.begin(), gpu.end());
+    EXPECT_EQ(distinct.size(), gpu.size());
     const Chunks cpu = modes::visible_chunks(scene, view_proj);
     const std::set<std::uint32_t> on_gpu(gpu.begin(), gpu.end());
     const std::set<std::uint32_t> on_cpu(cpu.begin(), cpu.end());
@@ -305,7 +333,7 @@ TEST_F(Culling, GpuListsEqualTheCpuReference) {
                 const auto view = static_cast<CullView>(eye);
                 const Chunks gpu = stereo.drawn_chunks(view);
                 const Comparison c = compare_with_reference(
-                    scene, modes::eye_view_proj(inputs.views, eye), gpu,
+                    scene, modes::eye_view_proj(inputs.views, eye), viewpoint->head.position, gpu,
                     std::string("stereo ") + name + " " + modes::eye_name(eye));
                 if (statistics()) {
                     EXPECT_EQ(view_of(stats, modes::eye_name(eye)).draws, gpu.size());
@@ -328,15 +356,15 @@ TEST_F(Culling, GpuListsEqualTheCpuReference) {
                     rig.eye_projection[static_cast<int>(eye)] *
                     rig::view_matrix(head, modes::eye_offset(eye, inputs.views.ipd));
                 const Comparison c = compare_with_reference(
-                    scene, view_proj, hybrid.drawn_chunks(static_cast<CullView>(eye)),
-                    where + modes::eye_name(eye));
+                    scene, view_proj, head.position,
+                    hybrid.drawn_chunks(static_cast<CullView>(eye)), where + modes::eye_name(eye));
                 total += c;
             }
             const glm::dmat4 mono_view_proj =
                 rig.mono_projection * rig::view_matrix(head, rig.mono_position);
             const Chunks mono = hybrid.drawn_chunks(CullView::kMono);
             const Comparison c =
-                compare_with_reference(scene, mono_view_proj, mono, where + "mono");
+                compare_with_reference(scene, mono_view_proj, head.position, mono, where + "mono");
             if (statistics()) {
                 EXPECT_EQ(view_of(stats, "mono").draws, mono.size());
             }
@@ -346,8 +374,9 @@ TEST_F(Culling, GpuListsEqualTheCpuReference) {
             // the count before it is the frustum list's length.
             inputs.mono_culling = MonoCulling::kOcclusionCull;
             const profile::FrameStats culled_stats = culled.render_frame(inputs);
-            const Chunks after = culled.drawn_chunks(CullView::kMono);
-            EXPECT_TRUE(std::includes(mono.begin(), mono.end(), after.begin(), after.end()))
+            const Chunks after = sorted(culled.drawn_chunks(CullView::kMono));
+            const Chunks before = sorted(mono);
+            EXPECT_TRUE(std::includes(before.begin(), before.end(), after.begin(), after.end()))
                 << where;
             if (statistics()) {
                 const profile::ViewStatistics& culled_mono = view_of(culled_stats, "mono");
@@ -427,10 +456,10 @@ TEST_F(Culling, OcclusionCullingDrawsOnlyWhatTheWallDoesNotHide) {
         inputs.mono_culling = variant;
         Result r;
         r.stats = hybrid.render_frame(inputs);
-        r.mono = hybrid.drawn_chunks(CullView::kMono);
+        r.mono = sorted(hybrid.drawn_chunks(CullView::kMono));
         for (Eye eye : {Eye::kLeft, Eye::kRight}) {
             // Only the wall is nearer than m.
-            EXPECT_EQ(hybrid.drawn_chunks(static_cast<CullView>(eye)), Chunks{0})
+            EXPECT_EQ(sorted(hybrid.drawn_chunks(static_cast<CullView>(eye))), Chunks{0})
                 << modes::mono_culling_name(variant);
             r.eyes[static_cast<int>(eye)] = hybrid.eye_image(eye);
         }
@@ -487,9 +516,9 @@ TEST_F(Culling, NothingBeyondThePlaneSkipsCAndTheComposites) {
     modes::ModeRenderer hybrid(ctx(), scene, Mode::kHybrid, kExtent, test_options());
     stereo.render_frame(inputs);
     const profile::FrameStats stats = hybrid.render_frame(inputs);
-    EXPECT_EQ(hybrid.drawn_chunks(CullView::kMono), Chunks{});
-    EXPECT_EQ(hybrid.drawn_chunks(CullView::kLeft), (Chunks{0, 1, 2}));
-    EXPECT_EQ(hybrid.drawn_chunks(CullView::kRight), (Chunks{0, 1, 2}));
+    EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kMono)), Chunks{});
+    EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kLeft)), (Chunks{0, 1, 2}));
+    EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kRight)), (Chunks{0, 1, 2}));
     if (statistics()) {
         // Recorded (the command buffer serves every culling outcome) and skipped on the GPU.
         for (const char* name : {"mono", "left.composite", "right.composite"}) {
@@ -527,9 +556,9 @@ TEST_F(Culling, NothingNearerThanThePlaneLeavesTheEyesIdle) {
         modes::FrameInputs inputs = square_inputs(8.0);
         inputs.mono_culling = variant;
         const profile::FrameStats stats = hybrid.render_frame(inputs);
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kLeft), Chunks{});
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kRight), Chunks{});
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kMono), (Chunks{0, 1, 2}));
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kLeft)), Chunks{});
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kRight)), Chunks{});
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kMono)), (Chunks{0, 1, 2}));
         if (!statistics()) continue;
         for (const char* eye : {"left", "right"}) {
             EXPECT_EQ(view_of(stats, eye).input_primitives, 0u) << eye;
@@ -598,18 +627,18 @@ TEST_F(Culling, ForceFlagsAreHonouredOnlyWhereHarmless) {
         ASSERT_GT(-box.min.z, 3.0f);
         modes::ModeRenderer hybrid(ctx(), scene, Mode::kHybrid, kExtent, test_options());
         hybrid.render_frame(square_inputs(3.0));
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kLeft), Chunks{1});
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kRight), Chunks{1});
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kMono), (Chunks{0, 1}));
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kLeft)), Chunks{1});
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kRight)), Chunks{1});
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kMono)), (Chunks{0, 1}));
     }
     {
         SCOPED_TRACE("force mono, radius too small to honour (R = 4, m = 3)");
         const scenes::Scene scene = force_mono_scene(4.0f);
         modes::ModeRenderer hybrid(ctx(), scene, Mode::kHybrid, kExtent, test_options());
         hybrid.render_frame(square_inputs(3.0));
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kLeft), (Chunks{0, 1}));
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kRight), (Chunks{0, 1}));
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kMono), (Chunks{0, 1}));
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kLeft)), (Chunks{0, 1}));
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kRight)), (Chunks{0, 1}));
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kMono)), (Chunks{0, 1}));
     }
     rig::Pose turned;
     turned.position = kHead;
@@ -630,9 +659,9 @@ TEST_F(Culling, ForceFlagsAreHonouredOnlyWhereHarmless) {
         ASSERT_GT(farthest, 8.0 - square_overlap(8.0) + 0.5);
         modes::ModeRenderer hybrid(ctx(), scene, Mode::kHybrid, kExtent, test_options());
         hybrid.render_frame(square_inputs(8.0, turned));
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kLeft), Chunks{0});
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kRight), Chunks{0});
-        EXPECT_EQ(hybrid.drawn_chunks(CullView::kMono), honoured ? Chunks{} : Chunks{0});
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kLeft)), Chunks{0});
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kRight)), Chunks{0});
+        EXPECT_EQ(sorted(hybrid.drawn_chunks(CullView::kMono)), honoured ? Chunks{} : Chunks{0});
     }
 }
 
@@ -652,9 +681,9 @@ TEST_F(Culling, SecondFrameFromTheSamePoseDrawsNoShadowMap) {
         EXPECT_TRUE(has_pass(first, "shadow"));
         EXPECT_FALSE(has_pass(second, "shadow"));
         // The second frame still draws every list (stereo: all three chunks lie within f).
-        EXPECT_EQ(renderer.drawn_chunks(CullView::kLeft),
+        EXPECT_EQ(sorted(renderer.drawn_chunks(CullView::kLeft)),
                   mode == Mode::kStereo ? Chunks({0, 1, 2}) : Chunks({0, 2}));
-        EXPECT_EQ(renderer.drawn_chunks(CullView::kMono),
+        EXPECT_EQ(sorted(renderer.drawn_chunks(CullView::kMono)),
                   mode == Mode::kStereo ? Chunks{} : Chunks({1, 2}));
     }
 }

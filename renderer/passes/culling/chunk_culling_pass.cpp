@@ -1,6 +1,8 @@
 #include "renderer/passes/culling/chunk_culling_pass.h"
 
 #include <cstring>
+#include <numeric>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -67,6 +69,8 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
               vk_core::MemoryUse::kDeviceLocal),
       routing_(ctx, vk::DeviceSize{std::max(chunk_count_, 1u)} * sizeof(std::uint32_t),
                vk::BufferUsageFlagBits::eStorageBuffer, vk_core::MemoryUse::kDeviceLocal),
+      order_(ctx, vk::DeviceSize{std::max(chunk_count_, 1u)} * sizeof(std::uint32_t),
+             vk::BufferUsageFlagBits::eStorageBuffer, vk_core::MemoryUse::kHostVisible),
       constants_(ctx, sizeof(CullConstants), vk::BufferUsageFlagBits::eUniformBuffer,
                  vk_core::MemoryUse::kHostVisible),
       counts_readback_(ctx, counts_.size(), vk::BufferUsageFlagBits::eTransferDst,
@@ -83,10 +87,11 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
         vk::DescriptorSetLayoutBinding(3, Type::eUniformBuffer, 1, compute),
         vk::DescriptorSetLayoutBinding(4, Type::eCombinedImageSampler, 1, compute),
         vk::DescriptorSetLayoutBinding(5, Type::eStorageBuffer, 1, compute),
+        vk::DescriptorSetLayoutBinding(6, Type::eStorageBuffer, 1, compute),
     };
     set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
                                                 vk::DescriptorSetLayoutCreateInfo({}, bindings));
-    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 4),
+    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 5),
                                    vk::DescriptorPoolSize(Type::eUniformBuffer, 1),
                                    vk::DescriptorPoolSize(Type::eCombinedImageSampler, 1)};
     pool_ = vk::raii::DescriptorPool(
@@ -106,12 +111,14 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
     const vk::DescriptorBufferInfo counts_info(counts_.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorBufferInfo constants_info(constants_.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorBufferInfo routing_info(routing_.handle(), 0, VK_WHOLE_SIZE);
+    const vk::DescriptorBufferInfo order_info(order_.handle(), 0, VK_WHOLE_SIZE);
     const std::array writes = {
         vk::WriteDescriptorSet(*set_, 0, 0, Type::eStorageBuffer, {}, chunks_info),
         vk::WriteDescriptorSet(*set_, 1, 0, Type::eStorageBuffer, {}, commands_info),
         vk::WriteDescriptorSet(*set_, 2, 0, Type::eStorageBuffer, {}, counts_info),
         vk::WriteDescriptorSet(*set_, 3, 0, Type::eUniformBuffer, {}, constants_info),
         vk::WriteDescriptorSet(*set_, 5, 0, Type::eStorageBuffer, {}, routing_info),
+        vk::WriteDescriptorSet(*set_, 6, 0, Type::eStorageBuffer, {}, order_info),
     };
     ctx.device().updateDescriptorSets(writes, {});
 }
@@ -142,6 +149,15 @@ void ChunkCullingPass::set_frame(const CullFrame& frame) {
         static_cast<float>(frame.mono_viewport.x), static_cast<float>(frame.mono_viewport.y),
         static_cast<float>(frame.hidden_depth_threshold), static_cast<float>(frame.pyramid_mips));
     constants_.write(&c, sizeof(c));
+    std::vector<std::uint32_t> order = frame.draw_order;
+    if (order.empty()) {
+        order.resize(chunk_count_);
+        std::iota(order.begin(), order.end(), 0u);
+    }
+    if (order.size() != chunk_count_) {
+        throw std::invalid_argument("CullFrame::draw_order is not a permutation of the chunks");
+    }
+    if (!order.empty()) order_.write(order.data(), order.size() * sizeof(std::uint32_t));
 }
 
 void ChunkCullingPass::record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const {

@@ -35,6 +35,9 @@ struct CullFrame {
     glm::dvec2 mono_viewport{0.0};        // C's viewport in pixels (eq. 8)
     double hidden_depth_threshold = 0.0;  // the eyes' reversed-Z depth of m - eps
     std::uint32_t pyramid_mips = 1;
+    // The order in which the chunks are walked and their draws listed: a permutation of the
+    // chunk indices (front_to_back_order), or empty for chunk order.
+    std::vector<std::uint32_t> draw_order;
 };
 
 class ChunkCullingPass {
@@ -81,6 +84,7 @@ class ChunkCullingPass {
     vk_core::Buffer commands_;
     vk_core::Buffer counts_;
     vk_core::Buffer routing_;
+    vk_core::Buffer order_;
     vk_core::Buffer constants_;
     vk_core::Buffer counts_readback_;
     vk_core::Buffer commands_readback_;

@@ -6,9 +6,10 @@
 // list holds the chunks of either eye's list, for single-pass stereo. Phase 1 re-sorts C's list
 // with occlusion culling against the merged depth pyramid of both eyes.
 //
-// One workgroup walks the chunks in blocks; a prefix sum per block compacts each view's list in
-// chunk order, so the draw order (and any depth tie) is the same every frame and matches the
-// CPU reference.
+// One workgroup walks the chunks in the frame's draw order (nearest first, from the CPU: early
+// depth testing then rejects most hidden fragments before they are shaded) in blocks; a prefix
+// sum per block compacts each view's list in that order, so the draw order (and any depth tie)
+// follows the order given and matches the CPU reference.
 #include "renderer/passes/culling/cull_constants.h"
 
 layout(local_size_x = 256) in;
@@ -28,6 +29,8 @@ layout(std140, set = 0, binding = 3) uniform Constants { CullConstants cull; };
 layout(set = 0, binding = 4) uniform sampler2D merged_depth;
 // Per chunk: the MONOPLANE_ROUTE_* bits of this frame, for the debug view "routing".
 layout(std430, set = 0, binding = 5) buffer Routing { uint routing[]; };
+// The frame's draw order: a permutation of the chunk indices.
+layout(std430, set = 0, binding = 6) readonly buffer Order { uint order[]; };
 layout(push_constant) uniform Push { uint phase; };  // 0: frustum, 1: C's occlusion culling
 
 const uint kBlock = 256;
@@ -97,9 +100,10 @@ void main() {
     barrier();
 
     for (uint base = 0; base < chunk_count; base += kBlock) {
-        uint index = base + lane;
+        uint position = base + lane;
+        uint index = position < chunk_count ? order[position] : 0u;
         bool visible[MONOPLANE_CULL_LISTS] = bool[](false, false, false, false);
-        if (index < chunk_count) {
+        if (position < chunk_count) {
             ChunkRecord chunk = chunks[index];
             vec3 lo = chunk.bounds_min.xyz;
             vec3 hi = chunk.bounds_max.xyz;
