@@ -58,6 +58,7 @@ std::string bench_json(const BenchReport& report) {
     for (const BenchRun& run : report.runs) {
         j.begin_object();
         j.value("scene", run.scene).value("mode", run.mode).value("variant", run.variant);
+        if (!run.variant_chosen.empty()) j.value("variant_chosen", run.variant_chosen);
         j.value("stereo_pass", run.stereo_pass);
         optional_value(j, "mono_plane", run.mono_plane);
         j.value("mono_plane_is_far", run.mono_plane_is_far);

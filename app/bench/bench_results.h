@@ -18,7 +18,8 @@ struct BenchRun {
     // How the eyes' forward passes were drawn: two, multiview or gs (for stereo-multiview and
     // stereo-gs, their form; for the hybrid modes, their near passes').
     std::string stereo_pass = "two";
-    std::string variant;               // hybrid: no-opt, discard, occlusion-cull; otherwise empty
+    std::string variant;         // hybrid: no-opt, discard, occlusion-cull, auto; otherwise empty
+    std::string variant_chosen;  // auto: the variant in use at the last frame; otherwise empty
     std::optional<double> mono_plane;  // none for stereo
     bool mono_plane_is_far = false;    // m = f: C skipped, hybrid records stereo's passes
     int frames = 0;

@@ -294,7 +294,8 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     for (const std::string& name : split_list(o.variants)) {
         const auto variant = modes::parse_mono_culling(name);
         if (!variant) {
-            throw UserError("--variants: '" + name + "' is not no-opt, discard or occlusion-cull");
+            throw UserError("--variants: '" + name +
+                            "' is not no-opt, discard, occlusion-cull or auto");
         }
         variants.push_back(*variant);
     }
@@ -438,8 +439,13 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
                     run.scene = scene_name;
                     run.mode = modes::mode_name(mode);
                     run.stereo_pass = pass_name;
-                    if (mode == modes::Mode::kHybrid)
+                    if (mode == modes::Mode::kHybrid) {
                         run.variant = modes::mono_culling_name(variant);
+                        // auto: the variant its measurement settled on by the last frame.
+                        if (variant == modes::MonoCulling::kAuto) {
+                            run.variant_chosen = modes::mono_culling_name(renderer.last_variant());
+                        }
+                    }
                     run.mono_plane = plane.metres;
                     run.mono_plane_is_far = plane.far;
                     if (renderer.last_rig()) run.max_error_px = renderer.last_rig()->max_error_px;
@@ -499,7 +505,8 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
                     "hybrid-farfield")
         ->capture_default_str();
     cmd->add_option("--variants", options->variants,
-                    "hybrid's variants (papers/000 Sect. 5.1): no-opt, discard, occlusion-cull")
+                    "hybrid's variants (papers/000 Sect. 5.1): no-opt, discard, occlusion-cull, "
+                    "and auto (measures them on its frames and uses the fastest)")
         ->capture_default_str();
     cmd->add_option("--mono-planes", options->mono_planes,
                     "Comma-separated distances in metres; 'far' is the far plane")

@@ -2,11 +2,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <optional>
 
 #include "app/commands/ao_consistency.h"
 #include "app/commands/commands.h"
+#include "app/commands/depth_profile_json.h"
 #include "app/commands/frame_summary.h"
 #include "app/commands/image_quality_options.h"
 #include "app/commands/output_directory.h"
@@ -51,6 +53,7 @@ struct RenderOptions {
     std::string pose_path = "static";
     double fps = 90.0;
     bool depth_prepass = false;
+    bool depth_profile = false;  // --depth-profile (docs/scenes.md)
 };
 
 std::string joined(const std::vector<std::string>& names) {
@@ -65,7 +68,9 @@ std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& 
                          const std::optional<rig::Rig>& rig, const modes::RgbaImage* mono,
                          const std::optional<StereoComparison>& comparison,
                          const std::optional<quality::InconsistencyMap>& ao,
-                         const modes::FramePlan& plan, const std::filesystem::path& out) {
+                         const modes::FramePlan& plan, modes::MonoCulling last_variant,
+                         const std::filesystem::path& out,
+                         const std::function<void(JsonWriter&)>& depth_profile) {
     JsonWriter j;
     j.begin_object();
     j.value("command", "render").value("scene", scene.name).value("mode", o.mode);
@@ -74,7 +79,10 @@ std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& 
     j.value("width", width).value("height", height);
     j.value("stereo_pass", modes::stereo_pass_name(choice.stereo_pass));
     if (choice.mode != modes::Mode::kStereo) j.value("debug_view", o.debug_view);
-    if (choice.mode == modes::Mode::kHybrid) j.value("variant", o.mono_culling);
+    if (choice.mode == modes::Mode::kHybrid) {
+        j.value("variant", o.mono_culling);
+        j.value("variant_used", modes::mono_culling_name(last_variant));  // auto: resolved
+    }
     j.value("anti_aliasing", o.anti_aliasing).value("ssao", o.ssao);
     j.value("pose_path", o.pose_path).value("fps", o.fps);
     if (rig) {
@@ -145,6 +153,7 @@ std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& 
         j.end_object();
     }
     j.value("depth_prepass", o.depth_prepass);
+    if (depth_profile) depth_profile(j);
     modes::write_plan_json(j, plan);  // the last frame's
     j.begin_object("files");
     j.value("left", (out / "left.png").string()).value("right", (out / "right.png").string());
@@ -180,7 +189,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     const auto mono_culling = modes::parse_mono_culling(o.mono_culling);
     if (!mono_culling) {
         throw UserError("--variant " + o.mono_culling +
-                        " is not one of no-opt, discard, occlusion-cull");
+                        " is not one of no-opt, discard, occlusion-cull, auto");
     }
     const auto debug_view = modes::parse_debug_view(o.debug_view);
     if (!debug_view) {
@@ -208,7 +217,8 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     // E(p) reprojects the eyes' AO through their depth.
     const bool ssao = renderer_options.ssao.has_value();
     renderer_options.read_back_ao = ssao;
-    renderer_options.read_back_depth = ssao;
+    renderer_options.read_back_depth = ssao || o.depth_profile;
+    if (o.depth_profile && !o.json) throw UserError("--depth-profile needs --json");
 
     const std::filesystem::path out = prepare_output_directory("--out", o.out);
 
@@ -277,9 +287,17 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
             vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
             renderer_options, inputs, renderer, out);
     }
-    const std::string json =
-        summary_json(o, *choice, profile, scene, *ctx, width, height, summarize(measured),
-                     renderer.last_rig(), mono, comparison, ao, renderer.last_plan(), out);
+    const std::string json = summary_json(
+        o, *choice, profile, scene, *ctx, width, height, summarize(measured), renderer.last_rig(),
+        mono, comparison, ao, renderer.last_plan(), renderer.last_variant(), out,
+        [&](JsonWriter& j) {
+            if (!o.depth_profile) return;
+            // The last frame's left eye against its own depth read-back (docs/scenes.md).
+            const DepthProfileInputs in{&scene, inputs.views.head, inputs.views.ipd,
+                                        inputs.views.left, inputs.views.near, inputs.views.far};
+            write_depth_profile_json(j, "depth_profile", in,
+                                     renderer.eye_linear_depth(modes::Eye::kLeft));
+        });
     std::ofstream(out / "stats.json") << json << "\n";
     if (o.json) std::cout << json << "\n";
     std::cerr << "wrote " << (out / "left.png").string() << ", " << (out / "right.png").string()
@@ -317,8 +335,9 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
         ->capture_default_str();
     cmd->add_option("--variant", options->mono_culling,
                     "hybrid: how the merged depth pyramid of both eyes saves C's work (papers/000 "
-                    "Sect. 5.1): no-opt, discard (C's hidden fragments) or occlusion-cull (also "
-                    "C's hidden chunks)")
+                    "Sect. 5.1): no-opt, discard (C's hidden fragments), occlusion-cull (also "
+                    "C's hidden chunks) or auto (measures the three on the frames rendered and "
+                    "uses the fastest; same image)")
         ->capture_default_str();
     cmd->add_option("--hmd", options->hmd,
                     "HMD profile: vive, vive-pro, symmetric-90, "
@@ -346,6 +365,9 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
         ->capture_default_str();
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->add_flag("--json", options->json, "Print the statistics as JSON on stdout");
+    cmd->add_flag("--depth-profile", options->depth_profile,
+                  "With --json: add \"depth_profile\", the fractions of the left eye's triangles "
+                  "and pixels nearer than each fink2019 mono plane (docs/scenes.md)");
     cmd->add_flag("--depth-prepass", options->depth_prepass,
                   "A depth-only pass before every forward pass (each visible pixel shaded once; "
                   "off by default: on llvmpipe it costs more than it saves, docs/benchmarks.md)");

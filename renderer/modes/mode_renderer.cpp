@@ -555,6 +555,9 @@ struct ModeRenderer::FrameState {
     glm::dmat4 light_view_proj{1.0};
     bool shadow_needed = false;
     bool predicated = false;  // GPU predicates (VK_EXT_conditional_rendering)
+    // FrameInputs::mono_culling resolved (kAuto: the chooser's pick for this frame).
+    MonoCulling mono_culling = MonoCulling::kNoOpt;
+    bool measuring_variant = false;  // this frame's time goes to the chooser
     // Colour images a pass left as attachments that a later pass samples (frame_plan.h's
     // resource names): transitioned once, before their first reader.
     std::vector<std::string> attachments_written;
@@ -585,8 +588,24 @@ ModeRenderer::FrameState ModeRenderer::prepare_frame(const FrameInputs& inputs) 
     frame.predicated = ctx_.capabilities().conditional_rendering;
 
     build_frame_rig(inputs, frame);
+    resolve_variant(inputs, frame);
     update_frame_views(inputs, frame);
     return frame;
+}
+
+void ModeRenderer::resolve_variant(const FrameInputs& inputs, FrameState& frame) {
+    frame.mono_culling = inputs.mono_culling;
+    if (inputs.mono_culling != MonoCulling::kAuto) return;
+    // Only monoplane's hybrid drawing C has variants to tell apart.
+    if (mode_ != Mode::kHybrid || !frame.use_mono) {
+        frame.mono_culling = MonoCulling::kNoOpt;
+        return;
+    }
+    // Another m changes what the pyramid saves: measure again.
+    if (variant_mono_plane_ != inputs.mono_plane) variant_chooser_.reset();
+    variant_mono_plane_ = inputs.mono_plane;
+    frame.mono_culling = variant_chooser_.next();
+    frame.measuring_variant = true;
 }
 
 void ModeRenderer::build_frame_rig(const FrameInputs& inputs, FrameState& frame) {
@@ -620,7 +639,7 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
     const bool use_mono = frame.use_mono;
     const auto& farfield = frame.farfield;
     // C's work saved by the merged depth pyramid (the plan's rule, renderer/plan/frame_plan.cpp).
-    const bool depth_tested = use_mono && !farfield && inputs.mono_culling != MonoCulling::kNoOpt &&
+    const bool depth_tested = use_mono && !farfield && frame.mono_culling != MonoCulling::kNoOpt &&
                               inputs.debug != DebugView::kMonoOnly;
     passes::CullFrame cull;
     const glm::dvec3 mono_in_head = farfield || !use_mono ? glm::dvec3(0.0) : rig_->mono_position;
@@ -691,7 +710,7 @@ FramePlan ModeRenderer::plan(const FrameInputs& inputs, const FrameState& frame)
     options.read_back_draw_lists = options_.read_back_draw_lists;
     PlanFrame planned;
     planned.mono_skipped = !frame.use_mono;
-    planned.mono_culling = inputs.mono_culling;
+    planned.mono_culling = frame.mono_culling;
     planned.debug = inputs.debug;
     planned.shadow_needed = frame.shadow_needed;
     return plan_frame(options, planned, PlanDevice{frame.predicated});
@@ -715,7 +734,10 @@ profile::FrameStats ModeRenderer::render_frame(
     });
     mono_rendered_ = frame.use_mono && options_.read_back;
     if (frame.taa) history_parity_ = 1 - history_parity_;
-    return collect_frame(record_ms, frame.use_mono);
+    last_variant_ = frame.mono_culling;
+    profile::FrameStats stats = collect_frame(record_ms, frame.use_mono);
+    if (frame.measuring_variant) variant_chooser_.record(stats.gpu_frame_ms);
+    return stats;
 }
 
 const vk_core::Image* ModeRenderer::planned_image(const std::string& resource) const {

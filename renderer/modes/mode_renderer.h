@@ -28,6 +28,7 @@
 #include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/plan/render_choices.h"
+#include "renderer/plan/variant_chooser.h"
 #include "renderer/profile/frame_profiler.h"
 #include "renderer/rig/rig.h"
 
@@ -124,6 +125,9 @@ class ModeRenderer {
     std::vector<std::uint32_t> drawn_chunks(passes::CullView view) const;
     // The plan the last frame executed (render --json, bench.json).
     const FramePlan& last_plan() const { return last_plan_; }
+    // The variant the last hybrid frame used (FrameInputs::mono_culling resolved: with kAuto,
+    // the one the measurement chose or is trying).
+    MonoCulling last_variant() const { return last_variant_; }
 
   private:
     struct ForwardImages;
@@ -150,6 +154,7 @@ class ModeRenderer {
     struct FrameState;
     FrameState prepare_frame(const FrameInputs& inputs);
     void build_frame_rig(const FrameInputs& inputs, FrameState& frame);
+    void resolve_variant(const FrameInputs& inputs, FrameState& frame);
     void update_frame_views(const FrameInputs& inputs, FrameState& frame);
     FramePlan plan(const FrameInputs& inputs, const FrameState& frame) const;
     // The image a plan resource names, when the executor transitions it (colour images the
@@ -203,6 +208,10 @@ class ModeRenderer {
     bool mono_rendered_ = false;
     std::optional<rig::Rig> rig_;
     FramePlan last_plan_;
+    // --variant auto: measures the variants on this renderer's frames (reset when m changes).
+    VariantChooser variant_chooser_;
+    double variant_mono_plane_ = -1.0;
+    MonoCulling last_variant_ = MonoCulling::kNoOpt;
     // TAA's history: which of each view's two output images holds it, and what it continues.
     std::uint64_t next_frame_index_ = 0;
     int history_parity_ = 0;

@@ -1,6 +1,7 @@
 #include "renderer/plan/frame_plan.h"
 
 #include <array>
+#include <stdexcept>
 
 namespace monoplane::modes {
 namespace {
@@ -337,6 +338,9 @@ const PlannedPass* FramePlan::find(const std::string& name) const {
 }
 
 FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device) {
+    if (frame.mono_culling == MonoCulling::kAuto) {
+        throw std::invalid_argument("plan_frame: resolve MonoCulling::kAuto to a variant first");
+    }
     const FrameShape shape = shape_of(options, frame, device);
     return PlanBuilder(options, frame, shape).build();
 }

@@ -123,6 +123,7 @@ struct PlanFrame {
     // The rig's verdict (rig::Rig::mono_skipped): nothing lies beyond the mono plane (m >= far),
     // so hybrid draws no C. Ignored in stereo.
     bool mono_skipped = false;
+    // The variant this frame uses: never kAuto (the renderer resolves it; plan_frame refuses it).
     MonoCulling mono_culling = MonoCulling::kOcclusionCull;
     DebugView debug = DebugView::kNone;
     // The light's region moved since the shadow map was drawn (or it never was).

@@ -29,7 +29,8 @@ constexpr NameTable<DebugView> kDebugViewNames = {{DebugView::kNone, "none"},
 constexpr NameTable<MonoCulling> kMonoCullingNames = {
     {MonoCulling::kNoOpt, "no-opt"},
     {MonoCulling::kDiscard, "discard"},
-    {MonoCulling::kOcclusionCull, "occlusion-cull"}};
+    {MonoCulling::kOcclusionCull, "occlusion-cull"},
+    {MonoCulling::kAuto, "auto"}};
 constexpr NameTable<AntiAliasing> kAntiAliasingNames = {{AntiAliasing::kNone, "none"},
                                                         {AntiAliasing::kTaa, "taa"},
                                                         {AntiAliasing::kMsaa2, "msaa2"},

@@ -41,10 +41,12 @@ std::optional<DebugView> parse_debug_view(const std::string& name);
 // How much of C's work the merged depth pyramid of both eyes saves (papers/000 Sect. 4.4 and the
 // three variants of Sect. 5.1, Fig. 5): none ("No Opt.", frustum culling only), C's fragments
 // hidden in both eyes rejected ("Discard"), and C's chunks hidden in both eyes not drawn at all
-// ("Occl. Cull.", with Discard). hybrid-farfield uses frustum culling only.
-enum class MonoCulling { kNoOpt, kDiscard, kOcclusionCull };
+// ("Occl. Cull.", with Discard). hybrid-farfield uses frustum culling only. kAuto: the renderer
+// measures the three on the frames it renders and uses the fastest (variant_chooser.h).
+enum class MonoCulling { kNoOpt, kDiscard, kOcclusionCull, kAuto };
 std::optional<MonoCulling> parse_mono_culling(const std::string& name);
-std::string mono_culling_name(MonoCulling culling);  // "no-opt", "discard", "occlusion-cull"
+// "no-opt", "discard", "occlusion-cull", "auto"
+std::string mono_culling_name(MonoCulling culling);
 
 // Anti-aliasing (papers/000 Sect. 4.5). TAA works in every mode; MSAA only in stereo, because
 // resolving before the composite leaves C's samples out and resolving after it would need every

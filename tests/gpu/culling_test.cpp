@@ -727,5 +727,36 @@ TEST_F(Culling, RenderersOfOneSceneShareItsUploadAndShadowMap) {
     EXPECT_THROW(modes::ModeRenderer(ctx(), shared, Mode::kStereo, kExtent, other), UserError);
 }
 
+// --variant auto measures the three variants on the frames it renders, interleaved, then keeps
+// one; every frame shows what no-opt shows (the variants draw identical images).
+TEST_F(Culling, AutoVariantTriesEachVariantAndChangesNoPixel) {
+    const scenes::Scene scene = three_depths_scene();
+    modes::ModeRenderer automatic(ctx(), scene, Mode::kHybrid, kExtent, test_options());
+    modes::ModeRenderer reference(ctx(), scene, Mode::kHybrid, kExtent, test_options());
+    modes::FrameInputs inputs = square_inputs(8.0);
+    modes::FrameInputs reference_inputs = inputs;
+    inputs.mono_culling = MonoCulling::kAuto;
+    reference_inputs.mono_culling = MonoCulling::kNoOpt;
+    const int trial = modes::VariantChooserParams{}.rounds_per_trial * 3;
+    for (int frame = 0; frame < trial + 2; ++frame) {
+        SCOPED_TRACE("frame " + std::to_string(frame));
+        automatic.render_frame(inputs);
+        reference.render_frame(reference_inputs);
+        const MonoCulling used = automatic.last_variant();
+        if (frame < trial) {
+            EXPECT_EQ(used,
+                      modes::VariantChooser::kCandidates[static_cast<std::size_t>(frame % 3)]);
+        }
+        EXPECT_NE(used, MonoCulling::kAuto);
+        // The plan follows the variant in use.
+        const modes::PlannedPass* pyramid = automatic.last_plan().find("depth_pyramid");
+        ASSERT_NE(pyramid, nullptr);
+        EXPECT_EQ(!pyramid->skipped.has_value(), used != MonoCulling::kNoOpt);
+        for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
+            EXPECT_EQ(automatic.eye_image(eye).pixels, reference.eye_image(eye).pixels);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace monoplane
