@@ -3,10 +3,35 @@
 #include <array>
 #include <stdexcept>
 
+#include "renderer/plan/name_table.h"
+
 namespace monoplane::modes {
 namespace {
 
 constexpr std::array<const char*, 2> kEyes = {"left", "right"};
+
+constexpr NameTable<PassKind> kPassKindNames = {{PassKind::kCulling, "culling"},
+                                                {PassKind::kShadow, "shadow"},
+                                                {PassKind::kForward, "forward"},
+                                                {PassKind::kDepthPyramid, "depth_pyramid"},
+                                                {PassKind::kOcclusionCulling, "occlusion_culling"},
+                                                {PassKind::kMonoSsao, "mono_ssao"},
+                                                {PassKind::kComposite, "composite"},
+                                                {PassKind::kSsao, "ssao"},
+                                                {PassKind::kTaa, "taa"},
+                                                {PassKind::kTonemap, "tonemap"},
+                                                {PassKind::kReadback, "readback"}};
+constexpr NameTable<GpuPredicate> kPredicateNames = {
+    {GpuPredicate::kAlways, "always"},
+    {GpuPredicate::kMonoAny, "mono-any"},
+    {GpuPredicate::kMonoNone, "mono-none"},
+    {GpuPredicate::kMonoDepthTested, "mono-depth-tested"}};
+constexpr NameTable<DrawStep> kDrawStepNames = {
+    {DrawStep::kMaskHidden, "mask-hidden"},
+    {DrawStep::kDepthPrepass, "depth-prepass"},
+    {DrawStep::kChunks, "chunks"},
+    {DrawStep::kChunksShowRouting, "chunks-show-routing"},
+    {DrawStep::kSky, "sky"}};
 
 std::string resource(const std::string& view, const char* image) {
     return view + "." + image;
@@ -259,61 +284,15 @@ class PlanBuilder {
 }  // namespace
 
 std::string pass_kind_name(PassKind kind) {
-    switch (kind) {
-        case PassKind::kCulling:
-            return "culling";
-        case PassKind::kShadow:
-            return "shadow";
-        case PassKind::kForward:
-            return "forward";
-        case PassKind::kDepthPyramid:
-            return "depth_pyramid";
-        case PassKind::kOcclusionCulling:
-            return "occlusion_culling";
-        case PassKind::kMonoSsao:
-            return "mono_ssao";
-        case PassKind::kComposite:
-            return "composite";
-        case PassKind::kSsao:
-            return "ssao";
-        case PassKind::kTaa:
-            return "taa";
-        case PassKind::kTonemap:
-            return "tonemap";
-        case PassKind::kReadback:
-            return "readback";
-    }
-    return "?";
+    return name_of(kPassKindNames, kind);
 }
 
 std::string gpu_predicate_name(GpuPredicate predicate) {
-    switch (predicate) {
-        case GpuPredicate::kAlways:
-            return "always";
-        case GpuPredicate::kMonoAny:
-            return "mono-any";
-        case GpuPredicate::kMonoNone:
-            return "mono-none";
-        case GpuPredicate::kMonoDepthTested:
-            return "mono-depth-tested";
-    }
-    return "?";
+    return name_of(kPredicateNames, predicate);
 }
 
 std::string draw_step_name(DrawStep step) {
-    switch (step) {
-        case DrawStep::kMaskHidden:
-            return "mask-hidden";
-        case DrawStep::kDepthPrepass:
-            return "depth-prepass";
-        case DrawStep::kChunks:
-            return "chunks";
-        case DrawStep::kChunksShowRouting:
-            return "chunks-show-routing";
-        case DrawStep::kSky:
-            return "sky";
-    }
-    return "?";
+    return name_of(kDrawStepNames, step);
 }
 
 std::vector<const PlannedPass*> FramePlan::executed() const {

@@ -1,16 +1,12 @@
 #include "renderer/plan/render_choices.h"
 
-#include <initializer_list>
-#include <utility>
+#include "renderer/plan/name_table.h"
 
 namespace monoplane::modes {
 
 namespace {
 
 // Each enum's CLI names, for parse_* and *_name alike.
-template <class Enum>
-using NameTable = std::initializer_list<std::pair<Enum, const char*>>;
-
 constexpr NameTable<Mode> kModeNames = {{Mode::kStereo, "stereo"},
                                         {Mode::kHybrid, "hybrid"},
                                         {Mode::kHybridFarfield, "hybrid-farfield"}};
@@ -36,22 +32,6 @@ constexpr NameTable<AntiAliasing> kAntiAliasingNames = {{AntiAliasing::kNone, "n
                                                         {AntiAliasing::kMsaa2, "msaa2"},
                                                         {AntiAliasing::kMsaa4, "msaa4"},
                                                         {AntiAliasing::kMsaa8, "msaa8"}};
-
-template <class Enum>
-std::optional<Enum> parse_name(NameTable<Enum> table, const std::string& name) {
-    for (const auto& [value, text] : table) {
-        if (name == text) return value;
-    }
-    return std::nullopt;
-}
-
-template <class Enum>
-std::string name_of(NameTable<Enum> table, Enum value) {
-    for (const auto& [entry, text] : table) {
-        if (entry == value) return text;
-    }
-    return "?";
-}
 
 }  // namespace
 
