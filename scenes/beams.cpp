@@ -23,10 +23,10 @@ struct BeamsParameters {
 
 const PerDetail<BeamsParameters> kParameters = {{
     {24, 5, {8.0f, 8.0f, false}, 48},
-    {120, 10, {4.0f, 1.0f, false}, 96},
-    {260, 14, {4.0f, 1.2f, true}, 192},
-    {600, 20, {4.0f, 0.45f, true}, 384},
-    {1200, 28, {4.0f, 0.2f, true}, 512},
+    {100, 10, {4.0f, 1.0f, false}, 96},
+    {220, 14, {4.0f, 1.2f, true}, 192},
+    {520, 20, {4.0f, 0.45f, true}, 384},
+    {1040, 28, {4.0f, 0.2f, true}, 512},
 }};
 
 // The mono-plane corridor: gates every few metres (spacing growing with depth) carry the rails.
@@ -179,14 +179,15 @@ float truss_height(float depth) {
 }
 
 // Truss bridges across the view: top and bottom chords with verticals and diagonals between
-// them, on two posts, at depths spread from 12 m to 180 m.
+// them, on two posts, at depths spread uniformly from 12 m to 180 m (stratified; papers/000
+// Sect. 6: geometry uniformly distributed across space).
 void add_trusses(BeamsLayout& layout, int count, std::uint64_t seed, std::vector<Obstacle>& feet) {
     const Palette colours = palette();
     Random random(seed, kTrusses);
     for (int i = 0; i < count; ++i) {
         const float stratum =
             (static_cast<float>(i) + random.uniform(0.1f, 0.9f)) / static_cast<float>(count);
-        const float depth = 12.0f * std::pow(180.0f / 12.0f, stratum);
+        const float depth = 12.0f + (180.0f - 12.0f) * stratum;
         const float half_span = 10.0f + 0.3f * depth * random.uniform(0.8f, 1.2f);
         const float centre_x = random.uniform(-0.3f, 0.3f) * depth;
         const float bottom = truss_height(depth) * random.uniform(1.0f, 1.25f);
@@ -233,11 +234,11 @@ void add_towers(BeamsLayout& layout, int count, std::uint64_t seed,
     Random random(seed, kTowers);
     for (int i = 0; i < count; ++i) {
         for (int attempt = 0; attempt < 40; ++attempt) {
-            // Half uniform in distance, half uniform in log-distance: near towers exist at
-            // every detail level, far ones fill the view.
+            // Stratified uniform in distance (papers/000 Sect. 6: geometry uniformly
+            // distributed across space); the corridor and its rails supply the near range.
             const float u =
                 (static_cast<float>(i) + random.uniform(0.0f, 1.0f)) / static_cast<float>(count);
-            const float distance = i % 2 == 0 ? 4.0f + 256.0f * u : 4.0f * std::pow(65.0f, u);
+            const float distance = 4.0f + 256.0f * u;
             const bool ahead = random.chance(0.85);
             const float bearing = ahead ? random.uniform(-1.2f, 1.2f)
                                         : random.uniform(-static_cast<float>(std::numbers::pi),

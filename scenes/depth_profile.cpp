@@ -65,8 +65,7 @@ std::vector<double> pixel_fraction_nearer(std::span<const float> linear_depth,
         }
         const auto nearer = std::count_if(linear_depth.begin(), linear_depth.end(),
                                           [&](float d) { return static_cast<double>(d) < m; });
-        fractions.push_back(static_cast<double>(nearer) /
-                            static_cast<double>(linear_depth.size()));
+        fractions.push_back(static_cast<double>(nearer) / static_cast<double>(linear_depth.size()));
     }
     return fractions;
 }

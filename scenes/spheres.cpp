@@ -32,8 +32,8 @@ const PerDetail<SpheresParameters> kParameters = {{
 }};
 
 const glm::dvec3 kEye{0.0, 1.7, 0.0};
-constexpr float kNearest = 0.5f;  // depth of the nearest sphere centre
-constexpr float kFarthest = 170.0f;
+constexpr float kNearest = kSpheresNearest;  // depths of the nearest and farthest centres
+constexpr float kFarthest = kSpheresFarthest;
 // Half the field of view, as tangents: about 110 degrees across, a little less vertically.
 constexpr float kTanHorizontal = 1.43f;
 constexpr float kTanUp = 0.8f;
@@ -41,22 +41,18 @@ constexpr float kTanDown = 1.0f;
 
 enum Stream : std::uint64_t { kPlacement = 1, kAppearance };
 
-struct Ball {
-    glm::vec3 centre;
-    float radius;
-};
+using Ball = PlacedSphere;
 
-// Sphere i's depth: the even ones stratified uniformly in depth, the odd ones stratified in
-// log-depth. Uniform in metres alone would leave about 1 % of the spheres in front of the
-// 1.6 m mono plane; the log-uniform half gives every mono-plane distance several spheres, at
-// every detail level.
+// Sphere i's depth, uniform in depth as papers/000 Sect. 6 has it ("geometry which is uniformly
+// distributed across space"): stratified, sphere i in the i-th of count equal depth strata from
+// kNearest to kFarthest, jittered within it, so every seed and detail level keeps the spread.
+// Uniform in metres leaves few spheres in front of the nearest mono planes at low sphere counts
+// (about 0.7 % of them nearer than 1.6 m, one or two at detail test): that is the paper's design,
+// and docs/scenes.md gives the resulting fractions per mono plane.
 float depth_of(int i, int count, Random& random) {
-    const int half = (count + 1) / 2;
-    const int stratum = i / 2;  // the even and the odd sphere of a pair share a stratum
     const float u =
-        (static_cast<float>(stratum) + random.uniform(0.05f, 0.95f)) / static_cast<float>(half);
-    return i % 2 == 0 ? kNearest + (kFarthest - kNearest) * u
-                      : kNearest * std::pow(kFarthest / kNearest, u);
+        (static_cast<float>(i) + random.uniform(0.05f, 0.95f)) / static_cast<float>(count);
+    return kNearest + (kFarthest - kNearest) * u;
 }
 
 // Radius growing with depth, so spheres subtend a similar angle near and far.
@@ -96,6 +92,10 @@ std::vector<Ball> place_balls(int count, std::uint64_t seed) {
 }
 
 }  // namespace
+
+std::vector<PlacedSphere> spheres_layout(Detail detail, std::uint64_t seed) {
+    return place_balls(for_detail(kParameters, detail).spheres, seed);
+}
 
 Scene generate_spheres(Detail detail, std::uint64_t seed) {
     const SpheresParameters& parameters = for_detail(kParameters, detail);

@@ -39,10 +39,10 @@ void write_depth_profile_json(JsonWriter& j, std::string_view key, const DepthPr
     write_array(j, "pixels_nearer", pixels);
     j.value("triangles_in_view", static_cast<std::uint64_t>(primitives.triangles_in_view));
     j.value("pixels", static_cast<std::uint64_t>(left_linear_depth.size()));
-    j.value("sky_fraction", left_linear_depth.empty()
-                                ? 0.0
-                                : static_cast<double>(sky) /
-                                      static_cast<double>(left_linear_depth.size()));
+    j.value("sky_fraction",
+            left_linear_depth.empty()
+                ? 0.0
+                : static_cast<double>(sky) / static_cast<double>(left_linear_depth.size()));
     j.end_object();
 }
 

@@ -21,10 +21,10 @@ inline const std::vector<double> kDepthProfileMonoPlanes = {1.6,  3.0,  5.0,  8.
 
 struct DepthProfileInputs {
     const scenes::Scene* scene = nullptr;
-    rig::Pose head;          // the viewpoint's head pose
-    double ipd = 0.064;      // the left eye sits at (-ipd / 2, 0, 0) in the head frame
-    rig::Tangents left;      // the left eye's frustum (the HMD profile's)
-    double near = 0.1;       // the eyes' clip range
+    rig::Pose head;      // the viewpoint's head pose
+    double ipd = 0.064;  // the left eye sits at (-ipd / 2, 0, 0) in the head frame
+    rig::Tangents left;  // the left eye's frustum (the HMD profile's)
+    double near = 0.1;   // the eyes' clip range
     double far = 1000.0;
     std::vector<double> mono_planes = kDepthProfileMonoPlanes;
 };

@@ -287,17 +287,22 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
             vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
             renderer_options, inputs, renderer, out);
     }
+    // --depth-profile: the last frame's left eye against its own depth read-back (docs/scenes.md).
+    const auto depth_profile = [&](JsonWriter& j) {
+        if (!o.depth_profile) return;
+        DepthProfileInputs in;
+        in.scene = &scene;
+        in.head = inputs.views.head;
+        in.ipd = inputs.views.ipd;
+        in.left = inputs.views.left;
+        in.near = inputs.views.near;
+        in.far = inputs.views.far;
+        write_depth_profile_json(j, "depth_profile", in,
+                                 renderer.eye_linear_depth(modes::Eye::kLeft));
+    };
     const std::string json = summary_json(
         o, *choice, profile, scene, *ctx, width, height, summarize(measured), renderer.last_rig(),
-        mono, comparison, ao, renderer.last_plan(), renderer.last_variant(), out,
-        [&](JsonWriter& j) {
-            if (!o.depth_profile) return;
-            // The last frame's left eye against its own depth read-back (docs/scenes.md).
-            const DepthProfileInputs in{&scene, inputs.views.head, inputs.views.ipd,
-                                        inputs.views.left, inputs.views.near, inputs.views.far};
-            write_depth_profile_json(j, "depth_profile", in,
-                                     renderer.eye_linear_depth(modes::Eye::kLeft));
-        });
+        mono, comparison, ao, renderer.last_plan(), renderer.last_variant(), out, depth_profile);
     std::ofstream(out / "stats.json") << json << "\n";
     if (o.json) std::cout << json << "\n";
     std::cerr << "wrote " << (out / "left.png").string() << ", " << (out / "right.png").string()

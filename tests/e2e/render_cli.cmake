@@ -35,6 +35,43 @@ if(rc EQUAL 0 OR NOT log MATCHES "--scene cubes")
   message(FATAL_ERROR "an unknown scene must fail with a message naming it (${rc}): ${log}")
 endif()
 
+# --depth-profile (docs/scenes.md): per fink2019 mono plane the fractions of the left eye's
+# triangles and pixels nearer than it, non-decreasing in m and within [0, 1]; it needs --json.
+set(dir ${OUT}/depth_profile)
+file(REMOVE_RECURSE ${dir})
+execute_process(
+  COMMAND ${MONOPLANE} --validation render --scene spheres --detail test --width 96 --height 108
+          --shadow-resolution 512 --json --depth-profile --out ${dir}
+  RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE log)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "render --depth-profile failed (${rc}):\n${log}")
+endif()
+foreach(key mono_planes primitives_nearer pixels_nearer)
+  string(JSON count ERROR_VARIABLE missing LENGTH "${json}" depth_profile ${key})
+  if(missing OR NOT count EQUAL 10)
+    message(FATAL_ERROR "render --depth-profile: depth_profile.${key} is not 10 long: ${json}")
+  endif()
+endforeach()
+string(JSON last GET "${json}" depth_profile mono_planes 9)
+if(NOT last EQUAL 39.5)
+  message(FATAL_ERROR "render --depth-profile: the last mono plane is ${last}, not 39.5")
+endif()
+foreach(key primitives_nearer pixels_nearer)
+  set(previous 0)
+  foreach(i RANGE 9)
+    string(JSON f GET "${json}" depth_profile ${key} ${i})
+    if(f LESS previous OR f GREATER 1)
+      message(FATAL_ERROR "render --depth-profile: ${key}[${i}] = ${f} after ${previous}")
+    endif()
+    set(previous ${f})
+  endforeach()
+endforeach()
+execute_process(COMMAND ${MONOPLANE} render --scene spheres --depth-profile --out ${OUT}/bad
+                RESULT_VARIABLE rc ERROR_VARIABLE log)
+if(rc EQUAL 0 OR NOT log MATCHES "--depth-profile needs --json")
+  message(FATAL_ERROR "--depth-profile without --json must fail naming it (${rc}): ${log}")
+endif()
+
 # Hybrid with the comparison against stereo: mono.png, SSIM heat maps, the keys tools read.
 set(dir ${OUT}/hybrid)
 file(REMOVE_RECURSE ${dir})

@@ -18,6 +18,7 @@
 #include "scenes/chunk_builder.h"
 #include "scenes/generate.h"
 #include "scenes/random.h"
+#include "scenes/spheres.h"
 
 namespace monoplane::scenes {
 namespace {
@@ -454,6 +455,56 @@ TEST(Beams, RailsRunAlongTheViewThroughEveryMonoPlane) {
                 if (found) break;
             }
             EXPECT_TRUE(found) << "rail from z = " << rail.start.z << " at depth " << m;
+        }
+    }
+}
+
+// SPHERES spreads its spheres uniformly in depth (papers/000 Sect. 6: "geometry which is
+// uniformly distributed across space"): the centres' depths follow the uniform distribution over
+// [kSpheresNearest, kSpheresFarthest], checked per tenth of the range and below every mono plane
+// against the binomial spread of n independent uniform draws (stratification only tightens it).
+// A log-uniform share, as SPHERES had before, puts several times the expected count in the
+// nearest tenth and below 1.6 m.
+TEST(Spheres, CentresAreUniformInDepth) {
+    const double nearest = kSpheresNearest;
+    const double farthest = kSpheresFarthest;
+    const auto uniform_cdf = [&](double depth) {
+        return std::clamp((depth - nearest) / (farthest - nearest), 0.0, 1.0);
+    };
+    for (const Detail detail : {Detail::Test, Detail::Low}) {
+        for (const std::uint64_t seed : {kDefaultSeed, std::uint64_t{7}}) {
+            SCOPED_TRACE(std::string(detail_name(detail)) + " seed " + std::to_string(seed));
+            const std::vector<PlacedSphere> spheres = spheres_layout(detail, seed);
+            ASSERT_GE(spheres.size(), 190u);
+            const double n = static_cast<double>(spheres.size());
+            std::vector<double> depths;
+            for (const PlacedSphere& s : spheres) {
+                const double depth = -static_cast<double>(s.centre.z);  // the eye is at z = 0
+                ASSERT_GE(depth, nearest);
+                ASSERT_LE(depth, farthest);
+                depths.push_back(depth);
+            }
+            // Expected count n p within four binomial standard deviations, plus one for the
+            // count's granularity.
+            const auto expect_share = [&](double below, double p, const std::string& what) {
+                const auto count = std::count_if(depths.begin(), depths.end(),
+                                                 [&](double d) { return d < below; });
+                const double tolerance = 4.0 * std::sqrt(n * p * (1.0 - p)) + 1.0;
+                EXPECT_NEAR(static_cast<double>(count), n * p, tolerance) << what;
+            };
+            for (int tenth = 1; tenth <= 10; ++tenth) {
+                const double lower = nearest + (farthest - nearest) * (tenth - 1) / 10.0;
+                const double upper = nearest + (farthest - nearest) * tenth / 10.0;
+                const auto count = std::count_if(depths.begin(), depths.end(), [&](double d) {
+                    return d >= lower && (d < upper || tenth == 10);
+                });
+                const double tolerance = 4.0 * std::sqrt(n * 0.1 * 0.9) + 1.0;
+                EXPECT_NEAR(static_cast<double>(count), 0.1 * n, tolerance)
+                    << "depths " << lower << " to " << upper << " m";
+            }
+            for (const double m : kMonoPlanes) {
+                expect_share(m, uniform_cdf(m), "nearer than " + std::to_string(m) + " m");
+            }
         }
     }
 }
