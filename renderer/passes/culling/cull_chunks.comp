@@ -165,9 +165,7 @@ void main() {
             counts[MONOPLANE_COUNT_BOTH_EYES] = written[MONOPLANE_CULL_BOTH_EYES];
             counts[MONOPLANE_COUNT_MONO_CANDIDATES] = mono;
             counts[MONOPLANE_PRED_MONO_ANY] = mono > 0u ? 1u : 0u;
-            counts[MONOPLANE_PRED_NEAR_ANY] = near > 0u ? 1u : 0u;
             counts[MONOPLANE_PRED_MONO_DEPTH_TESTED] = mono > 0u && near > 0u ? 1u : 0u;
-            counts[MONOPLANE_PRED_MONO_UNTESTED] = mono > 0u && near == 0u ? 1u : 0u;
         }
     }
 }

@@ -37,10 +37,8 @@ using uvec4 = glm::uvec4;
 #define MONOPLANE_COUNT_BOTH_EYES 3
 #define MONOPLANE_COUNT_MONO_CANDIDATES 4   // C's draws before occlusion culling
 #define MONOPLANE_PRED_MONO_ANY 5           // C has chunks: C, its composite (else the eyes' sky)
-#define MONOPLANE_PRED_NEAR_ANY 6           // an eye has chunks: the merged depth pyramid
-#define MONOPLANE_PRED_MONO_DEPTH_TESTED 7  // both: C may use the pyramid (discard, occlusion)
-#define MONOPLANE_PRED_MONO_UNTESTED 8      // C has chunks and no eye has any: C without it
-#define MONOPLANE_COUNT_WORDS 9
+#define MONOPLANE_PRED_MONO_DEPTH_TESTED 6  // and an eye has some: the pyramid, C's hidden mask
+#define MONOPLANE_COUNT_WORDS 7
 
 // Bits of the routing word each chunk gets per frame (the debug view "routing"): the lists it went
 // to, and whether occlusion culling then took it out of C's.
