@@ -826,7 +826,11 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const Plan
             record_composite(cmd, pass, frame);
             break;
         case PassKind::kSsao:
-            ssao_->record_pair(cmd, *eyes_[0]->ssao, *eyes_[1]->ssao, eye_extent_, *options_.ssao);
+            // In hybrid, pixels well beyond m take C's AO: their own estimate is not needed.
+            ssao_->record_pair(
+                cmd, *eyes_[0]->ssao, *eyes_[1]->ssao, eye_extent_, *options_.ssao,
+                frame.use_mono ? static_cast<float>(frame.inputs->mono_plane) + ssao_->skip_margin()
+                               : passes::SsaoPass::kEveryPixel);
             for (const auto& eye : eyes_) {
                 // In hybrid the far region already carries C's AO: only the near content takes
                 // the eyes'.

@@ -61,10 +61,15 @@ class SsaoConsistency : public testing::GpuTest {
                                                        ao_view(renderer, Eye::kRight), stereo_head)
                              .value_or_throw();
         Measured m{map.mean, map.compared, 1.0};
-        for (float ao : renderer.eye_ao(Eye::kLeft)) {
-            EXPECT_GE(ao, 0.0f);
-            EXPECT_LE(ao, 1.0f);
-            m.darkest = std::min(m.darkest, static_cast<double>(ao));
+        // The darkest AO the eye applies: everywhere in stereo, over the near content in hybrid
+        // (beyond m the eye shows C's AO, and skips its own estimate well beyond it).
+        const std::vector<float>& ao = renderer.eye_ao(Eye::kLeft);
+        const std::vector<float>& depth = renderer.eye_linear_depth(Eye::kLeft);
+        for (std::size_t i = 0; i < ao.size(); ++i) {
+            EXPECT_GE(ao[i], 0.0f);
+            EXPECT_LE(ao[i], 1.0f);
+            if (mode == Mode::kHybrid && depth[i] >= inputs.mono_plane) continue;
+            m.darkest = std::min(m.darkest, static_cast<double>(ao[i]));
         }
         return m;
     }
@@ -84,7 +89,9 @@ TEST_F(SsaoConsistency, StereoConsistentSsaoHasALowerMeanErrorOnEveryScene) {
                       << " over " << stereo.compared << " pixels; darkest AO " << per_eye.darkest
                       << "\n";
             EXPECT_GT(stereo.compared, 1000u);
-            EXPECT_LT(per_eye.darkest, 0.95);  // something is occluded
+            // Something is occluded: clearly in stereo; in hybrid, where only the near content
+            // takes the eye's AO, SPHERES (uniform in depth) has few occluders within 8 m.
+            EXPECT_LT(per_eye.darkest, mode == Mode::kStereo ? 0.95 : 0.99) << scene.name;
             EXPECT_LT(stereo.mean_error, per_eye.mean_error) << scene.name;
         }
     }

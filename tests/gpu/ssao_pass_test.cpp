@@ -196,14 +196,15 @@ class SsaoPassTest : public testing::GpuTest {
     }
 
     AoPair run(const std::array<EyeInputs, 2>& eyes, vk::Extent2D extent, SsaoVariant variant,
-               const passes::SsaoParams& params = test_params()) {
+               const passes::SsaoParams& params = test_params(),
+               float skip_beyond = SsaoPass::kEveryPixel) {
         const SsaoPass pass(ctx(), params);
         const std::unique_ptr<SsaoView> left =
             pass.make_view(eyes[0].constants, eyes[0].linear_depth, extent);
         const std::unique_ptr<SsaoView> right =
             pass.make_view(eyes[1].constants, eyes[1].linear_depth, extent);
         ctx().submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-            pass.record_pair(cmd, *left, *right, kArea, variant);
+            pass.record_pair(cmd, *left, *right, kArea, variant, skip_beyond);
             pass.record_readback(cmd, *left);
             pass.record_readback(cmd, *right);
         });
@@ -486,6 +487,40 @@ TEST(SsaoVariant, NamesRoundTrip) {
     EXPECT_EQ(passes::parse_ssao_variant("per-eye"), SsaoVariant::kPerView);
     EXPECT_EQ(passes::parse_ssao_variant("stereo"), SsaoVariant::kStereoConsistent);
     EXPECT_FALSE(passes::parse_ssao_variant("mono").has_value());
+}
+
+// Hybrid's eyes skip the estimate beyond m + skip_margin() (their AO there is C's): pixels a
+// margin beyond the limit read 1, and every pixel nearer than the limit less the margin keeps the
+// AO it has when every pixel is computed, in both variants.
+TEST_F(SsaoPassTest, SkippingFarPixelsLeavesTheNearAoUnchanged) {
+    passes::SsaoParams params = test_params();
+    params.sigma_max = 0.05f;  // a margin of 0.3 m, small against the set-up's 1-2 m of depth
+    const float margin = SsaoPass(ctx(), params).skip_margin();
+    EXPECT_FLOAT_EQ(margin, 6.0f * params.sigma_max);
+    const float limit = 1.6f;
+    for (SsaoVariant variant : {SsaoVariant::kPerView, SsaoVariant::kStereoConsistent}) {
+        SCOPED_TRACE(passes::ssao_variant_name(variant));
+        const AoPair every = run(eyes_, kArea, variant, params);
+        const AoPair skipped = run(eyes_, kArea, variant, params, limit);
+        for (int e = 0; e < 2; ++e) {
+            int beyond = 0;
+            int near = 0;
+            for (std::size_t i = 0; i < eyes_[e].depth.size(); ++i) {
+                const float depth = eyes_[e].depth[i];
+                if (depth == kSky) continue;
+                if (depth > limit + margin) {
+                    // Skipped, and so are the pixels the filter weighs in: 1 up to rounding.
+                    ++beyond;
+                    ASSERT_NEAR(skipped.ao[e][i], 1.0f, 1e-6f) << "pixel " << i;
+                } else if (depth < limit - margin) {
+                    ++near;
+                    ASSERT_NEAR(skipped.ao[e][i], every.ao[e][i], 1e-4f) << "pixel " << i;
+                }
+            }
+            EXPECT_GT(beyond, 1000) << "eye " << e;
+            EXPECT_GT(near, 1000) << "eye " << e;
+        }
+    }
 }
 
 }  // namespace

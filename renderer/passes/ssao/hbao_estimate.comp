@@ -11,7 +11,7 @@ void main() {
     if (!in_area(p)) return;
     load_cameras();
     float d = depth_at(0, p);
-    if (is_sky(d)) {
+    if (is_sky(d) || d > pc.skip_beyond) {
         imageStore(raw_ao0, p, vec4(1.0));
         return;
     }

@@ -34,6 +34,9 @@ layout(push_constant) uniform Push {
     float back_check_px;
     int taps;
     int flags;  // kFlag*
+    // Linear depth beyond which the estimate is not computed (AO 1): in hybrid, pixels whose AO
+    // is C's and lie far enough beyond m that no near pixel's filter weighs them.
+    float skip_beyond;
 } pc;
 
 const int kFlagVertical = 1;   // the filter's second (vertical) pass

@@ -57,8 +57,9 @@ struct PushBlock {
     float back_check_px;
     std::int32_t taps;
     std::int32_t flags;
+    float skip_beyond;
 };
-static_assert(sizeof(PushBlock) == 52, "must match ssao_common.glsl");
+static_assert(sizeof(PushBlock) == 56, "must match ssao_common.glsl");
 
 struct ApplyPush {
     float area_width;
@@ -183,7 +184,8 @@ struct SsaoPass::Impl {
     vk::raii::Pipeline apply_everywhere{nullptr};
     vk::raii::Pipeline apply_near_only{nullptr};
 
-    PushBlock push(const SsaoParams& params, vk::Extent2D area, std::int32_t flags) const {
+    PushBlock push(const SsaoParams& params, vk::Extent2D area, std::int32_t flags,
+                   float skip_beyond) const {
         return {static_cast<std::int32_t>(area.width),
                 static_cast<std::int32_t>(area.height),
                 params.directions,
@@ -196,7 +198,8 @@ struct SsaoPass::Impl {
                 params.sigma_max,
                 params.back_check_px,
                 params.filter_taps,
-                flags};
+                flags,
+                skip_beyond};
     }
 
     // One dispatch over the area with `self` as set 0 and `other` as set 1.
@@ -360,33 +363,40 @@ std::unique_ptr<SsaoView> SsaoPass::make_view(const vk_core::Buffer& constants,
     return std::unique_ptr<SsaoView>(new SsaoView(std::move(state)));
 }
 
-void SsaoPass::record_view(const vk::raii::CommandBuffer& cmd, SsaoView& view,
-                           vk::Extent2D area) const {
+void SsaoPass::record_view(const vk::raii::CommandBuffer& cmd, SsaoView& view, vk::Extent2D area,
+                           float skip_beyond) const {
     assert(area.width <= view.extent().width && area.height <= view.extent().height);
     const Impl& impl = *impl_;
     Impl::begin(cmd, {&view});
-    impl.dispatch(cmd, impl.hbao_estimate, view, view, impl.push(params_, area, 0), area);
+    const PushBlock plain = impl.push(params_, area, 0, skip_beyond);
+    impl.dispatch(cmd, impl.hbao_estimate, view, view, plain, area);
     compute_barrier(cmd);
-    impl.dispatch(cmd, impl.bilateral_filter, view, view, impl.push(params_, area, 0), area);
+    impl.dispatch(cmd, impl.bilateral_filter, view, view, plain, area);
     compute_barrier(cmd);
-    impl.dispatch(cmd, impl.bilateral_filter, view, view, impl.push(params_, area, kFlagVertical),
-                  area);
+    impl.dispatch(cmd, impl.bilateral_filter, view, view,
+                  impl.push(params_, area, kFlagVertical, skip_beyond), area);
     Impl::finish(cmd, {&view});
 }
 
+float SsaoPass::skip_margin() const {
+    // The filter weighs a tap by G_sigma of its world distance, sigma <= sigma_max: at 6 sigma
+    // the weight is exp(-18) of the centre's, below any 8-bit level.
+    return 6.0f * params_.sigma_max;
+}
+
 void SsaoPass::record_pair(const vk::raii::CommandBuffer& cmd, SsaoView& left, SsaoView& right,
-                           vk::Extent2D area, SsaoVariant variant) const {
+                           vk::Extent2D area, SsaoVariant variant, float skip_beyond) const {
     assert(left.extent() == right.extent());
     if (variant == SsaoVariant::kPerView) {
-        record_view(cmd, left, area);
-        record_view(cmd, right, area);
+        record_view(cmd, left, area, skip_beyond);
+        record_view(cmd, right, area, skip_beyond);
         return;
     }
     assert(area.width <= left.extent().width && area.height <= left.extent().height);
     const Impl& impl = *impl_;
     Impl::begin(cmd, {&left, &right});
     // Sect. 3.1: the visibility maps L^l and L^r by reverse reprojection with a back-check.
-    const PushBlock plain = impl.push(params_, area, 0);
+    const PushBlock plain = impl.push(params_, area, 0, skip_beyond);
     impl.dispatch(cmd, impl.stereo_visibility, left, right, plain, area);
     impl.dispatch(cmd, impl.stereo_visibility, right, left, plain, area);
     compute_barrier(cmd);
@@ -394,15 +404,15 @@ void SsaoPass::record_pair(const vk::raii::CommandBuffer& cmd, SsaoView& left, S
     // L^r allows and estimates the rest from scratch.
     impl.dispatch(cmd, impl.stereo_estimate, left, right, plain, area);
     compute_barrier(cmd);
-    impl.dispatch(cmd, impl.stereo_estimate, right, left, impl.push(params_, area, kFlagReproject),
-                  area);
+    impl.dispatch(cmd, impl.stereo_estimate, right, left,
+                  impl.push(params_, area, kFlagReproject, skip_beyond), area);
     compute_barrier(cmd);
     // Sect. 3.3: the stereo filter, horizontally in both views, then vertically on that.
-    const PushBlock horizontal = impl.push(params_, area, kFlagStereo);
+    const PushBlock horizontal = impl.push(params_, area, kFlagStereo, skip_beyond);
     impl.dispatch(cmd, impl.bilateral_filter, left, right, horizontal, area);
     impl.dispatch(cmd, impl.bilateral_filter, right, left, horizontal, area);
     compute_barrier(cmd);
-    const PushBlock vertical = impl.push(params_, area, kFlagStereo | kFlagVertical);
+    const PushBlock vertical = impl.push(params_, area, kFlagStereo | kFlagVertical, skip_beyond);
     impl.dispatch(cmd, impl.bilateral_filter, left, right, vertical, area);
     impl.dispatch(cmd, impl.bilateral_filter, right, left, vertical, area);
     Impl::finish(cmd, {&left, &right});

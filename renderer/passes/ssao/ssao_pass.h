@@ -65,12 +65,19 @@ class SsaoPass {
     // region drawn from the top-left corner (C: its eq. 8 viewport); pixel centres map to NDC
     // over the area. Expects linear_depth in eShaderReadOnlyOptimal; leaves the AO image in
     // eShaderReadOnlyOptimal.
-    void record_view(const vk::raii::CommandBuffer& cmd, SsaoView& view, vk::Extent2D area) const;
+    // skip_beyond: the estimate leaves AO 1 at pixels whose linear depth is beyond it (hybrid:
+    // m + skip_margin(), where the eyes' AO is never applied and no nearer pixel's filter weighs
+    // the value); the default computes every pixel.
+    void record_view(const vk::raii::CommandBuffer& cmd, SsaoView& view, vk::Extent2D area,
+                     float skip_beyond = kEveryPixel) const;
+    static constexpr float kEveryPixel = 3.0e38f;
+    // Metres beyond a depth at which a pixel's AO no longer reaches nearer pixels' filtered AO.
+    float skip_margin() const;
 
     // Both eyes: kPerView is record_view on each; kStereoConsistent is papers/002 Sect. 3. Same
     // layout contract as record_view; both views have the same extent and area.
     void record_pair(const vk::raii::CommandBuffer& cmd, SsaoView& left, SsaoView& right,
-                     vk::Extent2D area, SsaoVariant variant) const;
+                     vk::Extent2D area, SsaoVariant variant, float skip_beyond = kEveryPixel) const;
 
     // hdr *= AO over the area. hdr must be in eColorAttachmentOptimal (it stays there). With
     // `near_only_depth` (the eye's reversed-Z depth buffer, eDepthAttachmentOptimal, read only)
