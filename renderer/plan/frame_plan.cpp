@@ -222,7 +222,7 @@ class PlanBuilder {
     }
 
     std::optional<std::string> occlusion_skip_reason() const {
-        if (const auto reason = pyramid_skip_reason()) return reason;
+        if (auto reason = pyramid_skip_reason()) return reason;
         if (!s_.occlusion_culled) return "variant discard: C's hidden chunks are still drawn";
         return std::nullopt;
     }
