@@ -204,13 +204,13 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     vk::Extent2D extent;                        // the images' size (C: its allocation)
     vk::Extent2D area;                          // the region drawn (C: its viewport, eq. 8)
     passes::ViewConstants written_constants{};  // what constants holds this frame
-    vk::raii::DescriptorSet forward_set{nullptr};
-    vk::raii::DescriptorSet tonemap_set{nullptr};
+    vk_core::DescriptorSet forward_set;
+    vk_core::DescriptorSet tonemap_set;
     RgbaImage image;
     std::vector<float> linear;
     // TAA: the sets reading and writing the history images.
-    std::array<vk::raii::DescriptorSet, 2> taa_sets{nullptr, nullptr};
-    std::array<vk::raii::DescriptorSet, 2> tonemap_taa_sets{nullptr, nullptr};
+    std::array<vk_core::DescriptorSet, 2> taa_sets;
+    std::array<vk_core::DescriptorSet, 2> tonemap_taa_sets;
     glm::dmat4 previous_unjittered{1.0};  // last frame's world -> clip without jitter
     bool has_previous = false;
     std::unique_ptr<passes::SsaoView> ssao;
@@ -238,7 +238,7 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
 };
 
 struct ModeRenderer::MonoView : View {
-    vk::raii::DescriptorSet composite_set{nullptr};
+    vk_core::DescriptorSet composite_set;
     using View::View;
 };
 
@@ -308,17 +308,7 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       taa_(ctx),
       profiler_(ctx) {
     if (options.ssao) ssao_ = std::make_unique<passes::SsaoPass>(ctx, options.ssao_params);
-    const std::array pool_sizes = {
-        vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 4),
-        vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 41),
-        vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 1),
-    };
-    descriptor_pool_ = vk::raii::DescriptorPool(
-        ctx.device(), vk::DescriptorPoolCreateInfo(
-                          vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 21, pool_sizes));
-    const vk::DescriptorSetLayout merged_depth_layout = forward_.merged_depth_layout();
-    merged_depth_set_ = std::move(vk::raii::DescriptorSets(
-        ctx.device(), vk::DescriptorSetAllocateInfo(*descriptor_pool_, merged_depth_layout))[0]);
+    merged_depth_set_ = forward_.make_merged_depth_set();
     const bool taa = options.anti_aliasing == AntiAliasing::kTaa;
     const ViewFeatures eye_features{taa, taa, msaa_samples(options.anti_aliasing)};
     if (options.stereo_pass != StereoPass::kTwoPasses) {
@@ -333,21 +323,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
         eye_pair_constants_.emplace(ctx, 2 * sizeof(passes::ViewConstants),
                                     vk::BufferUsageFlagBits::eUniformBuffer,
                                     vk_core::MemoryUse::kHostVisible);
-        const vk::DescriptorSetLayout pair_layout = eyes_forward_->set_layout();
-        eye_pair_set_ = std::move(vk::raii::DescriptorSets(
-            ctx.device(), vk::DescriptorSetAllocateInfo(*descriptor_pool_, pair_layout))[0]);
-        const vk::DescriptorBufferInfo constants_info(eye_pair_constants_->handle(), 0,
-                                                      VK_WHOLE_SIZE);
-        const vk::DescriptorImageInfo shadow_info(resources_->shadow().sampler(),
-                                                  resources_->shadow().view(),
-                                                  vk::ImageLayout::eShaderReadOnlyOptimal);
-        const std::array writes = {
-            vk::WriteDescriptorSet(*eye_pair_set_, 0, 0, vk::DescriptorType::eUniformBuffer, {},
-                                   constants_info),
-            vk::WriteDescriptorSet(*eye_pair_set_, 1, 0, vk::DescriptorType::eCombinedImageSampler,
-                                   shadow_info),
-        };
-        ctx.device().updateDescriptorSets(writes, {});
+        eye_pair_set_ = eyes_forward_->make_view_set(
+            *eye_pair_constants_, resources_->shadow().view(), resources_->shadow().sampler());
     }
     for (std::uint32_t e = 0; e < 2; ++e) {
         auto& eye = eyes_[e];
@@ -355,46 +332,22 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
         // MSAA into a layer other than 0 of a layered image.
         eye = eye_layers_ ? std::make_unique<View>(ctx, *eye_layers_, e, eye_features)
                           : std::make_unique<View>(ctx, eye_extent, eye_features);
-        const std::array layouts = {forward_.set_layout(), tonemap_.set_layout()};
-        vk::raii::DescriptorSets sets(ctx.device(),
-                                      vk::DescriptorSetAllocateInfo(*descriptor_pool_, layouts));
-        eye->forward_set = std::move(sets[0]);
-        eye->tonemap_set = std::move(sets[1]);
-        write_view_sets(*eye);
-        if (taa) write_taa_sets(*eye);
+        make_view_sets(*eye);
+        if (taa) make_taa_sets(*eye);
         if (ssao_) eye->ssao = ssao_->make_view(eye->constants, eye->linear_depth, eye_extent);
     }
     pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
-    write_merged_depth_set();
+    forward_.write_merged_depth(merged_depth_set_, pyramid_.view(), pyramid_.sampler(),
+                                culling_.routing());
 }
 
-void ModeRenderer::write_taa_sets(View& view) const {
+void ModeRenderer::make_taa_sets(View& view) const {
     for (int parity = 0; parity < 2; ++parity) {
-        const std::array layouts = {taa_.set_layout(), tonemap_.set_layout()};
-        vk::raii::DescriptorSets sets(ctx_.device(),
-                                      vk::DescriptorSetAllocateInfo(*descriptor_pool_, layouts));
-        view.taa_sets[parity] = std::move(sets[0]);
-        view.tonemap_taa_sets[parity] = std::move(sets[1]);
         // Parity p writes history[p] and reads history[1 - p].
-        const auto read_only = vk::ImageLayout::eShaderReadOnlyOptimal;
-        const std::array<vk::DescriptorImageInfo, 4> inputs = {
-            vk::DescriptorImageInfo(taa_.nearest_sampler(), view.hdr.view(), read_only),
-            vk::DescriptorImageInfo(taa_.nearest_sampler(), view.velocity->view(), read_only),
-            vk::DescriptorImageInfo(taa_.nearest_sampler(), view.linear_depth.view(), read_only),
-            vk::DescriptorImageInfo(taa_.bilinear_sampler(), view.history[1 - parity]->view(),
-                                    read_only),
-        };
-        const vk::DescriptorImageInfo output(tonemap_.sampler(), view.history[parity]->view(),
-                                             read_only);
-        std::vector<vk::WriteDescriptorSet> writes;
-        for (std::uint32_t i = 0; i < inputs.size(); ++i) {
-            writes.emplace_back(*view.taa_sets[parity], i, 0,
-                                vk::DescriptorType::eCombinedImageSampler, inputs[i]);
-        }
-        writes.emplace_back(*view.tonemap_taa_sets[parity], 0, 0,
-                            vk::DescriptorType::eCombinedImageSampler, output);
-        ctx_.device().updateDescriptorSets(writes, {});
+        view.taa_sets[parity] = taa_.make_inputs(view.hdr, *view.velocity, view.linear_depth,
+                                                 *view.history[1 - parity]);
+        view.tonemap_taa_sets[parity] = tonemap_.make_input(*view.history[parity]);
     }
 }
 
@@ -402,38 +355,14 @@ void ModeRenderer::ensure_pyramid() {
     if (!pyramid_.resize(mono_->extent)) return;
     pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
-    write_merged_depth_set();
+    forward_.write_merged_depth(merged_depth_set_, pyramid_.view(), pyramid_.sampler(),
+                                culling_.routing());
 }
 
-void ModeRenderer::write_merged_depth_set() const {
-    const vk::DescriptorImageInfo merged(pyramid_.sampler(), pyramid_.view(),
-                                         vk::ImageLayout::eGeneral);
-    const vk::DescriptorBufferInfo routing(culling_.routing(), 0, VK_WHOLE_SIZE);
-    const std::array writes = {
-        vk::WriteDescriptorSet(*merged_depth_set_, 0, 0, vk::DescriptorType::eCombinedImageSampler,
-                               merged),
-        vk::WriteDescriptorSet(*merged_depth_set_, 1, 0, vk::DescriptorType::eStorageBuffer, {},
-                               routing),
-    };
-    ctx_.device().updateDescriptorSets(writes, {});
-}
-
-void ModeRenderer::write_view_sets(const View& view) const {
-    const vk::DescriptorBufferInfo constants_info(view.constants.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorImageInfo shadow_info(resources_->shadow().sampler(),
-                                              resources_->shadow().view(),
-                                              vk::ImageLayout::eShaderReadOnlyOptimal);
-    const vk::DescriptorImageInfo hdr_info(tonemap_.sampler(), view.hdr.view(),
-                                           vk::ImageLayout::eShaderReadOnlyOptimal);
-    const std::array writes = {
-        vk::WriteDescriptorSet(*view.forward_set, 0, 0, vk::DescriptorType::eUniformBuffer, {},
-                               constants_info),
-        vk::WriteDescriptorSet(*view.forward_set, 1, 0, vk::DescriptorType::eCombinedImageSampler,
-                               shadow_info),
-        vk::WriteDescriptorSet(*view.tonemap_set, 0, 0, vk::DescriptorType::eCombinedImageSampler,
-                               hdr_info),
-    };
-    ctx_.device().updateDescriptorSets(writes, {});
+void ModeRenderer::make_view_sets(View& view) const {
+    view.forward_set = forward_.make_view_set(view.constants, resources_->shadow().view(),
+                                              resources_->shadow().sampler());
+    view.tonemap_set = tonemap_.make_input(view.hdr);
 }
 
 ModeRenderer::~ModeRenderer() = default;
@@ -448,33 +377,9 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     mono_.reset();
     const bool taa = options_.anti_aliasing == AntiAliasing::kTaa;
     mono_ = std::make_unique<MonoView>(ctx_, needed, ViewFeatures{taa, false});
-    const std::array layouts = {forward_.set_layout(), tonemap_.set_layout(),
-                                composite_.set_layout()};
-    vk::raii::DescriptorSets sets(ctx_.device(),
-                                  vk::DescriptorSetAllocateInfo(*descriptor_pool_, layouts));
-    mono_->forward_set = std::move(sets[0]);
-    mono_->tonemap_set = std::move(sets[1]);
-    mono_->composite_set = std::move(sets[2]);
-    write_view_sets(*mono_);
-    const vk::DescriptorImageInfo bilinear_hdr(composite_.bilinear_sampler(), mono_->hdr.view(),
-                                               vk::ImageLayout::eShaderReadOnlyOptimal);
-    const vk::DescriptorImageInfo linear_info(composite_.nearest_sampler(),
-                                              mono_->linear_depth.view(),
-                                              vk::ImageLayout::eShaderReadOnlyOptimal);
-    std::vector writes = {
-        vk::WriteDescriptorSet(*mono_->composite_set, 0, 0,
-                               vk::DescriptorType::eCombinedImageSampler, bilinear_hdr),
-        vk::WriteDescriptorSet(*mono_->composite_set, 1, 0,
-                               vk::DescriptorType::eCombinedImageSampler, linear_info),
-    };
-    const vk::DescriptorImageInfo velocity_info(composite_.nearest_sampler(),
-                                                taa ? mono_->velocity->view() : vk::ImageView{},
-                                                vk::ImageLayout::eShaderReadOnlyOptimal);
-    if (taa) {
-        writes.emplace_back(*mono_->composite_set, 2, 0, vk::DescriptorType::eCombinedImageSampler,
-                            velocity_info);
-    }
-    ctx_.device().updateDescriptorSets(writes, {});
+    make_view_sets(*mono_);
+    mono_->composite_set =
+        composite_.make_source(mono_->hdr, mono_->linear_depth, taa ? &*mono_->velocity : nullptr);
     if (ssao_) mono_->ssao = ssao_->make_view(mono_->constants, mono_->linear_depth, needed);
 }
 

@@ -135,20 +135,18 @@ class ModeRenderer {
     struct MonoView;
 
     void ensure_mono_view(int width, int height);
-    // Points a view's forward and tone-mapping descriptor sets at its own resources.
-    void write_view_sets(const View& view) const;
+    // A view's forward and tone-mapping sets, over its own resources (made by the passes).
+    void make_view_sets(View& view) const;
     // Makes the pyramid large enough for C's allocation and points its readers at it.
     void ensure_pyramid();
-    // Points set 1 of the forward pass at the pyramid and the routing words.
-    void write_merged_depth_set() const;
     // view_proj: as rasterised (jittered under TAA); unjittered: the same without the jitter,
     // for velocity.
     void update_view(View& view, const glm::dmat4& view_proj, const glm::dmat4& unjittered,
                      const glm::dvec3& position, const FrameInputs& inputs,
                      const glm::dvec3& mono_position, double blend_band,
                      const glm::dmat4& light_view_proj, double hidden_depth_threshold = 0.0);
-    // Allocates a view's TAA and tone-mapping sets over its history images.
-    void write_taa_sets(View& view) const;
+    // A view's TAA and tone-mapping sets over its history images (one per parity).
+    void make_taa_sets(View& view) const;
 
     // A frame: its state, the plan for it, and one recorder per kind of pass.
     struct FrameState;
@@ -196,11 +194,10 @@ class ModeRenderer {
     passes::TaaPass taa_;
     std::unique_ptr<passes::SsaoPass> ssao_;
     profile::FrameProfiler profiler_;
-    vk::raii::DescriptorPool descriptor_pool_{nullptr};
-    vk::raii::DescriptorSet merged_depth_set_{nullptr};  // after its pool: destroyed before it
+    vk_core::DescriptorSet merged_depth_set_;  // the forward pass's set 1 (mask, routing)
     // Single-pass stereo: both eyes' ViewConstants in one buffer, and eyes_forward_'s set 0.
     std::optional<vk_core::Buffer> eye_pair_constants_;
-    vk::raii::DescriptorSet eye_pair_set_{nullptr};
+    vk_core::DescriptorSet eye_pair_set_;
     // Single-pass stereo: both eyes' forward images as two-layer images; outlives eyes_.
     std::unique_ptr<ForwardImages> eye_layers_;
     std::array<std::unique_ptr<View>, 2> eyes_;

@@ -31,7 +31,8 @@ static_assert(sizeof(PushBlock) == 128, "must match composite_body.glsl");
 }  // namespace
 
 CompositePass::CompositePass(const vk_core::Context& ctx, bool velocity)
-    : velocity_(velocity),
+    : ctx_(ctx),
+      velocity_(velocity),
       bilinear_(vk_core::make_clamped_sampler(ctx, vk::Filter::eLinear)),
       nearest_(vk_core::make_clamped_sampler(ctx, vk::Filter::eNearest)) {
     // Binding 2 (C's velocity) exists only with velocity: every binding of a set must be written
@@ -104,6 +105,24 @@ void CompositePass::record(const vk::raii::CommandBuffer& cmd, const CompositeTa
     cmd.pushConstants<PushBlock>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, push);
     with_predicate(cmd, params.when, [&] { cmd.draw(3, 1, 0, 0); });
     cmd.endRendering();
+}
+
+vk_core::DescriptorSet CompositePass::make_source(const vk_core::Image& mono_hdr,
+                                                  const vk_core::Image& mono_linear_depth,
+                                                  const vk_core::Image* mono_velocity) const {
+    assert(velocity_ == (mono_velocity != nullptr));
+    const std::uint32_t count = velocity_ ? 3u : 2u;
+    const std::array sizes = {
+        vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, count)};
+    vk_core::DescriptorSet set(ctx_, *set_layout_, sizes);
+    const auto read_only = vk::ImageLayout::eShaderReadOnlyOptimal;
+    std::vector images = {
+        vk::DescriptorImageInfo(*bilinear_, mono_hdr.view(), read_only),
+        vk::DescriptorImageInfo(*nearest_, mono_linear_depth.view(), read_only),
+    };
+    if (mono_velocity) images.emplace_back(*nearest_, mono_velocity->view(), read_only);
+    vk_core::write_sampled_images(ctx_, *set, images);
+    return set;
 }
 
 }  // namespace monoplane::passes

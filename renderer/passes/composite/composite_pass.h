@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "renderer/passes/shared/indirect_draws.h"
+#include "renderer/vk/descriptor_set.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
 
@@ -49,15 +50,18 @@ class CompositePass {
   public:
     explicit CompositePass(const vk_core::Context& ctx, bool velocity = false);
 
-    vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
-    vk::Sampler bilinear_sampler() const { return *bilinear_; }
-    vk::Sampler nearest_sampler() const { return *nearest_; }
+    // The set record() reads C through: its HDR (bilinear), linear depth (texel-exact) and, in a
+    // pass made with velocity, its velocity (required then), all sampled.
+    vk_core::DescriptorSet make_source(const vk_core::Image& mono_hdr,
+                                       const vk_core::Image& mono_linear_depth,
+                                       const vk_core::Image* mono_velocity = nullptr) const;
 
     // Appends to the eye's targets (their contents are kept).
     void record(const vk::raii::CommandBuffer& cmd, const CompositeTargets& targets,
                 vk::DescriptorSet mono_set, const CompositeParams& params) const;
 
   private:
+    const vk_core::Context& ctx_;
     bool velocity_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::Sampler bilinear_{nullptr};

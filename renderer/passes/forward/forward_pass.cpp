@@ -148,7 +148,7 @@ ShaderSet shader_set(const ForwardConfig& config) {
 }  // namespace
 
 ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& config)
-    : config_(config) {
+    : ctx_(ctx), config_(config) {
     using Stage = vk::ShaderStageFlagBits;
     const bool gs = config.stereo == StereoDuplication::kGeometryShader;
     if (gs && !ctx.capabilities().geometry_shader) {
@@ -382,6 +382,40 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
         if (draw.step == ForwardStep::kDepthPrepass) prepassed = true;
     }
     cmd.endRendering();
+}
+
+vk_core::DescriptorSet ForwardPass::make_view_set(const vk_core::Buffer& constants,
+                                                  vk::ImageView shadow,
+                                                  vk::Sampler shadow_sampler) const {
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 1),
+                              vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1)};
+    vk_core::DescriptorSet set(ctx_, *set_layout_, sizes);
+    const vk::DescriptorBufferInfo constants_info(constants.handle(), 0, VK_WHOLE_SIZE);
+    const vk::DescriptorImageInfo shadow_info(shadow_sampler, shadow,
+                                              vk::ImageLayout::eShaderReadOnlyOptimal);
+    const std::array writes = {
+        vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eUniformBuffer, {}, constants_info),
+        vk::WriteDescriptorSet(*set, 1, 0, vk::DescriptorType::eCombinedImageSampler, shadow_info),
+    };
+    ctx_.device().updateDescriptorSets(writes, {});
+    return set;
+}
+
+vk_core::DescriptorSet ForwardPass::make_merged_depth_set() const {
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1),
+                              vk::DescriptorPoolSize(vk::DescriptorType::eStorageBuffer, 1)};
+    return vk_core::DescriptorSet(ctx_, *merged_depth_layout_, sizes);
+}
+
+void ForwardPass::write_merged_depth(const vk_core::DescriptorSet& set, vk::ImageView pyramid,
+                                     vk::Sampler nearest, vk::Buffer routing) const {
+    const vk::DescriptorImageInfo merged(nearest, pyramid, vk::ImageLayout::eGeneral);
+    const vk::DescriptorBufferInfo routing_info(routing, 0, VK_WHOLE_SIZE);
+    const std::array writes = {
+        vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eCombinedImageSampler, merged),
+        vk::WriteDescriptorSet(*set, 1, 0, vk::DescriptorType::eStorageBuffer, {}, routing_info),
+    };
+    ctx_.device().updateDescriptorSets(writes, {});
 }
 
 }  // namespace monoplane::passes

@@ -10,6 +10,8 @@
 #include "renderer/passes/shared/indirect_draws.h"
 #include "renderer/passes/shared/scene_geometry.h"
 #include "renderer/passes/shared/view_constants.h"
+#include "renderer/vk/buffer.h"
+#include "renderer/vk/descriptor_set.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
 
@@ -86,10 +88,16 @@ class ForwardPass {
 
     const ForwardConfig& config() const { return config_; }
 
-    vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
-    // Set 1 of the depth-tested and debug steps: the merged depth pyramid (binding 0, eGeneral)
-    // and the culling pass's per-chunk routing words (binding 1).
-    vk::DescriptorSetLayout merged_depth_layout() const { return *merged_depth_layout_; }
+    // Set 0 of a view: its constants (ViewConstants; single-pass stereo: both eyes' in one
+    // buffer) and the shadow map (eShaderReadOnlyOptimal).
+    vk_core::DescriptorSet make_view_set(const vk_core::Buffer& constants, vk::ImageView shadow,
+                                         vk::Sampler shadow_sampler) const;
+    // Set 1 of the mask and routing steps: the merged depth pyramid (binding 0, eGeneral) and
+    // the culling pass's per-chunk routing words (binding 1), written by write_merged_depth
+    // before the first frame and whenever the pyramid is made anew.
+    vk_core::DescriptorSet make_merged_depth_set() const;
+    void write_merged_depth(const vk_core::DescriptorSet& set, vk::ImageView pyramid,
+                            vk::Sampler nearest, vk::Buffer routing) const;
 
     // Expects the targets in eUndefined (their contents are replaced); leaves the colour targets
     // (velocity included) in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
@@ -100,6 +108,7 @@ class ForwardPass {
                 std::span<const ForwardDraw> steps) const;
 
   private:
+    const vk_core::Context& ctx_;
     ForwardConfig config_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::DescriptorSetLayout merged_depth_layout_{nullptr};

@@ -23,7 +23,8 @@ static_assert(sizeof(PushBlock) == 32, "must match taa_resolve.frag");
 }  // namespace
 
 TaaPass::TaaPass(const vk_core::Context& ctx)
-    : nearest_(vk_core::make_clamped_sampler(ctx, vk::Filter::eNearest)),
+    : ctx_(ctx),
+      nearest_(vk_core::make_clamped_sampler(ctx, vk::Filter::eNearest)),
       bilinear_(vk_core::make_clamped_sampler(ctx, vk::Filter::eLinear)) {
     std::array<vk::DescriptorSetLayoutBinding, 4> bindings;
     for (std::uint32_t i = 0; i < bindings.size(); ++i) {
@@ -74,6 +75,23 @@ void TaaPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& o
     cmd.pushConstants<PushBlock>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, push);
     cmd.draw(3, 1, 0, 0);
     cmd.endRendering();
+}
+
+vk_core::DescriptorSet TaaPass::make_inputs(const vk_core::Image& hdr,
+                                            const vk_core::Image& velocity,
+                                            const vk_core::Image& linear_depth,
+                                            const vk_core::Image& history) const {
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 4)};
+    vk_core::DescriptorSet set(ctx_, *set_layout_, sizes);
+    const auto read_only = vk::ImageLayout::eShaderReadOnlyOptimal;
+    const std::array images = {
+        vk::DescriptorImageInfo(*nearest_, hdr.view(), read_only),
+        vk::DescriptorImageInfo(*nearest_, velocity.view(), read_only),
+        vk::DescriptorImageInfo(*nearest_, linear_depth.view(), read_only),
+        vk::DescriptorImageInfo(*bilinear_, history.view(), read_only),
+    };
+    vk_core::write_sampled_images(ctx_, *set, images);
+    return set;
 }
 
 }  // namespace monoplane::passes

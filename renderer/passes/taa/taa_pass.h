@@ -5,6 +5,7 @@
 // Writes: the new output, which is the next frame's history and what tone mapping reads.
 #pragma once
 
+#include "renderer/vk/descriptor_set.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
 
@@ -24,9 +25,11 @@ class TaaPass {
 
     explicit TaaPass(const vk_core::Context& ctx);
 
-    vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
-    vk::Sampler nearest_sampler() const { return *nearest_; }
-    vk::Sampler bilinear_sampler() const { return *bilinear_; }
+    // The inputs record() reads: this frame's HDR, velocity and linear depth (texel-exact) and
+    // the history written last frame (bilinear), all sampled.
+    vk_core::DescriptorSet make_inputs(const vk_core::Image& hdr, const vk_core::Image& velocity,
+                                       const vk_core::Image& linear_depth,
+                                       const vk_core::Image& history) const;
 
     // Writes `output` (expected in eUndefined, left in eColorAttachmentOptimal) over its whole
     // extent. reset: ignore the history (first frame, or the history belongs to another view).
@@ -34,6 +37,7 @@ class TaaPass {
                 vk::DescriptorSet inputs, const TaaParams& params, bool reset) const;
 
   private:
+    const vk_core::Context& ctx_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::Sampler nearest_{nullptr};
     vk::raii::Sampler bilinear_{nullptr};

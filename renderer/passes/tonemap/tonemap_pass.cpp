@@ -1,5 +1,7 @@
 #include "renderer/passes/tonemap/tonemap_pass.h"
 
+#include <array>
+
 namespace monoplane::passes {
 namespace {
 const std::uint32_t kFullscreenVert[] = {
@@ -10,7 +12,7 @@ const std::uint32_t kTonemapFrag[] = {
 };
 }  // namespace
 
-TonemapPass::TonemapPass(const vk_core::Context& ctx) {
+TonemapPass::TonemapPass(const vk_core::Context& ctx) : ctx_(ctx) {
     const vk::DescriptorSetLayoutBinding binding(0, vk::DescriptorType::eCombinedImageSampler, 1,
                                                  vk::ShaderStageFlagBits::eFragment);
     set_layout_ =
@@ -52,6 +54,15 @@ void TonemapPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Imag
     cmd.pushConstants<TonemapParams>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, params);
     cmd.draw(3, 1, 0, 0);
     cmd.endRendering();
+}
+
+vk_core::DescriptorSet TonemapPass::make_input(const vk_core::Image& source) const {
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1)};
+    vk_core::DescriptorSet set(ctx_, *set_layout_, sizes);
+    const std::array images = {
+        vk::DescriptorImageInfo(*sampler_, source.view(), vk::ImageLayout::eShaderReadOnlyOptimal)};
+    vk_core::write_sampled_images(ctx_, *set, images);
+    return set;
 }
 
 }  // namespace monoplane::passes

@@ -2,6 +2,7 @@
 // Reads: the HDR image (set 0, binding 0, texel-exact). Writes: the display image.
 #pragma once
 
+#include "renderer/vk/descriptor_set.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
 
@@ -17,8 +18,8 @@ class TonemapPass {
 
     explicit TonemapPass(const vk_core::Context& ctx);
 
-    vk::DescriptorSetLayout set_layout() const { return *set_layout_; }
-    vk::Sampler sampler() const { return *sampler_; }
+    // The set record() reads `source` (kHdrFormat or TaaPass::kOutputFormat, sampled) through.
+    vk_core::DescriptorSet make_input(const vk_core::Image& source) const;
 
     // Expects the HDR image bound in hdr_set to be in eShaderReadOnlyOptimal and `display` in
     // eUndefined; leaves `display` in eColorAttachmentOptimal.
@@ -26,6 +27,7 @@ class TonemapPass {
                 vk::DescriptorSet hdr_set, const TonemapParams& params) const;
 
   private:
+    const vk_core::Context& ctx_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::Sampler sampler_{nullptr};
     vk::raii::PipelineLayout layout_{nullptr};
