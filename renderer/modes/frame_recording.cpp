@@ -1,0 +1,295 @@
+// The recorders of ModeRenderer: one per kind of planned pass (renderer/plan/frame_plan.h), and
+// the transitions the plan's reads imply.
+#include <algorithm>
+
+#include "renderer/modes/mode_renderer_internals.h"
+#include "renderer/passes/culling/cull_constants.h"
+#include "renderer/rig/temporal_jitter.h"
+
+namespace monoplane::modes {
+namespace {
+
+void copy_to_buffer(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image,
+                    vk::Extent2D extent, const vk_core::Buffer& buffer, vk::ImageLayout from) {
+    vk_core::transition(cmd, image, from, vk::ImageLayout::eTransferSrcOptimal,
+                        Stage::eColorAttachmentOutput | Stage::eFragmentShader,
+                        Access::eColorAttachmentWrite, Stage::eTransfer, Access::eTransferRead);
+    cmd.copyImageToBuffer(
+        image.handle(), vk::ImageLayout::eTransferSrcOptimal, buffer.handle(),
+        vk::BufferImageCopy(
+            0, 0, 0,
+            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, image.base_layer(), 1),
+            {0, 0, 0}, vk::Extent3D(extent, 1)));
+}
+
+// The forward pass's step for a planned draw (one to one).
+passes::ForwardStep forward_step(DrawStep step) {
+    switch (step) {
+        case DrawStep::kMaskHidden:
+            return passes::ForwardStep::kMaskHidden;
+        case DrawStep::kDepthPrepass:
+            return passes::ForwardStep::kDepthPrepass;
+        case DrawStep::kChunks:
+            return passes::ForwardStep::kChunks;
+        case DrawStep::kChunksShowRouting:
+            return passes::ForwardStep::kChunksShowRouting;
+        case DrawStep::kSky:
+            return passes::ForwardStep::kSky;
+    }
+    return passes::ForwardStep::kChunks;
+}
+
+}  // namespace
+
+void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image) {
+    vk_core::transition(cmd, image, vk::ImageLayout::eColorAttachmentOptimal,
+                        vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eColorAttachmentOutput,
+                        Access::eColorAttachmentWrite, Stage::eFragmentShader,
+                        Access::eShaderSampledRead);
+}
+
+const vk_core::Image* ModeRenderer::planned_image(const std::string& resource) const {
+    const std::size_t dot = resource.find('.');
+    if (dot == std::string::npos) return nullptr;
+    const std::string view = resource.substr(0, dot);
+    const std::string image = resource.substr(dot + 1);
+    const View* owner = view == "left"    ? eyes_[0].get()
+                        : view == "right" ? eyes_[1].get()
+                        : view == "mono"  ? mono_.get()
+                                          : nullptr;
+    if (owner == nullptr) return nullptr;
+    if (image == "hdr") return &owner->hdr;
+    if (image == "linear_depth") return &owner->linear_depth;
+    if (image == "velocity") return owner->velocity ? &*owner->velocity : nullptr;
+    return nullptr;  // depth, history, ao, display: their passes transition them
+}
+
+void ModeRenderer::record_pass(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                               FrameState& frame) {
+    // The plan's reads: colour images an earlier pass left as attachments become sampled.
+    for (const std::string& read : pass.reads) {
+        auto written =
+            std::find(frame.attachments_written.begin(), frame.attachments_written.end(), read);
+        if (written == frame.attachments_written.end()) continue;
+        if (const vk_core::Image* image = planned_image(read)) to_shader_read(cmd, *image);
+        frame.attachments_written.erase(written);
+    }
+    const bool timed = pass.kind != PassKind::kReadback;  // read-backs are not GPU frame time
+    if (timed) profiler_.begin_pass(cmd, pass.name);
+    if (!pass.statistics_scope.empty()) profiler_.begin_view(cmd, pass.statistics_scope);
+    record_planned(cmd, pass, frame);
+    if (!pass.statistics_scope.empty()) profiler_.end_view(cmd);
+    if (timed) profiler_.end_pass(cmd);
+    // The plan's writes: what this pass left as colour attachments.
+    for (const std::string& write : pass.writes) {
+        if (planned_image(write) != nullptr &&
+            std::find(frame.attachments_written.begin(), frame.attachments_written.end(), write) ==
+                frame.attachments_written.end()) {
+            frame.attachments_written.push_back(write);
+        }
+    }
+}
+
+std::optional<passes::Predicate> ModeRenderer::predicate(GpuPredicate when) const {
+    switch (when) {
+        case GpuPredicate::kAlways:
+            return std::nullopt;
+        case GpuPredicate::kMonoAny:
+            return culling_.predicate(MONOPLANE_PRED_MONO_ANY, false);
+        case GpuPredicate::kMonoNone:
+            return culling_.predicate(MONOPLANE_PRED_MONO_ANY, true);
+        case GpuPredicate::kMonoDepthTested:
+            return culling_.predicate(MONOPLANE_PRED_MONO_DEPTH_TESTED, false);
+    }
+    return std::nullopt;
+}
+
+void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                                  const FrameState& frame) {
+    switch (pass.kind) {
+        case PassKind::kCulling:
+            culling_.record_frustum_phase(cmd);
+            break;
+        case PassKind::kShadow:
+            resources_->record_shadow(cmd, frame.light_view_proj);
+            break;
+        case PassKind::kForward:
+            record_forward(cmd, pass);
+            break;
+        case PassKind::kDepthPyramid:
+            record_pyramid(cmd, pass, frame);
+            break;
+        case PassKind::kOcclusionCulling:
+            passes::with_predicate(cmd, predicate(pass.when),
+                                   [&] { culling_.record_occlusion_phase(cmd); });
+            break;
+        case PassKind::kMonoSsao:
+            // The far region's AO, computed once for both eyes (C alone sees it).
+            passes::with_predicate(cmd, predicate(pass.when), [&] {
+                ssao_->record_view(cmd, *mono_->ssao, mono_->area);
+                ssao_->record_apply(cmd, *mono_->ssao, mono_->hdr, mono_->area);
+            });
+            break;
+        case PassKind::kComposite:
+            record_composite(cmd, pass, frame);
+            break;
+        case PassKind::kSsao:
+            // In hybrid, pixels well beyond m take C's AO: their own estimate is not needed.
+            ssao_->record_pair(
+                cmd, *eyes_[0]->ssao, *eyes_[1]->ssao, eye_extent_, *options_.ssao,
+                frame.use_mono ? static_cast<float>(frame.inputs->mono_plane) + ssao_->skip_margin()
+                               : passes::SsaoPass::kEveryPixel);
+            for (const auto& eye : eyes_) {
+                // In hybrid the far region already carries C's AO: only the near content takes
+                // the eyes'.
+                ssao_->record_apply(cmd, *eye->ssao, eye->hdr, eye_extent_,
+                                    frame.use_mono ? &eye->depth : nullptr);
+            }
+            break;
+        case PassKind::kTaa:
+            record_taa(cmd, *eyes_[pass.view == "left" ? 0 : 1]);
+            break;
+        case PassKind::kTonemap:
+            record_tonemap(cmd, pass, frame);
+            break;
+        case PassKind::kReadback:
+            record_readback(cmd, frame);
+            break;
+    }
+}
+
+void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass) {
+    std::vector<passes::ForwardDraw> draws;
+    for (const PlannedDraw& draw : pass.draws) {
+        draws.push_back({forward_step(draw.step), predicate(draw.when)});
+    }
+    if (pass.view == "eyes") {
+        // Both eyes in one pass, from the list of chunks either eye needs.
+        eyes_forward_->record(cmd, eye_layers_->forward_targets(eye_extent_), *eye_pair_set_,
+                              *merged_depth_set_, resources_->geometry(),
+                              culling_.draws(passes::CullView::kBothEyes), draws);
+        return;
+    }
+    if (pass.view == "mono") {
+        // Pixels hidden in both eyes stay unwritten; C's image read back shows them black,
+        // and C's SSAO must not read stale depths there.
+        const bool masked = std::any_of(pass.draws.begin(), pass.draws.end(), [](const auto& d) {
+            return d.step == DrawStep::kMaskHidden;
+        });
+        const bool clear_color = masked && (options_.read_back || ssao_);
+        forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,
+                        *merged_depth_set_, resources_->geometry(),
+                        culling_.draws(passes::CullView::kMono), draws);
+        return;
+    }
+    const int e = pass.view == "left" ? 0 : 1;
+    forward_.record(cmd, eyes_[e]->forward_targets(), *eyes_[e]->forward_set, *merged_depth_set_,
+                    resources_->geometry(), culling_.draws(static_cast<passes::CullView>(e)),
+                    draws);
+}
+
+void ModeRenderer::record_pyramid(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                                  const FrameState& frame) {
+    for (const auto& eye : eyes_) {
+        vk_core::transition(cmd, eye->depth, vk::ImageLayout::eDepthAttachmentOptimal,
+                            vk::ImageLayout::eDepthReadOnlyOptimal, Stage::eLateFragmentTests,
+                            Access::eDepthStencilAttachmentWrite, Stage::eComputeShader,
+                            Access::eShaderSampledRead);
+    }
+    std::array<glm::dmat3, 2> mono_to_eye;
+    for (int e = 0; e < 2; ++e) {
+        mono_to_eye[e] =
+            rig::jittered_pixel_mapping(rig::mono_pixel_to_eye_pixel(*rig_, e), frame.jitter_px);
+    }
+    pyramid_.record(cmd, mono_to_eye, predicate(pass.when));
+    for (const auto& eye : eyes_) {
+        vk_core::transition(cmd, eye->depth, vk::ImageLayout::eDepthReadOnlyOptimal,
+                            vk::ImageLayout::eDepthAttachmentOptimal, Stage::eComputeShader,
+                            Access::eShaderSampledRead,
+                            Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
+                            Access::eDepthStencilAttachmentRead);
+    }
+}
+
+void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                                    const FrameState& frame) {
+    const FrameInputs& inputs = *frame.inputs;
+    const int e = pass.view == "left" ? 0 : 1;
+    const View& view = *eyes_[e];
+    passes::CompositeParams params;
+    params.mono_allocation = glm::vec2(static_cast<float>(mono_->extent.width),
+                                       static_cast<float>(mono_->extent.height));
+    if (frame.farfield) {
+        params.mapping = passes::CompositeMapping::kOffsetCopy;
+        params.pixel_offset = frame.farfield->offsets[e];
+        // Same pixel size: NDC velocities scale with the images' widths.
+        params.velocity_scale = glm::vec2(
+            static_cast<float>(mono_->area.width) / static_cast<float>(eye_extent_.width),
+            static_cast<float>(mono_->area.height) / static_cast<float>(eye_extent_.height));
+    } else {
+        // Eq. 5 between the jittered clip spaces: C's image and the eye's are both displaced by
+        // the jitter, so the mapping undoes one and applies the other.
+        params.eye_to_mono =
+            glm::mat4(frame.mono_jitter * rig_->eye_to_mono[e] * glm::inverse(frame.eye_jitter));
+        params.velocity_scale = glm::vec2(rig::mono_velocity_to_eye(*rig_, e));
+        // C's image is valid in [0, viewport / allocation] (Sect. 4.2). The image may be larger
+        // than the rig's own allocation: it was sized for an earlier m.
+        params.uv_scale = glm::vec2(static_cast<float>(mono_->area.width),
+                                    static_cast<float>(mono_->area.height)) /
+                          params.mono_allocation;
+    }
+    if (inputs.debug == DebugView::kTintMono) params.tint = 1.0f;
+    if (inputs.debug == DebugView::kStereoOnly) params.mapping = passes::CompositeMapping::kNothing;
+    params.cover_all_pixels = inputs.debug == DebugView::kMonoOnly;
+    params.when = predicate(pass.when);
+    composite_.record(
+        cmd, {view.hdr, view.linear_depth, view.depth, view.velocity ? &*view.velocity : nullptr},
+        *mono_->composite_set, params);
+}
+
+void ModeRenderer::record_tonemap(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+                                  const FrameState& frame) {
+    if (pass.view == "mono") {
+        tonemap_.record(cmd, mono_->display, *mono_->tonemap_set, options_.tonemap);
+        return;
+    }
+    const View& view = *eyes_[pass.view == "left" ? 0 : 1];
+    const vk::DescriptorSet input =
+        frame.taa ? *view.tonemap_taa_sets[history_parity_] : *view.tonemap_set;
+    tonemap_.record(cmd, view.display, input, options_.tonemap);
+}
+
+void ModeRenderer::record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame) {
+    for (const auto& view : eyes_) {
+        if (options_.read_back) {
+            copy_to_buffer(cmd, view->display, view->extent, view->readback,
+                           vk::ImageLayout::eColorAttachmentOptimal);
+        }
+        if (options_.read_back_depth) {
+            copy_to_buffer(cmd, view->linear_depth, view->extent, view->depth_readback,
+                           vk::ImageLayout::eShaderReadOnlyOptimal);
+        }
+        if (options_.read_back_ao) ssao_->record_readback(cmd, *view->ssao);
+    }
+    if (frame.use_mono && options_.read_back) {
+        copy_to_buffer(cmd, mono_->display, mono_->area, mono_->readback,
+                       vk::ImageLayout::eColorAttachmentOptimal);
+    }
+    culling_.record_readback(cmd, options_.read_back_draw_lists);
+}
+
+void ModeRenderer::record_taa(const vk::raii::CommandBuffer& cmd, View& view) {
+    const vk_core::Image& history = *view.history[1 - history_parity_];
+    if (!history_valid_) {
+        // Never written (or stale): bound for the shader's interface, not read on a reset.
+        vk_core::transition(cmd, history, vk::ImageLayout::eUndefined,
+                            vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eFragmentShader,
+                            Access::eShaderSampledRead, Stage::eFragmentShader,
+                            Access::eShaderSampledRead);
+    }
+    const vk_core::Image& output = *view.history[history_parity_];
+    taa_.record(cmd, output, *view.taa_sets[history_parity_], options_.taa, !history_valid_);
+    to_shader_read(cmd, output);
+}
+
+}  // namespace monoplane::modes

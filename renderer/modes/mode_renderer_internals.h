@@ -1,0 +1,194 @@
+// ModeRenderer's private parts, shared by its two source files (mode_renderer.cpp: views,
+// frame preparation, statistics; frame_recording.cpp: one recorder per kind of planned pass):
+// the views' images and outputs and one frame's state. Include nowhere else.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/modes/farfield_rig.h"
+#include "renderer/modes/mode_renderer.h"
+
+namespace monoplane::modes {
+
+using Stage = vk::PipelineStageFlagBits2;
+using Access = vk::AccessFlagBits2;
+
+constexpr vk::ImageUsageFlags kColorTarget = vk::ImageUsageFlagBits::eColorAttachment |
+                                             vk::ImageUsageFlagBits::eSampled |
+                                             vk::ImageUsageFlagBits::eTransferSrc;
+
+// A layout transition for a colour image an earlier pass left as an attachment.
+void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image);
+
+// What a view's targets must support beyond the basic forward pass.
+struct ViewFeatures {
+    bool velocity = false;  // TAA: velocity, and (eyes) two history images
+    bool history = false;
+    vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
+};
+
+// The images a forward pass writes: one camera's, or both eyes' as two-layer images (single-pass
+// stereo), or one layer of those. Not movable: multisample refers to its own members.
+struct ModeRenderer::ForwardImages {
+    vk_core::Image hdr;
+    vk_core::Image depth;
+    vk_core::Image linear_depth;
+    // TAA: screen-space velocity.
+    std::optional<vk_core::Image> velocity;
+    // MSAA: the multisampled targets the forward pass resolves into hdr and linear_depth.
+    std::optional<vk_core::Image> hdr_samples;
+    std::optional<vk_core::Image> linear_depth_samples;
+    std::optional<vk_core::Image> depth_samples;
+    std::optional<passes::MultisampleTargets> multisample;
+
+    ForwardImages(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features,
+                  std::uint32_t layers)
+        : hdr(ctx, {size, passes::ForwardPass::kHdrFormat, kColorTarget, layers}),
+          // Sampled: the merged depth pyramid reads the eyes' depth.
+          depth(ctx,
+                {size, passes::ForwardPass::kDepthFormat,
+                 vk::ImageUsageFlagBits::eDepthStencilAttachment | vk::ImageUsageFlagBits::eSampled,
+                 layers}),
+          linear_depth(ctx, {size, passes::ForwardPass::kLinearDepthFormat, kColorTarget, layers}) {
+        if (features.velocity) {
+            velocity.emplace(ctx, vk_core::ImageDesc{size, passes::ForwardPass::kVelocityFormat,
+                                                     vk::ImageUsageFlagBits::eColorAttachment |
+                                                         vk::ImageUsageFlagBits::eSampled,
+                                                     layers});
+        }
+        if (features.samples != vk::SampleCountFlagBits::e1) {
+            // Transient: only their resolve is kept.
+            const vk::ImageUsageFlags usage = vk::ImageUsageFlagBits::eColorAttachment |
+                                              vk::ImageUsageFlagBits::eTransientAttachment;
+            hdr_samples.emplace(ctx, vk_core::ImageDesc{size, passes::ForwardPass::kHdrFormat,
+                                                        usage, layers, features.samples});
+            linear_depth_samples.emplace(
+                ctx, vk_core::ImageDesc{size, passes::ForwardPass::kLinearDepthFormat, usage,
+                                        layers, features.samples});
+            depth_samples.emplace(
+                ctx, vk_core::ImageDesc{size, passes::ForwardPass::kDepthFormat,
+                                        vk::ImageUsageFlagBits::eDepthStencilAttachment |
+                                            vk::ImageUsageFlagBits::eTransientAttachment,
+                                        layers, features.samples});
+            multisample.emplace(
+                passes::MultisampleTargets{*hdr_samples, *linear_depth_samples, *depth_samples});
+        }
+    }
+
+    // One layer of `both` (which must outlive it): what an eye's later passes read and write. The
+    // multisampled images are not viewed per layer: only the single pass draws into them.
+    ForwardImages(const vk_core::Context& ctx, const ForwardImages& both, std::uint32_t layer)
+        : hdr(vk_core::Image::layer_of(ctx, both.hdr, layer)),
+          depth(vk_core::Image::layer_of(ctx, both.depth, layer)),
+          linear_depth(vk_core::Image::layer_of(ctx, both.linear_depth, layer)) {
+        if (both.velocity) velocity = vk_core::Image::layer_of(ctx, *both.velocity, layer);
+    }
+
+    ForwardImages(const ForwardImages&) = delete;
+    ForwardImages& operator=(const ForwardImages&) = delete;
+
+    passes::ForwardTargets forward_targets(vk::Extent2D area, bool clear_color = false) const {
+        return {hdr,
+                depth,
+                linear_depth,
+                area,
+                clear_color,
+                velocity ? &*velocity : nullptr,
+                multisample ? &*multisample : nullptr};
+    }
+};
+
+// What a camera owns beyond its forward images: its tone-mapped image, its constants, its
+// read-back buffers and, under TAA, its two history images (this frame's output and the last).
+struct ViewOutputs {
+    vk_core::Image display;
+    vk_core::Buffer constants;
+    vk_core::Buffer readback;
+    vk_core::Buffer depth_readback;
+    std::array<std::optional<vk_core::Image>, 2> history;
+
+    ViewOutputs(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
+        : display(ctx, {size, passes::TonemapPass::kDisplayFormat, kColorTarget}),
+          constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
+                    vk_core::MemoryUse::kHostVisible),
+          readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
+                   vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible),
+          depth_readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
+                         vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {
+        if (!features.history) return;
+        for (auto& image : history) {
+            image.emplace(ctx, vk_core::ImageDesc{size, passes::TaaPass::kOutputFormat,
+                                                  vk::ImageUsageFlagBits::eColorAttachment |
+                                                      vk::ImageUsageFlagBits::eSampled});
+        }
+    }
+};
+
+// The targets and per-frame data of one camera. With single-pass stereo the eyes' forward images
+// are the layers of one set of two-layer images (ModeRenderer::eye_layers_).
+struct ModeRenderer::View : ForwardImages, ViewOutputs {
+    vk::Extent2D extent;                        // the images' size (C: its allocation)
+    vk::Extent2D area;                          // the region drawn (C: its viewport, eq. 8)
+    passes::ViewConstants written_constants{};  // what constants holds this frame
+    vk_core::DescriptorSet forward_set;
+    vk_core::DescriptorSet tonemap_set;
+    RgbaImage image;
+    std::vector<float> linear;
+    // TAA: the sets reading and writing the history images.
+    std::array<vk_core::DescriptorSet, 2> taa_sets;
+    std::array<vk_core::DescriptorSet, 2> tonemap_taa_sets;
+    glm::dmat4 previous_unjittered{1.0};  // last frame's world -> clip without jitter
+    bool has_previous = false;
+    std::unique_ptr<passes::SsaoView> ssao;
+    std::vector<float> ao;
+    EyeFrameGeometry geometry;
+
+    // A camera with forward images of its own (C, and the eyes of two-pass stereo).
+    View(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
+        : ForwardImages(ctx, size, features, 1),
+          ViewOutputs(ctx, size, features),
+          extent(size),
+          area(size) {}
+
+    // An eye: layer `layer` of both eyes' forward images.
+    View(const vk_core::Context& ctx, const ForwardImages& both, std::uint32_t layer,
+         const ViewFeatures& features)
+        : ForwardImages(ctx, both, layer),
+          ViewOutputs(ctx, both.hdr.desc().extent, features),
+          extent(both.hdr.desc().extent),
+          area(extent) {}
+
+    passes::ForwardTargets forward_targets(bool clear_color = false) const {
+        return ForwardImages::forward_targets(area, clear_color);
+    }
+};
+
+struct ModeRenderer::MonoView : View {
+    vk_core::DescriptorSet composite_set;
+    using View::View;
+};
+
+// This frame's decisions and matrices, made before anything is recorded and read by every pass
+// recorder (the plan says which passes run; this says with what).
+struct ModeRenderer::FrameState {
+    const FrameInputs* inputs = nullptr;
+    bool taa = false;
+    bool use_mono = false;  // C is drawn (a hybrid mode with something beyond m - eps)
+    std::optional<FarfieldRig> farfield;
+    glm::dvec2 jitter_px{0.0};
+    glm::dmat4 eye_jitter{1.0};
+    glm::dmat4 mono_jitter{1.0};
+    glm::dmat4 light_view_proj{1.0};
+    bool shadow_needed = false;
+    bool predicated = false;  // GPU predicates (VK_EXT_conditional_rendering)
+    // FrameInputs::mono_culling resolved (kAuto: the chooser's pick for this frame).
+    MonoCulling mono_culling = MonoCulling::kNoOpt;
+    bool measuring_variant = false;  // this frame's time goes to the chooser
+    // Colour images a pass left as attachments that a later pass samples (frame_plan.h's
+    // resource names): transitioned once, before their first reader.
+    std::vector<std::string> attachments_written;
+};
+
+}  // namespace monoplane::modes
