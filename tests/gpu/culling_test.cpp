@@ -758,5 +758,49 @@ TEST_F(Culling, AutoVariantTriesEachVariantAndChangesNoPixel) {
     }
 }
 
+// The depth pre-pass (RendererOptions::depth_prepass) shades each pixel once; it must not change
+// what is shown: the same images on every scene in stereo, hybrid (with C's hidden-pixel mask)
+// and single-pass stereo. The counters show the pre-pass ran: a forward pass then clips its
+// chunks twice.
+TEST_F(Culling, DepthPrepassChangesNoPixel) {
+    const hmd::HmdProfile vive = hmd::load_hmd_profile("vive").value_or_throw();
+    for (scenes::SceneId id :
+         {scenes::SceneId::Beams, scenes::SceneId::Landscape, scenes::SceneId::Spheres}) {
+        const scenes::Scene scene = scenes::generate_scene(id, scenes::Detail::Test);
+        SCOPED_TRACE(scene.name);
+        modes::FrameInputs inputs;
+        inputs.views.head = scene.find_viewpoint("default")->head;
+        inputs.views.ipd = vive.ipd;
+        inputs.views.left = vive.left;
+        inputs.views.right = vive.right;
+        inputs.mono_plane = 8.0;
+        for (const auto& [mode, pass] :
+             {std::pair{Mode::kStereo, modes::StereoPass::kTwoPasses},
+              std::pair{Mode::kHybrid, modes::StereoPass::kTwoPasses},
+              std::pair{Mode::kStereo, modes::StereoPass::kGeometryShader}}) {
+            SCOPED_TRACE(modes::render_mode_name({mode, pass}));
+            modes::RendererOptions options = test_options();
+            options.stereo_pass = pass;
+            modes::ModeRenderer plain(ctx(), scene, mode, kExtent, options);
+            options.depth_prepass = true;
+            modes::ModeRenderer prepassed(ctx(), scene, mode, kExtent, options);
+            const profile::FrameStats without = plain.render_frame(inputs);
+            const profile::FrameStats with = prepassed.render_frame(inputs);
+            for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
+                EXPECT_EQ(
+                    testing::max_channel_difference(plain.eye_image(eye), prepassed.eye_image(eye)),
+                    0)
+                    << modes::eye_name(eye);
+            }
+            if (!statistics()) continue;
+            const char* view = pass == modes::StereoPass::kTwoPasses ? "left" : "eyes";
+            // The sky's full-screen triangle is drawn once; the chunks twice with the pre-pass.
+            const std::uint64_t sky = mode == Mode::kStereo ? 1u : 0u;
+            EXPECT_EQ(view_of(with, view).input_primitives - sky,
+                      2 * (view_of(without, view).input_primitives - sky));
+        }
+    }
+}
+
 }  // namespace
 }  // namespace monoplane
