@@ -12,6 +12,7 @@
 #include "renderer/modes/mode_renderer.h"
 #include "scenes/generate.h"
 #include "tests/gpu/gpu_test.h"
+#include "tests/gpu/profile_inputs.h"
 
 namespace monoplane {
 namespace {
@@ -32,10 +33,8 @@ class AntiAliasingTest : public testing::GpuTest {
     void SetUp() override {
         GpuTest::SetUp();
         scene_ = scenes::generate_scene(scenes::SceneId::Beams, scenes::Detail::Test);
-        inputs_.views.head = scene_.find_viewpoint("default")->head;
-        inputs_.views.ipd = vive_.ipd;
-        inputs_.views.left = vive_.left;
-        inputs_.views.right = vive_.right;
+        inputs_ = testing::profile_inputs(vive_, scene_.find_viewpoint("default")->head,
+                                          inputs_.mono_plane);
     }
 
     modes::RendererOptions options(AntiAliasing aa) const {

@@ -28,6 +28,7 @@
 #include "tests/gpu/frame_checks.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/gpu/hybrid_test_scenes.h"
+#include "tests/gpu/profile_inputs.h"
 
 namespace monoplane {
 namespace {
@@ -314,12 +315,7 @@ TEST_F(Culling, GpuListsEqualTheCpuReference) {
         ASSERT_GE(scene.viewpoints.size(), 4u);
         SCOPED_TRACE(scene.name);
         auto vive_inputs = [&](const rig::Pose& head, double m) {
-            modes::FrameInputs inputs;
-            inputs.views.head = head;
-            inputs.views.ipd = vive.ipd;
-            inputs.views.left = vive.left;
-            inputs.views.right = vive.right;
-            inputs.mono_plane = m;
+            modes::FrameInputs inputs = testing::profile_inputs(vive, head, m);
             inputs.mono_culling = MonoCulling::kNoOpt;  // C's list is its frustum's alone
             return inputs;
         };
@@ -768,12 +764,8 @@ TEST_F(Culling, DepthPrepassChangesNoPixel) {
          {scenes::SceneId::Beams, scenes::SceneId::Landscape, scenes::SceneId::Spheres}) {
         const scenes::Scene scene = scenes::generate_scene(id, scenes::Detail::Test);
         SCOPED_TRACE(scene.name);
-        modes::FrameInputs inputs;
-        inputs.views.head = scene.find_viewpoint("default")->head;
-        inputs.views.ipd = vive.ipd;
-        inputs.views.left = vive.left;
-        inputs.views.right = vive.right;
-        inputs.mono_plane = 8.0;
+        const modes::FrameInputs inputs =
+            testing::profile_inputs(vive, scene.find_viewpoint("default")->head, 8.0);
         for (const auto& [mode, pass] :
              {std::pair{Mode::kStereo, modes::StereoPass::kTwoPasses},
               std::pair{Mode::kHybrid, modes::StereoPass::kTwoPasses},

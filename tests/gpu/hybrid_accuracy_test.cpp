@@ -12,6 +12,7 @@
 #include "tests/gpu/gpu_test.h"
 #include "tests/gpu/hybrid_test_scenes.h"
 #include "tests/gpu/marker_centroid.h"
+#include "tests/gpu/profile_inputs.h"
 
 namespace monoplane {
 namespace {
@@ -20,13 +21,7 @@ using modes::Eye;
 using modes::Mode;
 
 modes::FrameInputs vive_inputs(const hmd::HmdProfile& vive, const rig::Pose& head, double m) {
-    modes::FrameInputs inputs;
-    inputs.views.head = head;
-    inputs.views.ipd = vive.ipd;
-    inputs.views.left = vive.left;
-    inputs.views.right = vive.right;
-    inputs.mono_plane = m;
-    return inputs;
+    return testing::profile_inputs(vive, head, m);
 }
 
 modes::RendererOptions small_options(bool depth = false) {

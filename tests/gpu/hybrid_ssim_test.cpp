@@ -13,6 +13,7 @@
 #include "renderer/quality/ssim.h"
 #include "scenes/generate.h"
 #include "tests/gpu/gpu_test.h"
+#include "tests/gpu/profile_inputs.h"
 
 namespace monoplane {
 namespace {
@@ -38,11 +39,7 @@ TEST_P(HybridSsim, FollowsTheFormalErrorAndIsReported) {
     options.shadow.resolution = 1024;
     modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, extent, options);
     modes::ModeRenderer hybrid(ctx(), scene, modes::Mode::kHybrid, extent, options, 3.0);
-    modes::FrameInputs inputs;
-    inputs.views.head = scene.viewpoints.front().head;
-    inputs.views.ipd = vive.ipd;
-    inputs.views.left = vive.left;
-    inputs.views.right = vive.right;
+    modes::FrameInputs inputs = testing::profile_inputs(vive, scene.viewpoints.front().head);
     stereo.render_frame(inputs);
     const std::filesystem::path out = std::filesystem::current_path() / "hybrid_ssim";
     std::filesystem::create_directories(out);

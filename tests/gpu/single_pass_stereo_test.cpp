@@ -19,6 +19,7 @@
 #include "scenes/generate.h"
 #include "tests/gpu/frame_checks.h"
 #include "tests/gpu/gpu_test.h"
+#include "tests/gpu/profile_inputs.h"
 
 namespace monoplane {
 namespace {
@@ -108,13 +109,7 @@ class SinglePassStereo : public testing::GpuTest {
                                  const std::string& viewpoint = "default") const {
         const scenes::Viewpoint* where = scene.find_viewpoint(viewpoint);
         EXPECT_NE(where, nullptr) << viewpoint;
-        modes::FrameInputs inputs;
-        if (where) inputs.views.head = where->head;
-        inputs.views.ipd = vive_.ipd;
-        inputs.views.left = vive_.left;
-        inputs.views.right = vive_.right;
-        inputs.mono_plane = m;
-        return inputs;
+        return testing::profile_inputs(vive_, where ? where->head : rig::Pose{}, m);
     }
 
     // The same frames drawn with `pass` and with two passes. The single pass's eyes must be lit

@@ -10,6 +10,7 @@
 #include "renderer/quality/stereo_inconsistency.h"
 #include "scenes/generate.h"
 #include "tests/gpu/gpu_test.h"
+#include "tests/gpu/profile_inputs.h"
 
 namespace monoplane {
 namespace {
@@ -47,12 +48,8 @@ class SsaoConsistency : public testing::GpuTest {
         options.read_back_ao = true;
         options.read_back_depth = true;
         modes::ModeRenderer renderer(ctx(), scene, mode, kExtent, options);
-        modes::FrameInputs inputs;
-        inputs.views.head = scene.find_viewpoint("default")->head;
-        inputs.views.ipd = vive_.ipd;
-        inputs.views.left = vive_.left;
-        inputs.views.right = vive_.right;
-        inputs.mono_plane = 8.0;
+        const modes::FrameInputs inputs =
+            testing::profile_inputs(vive_, scene.find_viewpoint("default")->head, 8.0);
         renderer.render_frame(inputs);
         const rig::Pose& head = inputs.views.head;
         const quality::StereoHead stereo_head{
