@@ -32,8 +32,6 @@ const PerDetail<SpheresParameters> kParameters = {{
 }};
 
 const glm::dvec3 kEye{0.0, 1.7, 0.0};
-constexpr float kNearest = kSpheresNearest;  // depths of the nearest and farthest centres
-constexpr float kFarthest = kSpheresFarthest;
 // Half the field of view, as tangents: about 110 degrees across, a little less vertically.
 constexpr float kTanHorizontal = 1.43f;
 constexpr float kTanUp = 0.8f;
@@ -41,18 +39,16 @@ constexpr float kTanDown = 1.0f;
 
 enum Stream : std::uint64_t { kPlacement = 1, kAppearance };
 
-using Ball = PlacedSphere;
-
 // Sphere i's depth, uniform in depth as papers/000 Sect. 6 has it ("geometry which is uniformly
 // distributed across space"): stratified, sphere i in the i-th of count equal depth strata from
-// kNearest to kFarthest, jittered within it, so every seed and detail level keeps the spread.
-// Uniform in metres leaves few spheres in front of the nearest mono planes at low sphere counts
-// (about 0.7 % of them nearer than 1.6 m, one or two at detail test): that is the paper's design,
-// and docs/scenes.md gives the resulting fractions per mono plane.
+// kSpheresNearest to kSpheresFarthest, jittered within it, so every seed and detail level keeps the
+// spread. Uniform in metres leaves few spheres in front of the nearest mono planes at low sphere
+// counts (about 0.7 % of them nearer than 1.6 m, one or two at detail test): that is the paper's
+// design, and docs/scenes.md gives the resulting fractions per mono plane.
 float depth_of(int i, int count, Random& random) {
     const float u =
         (static_cast<float>(i) + random.uniform(0.05f, 0.95f)) / static_cast<float>(count);
-    return kNearest + (kFarthest - kNearest) * u;
+    return kSpheresNearest + (kSpheresFarthest - kSpheresNearest) * u;
 }
 
 // Radius growing with depth, so spheres subtend a similar angle near and far.
@@ -60,9 +56,9 @@ float radius_at(float depth, Random& random) {
     return (0.045f + 0.03f * depth) * random.uniform(0.6f, 1.4f);
 }
 
-std::vector<Ball> place_balls(int count, std::uint64_t seed) {
+std::vector<PlacedSphere> place_balls(int count, std::uint64_t seed) {
     Random random(seed, kPlacement);
-    std::vector<Ball> balls;
+    std::vector<PlacedSphere> balls;
     balls.reserve(static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i) {
         const float depth = depth_of(i, count, random);
@@ -79,7 +75,7 @@ std::vector<Ball> place_balls(int count, std::uint64_t seed) {
             if (centre.y < radius || random.chance(0.2)) centre.y = radius;
             const glm::vec3 eye{kEye};
             if (glm::length(centre - eye) < radius + 0.35f) continue;
-            const bool free = std::none_of(balls.begin(), balls.end(), [&](const Ball& b) {
+            const bool free = std::none_of(balls.begin(), balls.end(), [&](const PlacedSphere& b) {
                 return glm::length(b.centre - centre) < b.radius + radius + 0.02f;
             });
             if (free) {
@@ -112,7 +108,7 @@ Scene generate_spheres(Detail detail, std::uint64_t seed) {
         [&](glm::vec3, glm::vec3) { return lawn; });
 
     Random appearance(seed, kAppearance);
-    for (const Ball& ball : place_balls(parameters.spheres, seed)) {
+    for (const PlacedSphere& ball : place_balls(parameters.spheres, seed)) {
         const float hue = appearance.uniform(0.0f, 1.0f);
         const float saturation = appearance.uniform(0.35f, 0.85f);
         const float value = appearance.uniform(0.55f, 0.95f);

@@ -9,6 +9,17 @@
 namespace monoplane::modes {
 namespace {
 
+using Stage = vk::PipelineStageFlagBits2;
+using Access = vk::AccessFlagBits2;
+
+// A layout transition for a colour image an earlier pass left as an attachment.
+void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image) {
+    vk_core::transition(cmd, image, vk::ImageLayout::eColorAttachmentOptimal,
+                        vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eColorAttachmentOutput,
+                        Access::eColorAttachmentWrite, Stage::eFragmentShader,
+                        Access::eShaderSampledRead);
+}
+
 void copy_to_buffer(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image,
                     vk::Extent2D extent, const vk_core::Buffer& buffer, vk::ImageLayout from) {
     vk_core::transition(cmd, image, from, vk::ImageLayout::eTransferSrcOptimal,
@@ -40,13 +51,6 @@ passes::ForwardStep forward_step(DrawStep step) {
 }
 
 }  // namespace
-
-void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image) {
-    vk_core::transition(cmd, image, vk::ImageLayout::eColorAttachmentOptimal,
-                        vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eColorAttachmentOutput,
-                        Access::eColorAttachmentWrite, Stage::eFragmentShader,
-                        Access::eShaderSampledRead);
-}
 
 const vk_core::Image* ModeRenderer::planned_image(const std::string& resource) const {
     const std::size_t dot = resource.find('.');

@@ -277,6 +277,7 @@ ModeRenderer::FrameState ModeRenderer::prepare_frame(const FrameInputs& inputs) 
 
     build_frame_rig(inputs, frame);
     resolve_variant(inputs, frame);
+    update_plan(inputs, frame);
     update_frame_views(inputs, frame);
     return frame;
 }
@@ -326,9 +327,9 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
     const StereoViewInputs& views = inputs.views;
     const bool use_mono = frame.use_mono;
     const auto& farfield = frame.farfield;
-    // C's work saved by the merged depth pyramid (the plan's rule, renderer/plan/frame_plan.cpp).
-    const bool depth_tested = use_mono && !farfield && frame.mono_culling != MonoCulling::kNoOpt &&
-                              inputs.debug != DebugView::kMonoOnly;
+    // C's work saved by the merged depth pyramid: the plan decides.
+    const PlannedPass* pyramid = last_plan_.find("depth_pyramid");
+    const bool depth_tested = pyramid != nullptr && !pyramid->skipped;
     passes::CullFrame cull;
     const glm::dvec3 mono_in_head = farfield || !use_mono ? glm::dvec3(0.0) : rig_->mono_position;
     const glm::dvec3 mono_position = to_world(views.head, mono_in_head);
@@ -375,8 +376,13 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
             cull.pyramid_mips = pyramid_.mips();
         }
     }
-    // Nearest chunks first (one order for every view: the eyes and C look from the head).
-    cull.draw_order = front_to_back_order(scene_, views.head.position);
+    // Nearest chunks first (one order for every view: the eyes and C look from the head), sorted
+    // again only when the head has moved.
+    if (draw_order_viewer_ != views.head.position) {
+        draw_order_ = front_to_back_order(scene_, views.head.position);
+        draw_order_viewer_ = views.head.position;
+    }
+    cull.draw_order = draw_order_;
     culling_.set_frame(cull);
     if (eye_pair_constants_) {
         // view_block.glsl's views[2]: left, then right (std140 arrays of this struct are packed).
@@ -385,7 +391,7 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
     }
 }
 
-FramePlan ModeRenderer::plan(const FrameInputs& inputs, const FrameState& frame) const {
+void ModeRenderer::update_plan(const FrameInputs& inputs, const FrameState& frame) {
     PlanOptions options;
     options.mode = mode_;
     options.stereo_pass = options_.stereo_pass;
@@ -401,7 +407,12 @@ FramePlan ModeRenderer::plan(const FrameInputs& inputs, const FrameState& frame)
     planned.mono_culling = frame.mono_culling;
     planned.debug = inputs.debug;
     planned.shadow_needed = frame.shadow_needed;
-    return plan_frame(options, planned, PlanDevice{frame.predicated});
+    const PlanDevice device{frame.predicated};
+    // Consecutive frames of one configuration share their plan: make it only when that changes.
+    const PlanInputs key{options, planned, device};
+    if (last_plan_inputs_ == key) return;
+    last_plan_ = plan_frame(options, planned, device);
+    last_plan_inputs_ = key;
 }
 
 profile::FrameStats ModeRenderer::render_frame(
@@ -409,12 +420,13 @@ profile::FrameStats ModeRenderer::render_frame(
     const std::function<void(const vk::raii::CommandBuffer&)>& record_after) {
     const auto cpu_start = std::chrono::steady_clock::now();
     FrameState frame = prepare_frame(inputs);
-    last_plan_ = plan(inputs, frame);
 
     double record_ms = 0.0;
     ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
         profiler_.begin_frame(cmd);
-        for (const PlannedPass* pass : last_plan_.executed()) record_pass(cmd, *pass, frame);
+        for (const PlannedPass& pass : last_plan_.passes) {
+            if (!pass.skipped) record_pass(cmd, pass, frame);
+        }
         record_ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start)
                 .count();

@@ -154,7 +154,8 @@ class ModeRenderer {
     void build_frame_rig(const FrameInputs& inputs, FrameState& frame);
     void resolve_variant(const FrameInputs& inputs, FrameState& frame);
     void update_frame_views(const FrameInputs& inputs, FrameState& frame);
-    FramePlan plan(const FrameInputs& inputs, const FrameState& frame) const;
+    // Makes last_plan_ this frame's plan (kept when nothing it depends on changed).
+    void update_plan(const FrameInputs& inputs, const FrameState& frame);
     // The image a plan resource names, when the executor transitions it (colour images the
     // passes leave as attachments), else nullptr.
     const vk_core::Image* planned_image(const std::string& resource) const;
@@ -205,6 +206,16 @@ class ModeRenderer {
     bool mono_rendered_ = false;
     std::optional<rig::Rig> rig_;
     FramePlan last_plan_;
+    struct PlanInputs {
+        PlanOptions options;
+        PlanFrame frame;
+        PlanDevice device;
+        bool operator==(const PlanInputs&) const = default;
+    };
+    std::optional<PlanInputs> last_plan_inputs_;  // what last_plan_ was made from
+    // The chunks nearest first as seen from draw_order_viewer_ (front_to_back_order).
+    std::vector<std::uint32_t> draw_order_;
+    std::optional<glm::dvec3> draw_order_viewer_;
     // --variant auto: measures the variants on this renderer's frames (reset when m changes).
     VariantChooser variant_chooser_;
     double variant_mono_plane_ = -1.0;

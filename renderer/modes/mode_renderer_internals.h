@@ -12,15 +12,9 @@
 
 namespace monoplane::modes {
 
-using Stage = vk::PipelineStageFlagBits2;
-using Access = vk::AccessFlagBits2;
-
 constexpr vk::ImageUsageFlags kColorTarget = vk::ImageUsageFlagBits::eColorAttachment |
                                              vk::ImageUsageFlagBits::eSampled |
                                              vk::ImageUsageFlagBits::eTransferSrc;
-
-// A layout transition for a colour image an earlier pass left as an attachment.
-void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image);
 
 // What a view's targets must support beyond the basic forward pass.
 struct ViewFeatures {

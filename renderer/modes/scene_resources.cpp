@@ -1,5 +1,6 @@
 #include "renderer/modes/scene_resources.h"
 
+#include <numeric>
 #include <vector>
 
 #include "renderer/passes/culling/chunk_culling_pass.h"
@@ -15,7 +16,7 @@ SceneResources::SceneResources(const vk_core::Context& ctx, const scenes::Scene&
       shadow_(ctx, shadow),
       shadow_draws_(ctx, scene.chunks.size()) {
     std::vector<std::uint32_t> all(scene.chunks.size());
-    for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+    std::iota(all.begin(), all.end(), 0u);
     shadow_draws_.assign(scene, all);
 }
 

@@ -116,6 +116,7 @@ struct PlanOptions {
     bool read_back_depth = false;
     bool read_back_ao = false;
     bool read_back_draw_lists = false;
+    bool operator==(const PlanOptions&) const = default;
 };
 
 // What this frame brings.
@@ -128,10 +129,12 @@ struct PlanFrame {
     DebugView debug = DebugView::kNone;
     // The light's region moved since the shadow map was drawn (or it never was).
     bool shadow_needed = true;
+    bool operator==(const PlanFrame&) const = default;
 };
 
 struct PlanDevice {
     bool conditional_rendering = false;  // VK_EXT_conditional_rendering: GPU predicates
+    bool operator==(const PlanDevice&) const = default;
 };
 
 FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device);

@@ -6,7 +6,9 @@ void write_plan_json(JsonWriter& j, const FramePlan& plan, std::string_view key)
     j.begin_array(key);
     for (const PlannedPass& pass : plan.passes) {
         j.begin_object();
-        j.value("pass", pass.name).value("view", pass.view);
+        j.value("pass", pass.name)
+            .value("kind", pass_kind_name(pass.kind))
+            .value("view", pass.view);
         if (pass.skipped) {
             j.value("skipped", *pass.skipped);
         } else {

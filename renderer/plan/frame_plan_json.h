@@ -1,6 +1,6 @@
 // The executed frame plan as render --json and bench.json report it (DESIGN.md section 8):
-// "plan": [{"pass": name, "view": v, "skipped": reason-or-null, "draws": [...]}, ...], every
-// planned pass in order, skipped ones with their reason.
+// "plan": [{"pass": name, "kind": k, "view": v, "skipped": reason-or-null, "draws": [...]}, ...],
+// every planned pass in order, skipped ones with their reason.
 #pragma once
 
 #include <string_view>

@@ -1,7 +1,6 @@
 #include "renderer/passes/culling/chunk_culling_pass.h"
 
 #include <cstring>
-#include <numeric>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -149,15 +148,11 @@ void ChunkCullingPass::set_frame(const CullFrame& frame) {
         static_cast<float>(frame.mono_viewport.x), static_cast<float>(frame.mono_viewport.y),
         static_cast<float>(frame.hidden_depth_threshold), static_cast<float>(frame.pyramid_mips));
     constants_.write(&c, sizeof(c));
-    std::vector<std::uint32_t> order = frame.draw_order;
-    if (order.empty()) {
-        order.resize(chunk_count_);
-        std::iota(order.begin(), order.end(), 0u);
-    }
-    if (order.size() != chunk_count_) {
+    if (frame.draw_order.size() != chunk_count_) {
         throw std::invalid_argument("CullFrame::draw_order is not a permutation of the chunks");
     }
-    if (!order.empty()) order_.write(order.data(), order.size() * sizeof(std::uint32_t));
+    if (!frame.draw_order.empty())
+        order_.write(frame.draw_order.data(), frame.draw_order.size_bytes());
 }
 
 void ChunkCullingPass::record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const {

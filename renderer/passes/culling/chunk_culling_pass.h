@@ -8,6 +8,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/ext/matrix_double4x4.hpp>
@@ -36,8 +37,8 @@ struct CullFrame {
     double hidden_depth_threshold = 0.0;  // the eyes' reversed-Z depth of m - eps
     std::uint32_t pyramid_mips = 1;
     // The order in which the chunks are walked and their draws listed: a permutation of the
-    // chunk indices (front_to_back_order), or empty for chunk order.
-    std::vector<std::uint32_t> draw_order;
+    // chunk indices (front_to_back_order); the caller keeps it alive until set_frame returns.
+    std::span<const std::uint32_t> draw_order;
 };
 
 class ChunkCullingPass {

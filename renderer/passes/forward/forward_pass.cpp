@@ -209,7 +209,8 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& confi
     geometry.samples = config.samples;
     geometry.view_mask = view_mask;
     // Each chunk pipeline twice: testing and writing depth, and after a depth pre-pass, testing
-    // for the depth the pre-pass left (the same vertex shader, invariant gl_Position).
+    // for the depth the pre-pass left (the same vertex shader, whose `precise` product rounds
+    // alike in both pipelines).
     auto make_chunk_pipelines = [&](vk::raii::Pipeline& first, vk::raii::Pipeline& after_prepass) {
         geometry.depth_write = true;
         geometry.depth_compare = vk::CompareOp::eGreaterOrEqual;
