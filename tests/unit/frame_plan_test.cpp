@@ -4,14 +4,17 @@
 // written by an earlier pass of the same frame, over every combination of options. No GPU.
 //
 // MONOPLANE_PRINT_PLANS=1 build/tests/unit/frame_plan_test --gtest_filter='FramePlanPrint.*'
+// prints the plans docs/architecture.md shows (and the test checks the page shows them).
 // prints the plans that docs/architecture.md shows.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdlib>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -693,8 +696,8 @@ TEST(FramePlan, NamesOfKindsPredicatesAndStepsAreNonEmptyAndDistinct) {
 
 // The plan as docs/architecture.md shows it: one line a pass, its view, its predicate, its draws
 // (with theirs) or why the frame leaves it out.
-void print_plan(const std::string& title, const FramePlan& plan) {
-    std::cout << "# " << title << "\n";
+std::string plan_text(const FramePlan& plan) {
+    std::string out;
     for (const PlannedPass& pass : plan.passes) {
         std::ostringstream line;
         line << "  " << std::left << std::setw(18) << pass.name << std::setw(7)
@@ -719,28 +722,44 @@ void print_plan(const std::string& title, const FramePlan& plan) {
         }
         std::string text = line.str();
         text.erase(text.find_last_not_of(' ') + 1);
-        std::cout << text << "\n";
+        out += text + "\n";
     }
-    std::cout << "\n";
+    return out;
 }
 
-TEST(FramePlanPrint, PrintsThePlansWhenAsked) {
-    if (std::getenv("MONOPLANE_PRINT_PLANS") == nullptr) return;
+// docs/architecture.md prints these plans as this code makes them: each block must stand there
+// verbatim (a changed rule makes the page stale, and this test says so). With
+// MONOPLANE_PRINT_PLANS set the blocks are printed, to paste into the page.
+TEST(FramePlanPrint, ArchitecturePageShowsThePlansAsTheCodeMakesThem) {
     const PlanDevice conditional{true};
-    print_plan("stereo", plan_frame(options_for(Mode::kStereo), PlanFrame{}, conditional));
-    print_plan("stereo-gs", plan_frame(options_for(Mode::kStereo, StereoPass::kGeometryShader),
-                                       PlanFrame{}, conditional));
-    print_plan("hybrid, m = 8, occlusion-cull, conditional rendering",
-               plan_frame(options_for(Mode::kHybrid), frame_with(false), conditional));
-    print_plan("hybrid, m = far (mono_skipped)",
-               plan_frame(options_for(Mode::kHybrid), frame_with(true), conditional));
     PlanOptions post = options_for(Mode::kHybrid);
     post.anti_aliasing = AntiAliasing::kTaa;
     post.ssao = true;
-    print_plan("hybrid, m = 8, occlusion-cull, TAA + SSAO, conditional rendering",
-               plan_frame(post, frame_with(false), conditional));
-    print_plan("hybrid-farfield, m = 8, conditional rendering",
-               plan_frame(options_for(Mode::kHybridFarfield), frame_with(false), conditional));
+    const std::vector<std::pair<std::string, FramePlan>> plans = {
+        {"stereo", plan_frame(options_for(Mode::kStereo), PlanFrame{}, conditional)},
+        {"stereo-gs", plan_frame(options_for(Mode::kStereo, StereoPass::kGeometryShader),
+                                 PlanFrame{}, conditional)},
+        {"hybrid, m = 8, occlusion-cull, conditional rendering",
+         plan_frame(options_for(Mode::kHybrid), frame_with(false), conditional)},
+        {"hybrid, m = far (mono_skipped)",
+         plan_frame(options_for(Mode::kHybrid), frame_with(true), conditional)},
+        {"hybrid, m = 8, occlusion-cull, TAA + SSAO, conditional rendering",
+         plan_frame(post, frame_with(false), conditional)},
+        {"hybrid-farfield, m = 8, conditional rendering",
+         plan_frame(options_for(Mode::kHybridFarfield), frame_with(false), conditional)},
+    };
+    std::ifstream file(MONOPLANE_ARCHITECTURE_PAGE);
+    ASSERT_TRUE(file) << MONOPLANE_ARCHITECTURE_PAGE;
+    const std::string page((std::istreambuf_iterator<char>(file)),
+                           std::istreambuf_iterator<char>());
+    const bool print = std::getenv("MONOPLANE_PRINT_PLANS") != nullptr;
+    for (const auto& [title, plan] : plans) {
+        const std::string text = plan_text(plan);
+        if (print) std::cout << "# " << title << "\n" << text << "\n";
+        EXPECT_NE(page.find("```text\n" + text + "```"), std::string::npos)
+            << title << ": docs/architecture.md does not show this plan:\n"
+            << text;
+    }
 }
 
 }  // namespace
