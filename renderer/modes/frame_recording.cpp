@@ -279,7 +279,7 @@ void ModeRenderer::record_readback(const vk::raii::CommandBuffer& cmd, const Fra
         copy_to_buffer(cmd, mono_->display, mono_->area, mono_->readback,
                        vk::ImageLayout::eColorAttachmentOptimal);
     }
-    culling_.record_readback(cmd, options_.read_back_draw_lists);
+    culling_.record_readback(cmd, options_.read_back_draw_lists, frame.slot);
 }
 
 void ModeRenderer::record_taa(const vk::raii::CommandBuffer& cmd, View& view) {

@@ -110,7 +110,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       culling_(ctx, scene_, resources_->chunk_table()),
       pyramid_(ctx),
       taa_(ctx),
-      profiler_(ctx) {
+      profiler_(ctx),
+      ring_(ctx) {
     if (options.ssao) ssao_ = std::make_unique<passes::SsaoPass>(ctx, options.ssao_params);
     merged_depth_set_ = forward_.make_merged_depth_set();
     const bool taa = options.anti_aliasing == AntiAliasing::kTaa;
@@ -126,7 +127,7 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
                                        options.vertex_work});
         eye_pair_constants_.emplace(ctx, 2 * sizeof(passes::ViewConstants),
                                     vk::BufferUsageFlagBits::eUniformBuffer,
-                                    vk_core::MemoryUse::kHostVisible);
+                                    vk_core::MemoryUse::kDeviceLocal);
         eye_pair_set_ = eyes_forward_->make_view_set(
             *eye_pair_constants_, resources_->shadow().view(), resources_->shadow().sampler());
     }
@@ -156,7 +157,10 @@ void ModeRenderer::make_taa_sets(View& view) const {
 }
 
 void ModeRenderer::ensure_pyramid() {
-    if (!pyramid_.resize(mono_->extent)) return;
+    if (pyramid_.fits(mono_->extent)) return;
+    // The old pyramid and the sets naming it may be in use by a frame in flight.
+    drain_frames();
+    pyramid_.resize(mono_->extent);
     pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
     forward_.write_merged_depth(merged_depth_set_, pyramid_.view(), pyramid_.sampler(),
@@ -169,7 +173,10 @@ void ModeRenderer::make_view_sets(View& view) const {
     view.tonemap_set = tonemap_.make_input(view.hdr);
 }
 
-ModeRenderer::~ModeRenderer() = default;
+ModeRenderer::~ModeRenderer() {
+    // Nothing a submitted frame uses may go before it has completed.
+    ring_.wait_all();
+}
 
 void ModeRenderer::ensure_mono_view(int width, int height) {
     const vk::Extent2D needed(static_cast<std::uint32_t>(width),
@@ -177,7 +184,9 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     if (mono_ && mono_->extent.width >= needed.width && mono_->extent.height >= needed.height) {
         return;
     }
-    // Allocated once for the nearest m in normal use (eq. 8); grown only if a frame needs more.
+    // Allocated once for the nearest m in normal use (eq. 8); grown only if a frame needs more,
+    // after the frames in flight that use the old images.
+    drain_frames();
     mono_.reset();
     const bool taa = options_.anti_aliasing == AntiAliasing::kTaa;
     mono_ = std::make_unique<MonoView>(ctx_, needed, ViewFeatures{taa, false});
@@ -215,7 +224,7 @@ void ModeRenderer::update_view(View& view, const glm::dmat4& view_proj,
     // A restarted history has no previous frame: zero velocity.
     const bool continues = history_valid_ && view.has_previous;
     c.prev_view_proj = glm::mat4(continues ? view.previous_unjittered : unjittered);
-    view.constants.write(&c, sizeof(c));
+    uploads_.stage(view.constants, &c, sizeof(c));
     view.written_constants = c;
     view.previous_unjittered = unjittered;
     view.has_previous = true;
@@ -383,11 +392,11 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
         draw_order_viewer_ = views.head.position;
     }
     cull.draw_order = draw_order_;
-    culling_.set_frame(cull);
+    culling_.set_frame(cull, uploads_);
     if (eye_pair_constants_) {
         // view_block.glsl's views[2]: left, then right (std140 arrays of this struct are packed).
         const std::array pair = {eyes_[0]->written_constants, eyes_[1]->written_constants};
-        eye_pair_constants_->write(pair.data(), sizeof(pair));
+        uploads_.stage(*eye_pair_constants_, pair.data(), sizeof(pair));
     }
 }
 
@@ -415,35 +424,74 @@ void ModeRenderer::update_plan(const FrameInputs& inputs, const FrameState& fram
     last_plan_inputs_ = key;
 }
 
-profile::FrameStats ModeRenderer::render_frame(
+void ModeRenderer::submit_frame(
     const FrameInputs& inputs,
     const std::function<void(const vk::raii::CommandBuffer&)>& record_after) {
+    // The slot's previous frame first: its results, then its command buffer, are reused.
+    complete_frame(ring_.next_slot());
     const auto cpu_start = std::chrono::steady_clock::now();
     FrameState frame = prepare_frame(inputs);
-
-    double record_ms = 0.0;
-    ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-        profiler_.begin_frame(cmd);
-        for (const PlannedPass& pass : last_plan_.passes) {
-            if (!pass.skipped) record_pass(cmd, pass, frame);
-        }
-        record_ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start)
-                .count();
-        if (record_after) record_after(cmd);
-    });
+    frame.slot = ring_.begin();
+    const vk::raii::CommandBuffer& cmd = ring_.commands(frame.slot);
+    uploads_.record(cmd);
+    profiler_.begin_frame(cmd, frame.slot);
+    for (const PlannedPass& pass : last_plan_.passes) {
+        if (!pass.skipped) record_pass(cmd, pass, frame);
+    }
+    const double record_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start)
+            .count();
+    if (record_after) record_after(cmd);
+    ring_.submit(frame.slot);
+    pending_[frame.slot] = PendingFrame{record_ms, frame.measuring_variant};
     mono_rendered_ = frame.use_mono && options_.read_back;
     if (frame.taa) history_parity_ = 1 - history_parity_;
     last_variant_ = frame.mono_culling;
-    profile::FrameStats stats = collect_frame(record_ms, frame.use_mono);
-    if (frame.measuring_variant) variant_chooser_.record(stats.gpu_frame_ms);
-    return stats;
+    last_slot_ = frame.slot;
+    // --variant auto times each frame before it picks the next frame's variant.
+    if (frame.measuring_variant) drain_frames();
 }
 
-profile::FrameStats ModeRenderer::collect_frame(double record_ms, bool use_mono) {
-    profile::FrameStats stats = profiler_.collect();
+void ModeRenderer::complete_frame(std::uint32_t slot) {
+    if (!ring_.in_flight(slot)) return;
+    ring_.wait(slot);
+    const PendingFrame pending = *pending_[slot];
+    pending_[slot].reset();
+    profile::FrameStats stats = collect_frame(slot, pending.record_ms);
+    if (pending.measuring_variant) variant_chooser_.record(stats.gpu_frame_ms);
+    completed_.push_back(std::move(stats));
+}
+
+void ModeRenderer::drain_frames() {
+    // Oldest first: the ring's next slot holds the oldest frame of a full ring.
+    for (std::uint32_t i = 0; i < vk_core::FrameRing::kFramesInFlight; ++i) {
+        complete_frame((ring_.next_slot() + i) % vk_core::FrameRing::kFramesInFlight);
+    }
+}
+
+std::vector<profile::FrameStats> ModeRenderer::take_completed() {
+    std::vector<profile::FrameStats> taken = std::move(completed_);
+    completed_.clear();
+    return taken;
+}
+
+std::vector<profile::FrameStats> ModeRenderer::finish_frames() {
+    drain_frames();
+    read_back_last_frame();
+    return take_completed();
+}
+
+profile::FrameStats ModeRenderer::render_frame(
+    const FrameInputs& inputs,
+    const std::function<void(const vk::raii::CommandBuffer&)>& record_after) {
+    submit_frame(inputs, record_after);
+    return finish_frames().back();
+}
+
+profile::FrameStats ModeRenderer::collect_frame(std::uint32_t slot, double record_ms) const {
+    profile::FrameStats stats = profiler_.collect(slot);
     stats.cpu_record_ms = record_ms;
-    const auto counts = culling_.counts();
+    const auto counts = culling_.counts(slot);
     for (profile::ViewStatistics& view : stats.views) {
         if (view.view == "left") view.draws = counts[MONOPLANE_COUNT_LEFT];
         if (view.view == "right") view.draws = counts[MONOPLANE_COUNT_RIGHT];
@@ -453,6 +501,11 @@ profile::FrameStats ModeRenderer::collect_frame(double record_ms, bool use_mono)
             view.draws_before_occlusion_culling = counts[MONOPLANE_COUNT_MONO_CANDIDATES];
         }
     }
+    return stats;
+}
+
+void ModeRenderer::read_back_last_frame() {
+    // One read-back buffer per view for every slot: after a drain it holds the last frame's.
     auto read_image = [](const View& view, vk::Extent2D extent, RgbaImage& image) {
         image.width = extent.width;
         image.height = extent.height;
@@ -461,7 +514,7 @@ profile::FrameStats ModeRenderer::collect_frame(double record_ms, bool use_mono)
     };
     if (options_.read_back) {
         for (auto& eye : eyes_) read_image(*eye, eye->extent, eye->image);
-        if (use_mono) read_image(*mono_, mono_->area, mono_->image);
+        if (mono_rendered_) read_image(*mono_, mono_->area, mono_->image);
     }
     if (options_.read_back_ao) {
         for (auto& eye : eyes_) eye->ao = eye->ssao->ao_values();
@@ -473,13 +526,12 @@ profile::FrameStats ModeRenderer::collect_frame(double record_ms, bool use_mono)
                                values + std::size_t{eye->extent.width} * eye->extent.height);
         }
     }
-    return stats;
 }
 
 std::vector<std::uint32_t> ModeRenderer::drawn_chunks(passes::CullView view) const {
     // Without the option the lists were never copied to the host: nothing to report.
     if (!options_.read_back_draw_lists) return {};
-    return culling_.drawn_chunks(view);
+    return culling_.drawn_chunks(view, last_slot_);
 }
 
 const vk_core::Image& ModeRenderer::display_image(Eye eye) const {

@@ -31,6 +31,8 @@
 #include "renderer/plan/variant_chooser.h"
 #include "renderer/profile/frame_profiler.h"
 #include "renderer/rig/rig.h"
+#include "renderer/vk/frame_ring.h"
+#include "renderer/vk/frame_uploads.h"
 
 namespace monoplane::modes {
 
@@ -91,9 +93,21 @@ class ModeRenderer {
                  double nearest_mono_plane = 0.0);
     ~ModeRenderer();
 
-    // Renders one frame and waits for it. Fails (UserError) for inputs the rig refuses.
-    // record_after: commands recorded after the frame's last pass into the same submission
-    // (a headset's swapchain copies), so a frame costs one submission and one wait; not timed.
+    // Frames in flight (vk_core::FrameRing, two): records and submits a frame without waiting
+    // for the GPU, after collecting the frame that last used the slot (waiting for it only if it
+    // has not completed). Fails (UserError) for inputs the rig refuses. record_after: commands
+    // recorded after the frame's last pass into the same submission (a headset's swapchain
+    // copies), not timed. With --variant auto (kAuto) each frame is waited for: its GPU time
+    // chooses the next frame's variant.
+    void submit_frame(const FrameInputs& inputs,
+                      const std::function<void(const vk::raii::CommandBuffer&)>& record_after = {});
+    // The statistics of the frames that completed since the last call, oldest first; waits for
+    // none.
+    std::vector<profile::FrameStats> take_completed();
+    // Waits for every submitted frame; take_completed() then. The read-backs (eye_image, ...)
+    // hold the last submitted frame's once it returns, and only then.
+    std::vector<profile::FrameStats> finish_frames();
+    // submit_frame and finish_frames: one frame, waited for, and its statistics.
     profile::FrameStats render_frame(
         const FrameInputs& inputs,
         const std::function<void(const vk::raii::CommandBuffer&)>& record_after = {});
@@ -174,8 +188,14 @@ class ModeRenderer {
     void record_tonemap(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
                         const FrameState& frame);
     void record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame);
-    // The submitted frame's statistics and read-backs.
-    profile::FrameStats collect_frame(double record_ms, bool use_mono);
+    // Waits for the slot's frame (if one is in flight) and queues its statistics.
+    void complete_frame(std::uint32_t slot);
+    // complete_frame for every slot, oldest first: nothing of this renderer is in flight.
+    void drain_frames();
+    // A completed frame's statistics (the slot's queries and counts).
+    profile::FrameStats collect_frame(std::uint32_t slot, double record_ms) const;
+    // The read-back buffers to the host images, after a drain.
+    void read_back_last_frame();
     // Whether the scene's routing flags may be honoured this frame (scenes::ChunkRouting).
     void decide_routing(const FrameInputs& inputs, passes::CullFrame& cull) const;
 
@@ -225,6 +245,18 @@ class ModeRenderer {
     int history_parity_ = 0;
     bool history_valid_ = false;
     double history_mono_plane_ = -1.0;
+    // Frames in flight: what the host fills for the next frame, what each submitted frame needs
+    // at completion, the statistics completed and not yet taken.
+    vk_core::FrameUploads uploads_;
+    struct PendingFrame {
+        double record_ms = 0.0;
+        bool measuring_variant = false;
+    };
+    std::array<std::optional<PendingFrame>, vk_core::FrameRing::kFramesInFlight> pending_;
+    std::vector<profile::FrameStats> completed_;
+    std::uint32_t last_slot_ = 0;  // the slot of the last submitted frame
+    // Last: destroyed first, it waits for the frames in flight before anything they use goes.
+    vk_core::FrameRing ring_;
 };
 
 }  // namespace monoplane::modes

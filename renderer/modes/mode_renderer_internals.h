@@ -105,8 +105,9 @@ struct ViewOutputs {
 
     ViewOutputs(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
         : display(ctx, {size, passes::TonemapPass::kDisplayFormat, kColorTarget}),
+          // Filled through the frame's uploads (vk_core::FrameUploads), not a mapping.
           constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
-                    vk_core::MemoryUse::kHostVisible),
+                    vk_core::MemoryUse::kDeviceLocal),
           readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
                    vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible),
           depth_readback(ctx, vk::DeviceSize{size.width} * size.height * 4,
@@ -125,7 +126,7 @@ struct ViewOutputs {
 struct ModeRenderer::View : ForwardImages, ViewOutputs {
     vk::Extent2D extent;                        // the images' size (C: its allocation)
     vk::Extent2D area;                          // the region drawn (C: its viewport, eq. 8)
-    passes::ViewConstants written_constants{};  // what constants holds this frame
+    passes::ViewConstants written_constants{};  // what this frame's constants hold
     vk_core::DescriptorSet forward_set;
     vk_core::DescriptorSet tonemap_set;
     RgbaImage image;
@@ -180,6 +181,7 @@ struct ModeRenderer::FrameState {
     // FrameInputs::mono_culling resolved (kAuto: the chooser's pick for this frame).
     MonoCulling mono_culling = MonoCulling::kNoOpt;
     bool measuring_variant = false;  // this frame's time goes to the chooser
+    std::uint32_t slot = 0;          // the frame-in-flight slot it is recorded into
     // Colour images a pass left as attachments that a later pass samples (frame_plan.h's
     // resource names): transitioned once, before their first reader.
     std::vector<std::string> attachments_written;

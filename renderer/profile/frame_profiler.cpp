@@ -26,65 +26,72 @@ constexpr std::array<Counter, 7> kCounters = {{
 
 }  // namespace
 
-FrameProfiler::FrameProfiler(const vk_core::Context& ctx) : ctx_(ctx) {
-    timestamps_ = vk::raii::QueryPool(
-        ctx.device(), vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2 * kMaxPasses));
+FrameProfiler::FrameProfiler(const vk_core::Context& ctx, std::uint32_t slots)
+    : ctx_(ctx), slots_(slots) {
+    vk::QueryPipelineStatisticFlags flags;
     if (ctx.capabilities().pipeline_statistics) {
-        vk::QueryPipelineStatisticFlags flags;
         for (const Counter& counter : kCounters) {
             if (counter.needs_geometry_shader && !ctx.capabilities().geometry_shader) continue;
             flags |= counter.flag;
             counter_fields_.push_back(counter.field);
         }
-        statistics_ = vk::raii::QueryPool(
+    }
+    for (Slot& slot : slots_) {
+        slot.timestamps = vk::raii::QueryPool(
+            ctx.device(), vk::QueryPoolCreateInfo({}, vk::QueryType::eTimestamp, 2 * kMaxPasses));
+        if (!ctx.capabilities().pipeline_statistics) continue;
+        slot.statistics = vk::raii::QueryPool(
             ctx.device(),
             vk::QueryPoolCreateInfo({}, vk::QueryType::ePipelineStatistics, kMaxViews, flags));
     }
 }
 
-void FrameProfiler::begin_frame(const vk::raii::CommandBuffer& cmd) {
-    pass_names_.clear();
-    view_names_.clear();
-    cmd.resetQueryPool(*timestamps_, 0, 2 * kMaxPasses);
-    if (*statistics_) cmd.resetQueryPool(*statistics_, 0, kMaxViews);
+void FrameProfiler::begin_frame(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) {
+    assert(slot < slots_.size());
+    recording_ = &slots_[slot];
+    recording_->pass_names.clear();
+    recording_->view_names.clear();
+    cmd.resetQueryPool(*recording_->timestamps, 0, 2 * kMaxPasses);
+    if (*recording_->statistics) cmd.resetQueryPool(*recording_->statistics, 0, kMaxViews);
 }
 
 void FrameProfiler::begin_pass(const vk::raii::CommandBuffer& cmd, const std::string& name) {
-    assert(!pass_open_ && pass_names_.size() < kMaxPasses);
-    const auto index = static_cast<std::uint32_t>(2 * pass_names_.size());
-    cmd.writeTimestamp2(vk::PipelineStageFlagBits2::eTopOfPipe, *timestamps_, index);
-    pass_names_.push_back(name);
+    assert(recording_ && !pass_open_ && recording_->pass_names.size() < kMaxPasses);
+    const auto index = static_cast<std::uint32_t>(2 * recording_->pass_names.size());
+    cmd.writeTimestamp2(vk::PipelineStageFlagBits2::eTopOfPipe, *recording_->timestamps, index);
+    recording_->pass_names.push_back(name);
     pass_open_ = true;
 }
 
 void FrameProfiler::end_pass(const vk::raii::CommandBuffer& cmd) {
     assert(pass_open_);
-    const auto index = static_cast<std::uint32_t>(2 * pass_names_.size() - 1);
-    cmd.writeTimestamp2(vk::PipelineStageFlagBits2::eBottomOfPipe, *timestamps_, index);
+    const auto index = static_cast<std::uint32_t>(2 * recording_->pass_names.size() - 1);
+    cmd.writeTimestamp2(vk::PipelineStageFlagBits2::eBottomOfPipe, *recording_->timestamps, index);
     pass_open_ = false;
 }
 
 void FrameProfiler::begin_view(const vk::raii::CommandBuffer& cmd, const std::string& view) {
-    assert(!view_open_ && view_names_.size() < kMaxViews);
-    view_names_.push_back(view);
+    assert(recording_ && !view_open_ && recording_->view_names.size() < kMaxViews);
+    recording_->view_names.push_back(view);
     view_open_ = true;
-    if (*statistics_)
-        cmd.beginQuery(*statistics_, static_cast<std::uint32_t>(view_names_.size() - 1), {});
+    const auto index = static_cast<std::uint32_t>(recording_->view_names.size() - 1);
+    if (*recording_->statistics) cmd.beginQuery(*recording_->statistics, index, {});
 }
 
 void FrameProfiler::end_view(const vk::raii::CommandBuffer& cmd) {
     assert(view_open_);
     view_open_ = false;
-    if (*statistics_)
-        cmd.endQuery(*statistics_, static_cast<std::uint32_t>(view_names_.size() - 1));
+    const auto index = static_cast<std::uint32_t>(recording_->view_names.size() - 1);
+    if (*recording_->statistics) cmd.endQuery(*recording_->statistics, index);
 }
 
-FrameStats FrameProfiler::collect() const {
-    assert(!pass_open_ && !view_open_);
+FrameStats FrameProfiler::collect(std::uint32_t slot_index) const {
+    assert(!pass_open_ && !view_open_ && slot_index < slots_.size());
+    const Slot& slot = slots_[slot_index];
     FrameStats stats;
-    if (!pass_names_.empty()) {
-        const auto count = static_cast<std::uint32_t>(2 * pass_names_.size());
-        const auto [result, ticks] = timestamps_.getResults<std::uint64_t>(
+    if (!slot.pass_names.empty()) {
+        const auto count = static_cast<std::uint32_t>(2 * slot.pass_names.size());
+        const auto [result, ticks] = slot.timestamps.getResults<std::uint64_t>(
             0, count, count * sizeof(std::uint64_t), sizeof(std::uint64_t),
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
         assert(result == vk::Result::eSuccess);
@@ -94,22 +101,23 @@ FrameStats FrameProfiler::collect() const {
         auto elapsed_ms = [&](std::uint64_t begin, std::uint64_t end) {
             return static_cast<double>((end - begin) & mask) * ms_per_tick;
         };
-        for (std::size_t i = 0; i < pass_names_.size(); ++i) {
-            stats.passes.push_back({pass_names_[i], elapsed_ms(ticks[2 * i], ticks[2 * i + 1])});
+        for (std::size_t i = 0; i < slot.pass_names.size(); ++i) {
+            stats.passes.push_back(
+                {slot.pass_names[i], elapsed_ms(ticks[2 * i], ticks[2 * i + 1])});
         }
         stats.gpu_frame_ms = elapsed_ms(ticks.front(), ticks.back());
     }
-    if (*statistics_ && !view_names_.empty()) {
+    if (*slot.statistics && !slot.view_names.empty()) {
         const std::size_t per_view = counter_fields_.size();
-        const auto count = static_cast<std::uint32_t>(view_names_.size());
+        const auto count = static_cast<std::uint32_t>(slot.view_names.size());
         const std::size_t stride = per_view * sizeof(std::uint64_t);
-        const auto [result, values] = statistics_.getResults<std::uint64_t>(
+        const auto [result, values] = slot.statistics.getResults<std::uint64_t>(
             0, count, count * stride, stride,
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
         assert(result == vk::Result::eSuccess);
-        for (std::size_t i = 0; i < view_names_.size(); ++i) {
+        for (std::size_t i = 0; i < slot.view_names.size(); ++i) {
             ViewStatistics view;
-            view.view = view_names_[i];
+            view.view = slot.view_names[i];
             for (std::size_t k = 0; k < per_view; ++k) {
                 view.*counter_fields_[k] = values[i * per_view + k];
             }

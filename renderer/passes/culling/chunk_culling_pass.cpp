@@ -1,5 +1,7 @@
 #include "renderer/passes/culling/chunk_culling_pass.h"
 
+#include <algorithm>
+
 #include <cstring>
 #include <stdexcept>
 
@@ -69,14 +71,16 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
       routing_(ctx, vk::DeviceSize{std::max(chunk_count_, 1u)} * sizeof(std::uint32_t),
                vk::BufferUsageFlagBits::eStorageBuffer, vk_core::MemoryUse::kDeviceLocal),
       order_(ctx, vk::DeviceSize{std::max(chunk_count_, 1u)} * sizeof(std::uint32_t),
-             vk::BufferUsageFlagBits::eStorageBuffer, vk_core::MemoryUse::kHostVisible),
+             vk::BufferUsageFlagBits::eStorageBuffer, vk_core::MemoryUse::kDeviceLocal),
       constants_(ctx, sizeof(CullConstants), vk::BufferUsageFlagBits::eUniformBuffer,
-                 vk_core::MemoryUse::kHostVisible),
-      counts_readback_(ctx, counts_.size(), vk::BufferUsageFlagBits::eTransferDst,
-                       vk_core::MemoryUse::kHostVisible),
+                 vk_core::MemoryUse::kDeviceLocal),
       commands_readback_(ctx, commands_.size(), vk::BufferUsageFlagBits::eTransferDst,
                          vk_core::MemoryUse::kHostVisible),
       ctx_(ctx) {
+    for (vk_core::Buffer& readback : counts_readback_) {
+        readback = vk_core::Buffer(ctx, counts_.size(), vk::BufferUsageFlagBits::eTransferDst,
+                                   vk_core::MemoryUse::kHostVisible);
+    }
     using Type = vk::DescriptorType;
     const auto compute = vk::ShaderStageFlagBits::eCompute;
     const std::array bindings = {
@@ -129,7 +133,7 @@ void ChunkCullingPass::set_merged_depth(vk::ImageView pyramid, vk::Sampler neare
     ctx_.device().updateDescriptorSets(write, {});
 }
 
-void ChunkCullingPass::set_frame(const CullFrame& frame) {
+void ChunkCullingPass::set_frame(const CullFrame& frame, vk_core::FrameUploads& uploads) {
     CullConstants c{};
     std::uint32_t views = 0;
     for (std::uint32_t v = 0; v < MONOPLANE_CULL_VIEWS; ++v) {
@@ -147,12 +151,16 @@ void ChunkCullingPass::set_frame(const CullFrame& frame) {
     c.occlusion = glm::vec4(
         static_cast<float>(frame.mono_viewport.x), static_cast<float>(frame.mono_viewport.y),
         static_cast<float>(frame.hidden_depth_threshold), static_cast<float>(frame.pyramid_mips));
-    constants_.write(&c, sizeof(c));
+    uploads.stage(constants_, &c, sizeof(c));
     if (frame.draw_order.size() != chunk_count_) {
         throw std::invalid_argument("CullFrame::draw_order is not a permutation of the chunks");
     }
-    if (!frame.draw_order.empty())
-        order_.write(frame.draw_order.data(), frame.draw_order.size_bytes());
+    // The order changes only when the viewer moves; the buffer keeps it between frames.
+    if (!frame.draw_order.empty() && !std::equal(frame.draw_order.begin(), frame.draw_order.end(),
+                                                 staged_order_.begin(), staged_order_.end())) {
+        uploads.stage(order_, frame.draw_order.data(), frame.draw_order.size_bytes());
+        staged_order_.assign(frame.draw_order.begin(), frame.draw_order.end());
+    }
 }
 
 void ChunkCullingPass::record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const {
@@ -179,12 +187,13 @@ void ChunkCullingPass::record_occlusion_phase(const vk::raii::CommandBuffer& cmd
     record_phase(cmd, 1);
 }
 
-void ChunkCullingPass::record_readback(const vk::raii::CommandBuffer& cmd, bool lists) const {
+void ChunkCullingPass::record_readback(const vk::raii::CommandBuffer& cmd, bool lists,
+                                       std::uint32_t slot) const {
     const vk::MemoryBarrier2 barrier(
         Stage::eComputeShader | Stage::eDrawIndirect | Stage::eConditionalRenderingEXT,
         Access::eShaderStorageWrite, Stage::eTransfer, Access::eTransferRead);
     cmd.pipelineBarrier2(vk::DependencyInfo({}, barrier));
-    cmd.copyBuffer(counts_.handle(), counts_readback_.handle(),
+    cmd.copyBuffer(counts_.handle(), counts_readback_.at(slot).handle(),
                    vk::BufferCopy(0, 0, counts_.size()));
     if (lists) {
         cmd.copyBuffer(commands_.handle(), commands_readback_.handle(),
@@ -207,15 +216,16 @@ Predicate ChunkCullingPass::predicate(std::uint32_t word, bool inverted) const {
     return {counts_.handle(), vk::DeviceSize{word} * sizeof(std::uint32_t), inverted};
 }
 
-std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> ChunkCullingPass::counts() const {
+std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> ChunkCullingPass::counts(
+    std::uint32_t slot) const {
     std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> values{};
-    std::memcpy(values.data(), counts_readback_.mapped(), sizeof(values));
+    std::memcpy(values.data(), counts_readback_.at(slot).mapped(), sizeof(values));
     return values;
 }
 
-std::vector<std::uint32_t> ChunkCullingPass::drawn_chunks(CullView view) const {
+std::vector<std::uint32_t> ChunkCullingPass::drawn_chunks(CullView view, std::uint32_t slot) const {
     const auto v = static_cast<std::uint32_t>(view);
-    const std::uint32_t count = counts()[v];
+    const std::uint32_t count = counts(slot)[v];
     const auto* commands =
         reinterpret_cast<const vk::DrawIndexedIndirectCommand*>(commands_readback_.mapped()) +
         std::size_t{v} * chunk_count_;

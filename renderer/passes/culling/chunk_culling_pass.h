@@ -16,6 +16,8 @@
 #include "renderer/passes/culling/cull_constants.h"
 #include "renderer/passes/shared/indirect_draws.h"
 #include "renderer/vk/buffer.h"
+#include "renderer/vk/frame_ring.h"
+#include "renderer/vk/frame_uploads.h"
 #include "scenes/scene.h"
 
 namespace monoplane::passes {
@@ -55,16 +57,18 @@ class ChunkCullingPass {
     // Points the occlusion test at the merged depth pyramid (a view of all its mips, in
     // eGeneral). Call between frames, before the first record().
     void set_merged_depth(vk::ImageView pyramid, vk::Sampler nearest) const;
-    // Writes the frame's constants; call before recording the frame.
-    void set_frame(const CullFrame& frame);
+    // Stages the frame's constants (and the draw order when it changed) for the frame's command
+    // buffer; call before recording the frame.
+    void set_frame(const CullFrame& frame, vk_core::FrameUploads& uploads);
 
     // Phase 0: all views' lists; phase 1: C's list again, with occlusion culling. Each leaves a
     // barrier that makes its results visible to indirect draws, predicates and later dispatches.
     void record_frustum_phase(const vk::raii::CommandBuffer& cmd) const;
     void record_occlusion_phase(const vk::raii::CommandBuffer& cmd) const;
-    // Copies the counts (and with lists, the draw lists) to host memory, after the frame's
-    // last use of them.
-    void record_readback(const vk::raii::CommandBuffer& cmd, bool lists) const;
+    // Copies the counts (into the frame-in-flight slot's own buffer; with lists, the draw lists
+    // too, into one buffer for all slots) to host memory, after the frame's last use of them.
+    void record_readback(const vk::raii::CommandBuffer& cmd, bool lists,
+                         std::uint32_t slot = 0) const;
 
     IndirectDraws draws(CullView view) const;
     // One uint32 of MONOPLANE_ROUTE_* bits per chunk, written every frame (storage buffer).
@@ -72,10 +76,11 @@ class ChunkCullingPass {
     // Conditional rendering on a counts word (MONOPLANE_PRED_*).
     Predicate predicate(std::uint32_t word, bool inverted = false) const;
 
-    // After the frame has completed.
-    std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> counts() const;
-    // The chunk indices of a view's list, in draw order (record_readback with lists).
-    std::vector<std::uint32_t> drawn_chunks(CullView view) const;
+    // After the slot's frame has completed.
+    std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> counts(std::uint32_t slot = 0) const;
+    // The chunk indices of a view's list, in draw order (record_readback with lists), once the
+    // slot's frame, the last to read lists back, has completed.
+    std::vector<std::uint32_t> drawn_chunks(CullView view, std::uint32_t slot = 0) const;
 
   private:
     void record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const;
@@ -87,7 +92,8 @@ class ChunkCullingPass {
     vk_core::Buffer routing_;
     vk_core::Buffer order_;
     vk_core::Buffer constants_;
-    vk_core::Buffer counts_readback_;
+    std::vector<std::uint32_t> staged_order_;  // the order order_ holds
+    std::array<vk_core::Buffer, vk_core::FrameRing::kFramesInFlight> counts_readback_;
     vk_core::Buffer commands_readback_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::DescriptorPool pool_{nullptr};

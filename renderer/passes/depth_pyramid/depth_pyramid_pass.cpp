@@ -80,10 +80,23 @@ DepthPyramidPass::DepthPyramidPass(const vk_core::Context& ctx) : ctx_(ctx) {
 
 DepthPyramidPass::~DepthPyramidPass() = default;
 
+namespace {
+
+// One pyramid texel per 4 x 4 block of C's pixels.
+vk::Extent2D pyramid_extent(vk::Extent2D mono_allocation) {
+    return {(mono_allocation.width + 3) / 4, (mono_allocation.height + 3) / 4};
+}
+
+}  // namespace
+
+bool DepthPyramidPass::fits(vk::Extent2D mono_allocation) const {
+    const vk::Extent2D needed = pyramid_extent(mono_allocation);
+    return needed.width <= extent_.width && needed.height <= extent_.height;
+}
+
 bool DepthPyramidPass::resize(vk::Extent2D mono_allocation) {
-    const vk::Extent2D needed((mono_allocation.width + 3) / 4, (mono_allocation.height + 3) / 4);
-    if (needed.width <= extent_.width && needed.height <= extent_.height) return false;
-    create_image(needed);
+    if (fits(mono_allocation)) return false;
+    create_image(pyramid_extent(mono_allocation));
     return true;
 }
 

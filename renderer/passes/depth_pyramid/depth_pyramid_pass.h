@@ -23,8 +23,10 @@ class DepthPyramidPass {
     explicit DepthPyramidPass(const vk_core::Context& ctx);
     ~DepthPyramidPass();
 
+    // Whether the pyramid already covers C's allocation (resize() would keep it).
+    bool fits(vk::Extent2D mono_allocation) const;
     // (Re)creates the pyramid for C's allocation when it grows; returns true when it did (views
-    // of it must be rebound). Call between frames.
+    // of it must be rebound). Call between frames, none of which in flight uses the pyramid.
     bool resize(vk::Extent2D mono_allocation);
     // The eyes' depth images (sampled usage) and their size; call once and after every
     // resize() that returned true.
