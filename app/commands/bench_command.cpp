@@ -168,22 +168,34 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
                  const modes::FrameInputs* reference_inputs = nullptr) {
     renderer.set_read_back(false);
     if (reference) reference->set_read_back(false);
+    // Frames in flight: nothing waits for the GPU until the end; each renderer's statistics
+    // arrive in submission order, so frame i of one pairs with frame i of the other.
+    std::vector<profile::FrameStats> measured;
+    std::vector<profile::FrameStats> paired;
+    const auto take = [](modes::ModeRenderer& r, std::vector<profile::FrameStats>& into,
+                         bool finish) {
+        for (profile::FrameStats& stats : finish ? r.finish_frames() : r.take_completed()) {
+            into.push_back(std::move(stats));
+        }
+    };
+    for (int i = 0; i < o.warmup + o.frames; ++i) {
+        if (reference && i % 2 == 0) reference->submit_frame(*reference_inputs);
+        renderer.submit_frame(inputs);
+        if (reference && i % 2 == 1) reference->submit_frame(*reference_inputs);
+        take(renderer, measured, false);
+        if (reference) take(*reference, paired, false);
+    }
+    take(renderer, measured, true);
+    if (reference) take(*reference, paired, true);
     std::vector<profile::FrameStats> frames;
     std::vector<double> ratios;
     std::vector<double> reference_ms;
-    for (int i = 0; i < o.warmup + o.frames; ++i) {
-        double paired_ms = 0.0;
-        if (reference && i % 2 == 0)
-            paired_ms = reference->render_frame(*reference_inputs).gpu_frame_ms;
-        profile::FrameStats stats = renderer.render_frame(inputs);
-        if (reference && i % 2 == 1)
-            paired_ms = reference->render_frame(*reference_inputs).gpu_frame_ms;
-        if (i < o.warmup) continue;
-        if (reference && paired_ms > 0.0) {
-            ratios.push_back(stats.gpu_frame_ms / paired_ms);
-            reference_ms.push_back(paired_ms);
+    for (std::size_t i = static_cast<std::size_t>(o.warmup); i < measured.size(); ++i) {
+        if (reference && i < paired.size() && paired[i].gpu_frame_ms > 0.0) {
+            ratios.push_back(measured[i].gpu_frame_ms / paired[i].gpu_frame_ms);
+            reference_ms.push_back(paired[i].gpu_frame_ms);
         }
-        frames.push_back(std::move(stats));
+        frames.push_back(std::move(measured[i]));
     }
     const FrameSummary summary = summarize(frames);
     BenchRun run;

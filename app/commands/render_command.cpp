@@ -255,16 +255,26 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     inputs.debug = *debug_view;
     inputs.mono_culling = *mono_culling;
 
-    std::vector<profile::FrameStats> measured;
+    // Frames in flight: each frame is submitted without waiting for the last; only the last is
+    // read back (the PNGs), and the statistics arrive as the frames complete, in order.
+    std::vector<profile::FrameStats> completed;
     const int total = o.warmup + o.frames;
     for (int frame = 0; frame < total; ++frame) {
         // Frame n at n / fps along the path: TAA's jitter and history follow the frame index.
         inputs.views.head = rig::pose_along(*pose_path, viewpoint->head, frame / o.fps);
         inputs.frame_index = static_cast<std::uint64_t>(frame);
-        profile::FrameStats stats = renderer.render_frame(inputs);
-        if (frame >= o.warmup) measured.push_back(std::move(stats));
+        renderer.set_read_back(frame == total - 1);
+        renderer.submit_frame(inputs);
+        for (profile::FrameStats& stats : renderer.take_completed()) {
+            completed.push_back(std::move(stats));
+        }
         if (total > 1) std::cerr << "\rframe " << frame + 1 << "/" << total << std::flush;
     }
+    for (profile::FrameStats& stats : renderer.finish_frames())
+        completed.push_back(std::move(stats));
+    const std::vector<profile::FrameStats> measured(
+        std::make_move_iterator(completed.begin() + o.warmup),
+        std::make_move_iterator(completed.end()));
     if (total > 1) std::cerr << "\n";
 
     write_png(out / "left.png", renderer.eye_image(modes::Eye::kLeft)).value_or_throw();

@@ -15,12 +15,14 @@
 
 #include "app/commands/validation_report.h"
 #include "app/headset/eye_compositor.h"
+#include "app/headset/frame_times.h"
 #include "app/headset/openxr_headset.h"
 #include "app/headset/overlay_text.h"
 #include "app/window/experimenter_window.h"
 #include "common/result.h"
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/modes/scene_resources.h"
+#include "renderer/vk/frame_ring.h"
 #include "renderer/vk/memory.h"
 #include "scenes/generate.h"
 #include "study/live_session.h"
@@ -299,6 +301,18 @@ study::SessionStatus run_headset_session(
     std::optional<study::ObserverInput> observer_input;
     if (observer) observer_input.emplace(*observer, protocol, trial_error_px);
 
+    // Frames without a scene (neutral screen, questionnaire) are the compositor's alone; scene
+    // frames ride in their renderer's ring. Neither waits for the GPU after submitting.
+    vk_core::FrameRing compositor_frames(*ctx);
+    headset::FrameTimes times;
+    using Clock = std::chrono::steady_clock;
+    auto step_start = Clock::now();
+    // Charges the time since the last step to `step`.
+    const auto charge = [&](headset::FrameStep step) {
+        const auto now = Clock::now();
+        times.add(step, std::chrono::duration<double, std::milli>(now - step_start).count());
+        step_start = now;
+    };
     std::vector<window::Command> window_commands;
     std::vector<int> window_answers(protocol.questionnaire.items.size(), 0);
     bool unblinded = false;
@@ -326,7 +340,8 @@ study::SessionStatus run_headset_session(
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
             continue;
         }
-        const auto frame_start = std::chrono::steady_clock::now();
+        const auto frame_start = Clock::now();
+        step_start = frame_start;
         const headset::HeadsetFrame frame = headset->begin_frame().value_or_throw();
         const std::int64_t now = frame.display_time_ns;
         if (first_frame_ns < 0) first_frame_ns = now;
@@ -334,7 +349,10 @@ study::SessionStatus run_headset_session(
         if (frame.views_valid) head = anchor.relative(located_head(frame));
 
         // Input: the controller, then the experimenter's window, then a simulated observer.
-        for (const headset::ControlPress& press : headset->sync_controls().value_or_throw()) {
+        const std::vector<headset::ControlPress> presses =
+            headset->sync_controls().value_or_throw();
+        charge(headset::FrameStep::kOpenXrBegin);
+        for (const headset::ControlPress& press : presses) {
             if (press.control == headset::Control::Switch)
                 request(LiveInput::Switch, press.time_ns);
             if (press.control == headset::Control::Confirm)
@@ -387,9 +405,11 @@ study::SessionStatus run_headset_session(
 
         const study::LiveScreen screen = live->screen();
         bool rendered = false;
+        bool scene_frame = false;
         if (frame.should_render) {
             std::array<vk::Image, 2> targets;
             for (int e = 0; e < 2; ++e) targets[e] = headset->acquire_eye_image(e).value_or_throw();
+            charge(headset::FrameStep::kOpenXrBegin);
             std::vector<headset::EyeCompositor::Overlay> overlays;
             modes::ModeRenderer* renderer = nullptr;
             modes::FrameInputs inputs;
@@ -427,18 +447,28 @@ study::SessionStatus run_headset_session(
                                           overlays, mirror);
                 }
             };
-            // The eyes' copies ride in the renderer's submission: one submission and one wait
-            // per frame.
+            charge(headset::FrameStep::kSession);
+            // The eyes' copies ride in the renderer's submission: one submission per frame, and
+            // no wait for it (the ring waits only for the frame two before).
             if (renderer) {
-                renderer->render_frame(inputs, record_eyes);
+                renderer->submit_frame(inputs, record_eyes);
+                for (const profile::FrameStats& stats : renderer->take_completed()) {
+                    times.add_gpu_ms(stats.gpu_frame_ms);
+                }
+                scene_frame = true;
             } else {
-                ctx->submit_and_wait(record_eyes);
+                const std::uint32_t slot = compositor_frames.begin();
+                record_eyes(compositor_frames.commands(slot));
+                compositor_frames.submit(slot);
             }
+            charge(headset::FrameStep::kRender);
             rendered = true;
         }
         headset->end_frame(frame).value_or_throw();
+        charge(headset::FrameStep::kOpenXrEnd);
         // What the participant sees changes only with a frame that was shown.
         if (rendered) live->frame_presented(frame.index, now).value_or_throw();
+        charge(headset::FrameStep::kLog);
 
         const study::LiveProgress progress = live->progress();
         if (progress.trial_number != last_reported_trial && screen.kind == ScreenKind::Trial) {
@@ -493,6 +523,7 @@ study::SessionStatus run_headset_session(
                 std::cerr << "wrote " << options.screenshot << "\n";
                 screenshot_saved = true;
             }
+            charge(headset::FrameStep::kWindow);
             if (experimenter->close_requested() && !live->finished()) {
                 std::cerr << "the experimenter window was closed: ending the session (resume "
                              "it with `monoplane study resume`)\n";
@@ -500,11 +531,13 @@ study::SessionStatus run_headset_session(
                 exit_requested = true;
             }
         }
+        times.end_frame(scene_frame);
     }
     if (experimenter && !options.screenshot.empty() && !screenshot_saved) {
         experimenter->save_screenshot(options.screenshot).value_or_throw();
         std::cerr << "wrote " << options.screenshot << "\n";
     }
+    if (times.scene_frames() > 0) std::cerr << times.summary();
     ctx->device().waitIdle();
     experimenter.reset();
     headset->destroy_session();
