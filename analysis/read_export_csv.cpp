@@ -35,11 +35,15 @@ class Row {
         const std::map<std::string, std::size_t, std::less<>>& columns)
         : file_(file), record_(record), columns_(columns) {}
 
-    bool is_na(std::string_view column) const { return field(column).empty(); }
+    // The export writes NA; pandas' to_csv writes an empty field.
+    bool is_na(std::string_view column) const {
+        const std::string& value = field(column);
+        return value.empty() || value == "NA";
+    }
 
     Result<std::string> text(std::string_view column) const {
         const std::string& value = field(column);
-        if (value.empty()) return fail(column, value, "where a value is needed");
+        if (is_na(column)) return fail(column, value, "where a value is needed");
         return value;
     }
 
@@ -65,7 +69,8 @@ class Row {
         return out;
     }
 
-    // The export writes true/false; R writes TRUE/FALSE, pandas True/False, some tools 1/0.
+    // The export (and R) writes TRUE/FALSE, pandas True/False, older exports true/false, some
+    // tools 1/0.
     Result<bool> boolean(std::string_view column) const {
         const std::string value = lower(field(column));
         if (value == "true" || value == "1") return true;

@@ -10,7 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libsqlite3-dev
   libopenxr-dev libopenxr-loader1 libglfw3-dev libimgui-dev xvfb xauth
   librsvg2-dev fonts-dejavu-core
-  python3
+  python3 python3-pandas r-base-core r-cran-jsonlite r-cran-dbi r-cran-rsqlite
 )
 
 missing=()

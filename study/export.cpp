@@ -13,7 +13,7 @@ namespace monoplane::study {
 namespace {
 
 // One export cell. Numbers arrive already as locale-free text; the writers only decide quoting
-// and how NA looks.
+// and how NA and booleans look.
 struct Cell {
     enum class Type { Na, Text, Number, Bool } type = Type::Na;
     std::string text;
@@ -208,8 +208,11 @@ void write_csv(const ExportData& data, std::ostream& out) {
             if (i > 0) line += ',';
             const Cell& cell = cells[i];
             switch (cell.type) {
+                // NA and TRUE/FALSE as R writes them: read.csv and pandas.read_csv take them
+                // without options as missing and as logical / bool columns.
                 case Cell::Type::Na:
-                    break;  // an empty field: NA in pandas and R
+                    line += "NA";
+                    break;
                 case Cell::Type::Text:
                     line += csv_field(cell.text);
                     break;
@@ -217,7 +220,7 @@ void write_csv(const ExportData& data, std::ostream& out) {
                     line += cell.text;
                     break;
                 case Cell::Type::Bool:
-                    line += cell.flag ? "true" : "false";
+                    line += cell.flag ? "TRUE" : "FALSE";
                     break;
             }
         }

@@ -4,7 +4,8 @@
 //
 // Every trial of every session is exported, practice trials too, flagged by the `practice`
 // column, so an analysis filters them explicitly (and can check them); undecided trials appear
-// with NA outcome columns (`decided` false). NA is an empty CSV field and JSON null.
+// with NA outcome columns (`decided` false). In CSV, booleans are TRUE / FALSE and NA is the
+// unquoted field NA (as R writes them); in JSON they are true / false and null.
 #pragma once
 
 #include <cstdint>

@@ -712,7 +712,7 @@ std::string logistic_csv(const AnalysisResults& r) {
         out += csv_line({c.name, number_text(c.estimate), number_text(c.std_error),
                          number_text(c.z), number_text(c.p), number_text(c.odds_ratio),
                          number_text(c.ci_lower), number_text(c.ci_upper), std::to_string(f.n),
-                         std::to_string(f.clusters), f.converged ? "true" : "false"});
+                         std::to_string(f.clusters), f.converged ? "TRUE" : "FALSE"});
     }
     return out;
 }

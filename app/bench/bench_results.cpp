@@ -141,7 +141,7 @@ std::string bench_csv(const BenchReport& report) {
     };
     for (const BenchRun& run : report.runs) {
         csv << run.scene << "," << run.mode << "," << run.variant << "," << number(run.mono_plane)
-            << "," << (run.mono_plane_is_far ? "true" : "false") << ","
+            << "," << (run.mono_plane_is_far ? "TRUE" : "FALSE") << ","
             << number(run.frame_ms_median) << "," << number(run.frame_ms_p10) << ","
             << number(run.frame_ms_p90) << "," << number(run.cpu_ms_median) << "," << run.primitives
             << "," << run.fragments << "," << count(run.view_primitives, "left") << ","

@@ -111,6 +111,45 @@ TEST(ReadExportCsv, AcceptsCrlfReorderedAndExtraColumnsAndOtherBooleanSpellings)
     EXPECT_EQ(read->trials[0].protocol, "");  // no protocol column: metadata only
 }
 
+TEST(ReadExportCsv, ReadsNaAndUpperCaseBooleansAsTheExportWritesThem) {
+    // The export's own spelling (docs/data.md): NA for missing values, TRUE/FALSE.
+    const std::filesystem::path path = write_file(
+        "na.csv",
+        kHeader + "\n" +
+            "A,1,0,NA,beams,5,stereo,1,stereo,TRUE,2,1,1,2,TRUE,TRUE,hybrid,0,p,h,NA,none,vive,"
+            "aborted\n"
+            "A,1,1,0,spheres,3,hybrid,2,stereo,FALSE,0,1,0,1.5,FALSE,TRUE,stereo,0,p,h,NA,none,"
+            "vive,aborted\n"
+            "A,1,2,0,spheres,8,stereo,NA,NA,NA,NA,NA,NA,NA,FALSE,FALSE,hybrid,0,p,h,NA,none,vive,"
+            "aborted\n");
+    const Result<Dataset> read = read_export_csv(path);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    ASSERT_EQ(read->trials.size(), 3u);
+    EXPECT_TRUE(read->trials[0].practice);
+    EXPECT_EQ(read->trials[0].block, -1);
+    EXPECT_TRUE(read->trials[0].valid);
+    EXPECT_FALSE(read->trials[1].practice);
+    EXPECT_EQ(read->trials[1].block, 0);
+    EXPECT_TRUE(read->trials[1].decided);
+    EXPECT_FALSE(read->trials[1].valid);
+    EXPECT_EQ(read->trials[1].switches, 0);
+    EXPECT_DOUBLE_EQ(read->trials[1].decision_time_s, 1.5);
+    EXPECT_FALSE(read->trials[2].decided);
+    EXPECT_EQ(read->trials[2].chosen_mode, "");
+}
+
+TEST(ReadExportCsv, ADecidedTrialWithNaOutcomeIsRefused) {
+    const std::filesystem::path path = write_file(
+        "na_outcome.csv",
+        kHeader + "\n" +
+            "A,1,0,0,beams,3,stereo,NA,NA,NA,NA,NA,NA,NA,FALSE,TRUE,hybrid,0,p,h,NA,none,vive,"
+            "completed\n");
+    const Result<Dataset> read = read_export_csv(path);
+    ASSERT_FALSE(read.ok());
+    EXPECT_EQ(read.error().message,
+              path.string() + ":2: column 'chosen_mode' (column 9): 'NA' where a value is needed");
+}
+
 TEST(ReadExportCsv, AMissingColumnNamesFileLineAndColumn) {
     std::string header = kHeader;
     header.replace(header.find("mono_plane,"), 11, "");

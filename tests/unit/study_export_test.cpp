@@ -1,6 +1,7 @@
 // The export (DESIGN.md section 7; docs/data.md): one row per trial, identity columns first,
-// RFC 4180 CSV with '.' decimals whatever the locale and empty fields for NA, and JSON with the
-// same keys, numbers as numbers and null for NA. Exact text for known records.
+// RFC 4180 CSV with '.' decimals whatever the locale, TRUE/FALSE for booleans and NA for missing
+// values (what R's read.csv and pandas.read_csv take without options), and JSON with the same
+// keys, numbers as numbers, true/false and null for NA. Exact text for known records.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -22,11 +23,10 @@ const std::string kHeader =
     "switches,time_label1_s,time_label2_s,decision_time_s,practice,decided,label2_mode,"
     "participant_index,protocol,protocol_hash,observer,runtime,hmd,session_status\n";
 const std::string kPracticeRow =
-    "P01,1,0,,landscape,5,stereo,,,,,,,,true,false,hybrid,0,fink2019,fnv1a64:cbf29ce484222325,"
-    "default,none,"
-    "vive,running\n";
+    "P01,1,0,NA,landscape,5,stereo,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,hybrid,0,fink2019,"
+    "fnv1a64:cbf29ce484222325,default,none,vive,running\n";
 const std::string kDecidedRow =
-    "P01,1,2,0,spheres,1.6,stereo,1,stereo,true,2,1.5,1.600000001,3.100000001,false,true,hybrid,0,"
+    "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,hybrid,0,"
     "fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running\n";
 
 SessionInfo known_session() {
@@ -133,7 +133,20 @@ TEST(StudyExport, AnObserverlessSessionIsNa) {
     data.sessions.at(1).observer.clear();  // a person
     std::ostringstream out;
     write_csv(data, out);
-    EXPECT_NE(out.str().find(",fnv1a64:cbf29ce484222325,,none,"), std::string::npos) << out.str();
+    EXPECT_NE(out.str().find(",fnv1a64:cbf29ce484222325,NA,none,"), std::string::npos) << out.str();
+}
+
+TEST(StudyExport, AnInvalidDecisionIsFalseInCsvAndJson) {
+    ExportData data = known_data();
+    data.trials[1].outcome.valid = false;
+    std::ostringstream csv;
+    write_csv(data, csv);
+    EXPECT_NE(csv.str().find("\nP01,1,2,0,spheres,1.6,stereo,1,stereo,FALSE,2,"), std::string::npos)
+        << csv.str();
+    std::ostringstream json;
+    write_json(data, json);
+    EXPECT_NE(json.str().find("\"chosen_mode\": \"stereo\", \"valid\": false, "), std::string::npos)
+        << json.str();
 }
 
 TEST(StudyExport, CsvFieldsFollowRfc4180) {
@@ -208,9 +221,8 @@ TEST(StudyExport, ExportsFromTheStoreToAFile) {
         const std::string text((std::istreambuf_iterator<char>(in)),
                                std::istreambuf_iterator<char>());
         const std::string beams =
-            "P01,1,1,,beams,3,hybrid,,,,,,,,true,false,stereo,0,fink2019,fnv1a64:cbf29ce484222325,"
-            "default,none,"
-            "vive,running\n";
+            "P01,1,1,NA,beams,3,hybrid,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,stereo,0,fink2019,"
+            "fnv1a64:cbf29ce484222325,default,none,vive,running\n";
         EXPECT_EQ(text, kHeader + kPracticeRow + beams + kDecidedRow);
         EXPECT_FALSE(fs::exists(dir / "trials.csv.tmp"));
 

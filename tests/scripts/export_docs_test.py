@@ -1,0 +1,298 @@
+#!/usr/bin/env python3
+"""docs/data.md's pandas and R snippets, run verbatim against a real export (issue 17, item 6).
+
+    export_docs_test.py --monoplane build/monoplane --source . --part pandas|r-csv|r-json-db
+
+Builds a study database with the real CLI (protocols/demo.toml, simulated observer): session 1
+runs to the end, session 2 is killed after its third decision, so the export holds practice
+trials, data trials and undecided trials (NA outcomes). Exports it as CSV and JSON, copies the
+database as study.db, and runs one snippet of docs/data.md in that folder:
+
+  pandas     the ```python block under "### pandas", with Debian's /usr/bin/python3 (the
+             python3-pandas package is for it, not for a pyenv python3 on PATH);
+  r-csv      the first ```r block under "### R" (base R only: read.csv);
+  r-json-db  the second ```r block (jsonlite, DBI, RSQLite).
+
+The snippet's output must show the values counted here independently (Python's csv module over
+the CSV, sqlite3 over the database): the number of decided data trials, the choice rate per scene
+and distance, the number of events; then a check appended to the snippet, in the same
+interpreter, reports the types and NA counts of what the snippet read. Exits 77 (CTest's
+SKIP_RETURN_CODE) with a message when the interpreter or a package the part needs is absent.
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import shutil
+import signal
+import sqlite3
+import subprocess
+import sys
+import tempfile
+
+SKIP = 77
+SCENES = ["beams", "landscape", "spheres"]
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def skip(message):
+    print("SKIP: " + message)
+    sys.exit(SKIP)
+
+
+def snippets(docs_path, heading, language):
+    """The fenced ```language blocks between `heading` and the next heading, verbatim."""
+    with open(docs_path, encoding="utf-8") as f:
+        lines = f.read().split("\n")
+    blocks, inside, current, block = [], False, None, None
+    for line in lines:
+        if block is not None:
+            if line.strip() == "```":
+                blocks.append("\n".join(block) + "\n")
+                block = None
+            else:
+                block.append(line)
+            continue
+        if line.startswith("#"):
+            inside = line.strip() == heading
+        elif inside and line.strip() == "```" + language:
+            block = []
+    if not blocks:
+        fail("%s has no ```%s block under '%s'" % (docs_path, language, heading))
+    return blocks
+
+
+def run_cli(args, what):
+    done = subprocess.run(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if done.returncode != 0:
+        fail("%s failed (%d):\n%s%s" % (what, done.returncode, done.stdout, done.stderr))
+
+
+def make_study(monoplane, protocol, folder):
+    db = os.path.join(folder, "study.db")
+    common = ["--protocol", protocol, "--db", db, "--headset", "none", "--observer", "default",
+              "--window", "off"]
+    run_cli([monoplane, "study", "run", "--participant", "P01", "--seed", "3"] + common,
+            "study run P01")
+    # Session 2: killed (SIGKILL) while it sleeps after its third recorded outcome.
+    child = subprocess.Popen([monoplane, "study", "run", "--participant", "P02", "--seed", "4",
+                              "--trace", "--pace-ms", "150"] + common,
+                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    outcomes = 0
+    for line in child.stdout:
+        if " outcome " in line:
+            outcomes += 1
+            if outcomes == 3:
+                child.send_signal(signal.SIGKILL)
+                break
+    child.stdout.close()
+    child.wait()
+    if outcomes != 3:
+        fail("study run P02 ended after %d outcomes, before the third" % outcomes)
+    run_cli([monoplane, "study", "export", "--db", db, "--format", "csv", "--out",
+             os.path.join(folder, "trials.csv")], "study export --format csv")
+    run_cli([monoplane, "study", "export", "--db", db, "--format", "json", "--out",
+             os.path.join(folder, "trials.json")], "study export --format json")
+
+
+def expected_values(folder):
+    """What the snippets must find, counted without pandas or R."""
+    with open(os.path.join(folder, "trials.csv"), newline="", encoding="utf-8") as f:
+        rows = list(csv.DictReader(f))
+    for row in rows:
+        for column in ("practice", "decided"):
+            if row[column] not in ("TRUE", "FALSE"):
+                fail("trials.csv: %s is '%s', not TRUE or FALSE" % (column, row[column]))
+    data = [r for r in rows if r["practice"] == "FALSE" and r["decided"] == "TRUE"]
+    cells = {}
+    for r in data:
+        cells.setdefault((r["scene"], float(r["mono_plane"])), []).append(
+            r["chosen_mode"] == "stereo")
+    rates = {key: sum(v) / len(v) for key, v in cells.items()}
+    con = sqlite3.connect("file:%s?mode=ro" % os.path.join(folder, "study.db"), uri=True)
+    db_data = con.execute("SELECT COUNT(*) FROM trials WHERE practice = 0 AND decided = 1"
+                          ).fetchone()[0]
+    events = con.execute("SELECT COUNT(*) FROM events WHERE session_id = 1").fetchone()[0]
+    undecided = con.execute("SELECT COUNT(*) FROM trials WHERE decided = 0").fetchone()[0]
+    practice = con.execute("SELECT COUNT(*) FROM trials WHERE practice = 1").fetchone()[0]
+    con.close()
+    if db_data != len(data):
+        fail("the CSV has %d decided data trials, the database %d" % (len(data), db_data))
+    # The fixture must exercise both filters and the NA fields.
+    if undecided == 0 or practice == 0 or len(data) == 0 or events == 0:
+        fail("the study has %d undecided, %d practice, %d data trials and %d events; each must "
+             "be > 0" % (undecided, practice, len(data), events))
+    return {
+        "rows": len(rows), "data": len(data), "stereo": sum(r["chosen_mode"] == "stereo"
+                                                           for r in data),
+        "practice": practice, "undecided": undecided, "events": events, "rates": rates,
+    }
+
+
+def run_snippet(command, suffix, code, folder):
+    path = os.path.join(folder, "snippet" + suffix)
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(code)
+    done = subprocess.run(command + [path], cwd=folder, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, text=True)
+    print(done.stdout)
+    if done.returncode != 0:
+        fail("the snippet failed (%d):\n%s" % (done.returncode, code))
+    return done.stdout
+
+
+def check_line(output, tag):
+    """The fields of the line 'tag ...' the appended check printed."""
+    for line in output.split("\n"):
+        if line.startswith(tag + " "):
+            return line.split()[1:]
+    fail("no '%s' line in the output" % tag)
+
+
+def expect(what, got, want):
+    if str(got) != str(want):
+        fail("%s: %s, expected %s" % (what, got, want))
+
+
+def expect_printed(output, pattern, want, what):
+    found = re.search(pattern, output, re.MULTILINE)
+    if not found:
+        fail("the snippet did not print %s" % what)
+    expect(what, found.group(1), want)
+
+
+def compare_rates(table, want, what):
+    if set(table) != set(want):
+        fail("%s: cells %s, expected %s" % (what, sorted(table), sorted(want)))
+    for key, rate in want.items():
+        if not math.isclose(table[key], rate, abs_tol=1e-5):
+            fail("%s: %s rate %s, expected %s" % (what, key, table[key], rate))
+
+
+def pandas_rates(output):
+    """The scene x mono_plane table print(... .unstack("scene")) shows (NaN: no trials)."""
+    lines = output.split("\n")
+    for i, line in enumerate(lines):
+        if line.split()[:1] == ["scene"]:
+            scenes = line.split()[1:]
+            table = {}
+            for row in lines[i + 1:]:
+                fields = row.split()
+                if len(fields) != len(scenes) + 1:
+                    continue
+                try:
+                    values = [float(v) for v in fields]
+                except ValueError:
+                    break
+                for scene, value in zip(scenes, values[1:]):
+                    if not math.isnan(value):
+                        table[(scene, values[0])] = value
+            return table
+    fail("the snippet did not print the scene x mono_plane table")
+
+
+def r_rates(output):
+    """The rows 'n scene mono_plane chose_stereo' that aggregate() prints."""
+    table = {}
+    for scene, plane, rate in re.findall(r"^\s*\d+\s+(\w+)\s+([-\d.]+)\s+([-\d.]+)\s*$", output,
+                                         re.MULTILINE):
+        table[(scene, float(plane))] = float(rate)
+    return table
+
+
+def part_pandas(docs, folder, want):
+    python = "/usr/bin/python3"  # Debian's python3-pandas is for Debian's interpreter
+    if not os.access(python, os.X_OK):
+        skip("%s is absent (apt-get install python3-pandas)" % python)
+    if subprocess.run([python, "-c", "import pandas"], stderr=subprocess.DEVNULL).returncode:
+        skip("pandas is not installed for %s (apt-get install python3-pandas)" % python)
+    code = snippets(docs, "### pandas", "python")[0]
+    check = ('print("CHECK", len(df), len(data), int(data.chose_stereo.sum()), '
+             'int(df.block.isna().sum()), int(df.valid.isna().sum()), '
+             'int(df.observer.isna().sum()), df.practice.dtype, df.decided.dtype, '
+             'df.valid.dtype, ",".join(sorted({type(v).__name__ for v in df.valid.dropna()})), '
+             'len(js), js.practice.dtype, '
+             'int(js.valid.isna().sum()), len(events))\n')
+    output = run_snippet([python], ".py", code + check, folder)
+    expect_printed(output, r"^(\d+) decided data trials$", want["data"], "decided data trials")
+    expect_printed(output, r"^(\d+) events in session 1$", want["events"], "events in session 1")
+    compare_rates(pandas_rates(output), want["rates"], "pandas choice rates")
+    expect("pandas: rows, data trials, stereo choices, NA blocks, NA valid, NA observers, "
+           "practice dtype, decided dtype, valid dtype, types of the valid values, JSON rows, "
+           "JSON practice dtype, JSON NA valid, events",
+           " ".join(check_line(output, "CHECK")),
+           "%d %d %d %d %d 0 bool bool object bool %d bool %d %d" % (
+               want["rows"], want["data"], want["stereo"], want["practice"], want["undecided"],
+               want["rows"], want["undecided"], want["events"]))
+
+
+def rscript():
+    found = shutil.which("Rscript")
+    if not found:
+        skip("Rscript is absent (apt-get install r-base-core)")
+    return found
+
+
+def part_r_csv(docs, folder, want):
+    command = [rscript(), "--vanilla"]
+    code = snippets(docs, "### R", "r")[0]
+    check = ('cat("CHECK", nrow(df), nrow(data), sum(data$chose_stereo), sum(is.na(df$block)), '
+             'sum(is.na(df$valid)), sum(is.na(df$observer)), class(df$practice), '
+             'class(df$decided), class(df$valid), class(df$block), class(df$participant), '
+             '"\\n")\n')
+    output = run_snippet(command, ".R", code + check, folder)
+    expect_printed(output, r"^(\d+) decided data trials$", want["data"], "decided data trials")
+    compare_rates(r_rates(output), want["rates"], "R choice rates")
+    expect("R: rows, data trials, stereo choices, NA blocks, NA valid, NA observers, classes of "
+           "practice decided valid block participant",
+           " ".join(check_line(output, "CHECK")),
+           "%d %d %d %d %d 0 logical logical logical integer character" % (
+               want["rows"], want["data"], want["stereo"], want["practice"], want["undecided"]))
+
+
+def part_r_json_db(docs, folder, want):
+    command = [rscript(), "--vanilla"]
+    missing = subprocess.run(
+        command + ["-e", 'p <- c("jsonlite", "DBI", "RSQLite"); '
+                   'cat(p[!sapply(p, requireNamespace, quietly = TRUE)])'],
+        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True).stdout.split()
+    if missing:
+        skip("R packages %s are absent (apt-get install r-cran-jsonlite r-cran-dbi "
+             "r-cran-rsqlite)" % " ".join(missing))
+    code = snippets(docs, "### R", "r")[1]
+    check = ('cat("CHECK", nrow(js), class(js$practice), sum(is.na(js$valid)), '
+             'sum(is.na(js$block)), nrow(events), "\\n")\n')
+    output = run_snippet(command, ".R", code + check, folder)
+    expect_printed(output, r"^(\d+) events in session 1$", want["events"], "events in session 1")
+    expect("R JSON and database: JSON rows, practice class, NA valid, NA blocks, events",
+           " ".join(check_line(output, "CHECK")),
+           "%d logical %d %d %d" % (want["rows"], want["undecided"], want["practice"],
+                                    want["events"]))
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--monoplane", required=True)
+    parser.add_argument("--source", required=True)
+    parser.add_argument("--part", required=True, choices=["pandas", "r-csv", "r-json-db"])
+    args = parser.parse_args()
+    docs = os.path.join(args.source, "docs", "data.md")
+    parts = {"pandas": part_pandas, "r-csv": part_r_csv, "r-json-db": part_r_json_db}
+    folder = tempfile.mkdtemp(prefix="export_docs_")
+    try:
+        make_study(os.path.abspath(args.monoplane),
+                   os.path.join(args.source, "protocols", "demo.toml"), folder)
+        want = expected_values(folder)
+        parts[args.part](docs, folder, want)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+    print("PASS: docs/data.md %s snippet" % args.part)
+
+
+if __name__ == "__main__":
+    main()
