@@ -28,11 +28,17 @@
 namespace monoplane::study {
 namespace {
 
-constexpr std::array<std::string_view, 11> kTopLevelKeys = {
+constexpr std::array<std::string_view, 12> kTopLevelKeys = {
     "name",  "scenes",      "mono_planes",         "alternatives",
     "order", "first_scene", "require_both_viewed", "practice_trials",
-    "near",  "far",         "questionnaire"};
+    "near",  "far",         "questionnaire",       "render"};
 constexpr std::array<std::string_view, 2> kQuestionnaireKeys = {"items", "scale_points"};
+constexpr std::array<std::string_view, 3> kRenderKeys = {"anti_aliasing", "ssao", "detail"};
+// The render command's names (renderer/plan/render_choices.h, scenes/generate.h).
+constexpr std::array<std::string_view, 5> kAntiAliasing = {"none", "taa", "msaa2", "msaa4",
+                                                           "msaa8"};
+constexpr std::array<std::string_view, 3> kSsao = {"off", "per-eye", "stereo"};
+constexpr std::array<std::string_view, 5> kDetails = {"test", "low", "medium", "high", "ultra"};
 
 // Practice trials precede every session; more than 50 is a typo, not a warm-up.
 constexpr std::int64_t kMaxPracticeTrials = 50;
@@ -376,6 +382,61 @@ void read_questionnaire(const TomlScope& root, Protocol& protocol, TomlProblems&
     }
 }
 
+// One of `names` at key, or nothing (with a problem naming the allowed values).
+template <std::size_t N>
+std::optional<std::string> read_name_choice(const toml::node& node, std::string_view key,
+                                            const std::array<std::string_view, N>& names,
+                                            TomlProblems& problems) {
+    std::array<NamedValue<std::string_view>, N> choices;
+    std::ranges::transform(names, choices.begin(), [](std::string_view name) {
+        return NamedValue<std::string_view>{name, name};
+    });
+    const std::optional<std::string_view> chosen = read_choice(node, key, choices, problems);
+    if (!chosen) return std::nullopt;
+    return std::string(*chosen);
+}
+
+bool is_hybrid(RenderMode mode) {
+    return mode == RenderMode::Hybrid || mode == RenderMode::HybridFarfield;
+}
+
+void read_render(const TomlScope& root, Protocol& protocol, TomlProblems& problems) {
+    const toml::node* node = root.table.get("render");
+    if (node == nullptr) return;  // the defaults: no anti-aliasing, no SSAO, detail low
+    const toml::table* table = node->as_table();
+    if (table == nullptr) {
+        report_wrong_type(*node, "render", "a table ([render] with anti_aliasing, ssao and detail)",
+                          problems);
+        return;
+    }
+    const TomlScope scope{*table, "render"};
+    report_unknown_keys(scope, kRenderKeys, problems);
+    RenderSettings& render = protocol.render;
+    if (const toml::node* aa = table->get("anti_aliasing")) {
+        if (auto name = read_name_choice(*aa, "render.anti_aliasing", kAntiAliasing, problems)) {
+            render.anti_aliasing = *name;
+            // MSAA resolves before hybrid's composite could map C's image in (papers/000 Sect.
+            // 4.5; docs/hybrid.md): the renderer refuses it for the hybrid modes.
+            const bool hybrid = std::ranges::any_of(protocol.alternatives, is_hybrid);
+            if (name->starts_with("msaa") && hybrid) {
+                problems.add(aa->source(), toml_key_prefix("render.anti_aliasing") +
+                                               in_quotes(*name) +
+                                               " needs both alternatives to be stereo forms, but "
+                                               "one is a hybrid mode; use 'taa'");
+            }
+        }
+    }
+    if (const toml::node* ssao = table->get("ssao")) {
+        if (auto name = read_name_choice(*ssao, "render.ssao", kSsao, problems))
+            render.ssao = *name;
+    }
+    if (const toml::node* detail = table->get("detail")) {
+        if (auto name = read_name_choice(*detail, "render.detail", kDetails, problems)) {
+            render.detail = *name;
+        }
+    }
+}
+
 // FNV-1a, 64 bits: a stable, dependency-free fingerprint of the protocol text, stored with every
 // session so analyses can tell protocol versions apart. Not a cryptographic hash.
 std::uint64_t fnv1a64(std::string_view text) {
@@ -419,6 +480,7 @@ Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view sou
     read_alternatives(root, protocol, problems);
     read_session_options(root, protocol, problems);
     read_questionnaire(root, protocol, problems);
+    read_render(root, protocol, problems);  // after the alternatives: MSAA depends on them
     if (!problems.empty()) return problems.error();
 
     protocol.source = std::string(source_name);

@@ -132,6 +132,28 @@ TEST(StudyProtocol, Fink2019FileHasThePapersDesign) {
     EXPECT_EQ(p->questionnaire.items.size(), 6u);
     EXPECT_NE(p->source.find("fink2019.toml"), std::string::npos);
     EXPECT_FALSE(p->text.empty());
+    // papers/000 Sect. 4.5: the study was rendered with TAA.
+    EXPECT_EQ(p->render.anti_aliasing, "taa");
+    EXPECT_EQ(p->render.ssao, "off");
+}
+
+TEST(StudyProtocol, RenderTableIsReadAndDefaultsToNoAntiAliasing) {
+    const Result<Protocol> defaults = parse_protocol(kValidProtocol, "test.toml");
+    ASSERT_TRUE(defaults.ok()) << defaults.error().message;
+    EXPECT_EQ(defaults->render, (RenderSettings{"none", "off", "low"}));
+    const Result<Protocol> p = parse_protocol(
+        std::string(kValidProtocol) +
+            "\n[render]\nanti_aliasing = \"taa\"\nssao = \"stereo\"\ndetail = \"medium\"\n",
+        "test.toml");
+    ASSERT_TRUE(p.ok()) << p.error().message;
+    EXPECT_EQ(p->render, (RenderSettings{"taa", "stereo", "medium"}));
+    // MSAA is fine when both alternatives are stereo forms.
+    const std::string stereo_forms = mutated("alternatives = [\"stereo\", \"hybrid\"]",
+                                             "alternatives = [\"stereo\", \"stereo-multiview\"]") +
+                                     "\n[render]\nanti_aliasing = \"msaa4\"\n";
+    const Result<Protocol> msaa = parse_protocol(stereo_forms, "test.toml");
+    ASSERT_TRUE(msaa.ok()) << msaa.error().message;
+    EXPECT_EQ(msaa->render.anti_aliasing, "msaa4");
 }
 
 TEST(StudyProtocol, DemoFileIsShort) {
@@ -482,6 +504,31 @@ const MalformedCase kMalformedCases[] = {
      "far = 1000",
      "far = 1000\nfar = 500",
      {"test.toml:11:", "TOML syntax error"}},
+    // The [render] table (appended after [questionnaire]: line 16 on).
+    {"unknown anti-aliasing",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[render]\nanti_aliasing = \"fxaa\"\n",
+     {"test.toml:17:", "'render.anti_aliasing'", "unknown value 'fxaa'", "none, taa, msaa2"}},
+    {"MSAA with a hybrid alternative",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[render]\nanti_aliasing = \"msaa4\"\n",
+     {"test.toml:17:", "'render.anti_aliasing'", "'msaa4'", "stereo forms", "use 'taa'"}},
+    {"misspelt SSAO",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[render]\nssao = \"per_eye\"\n",
+     {"test.toml:17:", "'render.ssao'", "did you mean 'per-eye'"}},
+    {"detail as a number",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[render]\ndetail = 2\n",
+     {"test.toml:17:", "'render.detail'", "string", "integer"}},
+    {"unknown render key",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[render]\nvsync = true\n",
+     {"test.toml:17:", "'render.vsync'", "known keys in [render]: anti_aliasing, ssao, detail"}},
+    {"render as a value",
+     "far = 1000\n",
+     "far = 1000\nrender = \"taa\"\n",
+     {"test.toml:11:", "'render'", "table"}},
 };
 
 INSTANTIATE_TEST_SUITE_P(AllClasses, MalformedProtocol, testing::ValuesIn(kMalformedCases),
