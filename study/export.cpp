@@ -74,6 +74,9 @@ std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s) {
         text(s.runtime),
         text(s.hmd),
         text(std::string(session_status_name(s.status))),
+        text(s.render.anti_aliasing),
+        text(s.render.ssao),
+        s.render.detail.empty() ? na() : text(s.render.detail),  // NA: not recorded (schema 1)
     };
 }
 
@@ -81,6 +84,20 @@ template <class Write>
 void for_each_row(const ExportData& data, Write write) {
     for (const TrialRecord& record : data.trials)
         write(row(record, data.sessions.at(record.session_id)));
+}
+
+void write_export(const ExportData& data, ExportFormat format, std::ostream& out) {
+    switch (format) {
+        case ExportFormat::Csv:
+            write_csv(data, out);
+            return;
+        case ExportFormat::Json:
+            write_json(data, out);
+            return;
+        case ExportFormat::FramesCsv:
+            write_frames_csv(data, out);
+            return;
+    }
 }
 
 Result<bool> check_stream(const std::ostream& out, std::string_view where) {
@@ -95,13 +112,23 @@ Result<bool> check_stream(const std::ostream& out, std::string_view where) {
 }  // namespace
 
 std::string_view export_format_name(ExportFormat format) {
-    return format == ExportFormat::Csv ? "csv" : "json";
+    switch (format) {
+        case ExportFormat::Csv:
+            return "csv";
+        case ExportFormat::Json:
+            return "json";
+        case ExportFormat::FramesCsv:
+            return "frames-csv";
+    }
+    return "csv";
 }
 
 Result<ExportFormat> parse_export_format(std::string_view name) {
     if (name == "csv") return ExportFormat::Csv;
     if (name == "json") return ExportFormat::Json;
-    return Error{"unknown export format '" + std::string(name) + "'; use csv or json"};
+    if (name == "frames-csv") return ExportFormat::FramesCsv;
+    return Error{"unknown export format '" + std::string(name) +
+                 "'; use csv, json or frames-csv (the frame and head log)"};
 }
 
 const std::vector<std::string_view>& export_columns() {
@@ -118,11 +145,13 @@ const std::vector<std::string_view>& export_columns() {
         "protocol",      "protocol_hash",
         "observer",      "runtime",
         "hmd",           "session_status",
+        "anti_aliasing", "ssao",
+        "detail",
     };
     return columns;
 }
 
-Result<ExportData> collect_export(const StudyStore& store) {
+Result<ExportData> collect_export(const StudyStore& store, ExportFormat format) {
     Result<std::vector<TrialRecord>> trials = store.trials();
     if (!trials) return trials.error();
     ExportData data;
@@ -132,6 +161,12 @@ Result<ExportData> collect_export(const StudyStore& store) {
         Result<SessionInfo> info = store.session(record.session_id);
         if (!info) return info.error();
         data.sessions.emplace(record.session_id, std::move(info).value());
+    }
+    if (format != ExportFormat::FramesCsv) return data;
+    for (const auto& [id, info] : data.sessions) {
+        Result<std::vector<FrameRecord>> frames = store.frames(id);
+        if (!frames) return frames.error();
+        data.frames.emplace(id, std::move(frames).value());
     }
     return data;
 }
@@ -260,12 +295,9 @@ void write_json(const ExportData& data, std::ostream& out) {
 }
 
 Result<bool> export_trials(const StudyStore& store, ExportFormat format, std::ostream& out) {
-    Result<ExportData> data = collect_export(store);
+    Result<ExportData> data = collect_export(store, format);
     if (!data) return data.error();
-    if (format == ExportFormat::Csv)
-        write_csv(*data, out);
-    else
-        write_json(*data, out);
+    write_export(*data, format, out);
     out.flush();
     return check_stream(out, "the output stream");
 }
@@ -273,7 +305,7 @@ Result<bool> export_trials(const StudyStore& store, ExportFormat format, std::os
 Result<bool> export_trials(const StudyStore& store, ExportFormat format,
                            const std::filesystem::path& path) {
     // Collect first: a database error leaves no file behind at all.
-    Result<ExportData> data = collect_export(store);
+    Result<ExportData> data = collect_export(store, format);
     if (!data) return data.error();
     const std::string target = path.string();
     const std::string temporary = target + ".tmp";
@@ -286,10 +318,7 @@ Result<bool> export_trials(const StudyStore& store, ExportFormat format,
                          (err != 0 ? std::string(": ") + std::strerror(err) : std::string()) +
                          "; check that the directory exists and is writable."};
         }
-        if (format == ExportFormat::Csv)
-            write_csv(*data, out);
-        else
-            write_json(*data, out);
+        write_export(*data, format, out);
         out.close();
         if (Result<bool> ok = check_stream(out, "'" + temporary + "'"); !ok) {
             ::unlink(temporary.c_str());

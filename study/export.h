@@ -21,9 +21,10 @@
 
 namespace monoplane::study {
 
-enum class ExportFormat { Csv, Json };
+// Csv and Json: the trials; FramesCsv: the frame and head log of every headset session.
+enum class ExportFormat { Csv, Json, FramesCsv };
 
-// "csv" or "json", as the CLI's --format takes them.
+// "csv", "json" or "frames-csv", as the CLI's --format takes them.
 std::string_view export_format_name(ExportFormat format);
 Result<ExportFormat> parse_export_format(std::string_view name);
 
@@ -31,18 +32,24 @@ Result<ExportFormat> parse_export_format(std::string_view name);
 struct ExportData {
     std::vector<TrialRecord> trials;
     std::map<std::int64_t, SessionInfo> sessions;
+    std::map<std::int64_t, std::vector<FrameRecord>> frames;  // FramesCsv only, per session
 };
 
-// Reads every trial and its session. May be called while a study writes (WAL readers do not
-// block the writer); the export is then a consistent snapshot of some moment per query.
-Result<ExportData> collect_export(const StudyStore& store);
+// Reads every trial and its session (and, for FramesCsv, every session's frame log). May be called
+// while a study writes (WAL readers do not block the writer); the export is then a consistent
+// snapshot of some moment per query.
+Result<ExportData> collect_export(const StudyStore& store, ExportFormat format = ExportFormat::Csv);
 
 // The export's column names, in order (CSV header, JSON keys).
 const std::vector<std::string_view>& export_columns();
+// The frame log's columns (frames-csv), in order.
+const std::vector<std::string_view>& frame_export_columns();
 
 // Pure formatting of collected data.
 void write_csv(const ExportData& data, std::ostream& out);
 void write_json(const ExportData& data, std::ostream& out);
+// One row per logged frame, sessions in id order (study/frame_export.cpp).
+void write_frames_csv(const ExportData& data, std::ostream& out);
 
 // Collects and writes. The path form writes a temporary file beside `path` and renames it over
 // `path` only when complete, so a failure never leaves a truncated export.

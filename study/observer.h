@@ -25,7 +25,7 @@ struct TrialPlan {
 };
 
 class Observer {
-public:
+  public:
     virtual ~Observer() = default;
     virtual std::string_view name() const = 0;
     // reference_label: the label showing the protocol's first alternative (the reference);

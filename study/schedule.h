@@ -13,9 +13,9 @@
 namespace monoplane::study {
 
 struct ScheduledTrial {
-    int index = 0;       // position in the session, 0-based, practice trials first
+    int index = 0;  // position in the session, 0-based, practice trials first
     bool practice = false;
-    int block = -1;      // -1 for practice; else the block's position (0 = first scene block)
+    int block = -1;  // -1 for practice; else the block's position (0 = first scene block)
     std::string scene;
     double mono_plane = 0.0;
     // Which alternative each blind label shows: label1_mode = alternatives[label1_alternative].

@@ -5,7 +5,8 @@
 namespace monoplane::study {
 namespace {
 
-// Version 1. docs/data.md describes every table and column; keep the two in step.
+// Version 1 (the first release). docs/data.md describes every table and column; keep the two in
+// step.
 // - Integer nanoseconds of the monotonic clock for durations and event times (DESIGN.md 2).
 // - Render modes and event kinds as their stable text names, so the file reads without the code.
 // - 64-bit unsigned values (seed, protocol hash) as text: SQLite integers are signed.
@@ -81,7 +82,31 @@ CREATE TABLE answers (
 );
 )sql";
 
-constexpr std::array<std::string_view, 1> kMigrations = {kVersion1};
+// Version 2 (issue 17): the render configuration each session used (the protocol's [render]
+// table, with --detail's override), and the frame and head log of headset sessions. Version 1
+// sessions rendered without anti-aliasing or SSAO; their detail was not recorded (NULL: NA).
+constexpr std::string_view kVersion2 = R"sql(
+ALTER TABLE sessions ADD COLUMN render_anti_aliasing TEXT NOT NULL DEFAULT 'none';
+ALTER TABLE sessions ADD COLUMN render_ssao TEXT NOT NULL DEFAULT 'off';
+ALTER TABLE sessions ADD COLUMN render_detail TEXT;
+CREATE TABLE frames (
+    session_id      INTEGER NOT NULL REFERENCES sessions(id),
+    frame           INTEGER NOT NULL CHECK (frame >= 0),
+    trial_index     INTEGER CHECK (trial_index >= 0),
+    shown           TEXT NOT NULL
+                    CHECK (shown IN ('label1', 'label2', 'neutral', 'paused', 'questionnaire',
+                                     'finished')),
+    display_time_ns INTEGER NOT NULL,
+    cpu_ms          REAL NOT NULL CHECK (cpu_ms >= 0),
+    gpu_ms          REAL CHECK (gpu_ms >= 0),
+    missed          INTEGER NOT NULL CHECK (missed IN (0, 1)),
+    head_x          REAL, head_y REAL, head_z REAL,
+    head_qw         REAL, head_qx REAL, head_qy REAL, head_qz REAL,
+    PRIMARY KEY (session_id, frame)
+);
+)sql";
+
+constexpr std::array<std::string_view, 2> kMigrations = {kVersion1, kVersion2};
 
 }  // namespace
 

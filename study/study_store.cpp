@@ -12,6 +12,7 @@
 #include <ctime>
 #include <system_error>
 
+#include "study/frame_queue.h"
 #include "study/store_schema.h"
 #include "study/store_sqlite.h"
 
@@ -176,6 +177,16 @@ std::string_view session_status_name(SessionStatus status) {
 
 struct StudyStore::Impl {
     Connection db;
+    FrameQueue frames;  // the frame log's rows not yet written
+
+    // Inside a durable write's open transaction: the queued frames go with it.
+    Result<bool> write_queued_frames() const { return frames.write(db); }
+    // Commits a durable write's transaction; the frames it carried leave the queue.
+    Result<bool> commit_written(Transaction& tx, std::string_view what) {
+        Result<bool> ok = tx.commit(what);
+        if (ok) frames.clear();
+        return ok;
+    }
 
     Error no_session(std::int64_t id) const {
         return Error{"no session " + std::to_string(id) + " in study database '" + db.path() + "'"};
@@ -370,7 +381,8 @@ Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Sc
         db,
         "INSERT INTO sessions (participant_id, protocol_name, protocol_hash, protocol_text, "
         "seed, block_order, software_version, hmd, runtime, device, observer, started_utc, "
-        "status) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        "status, render_anti_aliasing, render_ssao, render_detail) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     if (!session) return session.error();
     session.value()
         .bind(1, participant_id)
@@ -385,7 +397,14 @@ Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Sc
         .bind(10, info.device)
         .bind(11, info.observer)
         .bind(12, info.started_utc.empty() ? now : info.started_utc)
-        .bind(13, session_status_name(info.status));
+        .bind(13, session_status_name(info.status))
+        .bind(14, info.render.anti_aliasing)
+        .bind(15, info.render.ssao);
+    if (info.render.detail.empty()) {
+        session.value().bind_null(16);
+    } else {
+        session.value().bind(16, info.render.detail);
+    }
     if (Result<bool> ok = session.value().run("adding the session"); !ok) return ok.error();
     const std::int64_t session_id = sqlite3_last_insert_rowid(db.get());
 
@@ -521,8 +540,8 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
         db,
         "SELECT s.id, p.code, p.participant_index, s.protocol_name, s.protocol_hash, "
         "s.protocol_text, s.seed, s.software_version, s.hmd, s.runtime, s.device, s.observer, "
-        "s.started_utc, s.status FROM sessions s JOIN participants p ON p.id = s.participant_id "
-        "WHERE s.id = ?");
+        "s.started_utc, s.status, s.render_anti_aliasing, s.render_ssao, s.render_detail "
+        "FROM sessions s JOIN participants p ON p.id = s.participant_id WHERE s.id = ?");
     if (!stmt) return stmt.error();
     stmt.value().bind(1, session_id);
     Result<bool> found = stmt.value().step("reading a session");
@@ -550,7 +569,30 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
     info.observer = stmt->text(11);
     info.started_utc = stmt->text(12);
     info.status = *status;
+    info.render.anti_aliasing = stmt->text(14);
+    info.render.ssao = stmt->text(15);
+    info.render.detail = stmt->is_null(16) ? "" : stmt->text(16);
     return info;
+}
+
+void StudyStore::queue_frame(std::int64_t session_id, const FrameRecord& frame) {
+    impl_->frames.add(session_id, frame);
+}
+
+void StudyStore::queue_frame_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms) {
+    impl_->frames.add_gpu_ms(session_id, frame, gpu_ms);
+}
+
+Result<bool> StudyStore::flush_frames() {
+    if (impl_->frames.empty()) return true;
+    Result<Transaction> tx = Transaction::begin(impl_->db, "writing the frame log");
+    if (!tx) return tx.error();
+    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    return impl_->commit_written(tx.value(), "writing the frame log");
+}
+
+Result<std::vector<FrameRecord>> StudyStore::frames(std::int64_t session_id) const {
+    return read_frames(impl_->db, session_id);
 }
 
 Result<std::optional<std::int64_t>> StudyStore::latest_unfinished_session() const {
@@ -579,7 +621,11 @@ Result<bool> StudyStore::append_event(std::int64_t session_id, const TrialEvent&
         return Error{"event label " + std::to_string(event.label) + " is not 0, 1 or 2"};
     if (event.frame < -1)
         return Error{"event frame " + std::to_string(event.frame) + " is below -1"};
-    // One INSERT is one transaction; with synchronous = FULL it is on disk when this returns.
+    // One transaction (with the queued frames); with synchronous = FULL it is on disk when this
+    // returns.
+    Result<Transaction> tx = Transaction::begin(impl_->db, "appending an event");
+    if (!tx) return tx.error();
+    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
     Result<Statement> stmt = Statement::prepare(
         impl_->db,
         "INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame) "
@@ -596,7 +642,8 @@ Result<bool> StudyStore::append_event(std::int64_t session_id, const TrialEvent&
                              "' event for trial " + std::to_string(event.trial_index) +
                              " of session " + std::to_string(session_id) +
                              " (the session and trial must exist)";
-    return stmt.value().run(what);
+    if (Result<bool> ok = stmt.value().run(what); !ok) return ok;
+    return impl_->commit_written(tx.value(), what);
 }
 
 Result<bool> StudyStore::record_outcome(std::int64_t session_id, int trial_index,
@@ -649,11 +696,15 @@ Result<bool> StudyStore::record_outcome(std::int64_t session_id, int trial_index
         .bind(10, trial_index);
     if (Result<bool> ok = update.value().run("recording the outcome of " + trial_name); !ok)
         return ok;
-    return tx.value().commit("recording the outcome of " + trial_name);
+    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    return impl_->commit_written(tx.value(), "recording the outcome of " + trial_name);
 }
 
 Result<bool> StudyStore::set_status(std::int64_t session_id, SessionStatus status) {
     const bool ended = status == SessionStatus::Completed || status == SessionStatus::Aborted;
+    Result<Transaction> tx = Transaction::begin(impl_->db, "setting a session's status");
+    if (!tx) return tx.error();
+    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
     Result<Statement> stmt =
         Statement::prepare(impl_->db, "UPDATE sessions SET status = ?, ended_utc = ? WHERE id = ?");
     if (!stmt) return stmt.error();
@@ -668,7 +719,7 @@ Result<bool> StudyStore::set_status(std::int64_t session_id, SessionStatus statu
         !ok)
         return ok;
     if (sqlite3_changes(impl_->db.get()) == 0) return impl_->no_session(session_id);
-    return true;
+    return impl_->commit_written(tx.value(), "setting a session's status");
 }
 
 Result<bool> StudyStore::record_answer(std::int64_t session_id, int item, const std::string& text,
@@ -694,7 +745,8 @@ Result<bool> StudyStore::record_answer(std::int64_t session_id, int item, const 
         .bind(4, answer)
         .bind(5, utc_now_iso8601());
     if (Result<bool> ok = stmt.value().run("recording a questionnaire answer"); !ok) return ok;
-    return tx.value().commit("recording a questionnaire answer");
+    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    return impl_->commit_written(tx.value(), "recording a questionnaire answer");
 }
 
 Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> session_id) const {

@@ -4,6 +4,7 @@
 // loses no confirmed decision and no switch.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -12,6 +13,8 @@
 #include <vector>
 
 #include "common/result.h"
+#include "study/frame_record.h"
+#include "study/protocol.h"
 #include "study/schedule.h"
 #include "study/trial_events.h"
 #include "study/trial_state_machine.h"
@@ -33,9 +36,12 @@ struct SessionInfo {
     std::string hmd;
     std::string runtime;  // "none", "simulated", or the OpenXR runtime's name
     std::string device;
-    std::string observer;  // simulated observer's name, "" for a person
+    std::string observer;     // simulated observer's name, "" for a person
     std::string started_utc;  // ISO 8601 UTC; empty: begin_session stamps the current time
     SessionStatus status = SessionStatus::Running;
+    // What the session rendered with: the protocol's [render] table with the command line's
+    // overrides. Sessions from schema version 1 read as none / off / "" (detail not recorded).
+    RenderSettings render;
 };
 
 // One row of the export: a trial with its outcome (DESIGN.md section 7; docs/data.md).
@@ -64,7 +70,7 @@ struct StoreOptions {
 };
 
 class StudyStore {
-public:
+  public:
     // Opens or creates the database; creates it readable by its owner only (0600). Errors: an
     // unwritable or locked file, a file that is no SQLite database, a schema newer than this
     // build knows. Migrates older schemas forward.
@@ -73,7 +79,7 @@ public:
                                                     const StoreOptions& options);
     ~StudyStore();
 
-    static constexpr int kSchemaVersion = 1;
+    static constexpr int kSchemaVersion = 2;
 
     // Starts a session: refuses a participant code that already has a session (use resume).
     // Stores the protocol text and hash, the seed and the whole schedule before the first trial.
@@ -88,18 +94,29 @@ public:
     // The number of sessions so far: the next participant's Latin square row.
     Result<int> participant_count() const;
 
+    // The frame log: rows are queued in memory and written in the transaction of the next
+    // durable write below (or of flush_frames), so every committed event has every frame
+    // queued before it committed with it. A frame's GPU time, known frames later, is queued
+    // the same way and fills the stored row.
+    void queue_frame(std::int64_t session_id, const FrameRecord& frame);
+    void queue_frame_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms);
+    Result<bool> flush_frames();
+    Result<std::vector<FrameRecord>> frames(std::int64_t session_id) const;
+
     // Durable when it returns (one transaction each).
     Result<bool> append_event(std::int64_t session_id, const TrialEvent& event);
-    Result<bool> record_outcome(std::int64_t session_id, int trial_index, const TrialOutcome& outcome);
+    Result<bool> record_outcome(std::int64_t session_id, int trial_index,
+                                const TrialOutcome& outcome);
     Result<bool> set_status(std::int64_t session_id, SessionStatus status);
-    Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text, int answer);
+    Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
+                               int answer);
 
     Result<std::vector<TrialRecord>> trials(std::optional<std::int64_t> session_id = {}) const;
     Result<std::vector<TrialEvent>> events(std::int64_t session_id) const;
     // The questionnaire answers of a session, by item (the latest answer to each item).
     Result<std::vector<QuestionnaireAnswer>> answers(std::int64_t session_id) const;
 
-private:
+  private:
     struct Impl;
     explicit StudyStore(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;

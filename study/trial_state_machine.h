@@ -22,16 +22,16 @@ namespace monoplane::study {
 enum class TrialState { NotStarted, Viewing, Paused, Decided, Aborted };
 
 struct TrialOutcome {
-    int choice = 0;              // label confirmed, 1 or 2 (0: undecided)
+    int choice = 0;  // label confirmed, 1 or 2 (0: undecided)
     RenderMode chosen_mode = RenderMode::Stereo;
-    bool valid = false;          // both labels were viewed before the decision
+    bool valid = false;  // both labels were viewed before the decision
     int switches = 0;
     std::int64_t time_on_label_ns[2] = {0, 0};  // visible time of label 1 and label 2
     std::int64_t decision_time_ns = 0;          // first visibility to confirmation, pauses excluded
 };
 
 class TrialStateMachine {
-public:
+  public:
     TrialStateMachine(const ScheduledTrial& trial, bool require_both_viewed);
 
     // Requests; the returned events (if any) must be logged before the next frame starts.
@@ -60,7 +60,7 @@ public:
     const ScheduledTrial& trial() const { return trial_; }
     const TrialOutcome& outcome() const { return outcome_; }
 
-private:
+  private:
     ScheduledTrial trial_;
     bool require_both_viewed_;
     TrialState state_ = TrialState::NotStarted;

@@ -118,6 +118,10 @@ void run_study(const StudyOptions& o, const GlobalOptions& global) {
     info.device = "none";
     const std::string observer_name = observer_for(o);
     info.observer = observer_name == "none" ? "" : observer_name;
+    // The protocol's [render] table, --detail overriding its detail; stored with the session,
+    // which a headset loop (and a resume) renders with.
+    info.render = protocol.render;
+    if (!o.headset_options.detail.empty()) info.render.detail = o.headset_options.detail;
     std::unique_ptr<study::Observer> observer;
     if (observer_name != "none")
         observer = study::make_observer(observer_name, seed).value_or_throw();
@@ -195,8 +199,10 @@ void add_headset_options(CLI::App* cmd, StudyOptions& o) {
     cmd->add_option("--window", h.window,
                     "Experimenter window: auto (when a display exists), on or off")
         ->capture_default_str();
-    cmd->add_option("--detail", h.detail, "Scene detail: test, low, medium, high")
-        ->capture_default_str();
+    cmd->add_option("--detail", h.detail,
+                    "Scene detail (test, low, medium, high, ultra) instead of the protocol's "
+                    "[render] detail; stored with the session (study run only: a resume renders "
+                    "as the session began)");
     cmd->add_option("--resolution-scale", h.resolution_scale,
                     "Eye size relative to the runtime's recommendation")
         ->capture_default_str()
@@ -260,7 +266,10 @@ void add_study_command(CLI::App& root, const GlobalOptions& global) {
 
     CLI::App* exp = study->add_subcommand("export", "Export the trials as CSV or JSON");
     exp->add_option("--db", options->db, "Study database (SQLite)")->required();
-    exp->add_option("--format", options->format, "csv or json")->capture_default_str();
+    exp->add_option(
+           "--format", options->format,
+           "csv or json (the trials), or frames-csv (the frame and head log of headset sessions)")
+        ->capture_default_str();
     exp->add_option("--out", options->out, "Output file")->required();
     exp->callback([options] { export_study(*options); });
 }

@@ -13,6 +13,8 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "app/commands/headset_frame_log.h"
+#include "app/commands/image_quality_options.h"
 #include "app/commands/validation_report.h"
 #include "app/headset/eye_compositor.h"
 #include "app/headset/frame_times.h"
@@ -122,17 +124,26 @@ modes::RenderModeChoice renderer_mode(study::RenderMode mode) {
 class StudyRenderers {
   public:
     StudyRenderers(const vk_core::Context& ctx, const study::Protocol& protocol,
-                   vk::Extent2D extent, scenes::Detail detail) {
+                   vk::Extent2D extent, const study::RenderSettings& render) {
         const double nearest =
             *std::min_element(protocol.mono_planes.begin(), protocol.mono_planes.end());
+        const auto detail = scenes::parse_detail(render.detail);
+        if (!detail) {
+            throw UserError("scene detail '" + render.detail +
+                            "': use test, low, medium, high or ultra");
+        }
         modes::RendererOptions options;
         options.read_back = false;  // the eyes go to the swapchain on the GPU
+        // The session's [render] table (validated with the protocol).
+        apply_image_quality_flags(render.anti_aliasing, render.ssao, options);
+        std::cerr << "rendering with anti-aliasing " << render.anti_aliasing << ", SSAO "
+                  << render.ssao << ", detail " << render.detail << "\n";
         const std::uint64_t bytes_before = vk_core::live_device_bytes();
         std::uint64_t scene_bytes = 0;
         for (const std::string& name : protocol.scenes) {
             std::cerr << "preparing " << name << "\n";
             auto scene = std::make_unique<scenes::Scene>(
-                scenes::generate_scene(*scenes::parse_scene_id(name), detail));
+                scenes::generate_scene(*scenes::parse_scene_id(name), *detail));
             // Geometry, chunk table and shadow map once per scene, for all its alternatives.
             const std::uint64_t before_scene = vk_core::live_device_bytes();
             auto resources = std::make_shared<modes::SceneResources>(ctx, *scene, options.shadow);
@@ -157,6 +168,11 @@ class StudyRenderers {
     }
     modes::ModeRenderer& renderer(const std::string& scene, study::RenderMode mode) {
         return *renderers_.at({scene, mode});
+    }
+    // Every renderer, e.g. to finish their frames in flight at the end of a session.
+    template <class F>
+    void for_each(F f) {
+        for (auto& [key, renderer] : renderers_) f(*renderer);
     }
     const rig::Pose& seat(const std::string& scene) const {
         const scenes::Viewpoint* v = scenes_.at(scene)->find_viewpoint("default");
@@ -272,9 +288,12 @@ study::SessionStatus run_headset_session(
     if (want_window) {
         experimenter = window::ExperimenterWindow::create(*ctx, {}, extent).value_or_throw();
     }
-    const auto detail = scenes::parse_detail(options.detail);
-    if (!detail) throw UserError("--detail " + options.detail + ": use test, low, medium or high");
-    StudyRenderers renderers(*ctx, protocol, extent, *detail);
+    const std::int64_t session_id = begin(headset->runtime_name(), ctx->device_info().name);
+    const study::SessionInfo info = store.session(session_id).value_or_throw();
+    // Sessions of schema version 1 recorded no detail: they rendered at the default, low.
+    study::RenderSettings render = info.render;
+    if (render.detail.empty()) render.detail = "low";
+    StudyRenderers renderers(*ctx, protocol, extent, render);
     headset::EyeCompositor compositor(*ctx);
     headset::TextStyle label_style;
     label_style.scale = 2;
@@ -283,8 +302,6 @@ study::SessionStatus run_headset_session(
     compositor.set_overlay("label2", headset::render_text({"2"}, label_style));
     compositor.set_overlay("paused", headset::render_text({"Paused"}, {}));
 
-    const std::int64_t session_id = begin(headset->runtime_name(), ctx->device_info().name);
-    const study::SessionInfo info = store.session(session_id).value_or_throw();
     std::deque<std::string> log_tail;
     study::LiveOptions live_options;
     live_options.neutral_ns = static_cast<std::int64_t>(options.neutral_s * 1e9);
@@ -305,6 +322,7 @@ study::SessionStatus run_headset_session(
     // frames ride in their renderer's ring. Neither waits for the GPU after submitting.
     vk_core::FrameRing compositor_frames(*ctx);
     headset::FrameTimes times;
+    HeadsetFrameLog frame_log(store, session_id);
     using Clock = std::chrono::steady_clock;
     auto step_start = Clock::now();
     // Charges the time since the last step to `step`.
@@ -406,6 +424,9 @@ study::SessionStatus run_headset_session(
         const study::LiveScreen screen = live->screen();
         bool rendered = false;
         bool scene_frame = false;
+        std::optional<rig::Pose> rendered_head;
+        modes::ModeRenderer* scene_renderer = nullptr;
+        std::vector<profile::FrameStats> completed;
         if (frame.should_render) {
             std::array<vk::Image, 2> targets;
             for (int e = 0; e < 2; ++e) targets[e] = headset->acquire_eye_image(e).value_or_throw();
@@ -452,10 +473,13 @@ study::SessionStatus run_headset_session(
             // no wait for it (the ring waits only for the frame two before).
             if (renderer) {
                 renderer->submit_frame(inputs, record_eyes);
-                for (const profile::FrameStats& stats : renderer->take_completed()) {
+                completed = renderer->take_completed();
+                for (const profile::FrameStats& stats : completed) {
                     times.add_gpu_ms(stats.gpu_frame_ms);
                 }
                 scene_frame = true;
+                scene_renderer = renderer;
+                rendered_head = inputs.views.head;
             } else {
                 const std::uint32_t slot = compositor_frames.begin();
                 record_eyes(compositor_frames.commands(slot));
@@ -467,7 +491,14 @@ study::SessionStatus run_headset_session(
         headset->end_frame(frame).value_or_throw();
         charge(headset::FrameStep::kOpenXrEnd);
         // What the participant sees changes only with a frame that was shown.
-        if (rendered) live->frame_presented(frame.index, now).value_or_throw();
+        if (rendered) {
+            const double cpu_ms =
+                std::chrono::duration<double, std::milli>(Clock::now() - frame_start).count();
+            frame_log.displayed(frame, screen, rendered_head, cpu_ms, scene_renderer);
+            // After displayed(): a renderer that waited may return this very frame's time.
+            frame_log.completed(scene_renderer, completed);
+            live->frame_presented(frame.index, now).value_or_throw();
+        }
         charge(headset::FrameStep::kLog);
 
         const study::LiveProgress progress = live->progress();
@@ -538,6 +569,8 @@ study::SessionStatus run_headset_session(
         std::cerr << "wrote " << options.screenshot << "\n";
     }
     if (times.scene_frames() > 0) std::cerr << times.summary();
+    renderers.for_each([&](modes::ModeRenderer& r) { frame_log.completed(&r, r.finish_frames()); });
+    frame_log.flush();
     ctx->device().waitIdle();
     experimenter.reset();
     headset->destroy_session();

@@ -20,7 +20,7 @@ namespace monoplane::app {
 struct HeadsetStudyOptions {
     std::string headset;                 // "simulated" or "openxr"
     std::string window = "auto";         // auto (when a display exists), on, off
-    std::string detail = "low";          // scene detail
+    std::string detail;                  // scene detail; empty: the protocol's [render] detail
     double resolution_scale = 1.0;       // of the runtime's recommended eye size
     double neutral_s = 1.0;              // neutral screen between trials
     bool trace = false;                  // each durable write on stdout

@@ -500,6 +500,7 @@ Result<HeadsetFrame> OpenXrHeadset::begin_frame() {
     HeadsetFrame frame;
     frame.index = ++x.frame_index;
     frame.display_time_ns = state.predictedDisplayTime;
+    frame.display_period_ns = state.predictedDisplayPeriod;
     frame.should_render = state.shouldRender == XR_TRUE;
     XrViewLocateInfo locate{XR_TYPE_VIEW_LOCATE_INFO};
     locate.viewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;

@@ -45,6 +45,7 @@ struct EyeView {
 struct HeadsetFrame {
     std::int64_t index = 0;            // 0-based count of xrWaitFrame calls in this session
     std::int64_t display_time_ns = 0;  // predicted display time (XrTime, runtime's clock)
+    std::int64_t display_period_ns = 0;  // the runtime's predicted display period
     bool should_render = false;
     bool views_valid = false;  // orientation and position tracked
     std::array<EyeView, 2> views;

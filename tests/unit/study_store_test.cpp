@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "study/store_schema.h"
 #include "study/study_store.h"
 
 namespace monoplane::study {
@@ -176,9 +177,10 @@ TEST_F(StudyStoreTest, UsesWalAndRecordsTheSchemaVersion) {
     RawDb raw(db_);
     EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
     EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
-    EXPECT_EQ(StudyStore::kSchemaVersion, 1);
+    EXPECT_EQ(StudyStore::kSchemaVersion, 2);
     EXPECT_EQ(raw.integer("PRAGMA application_id"), 0x4D505354);
-    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 5);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"),
+              6);  // version 2 added frames
 }
 
 TEST_F(StudyStoreTest, FilesAreReadableByTheOwnerOnly) {
@@ -425,15 +427,15 @@ TEST_F(StudyStoreTest, RefusesANewerSchemaWithoutTouchingIt) {
     { ASSERT_TRUE(open_store()); }
     {
         RawDb raw(db_);
-        ASSERT_EQ(raw.exec("PRAGMA user_version = 2"), SQLITE_OK);
+        ASSERT_EQ(raw.exec("PRAGMA user_version = 3"), SQLITE_OK);
     }
     const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
     ASSERT_FALSE(store.ok());
     const std::string& message = store.error().message;
-    EXPECT_TRUE(contains(message, "schema version 2, newer than this build")) << message;
+    EXPECT_TRUE(contains(message, "schema version 3, newer than this build")) << message;
     EXPECT_TRUE(contains(message, db_.string())) << message;
     RawDb raw(db_);
-    EXPECT_EQ(raw.integer("PRAGMA user_version"), 2);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 3);
     EXPECT_TRUE(fs::exists(db_));
 }
 
@@ -571,6 +573,144 @@ TEST_F(StudyStoreTest, AFullDiskFailsTheWriteAndKeepsEarlierData) {
     EXPECT_EQ(raw.integer("SELECT count(*) FROM trials"), 8);
     EXPECT_EQ(raw.text("PRAGMA integrity_check"), "ok");
     ASSERT_TRUE(store->append_event(id, TrialEvent{EventKind::Confirmed, 2, 1, 5, 7}).ok());
+}
+
+}  // namespace
+}  // namespace monoplane::study
+
+namespace monoplane::study {
+namespace {
+
+FrameRecord make_frame(std::int64_t index, std::optional<int> trial) {
+    FrameRecord f;
+    f.frame = index;
+    f.trial_index = trial;
+    f.shown = trial ? "label1" : "neutral";
+    f.display_time_ns = 1'000'000'000 + index * 11'111'111;
+    f.cpu_ms = 2.5 + static_cast<double>(index);
+    f.missed = index == 3;
+    if (trial) f.head = std::array<double, 7>{0.25, 1.6, -3.0, 0.5, 0.5, -0.5, 0.5};
+    return f;
+}
+
+TEST_F(StudyStoreTest, TheFrameLogBecomesDurableWithTheNextEvent) {
+    auto store = open_store();
+    const std::int64_t id = begin(*store, "P01");
+    store->queue_frame(id, make_frame(2, std::nullopt));
+    store->queue_frame(id, make_frame(3, 0));
+    RawDb raw(db_);
+    // Queued rows wait in memory: nothing on disk yet.
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames"), 0);
+    const Result<bool> shown = store->append_event(id, {EventKind::Shown, 0, 1, 1'050, 3});
+    ASSERT_TRUE(shown.ok()) << shown.error().message;
+    // The event's transaction carried them.
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames"), 2);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE gpu_ms IS NULL"), 2);
+    // A GPU time known later fills its row; flush_frames writes without an event.
+    store->queue_frame_gpu_ms(id, 3, 7.25);
+    store->queue_frame(id, make_frame(4, 0));
+    ASSERT_TRUE(store->flush_frames().ok());
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames"), 3);
+    const Result<std::vector<FrameRecord>> frames = store->frames(id);
+    ASSERT_TRUE(frames.ok()) << frames.error().message;
+    ASSERT_EQ(frames->size(), 3u);
+    const FrameRecord& neutral = (*frames)[0];
+    EXPECT_EQ(neutral.frame, 2);
+    EXPECT_FALSE(neutral.trial_index);
+    EXPECT_EQ(neutral.shown, "neutral");
+    EXPECT_FALSE(neutral.head);
+    EXPECT_FALSE(neutral.gpu_ms);
+    const FrameRecord& trial = (*frames)[1];
+    EXPECT_EQ(trial.trial_index, 0);
+    EXPECT_EQ(trial.display_time_ns, 1'033'333'333);
+    EXPECT_EQ(trial.cpu_ms, 5.5);
+    ASSERT_TRUE(trial.gpu_ms);
+    EXPECT_EQ(*trial.gpu_ms, 7.25);
+    EXPECT_TRUE(trial.missed);
+    ASSERT_TRUE(trial.head);
+    EXPECT_EQ(*trial.head, (std::array<double, 7>{0.25, 1.6, -3.0, 0.5, 0.5, -0.5, 0.5}));
+    EXPECT_FALSE((*frames)[2].missed);
+    // A bad row fails the write that carries it, and the event with it: nothing half-written.
+    FrameRecord bad = make_frame(5, 0);
+    bad.shown = "sideways";
+    store->queue_frame(id, bad);
+    EXPECT_FALSE(store->append_event(id, {EventKind::Switched, 0, 2, 1'060, 5}).ok());
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM events WHERE kind = 'switched'"), 0);
+}
+
+TEST_F(StudyStoreTest, StoresTheSessionsRenderSettings) {
+    auto store = open_store();
+    SessionInfo info = make_info("P01");
+    info.render = {"taa", "stereo", "medium"};
+    const Result<std::int64_t> id = store->begin_session(info, make_test_schedule(0));
+    ASSERT_TRUE(id.ok()) << id.error().message;
+    EXPECT_EQ(store->session(*id)->render, (RenderSettings{"taa", "stereo", "medium"}));
+    info = make_info("P02");
+    info.render.detail.clear();  // not recorded: NULL, read back as ""
+    const Result<std::int64_t> second = store->begin_session(info, make_test_schedule(1));
+    ASSERT_TRUE(second.ok()) << second.error().message;
+    EXPECT_EQ(store->session(*second)->render, (RenderSettings{"none", "off", ""}));
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sessions WHERE render_detail IS NULL"), 1);
+}
+
+// A database written by the first release (schema version 1, made here from its schema and
+// rows as that release wrote them) opens, migrates, resumes and exports.
+TEST_F(StudyStoreTest, MigratesAVersion1DatabaseForward) {
+    {
+        RawDb raw(db_);
+        ASSERT_EQ(raw.exec(std::string(store_migrations()[0])), SQLITE_OK);
+        ASSERT_EQ(raw.exec("PRAGMA application_id = " + std::to_string(kStoreApplicationId)),
+                  SQLITE_OK);
+        ASSERT_EQ(raw.exec("PRAGMA user_version = 1"), SQLITE_OK);
+        const char* rows = R"sql(
+INSERT INTO participants VALUES (1, 'P07', 0, '2026-11-01T10:00:00Z');
+INSERT INTO sessions (id, participant_id, protocol_name, protocol_hash, protocol_text, seed,
+    block_order, software_version, hmd, runtime, device, observer, started_utc, status)
+    VALUES (1, 1, 'demo', '0000000000000001', 'name = "demo"', '11', 'beams',
+            'monoplane 0.1.0', 'vive', 'none', 'none', 'default', '2026-11-01T10:00:01Z',
+            'running');
+INSERT INTO trials (session_id, trial_index, practice, block, scene, mono_plane,
+    label1_alternative, label1_mode, label2_mode, decided, choice, chosen_mode, valid,
+    switches, time_label1_ns, time_label2_ns, decision_time_ns, decided_utc)
+    VALUES (1, 0, 0, 0, 'beams', 8.0, 0, 'stereo', 'hybrid', 1, 2, 'hybrid', 1, 3,
+            1000000000, 2000000000, 3000000000, '2026-11-01T10:00:05Z');
+INSERT INTO trials (session_id, trial_index, practice, block, scene, mono_plane,
+    label1_alternative, label1_mode, label2_mode)
+    VALUES (1, 1, 0, 0, 'beams', 3.0, 1, 'hybrid', 'stereo');
+INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame)
+    VALUES (1, 0, 'shown', 1, 5, -1);
+)sql";
+        ASSERT_EQ(raw.exec(rows), SQLITE_OK) << sqlite3_errmsg(raw.db);
+    }
+    auto store = open_store();
+    ASSERT_TRUE(store);
+    {
+        RawDb raw(db_);
+        EXPECT_EQ(raw.integer("PRAGMA user_version"), 2);
+    }
+    const Result<SessionInfo> info = store->session(1);
+    ASSERT_TRUE(info.ok()) << info.error().message;
+    EXPECT_EQ(info->participant_code, "P07");
+    EXPECT_EQ(info->render, (RenderSettings{"none", "off", ""}));  // what version 1 rendered
+    // Resume: the schedule and the first undecided trial.
+    ASSERT_TRUE(store->load_schedule(1).ok());
+    EXPECT_EQ(*store->first_undecided_trial(1), 1);
+    TrialOutcome outcome;
+    outcome.choice = 1;
+    outcome.chosen_mode = RenderMode::Hybrid;
+    outcome.valid = true;
+    ASSERT_TRUE(store->record_outcome(1, 1, outcome).ok());
+    const Result<std::vector<TrialRecord>> trials = store->trials();
+    ASSERT_TRUE(trials.ok());
+    ASSERT_EQ(trials->size(), 2u);
+    EXPECT_TRUE((*trials)[0].decided);
+    EXPECT_EQ((*trials)[0].outcome.switches, 3);
+    EXPECT_TRUE((*trials)[1].decided);
+    // The new table works on the migrated file.
+    store->queue_frame(1, make_frame(1, 1));
+    ASSERT_TRUE(store->flush_frames().ok());
+    EXPECT_EQ(store->frames(1)->size(), 1u);
 }
 
 }  // namespace

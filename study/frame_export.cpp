@@ -1,0 +1,51 @@
+// The frame and head log as CSV (`study export --format frames-csv`; docs/data.md): one row per
+// displayed frame of every headset session, with the same conventions as the trial export
+// (TRUE/FALSE, NA, '.' as the decimal point).
+#include <string>
+
+#include "study/export.h"
+
+namespace monoplane::study {
+namespace {
+
+std::string optional_number(const std::optional<double>& value) {
+    return value ? number_text(*value) : "NA";
+}
+
+}  // namespace
+
+const std::vector<std::string_view>& frame_export_columns() {
+    static const std::vector<std::string_view> columns = {
+        "participant", "session", "frame",   "trial_index", "shown",  "display_time_s",
+        "cpu_ms",      "gpu_ms",  "missed",  "head_x",      "head_y", "head_z",
+        "head_qw",     "head_qx", "head_qy", "head_qz"};
+    return columns;
+}
+
+void write_frames_csv(const ExportData& data, std::ostream& out) {
+    std::string header;
+    for (std::string_view column : frame_export_columns()) {
+        if (!header.empty()) header += ',';
+        header += column;
+    }
+    out << header << '\n';
+    for (const auto& [session_id, frames] : data.frames) {
+        const SessionInfo& session = data.sessions.at(session_id);
+        const std::string identity =
+            csv_field(session.participant_code) + ',' + std::to_string(session_id) + ',';
+        for (const FrameRecord& f : frames) {
+            std::string line = identity + std::to_string(f.frame) + ',';
+            line += (f.trial_index ? std::to_string(*f.trial_index) : "NA") + ',';
+            line += csv_field(f.shown) + ',';
+            line += seconds_text(f.display_time_ns) + ',';
+            line += number_text(f.cpu_ms) + ',' + optional_number(f.gpu_ms) + ',';
+            line += f.missed ? "TRUE" : "FALSE";
+            for (std::size_t i = 0; i < 7; ++i) {
+                line += ',' + (f.head ? number_text((*f.head)[i]) : std::string("NA"));
+            }
+            out << line << '\n';
+        }
+    }
+}
+
+}  // namespace monoplane::study

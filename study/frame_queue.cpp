@@ -1,0 +1,102 @@
+#include "study/frame_queue.h"
+
+#include <string>
+
+namespace monoplane::study {
+
+using sqlite::Statement;
+
+void FrameQueue::add(std::int64_t session_id, const FrameRecord& frame) {
+    rows_.push_back({session_id, frame});
+}
+
+void FrameQueue::add_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms) {
+    gpu_.push_back({session_id, frame, gpu_ms});
+}
+
+void FrameQueue::clear() {
+    rows_.clear();
+    gpu_.clear();
+}
+
+Result<bool> FrameQueue::write(const sqlite::Connection& db) const {
+    if (empty()) return true;
+    Result<Statement> insert = Statement::prepare(
+        db,
+        "INSERT OR REPLACE INTO frames (session_id, frame, trial_index, shown, display_time_ns, "
+        "cpu_ms, gpu_ms, missed, head_x, head_y, head_z, head_qw, head_qx, head_qy, head_qz) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    if (!insert) return insert.error();
+    for (const Row& row : rows_) {
+        const FrameRecord& f = row.frame;
+        Statement& s = insert.value();
+        s.reset();
+        s.bind(1, row.session_id).bind(2, f.frame);
+        if (f.trial_index) {
+            s.bind(3, *f.trial_index);
+        } else {
+            s.bind_null(3);
+        }
+        s.bind(4, f.shown).bind(5, f.display_time_ns).bind(6, f.cpu_ms);
+        if (f.gpu_ms) {
+            s.bind(7, *f.gpu_ms);
+        } else {
+            s.bind_null(7);
+        }
+        s.bind(8, f.missed ? 1 : 0);
+        for (int i = 0; i < 7; ++i) {
+            if (f.head) {
+                s.bind(9 + i, (*f.head)[static_cast<std::size_t>(i)]);
+            } else {
+                s.bind_null(9 + i);
+            }
+        }
+        const std::string what = "logging frame " + std::to_string(f.frame) + " of session " +
+                                 std::to_string(row.session_id);
+        if (Result<bool> ok = s.run(what); !ok) return ok;
+    }
+    Result<Statement> update =
+        Statement::prepare(db, "UPDATE frames SET gpu_ms = ? WHERE session_id = ? AND frame = ?");
+    if (!update) return update.error();
+    for (const GpuTime& g : gpu_) {
+        update.value().reset();
+        update.value().bind(1, g.gpu_ms).bind(2, g.session_id).bind(3, g.frame);
+        if (Result<bool> ok = update.value().run("logging a frame's GPU time"); !ok) return ok;
+    }
+    return true;
+}
+
+Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,
+                                             std::int64_t session_id) {
+    Result<Statement> stmt = Statement::prepare(
+        db,
+        "SELECT frame, trial_index, shown, display_time_ns, cpu_ms, gpu_ms, missed, head_x, "
+        "head_y, head_z, head_qw, head_qx, head_qy, head_qz FROM frames WHERE session_id = ? "
+        "ORDER BY frame");
+    if (!stmt) return stmt.error();
+    stmt.value().bind(1, session_id);
+    std::vector<FrameRecord> frames;
+    for (;;) {
+        Result<bool> row = stmt.value().step("reading the frame log");
+        if (!row) return row.error();
+        if (!*row) break;
+        const Statement& s = stmt.value();
+        FrameRecord f;
+        f.frame = s.int64(0);
+        if (!s.is_null(1)) f.trial_index = s.int32(1);
+        f.shown = s.text(2);
+        f.display_time_ns = s.int64(3);
+        f.cpu_ms = s.real(4);
+        if (!s.is_null(5)) f.gpu_ms = s.real(5);
+        f.missed = s.int64(6) != 0;
+        if (!s.is_null(7)) {
+            std::array<double, 7> head{};
+            for (int i = 0; i < 7; ++i) head[static_cast<std::size_t>(i)] = s.real(7 + i);
+            f.head = head;
+        }
+        frames.push_back(std::move(f));
+    }
+    return frames;
+}
+
+}  // namespace monoplane::study

@@ -1,0 +1,27 @@
+// A row of the frame and head log (DESIGN.md section 7; docs/data.md, table frames).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace monoplane::study {
+
+// One displayed frame of a headset session: the frame and head log (DESIGN.md section 7).
+struct FrameRecord {
+    std::int64_t frame = 0;          // the runtime's frame index (HeadsetFrame::index)
+    std::optional<int> trial_index;  // none outside a trial
+    std::string shown;  // label1 | label2 | neutral | paused | questionnaire | finished
+    std::int64_t display_time_ns = 0;  // the runtime's predicted display time
+    double cpu_ms = 0.0;               // host time of the frame, xrWaitFrame to xrEndFrame
+    std::optional<double> gpu_ms;      // the renderer's timestamps; none without a scene
+    // The display slot before this frame went without a new frame (the runtime showed the
+    // previous one again): predicted display times more than 1.5 periods apart.
+    bool missed = false;
+    // The head as the renderer placed it (scene space): x, y, z in metres, then the orientation
+    // quaternion w, x, y, z; none while tracking was lost.
+    std::optional<std::array<double, 7>> head;
+};
+
+}  // namespace monoplane::study
