@@ -33,6 +33,11 @@ struct TrialRow {
     int switches = 0;
     double decision_time_s = 0.0;
     std::string first_scene;  // scene of the session's first data block (order effects)
+    // Headset sessions' frame log (database input only; 0 without one): frames the trial showed
+    // and how many of them missed their display slot; the protocol's threshold for flagging.
+    int frames_shown = 0;
+    int frames_missed = 0;
+    double missed_frame_threshold = 0.05;
 };
 
 struct AnswerRow {

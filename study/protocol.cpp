@@ -28,10 +28,19 @@
 namespace monoplane::study {
 namespace {
 
-constexpr std::array<std::string_view, 12> kTopLevelKeys = {
-    "name",  "scenes",      "mono_planes",         "alternatives",
-    "order", "first_scene", "require_both_viewed", "practice_trials",
-    "near",  "far",         "questionnaire",       "render"};
+constexpr std::array<std::string_view, 13> kTopLevelKeys = {"name",
+                                                            "scenes",
+                                                            "mono_planes",
+                                                            "alternatives",
+                                                            "order",
+                                                            "first_scene",
+                                                            "require_both_viewed",
+                                                            "practice_trials",
+                                                            "near",
+                                                            "far",
+                                                            "questionnaire",
+                                                            "render",
+                                                            "missed_frame_threshold"};
 constexpr std::array<std::string_view, 2> kQuestionnaireKeys = {"items", "scale_points"};
 constexpr std::array<std::string_view, 3> kRenderKeys = {"anti_aliasing", "ssao", "detail"};
 // The render command's names (renderer/plan/render_choices.h, scenes/generate.h).
@@ -337,6 +346,19 @@ void read_session_options(const TomlScope& root, Protocol& protocol, TomlProblem
             protocol.require_both_viewed = flag->get();
         } else {
             report_wrong_type(*node, "require_both_viewed", "a boolean (true or false)", problems);
+        }
+    }
+    if (const toml::node* node = root.table.get("missed_frame_threshold")) {
+        const std::optional<double> share = node->value<double>();
+        if (!share || node->is_boolean() || node->is_string()) {
+            report_wrong_type(*node, "missed_frame_threshold",
+                              "a number, the share of a trial's frames (e.g. 0.05)", problems);
+        } else if (!(*share >= 0.0 && *share <= 1.0)) {
+            problems.add(node->source(), toml_key_prefix("missed_frame_threshold") + "is " +
+                                             format_number(*share) +
+                                             "; a share of frames lies in [0, 1]");
+        } else {
+            protocol.missed_frame_threshold = *share;
         }
     }
     if (const toml::node* node = root.table.get("practice_trials")) {

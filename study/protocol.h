@@ -56,6 +56,9 @@ struct Protocol {
     double far = 1000.0;
     Questionnaire questionnaire;
     RenderSettings render;
+    // A trial whose frame log shows more than this share of its displayed frames missing their
+    // display slot is flagged by `analyze` (a stutter participants may have noticed).
+    double missed_frame_threshold = 0.05;
     std::string source;           // file path or "<text>"
     std::string text;             // the file's text, stored with every session
     std::uint64_t text_hash = 0;  // FNV-1a 64 of text: identifies the protocol version

@@ -198,6 +198,33 @@ std::string distance_description(const LogisticOptions& options) {
                                  : "the mono-plane distance m (metres)";
 }
 
+// The frame log's paragraph: how many data trials a headset recorded frame by frame, and a table
+// of those that missed more display slots than the protocol's missed_frame_threshold.
+std::string frame_timing_html(const FrameTimingSummary& f) {
+    std::string h = "<h3>Frame timing</h3>\n";
+    if (f.trials_with_log == 0) {
+        return h +
+               "<p>No data trial has a frame log (headless sessions and CSV input record "
+               "none).</p>\n";
+    }
+    h += "<p>" + std::to_string(f.trials_with_log) + " data trials have a frame log; <b>" +
+         std::to_string(f.flagged) +
+         "</b> missed more of their display slots than the protocol allows "
+         "(missed_frame_threshold). Flagged trials stay in the analysis.</p>\n";
+    if (f.flagged == 0) return h;
+    Table t;
+    t.header = {"participant", "session", "trial", "frames", "missed", "share", "threshold"};
+    t.numeric = {false, true, true, true, true, true, true};
+    for (const TrialFrameTiming& trial : f.trials) {
+        if (!trial.flagged) continue;
+        t.rows.push_back({xml_escaped(trial.participant), std::to_string(trial.session_id),
+                          std::to_string(trial.trial_index), std::to_string(trial.frames),
+                          std::to_string(trial.missed), percent(trial.share),
+                          percent(trial.threshold)});
+    }
+    return h + t.html();
+}
+
 }  // namespace
 
 AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
@@ -240,6 +267,7 @@ AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
     r.trials = static_cast<int>(data.trials.size());
 
     const std::vector<TrialRow> kept = analysable_trials(data.trials, r.exclusions);
+    r.frame_timing = summarize_frame_timing(data.trials);
     r.data_trials = r.trials - r.exclusions.practice;
     std::set<std::string> references, tests, analysed_participants;
     for (const TrialRow& t : kept) {
@@ -369,6 +397,7 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
              "in the order practice, undecided, invalid. papers/000 excluded 48 of 1410 "
              "decisions as invalid.</p>\n";
     }
+    h += frame_timing_html(r.frame_timing);
 
     // Choices.
     h += "<h2 id=\"choices\">Choices</h2>\n";
@@ -528,6 +557,29 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
 namespace {
 
 // An interval as [lower, upper].
+// The frame log's verdict per trial: how many data trials have one, and which missed more of
+// their display slots than the protocol allows (they stay in the analysis; the reader decides).
+void frame_timing_json(JsonWriter& json, const FrameTimingSummary& f) {
+    json.begin_object("frame_timing")
+        .value("trials_with_log", f.trials_with_log)
+        .value("flagged", f.flagged);
+    json.begin_array("trials");
+    for (const TrialFrameTiming& t : f.trials) {
+        json.begin_object()
+            .value("participant", t.participant)
+            .value("session", t.session_id)
+            .value("trial_index", t.trial_index)
+            .value("frames", t.frames)
+            .value("missed", t.missed)
+            .value("missed_share", t.share)
+            .value("threshold", t.threshold)
+            .value("flagged", t.flagged)
+            .end_object();
+    }
+    json.end_array();
+    json.end_object();
+}
+
 void interval_json(JsonWriter& json, std::string_view key, const Interval& interval) {
     json.begin_array(key).value("", interval.lower).value("", interval.upper).end_array();
 }
@@ -616,6 +668,7 @@ std::string summary_json(const AnalysisResults& r) {
         .value("invalid", r.exclusions.invalid)
         .value("analysed", r.exclusions.kept)
         .end_object();
+    frame_timing_json(json, r.frame_timing);
     json.value("reference_mode", r.reference_mode).value("test_mode", r.test_mode);
     rate_json(json, r.overall, "overall");
     for (const auto& [key, rates] :

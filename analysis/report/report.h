@@ -14,6 +14,7 @@
 #include "analysis/contingency.h"
 #include "analysis/dataset.h"
 #include "analysis/exclusions.h"
+#include "analysis/frame_timing.h"
 #include "analysis/logistic_regression.h"
 #include "analysis/summaries.h"
 #include "common/result.h"
@@ -73,6 +74,7 @@ struct AnalysisResults {
     std::vector<GroupSummary> decision_times;  // seconds, per scene
     std::vector<GroupSummary> switches;        // per scene
     std::vector<ItemSummary> questionnaire;
+    FrameTimingSummary frame_timing;  // headset sessions' frame logs
 };
 
 

@@ -18,12 +18,6 @@ std::string shown_name(const study::LiveScreen& screen) {
     return "neutral";
 }
 
-bool missed_slot(std::int64_t previous_display_ns, std::int64_t display_ns,
-                 std::int64_t period_ns) {
-    if (period_ns <= 0) return false;
-    return 2 * (display_ns - previous_display_ns) > 3 * period_ns;
-}
-
 HeadsetFrameLog::HeadsetFrameLog(study::StudyStore& store, std::int64_t session_id)
     : store_(store), session_id_(session_id) {}
 
@@ -38,8 +32,9 @@ void HeadsetFrameLog::displayed(const headset::HeadsetFrame& frame, const study:
     row.shown = shown_name(screen);
     row.display_time_ns = frame.display_time_ns;
     row.cpu_ms = cpu_ms;
-    row.missed = previous_display_ns_ &&
-                 missed_slot(*previous_display_ns_, frame.display_time_ns, frame.display_period_ns);
+    row.missed =
+        previous_display_ns_ &&
+        headset::missed_slot(*previous_display_ns_, frame.display_time_ns, frame.display_period_ns);
     previous_display_ns_ = frame.display_time_ns;
     if (head) {
         const rig::Pose& p = *head;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "app/headset/frame_times.h"
 #include "app/headset/openxr_headset.h"
 #include "renderer/profile/frame_stats.h"
 #include "renderer/rig/pose.h"
@@ -21,10 +22,6 @@ namespace monoplane::app {
 // What a frame showed, as the log names it: label1 | label2 | paused | neutral | questionnaire |
 // finished.
 std::string shown_name(const study::LiveScreen& screen);
-
-// Whether the slot before a frame went unfilled: predicted display times more than 1.5 display
-// periods apart (a runtime that repeated the last frame). False for the first frame.
-bool missed_slot(std::int64_t previous_display_ns, std::int64_t display_ns, std::int64_t period_ns);
 
 class HeadsetFrameLog {
   public:

@@ -72,7 +72,11 @@ void print_summary(const study::Protocol& p) {
               << "\n"
               << "  clip range:    near " << number(p.near) << " m, far " << number(p.far) << " m\n"
               << "  questionnaire: " << p.questionnaire.items.size() << " items on a "
-              << p.questionnaire.scale_points << "-point scale\n";
+              << p.questionnaire.scale_points << "-point scale\n"
+              << "  render:        anti-aliasing " << p.render.anti_aliasing << ", SSAO "
+              << p.render.ssao << ", detail " << p.render.detail << "\n"
+              << "  frame log:     trials flagged above "
+              << number(100.0 * p.missed_frame_threshold) << " % missed frames\n";
 }
 
 void run_check(const std::string& file) {

@@ -78,6 +78,9 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path)
     dataset.sources.push_back(source);
     std::map<std::int64_t, std::string> reference;
     std::map<std::int64_t, int> scale_points;
+    std::map<std::int64_t, double> missed_threshold;
+    // Per (session, trial): frames shown and missed, from the frame log (headset sessions).
+    std::map<std::pair<std::int64_t, int>, std::pair<int, int>> frame_counts;
     for (const auto& [id, session] : data->sessions) {
         // The protocol as the session ran it: its first alternative is the reference.
         Result<study::Protocol> protocol =
@@ -85,6 +88,15 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path)
         reference[id] = protocol ? std::string(study::render_mode_name(protocol->alternatives[0]))
                                  : std::string();
         scale_points[id] = protocol ? protocol->questionnaire.scale_points : 7;
+        missed_threshold[id] = protocol ? protocol->missed_frame_threshold : 0.05;
+        Result<std::vector<study::FrameRecord>> frames = store.value()->frames(id);
+        if (!frames) return Error{"--db " + path.string() + ": " + frames.error().message};
+        for (const study::FrameRecord& f : *frames) {
+            if (!f.trial_index || (f.shown != "label1" && f.shown != "label2")) continue;
+            auto& [shown, missed] = frame_counts[{id, *f.trial_index}];
+            ++shown;
+            missed += f.missed ? 1 : 0;
+        }
         Result<std::vector<study::QuestionnaireAnswer>> answers = store.value()->answers(id);
         if (!answers) return Error{"--db " + path.string() + ": " + answers.error().message};
         for (const study::QuestionnaireAnswer& a : *answers) {
@@ -95,8 +107,15 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path)
     for (const study::TrialRecord& record : data->trials) {
         const auto session = data->sessions.find(record.session_id);
         if (session == data->sessions.end()) continue;  // collect_export pairs them
-        dataset.trials.push_back(
-            trial_row(record, session->second, source, reference[record.session_id]));
+        analysis::TrialRow row =
+            trial_row(record, session->second, source, reference[record.session_id]);
+        row.missed_frame_threshold = missed_threshold[record.session_id];
+        if (const auto counts = frame_counts.find({record.session_id, record.trial.index});
+            counts != frame_counts.end()) {
+            row.frames_shown = counts->second.first;
+            row.frames_missed = counts->second.second;
+        }
+        dataset.trials.push_back(std::move(row));
     }
     analysis::derive_session_fields(dataset.trials);
     return dataset;

@@ -19,6 +19,12 @@ constexpr std::array<const char*, kFrameSteps> kStepNames = {"OpenXR begin", "se
 
 }  // namespace
 
+bool missed_slot(std::int64_t previous_display_ns, std::int64_t display_ns,
+                 std::int64_t period_ns) {
+    if (period_ns <= 0) return false;
+    return 2 * (display_ns - previous_display_ns) > 3 * period_ns;
+}
+
 void FrameTimes::end_frame(bool scene) {
     if (scene) {
         scene_.push_back(current_);

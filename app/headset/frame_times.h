@@ -4,10 +4,15 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 namespace monoplane::headset {
+
+// Whether the display slot before a frame went unfilled (the runtime showed the last frame
+// again): predicted display times more than 1.5 display periods apart. False without a period.
+bool missed_slot(std::int64_t previous_display_ns, std::int64_t display_ns, std::int64_t period_ns);
 
 enum class FrameStep {
     kOpenXrBegin,  // xrWaitFrame, xrBeginFrame, locating the views, syncing the controls

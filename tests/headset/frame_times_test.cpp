@@ -45,5 +45,14 @@ TEST(FrameTimes, NothingMeasuredIsZero) {
     EXPECT_DOUBLE_EQ(times.gpu_ms_median(), 0.0);
 }
 
+TEST(FrameTimes, AMissedSlotIsAGapOfMoreThanOneAndAHalfPeriods) {
+    constexpr std::int64_t kPeriod = 11'111'111;                   // 90 Hz
+    EXPECT_FALSE(missed_slot(0, kPeriod, kPeriod));                // the next slot
+    EXPECT_FALSE(missed_slot(0, kPeriod + kPeriod / 2, kPeriod));  // 1.5 periods: not yet
+    EXPECT_TRUE(missed_slot(0, kPeriod + kPeriod / 2 + 1, kPeriod));
+    EXPECT_TRUE(missed_slot(0, 2 * kPeriod, kPeriod));  // one slot skipped
+    EXPECT_FALSE(missed_slot(0, 5 * kPeriod, 0));       // no period known
+}
+
 }  // namespace
 }  // namespace monoplane::headset

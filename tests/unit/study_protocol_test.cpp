@@ -141,6 +141,11 @@ TEST(StudyProtocol, RenderTableIsReadAndDefaultsToNoAntiAliasing) {
     const Result<Protocol> defaults = parse_protocol(kValidProtocol, "test.toml");
     ASSERT_TRUE(defaults.ok()) << defaults.error().message;
     EXPECT_EQ(defaults->render, (RenderSettings{"none", "off", "low"}));
+    EXPECT_EQ(defaults->missed_frame_threshold, 0.05);
+    const Result<Protocol> strict = parse_protocol(
+        mutated("far = 1000\n", "far = 1000\nmissed_frame_threshold = 0.01\n"), "test.toml");
+    ASSERT_TRUE(strict.ok()) << strict.error().message;
+    EXPECT_EQ(strict->missed_frame_threshold, 0.01);
     const Result<Protocol> p = parse_protocol(
         std::string(kValidProtocol) +
             "\n[render]\nanti_aliasing = \"taa\"\nssao = \"stereo\"\ndetail = \"medium\"\n",
@@ -525,6 +530,14 @@ const MalformedCase kMalformedCases[] = {
      "Viewing was comfortable\"]\n",
      "Viewing was comfortable\"]\n\n[render]\nvsync = true\n",
      {"test.toml:17:", "'render.vsync'", "known keys in [render]: anti_aliasing, ssao, detail"}},
+    {"missed-frame share above 1",
+     "far = 1000\n",
+     "far = 1000\nmissed_frame_threshold = 5\n",
+     {"test.toml:11:", "'missed_frame_threshold'", "in [0, 1]"}},
+    {"missed-frame share as text",
+     "far = 1000\n",
+     "far = 1000\nmissed_frame_threshold = \"5%\"\n",
+     {"test.toml:11:", "'missed_frame_threshold'", "a number", "string"}},
     {"render as a value",
      "far = 1000\n",
      "far = 1000\nrender = \"taa\"\n",
