@@ -6,10 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
+#include "renderer/rig/pose_path.h"
 #include "scenes/generate.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/gpu/profile_inputs.h"
@@ -177,6 +179,59 @@ TEST_F(AntiAliasingTest, MsaaIsRefusedInHybridModes) {
     EXPECT_THROW(
         modes::ModeRenderer(ctx(), scene_, Mode::kHybrid, kExtent, options(AntiAliasing::kMsaa4)),
         UserError);
+}
+
+double mean_abs_difference(const modes::RgbaImage& a, const modes::RgbaImage& b) {
+    double total = 0.0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        if (i % 4 == 3) continue;  // alpha
+        total += std::abs(static_cast<int>(a.pixels[i]) - static_cast<int>(b.pixels[i]));
+    }
+    return total / static_cast<double>(a.pixels.size() / 4 * 3);
+}
+
+// Issue 17 item 3: in a study each alternative has its own renderer, and a switch shows the
+// other one's next frame. Its TAA history must not restart (a visible transient that would cue
+// the switch): the first frame after a switch, under head motion, matches the frame of a renderer
+// that showed that alternative all along far better than a restarted history does.
+TEST_F(AntiAliasingTest, ASwitchBetweenAlternativesShowsAConvergedImageAtOnce) {
+    const rig::Pose start = inputs_.views.head;
+    const rig::PosePath sway = *rig::builtin_pose_path("sway");
+    modes::ModeRenderer shown(ctx(), scene_, Mode::kStereo, kExtent, options(AntiAliasing::kTaa));
+    modes::ModeRenderer other(ctx(), scene_, Mode::kHybrid, kExtent, options(AntiAliasing::kTaa));
+    modes::ModeRenderer continuous(ctx(), scene_, Mode::kStereo, kExtent,
+                                   options(AntiAliasing::kTaa));
+    constexpr int kShownFrames = 24;  // label 1, converging
+    constexpr int kOtherFrames = 16;  // label 2 while the head keeps moving
+    constexpr int kBack = kShownFrames + kOtherFrames;
+    modes::FrameInputs inputs = inputs_;
+    inputs.mono_plane = 8.0;
+    for (int frame = 0; frame <= kBack; ++frame) {
+        inputs.views.head = rig::pose_along(sway, start, frame / 90.0);
+        inputs.frame_index.reset();  // each renderer counts its own frames, as a headset session
+        continuous.render_frame(inputs);
+        if (frame < kShownFrames || frame == kBack) {
+            shown.render_frame(inputs);
+            EXPECT_FALSE(frame > 0 && shown.history_restarted()) << frame;
+        } else {
+            other.render_frame(inputs);
+        }
+    }
+    modes::ModeRenderer restarted(ctx(), scene_, Mode::kStereo, kExtent,
+                                  options(AntiAliasing::kTaa));
+    restarted.render_frame(inputs);
+    ASSERT_TRUE(restarted.history_restarted());
+    const modes::RgbaImage& reference = continuous.eye_image(Eye::kLeft);
+    const double after_switch = mean_abs_difference(shown.eye_image(Eye::kLeft), reference);
+    const double after_restart = mean_abs_difference(restarted.eye_image(Eye::kLeft), reference);
+    std::printf(
+        "mean |difference| to the continuous frame: after a switch %.3f, restarted %.3f "
+        "(8-bit levels)\n",
+        after_switch, after_restart);
+    // Measured on llvmpipe: 1.8 after the switch against 8.6 for a restarted history; what is
+    // left is the 16 frames of accumulation the kept history missed (docs/headsets.md).
+    EXPECT_LT(after_switch, 0.3 * after_restart);
+    EXPECT_LT(after_switch, 2.5);
 }
 
 }  // namespace
