@@ -8,13 +8,12 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <thread>
 
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/commands/headset_frame_log.h"
-#include "app/commands/image_quality_options.h"
+#include "app/commands/study_renderers.h"
 #include "app/commands/validation_report.h"
 #include "app/headset/eye_compositor.h"
 #include "app/headset/frame_times.h"
@@ -23,10 +22,7 @@
 #include "app/window/experimenter_window.h"
 #include "common/result.h"
 #include "renderer/modes/mode_renderer.h"
-#include "renderer/modes/scene_resources.h"
 #include "renderer/vk/frame_ring.h"
-#include "renderer/vk/memory.h"
-#include "scenes/generate.h"
 #include "study/live_session.h"
 #include "study/observer_input.h"
 
@@ -107,84 +103,6 @@ modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const ri
     return inputs;
 }
 
-// The renderer's mode and stereo pass for a protocol's mode name (stereo-multiview and stereo-gs
-// are stereo drawn in one pass).
-modes::RenderModeChoice renderer_mode(study::RenderMode mode) {
-    const auto parsed = modes::parse_render_mode(std::string(study::render_mode_name(mode)));
-    if (!parsed) {
-        throw UserError("render mode " + std::string(study::render_mode_name(mode)) +
-                        " is not implemented; use stereo, stereo-multiview, stereo-gs, hybrid or "
-                        "hybrid-farfield");
-    }
-    return *parsed;
-}
-
-// The scenes and a renderer per (scene, mode) of the protocol, made before the first trial so
-// that no trial waits for one.
-class StudyRenderers {
-  public:
-    StudyRenderers(const vk_core::Context& ctx, const study::Protocol& protocol,
-                   vk::Extent2D extent, const study::RenderSettings& render) {
-        const double nearest =
-            *std::min_element(protocol.mono_planes.begin(), protocol.mono_planes.end());
-        const auto detail = scenes::parse_detail(render.detail);
-        if (!detail) {
-            throw UserError("scene detail '" + render.detail +
-                            "': use test, low, medium, high or ultra");
-        }
-        modes::RendererOptions options;
-        options.read_back = false;  // the eyes go to the swapchain on the GPU
-        // The session's [render] table (validated with the protocol).
-        apply_image_quality_flags(render.anti_aliasing, render.ssao, options);
-        std::cerr << "rendering with anti-aliasing " << render.anti_aliasing << ", SSAO "
-                  << render.ssao << ", detail " << render.detail << "\n";
-        const std::uint64_t bytes_before = vk_core::live_device_bytes();
-        std::uint64_t scene_bytes = 0;
-        for (const std::string& name : protocol.scenes) {
-            std::cerr << "preparing " << name << "\n";
-            auto scene = std::make_unique<scenes::Scene>(
-                scenes::generate_scene(*scenes::parse_scene_id(name), *detail));
-            // Geometry, chunk table and shadow map once per scene, for all its alternatives.
-            const std::uint64_t before_scene = vk_core::live_device_bytes();
-            auto resources = std::make_shared<modes::SceneResources>(ctx, *scene, options.shadow);
-            scene_bytes += vk_core::live_device_bytes() - before_scene;
-            for (study::RenderMode mode : protocol.alternatives) {
-                const auto key = std::make_pair(name, mode);
-                if (renderers_.count(key)) continue;
-                const modes::RenderModeChoice choice = renderer_mode(mode);
-                modes::RendererOptions mode_options = options;
-                mode_options.stereo_pass = choice.stereo_pass;
-                renderers_[key] = std::make_unique<modes::ModeRenderer>(
-                    ctx, resources, choice.mode, extent, mode_options, nearest);
-            }
-            scenes_[name] = std::move(scene);
-        }
-        constexpr double kMiB = 1024.0 * 1024.0;
-        std::cerr << "prepared " << renderers_.size() << " renderers of " << scenes_.size()
-                  << " scenes: "
-                  << static_cast<double>(vk_core::live_device_bytes() - bytes_before) / kMiB
-                  << " MiB of device memory, " << static_cast<double>(scene_bytes) / kMiB
-                  << " MiB of it the scenes' geometry and shadow maps, uploaded once each\n";
-    }
-    modes::ModeRenderer& renderer(const std::string& scene, study::RenderMode mode) {
-        return *renderers_.at({scene, mode});
-    }
-    // Every renderer, e.g. to finish their frames in flight at the end of a session.
-    template <class F>
-    void for_each(F f) {
-        for (auto& [key, renderer] : renderers_) f(*renderer);
-    }
-    const rig::Pose& seat(const std::string& scene) const {
-        const scenes::Viewpoint* v = scenes_.at(scene)->find_viewpoint("default");
-        return v->head;
-    }
-
-  private:
-    std::map<std::string, std::unique_ptr<scenes::Scene>> scenes_;  // outlive the renderers
-    std::map<std::pair<std::string, study::RenderMode>, std::unique_ptr<modes::ModeRenderer>>
-        renderers_;
-};
-
 window::Phase window_phase(const study::LiveScreen& screen) {
     switch (screen.kind) {
         case ScreenKind::Neutral:
@@ -254,6 +172,390 @@ void select_simulated_runtime(const HeadsetStudyOptions& options) {
     setenv("SIMXR_SCRIPT", script.c_str(), 1);
 }
 
+namespace {
+
+// One headset session's frame loop, its state in one place: the runtime and device it renders
+// with, the session engine (LiveSession) and its inputs, the per-frame log and timing, and the
+// experimenter window's state. run() drives frames until the runtime ends the session; each frame
+// is begin (OpenXR), inputs, render, end (OpenXR), log, window.
+class HeadsetLoop {
+  public:
+    HeadsetLoop(const HeadsetStudyOptions& options, const study::Protocol& protocol,
+                study::StudyStore& store, std::int64_t session_id, headset::OpenXrHeadset& headset,
+                const vk_core::Context& ctx, window::ExperimenterWindow* experimenter,
+                StudyRenderers& renderers, study::Observer* observer,
+                const std::function<double(const study::ScheduledTrial&)>& trial_error_px)
+        : options_(options),
+          protocol_(protocol),
+          info_(store.session(session_id).value_or_throw()),
+          headset_(headset),
+          ctx_(ctx),
+          experimenter_(experimenter),
+          renderers_(renderers),
+          extent_(headset.eye_extent()),
+          compositor_(ctx),
+          compositor_frames_(ctx),
+          frame_log_(store, session_id),
+          window_answers_(protocol.questionnaire.items.size(), 0) {
+        headset::TextStyle label_style;
+        label_style.scale = 2;
+        label_style.padding = 2;
+        compositor_.set_overlay("label1", headset::render_text({"1"}, label_style));
+        compositor_.set_overlay("label2", headset::render_text({"2"}, label_style));
+        compositor_.set_overlay("paused", headset::render_text({"Paused"}, {}));
+        study::LiveOptions live_options;
+        live_options.neutral_ns = static_cast<std::int64_t>(options.neutral_s * 1e9);
+        live_options.on_committed = [this](const std::string& what) { committed(what); };
+        live_ =
+            study::LiveSession::open(store, session_id, protocol, live_options).value_or_throw();
+        if (observer) observer_input_.emplace(*observer, protocol, trial_error_px);
+    }
+
+    // Frames until the runtime ends the session (after the study, or when the window closes).
+    void run() {
+        for (;;) {
+            if (!headset_.poll_events().value_or_throw()) break;
+            if (live_->finished()) request_exit();
+            if (!headset_.running()) {
+                // Waiting for the runtime (READY, or EXITING after the end): nothing to render.
+                if (experimenter_) experimenter_->frame({});
+                std::this_thread::sleep_for(std::chrono::milliseconds(5));
+                continue;
+            }
+            frame();
+        }
+        finish();
+    }
+
+    bool finished() const { return live_->finished(); }
+
+  private:
+    using Clock = std::chrono::steady_clock;
+
+    // What one frame rendered: the scene's renderer (or none) and what it returned.
+    struct Rendered {
+        bool shown = false;
+        modes::ModeRenderer* renderer = nullptr;
+        std::optional<rig::Pose> head;
+        std::vector<profile::FrameStats> completed;
+    };
+
+    void frame() {
+        frame_start_ = Clock::now();
+        step_start_ = frame_start_;
+        const headset::HeadsetFrame frame = headset_.begin_frame().value_or_throw();
+        const std::int64_t now = frame.display_time_ns;
+        if (first_frame_ns_ < 0) first_frame_ns_ = now;
+        rig::Pose head;
+        if (frame.views_valid) head = anchor_.relative(located_head(frame));
+        handle_inputs(now);
+        const study::LiveScreen screen = live_->screen();
+        const Rendered rendered = frame.should_render ? render(frame, screen, head) : Rendered{};
+        headset_.end_frame(frame).value_or_throw();
+        charge(headset::FrameStep::kOpenXrEnd);
+        // What the participant sees changes only with a frame that was shown.
+        if (rendered.shown) {
+            const double cpu_ms =
+                std::chrono::duration<double, std::milli>(Clock::now() - frame_start_).count();
+            frame_log_.displayed(frame, screen, rendered.head, cpu_ms, rendered.renderer);
+            // After displayed(): a renderer that waited may return this very frame's time.
+            frame_log_.completed(rendered.renderer, rendered.completed);
+            live_->frame_presented(frame.index, now).value_or_throw();
+        }
+        charge(headset::FrameStep::kLog);
+        report_progress(screen);
+        if (experimenter_) update_window(frame, screen, now);
+        times_.end_frame(rendered.renderer != nullptr);
+    }
+
+    // The controller, then the experimenter's window, then a simulated observer.
+    void handle_inputs(std::int64_t now) {
+        const std::vector<headset::ControlPress> presses =
+            headset_.sync_controls().value_or_throw();
+        charge(headset::FrameStep::kOpenXrBegin);
+        for (const headset::ControlPress& press : presses) {
+            if (press.control == headset::Control::Switch)
+                request(LiveInput::Switch, press.time_ns);
+            if (press.control == headset::Control::Confirm) {
+                request(LiveInput::Confirm, press.time_ns);
+            }
+            if (press.control == headset::Control::Pause) {
+                request(live_->screen().paused ? LiveInput::Resume : LiveInput::Pause,
+                        press.time_ns);
+            }
+        }
+        for (const window::Command& c : window_commands_) window_command(c, now);
+        window_commands_.clear();
+        if (observer_input_) {
+            for (LiveInput input : observer_input_->poll(live_->screen(), live_->progress(), now)) {
+                request(input, now);
+            }
+        }
+    }
+
+    void window_command(const window::Command& c, std::int64_t now) {
+        using Kind = window::Command::Kind;
+        switch (c.kind) {
+            case Kind::Switch:
+                request(LiveInput::Switch, now);
+                break;
+            case Kind::Confirm:
+                request(LiveInput::Confirm, now);
+                break;
+            case Kind::Pause:
+                request(LiveInput::Pause, now);
+                break;
+            case Kind::Resume:
+                request(LiveInput::Resume, now);
+                break;
+            case Kind::Abort:
+                request(LiveInput::Abort, now);
+                break;
+            case Kind::Unblind:
+                unblinded_ = c.value != 0;
+                break;
+            case Kind::Answer:
+                if (c.item >= 0 && c.item < static_cast<int>(window_answers_.size()))
+                    window_answers_[static_cast<std::size_t>(c.item)] = c.value;
+                break;
+            case Kind::SubmitAnswers:
+                for (std::size_t i = 0; i < window_answers_.size(); ++i) {
+                    if (live_->screen().kind != ScreenKind::Questionnaire) break;
+                    if (window_answers_[i] > 0)
+                        live_->answer(static_cast<int>(i), window_answers_[i]).value_or_throw();
+                }
+                break;
+        }
+    }
+
+    void request(LiveInput input, std::int64_t time_ns) {
+        const std::string what = live_->request(input, time_ns).value_or_throw();
+        if (options_.trace) {
+            std::printf("request %s: %s\n", std::string(study::live_input_name(input)).c_str(),
+                        what.c_str());
+        }
+    }
+
+    // The screen into both eyes' swapchain images: the trial's scene through its renderer (the
+    // eyes' copies ride in its submission), else the compositor's grey with overlays. No wait for
+    // the GPU: each ring waits only for its frame two before.
+    Rendered render(const headset::HeadsetFrame& frame, const study::LiveScreen& screen,
+                    const rig::Pose& head) {
+        std::array<vk::Image, 2> targets;
+        for (int e = 0; e < 2; ++e) targets[e] = headset_.acquire_eye_image(e).value_or_throw();
+        charge(headset::FrameStep::kOpenXrBegin);
+        Rendered rendered;
+        rendered.shown = true;
+        modes::FrameInputs inputs;
+        const std::vector<headset::EyeCompositor::Overlay> overlays = screen_overlays(screen);
+        if (screen.kind == ScreenKind::Trial && !screen.paused && frame.views_valid) {
+            const study::ScheduledTrial& trial = *screen.trial;
+            rendered.renderer = &renderers_.renderer(trial.scene, screen.mode);
+            inputs.views = view_inputs(frame, head, renderers_.seat(trial.scene), protocol_);
+            inputs.mono_plane = trial.mono_plane;
+            rendered.head = inputs.views.head;
+        }
+        const modes::ModeRenderer* renderer = rendered.renderer;
+        const auto record_eyes = [&](const vk::raii::CommandBuffer& cmd) {
+            for (int e = 0; e < 2; ++e) {
+                const auto eye = static_cast<modes::Eye>(e);
+                headset::EyeCompositor::MirrorRecorder mirror;
+                if (experimenter_ && e == 0) {
+                    mirror = [this](const vk::raii::CommandBuffer& c, vk::Image image,
+                                    vk::ImageLayout layout, vk::Extent2D size) {
+                        experimenter_->record_mirror(c, image, layout, size);
+                    };
+                }
+                compositor_.record_eye(cmd, targets[e], extent_, frame.views[e].tangents,
+                                       renderer ? &renderer->display_image(eye) : nullptr, overlays,
+                                       mirror);
+            }
+        };
+        charge(headset::FrameStep::kSession);
+        if (rendered.renderer) {
+            rendered.renderer->submit_frame(inputs, record_eyes);
+            rendered.completed = rendered.renderer->take_completed();
+            for (const profile::FrameStats& stats : rendered.completed) {
+                times_.add_gpu_ms(stats.gpu_frame_ms);
+            }
+        } else {
+            const std::uint32_t slot = compositor_frames_.begin();
+            record_eyes(compositor_frames_.commands(slot));
+            compositor_frames_.submit(slot);
+        }
+        charge(headset::FrameStep::kRender);
+        return rendered;
+    }
+
+    // The label in a trial, the pause panel, or the questionnaire item with its selection.
+    std::vector<headset::EyeCompositor::Overlay> screen_overlays(const study::LiveScreen& screen) {
+        if (screen.kind == ScreenKind::Trial && screen.paused) {
+            return {{"paused", kPanelPlacement}};
+        }
+        if (screen.kind == ScreenKind::Trial) {
+            return {{screen.label == 1 ? "label1" : "label2", kLabelPlacement}};
+        }
+        if (screen.kind != ScreenKind::Questionnaire) return {};
+        const std::string key =
+            "question" + std::to_string(screen.question) + "-" + std::to_string(screen.selection);
+        if (!compositor_.has_overlay(key)) {
+            compositor_.set_overlay(
+                key, headset::render_text(
+                         questionnaire_lines(protocol_, screen.question, screen.selection), {}));
+        }
+        return {{key, kPanelPlacement}};
+    }
+
+    void report_progress(const study::LiveScreen& screen) {
+        const study::LiveProgress progress = live_->progress();
+        if (progress.trial_number == last_reported_trial_ || screen.kind != ScreenKind::Trial) {
+            return;
+        }
+        last_reported_trial_ = progress.trial_number;
+        std::cerr << "trial " << progress.trial_number << "/" << progress.trial_count << ": "
+                  << screen.trial->scene << " m = " << screen.trial->mono_plane
+                  << (screen.trial->practice ? " (practice)" : "") << "\n";
+    }
+
+    void update_window(const headset::HeadsetFrame& frame, const study::LiveScreen& screen,
+                       std::int64_t now) {
+        window_commands_ = experimenter_->frame(window_view(frame, screen, now));
+        if (!options_.screenshot.empty() && frame.index == options_.screenshot_frame) {
+            save_screenshot();
+        }
+        charge(headset::FrameStep::kWindow);
+        if (experimenter_->close_requested() && !live_->finished()) {
+            std::cerr << "the experimenter window was closed: ending the session (resume it "
+                         "with `monoplane study resume`)\n";
+            request_exit();
+        }
+    }
+
+    window::ExperimenterView window_view(const headset::HeadsetFrame& frame,
+                                         const study::LiveScreen& screen, std::int64_t now) const {
+        const study::LiveProgress progress = live_->progress();
+        window::ExperimenterView view;
+        view.participant = info_.participant_code;
+        view.protocol = protocol_.name;
+        view.headset = headset_.runtime_name();
+        view.hmd = headset_.system_name();
+        view.device = ctx_.device_info().name;
+        view.trial_number = progress.trial_number;
+        view.trial_count = progress.trial_count;
+        view.phase = window_phase(screen);
+        view.elapsed_s = static_cast<double>(now - first_frame_ns_) * 1e-9;
+        if (screen.trial) {
+            view.practice = screen.trial->practice;
+            view.scene = screen.trial->scene;
+            view.mono_plane = screen.trial->mono_plane;
+            view.label_modes = {std::string(study::render_mode_name(screen.trial->label1_mode)),
+                                std::string(study::render_mode_name(screen.trial->label2_mode))};
+            if (progress.trial_started_ns >= 0) {
+                view.trial_elapsed_s = static_cast<double>(now - progress.trial_started_ns) * 1e-9;
+            }
+        }
+        view.visible_label = progress.visible_label;
+        view.switches = progress.switches;
+        view.both_seen = progress.both_seen;
+        view.unblinded = unblinded_;
+        const auto shown_tail =
+            std::min<std::ptrdiff_t>(40, static_cast<std::ptrdiff_t>(log_tail_.size()));
+        view.log_tail.assign(log_tail_.end() - shown_tail, log_tail_.end());
+        view.questionnaire_items = protocol_.questionnaire.items;
+        view.scale_points = protocol_.questionnaire.scale_points;
+        view.answers = window_answers_;
+        view.frame_index = static_cast<std::uint64_t>(frame.index);
+        view.frame_ms =
+            std::chrono::duration<double, std::milli>(Clock::now() - frame_start_).count();
+        view.status_line =
+            std::string("session ") + std::string(headset::session_phase_name(headset_.phase()));
+        return view;
+    }
+
+    void save_screenshot() {
+        experimenter_->save_screenshot(options_.screenshot).value_or_throw();
+        std::cerr << "wrote " << options_.screenshot << "\n";
+        screenshot_saved_ = true;
+    }
+
+    // The last frames' GPU times into the log, the log to disk, the timing summary.
+    void finish() {
+        if (experimenter_ && !options_.screenshot.empty() && !screenshot_saved_) save_screenshot();
+        if (times_.scene_frames() > 0) std::cerr << times_.summary();
+        renderers_.for_each(
+            [&](modes::ModeRenderer& r) { frame_log_.completed(&r, r.finish_frames()); });
+        frame_log_.flush();
+    }
+
+    void request_exit() {
+        if (exit_requested_) return;
+        headset_.request_exit().value_or_throw();
+        exit_requested_ = true;
+    }
+
+    void committed(const std::string& what) {
+        if (options_.trace) {
+            std::printf("committed %s\n", what.c_str());
+            std::fflush(stdout);
+        }
+        log_tail_.push_back(what);
+        if (log_tail_.size() > 200) log_tail_.pop_front();
+    }
+
+    // Charges the time since the last step to `step`.
+    void charge(headset::FrameStep step) {
+        const auto now = Clock::now();
+        times_.add(step, std::chrono::duration<double, std::milli>(now - step_start_).count());
+        step_start_ = now;
+    }
+
+    const HeadsetStudyOptions& options_;
+    const study::Protocol& protocol_;
+    study::SessionInfo info_;
+    headset::OpenXrHeadset& headset_;
+    const vk_core::Context& ctx_;
+    window::ExperimenterWindow* experimenter_;
+    StudyRenderers& renderers_;
+    vk::Extent2D extent_;
+    headset::EyeCompositor compositor_;
+    // Frames without a scene (neutral screen, questionnaire) are the compositor's alone; scene
+    // frames ride in their renderer's ring.
+    vk_core::FrameRing compositor_frames_;
+    std::unique_ptr<study::LiveSession> live_;
+    std::optional<study::ObserverInput> observer_input_;
+    HeadsetFrameLog frame_log_;
+    headset::FrameTimes times_;
+    Clock::time_point frame_start_;
+    Clock::time_point step_start_;
+    SeatAnchor anchor_;
+    std::int64_t first_frame_ns_ = -1;
+    int last_reported_trial_ = -1;
+    bool exit_requested_ = false;
+    // The experimenter window's state.
+    std::deque<std::string> log_tail_;
+    std::vector<window::Command> window_commands_;
+    std::vector<int> window_answers_;
+    bool unblinded_ = false;
+    bool screenshot_saved_ = false;
+};
+
+// The experimenter window when wanted and possible, and the instance and device extensions it
+// needs added to the context's.
+bool want_window(const HeadsetStudyOptions& options, vk_core::ContextOptions& context_options) {
+    if (!(options.window == "on" || (options.window == "auto" && has_display()))) return false;
+    auto extensions = window::required_instance_extensions();
+    if (!extensions) {
+        if (options.window == "on") throw UserError(extensions.error().message);
+        std::cerr << "no experimenter window: " << extensions.error().message << "\n";
+        return false;
+    }
+    context_options.instance_extensions = *extensions;
+    context_options.device_extensions = window::required_device_extensions();
+    return true;
+}
+
+}  // namespace
+
 study::SessionStatus run_headset_session(
     const HeadsetStudyOptions& options, const GlobalOptions& global, study::StudyStore& store,
     const study::Protocol& protocol, study::Observer* observer,
@@ -263,320 +565,36 @@ study::SessionStatus run_headset_session(
     auto headset = headset::OpenXrHeadset::create().value_or_throw();
     std::cerr << "OpenXR runtime: " << headset->runtime_name() << ", system "
               << headset->system_name() << "\n";
-
     vk_core::ContextOptions context_options = global.context_options();
     context_options.hooks = headset->vulkan_hooks();
-    bool want_window = options.window == "on" || (options.window == "auto" && has_display());
-    if (want_window) {
-        auto extensions = window::required_instance_extensions();
-        if (!extensions) {
-            if (options.window == "on") throw UserError(extensions.error().message);
-            std::cerr << "no experimenter window: " << extensions.error().message << "\n";
-            want_window = false;
-        } else {
-            context_options.instance_extensions = *extensions;
-            context_options.device_extensions = window::required_device_extensions();
-        }
-    }
+    const bool window = want_window(options, context_options);
     auto ctx = vk_core::Context::create(context_options).value_or_throw();
     std::cerr << "device: " << ctx->device_info().name << "\n";
     headset->create_session(*ctx, options.resolution_scale).value_or_throw();
     const vk::Extent2D extent = headset->eye_extent();
     std::cerr << "eye swapchains: " << extent.width << " x " << extent.height << "\n";
-
     std::unique_ptr<window::ExperimenterWindow> experimenter;
-    if (want_window) {
+    if (window)
         experimenter = window::ExperimenterWindow::create(*ctx, {}, extent).value_or_throw();
-    }
+
     const std::int64_t session_id = begin(headset->runtime_name(), ctx->device_info().name);
-    const study::SessionInfo info = store.session(session_id).value_or_throw();
     // Sessions of schema version 1 recorded no detail: they rendered at the default, low.
-    study::RenderSettings render = info.render;
+    study::RenderSettings render = store.session(session_id).value_or_throw().render;
     if (render.detail.empty()) render.detail = "low";
     StudyRenderers renderers(*ctx, protocol, extent, render);
-    headset::EyeCompositor compositor(*ctx);
-    headset::TextStyle label_style;
-    label_style.scale = 2;
-    label_style.padding = 2;
-    compositor.set_overlay("label1", headset::render_text({"1"}, label_style));
-    compositor.set_overlay("label2", headset::render_text({"2"}, label_style));
-    compositor.set_overlay("paused", headset::render_text({"Paused"}, {}));
-
-    std::deque<std::string> log_tail;
-    study::LiveOptions live_options;
-    live_options.neutral_ns = static_cast<std::int64_t>(options.neutral_s * 1e9);
-    live_options.on_committed = [&](const std::string& what) {
-        if (options.trace) {
-            std::printf("committed %s\n", what.c_str());
-            std::fflush(stdout);
-        }
-        log_tail.push_back(what);
-        if (log_tail.size() > 200) log_tail.pop_front();
-    };
-    auto live =
-        study::LiveSession::open(store, session_id, protocol, live_options).value_or_throw();
-    std::optional<study::ObserverInput> observer_input;
-    if (observer) observer_input.emplace(*observer, protocol, trial_error_px);
-
-    // Frames without a scene (neutral screen, questionnaire) are the compositor's alone; scene
-    // frames ride in their renderer's ring. Neither waits for the GPU after submitting.
-    vk_core::FrameRing compositor_frames(*ctx);
-    headset::FrameTimes times;
-    HeadsetFrameLog frame_log(store, session_id);
-    using Clock = std::chrono::steady_clock;
-    auto step_start = Clock::now();
-    // Charges the time since the last step to `step`.
-    const auto charge = [&](headset::FrameStep step) {
-        const auto now = Clock::now();
-        times.add(step, std::chrono::duration<double, std::milli>(now - step_start).count());
-        step_start = now;
-    };
-    std::vector<window::Command> window_commands;
-    std::vector<int> window_answers(protocol.questionnaire.items.size(), 0);
-    bool unblinded = false;
-    bool exit_requested = false;
-    bool screenshot_saved = false;
-    SeatAnchor anchor;
-    std::int64_t first_frame_ns = -1;
-    int last_reported_trial = -1;
-    auto request = [&](LiveInput input, std::int64_t time_ns) {
-        const std::string what = live->request(input, time_ns).value_or_throw();
-        if (options.trace)
-            std::printf("request %s: %s\n", std::string(study::live_input_name(input)).c_str(),
-                        what.c_str());
-    };
-
-    for (;;) {
-        if (!headset->poll_events().value_or_throw()) break;
-        if (live->finished() && !exit_requested) {
-            headset->request_exit().value_or_throw();
-            exit_requested = true;
-        }
-        if (!headset->running()) {
-            // Waiting for the runtime (READY, or EXITING after the end): no frames to render.
-            if (experimenter) experimenter->frame({});
-            std::this_thread::sleep_for(std::chrono::milliseconds(5));
-            continue;
-        }
-        const auto frame_start = Clock::now();
-        step_start = frame_start;
-        const headset::HeadsetFrame frame = headset->begin_frame().value_or_throw();
-        const std::int64_t now = frame.display_time_ns;
-        if (first_frame_ns < 0) first_frame_ns = now;
-        rig::Pose head;
-        if (frame.views_valid) head = anchor.relative(located_head(frame));
-
-        // Input: the controller, then the experimenter's window, then a simulated observer.
-        const std::vector<headset::ControlPress> presses =
-            headset->sync_controls().value_or_throw();
-        charge(headset::FrameStep::kOpenXrBegin);
-        for (const headset::ControlPress& press : presses) {
-            if (press.control == headset::Control::Switch)
-                request(LiveInput::Switch, press.time_ns);
-            if (press.control == headset::Control::Confirm)
-                request(LiveInput::Confirm, press.time_ns);
-            if (press.control == headset::Control::Pause) {
-                request(live->screen().paused ? LiveInput::Resume : LiveInput::Pause,
-                        press.time_ns);
-            }
-        }
-        for (const window::Command& c : window_commands) {
-            using Kind = window::Command::Kind;
-            switch (c.kind) {
-                case Kind::Switch:
-                    request(LiveInput::Switch, now);
-                    break;
-                case Kind::Confirm:
-                    request(LiveInput::Confirm, now);
-                    break;
-                case Kind::Pause:
-                    request(LiveInput::Pause, now);
-                    break;
-                case Kind::Resume:
-                    request(LiveInput::Resume, now);
-                    break;
-                case Kind::Abort:
-                    request(LiveInput::Abort, now);
-                    break;
-                case Kind::Unblind:
-                    unblinded = c.value != 0;
-                    break;
-                case Kind::Answer:
-                    if (c.item >= 0 && c.item < static_cast<int>(window_answers.size()))
-                        window_answers[static_cast<std::size_t>(c.item)] = c.value;
-                    break;
-                case Kind::SubmitAnswers:
-                    for (std::size_t i = 0; i < window_answers.size(); ++i) {
-                        if (live->screen().kind != ScreenKind::Questionnaire) break;
-                        if (window_answers[i] > 0)
-                            live->answer(static_cast<int>(i), window_answers[i]).value_or_throw();
-                    }
-                    break;
-            }
-        }
-        window_commands.clear();
-        if (observer_input) {
-            for (LiveInput input : observer_input->poll(live->screen(), live->progress(), now)) {
-                request(input, now);
-            }
-        }
-
-        const study::LiveScreen screen = live->screen();
-        bool rendered = false;
-        bool scene_frame = false;
-        std::optional<rig::Pose> rendered_head;
-        modes::ModeRenderer* scene_renderer = nullptr;
-        std::vector<profile::FrameStats> completed;
-        if (frame.should_render) {
-            std::array<vk::Image, 2> targets;
-            for (int e = 0; e < 2; ++e) targets[e] = headset->acquire_eye_image(e).value_or_throw();
-            charge(headset::FrameStep::kOpenXrBegin);
-            std::vector<headset::EyeCompositor::Overlay> overlays;
-            modes::ModeRenderer* renderer = nullptr;
-            modes::FrameInputs inputs;
-            if (screen.kind == ScreenKind::Trial && !screen.paused && frame.views_valid) {
-                const study::ScheduledTrial& trial = *screen.trial;
-                renderer = &renderers.renderer(trial.scene, screen.mode);
-                inputs.views = view_inputs(frame, head, renderers.seat(trial.scene), protocol);
-                inputs.mono_plane = trial.mono_plane;
-                overlays.push_back({screen.label == 1 ? "label1" : "label2", kLabelPlacement});
-            } else if (screen.kind == ScreenKind::Trial && screen.paused) {
-                overlays.push_back({"paused", kPanelPlacement});
-            } else if (screen.kind == ScreenKind::Questionnaire) {
-                const std::string key = "question" + std::to_string(screen.question) + "-" +
-                                        std::to_string(screen.selection);
-                if (!compositor.has_overlay(key)) {
-                    compositor.set_overlay(
-                        key,
-                        headset::render_text(
-                            questionnaire_lines(protocol, screen.question, screen.selection), {}));
-                }
-                overlays.push_back({key, kPanelPlacement});
-            }
-            const auto record_eyes = [&](const vk::raii::CommandBuffer& cmd) {
-                for (int e = 0; e < 2; ++e) {
-                    const auto eye = static_cast<modes::Eye>(e);
-                    headset::EyeCompositor::MirrorRecorder mirror;
-                    if (experimenter && e == 0) {
-                        mirror = [&](const vk::raii::CommandBuffer& c, vk::Image image,
-                                     vk::ImageLayout layout, vk::Extent2D size) {
-                            experimenter->record_mirror(c, image, layout, size);
-                        };
-                    }
-                    compositor.record_eye(cmd, targets[e], extent, frame.views[e].tangents,
-                                          renderer ? &renderer->display_image(eye) : nullptr,
-                                          overlays, mirror);
-                }
-            };
-            charge(headset::FrameStep::kSession);
-            // The eyes' copies ride in the renderer's submission: one submission per frame, and
-            // no wait for it (the ring waits only for the frame two before).
-            if (renderer) {
-                renderer->submit_frame(inputs, record_eyes);
-                completed = renderer->take_completed();
-                for (const profile::FrameStats& stats : completed) {
-                    times.add_gpu_ms(stats.gpu_frame_ms);
-                }
-                scene_frame = true;
-                scene_renderer = renderer;
-                rendered_head = inputs.views.head;
-            } else {
-                const std::uint32_t slot = compositor_frames.begin();
-                record_eyes(compositor_frames.commands(slot));
-                compositor_frames.submit(slot);
-            }
-            charge(headset::FrameStep::kRender);
-            rendered = true;
-        }
-        headset->end_frame(frame).value_or_throw();
-        charge(headset::FrameStep::kOpenXrEnd);
-        // What the participant sees changes only with a frame that was shown.
-        if (rendered) {
-            const double cpu_ms =
-                std::chrono::duration<double, std::milli>(Clock::now() - frame_start).count();
-            frame_log.displayed(frame, screen, rendered_head, cpu_ms, scene_renderer);
-            // After displayed(): a renderer that waited may return this very frame's time.
-            frame_log.completed(scene_renderer, completed);
-            live->frame_presented(frame.index, now).value_or_throw();
-        }
-        charge(headset::FrameStep::kLog);
-
-        const study::LiveProgress progress = live->progress();
-        if (progress.trial_number != last_reported_trial && screen.kind == ScreenKind::Trial) {
-            last_reported_trial = progress.trial_number;
-            std::cerr << "trial " << progress.trial_number << "/" << progress.trial_count << ": "
-                      << screen.trial->scene << " m = " << screen.trial->mono_plane
-                      << (screen.trial->practice ? " (practice)" : "") << "\n";
-        }
-        if (experimenter) {
-            window::ExperimenterView view;
-            view.participant = info.participant_code;
-            view.protocol = protocol.name;
-            view.headset = headset->runtime_name();
-            view.hmd = headset->system_name();
-            view.device = ctx->device_info().name;
-            view.trial_number = progress.trial_number;
-            view.trial_count = progress.trial_count;
-            view.phase = window_phase(screen);
-            view.elapsed_s = static_cast<double>(now - first_frame_ns) * 1e-9;
-            if (screen.trial) {
-                view.practice = screen.trial->practice;
-                view.scene = screen.trial->scene;
-                view.mono_plane = screen.trial->mono_plane;
-                view.label_modes = {
-                    std::string(study::render_mode_name(screen.trial->label1_mode)),
-                    std::string(study::render_mode_name(screen.trial->label2_mode))};
-                if (progress.trial_started_ns >= 0) {
-                    view.trial_elapsed_s =
-                        static_cast<double>(now - progress.trial_started_ns) * 1e-9;
-                }
-            }
-            view.visible_label = progress.visible_label;
-            view.switches = progress.switches;
-            view.both_seen = progress.both_seen;
-            view.unblinded = unblinded;
-            view.log_tail.assign(
-                log_tail.end() -
-                    std::min<std::ptrdiff_t>(40, static_cast<std::ptrdiff_t>(log_tail.size())),
-                log_tail.end());
-            view.questionnaire_items = protocol.questionnaire.items;
-            view.scale_points = protocol.questionnaire.scale_points;
-            view.answers = window_answers;
-            view.frame_index = static_cast<std::uint64_t>(frame.index);
-            view.frame_ms = std::chrono::duration<double, std::milli>(
-                                std::chrono::steady_clock::now() - frame_start)
-                                .count();
-            view.status_line = std::string("session ") +
-                               std::string(headset::session_phase_name(headset->phase()));
-            window_commands = experimenter->frame(view);
-            if (!options.screenshot.empty() && frame.index == options.screenshot_frame) {
-                experimenter->save_screenshot(options.screenshot).value_or_throw();
-                std::cerr << "wrote " << options.screenshot << "\n";
-                screenshot_saved = true;
-            }
-            charge(headset::FrameStep::kWindow);
-            if (experimenter->close_requested() && !live->finished()) {
-                std::cerr << "the experimenter window was closed: ending the session (resume "
-                             "it with `monoplane study resume`)\n";
-                headset->request_exit().value_or_throw();
-                exit_requested = true;
-            }
-        }
-        times.end_frame(scene_frame);
+    bool finished = false;
+    {
+        HeadsetLoop loop(options, protocol, store, session_id, *headset, *ctx, experimenter.get(),
+                         renderers, observer, trial_error_px);
+        loop.run();
+        finished = loop.finished();
+        ctx->device().waitIdle();
     }
-    if (experimenter && !options.screenshot.empty() && !screenshot_saved) {
-        experimenter->save_screenshot(options.screenshot).value_or_throw();
-        std::cerr << "wrote " << options.screenshot << "\n";
-    }
-    if (times.scene_frames() > 0) std::cerr << times.summary();
-    renderers.for_each([&](modes::ModeRenderer& r) { frame_log.completed(&r, r.finish_frames()); });
-    frame_log.flush();
-    ctx->device().waitIdle();
     experimenter.reset();
     headset->destroy_session();
     fail_on_validation_messages(*ctx, global);
     const study::SessionInfo end = store.session(session_id).value_or_throw();
-    if (!live->finished()) {
+    if (!finished) {
         // Not an error of the study's data (everything decided is stored), but the session did
         // not finish: the exit status says so, for scripts that run sessions.
         throw UserError("the OpenXR session ended (" +

@@ -1,0 +1,49 @@
+// The scenes of a protocol and one renderer per (scene, alternative), made before the first trial
+// so that no trial waits for one; each scene's geometry, chunk table and shadow map are uploaded
+// once and shared by its alternatives' renderers (modes::SceneResources).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "renderer/modes/mode_renderer.h"
+#include "scenes/scene.h"
+#include "study/protocol.h"
+#include "study/render_mode.h"
+
+namespace monoplane::app {
+
+// The renderer's mode and stereo pass for a protocol's mode name (stereo-multiview and stereo-gs
+// are stereo drawn in one pass).
+modes::RenderModeChoice renderer_mode(study::RenderMode mode);
+
+// The scenes and a renderer per (scene, mode) of the protocol, made before the first trial so
+// that no trial waits for one.
+class StudyRenderers {
+  public:
+    // The protocol's scenes at the session's detail, rendered with its [render] settings into
+    // eyes of `extent`; C's target sized once for the protocol's nearest m.
+    StudyRenderers(const vk_core::Context& ctx, const study::Protocol& protocol,
+                   vk::Extent2D extent, const study::RenderSettings& render);
+    modes::ModeRenderer& renderer(const std::string& scene, study::RenderMode mode) {
+        return *renderers_.at({scene, mode});
+    }
+    // Every renderer, e.g. to finish their frames in flight at the end of a session.
+    template <class F>
+    void for_each(F f) {
+        for (auto& [key, renderer] : renderers_) f(*renderer);
+    }
+    const rig::Pose& seat(const std::string& scene) const {
+        const scenes::Viewpoint* v = scenes_.at(scene)->find_viewpoint("default");
+        return v->head;
+    }
+
+  private:
+    std::map<std::string, std::unique_ptr<scenes::Scene>> scenes_;  // outlive the renderers
+    std::map<std::pair<std::string, study::RenderMode>, std::unique_ptr<modes::ModeRenderer>>
+        renderers_;
+};
+
+}  // namespace monoplane::app
