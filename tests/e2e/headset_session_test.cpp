@@ -268,6 +268,60 @@ TEST_F(HeadsetSessionTest, LostSessionIsResumable) {
     EXPECT_EQ(decided, 7);
 }
 
+// The frame and head log on the path participants use (issue 17 item 4): simxr makes every 8th
+// frame one display slot late (missed_slot_every); the log marks exactly those frames missed
+// (derived here from the frame indices alone), every scene frame has its GPU time and head, and
+// analyze flags every data trial (1 in 8 frames missed is above the protocol's 5 %).
+TEST_F(HeadsetSessionTest, MissedSlotsAreLoggedPerFrameAndFlaggedPerTrial) {
+    const fs::path script = dir_ / "late.toml";
+    std::ofstream(script) << "hmd = \"vive\"\ndisplay_rate_hz = 20\nmissed_slot_every = 8\n";
+    const fs::path db = dir_ / "late.sqlite";
+    std::string output;
+    ASSERT_EQ(run(std::string(MONOPLANE_EXE) + " --validation study run --protocol " +
+                      source_dir() + "/protocols/demo.toml --participant M --db " + db.string() +
+                      " --headset simulated --observer default --sim-script " + script.string() +
+                      " --window off --detail test --resolution-scale 0.1 --neutral-s 0.3 "
+                      "--seed 5",
+                  &output),
+              0)
+        << output;
+    {
+        auto store = study::StudyStore::open(db);
+        ASSERT_TRUE(store) << store.error().message;
+        const auto frames = (*store)->frames(1);
+        ASSERT_TRUE(frames) << frames.error().message;
+        ASSERT_GT(frames->size(), 100u);
+        int missed = 0;
+        int scene_frames = 0;
+        for (std::size_t i = 1; i < frames->size(); ++i) {
+            const study::FrameRecord& f = (*frames)[i];
+            ASSERT_EQ(f.frame, (*frames)[i - 1].frame + 1) << "every displayed frame is logged";
+            EXPECT_EQ(f.missed, f.frame % 8 == 0) << "frame " << f.frame;
+            missed += f.missed;
+            if (f.shown == "label1" || f.shown == "label2") {
+                ++scene_frames;
+                EXPECT_TRUE(f.gpu_ms.has_value()) << "frame " << f.frame;
+                EXPECT_TRUE(f.head.has_value()) << "frame " << f.frame;
+                EXPECT_TRUE(f.trial_index.has_value()) << "frame " << f.frame;
+            }
+        }
+        EXPECT_GT(missed, 10);
+        EXPECT_GT(scene_frames, 50);
+    }
+    const fs::path report = dir_ / "analysis";
+    ASSERT_EQ(run(std::string(MONOPLANE_EXE) + " analyze --db " + db.string() + " --out " +
+                      report.string(),
+                  &output),
+              0)
+        << output;
+    std::ifstream in(report / "summary.json");
+    std::stringstream summary;
+    summary << in.rdbuf();
+    // demo.toml: 6 data trials after 1 practice trial, each about 1 frame in 8 late.
+    EXPECT_NE(summary.str().find("\"trials_with_log\": 6,\n    \"flagged\": 6,"), std::string::npos)
+        << summary.str().substr(0, 2000);
+}
+
 TEST(HeadsetWithoutRuntime, ClearMessageAndNonZeroExit) {
     const fs::path dir = test_folder() / "run";
     fs::remove_all(dir);

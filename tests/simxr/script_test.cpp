@@ -35,6 +35,7 @@ TEST(SimxrScript, EmptyScriptKeepsEveryDefault) {
     EXPECT_EQ(script.interaction_profile, "/interaction_profiles/khr/simple_controller");
     EXPECT_TRUE(script.dump_dir.empty());
     EXPECT_EQ(script.dump_every, 1);
+    EXPECT_EQ(script.missed_slot_every, 0);
     EXPECT_EQ(script.exit_after_s, 0.0);
     EXPECT_EQ(script.lose_session_at_s, 0.0);
     EXPECT_TRUE(script.poses.empty());
@@ -50,6 +51,7 @@ physical_device = "llvmpipe"
 interaction_profile = "/interaction_profiles/htc/vive_controller"
 dump_dir = "frames"
 dump_every = 5
+missed_slot_every = 4
 exit_after_s = 3.5
 lose_session_at_s = 7
 [[pose]]
@@ -68,6 +70,7 @@ duration = 0.25
     // Relative paths resolve against the script's folder.
     EXPECT_EQ(script.dump_dir, std::filesystem::path("/scripts/frames"));
     EXPECT_EQ(script.dump_every, 5);
+    EXPECT_EQ(script.missed_slot_every, 4);
     EXPECT_EQ(script.exit_after_s, 3.5);
     EXPECT_EQ(script.lose_session_at_s, 7.0);
     ASSERT_EQ(script.poses.size(), 1u);
@@ -108,6 +111,13 @@ TEST(SimxrScript, ErrorsNameFileLineAndKey) {
     const std::string message = parse_error("dump_every = 1\ndisplay_rate_hz = \"fast\"\n");
     EXPECT_NE(message.find("/scripts/session.toml:2:"), std::string::npos) << message;
     EXPECT_NE(message.find("display_rate_hz"), std::string::npos) << message;
+}
+
+TEST(SimxrScript, AMissedSlotEveryFrameIsRefused) {
+    const std::string message = parse_error("missed_slot_every = 1\n");
+    EXPECT_NE(message.find("/scripts/session.toml:1:"), std::string::npos) << message;
+    EXPECT_NE(message.find("missed_slot_every"), std::string::npos) << message;
+    EXPECT_NE(message.find("at least 2"), std::string::npos) << message;
 }
 
 TEST(SimxrScript, ReportsAllProblemsAtOnce) {

@@ -107,6 +107,7 @@ struct Session {
     // Virtual clock: frame n is displayed at base_time + n * period.
     XrTime base_time = 0;
     XrDuration period = 0;
+    std::int64_t missed_slot_every = 0;         // Script::missed_slot_every
     std::int64_t frames_waited = 0;             // n of the next xrWaitFrame
     std::deque<std::int64_t> waited_not_begun;  // frame indices
     std::optional<std::int64_t> begun_frame;
@@ -123,7 +124,11 @@ struct Session {
     std::map<std::string, float> values, previous_values;  // component path -> value
     std::map<std::string, XrTime> last_change;
 
-    XrTime predicted_display_time(std::int64_t frame) const { return base_time + frame * period; }
+    // Frame n's slot: n periods after the base, plus one for every missed slot before it.
+    XrTime predicted_display_time(std::int64_t frame) const {
+        const std::int64_t missed = missed_slot_every > 0 ? frame / missed_slot_every : 0;
+        return base_time + (frame + missed) * period;
+    }
     // The virtual clock's present: the latest predicted display time handed out.
     XrTime now() const { return frames_waited > 0 ? latest_wait_time : base_time; }
     // Seconds since frame 0's predicted display time.

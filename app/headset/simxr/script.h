@@ -40,6 +40,9 @@ struct Script {
     std::string hmd_name = "vive";      // as written (resolved path for files)
     hmd::HmdProfile hmd;
     double display_rate_hz = 90.0;
+    // > 0: every missed_slot_every-th frame comes one display slot late, as when an application
+    // misses its slot (the runtime repeats the previous frame); 0: never.
+    std::int64_t missed_slot_every = 0;
     std::string physical_device;  // part of a Vulkan device name; "" = the first listed
     std::string interaction_profile = "/interaction_profiles/khr/simple_controller";
     std::filesystem::path dump_dir;  // empty: no dumps

@@ -18,16 +18,10 @@
 namespace monoplane::simxr {
 namespace {
 
-constexpr std::array<std::string_view, 10> kTopLevelKeys = {"hmd",
-                                                            "display_rate_hz",
-                                                            "physical_device",
-                                                            "interaction_profile",
-                                                            "dump_dir",
-                                                            "dump_every",
-                                                            "exit_after_s",
-                                                            "lose_session_at_s",
-                                                            "pose",
-                                                            "input"};
+constexpr std::array<std::string_view, 11> kTopLevelKeys = {
+    "hmd",      "display_rate_hz", "missed_slot_every", "physical_device",   "interaction_profile",
+    "dump_dir", "dump_every",      "exit_after_s",      "lose_session_at_s", "pose",
+    "input"};
 constexpr std::array<std::string_view, 3> kPoseKeys = {"t", "position", "yaw_pitch_roll_deg"};
 constexpr std::array<std::string_view, 3> kInputKeys = {"t", "path", "duration"};
 // Above this a frame period is shorter than any display and the rate is a typo (kHz for Hz).
@@ -159,6 +153,13 @@ void read_settings(const Reader& root, const std::filesystem::path& folder, Scri
         script.dump_dir = std::filesystem::path(*dir).is_relative()
                               ? (folder / *dir).lexically_normal()
                               : std::filesystem::path(*dir);
+    }
+    if (const auto every = root.integer("missed_slot_every")) {
+        if (*every < 0 || *every == 1) {
+            root.problem("missed_slot_every", "must be 0 (never) or at least 2 frames");
+        } else {
+            script.missed_slot_every = *every;
+        }
     }
     if (const auto every = root.integer("dump_every")) {
         if (*every < 1) {

@@ -71,6 +71,7 @@ XrResult XRAPI_CALL xrCreateSession(XrInstance handle, const XrSessionCreateInfo
     }
     session->base_time = kFirstDisplayTime;
     session->period = instance->script.frame_period_ns();
+    session->missed_slot_every = instance->script.missed_slot_every;
     Session* raw = session.get();
     *session_handle = register_object<XrSession>(std::move(session));
     instance->session = raw;
