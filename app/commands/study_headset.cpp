@@ -143,7 +143,7 @@ bool has_display() {
 
 }  // namespace
 
-void select_simulated_runtime(const HeadsetStudyOptions& options) {
+std::optional<fs::path> select_simulated_runtime(const HeadsetStudyOptions& options) {
     // The simulated runtime, whatever runtime the machine has active: a dry run must never
     // reach a real headset.
     setenv("XR_RUNTIME_JSON", MONOPLANE_SIMXR_MANIFEST, 1);
@@ -152,7 +152,7 @@ void select_simulated_runtime(const HeadsetStudyOptions& options) {
             throw UserError("--sim-script " + options.sim_script + ": no such file");
         }
         setenv("SIMXR_SCRIPT", fs::absolute(options.sim_script).c_str(), 1);
-        return;
+        return std::nullopt;
     }
     // A built-in profile name stays a name; a file is made absolute, as the script's relative
     // paths are read against the script's folder.
@@ -170,6 +170,7 @@ void select_simulated_runtime(const HeadsetStudyOptions& options) {
     }
     if (!out) throw UserError("cannot write the simulated runtime's script " + script.string());
     setenv("SIMXR_SCRIPT", script.c_str(), 1);
+    return script;
 }
 
 namespace {
@@ -197,6 +198,13 @@ class HeadsetLoop {
           compositor_frames_(ctx),
           frame_log_(store, session_id),
           window_answers_(protocol.questionnaire.items.size(), 0) {
+        // A resumed session's frames continue its numbering after every frame an earlier run
+        // logged or an event names: the frame log's rows (primary key session, frame) and the
+        // events' frame numbers stay those of the run that showed them.
+        for (const study::FrameRecord& f : store.frames(session_id).value_or_throw())
+            frame_base_ = std::max(frame_base_, f.frame + 1);
+        for (const study::TrialEvent& e : store.events(session_id).value_or_throw())
+            frame_base_ = std::max(frame_base_, e.frame + 1);
         headset::TextStyle label_style;
         label_style.scale = 2;
         label_style.padding = 2;
@@ -243,7 +251,8 @@ class HeadsetLoop {
     void frame() {
         frame_start_ = Clock::now();
         step_start_ = frame_start_;
-        const headset::HeadsetFrame frame = headset_.begin_frame().value_or_throw();
+        headset::HeadsetFrame frame = headset_.begin_frame().value_or_throw();
+        frame.index += frame_base_;  // the session's frame number, continued over resumes
         const std::int64_t now = frame.display_time_ns;
         if (first_frame_ns_ < 0) first_frame_ns_ = now;
         rig::Pose head;
@@ -529,6 +538,7 @@ class HeadsetLoop {
     Clock::time_point step_start_;
     SeatAnchor anchor_;
     std::int64_t first_frame_ns_ = -1;
+    std::int64_t frame_base_ = 0;  // the runtime's frame n is the session's frame_base_ + n
     int last_reported_trial_ = -1;
     bool exit_requested_ = false;
     // The experimenter window's state.
@@ -561,8 +571,15 @@ study::SessionStatus run_headset_session(
     const study::Protocol& protocol, study::Observer* observer,
     const std::function<double(const study::ScheduledTrial&)>& trial_error_px,
     const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
-    if (options.headset == "simulated") select_simulated_runtime(options);
-    auto headset = headset::OpenXrHeadset::create().value_or_throw();
+    std::optional<fs::path> written_script;
+    if (options.headset == "simulated") written_script = select_simulated_runtime(options);
+    auto created = headset::OpenXrHeadset::create();
+    // simxr has read its script (in xrCreateInstance): the temporary file is not needed.
+    if (written_script) {
+        std::error_code ignored;
+        fs::remove(*written_script, ignored);
+    }
+    auto headset = std::move(created).value_or_throw();
     std::cerr << "OpenXR runtime: " << headset->runtime_name() << ", system "
               << headset->system_name() << "\n";
     vk_core::ContextOptions context_options = global.context_options();

@@ -5,6 +5,9 @@
 // questionnaire, in the headset or entered by the experimenter in the window.
 #pragma once
 
+#include <filesystem>
+#include <optional>
+
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -34,8 +37,9 @@ struct HeadsetStudyOptions {
 };
 
 // Points the OpenXR loader at monoplane's simulated runtime and writes its script. Call before
-// the headset is created.
-void select_simulated_runtime(const HeadsetStudyOptions& options);
+// the headset is created. Returns the script it wrote (none with --sim-script): simxr reads it
+// in xrCreateInstance, after which the caller removes it.
+std::optional<std::filesystem::path> select_simulated_runtime(const HeadsetStudyOptions& options);
 
 // Runs the session's remaining trials and questionnaire on the headset. `begin` is called once
 // the headset and device are known (runtime name, device name) and returns the session id (a

@@ -1,9 +1,15 @@
-// Crash safety (issue 4, item 5): a child process running a session is killed with SIGKILL at
-// random moments; after each kill the database opens cleanly, every write the child reported as
-// committed is there, and `study resume` finishes the session with the right number of trials.
+// Crash safety (issue 4, item 5; issue 17, item 5): a child process running a session is killed
+// with SIGKILL mid-session; after each kill SQLite's integrity_check is ok, the database opens
+// cleanly, every write the child reported as committed is there, and `study resume` finishes the
+// session with the right number of trials. Headless sessions (`--headset none`) are killed at
+// random moments; sessions on the simulated headset (`--headset simulated`, the path participants
+// use) right after a varied number of committed writes, their resumed runs too, and there the
+// frame log (table frames) must hold every frame displayed before the last committed event.
 #include <gtest/gtest.h>
+#include <sqlite3.h>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,10 +17,15 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "study/study_store.h"
@@ -27,17 +38,21 @@ std::string source_dir() {
     return dir ? dir : ".";
 }
 
-// Starts `args` with stdout on a pipe; returns the pid and the pipe's read end.
-std::pair<pid_t, int> spawn(const std::vector<std::string>& args) {
+// Starts `args` with stdout on a pipe; returns the pid and the pipe's read end. tmpdir: the
+// child's TMPDIR, where the simulated headset writes its runtime script (a killed child leaves
+// it behind), and where its stderr goes (stderr.log); empty: inherited, and stderr discarded.
+std::pair<pid_t, int> spawn(const std::vector<std::string>& args, const std::string& tmpdir = {}) {
     int fds[2];
     if (pipe(fds) != 0) return {-1, -1};
     const pid_t pid = fork();
     if (pid == 0) {
         dup2(fds[1], STDOUT_FILENO);
-        const int null = open("/dev/null", O_WRONLY);
-        dup2(null, STDERR_FILENO);
+        const std::string log = tmpdir.empty() ? "/dev/null" : tmpdir + "/stderr.log";
+        const int err = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        dup2(err, STDERR_FILENO);
         close(fds[0]);
         close(fds[1]);
+        if (!tmpdir.empty()) setenv("TMPDIR", tmpdir.c_str(), 1);
         std::vector<char*> argv;
         for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
         argv.push_back(nullptr);
@@ -58,27 +73,183 @@ std::string read_all(int fd) {
     return text;
 }
 
-int run_to_end(const std::vector<std::string>& args) {
-    auto [pid, fd] = spawn(args);
-    read_all(fd);
+// Runs `args` to its end; returns its exit status and, in *output, what it printed (on stdout,
+// then on stderr where tmpdir holds it).
+int run_to_end(const std::vector<std::string>& args, std::string* output = nullptr,
+               const std::string& tmpdir = {}) {
+    auto [pid, fd] = spawn(args, tmpdir);
+    std::string text = read_all(fd);
+    if (!tmpdir.empty()) {
+        std::ifstream err(tmpdir + "/stderr.log");
+        text += std::string(std::istreambuf_iterator<char>(err), {});
+    }
+    if (output) *output = text;
     int status = 0;
     waitpid(pid, &status, 0);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-// Parses "committed trial 3 switched label 2 t 123 frame 11".
+struct KilledRun {
+    std::string output;    // everything the child printed, up to its death
+    bool killed = false;   // it died of the SIGKILL (not: it ended first)
+    bool stalled = false;  // it printed nothing for a minute
+};
+
+// Runs `args` and SIGKILLs it as soon as it has printed its k-th "committed" line (the write is
+// durable then; the child is somewhere in its next frames). What it printed before dying is read
+// to the end: every committed line there is a write that must survive.
+KilledRun run_and_kill_after(const std::vector<std::string>& args, int k,
+                             const std::string& tmpdir) {
+    KilledRun run;
+    auto [pid, fd] = spawn(args, tmpdir);
+    if (pid <= 0) return run;
+    int committed = 0;
+    std::size_t scanned = 0;
+    bool sent = false;
+    char buffer[4096];
+    for (;;) {
+        pollfd p{fd, POLLIN, 0};
+        if (poll(&p, 1, 60000) <= 0) {
+            run.stalled = true;
+            break;
+        }
+        const ssize_t n = read(fd, buffer, sizeof buffer);
+        if (n <= 0) break;  // the child has ended (or died)
+        run.output.append(buffer, static_cast<std::size_t>(n));
+        for (std::size_t end; !sent && (end = run.output.find('\n', scanned)) != std::string::npos;
+             scanned = end + 1) {
+            if (run.output.compare(scanned, 10, "committed ") == 0 && ++committed == k) {
+                kill(pid, SIGKILL);
+                sent = true;
+            }
+        }
+    }
+    if (!sent) kill(pid, SIGKILL);  // stalled: do not leave it behind
+    int status = 0;
+    waitpid(pid, &status, 0);
+    run.output += read_all(fd);
+    run.killed = WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL && sent;
+    return run;
+}
+
+// What a child reported as committed, from its --trace lines:
+// "committed trial 3 switched label 2 t 123 frame 11", "committed trial 3 outcome choice 2",
+// "committed answer 1: 5", "committed session completed".
 struct CommittedEvent {
     int trial = 0;
     std::string kind;
     int label = 0;
     std::int64_t time_ns = 0;
     std::int64_t frame = 0;
+    auto key() const { return std::tie(trial, kind, label, time_ns, frame); }
+    bool operator<(const CommittedEvent& o) const { return key() < o.key(); }
 };
+
+struct Committed {
+    std::vector<CommittedEvent> events;
+    std::vector<std::pair<int, int>> outcomes;  // trial, choice
+    std::vector<std::pair<int, int>> answers;   // item (1-based), value, in order
+    int lines = 0;
+    std::string last;  // the last committed line, without "committed "
+};
+
+Committed parse_committed(const std::string& output) {
+    Committed c;
+    std::istringstream lines(output);
+    std::string line;
+    while (std::getline(lines, line)) {
+        std::istringstream words(line);
+        std::string tag, what;
+        words >> tag >> what;
+        if (tag != "committed") continue;
+        ++c.lines;
+        c.last = line.substr(10);
+        if (what == "answer") {
+            int item = 0, value = 0;
+            char colon = 0;
+            words >> item >> colon >> value;
+            c.answers.emplace_back(item, value);
+            continue;
+        }
+        if (what != "trial") continue;
+        CommittedEvent e;
+        words >> e.trial >> e.kind;
+        if (e.kind == "outcome") {
+            std::string choice_word;
+            int choice = 0;
+            words >> choice_word >> choice;
+            c.outcomes.emplace_back(e.trial, choice);
+            continue;
+        }
+        std::string w;
+        words >> w >> e.label >> w >> e.time_ns >> w >> e.frame;
+        c.events.push_back(e);
+    }
+    return c;
+}
+
+// The kind of a committed write: shown, switched, confirmed, refused, outcome, questionnaire,
+// answer or session.
+std::string write_kind(const std::string& line) {
+    std::istringstream words(line);
+    std::string first, trial, kind;
+    words >> first >> trial >> kind;
+    return first == "trial" ? kind : first;
+}
+
+// PRAGMA integrity_check through a connection of its own, as an sqlite3 shell would run it.
+std::string integrity_check(const std::string& path) {
+    sqlite3* db = nullptr;
+    std::string result = "cannot open";
+    if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK) {
+        sqlite3_stmt* stmt = nullptr;
+        result = "cannot run";
+        if (sqlite3_prepare_v2(db, "PRAGMA integrity_check", -1, &stmt, nullptr) == SQLITE_OK) {
+            result.clear();
+            while (sqlite3_step(stmt) == SQLITE_ROW) {
+                const auto* text = reinterpret_cast<const char*>(sqlite3_column_text(stmt, 0));
+                result += (result.empty() ? "" : "; ") + std::string(text ? text : "");
+            }
+            sqlite3_finalize(stmt);
+        }
+    }
+    sqlite3_close_v2(db);
+    return result;
+}
+
+// Every committed event is stored, as often as it was committed (a resumed run may repeat an
+// event of a trial the kill left undecided).
+void expect_events_kept(const std::vector<CommittedEvent>& committed,
+                        const std::vector<study::TrialEvent>& stored) {
+    std::map<CommittedEvent, int> count;
+    for (const study::TrialEvent& e : stored) {
+        ++count[{e.trial_index, std::string(study::event_kind_name(e.kind)), e.label, e.time_ns,
+                 e.frame}];
+    }
+    for (const CommittedEvent& c : committed) {
+        EXPECT_GT(count[c]--, 0) << "lost: trial " << c.trial << " " << c.kind << " label "
+                                 << c.label << " t " << c.time_ns << " frame " << c.frame;
+    }
+}
+
+void expect_outcomes_kept(const std::vector<std::pair<int, int>>& outcomes,
+                          const std::vector<study::TrialRecord>& records, std::int64_t id) {
+    for (const auto& [trial, choice] : outcomes) {
+        bool found = false;
+        for (const study::TrialRecord& r : records) {
+            found = found || (r.session_id == id && r.trial.index == trial && r.decided &&
+                              r.outcome.choice == choice);
+        }
+        EXPECT_TRUE(found) << "lost decision of trial " << trial;
+    }
+}
 
 TEST(StudyCrash, KilledSessionsKeepEveryCommittedWriteAndResume) {
     const std::string exe = MONOPLANE_EXE;
     const std::string protocol = source_dir() + "/protocols/demo.toml";
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "monoplane_crash";
+    // A folder of this process's own: another build's ctest may run this test at the same time.
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("monoplane_crash_" + std::to_string(getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     std::mt19937_64 random(20190323);
@@ -111,34 +282,13 @@ TEST(StudyCrash, KilledSessionsKeepEveryCommittedWriteAndResume) {
         waitpid(pid, &status, 0);
         const std::string output = read_all(fd);  // what the child reported before dying
         const bool killed = WIFSIGNALED(status);
-
-        std::vector<CommittedEvent> committed;
-        std::vector<std::pair<int, int>> outcomes;  // trial, choice
-        std::istringstream lines(output);
-        std::string line;
-        while (std::getline(lines, line)) {
-            std::istringstream words(line);
-            std::string tag, what;
-            words >> tag >> what;
-            if (tag != "committed" || what != "trial") continue;
-            CommittedEvent e;
-            words >> e.trial >> e.kind;
-            if (e.kind == "outcome") {
-                std::string choice_word;
-                int choice = 0;
-                words >> choice_word >> choice;
-                outcomes.emplace_back(e.trial, choice);
-                continue;
-            }
-            std::string w;
-            words >> w >> e.label >> w >> e.time_ns >> w >> e.frame;
-            committed.push_back(e);
-        }
+        const Committed committed = parse_committed(output);
 
         if (!std::filesystem::exists(db)) {
-            EXPECT_TRUE(committed.empty());  // killed before the database existed
+            EXPECT_TRUE(committed.events.empty());  // killed before the database existed
             continue;
         }
+        EXPECT_EQ(integrity_check(db), "ok");
         auto opened = study::StudyStore::open(db);
         ASSERT_TRUE(opened.ok()) << opened.error().message;  // opens cleanly after the kill
         std::unique_ptr<study::StudyStore> store = std::move(opened).value();
@@ -154,26 +304,12 @@ TEST(StudyCrash, KilledSessionsKeepEveryCommittedWriteAndResume) {
         if (killed) ++killed_mid_session;
         const auto events = store->events(id);
         ASSERT_TRUE(events.ok());
-        for (const CommittedEvent& c : committed) {
-            bool found = false;
-            for (const study::TrialEvent& e : *events) {
-                found = found || (e.trial_index == c.trial && e.label == c.label &&
-                                  e.time_ns == c.time_ns && e.frame == c.frame &&
-                                  std::string(study::event_kind_name(e.kind)) == c.kind);
-            }
-            EXPECT_TRUE(found) << "lost: trial " << c.trial << " " << c.kind << " t " << c.time_ns;
-        }
-        for (const auto& [trial, choice] : outcomes) {
-            bool found = false;
-            for (const study::TrialRecord& r : *records) {
-                found = found || (r.session_id == id && r.trial.index == trial && r.decided &&
-                                  r.outcome.choice == choice);
-            }
-            EXPECT_TRUE(found) << "lost decision of trial " << trial;
-        }
+        expect_events_kept(committed.events, *events);
+        expect_outcomes_kept(committed.outcomes, *records, id);
         store.reset();  // close before the resume process opens it
 
         ASSERT_EQ(run_to_end({exe, "study", "resume", "--db", db, "--headset", "none"}), 0);
+        EXPECT_EQ(integrity_check(db), "ok");
         auto reopened = study::StudyStore::open(db);
         ASSERT_TRUE(reopened.ok());
         const auto schedule = (*reopened)->load_schedule(id);
@@ -186,7 +322,7 @@ TEST(StudyCrash, KilledSessionsKeepEveryCommittedWriteAndResume) {
         ASSERT_TRUE(info.ok());
         EXPECT_EQ(info->status, study::SessionStatus::Completed);
         // Decisions made before the kill survived the resume unchanged.
-        for (const auto& [trial, choice] : outcomes) {
+        for (const auto& [trial, choice] : committed.outcomes) {
             for (const study::TrialRecord& r : *final_records) {
                 if (r.trial.index == trial) {
                     EXPECT_EQ(r.outcome.choice, choice);
@@ -198,6 +334,234 @@ TEST(StudyCrash, KilledSessionsKeepEveryCommittedWriteAndResume) {
     EXPECT_GE(killed_mid_session, 20);
     std::cout << killed_mid_session << " sessions killed mid-way, a session takes " << session_ms
               << " ms\n";
+    if (!::testing::Test::HasFailure()) std::filesystem::remove_all(dir);
+}
+
+// The simulated headset's virtual clock (docs/simxr.md): frame n of a run is displayed at
+// 10 s + n * period, and frame 0 (SYNCHRONIZED) is not rendered; every later frame is.
+constexpr std::int64_t kSimBaseNs = 10'000'000'000;
+constexpr int kSimRateHz = 2;  // few frames per trial: the observer's dwells are virtual seconds
+constexpr std::int64_t kSimPeriodNs = 1'000'000'000 / kSimRateHz;
+
+// The frame log of a simulated-headset session, after a kill or at its end, against what the
+// runtime displayed and what was committed. Each run of the session (the first, and each resume)
+// is recognised by its rows' offset between the logged frame number and the runtime's frame n
+// (from the display time). In each run the rows must be exactly n = 1, 2, ..., L: every frame the
+// runtime displayed up to the run's last written frame, none lost or replaced. Every stored event
+// that names a frame has that frame's row, showing that event's trial (and, for shown and
+// switched, its label at the event's time): so the frames before the last committed event of
+// each run were committed with it. Returns "L1+L2+..." (rows per run) for the log.
+std::string expect_frame_log_complete(const std::vector<study::FrameRecord>& frames,
+                                      const std::vector<study::TrialEvent>& events) {
+    std::map<std::int64_t, const study::FrameRecord*> by_frame;
+    std::vector<std::pair<std::int64_t, std::int64_t>> runs;  // offset, rows
+    std::int64_t expected_n = 0;
+    for (const study::FrameRecord& f : frames) {
+        by_frame[f.frame] = &f;
+        EXPECT_FALSE(f.missed) << "frame " << f.frame << ": the virtual clock misses no slot";
+        const std::int64_t since = f.display_time_ns - kSimBaseNs;
+        EXPECT_EQ(since % kSimPeriodNs, 0) << "frame " << f.frame << " at " << f.display_time_ns;
+        const std::int64_t n = since / kSimPeriodNs;
+        const std::int64_t offset = f.frame - n;
+        if (runs.empty() || runs.back().first != offset) {
+            // A new run: it cannot start inside an earlier one (frames are in order).
+            EXPECT_TRUE(runs.empty() || offset > runs.back().first)
+                << "frame " << f.frame << " (runtime frame " << n << ") belongs to no run";
+            runs.emplace_back(offset, 0);
+            expected_n = 1;
+        }
+        EXPECT_EQ(n, expected_n) << "the frame log of a run lacks runtime frame " << expected_n
+                                 << " (logged frame " << f.frame + expected_n - n << ")";
+        expected_n = n + 1;
+        ++runs.back().second;
+    }
+    for (const study::TrialEvent& e : events) {
+        if (e.frame < 0) continue;
+        const std::string what = "event trial " + std::to_string(e.trial_index) + " " +
+                                 std::string(study::event_kind_name(e.kind)) + " label " +
+                                 std::to_string(e.label) + " frame " + std::to_string(e.frame);
+        const auto row = by_frame.find(e.frame);
+        if (row == by_frame.end()) {
+            ADD_FAILURE() << what << ": its frame is not in the frame log";
+            continue;
+        }
+        const study::FrameRecord& f = *row->second;
+        EXPECT_EQ(f.trial_index.value_or(-1), e.trial_index) << what << ", logged " << f.shown;
+        if (e.kind == study::EventKind::Shown || e.kind == study::EventKind::Switched) {
+            EXPECT_EQ(f.shown, "label" + std::to_string(e.label)) << what;
+            EXPECT_EQ(f.display_time_ns, e.time_ns) << what;
+        }
+    }
+    std::string summary;
+    for (const auto& [offset, rows] : runs)
+        summary += (summary.empty() ? "" : "+") + std::to_string(rows);
+    return summary;
+}
+
+// The same on the path participants use: `study run --headset simulated` (the simulated OpenXR
+// runtime on its virtual clock, the default observer at the controls, the validation layer on),
+// killed right after its k-th committed write for varied k, then `study resume` killed the same
+// way, several times per database, and a last resume to the end. After each kill: integrity_check,
+// every committed event, decision and answer of every run so far, and a complete frame log.
+TEST(StudyCrash, KilledHeadsetSessionsKeepEveryCommittedWriteAndFrameAndResume) {
+    namespace fs = std::filesystem;
+    const std::string exe = MONOPLANE_EXE;
+    const std::string protocol = source_dir() + "/protocols/demo.toml";
+    const fs::path dir =
+        fs::temp_directory_path() / ("monoplane_crash_headset_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string tmpdir = dir.string();
+    // Small and fast: 5 % of the Vive's eye size, the test scenes, two frames a second, a short
+    // neutral screen.
+    const std::vector<std::string> headset = {
+        "--headset",          "simulated", "--window",   "off",
+        "--resolution-scale", "0.05",      "--sim-rate", std::to_string(kSimRateHz),
+        "--neutral-s",        "0.2",       "--trace"};
+    const auto run_args = [&](const std::string& db, const std::string& participant, int seed) {
+        std::vector<std::string> args = {exe,
+                                         "--validation",
+                                         "study",
+                                         "run",
+                                         "--protocol",
+                                         protocol,
+                                         "--participant",
+                                         participant,
+                                         "--db",
+                                         db,
+                                         "--observer",
+                                         "default",
+                                         "--detail",
+                                         "test",
+                                         "--seed",
+                                         std::to_string(seed)};
+        args.insert(args.end(), headset.begin(), headset.end());
+        return args;
+    };
+    const auto resume_args = [&](const std::string& db) {
+        std::vector<std::string> args = {exe, "--validation", "study", "resume", "--db", db};
+        args.insert(args.end(), headset.begin(), headset.end());
+        return args;
+    };
+
+    // A whole session, unkilled: how many writes it commits (the kills spread over them), and a
+    // reference for the checks.
+    const auto start = std::chrono::steady_clock::now();
+    std::string output;
+    const std::string timing_db = (dir / "timing.sqlite").string();
+    ASSERT_EQ(run_to_end(run_args(timing_db, "timing", 999), &output, tmpdir), 0) << output;
+    const auto session_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                                std::chrono::steady_clock::now() - start)
+                                .count();
+    const int session_lines = parse_committed(output).lines;
+    ASSERT_GT(session_lines, 20) << output;
+    {
+        auto store = study::StudyStore::open(timing_db);
+        ASSERT_TRUE(store.ok()) << store.error().message;
+        const auto frames = (*store)->frames(1);
+        const auto events = (*store)->events(1);
+        ASSERT_TRUE(frames.ok() && events.ok());
+        ASSERT_FALSE(frames->empty());
+        expect_frame_log_complete(*frames, *events);
+    }
+
+    std::mt19937_64 random(20170318);
+    constexpr int kChainKills = 8;  // kills per database before the last resume
+    int killed_mid_session = 0;
+    std::map<std::string, int> killed_after;  // what the last committed line was
+    for (int chain = 0; chain < 6 && killed_mid_session < 22; ++chain) {
+        SCOPED_TRACE("database " + std::to_string(chain));
+        const std::string db = (dir / ("chain" + std::to_string(chain) + ".sqlite")).string();
+        std::vector<CommittedEvent> events;  // committed by every run of this database so far
+        std::vector<std::pair<int, int>> outcomes;
+        std::map<int, int> answers;  // item (1-based): the latest committed value
+        std::string runs;
+        bool finished = false;
+        for (int segment = 0; segment < kChainKills && !finished; ++segment) {
+            SCOPED_TRACE("run " + std::to_string(segment));
+            // The first run of each database is killed in a different third of the session;
+            // the resumed runs a few writes in (1 to 9), so the kills walk through the rest of
+            // it, the questionnaire and the start of each resumed run included.
+            const int k = segment == 0 ? 1 + (chain % 3) * (session_lines - 3) / 3 + chain / 3
+                                       : 1 + static_cast<int>(random() % 9);
+            const KilledRun run = run_and_kill_after(
+                segment == 0 ? run_args(db, "H" + std::to_string(chain), 3000 + chain)
+                             : resume_args(db),
+                k, tmpdir);
+            ASSERT_FALSE(run.stalled) << run.output;
+            const Committed c = parse_committed(run.output);
+            events.insert(events.end(), c.events.begin(), c.events.end());
+            outcomes.insert(outcomes.end(), c.outcomes.begin(), c.outcomes.end());
+            for (const auto& [item, value] : c.answers) answers[item] = value;
+
+            ASSERT_TRUE(fs::exists(db));  // a committed line came first
+            EXPECT_EQ(integrity_check(db), "ok");
+            auto opened = study::StudyStore::open(db);
+            ASSERT_TRUE(opened.ok()) << opened.error().message;
+            std::unique_ptr<study::StudyStore> store = std::move(opened).value();
+            const auto info = store->session(1);
+            ASSERT_TRUE(info.ok()) << info.error().message;
+            finished = info->status == study::SessionStatus::Completed;
+            // A run that was not killed ended the session (it had fewer writes left than k).
+            EXPECT_TRUE(run.killed || finished) << run.output;
+            if (run.killed && !finished) {
+                ++killed_mid_session;
+                ++killed_after[write_kind(c.last)];
+            }
+            const auto stored = store->events(1);
+            const auto records = store->trials(1);
+            const auto stored_answers = store->answers(1);
+            const auto frames = store->frames(1);
+            ASSERT_TRUE(stored.ok() && records.ok() && stored_answers.ok() && frames.ok());
+            expect_events_kept(events, *stored);
+            expect_outcomes_kept(outcomes, *records, 1);
+            for (const auto& [item, value] : answers) {
+                bool found = false;
+                for (const study::QuestionnaireAnswer& a : *stored_answers)
+                    found = found || (a.item == item - 1 && a.answer == value);
+                EXPECT_TRUE(found) << "lost answer " << value << " to item " << item;
+            }
+            runs = expect_frame_log_complete(*frames, *stored);
+        }
+
+        // The last resume, to the end.
+        if (!finished) {
+            ASSERT_EQ(run_to_end(resume_args(db), &output, tmpdir), 0) << output;
+            const Committed c = parse_committed(output);
+            events.insert(events.end(), c.events.begin(), c.events.end());
+        }
+        EXPECT_EQ(integrity_check(db), "ok");
+        auto store = study::StudyStore::open(db);
+        ASSERT_TRUE(store.ok()) << store.error().message;
+        const auto info = (*store)->session(1);
+        ASSERT_TRUE(info.ok());
+        EXPECT_EQ(info->status, study::SessionStatus::Completed);
+        const auto schedule = (*store)->load_schedule(1);
+        const auto records = (*store)->trials(1);
+        const auto stored = (*store)->events(1);
+        const auto frames = (*store)->frames(1);
+        ASSERT_TRUE(schedule.ok() && records.ok() && stored.ok() && frames.ok());
+        EXPECT_EQ(records->size(), schedule->trials.size());
+        for (const study::TrialRecord& r : *records) EXPECT_TRUE(r.decided) << r.trial.index;
+        // Decisions made before a kill survived the resumes unchanged.
+        for (const auto& [trial, choice] : outcomes) {
+            for (const study::TrialRecord& r : *records) {
+                if (r.trial.index == trial) {
+                    EXPECT_EQ(r.outcome.choice, choice) << trial;
+                }
+            }
+        }
+        expect_events_kept(events, *stored);
+        runs = expect_frame_log_complete(*frames, *stored);
+        std::cout << "database " << chain << ": frame log rows per run " << runs << "\n";
+    }
+    EXPECT_GE(killed_mid_session, 20);
+    std::cout << killed_mid_session
+              << " headset sessions killed mid-way (a whole session: " << session_lines
+              << " committed writes, " << session_ms << " ms); killed after:";
+    for (const auto& [what, count] : killed_after) std::cout << " " << what << " " << count;
+    std::cout << "\n";
+    if (!::testing::Test::HasFailure()) fs::remove_all(dir);
 }
 
 }  // namespace
