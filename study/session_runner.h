@@ -1,8 +1,11 @@
-// Runs a session's remaining trials: the schedule's trials in order, each through the 2AFC state
-// machine, driven by an input source (a simulated observer here; a participant's controller with
-// a headset), every event and outcome written to the store before the next frame is presented,
-// then the questionnaire, then the session's status. Crash-safe by construction: nothing is kept
-// only in memory across a frame, and a resumed session restarts at the first undecided trial.
+// `--headset none`: a session run by the same engine as a headset session (LiveSession, with the
+// simulated observer at its controls through ObserverInput, exactly as `--headset simulated`
+// drives it) on a virtual display that presents a frame every 1/frame_rate_hz seconds of virtual
+// time, as fast as the machine goes. So the refusal, switch and confirmation rules, the neutral
+// screen and the questionnaire exist once (LiveSession and TrialStateMachine), and the crash
+// tests of the headless path exercise the path participants use. Every event and outcome is
+// written before the next frame is presented; a resumed session restarts at the first undecided
+// trial.
 #pragma once
 
 #include <cstdint>
@@ -18,6 +21,8 @@ namespace monoplane::study {
 
 struct RunOptions {
     double frame_rate_hz = 90.0;  // the virtual display's rate (headset none)
+    // The neutral screen between trials and before the first (LiveOptions::neutral_ns).
+    std::int64_t neutral_ns = 1'000'000'000;
     // Wall-clock sleep per event, so a test can kill the process at a random moment mid-session;
     // 0 runs as fast as possible (a 30-trial session in well under a second).
     std::int64_t pace_ns = 0;
@@ -27,8 +32,9 @@ struct RunOptions {
     std::function<double(const ScheduledTrial&)> trial_error_px;
 };
 
-// Runs trials first_trial.. of the stored schedule and the questionnaire; returns the final
-// status (Completed). The observer answers for the participant (headset none).
+// Runs the stored session from its first undecided trial through the questionnaire; returns the
+// final status (Completed). The observer answers for the participant. Errors: a failed write,
+// or a session that does not finish within a day of virtual time.
 Result<SessionStatus> run_session(StudyStore& store, std::int64_t session_id,
                                   const Protocol& protocol, Observer& observer,
                                   const RunOptions& options);

@@ -60,6 +60,7 @@ study::RunOptions run_options(const StudyOptions& o, const hmd::HmdProfile& hmd,
                               const study::Protocol& protocol) {
     study::RunOptions options;
     options.pace_ns = static_cast<std::int64_t>(o.pace_ms * 1e6);
+    options.neutral_ns = static_cast<std::int64_t>(o.headset_options.neutral_s * 1e9);
     options.trial_error_px = error_model(hmd, protocol);
     if (o.trace) {
         // One line per durable write, flushed: a test that kills the process knows what was
