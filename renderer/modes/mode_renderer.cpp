@@ -175,7 +175,11 @@ void ModeRenderer::make_view_sets(View& view) const {
 
 ModeRenderer::~ModeRenderer() {
     // Nothing a submitted frame uses may go before it has completed.
-    ring_.wait_all();
+    try {
+        ring_.wait_all();
+    } catch (const vk::SystemError&) {
+        // The device is lost: nothing in flight will complete, and nothing waits for it.
+    }
 }
 
 void ModeRenderer::ensure_mono_view(int width, int height) {

@@ -16,7 +16,11 @@ FrameRing::FrameRing(const Context& ctx) : ctx_(ctx) {
 }
 
 FrameRing::~FrameRing() {
-    wait_all();
+    try {
+        wait_all();
+    } catch (const vk::SystemError&) {
+        // The device is lost: nothing in flight will complete, and nothing waits for it.
+    }
 }
 
 void FrameRing::wait(std::uint32_t slot) {
