@@ -41,15 +41,22 @@ Result<std::unique_ptr<LiveSession>> LiveSession::open(StudyStore& store, std::i
     if (!schedule) return schedule.error();
     Result<int> first = store.first_undecided_trial(session_id);
     if (!first) return first.error();
-    Result<bool> ok = store.set_status(session_id, SessionStatus::Running);
-    if (!ok) return ok.error();
-    return std::unique_ptr<LiveSession>(
-        new LiveSession(store, session_id, protocol, options, *schedule, *first));
+    return begin(store, session_id, protocol, options, std::move(*schedule), *first);
 }
 
-LiveSession::LiveSession(StudyStore& store, std::int64_t session_id, const Protocol& protocol,
+Result<std::unique_ptr<LiveSession>> LiveSession::begin(SessionLog& log, std::int64_t session_id,
+                                                        const Protocol& protocol,
+                                                        const LiveOptions& options,
+                                                        Schedule schedule, int first_trial) {
+    Result<bool> ok = log.set_status(session_id, SessionStatus::Running);
+    if (!ok) return ok.error();
+    return std::unique_ptr<LiveSession>(
+        new LiveSession(log, session_id, protocol, options, std::move(schedule), first_trial));
+}
+
+LiveSession::LiveSession(SessionLog& log, std::int64_t session_id, const Protocol& protocol,
                          const LiveOptions& options, Schedule schedule, int first_trial)
-    : store_(store),
+    : log_(log),
       session_id_(session_id),
       protocol_(protocol),
       options_(options),
@@ -69,7 +76,7 @@ void LiveSession::committed(const std::string& what) const {
 
 Result<bool> LiveSession::log(const std::vector<TrialEvent>& events) {
     for (const TrialEvent& e : events) {
-        Result<bool> ok = store_.append_event(session_id_, e);
+        Result<bool> ok = log_.append_event(session_id_, e);
         if (!ok) return ok;
         committed(describe(e));
     }
@@ -116,7 +123,7 @@ bool LiveSession::finished() const {
 }
 
 Result<bool> LiveSession::finish(SessionStatus status) {
-    Result<bool> ok = store_.set_status(session_id_, status);
+    Result<bool> ok = log_.set_status(session_id_, status);
     if (!ok) return ok;
     kind_ = status == SessionStatus::Completed ? ScreenKind::Finished : ScreenKind::Aborted;
     committed("session " + std::string(session_status_name(status)));
@@ -158,7 +165,7 @@ Result<bool> LiveSession::frame_presented(std::int64_t frame, std::int64_t time_
 
 Result<bool> LiveSession::record_answer(int item, int value) {
     const Questionnaire& q = protocol_.questionnaire;
-    Result<bool> ok = store_.record_answer(session_id_, item, q.items[item], value);
+    Result<bool> ok = log_.record_answer(session_id_, item, q.items[item], value);
     if (!ok) return ok;
     answers_[item] = value;
     committed("answer " + std::to_string(item + 1) + ": " + std::to_string(value));
@@ -243,7 +250,7 @@ Result<std::string> LiveSession::request(LiveInput input, std::int64_t time_ns) 
     Result<bool> ok = log(*events);
     if (!ok) return ok.error();
     if (machine_->state() == TrialState::Decided) {
-        ok = store_.record_outcome(session_id_, machine_->trial().index, machine_->outcome());
+        ok = log_.record_outcome(session_id_, machine_->trial().index, machine_->outcome());
         if (!ok) return ok.error();
         committed("trial " + std::to_string(machine_->trial().index) + " outcome choice " +
                   std::to_string(machine_->outcome().choice));

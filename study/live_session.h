@@ -63,6 +63,12 @@ class LiveSession {
     static Result<std::unique_ptr<LiveSession>> open(StudyStore& store, std::int64_t session_id,
                                                      const Protocol& protocol,
                                                      const LiveOptions& options);
+    // Runs `schedule` from trial position first_trial on, writing to `log` (a simulation's
+    // memory, or the store as open() does); marks the session running.
+    static Result<std::unique_ptr<LiveSession>> begin(SessionLog& log, std::int64_t session_id,
+                                                      const Protocol& protocol,
+                                                      const LiveOptions& options, Schedule schedule,
+                                                      int first_trial);
 
     LiveScreen screen() const;
     LiveProgress progress() const;
@@ -80,7 +86,7 @@ class LiveSession {
     Result<bool> frame_presented(std::int64_t frame, std::int64_t time_ns);
 
   private:
-    LiveSession(StudyStore& store, std::int64_t session_id, const Protocol& protocol,
+    LiveSession(SessionLog& log, std::int64_t session_id, const Protocol& protocol,
                 const LiveOptions& options, Schedule schedule, int first_trial);
 
     Result<bool> log(const std::vector<TrialEvent>& events);
@@ -89,7 +95,7 @@ class LiveSession {
     Result<bool> record_answer(int item, int value);
     Result<bool> finish(SessionStatus status);
 
-    StudyStore& store_;
+    SessionLog& log_;
     std::int64_t session_id_;
     Protocol protocol_;
     LiveOptions options_;

@@ -14,28 +14,22 @@ namespace {
 // means the observer and the session wait for each other: an error, not a hang.
 constexpr double kMaxVirtualSeconds = 24.0 * 3600.0;
 
-}  // namespace
-
-Result<SessionStatus> run_session(StudyStore& store, std::int64_t session_id,
-                                  const Protocol& protocol, Observer& observer,
-                                  const RunOptions& options) {
-    if (!(options.frame_rate_hz > 0.0)) return Error{"the virtual display's rate must be positive"};
-    LiveOptions live_options;
-    live_options.neutral_ns = options.neutral_ns;
-    live_options.on_committed = [&options](const std::string& what) {
+LiveOptions live_options(const RunOptions& options) {
+    LiveOptions live;
+    live.neutral_ns = options.neutral_ns;
+    live.on_committed = [&options](const std::string& what) {
         if (options.on_committed) options.on_committed(what);
         if (options.pace_ns > 0) {
             std::this_thread::sleep_for(std::chrono::nanoseconds(options.pace_ns));
         }
     };
-    Result<std::unique_ptr<LiveSession>> opened =
-        LiveSession::open(store, session_id, protocol, live_options);
-    if (!opened) return opened.error();
-    LiveSession& session = *opened.value();
-    ObserverInput input(observer, protocol, options.trial_error_px);
+    return live;
+}
 
-    // The virtual display: frame n is shown at n periods. Each frame, as on a headset: the
-    // observer reacts to what is on screen, then the frame is presented and its changes logged.
+// The virtual display: frame n is shown at n periods. Each frame, as on a headset: the observer
+// reacts to what is on screen, then the frame is presented and its changes logged.
+Result<bool> drive(LiveSession& session, ObserverInput& input, const RunOptions& options) {
+    if (!(options.frame_rate_hz > 0.0)) return Error{"the virtual display's rate must be positive"};
     const auto period = static_cast<std::int64_t>(std::llround(1e9 / options.frame_rate_hz));
     const auto last_frame = static_cast<std::int64_t>(kMaxVirtualSeconds * options.frame_rate_hz);
     for (std::int64_t frame = 1; !session.finished(); ++frame) {
@@ -48,11 +42,33 @@ Result<SessionStatus> run_session(StudyStore& store, std::int64_t session_id,
             if (!done) return done.error();
         }
         Result<bool> shown = session.frame_presented(frame, now);
-        if (!shown) return shown.error();
+        if (!shown) return shown;
     }
+    return true;
+}
+
+}  // namespace
+
+Result<SessionStatus> run_session(StudyStore& store, std::int64_t session_id,
+                                  const Protocol& protocol, Observer& observer,
+                                  const RunOptions& options) {
+    Result<std::unique_ptr<LiveSession>> session =
+        LiveSession::open(store, session_id, protocol, live_options(options));
+    if (!session) return session.error();
+    ObserverInput input(observer, protocol, options.trial_error_px);
+    if (Result<bool> ok = drive(*session.value(), input, options); !ok) return ok.error();
     Result<SessionInfo> info = store.session(session_id);
     if (!info) return info.error();
     return info->status;
+}
+
+Result<bool> run_simulated_session(SessionLog& log, const Protocol& protocol, Schedule schedule,
+                                   Observer& observer, const RunOptions& options) {
+    Result<std::unique_ptr<LiveSession>> session =
+        LiveSession::begin(log, 1, protocol, live_options(options), std::move(schedule), 0);
+    if (!session) return session.error();
+    ObserverInput input(observer, protocol, options.trial_error_px);
+    return drive(*session.value(), input, options);
 }
 
 }  // namespace monoplane::study

@@ -15,6 +15,8 @@
 #include "common/result.h"
 #include "study/observer.h"
 #include "study/protocol.h"
+#include "study/schedule.h"
+#include "study/session_log.h"
 #include "study/study_store.h"
 
 namespace monoplane::study {
@@ -38,5 +40,10 @@ struct RunOptions {
 Result<SessionStatus> run_session(StudyStore& store, std::int64_t session_id,
                                   const Protocol& protocol, Observer& observer,
                                   const RunOptions& options);
+
+// The same engine and observer over a schedule not in any database: the whole schedule into
+// `log` (a MemorySessionLog for `simulate`'s power analysis). Errors as run_session's.
+Result<bool> run_simulated_session(SessionLog& log, const Protocol& protocol, Schedule schedule,
+                                   Observer& observer, const RunOptions& options);
 
 }  // namespace monoplane::study

@@ -16,13 +16,11 @@
 #include "study/frame_record.h"
 #include "study/protocol.h"
 #include "study/schedule.h"
+#include "study/session_log.h"
 #include "study/trial_events.h"
 #include "study/trial_state_machine.h"
 
 namespace monoplane::study {
-
-enum class SessionStatus { Running, Paused, Completed, Aborted };
-std::string_view session_status_name(SessionStatus status);
 
 struct SessionInfo {
     std::int64_t id = 0;
@@ -69,7 +67,7 @@ struct StoreOptions {
     std::int64_t max_page_count = 0;
 };
 
-class StudyStore {
+class StudyStore final : public SessionLog {
   public:
     // Opens or creates the database; creates it readable by its owner only (0600). Errors: an
     // unwritable or locked file, a file that is no SQLite database, a schema newer than this
@@ -104,12 +102,12 @@ class StudyStore {
     Result<std::vector<FrameRecord>> frames(std::int64_t session_id) const;
 
     // Durable when it returns (one transaction each).
-    Result<bool> append_event(std::int64_t session_id, const TrialEvent& event);
+    Result<bool> append_event(std::int64_t session_id, const TrialEvent& event) override;
     Result<bool> record_outcome(std::int64_t session_id, int trial_index,
-                                const TrialOutcome& outcome);
-    Result<bool> set_status(std::int64_t session_id, SessionStatus status);
+                                const TrialOutcome& outcome) override;
+    Result<bool> set_status(std::int64_t session_id, SessionStatus status) override;
     Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
-                               int answer);
+                               int answer) override;
 
     Result<std::vector<TrialRecord>> trials(std::optional<std::int64_t> session_id = {}) const;
     Result<std::vector<TrialEvent>> events(std::int64_t session_id) const;

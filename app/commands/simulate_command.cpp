@@ -1,8 +1,9 @@
 // `monoplane simulate --protocol P --participants N --observer MODEL --runs R --out DIR` (DESIGN.md
 // section 8, issue 7): power analysis. For each n on a grid up to N, R simulated studies of n
 // participants: each participant's schedule from study::make_schedule (the protocol's Latin
-// square row n), choices from the simulated observer's plan with the rig's projection error as
-// its stimulus (as `study run --headset none`, without a database), then the clustered logistic
+// square row n), choices made by the session engine of `study run --headset none` (the simulated
+// observer with the rig's projection error as its stimulus, into memory instead of a database),
+// then the clustered logistic
 // regression of the report; detected = the distance term has p < alpha. Deterministic for a seed.
 //
 // Run r's participant p has the same seed in every n, so the studies of n + 2 participants
@@ -27,6 +28,8 @@
 #include "study/protocol.h"
 #include "study/render_mode.h"
 #include "study/schedule.h"
+#include "study/session_log.h"
+#include "study/session_runner.h"
 
 namespace monoplane::app {
 namespace {
@@ -60,31 +63,27 @@ std::string name(study::RenderMode mode) {
     return std::string(study::render_mode_name(mode));
 }
 
-// One simulated session as analysis rows: what study::run_session would record, without the
-// events. As the runner does, an observer who confirms without having seen both labels under a
-// protocol that requires it is made to look at label 2 and confirms that.
+// One simulated session as analysis rows: the session engine of `study run` (LiveSession with
+// the observer at its controls, study::run_simulated_session) over the participant's schedule,
+// into memory instead of a database; every trial decided by the same rules a participant's are.
 std::vector<analysis::TrialRow> simulate_session(
     const study::Protocol& protocol, const std::string& observer_name, std::uint64_t seed,
     int participant, const std::function<double(const study::ScheduledTrial&)>& error_px) {
     const study::Schedule schedule = study::make_schedule(protocol, seed, participant);
     std::unique_ptr<study::Observer> observer =
         study::make_observer(observer_name, seed).value_or_throw();
+    study::RunOptions options;
+    options.trial_error_px = error_px;
+    options.neutral_ns = 0;  // virtual time between trials changes no decision
+    // Decisions do not depend on the display rate, only decision times (not in the power
+    // analysis) are quantised by it: a coarse virtual display keeps thousands of sessions fast.
+    options.frame_rate_hz = 20.0;
+    study::MemorySessionLog log;
+    study::run_simulated_session(log, protocol, schedule, *observer, options).value_or_throw();
     std::vector<analysis::TrialRow> rows;
     rows.reserve(schedule.trials.size());
     for (const study::ScheduledTrial& trial : schedule.trials) {
-        const int reference_label = trial.label1_alternative == 0 ? 1 : 2;
-        const study::TrialPlan plan = observer->plan_trial(trial, reference_label, error_px(trial));
-        int label = plan.confirmed_label();
-        int switches = static_cast<int>(plan.dwell_ns.size()) - 1;
-        bool both_seen = plan.dwell_ns.size() >= 2;
-        std::int64_t time_ns = 0;
-        for (std::int64_t dwell : plan.dwell_ns) time_ns += dwell;
-        if (!both_seen && protocol.require_both_viewed) {
-            label = 2;
-            switches += 1;
-            both_seen = true;
-            time_ns += plan.dwell_ns.empty() ? 0 : plan.dwell_ns.back();
-        }
+        const study::TrialOutcome& outcome = log.outcomes().at(trial.index);
         analysis::TrialRow row;
         row.source = "simulation";
         row.session_id = participant + 1;
@@ -100,11 +99,11 @@ std::vector<analysis::TrialRow> simulate_session(
         row.reference_mode = name(protocol.alternatives[0]);
         row.test_mode = name(protocol.alternatives[1]);
         row.decided = true;
-        row.valid = both_seen;
-        row.chosen_mode = label == 1 ? row.label1_mode : row.label2_mode;
+        row.valid = outcome.valid;
+        row.chosen_mode = name(outcome.chosen_mode);
         row.chose_test = row.chosen_mode == row.test_mode;
-        row.switches = switches;
-        row.decision_time_s = static_cast<double>(time_ns) * 1e-9;
+        row.switches = outcome.switches;
+        row.decision_time_s = static_cast<double>(outcome.decision_time_ns) * 1e-9;
         rows.push_back(std::move(row));
     }
     return rows;
@@ -158,8 +157,7 @@ void run_simulate(const SimulateOptions& o) {
             analysis::Exclusions excluded;
             const std::vector<analysis::TrialRow> kept =
                 analysis::analysable_trials(study, excluded);
-            const Result<analysis::LogisticFit> fit =
-                analysis::fit_choice_model(kept, options);
+            const Result<analysis::LogisticFit> fit = analysis::fit_choice_model(kept, options);
             if (!fit) {
                 ++not_estimable[g];
                 last_error = fit.error().message;

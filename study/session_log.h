@@ -1,0 +1,54 @@
+// Where a running session writes what happens (LiveSession): the study database in a real session
+// (StudyStore: each write durable when it returns), memory in a simulation (`simulate`: thousands
+// of sessions for a power analysis, no file). The session engine is the same either way.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/result.h"
+#include "study/trial_events.h"
+#include "study/trial_state_machine.h"
+
+namespace monoplane::study {
+
+enum class SessionStatus { Running, Paused, Completed, Aborted };
+std::string_view session_status_name(SessionStatus status);
+
+class SessionLog {
+  public:
+    virtual ~SessionLog() = default;
+    virtual Result<bool> append_event(std::int64_t session_id, const TrialEvent& event) = 0;
+    virtual Result<bool> record_outcome(std::int64_t session_id, int trial_index,
+                                        const TrialOutcome& outcome) = 0;
+    virtual Result<bool> set_status(std::int64_t session_id, SessionStatus status) = 0;
+    virtual Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
+                                       int answer) = 0;
+};
+
+// One session's log in memory. Refuses a second outcome for a trial, as the database does.
+class MemorySessionLog final : public SessionLog {
+  public:
+    Result<bool> append_event(std::int64_t session_id, const TrialEvent& event) override;
+    Result<bool> record_outcome(std::int64_t session_id, int trial_index,
+                                const TrialOutcome& outcome) override;
+    Result<bool> set_status(std::int64_t session_id, SessionStatus status) override;
+    Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
+                               int answer) override;
+
+    const std::vector<TrialEvent>& events() const { return events_; }
+    const std::map<int, TrialOutcome>& outcomes() const { return outcomes_; }  // by trial index
+    const std::map<int, int>& answers() const { return answers_; }             // by item
+    SessionStatus status() const { return status_; }
+
+  private:
+    std::vector<TrialEvent> events_;
+    std::map<int, TrialOutcome> outcomes_;
+    std::map<int, int> answers_;
+    SessionStatus status_ = SessionStatus::Running;
+};
+
+}  // namespace monoplane::study
