@@ -19,8 +19,10 @@ struct FrameRecord {
     // The display slot before this frame went without a new frame (the runtime showed the
     // previous one again): predicted display times more than 1.5 periods apart.
     bool missed = false;
-    // The head as the renderer placed it (scene space): x, y, z in metres, then the orientation
-    // quaternion w, x, y, z; none while tracking was lost.
+    // The head relative to the participant's seat (the first tracked pose, turned about the
+    // vertical to look along the scene's view; a trial's views are the scene's viewpoint moved
+    // by it): x, y, z in metres, then the orientation quaternion w, x, y, z; none while tracking
+    // was lost.
     std::optional<std::array<double, 7>> head;
 };
 

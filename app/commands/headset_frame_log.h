@@ -30,7 +30,7 @@ class HeadsetFrameLog {
     HeadsetFrameLog(study::StudyStore& store, std::int64_t session_id);
 
     // A displayed frame. renderer: the one that drew its scene (its GPU time follows), or null.
-    // head: the head as rendered (scene space), none while tracking is lost.
+    // head: the head relative to the seat (SeatAnchor), none while tracking is lost.
     void displayed(const headset::HeadsetFrame& frame, const study::LiveScreen& screen,
                    const std::optional<rig::Pose>& head, double cpu_ms, const void* renderer);
     // The statistics a renderer's completed frames returned, oldest first.

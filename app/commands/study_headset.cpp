@@ -244,7 +244,6 @@ class HeadsetLoop {
     struct Rendered {
         bool shown = false;
         modes::ModeRenderer* renderer = nullptr;
-        std::optional<rig::Pose> head;
         std::vector<profile::FrameStats> completed;
     };
 
@@ -255,8 +254,11 @@ class HeadsetLoop {
         frame.index += frame_base_;  // the session's frame number, continued over resumes
         const std::int64_t now = frame.display_time_ns;
         if (first_frame_ns_ < 0) first_frame_ns_ = now;
-        rig::Pose head;
-        if (frame.views_valid) head = anchor_.relative(located_head(frame));
+        // The head relative to the seat: what the frame log records for every frame (the
+        // participant's own motion, whatever the screen), and what a trial's views start from.
+        std::optional<rig::Pose> tracked;
+        if (frame.views_valid) tracked = anchor_.relative(located_head(frame));
+        const rig::Pose head = tracked.value_or(rig::Pose{});
         handle_inputs(now);
         const study::LiveScreen screen = live_->screen();
         const Rendered rendered = frame.should_render ? render(frame, screen, head) : Rendered{};
@@ -266,7 +268,7 @@ class HeadsetLoop {
         if (rendered.shown) {
             const double cpu_ms =
                 std::chrono::duration<double, std::milli>(Clock::now() - frame_start_).count();
-            frame_log_.displayed(frame, screen, rendered.head, cpu_ms, rendered.renderer);
+            frame_log_.displayed(frame, screen, tracked, cpu_ms, rendered.renderer);
             // After displayed(): a renderer that waited may return this very frame's time.
             frame_log_.completed(rendered.renderer, rendered.completed);
             live_->frame_presented(frame.index, now).value_or_throw();
@@ -362,7 +364,6 @@ class HeadsetLoop {
             rendered.renderer = &renderers_.renderer(trial.scene, screen.mode);
             inputs.views = view_inputs(frame, head, renderers_.seat(trial.scene), protocol_);
             inputs.mono_plane = trial.mono_plane;
-            rendered.head = inputs.views.head;
         }
         const modes::ModeRenderer* renderer = rendered.renderer;
         const auto record_eyes = [&](const vk::raii::CommandBuffer& cmd) {
