@@ -31,25 +31,11 @@ Result<bool> FrameQueue::write(const sqlite::Connection& db) const {
         const FrameRecord& f = row.frame;
         Statement& s = insert.value();
         s.reset();
-        s.bind(1, row.session_id).bind(2, f.frame);
-        if (f.trial_index) {
-            s.bind(3, *f.trial_index);
-        } else {
-            s.bind_null(3);
-        }
-        s.bind(4, f.shown).bind(5, f.display_time_ns).bind(6, f.cpu_ms);
-        if (f.gpu_ms) {
-            s.bind(7, *f.gpu_ms);
-        } else {
-            s.bind_null(7);
-        }
-        s.bind(8, f.missed ? 1 : 0);
-        for (int i = 0; i < 7; ++i) {
-            if (f.head) {
-                s.bind(9 + i, (*f.head)[static_cast<std::size_t>(i)]);
-            } else {
-                s.bind_null(9 + i);
-            }
+        s.bind(1, row.session_id).bind(2, f.frame).bind(3, f.trial_index).bind(4, f.shown);
+        s.bind(5, f.display_time_ns).bind(6, f.cpu_ms).bind(7, f.gpu_ms).bind(8, f.missed ? 1 : 0);
+        for (std::size_t i = 0; i < 7; ++i) {
+            s.bind(9 + static_cast<int>(i),
+                   f.head ? std::optional<double>((*f.head)[i]) : std::nullopt);
         }
         const std::string what = "logging frame " + std::to_string(f.frame) + " of session " +
                                  std::to_string(row.session_id);
@@ -64,6 +50,18 @@ Result<bool> FrameQueue::write(const sqlite::Connection& db) const {
         if (Result<bool> ok = update.value().run("logging a frame's GPU time"); !ok) return ok;
     }
     return true;
+}
+
+Result<std::int64_t> next_frame_number(const sqlite::Connection& db, std::int64_t session_id) {
+    Result<Statement> stmt = Statement::prepare(
+        db,
+        "SELECT max(coalesce((SELECT max(frame) FROM frames WHERE session_id = ?1), -1), "
+        "coalesce((SELECT max(frame) FROM events WHERE session_id = ?1), -1)) + 1");
+    if (!stmt) return stmt.error();
+    stmt.value().bind(1, session_id);
+    Result<bool> row = stmt.value().step("reading the session's last frame number");
+    if (!row) return row.error();
+    return stmt.value().int64(0);
 }
 
 Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,

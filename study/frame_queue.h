@@ -41,5 +41,7 @@ class FrameQueue {
 
 // A session's frame log, in frame order.
 Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db, std::int64_t session_id);
+// One past the highest frame number the session's frame log or events use (0 for none).
+Result<std::int64_t> next_frame_number(const sqlite::Connection& db, std::int64_t session_id);
 
 }  // namespace monoplane::study

@@ -59,6 +59,11 @@ class Statement {
     Statement& bind(int index, double value);
     Statement& bind(int index, std::string_view value);
     Statement& bind_null(int index);
+    // The value, or NULL when there is none.
+    template <class T>
+    Statement& bind(int index, const std::optional<T>& value) {
+        return value ? bind(index, *value) : bind_null(index);
+    }
 
     // True while a row is available, false when done; an error names the file and `what`.
     Result<bool> step(std::string_view what);

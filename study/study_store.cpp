@@ -595,6 +595,10 @@ Result<std::vector<FrameRecord>> StudyStore::frames(std::int64_t session_id) con
     return read_frames(impl_->db, session_id);
 }
 
+Result<std::int64_t> StudyStore::next_frame_number(std::int64_t session_id) const {
+    return study::next_frame_number(impl_->db, session_id);
+}
+
 Result<std::optional<std::int64_t>> StudyStore::latest_unfinished_session() const {
     // Aborted sessions count as unfinished: an experimenter may abort (a participant felt
     // unwell) and resume later; only a completed session is done.

@@ -100,6 +100,9 @@ class StudyStore final : public SessionLog {
     void queue_frame_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms);
     Result<bool> flush_frames();
     Result<std::vector<FrameRecord>> frames(std::int64_t session_id) const;
+    // One past the highest frame number the session's frame log or events use (0 for none):
+    // where a resumed run's frames continue, so no two runs share a number.
+    Result<std::int64_t> next_frame_number(std::int64_t session_id) const;
 
     // Durable when it returns (one transaction each).
     Result<bool> append_event(std::int64_t session_id, const TrialEvent& event) override;

@@ -23,7 +23,7 @@ HeadsetFrameLog::HeadsetFrameLog(study::StudyStore& store, std::int64_t session_
 
 void HeadsetFrameLog::displayed(const headset::HeadsetFrame& frame, const study::LiveScreen& screen,
                                 const std::optional<rig::Pose>& head, double cpu_ms,
-                                const void* renderer) {
+                                const modes::ModeRenderer* renderer) {
     study::FrameRecord row;
     row.frame = frame.index;
     if (screen.kind == study::ScreenKind::Trial && screen.trial) {
@@ -47,7 +47,7 @@ void HeadsetFrameLog::displayed(const headset::HeadsetFrame& frame, const study:
     if (++since_flush_ >= kFlushFrames) flush();
 }
 
-void HeadsetFrameLog::completed(const void* renderer,
+void HeadsetFrameLog::completed(const modes::ModeRenderer* renderer,
                                 const std::vector<profile::FrameStats>& stats) {
     std::deque<std::int64_t>& frames = awaiting_gpu_[renderer];
     for (const profile::FrameStats& s : stats) {

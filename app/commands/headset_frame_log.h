@@ -17,6 +17,10 @@
 #include "study/live_session.h"
 #include "study/study_store.h"
 
+namespace monoplane::modes {
+class ModeRenderer;
+}  // namespace monoplane::modes
+
 namespace monoplane::app {
 
 // What a frame showed, as the log names it: label1 | label2 | paused | neutral | questionnaire |
@@ -32,9 +36,11 @@ class HeadsetFrameLog {
     // A displayed frame. renderer: the one that drew its scene (its GPU time follows), or null.
     // head: the head relative to the seat (SeatAnchor), none while tracking is lost.
     void displayed(const headset::HeadsetFrame& frame, const study::LiveScreen& screen,
-                   const std::optional<rig::Pose>& head, double cpu_ms, const void* renderer);
+                   const std::optional<rig::Pose>& head, double cpu_ms,
+                   const modes::ModeRenderer* renderer);
     // The statistics a renderer's completed frames returned, oldest first.
-    void completed(const void* renderer, const std::vector<profile::FrameStats>& stats);
+    void completed(const modes::ModeRenderer* renderer,
+                   const std::vector<profile::FrameStats>& stats);
     // Writes what is queued.
     void flush();
 
@@ -43,7 +49,8 @@ class HeadsetFrameLog {
     std::int64_t session_id_;
     std::optional<std::int64_t> previous_display_ns_;
     int since_flush_ = 0;
-    std::map<const void*, std::deque<std::int64_t>> awaiting_gpu_;  // per renderer, in order
+    std::map<const modes::ModeRenderer*, std::deque<std::int64_t>>
+        awaiting_gpu_;  // per renderer, in order
 };
 
 }  // namespace monoplane::app

@@ -201,10 +201,7 @@ class HeadsetLoop {
         // A resumed session's frames continue its numbering after every frame an earlier run
         // logged or an event names: the frame log's rows (primary key session, frame) and the
         // events' frame numbers stay those of the run that showed them.
-        for (const study::FrameRecord& f : store.frames(session_id).value_or_throw())
-            frame_base_ = std::max(frame_base_, f.frame + 1);
-        for (const study::TrialEvent& e : store.events(session_id).value_or_throw())
-            frame_base_ = std::max(frame_base_, e.frame + 1);
+        frame_base_ = store.next_frame_number(session_id).value_or_throw();
         headset::TextStyle label_style;
         label_style.scale = 2;
         label_style.padding = 2;

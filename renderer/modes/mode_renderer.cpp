@@ -390,12 +390,11 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
         }
     }
     // Nearest chunks first (one order for every view: the eyes and C look from the head), sorted
-    // again only when the head has moved.
+    // and uploaded again only when the head has moved.
     if (draw_order_viewer_ != views.head.position) {
-        draw_order_ = front_to_back_order(scene_, views.head.position);
+        culling_.set_draw_order(front_to_back_order(scene_, views.head.position), uploads_);
         draw_order_viewer_ = views.head.position;
     }
-    cull.draw_order = draw_order_;
     culling_.set_frame(cull, uploads_);
     if (eye_pair_constants_) {
         // view_block.glsl's views[2]: left, then right (std140 arrays of this struct are packed).

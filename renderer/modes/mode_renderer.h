@@ -233,8 +233,7 @@ class ModeRenderer {
         bool operator==(const PlanInputs&) const = default;
     };
     std::optional<PlanInputs> last_plan_inputs_;  // what last_plan_ was made from
-    // The chunks nearest first as seen from draw_order_viewer_ (front_to_back_order).
-    std::vector<std::uint32_t> draw_order_;
+    // Where the draw order the culling pass holds was sorted from (front_to_back_order).
     std::optional<glm::dvec3> draw_order_viewer_;
     // --variant auto: measures the variants on this renderer's frames (reset when m changes).
     VariantChooser variant_chooser_;

@@ -638,6 +638,20 @@ TEST_F(StudyStoreTest, TheFrameLogBecomesDurableWithTheNextEvent) {
     EXPECT_EQ(raw.integer("SELECT count(*) FROM events WHERE kind = 'switched'"), 0);
 }
 
+TEST_F(StudyStoreTest, AResumedRunsFramesContinueAfterEveryNumberUsed) {
+    auto store = open_store();
+    const std::int64_t id = begin(*store, "P01");
+    EXPECT_EQ(*store->next_frame_number(id), 0);
+    ASSERT_TRUE(store->append_event(id, {EventKind::Shown, 0, 1, 1'050, 9}).ok());
+    EXPECT_EQ(*store->next_frame_number(id), 10);  // an event names frame 9
+    store->queue_frame(id, make_frame(12, 0));
+    ASSERT_TRUE(store->flush_frames().ok());
+    EXPECT_EQ(*store->next_frame_number(id), 13);  // the log reaches frame 12
+    // Another session's numbers do not count.
+    const std::int64_t other = begin(*store, "P02");
+    EXPECT_EQ(*store->next_frame_number(other), 0);
+}
+
 TEST_F(StudyStoreTest, StoresTheSessionsRenderSettings) {
     auto store = open_store();
     SessionInfo info = make_info("P01");

@@ -152,15 +152,14 @@ void ChunkCullingPass::set_frame(const CullFrame& frame, vk_core::FrameUploads& 
         static_cast<float>(frame.mono_viewport.x), static_cast<float>(frame.mono_viewport.y),
         static_cast<float>(frame.hidden_depth_threshold), static_cast<float>(frame.pyramid_mips));
     uploads.stage(constants_, &c, sizeof(c));
-    if (frame.draw_order.size() != chunk_count_) {
-        throw std::invalid_argument("CullFrame::draw_order is not a permutation of the chunks");
+}
+
+void ChunkCullingPass::set_draw_order(std::span<const std::uint32_t> order,
+                                      vk_core::FrameUploads& uploads) {
+    if (order.size() != chunk_count_) {
+        throw std::invalid_argument("the draw order is not a permutation of the chunks");
     }
-    // The order changes only when the viewer moves; the buffer keeps it between frames.
-    if (!frame.draw_order.empty() && !std::equal(frame.draw_order.begin(), frame.draw_order.end(),
-                                                 staged_order_.begin(), staged_order_.end())) {
-        uploads.stage(order_, frame.draw_order.data(), frame.draw_order.size_bytes());
-        staged_order_.assign(frame.draw_order.begin(), frame.draw_order.end());
-    }
+    if (!order.empty()) uploads.stage(order_, order.data(), order.size_bytes());
 }
 
 void ChunkCullingPass::record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const {

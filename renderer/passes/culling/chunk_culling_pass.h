@@ -38,9 +38,6 @@ struct CullFrame {
     glm::dvec2 mono_viewport{0.0};        // C's viewport in pixels (eq. 8)
     double hidden_depth_threshold = 0.0;  // the eyes' reversed-Z depth of m - eps
     std::uint32_t pyramid_mips = 1;
-    // The order in which the chunks are walked and their draws listed: a permutation of the
-    // chunk indices (front_to_back_order); the caller keeps it alive until set_frame returns.
-    std::span<const std::uint32_t> draw_order;
 };
 
 class ChunkCullingPass {
@@ -57,9 +54,12 @@ class ChunkCullingPass {
     // Points the occlusion test at the merged depth pyramid (a view of all its mips, in
     // eGeneral). Call between frames, before the first record().
     void set_merged_depth(vk::ImageView pyramid, vk::Sampler nearest) const;
-    // Stages the frame's constants (and the draw order when it changed) for the frame's command
-    // buffer; call before recording the frame.
+    // Stages the frame's constants for the frame's command buffer; call before recording it.
     void set_frame(const CullFrame& frame, vk_core::FrameUploads& uploads);
+    // Stages the order in which the chunks are walked and their draws listed: a permutation of
+    // the chunk indices (front_to_back_order). The buffer keeps it for later frames: call before
+    // the first frame and when the order changes (throws std::invalid_argument for a wrong size).
+    void set_draw_order(std::span<const std::uint32_t> order, vk_core::FrameUploads& uploads);
 
     // Phase 0: all views' lists; phase 1: C's list again, with occlusion culling. Each leaves a
     // barrier that makes its results visible to indirect draws, predicates and later dispatches.
@@ -92,7 +92,6 @@ class ChunkCullingPass {
     vk_core::Buffer routing_;
     vk_core::Buffer order_;
     vk_core::Buffer constants_;
-    std::vector<std::uint32_t> staged_order_;  // the order order_ holds
     std::array<vk_core::Buffer, vk_core::FrameRing::kFramesInFlight> counts_readback_;
     vk_core::Buffer commands_readback_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
