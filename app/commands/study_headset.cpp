@@ -571,7 +571,7 @@ study::SessionStatus run_headset_session(
     const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
     std::optional<fs::path> written_script;
     if (options.headset == "simulated") written_script = select_simulated_runtime(options);
-    auto created = headset::OpenXrHeadset::create();
+    auto created = headset::OpenXrHeadset::create(global.validation);
     // simxr has read its script (in xrCreateInstance): the temporary file is not needed.
     if (written_script) {
         std::error_code ignored;
@@ -607,7 +607,7 @@ study::SessionStatus run_headset_session(
     }
     experimenter.reset();
     headset->destroy_session();
-    fail_on_validation_messages(*ctx, global);
+    fail_on_validation_messages(*ctx, headset->validation_messages(), global);
     const study::SessionInfo end = store.session(session_id).value_or_throw();
     if (!finished) {
         // Not an error of the study's data (everything decided is stored), but the session did

@@ -11,6 +11,8 @@
 #include <cstring>
 #include <iostream>
 
+#include "app/headset/xr_validation.h"
+
 // OpenXR's structures are initialised the way its specification shows, `XrFoo foo{XR_TYPE_FOO}`:
 // the remaining members are zeroed, which is what is wanted, not an omission.
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
@@ -145,6 +147,7 @@ const std::vector<ProfileBindings>& controller_bindings() {
 
 struct OpenXrHeadset::Impl {
     XrInstance instance = XR_NULL_HANDLE;
+    XrValidation validation;
     XrSystemId system = XR_NULL_SYSTEM_ID;
     XrSession session = XR_NULL_HANDLE;
     XrSpace local = XR_NULL_HANDLE;
@@ -178,10 +181,11 @@ OpenXrHeadset::OpenXrHeadset(std::unique_ptr<Impl> impl) : impl_(std::move(impl)
 
 OpenXrHeadset::~OpenXrHeadset() {
     destroy_session();
+    impl_->validation.detach();
     if (impl_->instance != XR_NULL_HANDLE) xrDestroyInstance(impl_->instance);
 }
 
-Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create() {
+Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation) {
     auto impl = std::make_unique<Impl>();
     std::uint32_t count = 0;
     XrResult result = xrEnumerateInstanceExtensionProperties(nullptr, 0, &count, nullptr);
@@ -202,7 +206,11 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create() {
                      std::string(XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) + " is missing)"};
     }
 
-    const char* enabled[] = {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME};
+    Result<XrValidation> planned = XrValidation::plan(validation);
+    if (!planned) return planned.error();
+    impl->validation = std::move(planned.value());
+    std::vector<const char*> enabled = {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME};
+    for (const char* name : impl->validation.extensions()) enabled.push_back(name);
     XrInstanceCreateInfo create{XR_TYPE_INSTANCE_CREATE_INFO};
     std::strncpy(create.applicationInfo.applicationName, "monoplane",
                  XR_MAX_APPLICATION_NAME_SIZE - 1);
@@ -210,12 +218,19 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create() {
     std::strncpy(create.applicationInfo.engineName, "monoplane", XR_MAX_ENGINE_NAME_SIZE - 1);
     create.applicationInfo.engineVersion = 1;
     create.applicationInfo.apiVersion = XR_CURRENT_API_VERSION;
-    create.enabledExtensionCount = 1;
-    create.enabledExtensionNames = enabled;
+    create.enabledExtensionCount = static_cast<std::uint32_t>(enabled.size());
+    create.enabledExtensionNames = enabled.data();
+    create.enabledApiLayerCount = static_cast<std::uint32_t>(impl->validation.layers().size());
+    create.enabledApiLayerNames = impl->validation.layers().data();
     result = xrCreateInstance(&create, &impl->instance);
     if (XR_FAILED(result)) {
         return Error{"the OpenXR runtime refused to create an instance (" +
                      result_text(XR_NULL_HANDLE, result) + ")"};
+    }
+    if (Result<bool> attached = impl->validation.attach(impl->instance); !attached) {
+        xrDestroyInstance(impl->instance);
+        impl->instance = XR_NULL_HANDLE;
+        return attached.error();
     }
     XrInstanceProperties properties{XR_TYPE_INSTANCE_PROPERTIES};
     xrGetInstanceProperties(impl->instance, &properties);
@@ -251,6 +266,10 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create() {
                              std::to_string(XR_VERSION_PATCH(properties.runtimeVersion));
     headset->system_name_ = system_properties.systemName;
     return headset;
+}
+
+const vk_core::ValidationMessages& OpenXrHeadset::validation_messages() const {
+    return impl_->validation.messages();
 }
 
 vk_core::ContextCreationHooks OpenXrHeadset::vulkan_hooks() {

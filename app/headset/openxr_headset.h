@@ -43,8 +43,8 @@ struct EyeView {
 };
 
 struct HeadsetFrame {
-    std::int64_t index = 0;            // 0-based count of xrWaitFrame calls in this session
-    std::int64_t display_time_ns = 0;  // predicted display time (XrTime, runtime's clock)
+    std::int64_t index = 0;              // 0-based count of xrWaitFrame calls in this session
+    std::int64_t display_time_ns = 0;    // predicted display time (XrTime, runtime's clock)
     std::int64_t display_period_ns = 0;  // the runtime's predicted display period
     bool should_render = false;
     bool views_valid = false;  // orientation and position tracked
@@ -62,14 +62,18 @@ struct ControlPress {
 class OpenXrHeadset {
   public:
     // Creates the XrInstance with XR_KHR_vulkan_enable2 and finds the HMD. Errors say what to do:
-    // no runtime installed or active, no headset connected, no Vulkan support.
-    static Result<std::unique_ptr<OpenXrHeadset>> create();
+    // no runtime installed or active, no headset connected, no Vulkan support. With `validation`,
+    // the OpenXR core validation layer watches every call (app/headset/xr_validation.h); it is
+    // an error if it is not installed.
+    static Result<std::unique_ptr<OpenXrHeadset>> create(bool validation = false);
     ~OpenXrHeadset();
     OpenXrHeadset(const OpenXrHeadset&) = delete;
     OpenXrHeadset& operator=(const OpenXrHeadset&) = delete;
 
     const std::string& runtime_name() const { return runtime_name_; }
     const std::string& system_name() const { return system_name_; }
+    // What the OpenXR validation layer reported (nothing unless created with validation).
+    const vk_core::ValidationMessages& validation_messages() const;
 
     // Hooks for vk_core::Context::create: the runtime creates the instance and device and names
     // the physical device (after its graphics requirements are queried, as the spec demands).

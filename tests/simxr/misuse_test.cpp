@@ -1,6 +1,8 @@
 // The spec's error codes for application mistakes, one test per rule (docs/simxr.md).
 #include "tests/simxr/runtime_fixture.h"
 
+#include <algorithm>
+
 namespace monoplane::simxr::testing {
 namespace {
 
@@ -28,7 +30,9 @@ TEST_F(SimxrTest, CreateSessionBeforeRequirementsIsRefused) {
 }
 
 TEST_F(SimxrTest, CreateSessionNeedsTheNamedPhysicalDevice) {
-    start("", {.create_session = false});
+    // A session without a binding is invalid usage the OpenXR layer stops; simxr's answer is
+    // what is tested here.
+    start("", {.create_session = false, .xr_validation = false});
     XrGraphicsBindingVulkan2KHR vulkan = binding();
     vulkan.physicalDevice = reinterpret_cast<VkPhysicalDevice>(uintptr_t{0x1234});
     XrSessionCreateInfo info = session_info(&vulkan);
@@ -225,7 +229,8 @@ TEST_F(SimxrTest, BindingsMustNameKnownProfilesAndComponents) {
 }
 
 TEST_F(SimxrTest, HandlesAndStructureTypesAreChecked) {
-    start("");
+    start("", {.xr_validation = false});  // simxr's own checks, behind the layer's
+
     const XrSessionBeginInfo info = begin_info();
     EXPECT_EQ(xrBeginSession(reinterpret_cast<XrSession>(uintptr_t{0xdead}), &info),
               XR_ERROR_HANDLE_INVALID);
@@ -262,6 +267,33 @@ TEST(SimxrInstance, RefusesUnknownExtensionsAndBadScripts) {
     EXPECT_STREQ(properties.runtimeName, "monoplane simxr");
     EXPECT_EQ(xrDestroyInstance(instance), XR_SUCCESS);
     std::filesystem::remove_all(dir);
+}
+
+// The OpenXR core validation layer is really in the chain of every other test here: a misuse
+// it must catch (a structure of the wrong type, and an enum value outside XrReferenceSpaceType)
+// reaches the messenger with the spec's VUIDs, and the runtime is not called.
+TEST_F(SimxrTest, TheOpenXrValidationLayerReportsMisuse) {
+    start("");
+    ASSERT_TRUE(xr_validation_messages().empty());
+    auto wrong = xr_struct<XrReferenceSpaceCreateInfo>(XR_TYPE_SESSION_BEGIN_INFO);
+    wrong.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
+    wrong.poseInReferenceSpace.orientation.w = 1.0f;
+    XrSpace space = XR_NULL_HANDLE;
+    EXPECT_EQ(xrCreateReferenceSpace(session_, &wrong, &space), XR_ERROR_VALIDATION_FAILURE);
+    auto unknown_type = xr_struct<XrReferenceSpaceCreateInfo>(XR_TYPE_REFERENCE_SPACE_CREATE_INFO);
+    unknown_type.referenceSpaceType = static_cast<XrReferenceSpaceType>(12345);
+    unknown_type.poseInReferenceSpace.orientation.w = 1.0f;
+    EXPECT_EQ(xrCreateReferenceSpace(session_, &unknown_type, &space), XR_ERROR_VALIDATION_FAILURE);
+    EXPECT_EQ(space, XR_NULL_HANDLE);
+    const std::vector<std::string> seen = xr_validation_messages();
+    const auto mentions = [&](const std::string& vuid) {
+        return std::any_of(seen.begin(), seen.end(),
+                           [&](const std::string& message) { return message.starts_with(vuid); });
+    };
+    EXPECT_TRUE(mentions("VUID-XrReferenceSpaceCreateInfo-type-type"));
+    EXPECT_TRUE(mentions("VUID-XrReferenceSpaceCreateInfo-referenceSpaceType-parameter"));
+    // Expected here, so they must not fail the test in TearDown.
+    xr_validation_messages().clear();
 }
 
 }  // namespace

@@ -33,6 +33,16 @@ VkDebugUtilsMessengerCreateInfoEXT messenger_info() {
     return info;
 }
 
+XRAPI_ATTR XrBool32 XRAPI_CALL record_xr_message(XrDebugUtilsMessageSeverityFlagsEXT,
+                                                 XrDebugUtilsMessageTypeFlagsEXT,
+                                                 const XrDebugUtilsMessengerCallbackDataEXT* data,
+                                                 void*) {
+    std::string text = data->messageId != nullptr ? data->messageId : "";
+    if (data->message != nullptr) text += std::string(": ") + data->message;
+    xr_validation_messages().push_back(text);
+    return XR_FALSE;
+}
+
 template <class Pfn>
 void load(XrInstance instance, const char* name, Pfn& function) {
     ASSERT_EQ(
@@ -43,9 +53,15 @@ void load(XrInstance instance, const char* name, Pfn& function) {
 
 }  // namespace
 
+std::vector<std::string>& xr_validation_messages() {
+    static std::vector<std::string> messages;
+    return messages;
+}
+
 XrResult create_instance_with_script(const std::filesystem::path& dir, const std::string& script,
                                      const std::vector<const char*>& extensions,
-                                     XrInstance* instance) {
+                                     XrInstance* instance, bool xr_validation,
+                                     XrDebugUtilsMessengerEXT* messenger) {
     std::filesystem::create_directories(dir);
     const std::filesystem::path script_path = dir / "script.toml";
     std::ofstream(script_path) << script;
@@ -56,9 +72,43 @@ XrResult create_instance_with_script(const std::filesystem::path& dir, const std
     std::snprintf(info.applicationInfo.applicationName, XR_MAX_APPLICATION_NAME_SIZE,
                   "simxr_runtime_test");
     info.applicationInfo.apiVersion = XR_CURRENT_API_VERSION;
-    info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
-    info.enabledExtensionNames = extensions.data();
-    return xrCreateInstance(&info, instance);
+    std::vector<const char*> enabled = extensions;
+    const char* layers[] = {"XR_APILAYER_LUNARG_core_validation"};
+    if (xr_validation) {
+        enabled.push_back(XR_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        info.enabledApiLayerCount = 1;
+        info.enabledApiLayerNames = layers;
+    }
+    info.enabledExtensionCount = static_cast<uint32_t>(enabled.size());
+    info.enabledExtensionNames = enabled.data();
+    const XrResult created = xrCreateInstance(&info, instance);
+    if (!xr_validation || XR_FAILED(created) || messenger == nullptr) return created;
+    PFN_xrCreateDebugUtilsMessengerEXT create = nullptr;
+    xrGetInstanceProcAddr(*instance, "xrCreateDebugUtilsMessengerEXT",
+                          reinterpret_cast<PFN_xrVoidFunction*>(&create));
+    if (create == nullptr) return XR_ERROR_FUNCTION_UNSUPPORTED;
+    auto messenger_info = xr_struct<XrDebugUtilsMessengerCreateInfoEXT>(
+        XR_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT);
+    messenger_info.messageSeverities = XR_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                       XR_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    messenger_info.messageTypes = XR_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                                  XR_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                                  XR_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT |
+                                  XR_DEBUG_UTILS_MESSAGE_TYPE_CONFORMANCE_BIT_EXT;
+    messenger_info.userCallback = &record_xr_message;
+    const XrResult made = create(*instance, &messenger_info, messenger);
+    if (XR_FAILED(made)) return made;
+    // The layer of OpenXR SDK 1.0.20 calls messengers only once an object has a debug name
+    // (app/headset/xr_validation.cpp says more).
+    PFN_xrSetDebugUtilsObjectNameEXT set_name = nullptr;
+    xrGetInstanceProcAddr(*instance, "xrSetDebugUtilsObjectNameEXT",
+                          reinterpret_cast<PFN_xrVoidFunction*>(&set_name));
+    if (set_name == nullptr) return XR_ERROR_FUNCTION_UNSUPPORTED;
+    auto name = xr_struct<XrDebugUtilsObjectNameInfoEXT>(XR_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT);
+    name.objectType = XR_OBJECT_TYPE_INSTANCE;
+    name.objectHandle = reinterpret_cast<uint64_t>(*instance);
+    name.objectName = "simxr_runtime_test";
+    return set_name(*instance, &name);
 }
 
 void SimxrTest::start(const std::string& script_text, FixtureOptions options) {
@@ -67,8 +117,9 @@ void SimxrTest::start(const std::string& script_text, FixtureOptions options) {
            ("simxr_" + std::string(test->name()) + "_" + std::to_string(getpid()));
     std::filesystem::remove_all(dir_);
     validation_messages().clear();
+    xr_validation_messages().clear();
     ASSERT_EQ(create_instance_with_script(dir_, script_text, {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME},
-                                          &instance_),
+                                          &instance_, options.xr_validation, &xr_messenger_),
               XR_SUCCESS);
     load(instance_, "xrGetVulkanGraphicsRequirements2KHR", xrGetVulkanGraphicsRequirements2KHR);
     load(instance_, "xrCreateVulkanInstanceKHR", xrCreateVulkanInstanceKHR);
@@ -159,6 +210,13 @@ void SimxrTest::TearDown() {
     if (session_ != XR_NULL_HANDLE) {
         EXPECT_EQ(xrDestroySession(session_), XR_SUCCESS);
     }
+    if (xr_messenger_ != XR_NULL_HANDLE) {
+        PFN_xrDestroyDebugUtilsMessengerEXT destroy = nullptr;
+        xrGetInstanceProcAddr(instance_, "xrDestroyDebugUtilsMessengerEXT",
+                              reinterpret_cast<PFN_xrVoidFunction*>(&destroy));
+        ASSERT_NE(destroy, nullptr);
+        EXPECT_EQ(destroy(xr_messenger_), XR_SUCCESS);
+    }
     if (instance_ != XR_NULL_HANDLE) {
         EXPECT_EQ(xrDestroyInstance(instance_), XR_SUCCESS);
     }
@@ -175,6 +233,9 @@ void SimxrTest::TearDown() {
     std::string text;
     for (const std::string& message : validation_messages()) text += message + "\n";
     EXPECT_EQ(validation_messages().size(), 0u) << text;
+    std::string xr_text;
+    for (const std::string& message : xr_validation_messages()) xr_text += message + "\n";
+    EXPECT_EQ(xr_validation_messages().size(), 0u) << "OpenXR validation:\n" << xr_text;
     std::filesystem::remove_all(dir_);
 }
 

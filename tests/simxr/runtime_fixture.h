@@ -1,7 +1,8 @@
 // Drives simxr through the real OpenXR loader (XR_RUNTIME_JSON names the built manifest) the way
 // an application does: instance, system, Vulkan instance and device through
-// XR_KHR_vulkan_enable2 with the Khronos validation layer on, then a session. Any validation
-// message fails the test (DESIGN.md section 9).
+// XR_KHR_vulkan_enable2 with the Khronos validation layer on, then a session. The OpenXR core
+// validation layer (XR_APILAYER_LUNARG_core_validation) watches every OpenXR call too. Any
+// message of either layer fails the test (DESIGN.md section 9).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -35,7 +36,13 @@ T vk_struct(VkStructureType type) {
 struct FixtureOptions {
     bool query_requirements = true;
     bool create_session = true;
+    // Off only in tests of simxr's own answers to invalid usage: the OpenXR validation layer
+    // would stop those calls before the runtime sees them.
+    bool xr_validation = true;
 };
+
+// The OpenXR validation layer's messages since the last start() (or clear).
+std::vector<std::string>& xr_validation_messages();
 
 class SimxrTest : public ::testing::Test {
   protected:
@@ -69,6 +76,7 @@ class SimxrTest : public ::testing::Test {
     uint32_t queue_family_ = 0;
     VkQueue queue_ = VK_NULL_HANDLE;
     int other_events_ = 0;  // events that were not session state changes
+    XrDebugUtilsMessengerEXT xr_messenger_ = XR_NULL_HANDLE;
 
     PFN_xrGetVulkanGraphicsRequirements2KHR xrGetVulkanGraphicsRequirements2KHR = nullptr;
     PFN_xrCreateVulkanInstanceKHR xrCreateVulkanInstanceKHR = nullptr;
@@ -77,8 +85,11 @@ class SimxrTest : public ::testing::Test {
 };
 
 // Creates an instance through the loader with the given script; for tests of xrCreateInstance.
+// With `xr_validation`, the OpenXR validation layer and XR_EXT_debug_utils are enabled too and
+// `messenger` receives a messenger recording into xr_validation_messages().
 XrResult create_instance_with_script(const std::filesystem::path& dir, const std::string& script,
                                      const std::vector<const char*>& extensions,
-                                     XrInstance* instance);
+                                     XrInstance* instance, bool xr_validation = false,
+                                     XrDebugUtilsMessengerEXT* messenger = nullptr);
 
 }  // namespace monoplane::simxr::testing

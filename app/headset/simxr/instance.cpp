@@ -73,7 +73,8 @@ XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* info, XrInstanc
         return XR_ERROR_API_VERSION_UNSUPPORTED;
     }
     if (info->applicationInfo.applicationName[0] == '\0') return XR_ERROR_NAME_INVALID;
-    if (info->enabledApiLayerCount > 0) return XR_ERROR_API_LAYER_NOT_PRESENT;
+    // API layers are the loader's business (it loads them and refuses missing ones); the create
+    // info reaches the runtime with the application's layer names still in it, so they are ignored.
     bool vulkan_enable2 = false;
     for (uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
         if (std::string_view(info->enabledExtensionNames[i]) !=
