@@ -156,6 +156,49 @@ TEST(SimxrScript, RefusesBadRangesAndOrder) {
               std::string::npos);
 }
 
+// Any OpenXR 1.0 profile may be the simulated one, hands or not (spec 6.4).
+TEST(SimxrScript, AnyCoreProfileWithItsOwnButtonsAndAxes) {
+    const Script gamepad = parse_ok(R"(
+interaction_profile = "/interaction_profiles/microsoft/xbox_controller"
+[[input]]
+t = 0.5
+path = "/user/gamepad/input/a/click"
+[[input]]
+t = 0.5
+path = "/user/gamepad/input/trigger_left/value"
+)");
+    EXPECT_EQ(gamepad.interaction_profile, "/interaction_profiles/microsoft/xbox_controller");
+    ASSERT_EQ(gamepad.inputs.size(), 2u);
+    EXPECT_EQ(gamepad.inputs[1].path, "/user/gamepad/input/trigger_left/value");
+    const Script head = parse_ok(R"(
+interaction_profile = "/interaction_profiles/htc/vive_pro"
+[[input]]
+t = 0.5
+path = "/user/head/input/volume_down/click"
+)");
+    ASSERT_EQ(head.inputs.size(), 1u);
+    const Script motion = parse_ok(R"(
+interaction_profile = "/interaction_profiles/microsoft/motion_controller"
+[[input]]
+t = 0.5
+path = "/user/hand/left/input/thumbstick/x"
+)");
+    ASSERT_EQ(motion.inputs.size(), 1u);
+    // The gamepad has no hands, and its haptics are outputs; the hint names a gamepad button.
+    const std::string message = parse_error(R"(
+interaction_profile = "/interaction_profiles/microsoft/xbox_controller"
+[[input]]
+t = 0.5
+path = "/user/hand/right/input/a/click"
+[[input]]
+t = 0.5
+path = "/user/gamepad/output/haptic_left"
+)");
+    EXPECT_NE(message.find("input[0].path"), std::string::npos) << message;
+    EXPECT_NE(message.find("input[1].path"), std::string::npos) << message;
+    EXPECT_NE(message.find("e.g. /user/gamepad/input/"), std::string::npos) << message;
+}
+
 TEST(SimxrScript, PoseInterpolatesAndHolds) {
     const Script script = parse_ok(R"(
 [[pose]]

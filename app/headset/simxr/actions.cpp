@@ -41,6 +41,11 @@ void forget_action(Action* action) {
     if (instance.session != nullptr) {
         std::erase_if(instance.session->bindings,
                       [action](const auto& binding) { return binding.first == action; });
+        // spec 7.3 (xrCreateActionSpace): an action space goes with its action; simxr keeps the
+        // handle valid but unlocatable until the application destroys it.
+        for (Space* space : instance.session->spaces) {
+            if (space->action == action) space->action = nullptr;
+        }
     }
 }
 
@@ -74,6 +79,30 @@ XrResult resolve_state_query(const Session& session, const XrActionStateGetInfo*
     active = !components.empty() &&
              std::ranges::find(session.synced_sets, action->set) != session.synced_sets.end();
     return XR_SUCCESS;
+}
+
+ActionUse use_of(XrActionType type) {
+    switch (type) {
+        case XR_ACTION_TYPE_BOOLEAN_INPUT:
+            return ActionUse::boolean;
+        case XR_ACTION_TYPE_FLOAT_INPUT:
+            return ActionUse::scalar;
+        case XR_ACTION_TYPE_VECTOR2F_INPUT:
+            return ActionUse::vector2;
+        case XR_ACTION_TYPE_POSE_INPUT:
+            return ActionUse::pose;
+        default:
+            return ActionUse::vibration;
+    }
+}
+
+// spec 11.6: a haptic action's subactionPath must be one it was created with (or null).
+XrResult check_subaction(const Action& action, XrPath subaction) {
+    if (subaction == XR_NULL_PATH ||
+        std::ranges::find(action.subaction_paths, subaction) != action.subaction_paths.end()) {
+        return XR_SUCCESS;
+    }
+    return XR_ERROR_PATH_UNSUPPORTED;
 }
 
 float value_in(const std::map<std::string, float>& values, const std::string& component) {
@@ -192,12 +221,11 @@ XrResult XRAPI_CALL xrSuggestInteractionProfileBindings(
         suggested->countSuggestedBindings == 0 || suggested->suggestedBindings == nullptr) {
         return XR_ERROR_VALIDATION_FAILURE;
     }
-    // spec: once any action set is attached, bindings can no longer be suggested.
-    if (instance->any_session_attached) return XR_ERROR_ACTIONSETS_ALREADY_ATTACHED;
     const std::string* profile_path = instance->paths.find(suggested->interactionProfile);
     if (profile_path == nullptr) return XR_ERROR_PATH_INVALID;
-    // spec: an interaction profile or binding path the runtime does not know is
-    // XR_ERROR_PATH_UNSUPPORTED.
+    // spec 11.4: an interaction profile or binding path outside the spec's allowlist is
+    // XR_ERROR_PATH_UNSUPPORTED; every one inside it must be accepted, whether or not simxr
+    // simulates that hardware (only the script's profile is ever bound).
     const InteractionProfile* profile = find_interaction_profile(*profile_path);
     if (profile == nullptr) return XR_ERROR_PATH_UNSUPPORTED;
     std::vector<std::pair<Action*, std::string>> bindings;
@@ -207,11 +235,15 @@ XrResult XRAPI_CALL xrSuggestInteractionProfileBindings(
         if (action == nullptr || action->set->instance != instance) {
             return XR_ERROR_HANDLE_INVALID;
         }
+        // spec: an action whose set is attached can no longer get suggestions.
+        if (action->set->attached) return XR_ERROR_ACTIONSETS_ALREADY_ATTACHED;
         const std::string* path = instance->paths.find(binding.binding);
         if (path == nullptr) return XR_ERROR_PATH_INVALID;
-        const Component* component = resolve_binding_path(*profile, *path);
-        if (component == nullptr) return XR_ERROR_PATH_UNSUPPORTED;
-        bindings.emplace_back(action, component->path);
+        if (!is_binding_path(*profile, *path)) return XR_ERROR_PATH_UNSUPPORTED;
+        // A valid path the action's type cannot read is accepted and left unbound (spec 11.4).
+        for (const Component* component : bound_components(*profile, *path, use_of(action->type))) {
+            bindings.emplace_back(action, component->path);
+        }
     }
     // spec: a later call for the same profile replaces the earlier suggestion.
     instance->suggested_bindings[suggested->interactionProfile] = std::move(bindings);
@@ -237,7 +269,6 @@ XrResult XRAPI_CALL xrAttachSessionActionSets(XrSession handle,
     Instance& instance = *session->instance;
     for (ActionSet* set : sets) set->attached = true;
     session->attached_sets = sets;
-    instance.any_session_attached = true;
 
     const XrPath profile = instance.paths.intern(instance.script.interaction_profile);
     session->bindings.clear();
@@ -267,8 +298,14 @@ XrResult XRAPI_CALL xrGetCurrentInteractionProfile(XrSession handle, XrPath top_
     if (path == nullptr) return XR_ERROR_PATH_INVALID;
     if (!is_top_level_path(*path)) return XR_ERROR_PATH_UNSUPPORTED;
     if (session->attached_sets.empty()) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
-    const bool hand = path->starts_with("/user/hand/");
-    state->interactionProfile = hand ? session->interaction_profile : XR_NULL_PATH;
+    // The plugged-in profile serves its own user paths only (an Xbox controller is at
+    // /user/gamepad, not at the hands).
+    const std::string* current = session->instance->paths.find(session->interaction_profile);
+    const InteractionProfile* profile =
+        current == nullptr ? nullptr : find_interaction_profile(*current);
+    const bool serves = profile != nullptr &&
+                        std::ranges::find(profile->user_paths, *path) != profile->user_paths.end();
+    state->interactionProfile = serves ? session->interaction_profile : XR_NULL_PATH;
     return XR_SUCCESS;
 }
 
@@ -390,11 +427,33 @@ XrResult XRAPI_CALL xrGetActionStateVector2f(XrSession handle, const XrActionSta
         r != XR_SUCCESS) {
         return r;
     }
-    // Scripts press buttons; no thumbstick or trackpad ever moves.
-    state->isActive = XR_FALSE;
-    state->currentState = {0.0f, 0.0f};
-    state->changedSinceLastSync = XR_FALSE;
-    state->lastChangeTime = 0;
+    // Bound to an identifier's x and y (spec 11.4); a scripted "press" of an axis holds it at 1.
+    // Of several bound sources the longest vector wins (spec 11.5.1). bound_components gives a
+    // vector2f action its components as (x, y) pairs, kept adjacent through attach and filter.
+    XrVector2f current{0.0f, 0.0f};
+    XrVector2f previous{0.0f, 0.0f};
+    XrTime last_change = 0;
+    auto length2 = [](XrVector2f v) { return v.x * v.x + v.y * v.y; };
+    for (std::size_t i = 0; i + 1 < components.size(); i += 2) {
+        const std::string& x = *components[i];
+        const std::string& y = *components[i + 1];
+        const XrVector2f now{value_in(session->values, x), value_in(session->values, y)};
+        const XrVector2f before{value_in(session->previous_values, x),
+                                value_in(session->previous_values, y)};
+        if (length2(now) > length2(current)) current = now;
+        if (length2(before) > length2(previous)) previous = before;
+        for (const std::string* component : {&x, &y}) {
+            if (auto found = session->last_change.find(*component);
+                found != session->last_change.end()) {
+                last_change = std::max(last_change, found->second);
+            }
+        }
+    }
+    const bool changed = current.x != previous.x || current.y != previous.y;
+    state->isActive = active ? XR_TRUE : XR_FALSE;
+    state->currentState = active ? current : XrVector2f{0.0f, 0.0f};
+    state->changedSinceLastSync = active && changed ? XR_TRUE : XR_FALSE;
+    state->lastChangeTime = active ? last_change : 0;
     return XR_SUCCESS;
 }
 
@@ -429,7 +488,10 @@ xrEnumerateBoundSourcesForAction(XrSession handle, const XrBoundSourcesForAction
     if (!is_attached_to(*session, action->set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
     std::vector<XrPath> bound;
     for (const auto& [bound_action, component] : session->bindings) {
-        if (bound_action == action) bound.push_back(session->instance->paths.intern(component));
+        if (bound_action != action) continue;
+        // A source suggested twice for one action is still one source.
+        const XrPath source = session->instance->paths.intern(component);
+        if (std::ranges::find(bound, source) == bound.end()) bound.push_back(source);
     }
     return fill_array(capacity, count, sources, bound);
 }
@@ -444,10 +506,26 @@ XrResult XRAPI_CALL xrGetInputSourceLocalizedName(XrSession handle,
     if (!has_type(info, XR_TYPE_INPUT_SOURCE_LOCALIZED_NAME_GET_INFO)) {
         return XR_ERROR_VALIDATION_FAILURE;
     }
+    // spec (XrInputSourceLocalizedNameGetInfo): whichComponents must not be 0.
+    if (info->whichComponents == 0) return XR_ERROR_VALIDATION_FAILURE;
     const std::string* path = session->instance->paths.find(info->sourcePath);
     if (path == nullptr) return XR_ERROR_PATH_INVALID;
-    // The path is the most precise name a simulated device has.
-    return fill_string(capacity, count, buffer, *path);
+    if (session->attached_sets.empty()) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+    // The name comes from the plugged-in profile (the only one whose sources are ever bound); a
+    // source of no profile simxr knows is named by its path.
+    const std::string* current = session->instance->paths.find(session->interaction_profile);
+    const InteractionProfile* profile = find_interaction_profile(
+        current != nullptr ? *current : session->instance->script.interaction_profile);
+    if (profile == nullptr || user_path_of(*profile, *path).empty()) {
+        return fill_string(capacity, count, buffer, *path);
+    }
+    const XrInputSourceLocalizedNameFlags which = info->whichComponents;
+    return fill_string(
+        capacity, count, buffer,
+        localized_source_name(*profile, *path,
+                              (which & XR_INPUT_SOURCE_LOCALIZED_NAME_USER_PATH_BIT) != 0,
+                              (which & XR_INPUT_SOURCE_LOCALIZED_NAME_INTERACTION_PROFILE_BIT) != 0,
+                              (which & XR_INPUT_SOURCE_LOCALIZED_NAME_COMPONENT_BIT) != 0));
 }
 
 XrResult XRAPI_CALL xrApplyHapticFeedback(XrSession handle, const XrHapticActionInfo* info,
@@ -455,13 +533,16 @@ XrResult XRAPI_CALL xrApplyHapticFeedback(XrSession handle, const XrHapticAction
     std::lock_guard lock(runtime_mutex());
     const Session* session = lookup<Session>(handle);
     if (session == nullptr) return XR_ERROR_HANDLE_INVALID;
-    if (!has_type(info, XR_TYPE_HAPTIC_ACTION_INFO) || feedback == nullptr) {
+    // spec 11.6: the one haptic structure of core OpenXR is XrHapticVibration.
+    if (!has_type(info, XR_TYPE_HAPTIC_ACTION_INFO) || feedback == nullptr ||
+        feedback->type != XR_TYPE_HAPTIC_VIBRATION) {
         return XR_ERROR_VALIDATION_FAILURE;
     }
     const Action* action = lookup<Action>(info->action);
     if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (action->type != XR_ACTION_TYPE_VIBRATION_OUTPUT) return XR_ERROR_ACTION_TYPE_MISMATCH;
     if (!is_attached_to(*session, action->set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+    if (XrResult r = check_subaction(*action, info->subactionPath); r != XR_SUCCESS) return r;
     return session->state == XR_SESSION_STATE_FOCUSED ? XR_SUCCESS : XR_SESSION_NOT_FOCUSED;
 }
 
@@ -474,6 +555,7 @@ XrResult XRAPI_CALL xrStopHapticFeedback(XrSession handle, const XrHapticActionI
     if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (action->type != XR_ACTION_TYPE_VIBRATION_OUTPUT) return XR_ERROR_ACTION_TYPE_MISMATCH;
     if (!is_attached_to(*session, action->set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+    if (XrResult r = check_subaction(*action, info->subactionPath); r != XR_SUCCESS) return r;
     return session->state == XR_SESSION_STATE_FOCUSED ? XR_SUCCESS : XR_SESSION_NOT_FOCUSED;
 }
 

@@ -1,4 +1,5 @@
-// Writing what the application submitted to PNG files, for tests and dry runs to look at.
+// Writing what the application submitted to files, for tests and dry runs to look at: colour as
+// PNG, depth (XR_KHR_composition_layer_depth) as PFM.
 #pragma once
 
 #include <filesystem>
@@ -15,5 +16,14 @@ namespace monoplane::simxr {
 // stderr) if the copy or the file fails.
 bool dump_sub_image(Session& session, const XrSwapchainSubImage& sub_image,
                     const std::filesystem::path& file);
+
+// Copies the depth sub-image (XR_KHR_composition_layer_depth) of its swapchain's last released
+// image and writes each texel's distance in front of the eye, in metres (view space -z, decoded
+// with the structure's minDepth, maxDepth, nearZ and farZ; +inf on an infinite plane) to a
+// one-channel PFM file in the host's byte order (the scale's sign says which). The image is back in
+// DEPTH_STENCIL_ATTACHMENT_OPTIMAL and the queue idle when this returns. Call only with a structure
+// xrEndFrame has checked. False (with a message on stderr) if the copy or the file fails.
+bool dump_depth_sub_image(Session& session, const XrCompositionLayerDepthInfoKHR& depth,
+                          const std::filesystem::path& file);
 
 }  // namespace monoplane::simxr

@@ -47,6 +47,30 @@ XrResult check_sub_image(const Session& session, const XrSwapchainSubImage& sub_
     return XR_SUCCESS;
 }
 
+// A projection view's XR_KHR_composition_layer_depth structure, or nullptr. spec (fundamentals,
+// next chains): a runtime must ignore structures of extensions the instance did not enable, so
+// without the extension a chained depth structure is neither checked nor dumped.
+const XrCompositionLayerDepthInfoKHR* depth_info(const Session& session,
+                                                 const XrCompositionLayerProjectionView& view) {
+    if (!session.instance->composition_layer_depth) return nullptr;
+    return static_cast<const XrCompositionLayerDepthInfoKHR*>(
+        find_in_chain(view.next, XR_TYPE_COMPOSITION_LAYER_DEPTH_INFO_KHR));
+}
+
+// XrCompositionLayerDepthInfoKHR's rules (XR_KHR_composition_layer_depth, revision 6).
+XrResult check_depth_info(const Session& session, const XrCompositionLayerDepthInfoKHR& depth) {
+    // The sub-image follows xrEndFrame's rules for every swapchain a layer names.
+    if (XrResult r = check_sub_image(session, depth.subImage); r != XR_SUCCESS) return r;
+    // subImage "identifies the depth image": a colour swapchain there is a malformed structure.
+    if (!lookup<Swapchain>(depth.subImage.swapchain)->depth) return XR_ERROR_VALIDATION_FAILURE;
+    // minDepth < maxDepth, both in [0, 1]; nearZ and farZ in (0, +inf] and not equal (nearZ >
+    // farZ is reversed depth). Written as positive tests so that NaN fails them.
+    const bool depth_range =
+        depth.minDepth >= 0.0f && depth.minDepth < depth.maxDepth && depth.maxDepth <= 1.0f;
+    const bool planes = depth.nearZ > 0.0f && depth.farZ > 0.0f && depth.nearZ != depth.farZ;
+    return depth_range && planes ? XR_SUCCESS : XR_ERROR_VALIDATION_FAILURE;
+}
+
 XrResult check_layer(const Session& session, const XrCompositionLayerBaseHeader* layer) {
     if (layer == nullptr) return XR_ERROR_LAYER_INVALID;
     const Space* space = lookup<Space>(layer->space);
@@ -64,6 +88,11 @@ XrResult check_layer(const Session& session, const XrCompositionLayerBaseHeader*
             if (XrResult r = check_sub_image(session, projection->views[i].subImage);
                 r != XR_SUCCESS) {
                 return r;
+            }
+            // The extension asks for depth on every view of a layer but does not make a view
+            // without it an error, so each view is checked on its own.
+            if (const auto* depth = depth_info(session, projection->views[i])) {
+                if (XrResult r = check_depth_info(session, *depth); r != XR_SUCCESS) return r;
             }
         }
         return XR_SUCCESS;
@@ -86,9 +115,17 @@ XrResult dump_frame(Session& session, std::int64_t frame, const XrFrameEndInfo& 
         std::filesystem::create_directories(script.dump_dir, error);
         for (uint32_t eye = 0; eye < 2; ++eye) {
             char name[64];
-            std::snprintf(name, sizeof(name), "frame_%06lld_%s.png", static_cast<long long>(frame),
+            std::snprintf(name, sizeof(name), "frame_%06lld_%s", static_cast<long long>(frame),
                           eye == 0 ? "left" : "right");
-            if (!dump_sub_image(session, projection->views[eye].subImage, script.dump_dir / name)) {
+            const std::filesystem::path stem = script.dump_dir / name;
+            const XrCompositionLayerProjectionView& view = projection->views[eye];
+            if (!dump_sub_image(session, view.subImage, stem.string() + ".png")) {
+                return XR_ERROR_RUNTIME_FAILURE;
+            }
+            // The depth that goes with these colours: the same layer's, not another's.
+            const XrCompositionLayerDepthInfoKHR* depth = depth_info(session, view);
+            if (depth != nullptr &&
+                !dump_depth_sub_image(session, *depth, stem.string() + "_depth.pfm")) {
                 return XR_ERROR_RUNTIME_FAILURE;
             }
         }

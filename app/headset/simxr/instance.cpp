@@ -1,6 +1,7 @@
 // Instance, system and view configuration: what an application asks before it has a session.
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <string_view>
 
 #include "app/headset/simxr/entry_points.h"
@@ -14,6 +15,16 @@ constexpr XrVersion kRuntimeVersion = XR_MAKE_VERSION(0, 1, 0);
 constexpr uint32_t kMaxSwapchainSize = 16384;
 // spec 10.5: at least 16 layers must be supported.
 constexpr uint32_t kMaxLayerCount = 16;
+
+struct Extension {
+    std::string_view name;
+    uint32_t version;
+};
+// What xrEnumerateInstanceExtensionProperties lists; xrCreateInstance refuses any other.
+constexpr Extension kExtensions[] = {
+    {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME, XR_KHR_vulkan_enable2_SPEC_VERSION},
+    {XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME, XR_KHR_composition_layer_depth_SPEC_VERSION},
+};
 
 XrResult check_system(XrInstance handle, XrSystemId system, Instance** instance) {
     *instance = lookup<Instance>(handle);
@@ -53,13 +64,15 @@ XrResult XRAPI_CALL xrEnumerateInstanceExtensionProperties(const char* layer_nam
                                                            XrExtensionProperties* properties) {
     if (layer_name != nullptr) return XR_ERROR_API_LAYER_NOT_PRESENT;
     if (count == nullptr) return XR_ERROR_VALIDATION_FAILURE;
-    *count = 1;
+    *count = static_cast<uint32_t>(std::size(kExtensions));
     if (capacity == 0) return XR_SUCCESS;
-    if (properties == nullptr || properties[0].type != XR_TYPE_EXTENSION_PROPERTIES) {
-        return XR_ERROR_VALIDATION_FAILURE;
+    if (capacity < std::size(kExtensions)) return XR_ERROR_SIZE_INSUFFICIENT;
+    if (properties == nullptr) return XR_ERROR_VALIDATION_FAILURE;
+    for (std::size_t i = 0; i < std::size(kExtensions); ++i) {
+        if (properties[i].type != XR_TYPE_EXTENSION_PROPERTIES) return XR_ERROR_VALIDATION_FAILURE;
+        copy_text(properties[i].extensionName, kExtensions[i].name);
+        properties[i].extensionVersion = kExtensions[i].version;
     }
-    copy_text(properties[0].extensionName, XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME);
-    properties[0].extensionVersion = XR_KHR_vulkan_enable2_SPEC_VERSION;
     return XR_SUCCESS;
 }
 
@@ -76,12 +89,16 @@ XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* info, XrInstanc
     // API layers are the loader's business (it loads them and refuses missing ones); the create
     // info reaches the runtime with the application's layer names still in it, so they are ignored.
     bool vulkan_enable2 = false;
+    bool composition_layer_depth = false;
     for (uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
-        if (std::string_view(info->enabledExtensionNames[i]) !=
-            XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) {
+        const std::string_view name = info->enabledExtensionNames[i];
+        if (name == XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) {
+            vulkan_enable2 = true;
+        } else if (name == XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME) {
+            composition_layer_depth = true;
+        } else {
             return XR_ERROR_EXTENSION_NOT_PRESENT;
         }
-        vulkan_enable2 = true;
     }
     // The loader allows one instance at a time as well; simxr's state is per process.
     if (!live_objects<Instance>().empty()) return XR_ERROR_LIMIT_REACHED;
@@ -94,6 +111,7 @@ XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* info, XrInstanc
     auto object = std::make_unique<Instance>();
     object->script = std::move(script).value();
     object->vulkan_enable2 = vulkan_enable2;
+    object->composition_layer_depth = composition_layer_depth;
     *instance = register_object<XrInstance>(std::move(object));
     return XR_SUCCESS;
 }

@@ -48,9 +48,10 @@ struct Instance {
     Script script;
     std::deque<QueuedEvent> events;
     PathTable paths;
-    bool vulkan_enable2 = false;        // XR_KHR_vulkan_enable2 was enabled
-    bool system_requested = false;      // xrGetSystem succeeded
-    bool requirements_queried = false;  // xrGetVulkanGraphicsRequirements2KHR was called
+    bool vulkan_enable2 = false;           // XR_KHR_vulkan_enable2 was enabled
+    bool composition_layer_depth = false;  // XR_KHR_composition_layer_depth was enabled
+    bool system_requested = false;         // xrGetSystem succeeded
+    bool requirements_queried = false;     // xrGetVulkanGraphicsRequirements2KHR was called
     PFN_vkGetInstanceProcAddr vk_get_instance_proc_addr = nullptr;
     VkInstance vk_instance = VK_NULL_HANDLE;                  // from xrGetVulkanGraphicsDevice2KHR
     VkPhysicalDevice named_physical_device = VK_NULL_HANDLE;  // what that call returned
@@ -58,7 +59,6 @@ struct Instance {
     std::vector<ActionSet*> action_sets;
     // Suggested bindings per interaction profile path (the latest call for a profile wins).
     std::map<XrPath, std::vector<std::pair<Action*, std::string>>> suggested_bindings;
-    bool any_session_attached = false;
 };
 
 struct Swapchain {
@@ -78,8 +78,11 @@ struct Swapchain {
 struct Space {
     Session* session = nullptr;
     XrReferenceSpaceType type = XR_REFERENCE_SPACE_TYPE_LOCAL;
-    XrPosef pose_in_reference{{0, 0, 0, 1}, {0, 0, 0}};
-    bool action_space = false;  // never located: simxr tracks no controller poses
+    XrPosef pose_in_reference{{0, 0, 0, 1}, {0, 0, 0}};  // or poseInActionSpace
+    bool action_space = false;
+    // Action spaces: the pose action (null once it is destroyed) and the subaction path.
+    const Action* action = nullptr;
+    XrPath subaction_path = XR_NULL_PATH;
 };
 
 struct ActionSet {

@@ -241,8 +241,13 @@ void read_inputs(const toml::table& root, TomlProblems& problems, Script& script
         }
         if (component == nullptr || component->kind == ComponentKind::pose ||
             component->kind == ComponentKind::haptic) {
+            // The example is one of this profile's own buttons (an Xbox controller has no hands).
+            std::string example;
+            for (const Component& c : profile->components) {
+                if (example.empty() && c.kind == ComponentKind::boolean) example = c.path;
+            }
             reader.problem("path", "'" + *path + "' is no button or axis of " + profile->path +
-                                       " (e.g. /user/hand/right/input/select/click)");
+                                       " (e.g. " + example + ")");
             continue;
         }
         press.path = *path;

@@ -1,7 +1,11 @@
-// Reference spaces and view location. LOCAL and STAGE are the same space: the script's head
-// positions are given in it, so a standing height is part of the keyframes (y = 1.6). VIEW is
-// the head. Eyes sit at -ipd/2 and +ipd/2 along the head's x axis (DESIGN.md section 2).
+// Reference spaces, action spaces and view location. LOCAL and STAGE are the same space: the
+// script's head positions are given in it, so a standing height is part of the keyframes
+// (y = 1.6). VIEW is the head. Eyes sit at -ipd/2 and +ipd/2 along the head's x axis (DESIGN.md
+// section 2). The simulated controllers are held still in front of the head (hand_in_head).
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string_view>
 
 #include <glm/gtc/quaternion.hpp>
 
@@ -39,10 +43,48 @@ rig::Pose head_at(const Session& session, XrTime time) {
     return head_pose_at(session.instance->script, session.script_time(time));
 }
 
-rig::Pose space_in_local(const Session& session, const Space& space, XrTime time) {
+// Nothing tracks simxr's controllers, so each hand's pose components (grip and aim alike) ride
+// rigidly with the head: 20 cm to its side, 30 cm below and 40 cm in front of the eyes'
+// midpoint, oriented like the head. An application sees its hands where a seated user holds
+// them, and hello_xr draws its hand cubes.
+std::optional<rig::Pose> hand_in_head(std::string_view component) {
+    const glm::dquat identity(1.0, 0.0, 0.0, 0.0);
+    if (component.starts_with("/user/hand/left/")) return rig::Pose{{-0.2, -0.3, -0.4}, identity};
+    if (component.starts_with("/user/hand/right/")) return rig::Pose{{0.2, -0.3, -0.4}, identity};
+    return std::nullopt;
+}
+
+// The pose source an action space follows (spec 11.5.1: a single one, the first bound that
+// matches its subaction path), or nullptr while it is unlocatable (spec 7.2.1: only while its
+// action set was active in the latest xrSyncActions).
+const std::string* pose_source(const Session& session, const Space& space) {
+    if (space.action == nullptr ||
+        std::ranges::find(session.synced_sets, space.action->set) == session.synced_sets.end()) {
+        return nullptr;
+    }
+    std::string prefix;
+    if (space.subaction_path != XR_NULL_PATH) {
+        prefix = *session.instance->paths.find(space.subaction_path) + "/";
+    }
+    for (const auto& [action, component] : session.bindings) {
+        if (action == space.action && component.starts_with(prefix)) return &component;
+    }
+    return nullptr;
+}
+
+// Where a space is in LOCAL at `time`; nullopt for an action space that cannot be located.
+std::optional<rig::Pose> space_in_local(const Session& session, const Space& space, XrTime time) {
+    const rig::Pose offset = from_xr(space.pose_in_reference);
+    if (space.action_space) {
+        const std::string* source = pose_source(session, space);
+        const std::optional<rig::Pose> hand =
+            source == nullptr ? std::nullopt : hand_in_head(*source);
+        if (!hand) return std::nullopt;
+        return compose(compose(head_at(session, time), *hand), offset);
+    }
     const rig::Pose origin =
         space.type == XR_REFERENCE_SPACE_TYPE_VIEW ? head_at(session, time) : rig::Pose{};
-    return compose(origin, from_xr(space.pose_in_reference));
+    return compose(origin, offset);
 }
 
 bool is_unit_quaternion(const XrQuaternionf& q) {
@@ -120,9 +162,23 @@ XrResult XRAPI_CALL xrCreateActionSpace(XrSession handle, const XrActionSpaceCre
     const Action* action = lookup<Action>(info->action);
     if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (action->type != XR_ACTION_TYPE_POSE_INPUT) return XR_ERROR_ACTION_TYPE_MISMATCH;
+    // spec (XrActionSpaceCreateInfo): a subaction path the action was not created with is
+    // XR_ERROR_PATH_UNSUPPORTED.
+    if (info->subactionPath != XR_NULL_PATH) {
+        if (session->instance->paths.find(info->subactionPath) == nullptr) {
+            return XR_ERROR_PATH_INVALID;
+        }
+        if (std::ranges::find(action->subaction_paths, info->subactionPath) ==
+            action->subaction_paths.end()) {
+            return XR_ERROR_PATH_UNSUPPORTED;
+        }
+    }
+    if (!is_unit_quaternion(info->poseInActionSpace.orientation)) return XR_ERROR_POSE_INVALID;
     auto space = std::make_unique<Space>();
     space->session = session;
     space->action_space = true;
+    space->action = action;
+    space->subaction_path = info->subactionPath;
     space->pose_in_reference = info->poseInActionSpace;
     session->spaces.push_back(space.get());
     *space_handle = register_object<XrSpace>(std::move(space));
@@ -152,16 +208,26 @@ XrResult XRAPI_CALL xrLocateSpace(XrSpace space_handle, XrSpace base_handle, XrT
             const_cast<void*>(find_in_chain(location->next, XR_TYPE_SPACE_VELOCITY)))) {
         velocity->velocityFlags = 0;
     }
-    // Controllers are not tracked: action spaces have no location.
-    if (space->action_space || base->action_space) {
-        location->locationFlags = 0;
-        location->pose = {{0, 0, 0, 1}, {0, 0, 0}};
+    const Session& session = *space->session;
+    const std::optional<rig::Pose> space_pose = space_in_local(session, *space, time);
+    const std::optional<rig::Pose> base_pose = space_in_local(session, *base, time);
+    if (space_pose && base_pose) {
+        location->pose = to_xr(compose(inverse(*base_pose), *space_pose));
+        location->locationFlags = kFullyTracked;
         return XR_SUCCESS;
     }
-    const Session& session = *space->session;
-    location->pose = to_xr(compose(inverse(space_in_local(session, *base, time)),
-                                   space_in_local(session, *space, time)));
-    location->locationFlags = kFullyTracked;
+    // spec 7.4: two spaces on the same entity (two action spaces of one action and subaction
+    // path) are located relative to each other even while the entity is not.
+    if (space->action_space && base->action_space && space->action != nullptr &&
+        space->action == base->action && space->subaction_path == base->subaction_path) {
+        location->pose = to_xr(
+            compose(inverse(from_xr(base->pose_in_reference)), from_xr(space->pose_in_reference)));
+        location->locationFlags = kFullyTracked;
+        return XR_SUCCESS;
+    }
+    // spec 7.2.1: an unlocatable action space has no position or orientation.
+    location->locationFlags = 0;
+    location->pose = {{0, 0, 0, 1}, {0, 0, 0}};
     return XR_SUCCESS;
 }
 
@@ -187,13 +253,14 @@ XrResult XRAPI_CALL xrLocateViews(XrSession handle, const XrViewLocateInfo* info
     if (views == nullptr || views[0].type != XR_TYPE_VIEW || views[1].type != XR_TYPE_VIEW) {
         return XR_ERROR_VALIDATION_FAILURE;
     }
-    if (space->action_space) {
+    const std::optional<rig::Pose> space_pose = space_in_local(*session, *space, info->displayTime);
+    if (!space_pose) {  // spec 7.2.1: an unlocatable action space locates no views
         view_state->viewStateFlags = 0;
         return XR_SUCCESS;
     }
     const hmd::HmdProfile& hmd = session->instance->script.hmd;
     const rig::Pose head = head_at(*session, info->displayTime);
-    const rig::Pose local_to_space = inverse(space_in_local(*session, *space, info->displayTime));
+    const rig::Pose local_to_space = inverse(*space_pose);
     for (int eye = 0; eye < 2; ++eye) {
         const double x = (eye == 0 ? -0.5 : 0.5) * hmd.ipd;
         const rig::Pose eye_in_head{{x, 0.0, 0.0}, glm::dquat(1.0, 0.0, 0.0, 0.0)};
