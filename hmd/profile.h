@@ -1,6 +1,6 @@
 // HMD profiles (DESIGN.md section 4): a headset's per-eye frusta, per-eye render-target size and
-// default IPD, read from TOML. Built-ins (vive, vive-pro, symmetric-90, symmetric-110) are
-// compiled in from hmd/profiles/; a file path is accepted anywhere a built-in name is.
+// default IPD, read from TOML. Built-ins (vive, vive-pro, symmetric-90, symmetric-110, canted-15)
+// are compiled in from hmd/profiles/; a file path is accepted anywhere a built-in name is.
 //
 // Tangent convention: OpenXR's XrFovf angles through tan (DESIGN.md section 2), +y up, so
 // tan_left < 0 < tan_right and tan_down < 0 < tan_up. OpenVR's GetProjectionRaw reports top and
@@ -9,6 +9,7 @@
 // tan_down = -b.
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,8 +25,11 @@ struct HmdProfile {
     double ipd = 0.0;  // metres: this headset's default, overridden by --ipd
     int width = 0;     // per-eye render target, pixels
     int height = 0;
-    rig::Tangents left;
+    rig::Tangents left;  // in the left eye's own frame (turned by cant_deg[0] when canted)
     rig::Tangents right;
+    // Canted displays: each eye's yaw about the head's +y axis, degrees, positive turning it
+    // left ([rig::kLeft], [rig::kRight]); a canted headset has cant_deg[0] > 0 > cant_deg[1].
+    std::array<double, 2> cant_deg = {0.0, 0.0};
     std::string source;  // "built-in vive" or the file path it was loaded from
 };
 
@@ -42,6 +46,9 @@ Result<HmdProfile> load_hmd_profile(std::string_view name_or_path);
 // The rig's inputs for this headset at mono plane m: its frusta, per-eye size and default IPD;
 // near, far, k and the allocation keep the rig's defaults for the caller to override.
 rig::RigInputs rig_inputs(const HmdProfile& profile, double mono_plane);
+
+// cant_deg in radians, as the rig and the renderer's views take it.
+std::array<double, 2> cant_radians(const HmdProfile& profile);
 
 // The built-in profile names, in the order they should be shown to users.
 std::vector<std::string> builtin_hmd_names();

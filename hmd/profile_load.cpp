@@ -73,7 +73,13 @@ rig::RigInputs rig_inputs(const HmdProfile& profile, double mono_plane) {
     inputs.eye_height = profile.height;
     inputs.ipd = profile.ipd;
     inputs.mono_plane = mono_plane;
+    inputs.cant = cant_radians(profile);
     return inputs;
+}
+
+std::array<double, 2> cant_radians(const HmdProfile& profile) {
+    constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+    return {profile.cant_deg[0] * kRadiansPerDegree, profile.cant_deg[1] * kRadiansPerDegree};
 }
 
 }  // namespace monoplane::hmd

@@ -151,23 +151,34 @@ std::optional<double> read_tangent(const TomlScope& eye, const TangentRule& rule
     return tangent;
 }
 
-// cant_deg (a per-eye yaw for canted displays, e.g. Pimax, Valve Index) is recognised so that
-// such a profile is refused with a reason instead of an "unknown key", and so that the rig's
-// parallel-eye assumption is never silently wrong.
-void refuse_canted_display(const TomlScope& eye, TomlProblems& problems) {
+// The bound on cant_deg: the rig's (renderer/rig/rig.h kMaxCant), in degrees.
+constexpr double kMaxCantDegrees = 45.0;
+
+// cant_deg: the eye's yaw about the head's +y axis in degrees, positive turning it left
+// (DESIGN.md section 4); 0 when absent.
+std::optional<double> read_cant(const TomlScope& eye, TomlProblems& problems) {
     const toml::node* node = eye.table.get("cant_deg");
-    if (node == nullptr) return;
+    if (node == nullptr) return 0.0;
     const std::string key = eye.qualified("cant_deg");
     const std::optional<double> cant = read_finite_number(*node, key, problems);
-    if (cant && *cant != 0.0) {
+    if (!cant) return std::nullopt;
+    if (std::abs(*cant) > kMaxCantDegrees) {
         problems.add(node->source(), "key " + quoted(key) + " = " + format_number(*cant) +
-                                         ": canted displays are not supported yet by the rig; "
-                                         "remove the key or set it to 0");
+                                         " is implausible: |cant_deg| must not exceed " +
+                                         format_number(kMaxCantDegrees) +
+                                         " degrees (no headset turns its displays further)");
+        return std::nullopt;
     }
+    return cant;
 }
 
-std::optional<rig::Tangents> read_eye(const TomlScope& root, std::string_view eye_name,
-                                      TomlProblems& problems) {
+struct EyeReading {
+    rig::Tangents tangents;
+    double cant_deg = 0.0;
+};
+
+std::optional<EyeReading> read_eye(const TomlScope& root, std::string_view eye_name,
+                                   TomlProblems& problems) {
     const toml::node* node = find_required(root, eye_name, "a table of four tangents", problems);
     if (node == nullptr) return std::nullopt;
     const toml::table* table = node->as_table();
@@ -180,9 +191,9 @@ std::optional<rig::Tangents> read_eye(const TomlScope& root, std::string_view ey
     }
     const TomlScope eye{*table, std::string(eye_name)};
     report_unknown_keys(eye, kEyeKeys, problems);
-    refuse_canted_display(eye, problems);
+    const std::optional<double> cant = read_cant(eye, problems);
     rig::Tangents tangents;
-    bool complete = true;
+    bool complete = cant.has_value();
     for (const TangentRule& rule : kTangentRules) {
         const std::optional<double> tangent = read_tangent(eye, rule, problems);
         if (tangent) {
@@ -192,7 +203,7 @@ std::optional<rig::Tangents> read_eye(const TomlScope& root, std::string_view ey
         }
     }
     if (!complete) return std::nullopt;
-    return tangents;
+    return EyeReading{tangents, *cant};
 }
 
 }  // namespace
@@ -209,8 +220,8 @@ Result<HmdProfile> parse_hmd_profile(std::string_view toml_text, std::string_vie
     const std::optional<double> ipd = read_ipd(root, problems);
     const std::optional<int> width = read_pixels(root, "width", problems);
     const std::optional<int> height = read_pixels(root, "height", problems);
-    const std::optional<rig::Tangents> left = read_eye(root, "left", problems);
-    const std::optional<rig::Tangents> right = read_eye(root, "right", problems);
+    const std::optional<EyeReading> left = read_eye(root, "left", problems);
+    const std::optional<EyeReading> right = read_eye(root, "right", problems);
     if (!problems.empty()) return problems.error();
 
     // A reader returns nullopt only after recording a problem.
@@ -218,8 +229,9 @@ Result<HmdProfile> parse_hmd_profile(std::string_view toml_text, std::string_vie
                       .ipd = *ipd,
                       .width = *width,
                       .height = *height,
-                      .left = *left,
-                      .right = *right,
+                      .left = left->tangents,
+                      .right = right->tangents,
+                      .cant_deg = {left->cant_deg, right->cant_deg},
                       .source = std::string(source_name)};
 }
 

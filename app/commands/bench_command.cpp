@@ -325,6 +325,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     base.views.ipd = profile.ipd;
     base.views.left = profile.left;
     base.views.right = profile.right;
+    base.views.cant = hmd::cant_radians(profile);
     const std::vector<Plane> planes = parse_planes(o, base.views.far);
     double nearest = base.views.far;
     for (const Plane& p : planes) nearest = std::min(nearest, p.metres);

@@ -223,6 +223,12 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     const std::filesystem::path out = prepare_output_directory("--out", o.out);
 
     const hmd::HmdProfile profile = hmd::load_hmd_profile(o.hmd).value_or_throw();
+    if (o.depth_profile && (profile.cant_deg[0] != 0.0 || profile.cant_deg[1] != 0.0)) {
+        // scenes/depth_profile.cpp measures a parallel eye's own depth, which for a canted eye
+        // is not the distance in front of the eyes' plane that m is measured by.
+        throw UserError("--depth-profile is not available for canted profiles (" + profile.name +
+                        "): it measures depth along a parallel eye's axis");
+    }
     const int width = o.width > 0 ? o.width : profile.width;
     const int height = o.height > 0 ? o.height : profile.height;
 
@@ -249,6 +255,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     inputs.views.ipd = o.ipd.value_or(profile.ipd);
     inputs.views.left = profile.left;
     inputs.views.right = profile.right;
+    inputs.views.cant = hmd::cant_radians(profile);
     inputs.mono_plane = o.mono_plane.value_or(inputs.views.far);
     inputs.overlap_k = o.overlap_k;
     inputs.view_blend_band = o.blend_band;

@@ -38,6 +38,7 @@ struct RigOptions {
     double near = 0.1;
     double far = 1000.0;
     double overlap_k = 2.0;
+    double grazing_deg = 1.0;
     double nearest_mono_plane = 0.0;
     bool json = false;
     std::string fig2_dir;
@@ -51,6 +52,7 @@ rig::RigInputs rig_inputs(const RigOptions& o, const hmd::HmdProfile& profile, d
     in.near = o.near;
     in.far = o.far;
     in.overlap_k = o.overlap_k;
+    in.grazing_angle = o.grazing_deg * std::numbers::pi / 180.0;
     in.nearest_mono_plane = o.nearest_mono_plane;
     return in;
 }
@@ -105,6 +107,14 @@ void print_summary(std::ostream& out, const hmd::HmdProfile& profile, const rig:
     print_tangents(out, in.eyes[rig::kLeft]);
     out << "  right         ";
     print_tangents(out, in.eyes[rig::kRight]);
+    if (rig::is_canted(in)) {
+        std::snprintf(line, sizeof line,
+                      "  canted        left %+.3f deg, right %+.3f deg (yaw, positive left); the "
+                      "tangents are in each turned eye's frame\n",
+                      in.cant[rig::kLeft] * 180.0 / std::numbers::pi,
+                      in.cant[rig::kRight] * 180.0 / std::numbers::pi);
+        out << line;
+    }
     std::snprintf(
         line, sizeof line,
         "ipd d %.4g m, mono plane m %.6g m, near n %.6g m, far f %.6g m, overlap k %.4g\n", in.ipd,
@@ -126,9 +136,10 @@ void print_summary(std::ostream& out, const hmd::HmdProfile& profile, const rig:
                   degrees(c.tangents.right) - degrees(c.tangents.left),
                   degrees(c.tangents.up) - degrees(c.tangents.down));
     out << line;
-    std::snprintf(line, sizeof line,
-                  "  overlap eps   %.6f m (k s m): C starts at %.6f m in front of the eyes\n",
-                  rig.overlap, in.mono_plane - rig.overlap);
+    std::snprintf(
+        line, sizeof line,
+        "  overlap eps   %.6f m (k s m or C's footprint at grazing angles): C starts at %.6f m\n",
+        rig.overlap, in.mono_plane - rig.overlap);
     out << line;
     std::snprintf(line, sizeof line, "  near, far     %.6f m, %.6f m (from C)\n", c.near, c.far);
     out << line;
@@ -169,12 +180,16 @@ std::string summary_json(const hmd::HmdProfile& profile, const rig::Rig& rig) {
     j.value("command", "rig").value("hmd", profile.name).value("hmd_source", profile.source);
     j.value("ipd", in.ipd).value("mono_plane", in.mono_plane);
     j.value("near", in.near).value("far", in.far).value("overlap_k", in.overlap_k);
+    j.value("grazing_deg", in.grazing_angle * 180.0 / std::numbers::pi);
     j.value("nearest_mono_plane",
             in.nearest_mono_plane > 0.0 ? in.nearest_mono_plane : in.mono_plane);
     j.begin_object("eyes");
     j.value("width", in.eye_width).value("height", in.eye_height);
     tangents_json(j, "left", in.eyes[rig::kLeft]);
     tangents_json(j, "right", in.eyes[rig::kRight]);
+    // Canted displays (DESIGN.md section 4): each eye's yaw, degrees, positive turning it left.
+    j.value("left_cant_deg", in.cant[rig::kLeft] * 180.0 / std::numbers::pi);
+    j.value("right_cant_deg", in.cant[rig::kRight] * 180.0 / std::numbers::pi);
     j.end_object();
     j.value("mono_skipped", rig.mono_skipped);
     j.begin_object("mono_camera");
@@ -339,6 +354,10 @@ void add_rig_command(CLI::App& root, const GlobalOptions& /*global: no GPU here*
     cmd->add_option("--far", options->far, "Far plane f in metres")->capture_default_str();
     cmd->add_option("--near", options->near, "Near plane n in metres")->capture_default_str();
     cmd->add_option("--k", options->overlap_k, "Overlap constant k of eps = k s m (eq. 3)")
+        ->capture_default_str();
+    cmd->add_option("--grazing-deg", options->grazing_deg,
+                    "Grow eps so that surfaces down to this angle to the view rays show no "
+                    "cutting line (C's pixel footprint; 0: eps = k s m alone; docs/hybrid.md)")
         ->capture_default_str();
     cmd->add_option("--nearest-mono-plane", options->nearest_mono_plane,
                     "Allocate C's image for this nearest selectable m (Sect. 4.2; default: m)");

@@ -211,6 +211,11 @@ void add_headset_options(CLI::App* cmd, StudyOptions& o) {
     cmd->add_option("--neutral-s", h.neutral_s, "Neutral screen between trials, seconds")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 60.0));
+    cmd->add_option("--layer-depth", h.layer_depth,
+                    "Submit each eye's depth with its colour when the OpenXR runtime offers "
+                    "XR_KHR_composition_layer_depth (auto), or never (off)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"auto", "off"}));
     cmd->add_option("--screenshot", h.screenshot,
                     "PNG of the experimenter window when the session ends");
     cmd->add_option("--screenshot-frame", h.screenshot_frame,

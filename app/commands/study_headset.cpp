@@ -16,6 +16,7 @@
 #include "app/commands/study_renderers.h"
 #include "app/commands/validation_report.h"
 #include "app/headset/eye_compositor.h"
+#include "app/headset/eye_depth_writer.h"
 #include "app/headset/frame_times.h"
 #include "app/headset/openxr_headset.h"
 #include "app/headset/overlay_text.h"
@@ -70,22 +71,41 @@ class SeatAnchor {
     glm::dquat inverse_yaw_{1.0, 0.0, 0.0, 0.0};
 };
 
-// The head from the two located eyes: their midpoint and common orientation. The rig assumes
-// parallel eyes (DESIGN.md section 4): canted views are refused.
-rig::Pose located_head(const headset::HeadsetFrame& frame) {
+// The head from the two located eyes: their midpoint, and the orientation halfway between
+// theirs. Canted views (DESIGN.md section 4) differ from it by a yaw each, their cant; a
+// runtime whose views differ otherwise (a pitch or roll between the eyes) is refused, because
+// the rig models displays turned about the head's vertical axis only.
+struct LocatedHead {
+    rig::Pose head;
+    std::array<double, 2> cant = {0.0, 0.0};  // radians, positive turning the eye left
+};
+
+LocatedHead located_head(const headset::HeadsetFrame& frame) {
     const rig::Pose& l = frame.views[0].pose;
     const rig::Pose& r = frame.views[1].pose;
-    const double cant =
-        2.0 * std::acos(std::min(1.0, std::abs(glm::dot(l.orientation, r.orientation))));
-    if (cant > 0.2 * 3.14159265358979 / 180.0) {
-        throw UserError("the headset's views are canted by " +
-                        std::to_string(cant * 180.0 / 3.14159265358979) +
-                        " degrees; monoplane's rig supports parallel eye views only");
+    LocatedHead located;
+    located.head.position = 0.5 * (l.position + r.position);
+    const glm::dquat right =
+        glm::dot(l.orientation, r.orientation) < 0.0 ? -r.orientation : r.orientation;
+    located.head.orientation = glm::normalize(glm::slerp(l.orientation, right, 0.5));
+    constexpr double kTolerance = 0.2 * 3.14159265358979 / 180.0;
+    for (int e : {0, 1}) {
+        glm::dquat relative =
+            glm::inverse(located.head.orientation) * frame.views[e].pose.orientation;
+        if (relative.w < 0.0) relative = -relative;
+        // A pure yaw is (cos a/2, 0, sin a/2, 0).
+        const double off_axis = 2.0 * std::asin(std::min(1.0, std::hypot(relative.x, relative.z)));
+        if (off_axis > kTolerance) {
+            throw UserError("the headset's " + std::string(e == 0 ? "left" : "right") +
+                            " view is turned by " +
+                            std::to_string(off_axis * 180.0 / 3.14159265358979) +
+                            " degrees about an axis other than the head's vertical; monoplane's "
+                            "rig supports parallel views and views canted by a yaw (DESIGN.md "
+                            "section 4)");
+        }
+        located.cant[e] = 2.0 * std::atan2(relative.y, relative.w);
     }
-    rig::Pose head;
-    head.position = 0.5 * (l.position + r.position);
-    head.orientation = l.orientation;
-    return head;
+    return located;
 }
 
 // The renderer's viewer: the head relative to the seat, placed at the scene's viewpoint, with
@@ -98,6 +118,7 @@ modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const ri
     inputs.ipd = glm::length(frame.views[1].pose.position - frame.views[0].pose.position);
     inputs.left = frame.views[0].tangents;
     inputs.right = frame.views[1].tangents;
+    inputs.cant = located_head(frame).cant;
     inputs.near = protocol.near;
     inputs.far = protocol.far;
     return inputs;
@@ -208,6 +229,9 @@ class HeadsetLoop {
         compositor_.set_overlay("label1", headset::render_text({"1"}, label_style));
         compositor_.set_overlay("label2", headset::render_text({"2"}, label_style));
         compositor_.set_overlay("paused", headset::render_text({"Paused"}, {}));
+        if (headset.depth_format() != vk::Format::eUndefined) {
+            depth_writer_.emplace(ctx, headset.depth_format());
+        }
         study::LiveOptions live_options;
         live_options.neutral_ns = static_cast<std::int64_t>(options.neutral_s * 1e9);
         live_options.on_committed = [this](const std::string& what) { committed(what); };
@@ -254,12 +278,15 @@ class HeadsetLoop {
         // The head relative to the seat: what the frame log records for every frame (the
         // participant's own motion, whatever the screen), and what a trial's views start from.
         std::optional<rig::Pose> tracked;
-        if (frame.views_valid) tracked = anchor_.relative(located_head(frame));
+        if (frame.views_valid) tracked = anchor_.relative(located_head(frame).head);
         const rig::Pose head = tracked.value_or(rig::Pose{});
         handle_inputs(now);
         const study::LiveScreen screen = live_->screen();
         const Rendered rendered = frame.should_render ? render(frame, screen, head) : Rendered{};
-        headset_.end_frame(frame).value_or_throw();
+        // Every frame the eyes' depth was written in carries it (an encoding for all of them).
+        std::optional<headset::DepthEncoding> depth;
+        if (depth_writer_) depth = headset::DepthEncoding{protocol_.near};
+        headset_.end_frame(frame, depth).value_or_throw();
         charge(headset::FrameStep::kOpenXrEnd);
         // What the participant sees changes only with a frame that was shown.
         if (rendered.shown) {
@@ -351,6 +378,10 @@ class HeadsetLoop {
                     const rig::Pose& head) {
         std::array<vk::Image, 2> targets;
         for (int e = 0; e < 2; ++e) targets[e] = headset_.acquire_eye_image(e).value_or_throw();
+        std::array<vk::Image, 2> depth_targets;
+        for (int e = 0; e < 2 && depth_writer_; ++e) {
+            depth_targets[e] = headset_.acquire_eye_depth_image(e).value_or_throw();
+        }
         charge(headset::FrameStep::kOpenXrBegin);
         Rendered rendered;
         rendered.shown = true;
@@ -376,6 +407,10 @@ class HeadsetLoop {
                 compositor_.record_eye(cmd, targets[e], extent_, frame.views[e].tangents,
                                        renderer ? &renderer->display_image(eye) : nullptr, overlays,
                                        mirror);
+                if (depth_writer_) {
+                    record_depth(cmd, e, depth_targets[e], frame.views[e].tangents,
+                                 inputs.views.cant[e], renderer, overlays);
+                }
             }
         };
         charge(headset::FrameStep::kSession);
@@ -392,6 +427,26 @@ class HeadsetLoop {
         }
         charge(headset::FrameStep::kRender);
         return rendered;
+    }
+
+    // The eye's depth beside its colour (XR_KHR_composition_layer_depth, docs/headsets.md): the
+    // scene's as the renderer left it, or infinity without a scene; the overlays at infinity,
+    // where their zero disparity puts them.
+    void record_depth(const vk::raii::CommandBuffer& cmd, int e, vk::Image target,
+                      const rig::Tangents& tangents, double cant,
+                      const modes::ModeRenderer* renderer,
+                      const std::vector<headset::EyeCompositor::Overlay>& overlays) {
+        std::optional<headset::EyeDepthSource> source;
+        if (renderer) {
+            source.emplace();
+            source->linear_depth = renderer->eye_linear_depth_image(static_cast<modes::Eye>(e));
+            source->tangents = tangents;
+            // The renderer turns the eye by R_y(cant) in the head's frame (view_setup.cpp), its
+            // position on the eyes' plane: head -> eye undoes the turn.
+            source->head_to_eye = glm::mat3_cast(glm::angleAxis(-cant, glm::dvec3(0.0, 1.0, 0.0)));
+        }
+        depth_writer_->record(cmd, target, extent_, source ? &*source : nullptr, protocol_.near,
+                              compositor_.overlay_rects(overlays, tangents, extent_));
     }
 
     // The label in a trial, the pause panel, or the questionnaire item with its selection.
@@ -528,6 +583,8 @@ class HeadsetLoop {
     // Frames without a scene (neutral screen, questionnaire) are the compositor's alone; scene
     // frames ride in their renderer's ring.
     vk_core::FrameRing compositor_frames_;
+    // The eyes' depth, when the runtime takes it (XR_KHR_composition_layer_depth).
+    std::optional<headset::EyeDepthWriter> depth_writer_;
     std::unique_ptr<study::LiveSession> live_;
     std::optional<study::ObserverInput> observer_input_;
     HeadsetFrameLog frame_log_;
@@ -571,7 +628,7 @@ study::SessionStatus run_headset_session(
     const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
     std::optional<fs::path> written_script;
     if (options.headset == "simulated") written_script = select_simulated_runtime(options);
-    auto created = headset::OpenXrHeadset::create(global.validation);
+    auto created = headset::OpenXrHeadset::create(global.validation, options.layer_depth != "off");
     // simxr has read its script (in xrCreateInstance): the temporary file is not needed.
     if (written_script) {
         std::error_code ignored;

@@ -29,6 +29,9 @@ struct HeadsetStudyOptions {
     bool trace = false;                  // each durable write on stdout
     std::string screenshot;              // PNG of the experimenter window (tests, docs)...
     std::int64_t screenshot_frame = -1;  // ...after this frame; -1: when the session ends
+    // auto: each eye's depth goes with its colour when the runtime offers
+    // XR_KHR_composition_layer_depth; off: never (docs/headsets.md, "Depth submission").
+    std::string layer_depth = "auto";
     // Simulated runtime only:
     std::string sim_script;    // a simxr script; empty: one is written from the options below
     std::string hmd = "vive";  // the simulated headset's profile

@@ -151,4 +151,17 @@ void EyeCompositor::record_eye(const vk::raii::CommandBuffer& cmd, vk::Image tar
     }
 }
 
+std::vector<PixelRect> EyeCompositor::overlay_rects(const std::vector<Overlay>& overlays,
+                                                    const rig::Tangents& tangents,
+                                                    vk::Extent2D extent) const {
+    std::vector<PixelRect> rects;
+    for (const Overlay& overlay : overlays) {
+        const auto it = textures_.find(overlay.key);
+        if (it == textures_.end()) continue;
+        const vk::Extent2D size = it->second->extent;
+        rects.push_back(overlay_rect(overlay.placement, size.width, size.height, tangents, extent));
+    }
+    return rects;
+}
+
 }  // namespace monoplane::headset

@@ -58,6 +58,11 @@ class EyeCompositor {
                     const rig::Tangents& tangents, const vk_core::Image* source,
                     const std::vector<Overlay>& overlays, const MirrorRecorder& mirror) const;
 
+    // The pixel rectangles record_eye covers with these overlays in an eye of this frustum and
+    // size (the eye depth writer puts them at infinity).
+    std::vector<PixelRect> overlay_rects(const std::vector<Overlay>& overlays,
+                                         const rig::Tangents& tangents, vk::Extent2D extent) const;
+
     // The neutral screen's colour (linear; a dark grey that neither dazzles nor hides the label).
     static constexpr float kNeutralGrey = 0.04f;
 

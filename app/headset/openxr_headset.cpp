@@ -10,7 +10,9 @@
 #include <cmath>
 #include <cstring>
 #include <iostream>
+#include <limits>
 
+#include "app/headset/eye_depth_writer.h"
 #include "app/headset/xr_validation.h"
 
 // OpenXR's structures are initialised the way its specification shows, `XrFoo foo{XR_TYPE_FOO}`:
@@ -75,6 +77,12 @@ SessionPhase to_phase(XrSessionState state) {
 // The formats the eyes can be copied into without changing their sRGB encoding (the renderer's
 // display images are R8G8B8A8_SRGB); a blit converts the channel order where needed.
 constexpr std::array kSwapchainFormats = {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_SRGB};
+
+bool offers(const std::vector<XrExtensionProperties>& extensions, const char* name) {
+    return std::any_of(
+        extensions.begin(), extensions.end(),
+        [name](const XrExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
 
 }  // namespace
 
@@ -159,6 +167,10 @@ struct OpenXrHeadset::Impl {
         bool acquired = false;
     };
     std::array<Swapchain, 2> swapchains;
+    // XR_KHR_composition_layer_depth: enabled on the instance, and the eyes' depth swapchains
+    // (none without the extension or a depth format in common).
+    bool depth_extension = false;
+    std::array<Swapchain, 2> depth_swapchains;
     std::array<XrView, 2> views{};
     bool views_located = false;
     std::int64_t frame_index = -1;
@@ -174,7 +186,10 @@ struct OpenXrHeadset::Impl {
     }
     Result<bool> create_actions();
     Result<bool> create_swapchains(const vk_core::Context& ctx, double scale, vk::Extent2D& extent,
-                                   vk::Format& format);
+                                   vk::Format& format, vk::Format& depth_format);
+    Result<bool> create_swapchain(Swapchain& swapchain, XrSwapchainUsageFlags usage,
+                                  std::int64_t format, vk::Extent2D extent);
+    Result<vk::Image> acquire(Swapchain& swapchain);
 };
 
 OpenXrHeadset::OpenXrHeadset(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -185,7 +200,7 @@ OpenXrHeadset::~OpenXrHeadset() {
     if (impl_->instance != XR_NULL_HANDLE) xrDestroyInstance(impl_->instance);
 }
 
-Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation) {
+Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bool layer_depth) {
     auto impl = std::make_unique<Impl>();
     std::uint32_t count = 0;
     XrResult result = xrEnumerateInstanceExtensionProperties(nullptr, 0, &count, nullptr);
@@ -197,11 +212,7 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation) {
     }
     std::vector<XrExtensionProperties> extensions(count, {XR_TYPE_EXTENSION_PROPERTIES});
     xrEnumerateInstanceExtensionProperties(nullptr, count, &count, extensions.data());
-    const bool has_vulkan2 =
-        std::any_of(extensions.begin(), extensions.end(), [](const XrExtensionProperties& e) {
-            return std::strcmp(e.extensionName, XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) == 0;
-        });
-    if (!has_vulkan2) {
+    if (!offers(extensions, XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME)) {
         return Error{"the active OpenXR runtime does not support Vulkan (" +
                      std::string(XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) + " is missing)"};
     }
@@ -210,6 +221,10 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation) {
     if (!planned) return planned.error();
     impl->validation = std::move(planned.value());
     std::vector<const char*> enabled = {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME};
+    // Optional: without it the layer goes without depth and the runtime reprojects as it can.
+    impl->depth_extension =
+        layer_depth && offers(extensions, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
+    if (impl->depth_extension) enabled.push_back(XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
     for (const char* name : impl->validation.extensions()) enabled.push_back(name);
     XrInstanceCreateInfo create{XR_TYPE_INSTANCE_CREATE_INFO};
     std::strncpy(create.applicationInfo.applicationName, "monoplane",
@@ -382,8 +397,35 @@ Result<bool> OpenXrHeadset::Impl::create_actions() {
     return check("xrAttachSessionActionSets", xrAttachSessionActionSets(session, &attach));
 }
 
+Result<bool> OpenXrHeadset::Impl::create_swapchain(Swapchain& swapchain,
+                                                   XrSwapchainUsageFlags usage, std::int64_t format,
+                                                   vk::Extent2D extent) {
+    XrSwapchainCreateInfo info{XR_TYPE_SWAPCHAIN_CREATE_INFO};
+    info.usageFlags = usage;
+    info.format = format;
+    info.sampleCount = 1;
+    info.width = extent.width;
+    info.height = extent.height;
+    info.faceCount = 1;
+    info.arraySize = 1;
+    info.mipCount = 1;
+    Result<bool> ok =
+        check("xrCreateSwapchain", xrCreateSwapchain(session, &info, &swapchain.handle));
+    if (!ok) return ok;
+    std::uint32_t count = 0;
+    ok = check("xrEnumerateSwapchainImages",
+               xrEnumerateSwapchainImages(swapchain.handle, 0, &count, nullptr));
+    if (!ok) return ok;
+    swapchain.images.assign(count, {XR_TYPE_SWAPCHAIN_IMAGE_VULKAN2_KHR});
+    return check("xrEnumerateSwapchainImages",
+                 xrEnumerateSwapchainImages(
+                     swapchain.handle, count, &count,
+                     reinterpret_cast<XrSwapchainImageBaseHeader*>(swapchain.images.data())));
+}
+
 Result<bool> OpenXrHeadset::Impl::create_swapchains(const vk_core::Context& ctx, double scale,
-                                                    vk::Extent2D& extent, vk::Format& format) {
+                                                    vk::Extent2D& extent, vk::Format& format,
+                                                    vk::Format& depth_format) {
     std::uint32_t count = 0;
     Result<bool> ok =
         check("xrEnumerateViewConfigurationViews",
@@ -420,27 +462,36 @@ Result<bool> OpenXrHeadset::Impl::create_swapchains(const vk_core::Context& ctx,
     static_cast<void>(ctx);
 
     for (Swapchain& swapchain : swapchains) {
-        XrSwapchainCreateInfo info{XR_TYPE_SWAPCHAIN_CREATE_INFO};
         // Transfer usage: the eyes are blitted in, the mirror is blitted out.
-        info.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT |
-                          XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT | XR_SWAPCHAIN_USAGE_TRANSFER_SRC_BIT;
-        info.format = chosen;
-        info.sampleCount = 1;
-        info.width = extent.width;
-        info.height = extent.height;
-        info.faceCount = 1;
-        info.arraySize = 1;
-        info.mipCount = 1;
-        ok = check("xrCreateSwapchain", xrCreateSwapchain(session, &info, &swapchain.handle));
+        ok = create_swapchain(swapchain,
+                              XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT |
+                                  XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT |
+                                  XR_SWAPCHAIN_USAGE_TRANSFER_SRC_BIT,
+                              chosen, extent);
         if (!ok) return ok;
-        ok = check("xrEnumerateSwapchainImages",
-                   xrEnumerateSwapchainImages(swapchain.handle, 0, &count, nullptr));
-        if (!ok) return ok;
-        swapchain.images.assign(count, {XR_TYPE_SWAPCHAIN_IMAGE_VULKAN2_KHR});
-        ok = check("xrEnumerateSwapchainImages",
-                   xrEnumerateSwapchainImages(
-                       swapchain.handle, count, &count,
-                       reinterpret_cast<XrSwapchainImageBaseHeader*>(swapchain.images.data())));
+    }
+
+    // The eyes' depth, the same size as their colour (XR_KHR_composition_layer_depth pairs a
+    // view's depth sub-image with its colour one). The runtime lists colour and depth formats
+    // together; the first of eye_depth_formats() it offers is taken.
+    depth_format = vk::Format::eUndefined;
+    if (!depth_extension) return true;
+    for (vk::Format wanted : eye_depth_formats()) {
+        if (std::find(formats.begin(), formats.end(), static_cast<std::int64_t>(wanted)) !=
+            formats.end()) {
+            depth_format = wanted;
+            break;
+        }
+    }
+    if (depth_format == vk::Format::eUndefined) {
+        std::cerr << "note: the OpenXR runtime offers no depth swapchain format monoplane writes; "
+                     "the eyes' depth is not submitted\n";
+        return true;
+    }
+    for (Swapchain& swapchain : depth_swapchains) {
+        // Drawn as an attachment (eye_depth_writer.h) and nothing else.
+        ok = create_swapchain(swapchain, XR_SWAPCHAIN_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                              static_cast<std::int64_t>(depth_format), extent);
         if (!ok) return ok;
     }
     return true;
@@ -470,7 +521,8 @@ Result<bool> OpenXrHeadset::create_session(const vk_core::Context& ctx, double r
     if (!ok) return ok;
     ok = x.create_actions();
     if (!ok) return ok;
-    return x.create_swapchains(ctx, resolution_scale, eye_extent_, swapchain_format_);
+    return x.create_swapchains(ctx, resolution_scale, eye_extent_, swapchain_format_,
+                               depth_format_);
 }
 
 Result<bool> OpenXrHeadset::poll_events() {
@@ -567,36 +619,61 @@ Result<std::vector<ControlPress>> OpenXrHeadset::sync_controls() {
     return presses;
 }
 
-Result<vk::Image> OpenXrHeadset::acquire_eye_image(int eye) {
-    Impl& x = *impl_;
-    Impl::Swapchain& swapchain = x.swapchains[static_cast<std::size_t>(eye)];
+Result<vk::Image> OpenXrHeadset::Impl::acquire(Swapchain& swapchain) {
     std::uint32_t index = 0;
     XrSwapchainImageAcquireInfo acquire{XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
-    Result<bool> ok = x.check("xrAcquireSwapchainImage",
-                              xrAcquireSwapchainImage(swapchain.handle, &acquire, &index));
+    Result<bool> ok = check("xrAcquireSwapchainImage",
+                            xrAcquireSwapchainImage(swapchain.handle, &acquire, &index));
     if (!ok) return ok.error();
     XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
     wait.timeout = XR_INFINITE_DURATION;
-    ok = x.check("xrWaitSwapchainImage", xrWaitSwapchainImage(swapchain.handle, &wait));
+    ok = check("xrWaitSwapchainImage", xrWaitSwapchainImage(swapchain.handle, &wait));
     if (!ok) return ok.error();
     swapchain.acquired = true;
     return vk::Image(swapchain.images[index].image);
 }
 
-Result<bool> OpenXrHeadset::end_frame(const HeadsetFrame& frame) {
+Result<vk::Image> OpenXrHeadset::acquire_eye_image(int eye) {
+    return impl_->acquire(impl_->swapchains[static_cast<std::size_t>(eye)]);
+}
+
+Result<vk::Image> OpenXrHeadset::acquire_eye_depth_image(int eye) {
+    Impl::Swapchain& swapchain = impl_->depth_swapchains[static_cast<std::size_t>(eye)];
+    if (swapchain.handle == XR_NULL_HANDLE) return Error{"no depth swapchains in this session"};
+    return impl_->acquire(swapchain);
+}
+
+Result<bool> OpenXrHeadset::end_frame(const HeadsetFrame& frame,
+                                      const std::optional<DepthEncoding>& depth) {
     Impl& x = *impl_;
-    bool rendered = true;
-    for (Impl::Swapchain& swapchain : x.swapchains) {
-        if (!swapchain.acquired) {
-            rendered = false;
-            continue;
+    // Releases the acquired images of two swapchains; true if both were acquired.
+    const auto release = [&x](std::array<Impl::Swapchain, 2>& pair) -> Result<bool> {
+        bool both = true;
+        for (Impl::Swapchain& swapchain : pair) {
+            if (!swapchain.acquired) {
+                both = false;
+                continue;
+            }
+            XrSwapchainImageReleaseInfo info{XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
+            Result<bool> ok = x.check("xrReleaseSwapchainImage",
+                                      xrReleaseSwapchainImage(swapchain.handle, &info));
+            if (!ok) return ok;
+            swapchain.acquired = false;
         }
-        XrSwapchainImageReleaseInfo release{XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
-        Result<bool> ok =
-            x.check("xrReleaseSwapchainImage", xrReleaseSwapchainImage(swapchain.handle, &release));
-        if (!ok) return ok;
-        swapchain.acquired = false;
-    }
+        return both;
+    };
+    Result<bool> rendered = release(x.swapchains);
+    if (!rendered) return rendered;
+    Result<bool> depth_written = release(x.depth_swapchains);
+    if (!depth_written) return depth_written;
+    // XR_KHR_composition_layer_depth (XrCompositionLayerDepthInfoKHR): depth goes "to the next
+    // chain for all XrCompositionLayerProjectionView structures in the given layer", here with
+    // the colour's rectangle on the depth swapchain. minDepth and maxDepth are the window depths
+    // of the near and far planes, nearZ and farZ their distances, in (0, +inf] and unequal. The
+    // encoding d = near / distance puts infinity at window depth 0 and `near` at 1: minDepth 0
+    // with nearZ = +inf, maxDepth 1 with farZ = near (nearZ > farZ is reversed depth).
+    const bool with_depth = *depth_written && depth.has_value();
+    std::array<XrCompositionLayerDepthInfoKHR, 2> depth_infos{};
     std::array<XrCompositionLayerProjectionView, 2> views{};
     XrCompositionLayerProjection layer{XR_TYPE_COMPOSITION_LAYER_PROJECTION};
     const XrCompositionLayerBaseHeader* layers[] = {
@@ -608,6 +685,16 @@ Result<bool> OpenXrHeadset::end_frame(const HeadsetFrame& frame) {
         views[e].subImage.swapchain = x.swapchains[e].handle;
         views[e].subImage.imageRect.extent = {static_cast<std::int32_t>(eye_extent_.width),
                                               static_cast<std::int32_t>(eye_extent_.height)};
+        if (!with_depth) continue;
+        XrCompositionLayerDepthInfoKHR& info = depth_infos[e];
+        info = {XR_TYPE_COMPOSITION_LAYER_DEPTH_INFO_KHR};
+        info.subImage = views[e].subImage;
+        info.subImage.swapchain = x.depth_swapchains[e].handle;
+        info.minDepth = 0.0f;
+        info.maxDepth = 1.0f;
+        info.nearZ = std::numeric_limits<float>::infinity();
+        info.farZ = static_cast<float>(depth->near);
+        views[e].next = &info;
     }
     layer.space = x.local;
     layer.viewCount = 2;
@@ -616,7 +703,7 @@ Result<bool> OpenXrHeadset::end_frame(const HeadsetFrame& frame) {
     end.displayTime = frame.display_time_ns;
     end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
     // Nothing is submitted for a frame the runtime said not to render, or without tracking.
-    const bool submit = rendered && frame.should_render && x.views_located;
+    const bool submit = *rendered && frame.should_render && x.views_located;
     end.layerCount = submit ? 1 : 0;
     end.layers = submit ? layers : nullptr;
     return x.check("xrEndFrame", xrEndFrame(x.session, &end));
@@ -630,9 +717,11 @@ Result<bool> OpenXrHeadset::request_exit() {
 
 void OpenXrHeadset::destroy_session() {
     Impl& x = *impl_;
-    for (Impl::Swapchain& swapchain : x.swapchains) {
-        if (swapchain.handle != XR_NULL_HANDLE) xrDestroySwapchain(swapchain.handle);
-        swapchain = {};
+    for (auto* pair : {&x.swapchains, &x.depth_swapchains}) {
+        for (Impl::Swapchain& swapchain : *pair) {
+            if (swapchain.handle != XR_NULL_HANDLE) xrDestroySwapchain(swapchain.handle);
+            swapchain = {};
+        }
     }
     if (x.local != XR_NULL_HANDLE) xrDestroySpace(x.local);
     x.local = XR_NULL_HANDLE;

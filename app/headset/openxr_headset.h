@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,13 +60,22 @@ struct ControlPress {
     std::int64_t time_ns = 0;  // when the runtime saw the button go down (XrTime)
 };
 
+// How the eyes' depth images were written (app/headset/eye_depth_writer.h), for the projection
+// views' XrCompositionLayerDepthInfoKHR: reversed Z with the far plane at infinity, window depth
+// d = near / distance along the eye's axis, in [0, 1] (1 at `near`, 0 at infinity).
+struct DepthEncoding {
+    double near = 0.1;  // metres
+};
+
 class OpenXrHeadset {
   public:
     // Creates the XrInstance with XR_KHR_vulkan_enable2 and finds the HMD. Errors say what to do:
     // no runtime installed or active, no headset connected, no Vulkan support. With `validation`,
     // the OpenXR core validation layer watches every call (app/headset/xr_validation.h); it is
-    // an error if it is not installed.
-    static Result<std::unique_ptr<OpenXrHeadset>> create(bool validation = false);
+    // an error if it is not installed. With `layer_depth`, XR_KHR_composition_layer_depth is
+    // enabled when the runtime offers it (the eyes' depth is then submitted with their colour).
+    static Result<std::unique_ptr<OpenXrHeadset>> create(bool validation = false,
+                                                         bool layer_depth = true);
     ~OpenXrHeadset();
     OpenXrHeadset(const OpenXrHeadset&) = delete;
     OpenXrHeadset& operator=(const OpenXrHeadset&) = delete;
@@ -80,10 +90,14 @@ class OpenXrHeadset {
     vk_core::ContextCreationHooks vulkan_hooks();
 
     // Creates the session on the Context's device, the LOCAL space, the actions and one swapchain
-    // per eye at the runtime's recommended size times resolution_scale.
+    // per eye at the runtime's recommended size times resolution_scale; with the depth extension
+    // enabled, one depth swapchain per eye of the same size too (depth_format()).
     Result<bool> create_session(const vk_core::Context& ctx, double resolution_scale);
     vk::Extent2D eye_extent() const { return eye_extent_; }
     vk::Format swapchain_format() const { return swapchain_format_; }
+    // The eyes' depth swapchains' format (one of eye_depth_formats()), or eUndefined when no
+    // depth is submitted (extension not offered or not wanted, or no format in common).
+    vk::Format depth_format() const { return depth_format_; }
 
     // Handles queued events, beginning and ending the session as its state asks. Returns false
     // once the session is over (EXITING, LOSS_PENDING, or the instance is lost).
@@ -98,9 +112,15 @@ class OpenXrHeadset {
     // The eye's swapchain image for this frame, acquired and waited: it is in
     // COLOR_ATTACHMENT_OPTIMAL and must be left so. Only between begin_frame and end_frame.
     Result<vk::Image> acquire_eye_image(int eye);
+    // The eye's depth swapchain image for this frame (only with a depth_format()), acquired and
+    // waited: it is in DEPTH_STENCIL_ATTACHMENT_OPTIMAL and must be left so.
+    Result<vk::Image> acquire_eye_depth_image(int eye);
     // Releases the acquired images and submits the projection layer (none if nothing was
     // rendered). The images' writes must have completed (the caller waited for its queue).
-    Result<bool> end_frame(const HeadsetFrame& frame);
+    // With `depth` and both eyes' depth images acquired, each view carries its depth
+    // (XR_KHR_composition_layer_depth), else none does.
+    Result<bool> end_frame(const HeadsetFrame& frame,
+                           const std::optional<DepthEncoding>& depth = std::nullopt);
     // Asks the runtime to end the session (it answers with STOPPING).
     Result<bool> request_exit();
     // Destroys the swapchains and the session; call before the Vulkan device is destroyed.
@@ -115,6 +135,7 @@ class OpenXrHeadset {
     std::string system_name_;
     vk::Extent2D eye_extent_;
     vk::Format swapchain_format_ = vk::Format::eUndefined;
+    vk::Format depth_format_ = vk::Format::eUndefined;
     SessionPhase phase_ = SessionPhase::None;
     bool running_ = false;
 };

@@ -245,11 +245,18 @@ void ModeRenderer::decide_routing(const FrameInputs& inputs, passes::CullFrame& 
     // so its depth in front of the eyes is at least (R - |eye_xz|) cos(theta). Honoured only when
     // that is beyond m: C, starting at m - eps, then draws every pixel of it the eyes would have.
     if (routing.force_mono_outside_radius > 0.0f) {
+        // Measured from the head's forward axis, so a canted eye's turn counts: the widest
+        // corner ray of either eye, turned into the head frame.
         double cos_widest = 1.0;
-        for (const rig::Tangents& t : {inputs.views.left, inputs.views.right}) {
-            const double tan_x = std::max(std::abs(t.left), std::abs(t.right));
-            const double tan_y = std::max(std::abs(t.down), std::abs(t.up));
-            cos_widest = std::min(cos_widest, 1.0 / std::sqrt(1.0 + tan_x * tan_x + tan_y * tan_y));
+        for (int e : {rig::kLeft, rig::kRight}) {
+            const rig::Tangents& t = rig_->inputs.eyes[e];
+            const glm::dmat3 turn = rig::eye_rotation(rig_->inputs, e);
+            for (double tan_x : {t.left, t.right}) {
+                for (double tan_y : {t.down, t.up}) {
+                    const glm::dvec3 ray = turn * glm::dvec3(tan_x, tan_y, -1.0);
+                    cos_widest = std::min(cos_widest, -ray.z / glm::length(ray));
+                }
+            }
         }
         const double clearance = routing.force_mono_outside_radius -
                                  glm::length(glm::dvec2(head.x, head.z)) - 0.5 * inputs.views.ipd;
@@ -324,12 +331,22 @@ void ModeRenderer::build_frame_rig(const FrameInputs& inputs, FrameState& frame)
     rig_inputs.near = views.near;
     rig_inputs.far = views.far;
     rig_inputs.overlap_k = inputs.overlap_k;
+    rig_inputs.grazing_angle = inputs.grazing_angle;
+    rig_inputs.cant = views.cant;
     if (nearest_mono_plane_ > 0.0 && nearest_mono_plane_ <= inputs.mono_plane) {
         rig_inputs.nearest_mono_plane = nearest_mono_plane_;
     }
     rig_ = rig::build_rig(rig_inputs).value_or_throw();
     frame.use_mono = !rig_->mono_skipped;
     if (frame.use_mono && mode_ == Mode::kHybridFarfield) {
+        if (rig::is_canted(rig_inputs)) {
+            // papers/003's copy moves C's pixels by one constant offset per eye, which only eyes
+            // parallel to C allow; a canted eye needs the projective mapping of `hybrid`.
+            throw UserError(
+                "hybrid-farfield cannot render canted displays: its constant pixel-offset copy "
+                "needs eyes parallel to the far-field camera; use --mode hybrid, whose "
+                "plane-induced mapping handles canted eyes");
+        }
         frame.farfield =
             build_farfield_rig(rig_inputs.eyes, rig_inputs.eye_width, rig_inputs.eye_height,
                                views.ipd, inputs.mono_plane, views.far);
@@ -349,9 +366,9 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
     for (Eye eye : {Eye::kLeft, Eye::kRight}) {
         const int e = static_cast<int>(eye);
         const glm::dvec3 offset = eye_offset(eye, views.ipd);
+        // eye_view includes the eye's cant, as the rig's eye_from_head does.
         const glm::dmat4 view_proj =
-            use_mono ? rig_->eye_projection[e] * rig::view_matrix(views.head, offset)
-                     : eye_view_proj(views, eye);
+            use_mono ? rig_->eye_projection[e] * eye_view(views, eye) : eye_view_proj(views, eye);
         const double band = use_mono && !farfield ? inputs.view_blend_band : 0.0;
         update_view(*eyes_[e], frame.eye_jitter * view_proj, view_proj,
                     to_world(views.head, offset), inputs, mono_position, band,
@@ -371,10 +388,10 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
             mono_view_proj = rig_->mono_projection * rig::view_matrix(views.head, mono_in_head);
         }
         // The eyes' reversed-Z depth of m - eps (Sect. 4.4: z_m): a pyramid value above it
-        // means every eye pixel reading that part of C shows nearer content.
-        const glm::dvec4 plane = rig_->eye_projection[0] *
-                                 glm::dvec4(0.0, 0.0, -(inputs.mono_plane - rig_->overlap), 1.0);
-        const double threshold = plane.z / plane.w;
+        // means every eye pixel reading that part of C shows nearer content. A canted eye's
+        // depth of that plane varies over its field: the largest is the safe bound.
+        const double threshold =
+            rig::nearest_eye_depth_of_plane(*rig_, inputs.mono_plane - rig_->overlap);
         // The same jitter in C's pixels (Sect. 4.5).
         frame.mono_jitter =
             rig::jitter_matrix(frame.jitter_px, glm::dvec2(mono_->area.width, mono_->area.height));

@@ -61,8 +61,10 @@ struct RendererOptions {
 
 struct FrameInputs {
     StereoViewInputs views;
-    double mono_plane = 8.0;       // m, metres in front of the eyes (hybrid modes)
-    double overlap_k = 2.0;        // k of eq. 3
+    double mono_plane = 8.0;  // m, metres in front of the eyes (hybrid modes)
+    double overlap_k = 2.0;   // k of eq. 3
+    // Grazing surfaces down to this angle (radians) show no cutting line: rig::RigInputs.
+    double grazing_angle = 0.017453292519943295;
     double view_blend_band = 0.3;  // metres below m over which view vectors blend (Sect. 4.3)
     DebugView debug = DebugView::kNone;
     MonoCulling mono_culling = MonoCulling::kOcclusionCull;
@@ -76,6 +78,13 @@ struct FrameInputs {
 struct EyeFrameGeometry {
     glm::dmat4 view_proj{1.0};
     glm::dvec3 position{0.0};
+};
+
+// An eye's linear depth on the GPU after the last submitted frame, for commands recorded after
+// it (submit_frame's record_after): the image and the layout the frame's passes left it in.
+struct EyeDepthImage {
+    const vk_core::Image* image = nullptr;
+    vk::ImageLayout layout = vk::ImageLayout::eUndefined;
 };
 
 class ModeRenderer {
@@ -122,6 +131,13 @@ class ModeRenderer {
     // COLOR_ATTACHMENT_OPTIMAL without read_back, else TRANSFER_SRC_OPTIMAL. For a headset's
     // swapchain; the next frame overwrites it.
     const vk_core::Image& display_image(Eye eye) const;
+    // The last submitted frame's linear depth of the eye on the GPU (ForwardPass::
+    // kLinearDepthFormat, sampled usage): metres in front of the eyes' plane, in hybrid C's depth
+    // where the eye drew nothing near (the composite), MONOPLANE_SKY_LINEAR_DEPTH for the sky.
+    // Under MSAA the resolved (sample-averaged) image; under TAA this frame's jittered depth, the
+    // one the history resolve was fed. In record_after, or between frames; a command reading it
+    // must leave it in that layout, and the next frame overwrites it.
+    EyeDepthImage eye_linear_depth_image(Eye eye) const;
     // C's tone-mapped image, or nullptr when the last frame had none (stereo, or m >= f).
     const RgbaImage* mono_image() const;
     // Metres in front of the eyes' plane per pixel, MONOPLANE_SKY_LINEAR_DEPTH for the sky

@@ -2,6 +2,7 @@
 // calibrated frustum (from an HMD profile or, later, from OpenXR's xrLocateViews).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -15,10 +16,13 @@ namespace monoplane::modes {
 struct StereoViewInputs {
     rig::Pose head;
     double ipd = 0.064;
-    rig::Tangents left;
+    rig::Tangents left;  // each in its eye's own frame
     rig::Tangents right;
     double near = 0.1;  // DESIGN.md section 2: the paper's values
     double far = 1000.0;
+    // Canted displays (DESIGN.md section 4): each eye's yaw about the head's +y axis, radians,
+    // positive turning it left; [0] left, [1] right. Zero: parallel eyes.
+    std::array<double, 2> cant = {0.0, 0.0};
 };
 
 enum class Eye { kLeft = 0, kRight = 1 };
@@ -28,7 +32,9 @@ inline const char* eye_name(Eye eye) {
 
 // The eye's position in the head frame: x = -ipd/2 (left) or +ipd/2 (right).
 glm::dvec3 eye_offset(Eye eye, double ipd);
-// World -> clip (reversed Z) of one eye.
+// View matrix (eye-from-world) of one eye: the head pose, the eye's offset, its cant.
+glm::dmat4 eye_view(const StereoViewInputs& inputs, Eye eye);
+// World -> clip (reversed Z, near..far) of one eye.
 glm::dmat4 eye_view_proj(const StereoViewInputs& inputs, Eye eye);
 
 // An 8-bit RGBA image read back from the GPU, rows top to bottom, sRGB-encoded.

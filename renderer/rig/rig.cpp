@@ -20,6 +20,7 @@ namespace monoplane::rig {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kPi = 3.14159265358979323846;
 
 std::string number(double value) {
     std::ostringstream text;
@@ -37,14 +38,62 @@ double eye_x(const RigInputs& inputs, int eye) {
     return eye == kLeft ? -0.5 * inputs.ipd : 0.5 * inputs.ipd;
 }
 
+// A direction of eye e's field, (tan_x, tan_y, -1) in the eye's frame, in the head frame.
+glm::dvec3 ray_in_head(const RigInputs& in, int eye, double tan_x, double tan_y) {
+    return eye_rotation(in, eye) * glm::dvec3(tan_x, tan_y, -1.0);
+}
+
+// The four corner directions of eye e's field, head frame.
+std::array<glm::dvec3, 4> corner_rays(const RigInputs& in, int eye) {
+    const Tangents& t = in.eyes[eye];
+    return {ray_in_head(in, eye, t.left, t.down), ray_in_head(in, eye, t.right, t.down),
+            ray_in_head(in, eye, t.left, t.up), ray_in_head(in, eye, t.right, t.up)};
+}
+
 // s: the outer frustum planes of the eyes cross the z axis behind the eyes (eq. 1, z_C = -s).
-// The left eye's outer plane x = -d/2 + tan_left(L) dist meets x = 0 at dist = d / (2 tan_left(L))
-// (negative: behind the eyes), the right's at -d / (2 tan_right(R)); C takes the farther back, so
-// that both outer planes pass in front of it and its frustum can contain both eyes' fields.
+// The left eye's outer edge, direction r = R_L (tan_left, 0, -1) from x = -d/2, meets x = 0 at
+// z = (d/2) r_z / r_x (positive: behind the eyes); for a parallel eye that is d / (2 -tan_left).
+// The right's likewise at (d/2) r_z / -r_x. C takes the farther back, so that both outer planes
+// pass in front of it and its frustum can contain both eyes' fields.
 double offset_behind_eyes(const RigInputs& inputs) {
-    const double left_crossing_behind = inputs.ipd / (2.0 * -inputs.eyes[kLeft].left);
-    const double right_crossing_behind = inputs.ipd / (2.0 * inputs.eyes[kRight].right);
+    const glm::dvec3 left_edge = ray_in_head(inputs, kLeft, inputs.eyes[kLeft].left, 0.0);
+    const glm::dvec3 right_edge = ray_in_head(inputs, kRight, inputs.eyes[kRight].right, 0.0);
+    const double half_ipd = 0.5 * inputs.ipd;
+    const double left_crossing_behind = half_ipd * left_edge.z / left_edge.x;
+    const double right_crossing_behind = half_ipd * right_edge.z / -right_edge.x;
     return std::max(left_crossing_behind, right_crossing_behind);
+}
+
+// The problem with eye e's cant, if any: the bound on the angle, the field's reach from the head's
+// forward axis (the cross-section with the plane must stay bounded), and the outer edge, which
+// must still point outwards for C to sit behind the eyes.
+std::optional<std::string> cant_problem(const RigInputs& in, int eye) {
+    const std::string name = std::string("cant[") + eye_name(eye) + "]";
+    const double cant = in.cant[eye];
+    if (!std::isfinite(cant)) return name + " is not a finite number";
+    if (std::abs(cant) > kMaxCant) {
+        return name + " = " + number(cant * 180.0 / kPi) + " degrees exceeds the bound of " +
+               number(kMaxCant * 180.0 / kPi) + " degrees";
+    }
+    if (cant == 0.0) return std::nullopt;
+    const glm::dvec3 outer = eye == kLeft ? ray_in_head(in, eye, in.eyes[eye].left, 0.0)
+                                          : ray_in_head(in, eye, in.eyes[eye].right, 0.0);
+    if (eye == kLeft ? !(outer.x < 0.0) : !(outer.x > 0.0)) {
+        return std::string("the ") + eye_name(eye) + " eye is turned inwards by " +
+               number(std::abs(cant) * 180.0 / kPi) +
+               " degrees, past its outer field edge: its outer frustum plane no longer crosses "
+               "behind the eyes, so there is no place for C";
+    }
+    for (const glm::dvec3& r : corner_rays(in, eye)) {
+        const double reach = std::hypot(r.x, r.y) / -r.z;
+        if (!(r.z < 0.0) || reach > kMaxTangent) {
+            return std::string("the ") + eye_name(eye) + " eye's field, turned by " +
+                   number(cant * 180.0 / kPi) +
+                   " degrees, reaches beyond 84 degrees from the head's forward axis, where its "
+                   "cross-section with the mono plane is unbounded (DESIGN.md section 4)";
+        }
+    }
+    return std::nullopt;
 }
 
 // The first problem with the inputs, naming the input; nullopt when they are usable.
@@ -57,6 +106,7 @@ std::optional<Error> validate(const RigInputs& in) {
         {"far (f)", in.far},
         {"overlap_k (k)", in.overlap_k},
         {"nearest_mono_plane", in.nearest_mono_plane},
+        {"grazing_angle", in.grazing_angle},
     };
     for (const auto& [name, value] : scalars) {
         if (!std::isfinite(value)) return problem(std::string(name) + " is not a finite number");
@@ -89,6 +139,9 @@ std::optional<Error> validate(const RigInputs& in) {
             return problem(prefix + "tan_up = " + number(t.up) + " must be positive");
         }
     }
+    for (int eye : {kLeft, kRight}) {
+        if (std::optional<std::string> text = cant_problem(in, eye)) return problem(*text);
+    }
     if (in.eye_width < 1) {
         return problem("eye_width = " + std::to_string(in.eye_width) + " must be at least 1 pixel");
     }
@@ -106,6 +159,10 @@ std::optional<Error> validate(const RigInputs& in) {
         return problem("mono_plane (m) = " + number(in.mono_plane) +
                        " must be greater than near (n) = " + number(in.near) +
                        ": the eyes render the range n..m");
+    }
+    if (in.grazing_angle < 0.0 || in.grazing_angle >= 0.25 * kPi) {
+        return problem("grazing_angle = " + number(in.grazing_angle * 180.0 / kPi) +
+                       " degrees must lie in [0, 45): 0 keeps the paper's overlap k s m");
     }
     if (in.overlap_k < 0.0) {
         return problem("overlap_k (k) = " + number(in.overlap_k) + " must not be negative");
@@ -168,60 +225,114 @@ struct Cameras {
     glm::dvec2 mono_size{0.0};  // w_C, h_C (eq. 8)
 };
 
-Cameras compute_cameras(const RigInputs& in, double m) {
+// Eye e's projection for its near pass, n..m: for a parallel eye the standard reversed-Z one with
+// far = m. For a canted eye the far plane is made oblique so that it is the head's plane
+// z_head = -m: in the eye's frame that plane is n_e . p + m = 0 with n_e = R_e^T z (the head's z
+// axis seen from the eye), so the depth row k (n_e . p + m) puts NDC depth 0 exactly on it, and
+// k = n / (m - n n_e.z) keeps depth 1 at distance n on the eye's axis. Depth is still monotonic
+// along every ray (it is k n_e.r / -r_z + k m / (t -r_z) for p = t r), so the depth test and
+// perspective-correct interpolation work as before (an oblique clipping plane in the sense of
+// Lengyel 2005, here the far one).
+glm::dmat4 eye_near_pass_projection(const RigInputs& in, int eye, double m) {
+    glm::dmat4 p = projection_reversed_z(in.eyes[eye], in.near, m);
+    if (in.cant[eye] == 0.0) return p;
+    const glm::dvec3 n_e = glm::transpose(eye_rotation(in, eye)) * glm::dvec3(0.0, 0.0, 1.0);
+    const double k = in.near / (m - in.near * n_e.z);
+    p[0][2] = k * n_e.x;  // glm: p[column][row]
+    p[1][2] = k * n_e.y;
+    p[2][2] = k * n_e.z;
+    p[3][2] = k * m;
+    return p;
+}
+
+glm::dmat4 eye_from_head_matrix(const RigInputs& in, int eye) {
+    glm::dmat4 rotation(glm::transpose(eye_rotation(in, eye)));
+    return rotation * glm::translate(glm::dmat4(1.0), -glm::dvec3(eye_x(in, eye), 0.0, 0.0));
+}
+
+// C's frustum (eq. 2, geometric meaning per DESIGN.md 3): the slopes from C, at distance
+// m + s from the mono plane, to the outermost points of the eyes' cross-sections with the plane.
+// A cross-section is the quadrilateral of the eye's four corner rays met with z = -m; C's
+// frustum is a rectangle in its tangents, so containing the eight corners contains both
+// quadrilaterals. For a parallel eye the corner x + tan m and vertical tan m reproduce the
+// paper's rectangle, whose vertical tangents shrink by m / (m + s).
+Tangents mono_frustum(const RigInputs& in, double m, double s) {
+    const double from_mono = m + s;
+    Tangents ct{kInfinity, -kInfinity, kInfinity, -kInfinity};
+    for (int eye : {kLeft, kRight}) {
+        const double x = eye_x(in, eye);
+        for (const glm::dvec3& r : corner_rays(in, eye)) {
+            const double to_plane = m / -r.z;  // exactly m for a parallel eye (r.z = -1)
+            const double left_right = (x + r.x * to_plane) / from_mono;
+            const double down_up = r.y * to_plane / from_mono;
+            ct.left = std::min(ct.left, left_right);
+            ct.right = std::max(ct.right, left_right);
+            ct.down = std::min(ct.down, down_up);
+            ct.up = std::max(ct.up, down_up);
+        }
+    }
+    return ct;
+}
+
+// Eye e's pixels per unit of C's NDC along x and y, at C's NDC point (x, y) on the mono plane
+// (the diagonal of the homography's Jacobian).
+glm::dvec2 eye_pixels_per_mono_ndc(const RigInputs& in, const glm::dmat4& mono_to_eye, double x,
+                                   double y, double z) {
+    const glm::dvec4 h = mono_to_eye * glm::dvec4(x, y, z, 1.0);
+    const glm::dvec2 q = glm::dvec2(h) / h.w;
+    const glm::dvec2 d_dx = (glm::dvec2(mono_to_eye[0]) - q * mono_to_eye[0].w) / h.w;
+    const glm::dvec2 d_dy = (glm::dvec2(mono_to_eye[1]) - q * mono_to_eye[1].w) / h.w;
+    return glm::dvec2(std::abs(d_dx.x) * 0.5 * in.eye_width,
+                      std::abs(d_dy.y) * 0.5 * in.eye_height);
+}
+
+// C's cameras for mono plane m with overlap eps. C's frustum and pixel size do not depend on eps
+// (they are fixed by the plane), only its near plane does.
+Cameras compute_cameras_with_overlap(const RigInputs& in, double m, double overlap) {
     Cameras c;
     c.s = offset_behind_eyes(in);
     const double s = c.s;
     c.eye_positions = {glm::dvec3(eye_x(in, kLeft), 0.0, 0.0),
                        glm::dvec3(eye_x(in, kRight), 0.0, 0.0)};
     c.mono_position = glm::dvec3(0.0, 0.0, s);
-
-    // C's frustum (eq. 2, geometric meaning per DESIGN.md 3): the slopes from C, at distance
-    // m + s from the mono plane, to the outermost edges of the eyes' cross-sections with the plane.
-    // Vertically x_eye plays no part, so C's vertical tangents shrink by m / (m + s).
     const double from_mono = m + s;
-    Tangents& ct = c.mono_tangents;
-    ct.left = ct.right = ct.down = ct.up = 0.0;
-    for (int eye : {kLeft, kRight}) {
-        const Tangents& t = in.eyes[eye];
-        const double x = eye_x(in, eye);
-        const double left = (x + t.left * m) / from_mono;
-        const double right = (x + t.right * m) / from_mono;
-        const double down = t.down * m / from_mono;
-        const double up = t.up * m / from_mono;
-        if (eye == kLeft) {
-            ct = {left, right, down, up};
-        } else {
-            ct.left = std::min(ct.left, left);
-            ct.right = std::max(ct.right, right);
-            ct.down = std::min(ct.down, down);
-            ct.up = std::max(ct.up, up);
-        }
-    }
+    const Tangents& ct = c.mono_tangents = mono_frustum(in, m, s);
 
     // eq. 3 and eq. 4: C renders from eps in front of the mono plane to the far plane; the paper's
     // n_C = m - s_C - eps with s_C = z_C = -s is C's own distance, as here.
-    c.overlap = in.overlap_k * s * m;
+    c.overlap = overlap;
     c.mono_near = m - c.overlap + s;
     c.mono_far = in.far + s;
 
-    // eq. 5 in the head frame: all three cameras share the head's orientation, so V_E V_C^-1 is
-    // the translation by C's position as seen from the eye (p_C - p_E), and its inverse the
-    // reverse.
+    // eq. 5 in the head frame: C shares the head's orientation, so V_E V_C^-1 is the translation
+    // by C's position as seen from the eye (p_C - p_E) followed by the eye's rotation R_e^T, and
+    // its inverse the reverse. The parallel eyes' projection has an exact hand-written inverse.
     c.mono_projection = projection_reversed_z(ct, c.mono_near, c.mono_far);
     const glm::dmat4 mono_projection_inverse =
         inverse_projection_reversed_z(ct, c.mono_near, c.mono_far);
     for (int eye : {kLeft, kRight}) {
-        const Tangents& t = in.eyes[eye];
-        c.eye_projection[eye] = projection_reversed_z(t, in.near, m);
-        const glm::dmat4 eye_projection_inverse = inverse_projection_reversed_z(t, in.near, m);
-        const glm::dvec3 mono_in_eye_view = c.mono_position - c.eye_positions[eye];
-        c.mono_to_eye[eye] = c.eye_projection[eye] *
-                             glm::translate(glm::dmat4(1.0), mono_in_eye_view) *
-                             mono_projection_inverse;
-        c.eye_to_mono[eye] = c.mono_projection *
-                             glm::translate(glm::dmat4(1.0), -mono_in_eye_view) *
-                             eye_projection_inverse;
+        c.eye_projection[eye] = eye_near_pass_projection(in, eye, m);
+        const glm::dmat4 eye_projection_inverse =
+            in.cant[eye] == 0.0 ? inverse_projection_reversed_z(in.eyes[eye], in.near, m)
+                                : glm::inverse(c.eye_projection[eye]);
+        const glm::dmat4 eye_from_mono_view =
+            eye_from_head_matrix(in, eye) * glm::translate(glm::dmat4(1.0), c.mono_position);
+        const glm::dmat4 mono_view_from_eye = glm::translate(glm::dmat4(1.0), -c.mono_position) *
+                                              glm::inverse(eye_from_head_matrix(in, eye));
+        if (in.cant[eye] == 0.0) {
+            // Kept as the plain translation so that a parallel rig is bit-identical to before.
+            const glm::dvec3 mono_in_eye_view = c.mono_position - c.eye_positions[eye];
+            c.mono_to_eye[eye] = c.eye_projection[eye] *
+                                 glm::translate(glm::dmat4(1.0), mono_in_eye_view) *
+                                 mono_projection_inverse;
+            c.eye_to_mono[eye] = c.mono_projection *
+                                 glm::translate(glm::dmat4(1.0), -mono_in_eye_view) *
+                                 eye_projection_inverse;
+        } else {
+            c.mono_to_eye[eye] =
+                c.eye_projection[eye] * eye_from_mono_view * mono_projection_inverse;
+            c.eye_to_mono[eye] = c.mono_projection * mono_view_from_eye * eye_projection_inverse;
+        }
     }
 
     // eq. 6-8 with monoplane's one change (docs/rig.md): the quad Q lies on the mono plane, at C's
@@ -233,6 +344,25 @@ Cameras compute_cameras(const RigInputs& in, double m) {
     const double z = c.mono_plane_ndc_depth;
     c.mono_size = glm::dvec2(kInfinity);
     for (int eye : {kLeft, kRight}) {
+        if (in.cant[eye] != 0.0) {
+            // Projective: the eye's pixels per unit of C vary over the plane, and much: a plane
+            // camera's tangent-space pixels shrink in angle towards its wide edges, which a
+            // turned eye's field reaches (at 15 degrees of cant the Vive's eye needs 1.0 to
+            // 4.6 of its pixels per C pixel from one edge to the other). Eq. 8's rule, C's
+            // pixels nowhere smaller than the eye's, would then blur most of the far field, and
+            // its opposite would make C several times an eye's size. C instead matches the eye
+            // on the eye's own axis, where acuity and lens sharpness peak (docs/hybrid.md:
+            // finer towards one edge, coarser towards the other), the smaller of the two eyes.
+            const glm::dvec3 axis = ray_in_head(in, eye, 0.0, 0.0);
+            const glm::dvec3 on_plane = c.eye_positions[eye] + axis * (m / -axis.z);
+            const glm::dvec4 mono_clip =
+                c.mono_projection * glm::dvec4(on_plane - c.mono_position, 1.0);
+            const glm::dvec2 ndc = glm::dvec2(mono_clip) / mono_clip.w;
+            const glm::dvec2 on_axis =
+                eye_pixels_per_mono_ndc(in, c.mono_to_eye[eye], ndc.x, ndc.y, z);
+            c.mono_size = glm::min(c.mono_size, 2.0 * on_axis);
+            continue;
+        }
         auto to_eye_ndc = [&](double x, double y) {
             const glm::dvec4 clip = c.mono_to_eye[eye] * glm::dvec4(x, y, z, 1.0);
             return glm::dvec2(clip) / clip.w;  // the dehomogenisation the paper notes under eq. 8
@@ -245,6 +375,43 @@ Cameras compute_cameras(const RigInputs& in, double m) {
         c.mono_size = glm::min(c.mono_size, glm::dvec2(width, height));
     }
     return c;
+}
+
+// The overlap eps: the paper's k s m (eq. 3), or more where C's pixels are coarse. Near the
+// plane, the C texel an eye pixel reads sees its surface along a ray up to one texel, tau (m + s)
+// on the plane, beside the eye's. On a surface at angle theta to the rays that moves the hit by
+// tau (m + s) / tan(theta) in depth: if that exceeds eps, C's near plane has cut the surface
+// there and the eye shows what lies behind it (the cutting line on grazing surfaces,
+// docs/hybrid.md). eps therefore covers surfaces down to RigInputs::grazing_angle. It is capped
+// where C's extra near content would show beside near silhouettes: the eye and C rays through
+// one plane point part by (d/2) eps / m at m - eps, seen from there as
+// (d/2) eps / (m (m - eps)), which the cap keeps within one eye pixel (alpha_e): eps <=
+// alpha_e m^2 / (d/2 + alpha_e m). k = 0 means no overlap at all.
+double overlap_for(const RigInputs& in, double m, double s, const Cameras& provisional) {
+    if (in.overlap_k == 0.0) return 0.0;
+    const double paper = in.overlap_k * s * m;
+    if (!(in.grazing_angle > 0.0) || s == 0.0) return paper;
+    const Tangents& ct = provisional.mono_tangents;
+    const double texel = std::max((ct.right - ct.left) / provisional.mono_size.x,
+                                  (ct.up - ct.down) / provisional.mono_size.y);
+    const double footprint = texel * (m + s) / std::tan(in.grazing_angle);
+    double eye_pixel = kInfinity;
+    for (int eye : {kLeft, kRight}) {
+        const Tangents& t = in.eyes[eye];
+        eye_pixel = std::min(
+            {eye_pixel, (t.right - t.left) / in.eye_width, (t.up - t.down) / in.eye_height});
+    }
+    const double half_ipd = 0.5 * in.ipd;
+    const double ghost_cap = eye_pixel * m * m / (half_ipd + eye_pixel * m);
+    return std::max(paper, std::min(footprint, ghost_cap));
+}
+
+Cameras compute_cameras(const RigInputs& in, double m) {
+    const double s = offset_behind_eyes(in);
+    const Cameras provisional = compute_cameras_with_overlap(in, m, in.overlap_k * s * m);
+    const double overlap = overlap_for(in, m, s, provisional);
+    if (overlap == provisional.overlap) return provisional;
+    return compute_cameras_with_overlap(in, m, overlap);
 }
 
 // w_C of eq. 8 in closed form: the width of the union of the eyes' cross-sections at distance
@@ -292,7 +459,59 @@ PixelError error_with_growth(const Rig& rig, double growth) {
     return worst;
 }
 
+// The Fig. 2 offsets for canted eyes, where no closed form is at hand: for each direction
+// (tan_x, tan_y) of a 65 x 65 grid over each eye's field, the point at `depth` in front of the
+// eyes' plane along it (or its direction, at infinity), its central projection from C onto the
+// plane (what hybrid shows), and that point's pixel against the direction's own pixel.
+PixelError canted_error_at_depth(const Rig& rig, double depth) {
+    const RigInputs& in = rig.inputs;
+    const double m = in.mono_plane;
+    const glm::dvec3 c = rig.mono_position;
+    constexpr int kSamples = 65;
+    PixelError worst;
+    for (int eye : {kLeft, kRight}) {
+        const Tangents& t = in.eyes[eye];
+        const glm::dvec3 e = rig.eye_positions[eye];
+        for (int i = 0; i < kSamples; ++i) {
+            for (int j = 0; j < kSamples; ++j) {
+                const double tan_x = t.left + (t.right - t.left) * i / (kSamples - 1);
+                const double tan_y = t.down + (t.up - t.down) * j / (kSamples - 1);
+                const glm::dvec3 r = ray_in_head(in, eye, tan_x, tan_y);
+                glm::dvec3 on_plane;
+                if (std::isinf(depth)) {
+                    on_plane = c + r * ((m + c.z) / -r.z);
+                } else {
+                    const glm::dvec3 point = e + r * (depth / -r.z);
+                    on_plane = c + (point - c) * ((m + c.z) / (c.z - point.z));
+                }
+                const glm::dvec2 shown = eye_pixel_stereo(rig, eye, on_plane);
+                const glm::dvec2 true_pixel((tan_x - t.left) / (t.right - t.left) * in.eye_width,
+                                            (t.up - tan_y) / (t.up - t.down) * in.eye_height);
+                const glm::dvec2 offset = glm::abs(shown - true_pixel);
+                worst.horizontal_px = std::max(worst.horizontal_px, offset.x);
+                worst.vertical_px = std::max(worst.vertical_px, offset.y);
+                worst.euclidean_px = std::max(worst.euclidean_px, glm::length(offset));
+            }
+        }
+    }
+    return worst;
+}
+
 }  // namespace
+
+bool is_canted(const RigInputs& inputs) {
+    return inputs.cant[kLeft] != 0.0 || inputs.cant[kRight] != 0.0;
+}
+
+glm::dmat3 eye_rotation(const RigInputs& inputs, int eye) {
+    assert(eye == kLeft || eye == kRight);
+    const double a = inputs.cant[eye];
+    if (a == 0.0) return glm::dmat3(1.0);
+    // Ry(a), column-major: +a turns -z towards -x (left).
+    const double c = std::cos(a);
+    const double s = std::sin(a);
+    return glm::dmat3(glm::dvec3(c, 0.0, -s), glm::dvec3(0.0, 1.0, 0.0), glm::dvec3(s, 0.0, c));
+}
 
 Result<Rig> build_rig(const RigInputs& inputs) {
     if (std::optional<Error> problem = validate(inputs)) return *problem;
@@ -309,6 +528,7 @@ Result<Rig> build_rig(const RigInputs& inputs) {
         rig.eye_positions = {glm::dvec3(eye_x(inputs, kLeft), 0.0, 0.0),
                              glm::dvec3(eye_x(inputs, kRight), 0.0, 0.0)};
         for (int eye : {kLeft, kRight}) {
+            rig.eye_from_head[eye] = eye_from_head_matrix(inputs, eye);
             rig.eye_projection[eye] =
                 projection_reversed_z(inputs.eyes[eye], inputs.near, inputs.far);
             rig.mono_to_eye[eye] = glm::dmat4(1.0);
@@ -321,6 +541,7 @@ Result<Rig> build_rig(const RigInputs& inputs) {
     rig.overlap = cameras.overlap;
     rig.eye_positions = cameras.eye_positions;
     rig.mono_position = cameras.mono_position;
+    for (int eye : {kLeft, kRight}) rig.eye_from_head[eye] = eye_from_head_matrix(inputs, eye);
     rig.eye_projection = cameras.eye_projection;
     rig.mono_projection = cameras.mono_projection;
     rig.mono_to_eye = cameras.mono_to_eye;
@@ -346,13 +567,28 @@ Result<Rig> build_rig(const RigInputs& inputs) {
     const double nearest = inputs.nearest_mono_plane > 0.0 ? inputs.nearest_mono_plane : m;
     const glm::dvec2 nearest_size =
         nearest == m ? cameras.mono_size : compute_cameras(inputs, nearest).mono_size;
-    mono.allocated_width =
-        ceil_pixels(std::max(nearest_size.x, mono_width_closed_form(inputs, inputs.far)));
-    mono.allocated_height = ceil_pixels(nearest_size.y);
+    if (is_canted(inputs)) {
+        // No closed form for canted eyes: the largest size over 64 values of m evenly spaced in
+        // 1/m from the nearest to just before f, and never less than this m's own viewport (a
+        // selectable m between the samples may still need more; the renderer then grows C's
+        // image, as for any m below the allocation's).
+        glm::dvec2 largest = glm::max(nearest_size, cameras.mono_size);
+        for (int i = 1; i < 64; ++i) {
+            const double inverse = 1.0 / nearest + (1.0 / inputs.far - 1.0 / nearest) * i / 64.0;
+            largest = glm::max(largest, compute_cameras(inputs, 1.0 / inverse).mono_size);
+        }
+        mono.allocated_width = ceil_pixels(largest.x);
+        mono.allocated_height = ceil_pixels(largest.y);
+    } else {
+        mono.allocated_width =
+            ceil_pixels(std::max(nearest_size.x, mono_width_closed_form(inputs, inputs.far)));
+        mono.allocated_height = ceil_pixels(nearest_size.y);
+    }
     mono.uv_scale = glm::dvec2(mono.viewport_width, mono.viewport_height) /
                     glm::dvec2(mono.allocated_width, mono.allocated_height);
 
-    const PixelError limit = error_with_growth(rig, 1.0);
+    const PixelError limit =
+        is_canted(inputs) ? canted_error_at_depth(rig, kInfinity) : error_with_growth(rig, 1.0);
     rig.max_error_px = limit.horizontal_px;
     rig.max_error_px_2d = limit.euclidean_px;
     return rig;
@@ -362,6 +598,7 @@ PixelError error_at_depth(const Rig& rig, double depth) {
     assert(!std::isnan(depth));
     const double m = rig.inputs.mono_plane;
     if (rig.mono_skipped || !(depth > m)) return {};
+    if (is_canted(rig.inputs)) return canted_error_at_depth(rig, depth);
     const double s = rig.mono.offset_behind_eyes;
     const double growth = std::isinf(depth) ? 1.0 : (depth - m) / (depth + s);
     return error_with_growth(rig, growth);
@@ -369,7 +606,8 @@ PixelError error_at_depth(const Rig& rig, double depth) {
 
 glm::dvec2 eye_pixel_stereo(const Rig& rig, int eye, const glm::dvec3& point) {
     assert(eye == kLeft || eye == kRight);
-    const glm::dvec3 view = point - rig.eye_positions[eye];
+    const glm::dvec3 view =
+        glm::transpose(eye_rotation(rig.inputs, eye)) * (point - rig.eye_positions[eye]);
     assert(view.z < 0.0);
     const Tangents& t = rig.inputs.eyes[eye];
     const double tan_x = view.x / -view.z;
@@ -424,6 +662,22 @@ glm::dvec2 mono_velocity_to_eye(const Rig& rig, int eye) {
     const glm::dvec2 q10 = mapped(1.0, -1.0);
     const glm::dvec2 q01 = mapped(-1.0, 1.0);
     return 0.5 * glm::dvec2(q10.x - q00.x, q01.y - q00.y);
+}
+
+double nearest_eye_depth_of_plane(const Rig& rig, double distance) {
+    if (rig.mono_skipped) return 0.0;
+    double nearest = -kInfinity;
+    for (int eye : {kLeft, kRight}) {
+        // On a plane, an eye's view depth is affine, so over the convex cross-section its least
+        // distance (largest reversed-Z depth) is at a corner.
+        for (const glm::dvec3& r : corner_rays(rig.inputs, eye)) {
+            const glm::dvec3 point = rig.eye_positions[eye] + r * (distance / -r.z);
+            const glm::dvec4 clip =
+                rig.eye_projection[eye] * rig.eye_from_head[eye] * glm::dvec4(point, 1.0);
+            nearest = std::max(nearest, clip.z / clip.w);
+        }
+    }
+    return nearest;
 }
 
 }  // namespace monoplane::rig

@@ -128,9 +128,26 @@ string(JSON s GET "${json}" mono_camera offset_behind_eyes)
 string(JSON error GET "${json}" max_error_px)
 string(JSON error_2d GET "${json}" max_error_px_2d)
 string(JSON overlap GET "${json}" overlap)
+# The overlap covers surfaces down to 1 degree to the rays: one C texel on the plane,
+# (2.80 / 1422) * 8.023 m, over tan(1 degree) = 0.905 m (docs/hybrid.md); --grazing-deg 0 leaves
+# the paper's k s m = 2 * 0.02299 * 8 = 0.368 m.
 if(s LESS 0.0229 OR s GREATER 0.0231 OR error LESS 3.8 OR error GREATER 3.95
-   OR error_2d LESS error OR overlap LESS 0.36 OR overlap GREATER 0.37)
+   OR error_2d LESS error OR overlap LESS 0.89 OR overlap GREATER 0.92)
   message(FATAL_ERROR "rig: s ${s}, max_error_px ${error}, 2d ${error_2d}, overlap ${overlap}")
+endif()
+execute_process(COMMAND ${MONOPLANE} rig --hmd vive --mono-plane 8 --grazing-deg 0 --json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE log)
+string(JSON overlap GET "${json}" overlap)
+if(NOT rc EQUAL 0 OR overlap LESS 0.36 OR overlap GREATER 0.37)
+  message(FATAL_ERROR "rig --grazing-deg 0: overlap ${overlap} (${rc}): ${log}")
+endif()
+# A canted headset: the cants are reported, in degrees.
+execute_process(COMMAND ${MONOPLANE} rig --hmd canted-15 --mono-plane 8 --json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE log)
+string(JSON left_cant GET "${json}" eyes left_cant_deg)
+string(JSON right_cant GET "${json}" eyes right_cant_deg)
+if(NOT rc EQUAL 0 OR NOT left_cant EQUAL 15 OR NOT right_cant EQUAL -15)
+  message(FATAL_ERROR "rig --hmd canted-15: cants ${left_cant} ${right_cant} (${rc}): ${log}")
 endif()
 execute_process(COMMAND ${MONOPLANE} rig --hmd vive --fig2 ${OUT}/fig2 RESULT_VARIABLE rc
                 ERROR_VARIABLE log)

@@ -69,6 +69,9 @@ modes::FrameInputs square_inputs(double m, const rig::Pose& head = standing()) {
     inputs.views.left = kSquare;
     inputs.views.right = kSquare;
     inputs.mono_plane = m;
+    // The layouts here are placed around the paper's eps (square_overlap); the growth of eps for
+    // grazing surfaces is tested in hybrid_accuracy_test.
+    inputs.grazing_angle = 0.0;
     return inputs;
 }
 

@@ -7,7 +7,7 @@
 
 namespace monoplane::testing {
 
-// The profile's eyes (tangents) and IPD at `head`, with mono plane m (hybrid modes).
+// The profile's eyes (tangents, cant) and IPD at `head`, with mono plane m (hybrid modes).
 inline modes::FrameInputs profile_inputs(const hmd::HmdProfile& profile, const rig::Pose& head,
                                          double m = 8.0) {
     modes::FrameInputs inputs;
@@ -15,6 +15,7 @@ inline modes::FrameInputs profile_inputs(const hmd::HmdProfile& profile, const r
     inputs.views.ipd = profile.ipd;
     inputs.views.left = profile.left;
     inputs.views.right = profile.right;
+    inputs.views.cant = hmd::cant_radians(profile);
     inputs.mono_plane = m;
     return inputs;
 }

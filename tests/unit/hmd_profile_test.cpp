@@ -2,6 +2,8 @@
 // malformed profile is refused with a message that names the source and the offending key.
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -62,8 +64,8 @@ TEST(HmdProfile, ValidTextParses) {
 }
 
 TEST(HmdProfile, BuiltinNamesInOrder) {
-    EXPECT_EQ(builtin_hmd_names(),
-              (std::vector<std::string>{"vive", "vive-pro", "symmetric-90", "symmetric-110"}));
+    EXPECT_EQ(builtin_hmd_names(), (std::vector<std::string>{"vive", "vive-pro", "symmetric-90",
+                                                             "symmetric-110", "canted-15"}));
 }
 
 TEST(HmdProfile, EveryBuiltinLoads) {
@@ -183,7 +185,28 @@ TEST(HmdProfile, DirectoryIsRefused) {
 TEST(HmdProfile, ZeroCantIsAccepted) {
     const Result<HmdProfile> profile =
         parse_hmd_profile(mutated("[right]\n", "[right]\ncant_deg = 0\n"), "test.toml");
-    EXPECT_TRUE(profile.ok()) << profile.error().message;
+    ASSERT_TRUE(profile.ok()) << profile.error().message;
+    EXPECT_EQ(profile->cant_deg, (std::array<double, 2>{0.0, 0.0}));
+}
+
+TEST(HmdProfile, CantIsReadPerEyeAndReachesTheRigInRadians) {
+    const Result<HmdProfile> profile =
+        parse_hmd_profile(mutated("[right]\n", "[right]\ncant_deg = -2.5\n"), "test.toml");
+    ASSERT_TRUE(profile.ok()) << profile.error().message;
+    EXPECT_EQ(profile->cant_deg, (std::array<double, 2>{0.0, -2.5}));
+    const rig::RigInputs inputs = rig_inputs(*profile, 8.0);
+    EXPECT_DOUBLE_EQ(inputs.cant[rig::kRight], -2.5 * 3.14159265358979323846 / 180.0);
+    EXPECT_EQ(inputs.cant[rig::kLeft], 0.0);
+}
+
+TEST(HmdProfile, TheCantedBuiltinTurnsBothDisplaysOutwards) {
+    const Result<HmdProfile> canted = load_hmd_profile("canted-15");
+    const Result<HmdProfile> vive = load_hmd_profile("vive");
+    ASSERT_TRUE(canted.ok() && vive.ok());
+    EXPECT_EQ(canted->cant_deg, (std::array<double, 2>{15.0, -15.0}));
+    EXPECT_EQ(canted->left.left, vive->left.left);  // the Vive's frusta, turned
+    EXPECT_EQ(canted->right.up, vive->right.up);
+    EXPECT_TRUE(rig::build_rig(rig_inputs(*canted, 8.0)).ok());
 }
 
 TEST(HmdProfile, IntegerTangentsAreNumbers) {
@@ -228,7 +251,10 @@ TEST_P(MalformedProfile, IsRefusedNamingSourceAndKey) {
 
 const MalformedCase kMalformedCases[] = {
     // Missing keys, at the top level and inside an eye.
-    {"missing name", "name = \"test headset\"\n", "", {"test.toml: key 'name': required key is missing"}},
+    {"missing name",
+     "name = \"test headset\"\n",
+     "",
+     {"test.toml: key 'name': required key is missing"}},
     {"missing ipd", "ipd = 0.064\n", "", {"test.toml: key 'ipd': required key is missing"}},
     {"missing width", "width = 1344\n", "", {"test.toml: key 'width': required key is missing"}},
     {"missing tangent", "tan_up = 1.472458\n", "", {"test.toml:12:", "'right.tan_up'"}},
@@ -298,14 +324,11 @@ const MalformedCase kMalformedCases[] = {
      {"'right.tan_right'", "10"}},
     {"just beyond the bound", "tan_down = -1.468819", "tan_down = -10.01", {"'left.tan_down'"}},
     // Canted displays.
-    {"canted left eye",
+    {"cant beyond 45 degrees",
      "[left]\n",
-     "[left]\ncant_deg = 5\n",
-     {"test.toml:7:", "'left.cant_deg'", "canted displays are not supported yet by the rig"}},
-    {"canted right eye",
-     "[right]\n",
-     "[right]\ncant_deg = -2.5\n",
-     {"'right.cant_deg'", "canted displays are not supported yet by the rig"}},
+     "[left]\ncant_deg = 50\n",
+     {"test.toml:7:", "'left.cant_deg'", "must not exceed 45"}},
+    {"cant not finite", "[right]\n", "[right]\ncant_deg = nan\n", {"'right.cant_deg'"}},
     {"cant as a string", "[left]\n", "[left]\ncant_deg = \"5\"\n", {"'left.cant_deg'", "number"}},
     // TOML syntax errors: file, line, column and the parser's description.
     {"value missing", "width = 1344", "width = ", {"test.toml:3:", "TOML syntax error"}},

@@ -67,7 +67,9 @@ TEST(Rig, ViveOffsetBehindEyesIsTheFartherBackOuterPlaneCrossing) {
 TEST(Rig, ViveOverlapNearFarAndMonoTangents) {
     const double m = 8.0;
     const double s = 0.064 / (2.0 * 1.391937);
-    const Rig rig = built(vive_inputs(m));
+    RigInputs paper = vive_inputs(m);
+    paper.grazing_angle = 0.0;  // the paper's overlap alone
+    const Rig rig = built(paper);
     // eq. 3: eps = k s m with k = 2.
     EXPECT_NEAR(rig.overlap, 2.0 * s * m, 1e-15);
     // eq. 4 from C: near = m - eps + s, far = f + s.
@@ -256,6 +258,38 @@ TEST(Rig, ErrorAtDepthMatchesHybridMinusStereoPixels) {
         EXPECT_NEAR(worst_vertical, bound.vertical_px, 1e-9) << depth;
         EXPECT_NEAR(worst_euclidean, bound.euclidean_px, 1e-9) << depth;
     }
+}
+
+// The overlap for grazing surfaces (docs/hybrid.md, "surfaces almost parallel to the view
+// rays"): one of C's texels on the plane, tau (m + s), over tan(1 degree), capped where C's extra
+// near content would stray more than one eye pixel, alpha_e m^2 / (d/2 + alpha_e m).
+TEST(Rig, OverlapCoversGrazingSurfacesUpToTheGhostCap) {
+    const double s = 0.064 / (2.0 * 1.391937);
+    const double tan_1deg = std::tan(3.14159265358979323846 / 180.0);
+    // The finest eye pixel in tangent units: the Vive's right eye horizontally.
+    const double alpha_e = std::min({(1.247409 + 1.391937) / 1344, (1.398447 + 1.246557) / 1344,
+                                     (1.464287 + 1.468819) / 1512, (1.472458 + 1.465505) / 1512});
+    for (double m : {1.6, 8.0, 39.5}) {
+        SCOPED_TRACE(m);
+        const Rig rig = built(vive_inputs(m));
+        const Tangents& c = rig.mono.tangents;
+        const double texel =
+            std::max((c.right - c.left) / rig.mono.width, (c.up - c.down) / rig.mono.height);
+        const double footprint = texel * (m + s) / tan_1deg;
+        const double cap = alpha_e * m * m / (0.032 + alpha_e * m);
+        const double expected = std::max(2.0 * s * m, std::min(footprint, cap));
+        EXPECT_NEAR(rig.overlap, expected, 1e-12 * m);
+        EXPECT_NEAR(rig.mono.near, m - expected + s, 1e-12 * m);
+        EXPECT_GT(rig.overlap, 2.0 * s * m);  // the paper's eps would leave grazing cuts
+    }
+    // At m = 1.6 the cap binds (C would otherwise start where its near content shows), at 8 the
+    // footprint: about 0.9 m, against the paper's 0.37 m.
+    EXPECT_NEAR(built(vive_inputs(1.6)).overlap, alpha_e * 2.56 / (0.032 + alpha_e * 1.6), 1e-12);
+    EXPECT_NEAR(built(vive_inputs(8.0)).overlap, 0.905, 0.01);
+    // k = 0 switches every overlap off.
+    RigInputs none = vive_inputs(8.0);
+    none.overlap_k = 0.0;
+    EXPECT_EQ(built(none).overlap, 0.0);
 }
 
 TEST(Rig, ZeroIpdPutsCAtTheEyesWithoutError) {

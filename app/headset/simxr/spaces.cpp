@@ -263,7 +263,10 @@ XrResult XRAPI_CALL xrLocateViews(XrSession handle, const XrViewLocateInfo* info
     const rig::Pose local_to_space = inverse(*space_pose);
     for (int eye = 0; eye < 2; ++eye) {
         const double x = (eye == 0 ? -0.5 : 0.5) * hmd.ipd;
-        const rig::Pose eye_in_head{{x, 0.0, 0.0}, glm::dquat(1.0, 0.0, 0.0, 0.0)};
+        // A canted profile turns the view by its cant_deg about the head's +y (DESIGN.md
+        // section 4); XrFovf stays relative to the turned view, as the spec defines it.
+        const double cant = hmd::cant_radians(hmd)[eye];
+        const rig::Pose eye_in_head{{x, 0.0, 0.0}, glm::angleAxis(cant, glm::dvec3(0.0, 1.0, 0.0))};
         views[eye].pose = to_xr(compose(local_to_space, compose(head, eye_in_head)));
         views[eye].fov = fov_of(eye == 0 ? hmd.left : hmd.right);
     }

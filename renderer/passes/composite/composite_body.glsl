@@ -33,10 +33,12 @@ void main() {
     vec3 color = vec3(0.0);
     float depth = MONOPLANE_SKY_LINEAR_DEPTH;
     ivec2 mono_texel = ivec2(-1);
+    vec2 eye_ndc = in_uv * 2.0 - 1.0;
+    vec4 c = vec4(0.0, 0.0, 0.0, 1.0);
     if (mapping == kMapProjective) {
-        // The pixel's point on the mono plane: eye NDC with depth 0, the eye's far plane (m).
-        vec2 eye_ndc = in_uv * 2.0 - 1.0;
-        vec4 c = eye_to_mono * vec4(eye_ndc, 0.0, 1.0);
+        // The pixel's point on the mono plane: eye NDC with depth 0, the eye's far plane, which
+        // is the mono plane (for a canted eye an oblique one: renderer/rig/rig.h).
+        c = eye_to_mono * vec4(eye_ndc, 0.0, 1.0);
         vec2 uv = (c.xy / c.w * 0.5 + 0.5) * uv_limits.xy;
         // Keep the bilinear footprint inside C's viewport when it is a sub-range of the image.
         uv = clamp(uv, uv_limits.zw, uv_limits.xy - uv_limits.zw);
@@ -58,8 +60,19 @@ void main() {
     out_color = vec4(color, 1.0);
     out_linear_depth = depth;
 #ifdef MONOPLANE_WRITE_VELOCITY
-    // Eq. 9: v_{L,R} = 1/2 S v_C, C's velocity scaled into the eye's NDC, never interpolated.
+    // Eq. 9: v_{L,R} = 1/2 S v_C, C's velocity carried into the eye's NDC, never interpolated.
     vec2 mono_velocity_ndc = mono_texel.x >= 0 ? texelFetch(mono_velocity, mono_texel, 0).xy : vec2(0.0);
-    out_velocity = velocity_scale.xy * mono_velocity_ndc;
+    if (mapping == kMapProjective) {
+        // The general form of eq. 9: through the plane-induced homography, whose Jacobian is
+        // constant (1/2 S) only for eyes parallel to C. J maps eye NDC to C's NDC at this pixel,
+        // g(e) = (G e).xy / (G e).w with G = eye_to_mono at depth 0, so the eye's velocity is
+        // J^-1 v_C (for a canted eye the mapping is projective and J varies over the image).
+        vec2 g = c.xy / c.w;
+        mat2 eye_to_mono_jacobian = mat2(eye_to_mono[0].xy - g * eye_to_mono[0].w,
+                                         eye_to_mono[1].xy - g * eye_to_mono[1].w) / c.w;
+        out_velocity = inverse(eye_to_mono_jacobian) * mono_velocity_ndc;
+    } else {
+        out_velocity = velocity_scale.xy * mono_velocity_ndc;
+    }
 #endif
 }
