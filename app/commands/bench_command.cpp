@@ -11,6 +11,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <sstream>
 
 #include <unistd.h>
@@ -56,6 +57,7 @@ struct BenchOptions {
     std::string ssao = "off";
     std::string stereo_pass = "two";
     std::uint32_t vertex_work = 0;
+    double grazing_deg = 1.0;  // rig::RigInputs::grazing_angle, degrees
     bool depth_prepass = false;
     std::string out;
 };
@@ -326,6 +328,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     base.views.left = profile.left;
     base.views.right = profile.right;
     base.views.cant = hmd::cant_radians(profile);
+    base.grazing_angle = o.grazing_deg * std::numbers::pi / 180.0;
     const std::vector<Plane> planes = parse_planes(o, base.views.far);
     double nearest = base.views.far;
     for (const Plane& p : planes) nearest = std::min(nearest, p.metres);
@@ -560,6 +563,9 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
     cmd->add_flag("--depth-prepass", options->depth_prepass,
                   "A depth-only pass before every forward pass, the stereo reference's included "
                   "(each visible pixel shaded once; off by default, docs/benchmarks.md)");
+    cmd->add_option("--grazing-deg", options->grazing_deg,
+                    "Overlap for surfaces down to this angle to the view rays (0: eps = k s m)")
+        ->capture_default_str();
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->callback([options, &global] { run_bench(*options, global); });
 }

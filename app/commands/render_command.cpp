@@ -4,6 +4,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <numbers>
 #include <optional>
 
 #include "app/commands/ao_consistency.h"
@@ -32,6 +33,7 @@ struct RenderOptions {
     std::string stereo_pass;  // empty: the mode's (two for stereo and the hybrid modes)
     std::optional<double> mono_plane;
     double overlap_k = 2.0;
+    double grazing_deg = 1.0;  // rig::RigInputs::grazing_angle, degrees
     double blend_band = 0.3;
     std::string debug_view = "none";
     std::string mono_culling = "occlusion-cull";
@@ -258,6 +260,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     inputs.views.cant = hmd::cant_radians(profile);
     inputs.mono_plane = o.mono_plane.value_or(inputs.views.far);
     inputs.overlap_k = o.overlap_k;
+    inputs.grazing_angle = o.grazing_deg * std::numbers::pi / 180.0;
     inputs.view_blend_band = o.blend_band;
     inputs.debug = *debug_view;
     inputs.mono_culling = *mono_culling;
@@ -345,6 +348,9 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
     cmd->add_option("--mono-plane", options->mono_plane,
                     "Mono-plane distance m in metres (hybrid modes)");
     cmd->add_option("--k", options->overlap_k, "Overlap constant k of eq. 3: eps = k s m")
+        ->capture_default_str();
+    cmd->add_option("--grazing-deg", options->grazing_deg,
+                    "Overlap for surfaces down to this angle to the view rays (0: eps = k s m)")
         ->capture_default_str();
     cmd->add_option("--blend-band", options->blend_band,
                     "Metres below m over which the eyes' view vectors blend into C's (0: off)")
