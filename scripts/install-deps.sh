@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libsqlite3-dev
   libopenxr-dev libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation libglfw3-dev libimgui-dev xvfb xauth
   librsvg2-dev fonts-dejavu-core
+  libtinygltf-dev nlohmann-json3-dev libmeshoptimizer-dev assimp-testmodels
   python3 python3-pandas r-base-core r-cran-jsonlite r-cran-dbi r-cran-rsqlite
 )
 
