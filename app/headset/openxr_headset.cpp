@@ -184,6 +184,10 @@ struct OpenXrHeadset::Impl {
         if (XR_FAILED(result)) return xr_error(instance, call, result);
         return true;
     }
+    // xrCreateInstance with these extensions and the validation's layers, then its messenger.
+    Result<bool> create_instance(const std::vector<const char*>& extensions);
+    // The XR_KHR_vulkan_enable2 functions, from the instance.
+    Result<bool> load_vulkan_functions();
     Result<bool> create_actions();
     Result<bool> create_swapchains(const vk_core::Context& ctx, double scale, vk::Extent2D& extent,
                                    vk::Format& format, vk::Format& depth_format);
@@ -200,10 +204,12 @@ OpenXrHeadset::~OpenXrHeadset() {
     if (impl_->instance != XR_NULL_HANDLE) xrDestroyInstance(impl_->instance);
 }
 
-Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bool layer_depth) {
-    auto impl = std::make_unique<Impl>();
+namespace {
+
+// The runtime's instance extensions, or what to do when there is no runtime.
+Result<std::vector<XrExtensionProperties>> runtime_extensions() {
     std::uint32_t count = 0;
-    XrResult result = xrEnumerateInstanceExtensionProperties(nullptr, 0, &count, nullptr);
+    const XrResult result = xrEnumerateInstanceExtensionProperties(nullptr, 0, &count, nullptr);
     if (XR_FAILED(result)) {
         return Error{"no OpenXR runtime is available (" + result_text(XR_NULL_HANDLE, result) +
                      "): install and start one (SteamVR, Monado, Meta Quest Link) and make it "
@@ -212,20 +218,12 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bo
     }
     std::vector<XrExtensionProperties> extensions(count, {XR_TYPE_EXTENSION_PROPERTIES});
     xrEnumerateInstanceExtensionProperties(nullptr, count, &count, extensions.data());
-    if (!offers(extensions, XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME)) {
-        return Error{"the active OpenXR runtime does not support Vulkan (" +
-                     std::string(XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) + " is missing)"};
-    }
+    return extensions;
+}
 
-    Result<XrValidation> planned = XrValidation::plan(validation);
-    if (!planned) return planned.error();
-    impl->validation = std::move(planned.value());
-    std::vector<const char*> enabled = {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME};
-    // Optional: without it the layer goes without depth and the runtime reprojects as it can.
-    impl->depth_extension =
-        layer_depth && offers(extensions, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
-    if (impl->depth_extension) enabled.push_back(XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
-    for (const char* name : impl->validation.extensions()) enabled.push_back(name);
+}  // namespace
+
+Result<bool> OpenXrHeadset::Impl::create_instance(const std::vector<const char*>& extensions) {
     XrInstanceCreateInfo create{XR_TYPE_INSTANCE_CREATE_INFO};
     std::strncpy(create.applicationInfo.applicationName, "monoplane",
                  XR_MAX_APPLICATION_NAME_SIZE - 1);
@@ -233,28 +231,64 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bo
     std::strncpy(create.applicationInfo.engineName, "monoplane", XR_MAX_ENGINE_NAME_SIZE - 1);
     create.applicationInfo.engineVersion = 1;
     create.applicationInfo.apiVersion = XR_CURRENT_API_VERSION;
-    create.enabledExtensionCount = static_cast<std::uint32_t>(enabled.size());
-    create.enabledExtensionNames = enabled.data();
-    create.enabledApiLayerCount = static_cast<std::uint32_t>(impl->validation.layers().size());
-    create.enabledApiLayerNames = impl->validation.layers().data();
-    result = xrCreateInstance(&create, &impl->instance);
+    create.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+    create.enabledExtensionNames = extensions.data();
+    create.enabledApiLayerCount = static_cast<std::uint32_t>(validation.layers().size());
+    create.enabledApiLayerNames = validation.layers().data();
+    const XrResult result = xrCreateInstance(&create, &instance);
     if (XR_FAILED(result)) {
         return Error{"the OpenXR runtime refused to create an instance (" +
                      result_text(XR_NULL_HANDLE, result) + ")"};
     }
-    if (Result<bool> attached = impl->validation.attach(impl->instance); !attached) {
-        xrDestroyInstance(impl->instance);
-        impl->instance = XR_NULL_HANDLE;
+    if (Result<bool> attached = validation.attach(instance); !attached) {
+        xrDestroyInstance(instance);
+        instance = XR_NULL_HANDLE;
         return attached.error();
     }
+    return true;
+}
+
+Result<bool> OpenXrHeadset::Impl::load_vulkan_functions() {
+    const auto load = [&](const char* name, auto& function) {
+        return XR_SUCCEEDED(xrGetInstanceProcAddr(
+            instance, name, reinterpret_cast<PFN_xrVoidFunction*>(&function)));
+    };
+    if (!load("xrGetVulkanGraphicsRequirements2KHR", get_requirements) ||
+        !load("xrCreateVulkanInstanceKHR", create_vk_instance) ||
+        !load("xrGetVulkanGraphicsDevice2KHR", get_vk_device) ||
+        !load("xrCreateVulkanDeviceKHR", create_vk_device)) {
+        return Error{"the OpenXR runtime lacks the functions of XR_KHR_vulkan_enable2"};
+    }
+    return true;
+}
+
+Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bool layer_depth) {
+    auto impl = std::make_unique<Impl>();
+    Result<std::vector<XrExtensionProperties>> extensions = runtime_extensions();
+    if (!extensions) return extensions.error();
+    if (!offers(*extensions, XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME)) {
+        return Error{"the active OpenXR runtime does not support Vulkan (" +
+                     std::string(XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) + " is missing)"};
+    }
+    Result<XrValidation> planned = XrValidation::plan(validation);
+    if (!planned) return planned.error();
+    impl->validation = std::move(planned.value());
+    std::vector<const char*> enabled = {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME};
+    // Optional: without it the layer goes without depth and the runtime reprojects as it can.
+    impl->depth_extension =
+        layer_depth && offers(*extensions, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
+    if (impl->depth_extension) enabled.push_back(XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
+    for (const char* name : impl->validation.extensions()) enabled.push_back(name);
+    if (Result<bool> created = impl->create_instance(enabled); !created) return created.error();
+
     XrInstanceProperties properties{XR_TYPE_INSTANCE_PROPERTIES};
     xrGetInstanceProperties(impl->instance, &properties);
-
     XrSystemGetInfo system_info{XR_TYPE_SYSTEM_GET_INFO};
     system_info.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
-    result = xrGetSystem(impl->instance, &system_info, &impl->system);
+    const XrResult result = xrGetSystem(impl->instance, &system_info, &impl->system);
     if (XR_FAILED(result)) {
         const std::string why = result_text(impl->instance, result);
+        impl->validation.detach();
         xrDestroyInstance(impl->instance);
         impl->instance = XR_NULL_HANDLE;
         return Error{std::string("the OpenXR runtime '") + properties.runtimeName +
@@ -262,17 +296,7 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bo
     }
     XrSystemProperties system_properties{XR_TYPE_SYSTEM_PROPERTIES};
     xrGetSystemProperties(impl->instance, impl->system, &system_properties);
-
-    const auto load = [&](const char* name, auto& function) {
-        return XR_SUCCEEDED(xrGetInstanceProcAddr(
-            impl->instance, name, reinterpret_cast<PFN_xrVoidFunction*>(&function)));
-    };
-    if (!load("xrGetVulkanGraphicsRequirements2KHR", impl->get_requirements) ||
-        !load("xrCreateVulkanInstanceKHR", impl->create_vk_instance) ||
-        !load("xrGetVulkanGraphicsDevice2KHR", impl->get_vk_device) ||
-        !load("xrCreateVulkanDeviceKHR", impl->create_vk_device)) {
-        return Error{"the OpenXR runtime lacks the functions of XR_KHR_vulkan_enable2"};
-    }
+    if (Result<bool> loaded = impl->load_vulkan_functions(); !loaded) return loaded.error();
 
     std::unique_ptr<OpenXrHeadset> headset(new OpenXrHeadset(std::move(impl)));
     headset->runtime_name_ = std::string(properties.runtimeName) + " " +

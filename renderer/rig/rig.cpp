@@ -13,6 +13,7 @@
 #include <glm/ext/matrix_double3x4.hpp>
 #include <glm/ext/matrix_double4x3.hpp>
 #include <glm/ext/matrix_transform.hpp>
+#include <glm/ext/vector_int2.hpp>
 
 #include "renderer/rig/projection.h"
 
@@ -64,6 +65,32 @@ double offset_behind_eyes(const RigInputs& inputs) {
     return std::max(left_crossing_behind, right_crossing_behind);
 }
 
+// The problem with eye e's tangents, if any: finite, within kMaxTangent, XrFovf's signs.
+std::optional<std::string> tangent_problem(const Tangents& t, int eye) {
+    const std::string prefix = std::string("eyes[") + eye_name(eye) + "].";
+    const std::pair<const char*, double> sides[] = {
+        {"tan_left", t.left}, {"tan_right", t.right}, {"tan_down", t.down}, {"tan_up", t.up}};
+    for (const auto& [side, value] : sides) {
+        const std::string name = prefix + side;
+        if (!std::isfinite(value)) return name + " is not a finite number";
+        if (std::abs(value) > kMaxTangent) {
+            return name + " = " + number(value) + " exceeds the sane bound of " +
+                   number(kMaxTangent) + " (84 degrees from the view axis)";
+        }
+    }
+    if (!(t.left < 0.0)) {
+        return prefix + "tan_left = " + number(t.left) +
+               " must be negative (XrFovf convention: left of the view axis)";
+    }
+    if (!(t.right > 0.0)) return prefix + "tan_right = " + number(t.right) + " must be positive";
+    if (!(t.down < 0.0)) {
+        return prefix + "tan_down = " + number(t.down) +
+               " must be negative (XrFovf convention: +y is up)";
+    }
+    if (!(t.up > 0.0)) return prefix + "tan_up = " + number(t.up) + " must be positive";
+    return std::nullopt;
+}
+
 // The problem with eye e's cant, if any: the bound on the angle, the field's reach from the head's
 // forward axis (the cross-section with the plane must stay bounded), and the outer edge, which
 // must still point outwards for C to sit behind the eyes.
@@ -112,31 +139,8 @@ std::optional<Error> validate(const RigInputs& in) {
         if (!std::isfinite(value)) return problem(std::string(name) + " is not a finite number");
     }
     for (int eye : {kLeft, kRight}) {
-        const Tangents& t = in.eyes[eye];
-        const std::pair<const char*, double> sides[] = {
-            {"tan_left", t.left}, {"tan_right", t.right}, {"tan_down", t.down}, {"tan_up", t.up}};
-        for (const auto& [side, value] : sides) {
-            const std::string name = std::string("eyes[") + eye_name(eye) + "]." + side;
-            if (!std::isfinite(value)) return problem(name + " is not a finite number");
-            if (std::abs(value) > kMaxTangent) {
-                return problem(name + " = " + number(value) + " exceeds the sane bound of " +
-                               number(kMaxTangent) + " (84 degrees from the view axis)");
-            }
-        }
-        const std::string prefix = std::string("eyes[") + eye_name(eye) + "].";
-        if (!(t.left < 0.0)) {
-            return problem(prefix + "tan_left = " + number(t.left) +
-                           " must be negative (XrFovf convention: left of the view axis)");
-        }
-        if (!(t.right > 0.0)) {
-            return problem(prefix + "tan_right = " + number(t.right) + " must be positive");
-        }
-        if (!(t.down < 0.0)) {
-            return problem(prefix + "tan_down = " + number(t.down) +
-                           " must be negative (XrFovf convention: +y is up)");
-        }
-        if (!(t.up > 0.0)) {
-            return problem(prefix + "tan_up = " + number(t.up) + " must be positive");
+        if (std::optional<std::string> text = tangent_problem(in.eyes[eye], eye)) {
+            return problem(*text);
         }
     }
     for (int eye : {kLeft, kRight}) {
@@ -288,6 +292,67 @@ glm::dvec2 eye_pixels_per_mono_ndc(const RigInputs& in, const glm::dmat4& mono_t
 
 // C's cameras for mono plane m with overlap eps. C's frustum and pixel size do not depend on eps
 // (they are fixed by the plane), only its near plane does.
+// eq. 5 in the head frame for eye e: C shares the head's orientation, so V_E V_C^-1 is the
+// translation by C's position as seen from the eye (p_C - p_E) followed by the eye's rotation
+// R_e^T, and its inverse the reverse. Fills c.eye_projection, mono_to_eye and eye_to_mono.
+void map_mono_to_eye(const RigInputs& in, double m, int eye, Cameras& c) {
+    const glm::dmat4 mono_projection_inverse =
+        inverse_projection_reversed_z(c.mono_tangents, c.mono_near, c.mono_far);
+    c.eye_projection[eye] = eye_near_pass_projection(in, eye, m);
+    if (in.cant[eye] == 0.0) {
+        // The plain translation and the exact hand-written inverse, so that a parallel rig is
+        // bit-identical to the one before canted eyes existed.
+        const glm::dmat4 eye_projection_inverse =
+            inverse_projection_reversed_z(in.eyes[eye], in.near, m);
+        const glm::dvec3 mono_in_eye_view = c.mono_position - c.eye_positions[eye];
+        c.mono_to_eye[eye] = c.eye_projection[eye] *
+                             glm::translate(glm::dmat4(1.0), mono_in_eye_view) *
+                             mono_projection_inverse;
+        c.eye_to_mono[eye] = c.mono_projection *
+                             glm::translate(glm::dmat4(1.0), -mono_in_eye_view) *
+                             eye_projection_inverse;
+        return;
+    }
+    const glm::dmat4 eye_from_head = eye_from_head_matrix(in, eye);
+    const glm::dmat4 eye_from_mono_view =
+        eye_from_head * glm::translate(glm::dmat4(1.0), c.mono_position);
+    const glm::dmat4 mono_view_from_eye =
+        glm::translate(glm::dmat4(1.0), -c.mono_position) * glm::inverse(eye_from_head);
+    c.mono_to_eye[eye] = c.eye_projection[eye] * eye_from_mono_view * mono_projection_inverse;
+    c.eye_to_mono[eye] =
+        c.mono_projection * mono_view_from_eye * glm::inverse(c.eye_projection[eye]);
+}
+
+// w_C, h_C of eq. 8 as eye e would have them, before the smaller of the two eyes is taken. The
+// quad Q lies on the mono plane (C's NDC depth z), monoplane's one change (docs/rig.md).
+glm::dvec2 mono_size_for_eye(const RigInputs& in, double m, int eye, const Cameras& c, double z) {
+    if (in.cant[eye] != 0.0) {
+        // Projective: the eye's pixels per unit of C vary over the plane, and much: a plane
+        // camera's tangent-space pixels shrink in angle towards its wide edges, which a turned
+        // eye's field reaches (at 15 degrees of cant the Vive's eye needs 1.0 to 4.6 of its
+        // pixels per C pixel from one edge to the other). Eq. 8's rule, C's pixels nowhere
+        // smaller than the eye's, would then blur most of the far field, and its opposite would
+        // make C several times an eye's size. C instead matches the eye on the eye's own axis,
+        // where acuity and lens sharpness peak (docs/hybrid.md: finer towards one edge, coarser
+        // towards the other).
+        const glm::dvec3 axis = ray_in_head(in, eye, 0.0, 0.0);
+        const glm::dvec3 on_plane = c.eye_positions[eye] + axis * (m / -axis.z);
+        const glm::dvec4 mono_clip =
+            c.mono_projection * glm::dvec4(on_plane - c.mono_position, 1.0);
+        const glm::dvec2 ndc = glm::dvec2(mono_clip) / mono_clip.w;
+        return 2.0 * eye_pixels_per_mono_ndc(in, c.mono_to_eye[eye], ndc.x, ndc.y, z);
+    }
+    auto to_eye_ndc = [&](double x, double y) {
+        const glm::dvec4 clip = c.mono_to_eye[eye] * glm::dvec4(x, y, z, 1.0);
+        return glm::dvec2(clip) / clip.w;  // the dehomogenisation the paper notes under eq. 8
+    };
+    const glm::dvec2 q00 = to_eye_ndc(-1.0, -1.0);
+    const glm::dvec2 q10 = to_eye_ndc(+1.0, -1.0);
+    const glm::dvec2 q01 = to_eye_ndc(-1.0, +1.0);
+    return {0.5 * (q10.x - q00.x) * in.eye_width,
+            0.5 * (q01.y - q00.y) * in.eye_height};  // Vulkan y down: positive
+}
+
 Cameras compute_cameras_with_overlap(const RigInputs& in, double m, double overlap) {
     Cameras c;
     c.s = offset_behind_eyes(in);
@@ -295,84 +360,25 @@ Cameras compute_cameras_with_overlap(const RigInputs& in, double m, double overl
     c.eye_positions = {glm::dvec3(eye_x(in, kLeft), 0.0, 0.0),
                        glm::dvec3(eye_x(in, kRight), 0.0, 0.0)};
     c.mono_position = glm::dvec3(0.0, 0.0, s);
-    const double from_mono = m + s;
-    const Tangents& ct = c.mono_tangents = mono_frustum(in, m, s);
+    c.mono_tangents = mono_frustum(in, m, s);
 
     // eq. 3 and eq. 4: C renders from eps in front of the mono plane to the far plane; the paper's
     // n_C = m - s_C - eps with s_C = z_C = -s is C's own distance, as here.
     c.overlap = overlap;
     c.mono_near = m - c.overlap + s;
     c.mono_far = in.far + s;
+    c.mono_projection = projection_reversed_z(c.mono_tangents, c.mono_near, c.mono_far);
+    for (int eye : {kLeft, kRight}) map_mono_to_eye(in, m, eye, c);
 
-    // eq. 5 in the head frame: C shares the head's orientation, so V_E V_C^-1 is the translation
-    // by C's position as seen from the eye (p_C - p_E) followed by the eye's rotation R_e^T, and
-    // its inverse the reverse. The parallel eyes' projection has an exact hand-written inverse.
-    c.mono_projection = projection_reversed_z(ct, c.mono_near, c.mono_far);
-    const glm::dmat4 mono_projection_inverse =
-        inverse_projection_reversed_z(ct, c.mono_near, c.mono_far);
-    for (int eye : {kLeft, kRight}) {
-        c.eye_projection[eye] = eye_near_pass_projection(in, eye, m);
-        const glm::dmat4 eye_projection_inverse =
-            in.cant[eye] == 0.0 ? inverse_projection_reversed_z(in.eyes[eye], in.near, m)
-                                : glm::inverse(c.eye_projection[eye]);
-        const glm::dmat4 eye_from_mono_view =
-            eye_from_head_matrix(in, eye) * glm::translate(glm::dmat4(1.0), c.mono_position);
-        const glm::dmat4 mono_view_from_eye = glm::translate(glm::dmat4(1.0), -c.mono_position) *
-                                              glm::inverse(eye_from_head_matrix(in, eye));
-        if (in.cant[eye] == 0.0) {
-            // Kept as the plain translation so that a parallel rig is bit-identical to before.
-            const glm::dvec3 mono_in_eye_view = c.mono_position - c.eye_positions[eye];
-            c.mono_to_eye[eye] = c.eye_projection[eye] *
-                                 glm::translate(glm::dmat4(1.0), mono_in_eye_view) *
-                                 mono_projection_inverse;
-            c.eye_to_mono[eye] = c.mono_projection *
-                                 glm::translate(glm::dmat4(1.0), -mono_in_eye_view) *
-                                 eye_projection_inverse;
-        } else {
-            c.mono_to_eye[eye] =
-                c.eye_projection[eye] * eye_from_mono_view * mono_projection_inverse;
-            c.eye_to_mono[eye] = c.mono_projection * mono_view_from_eye * eye_projection_inverse;
-        }
-    }
-
-    // eq. 6-8 with monoplane's one change (docs/rig.md): the quad Q lies on the mono plane, at C's
-    // NDC depth of distance m + s, not on C's near plane. Only on the mono plane does a point of
-    // C's image land where the eye sees it, so only there do the pixel footprints of C and the eye
-    // meet (Sect. 4.2: "resolution should match at the transition").
-    const glm::dvec4 plane_clip = c.mono_projection * glm::dvec4(0.0, 0.0, -from_mono, 1.0);
+    // eq. 6-8: only on the mono plane does a point of C's image land where the eye sees it, so
+    // only there do the pixel footprints of C and the eye meet (Sect. 4.2: "resolution should
+    // match at the transition").
+    const glm::dvec4 plane_clip = c.mono_projection * glm::dvec4(0.0, 0.0, -(m + s), 1.0);
     c.mono_plane_ndc_depth = plane_clip.z / plane_clip.w;
-    const double z = c.mono_plane_ndc_depth;
     c.mono_size = glm::dvec2(kInfinity);
     for (int eye : {kLeft, kRight}) {
-        if (in.cant[eye] != 0.0) {
-            // Projective: the eye's pixels per unit of C vary over the plane, and much: a plane
-            // camera's tangent-space pixels shrink in angle towards its wide edges, which a
-            // turned eye's field reaches (at 15 degrees of cant the Vive's eye needs 1.0 to
-            // 4.6 of its pixels per C pixel from one edge to the other). Eq. 8's rule, C's
-            // pixels nowhere smaller than the eye's, would then blur most of the far field, and
-            // its opposite would make C several times an eye's size. C instead matches the eye
-            // on the eye's own axis, where acuity and lens sharpness peak (docs/hybrid.md:
-            // finer towards one edge, coarser towards the other), the smaller of the two eyes.
-            const glm::dvec3 axis = ray_in_head(in, eye, 0.0, 0.0);
-            const glm::dvec3 on_plane = c.eye_positions[eye] + axis * (m / -axis.z);
-            const glm::dvec4 mono_clip =
-                c.mono_projection * glm::dvec4(on_plane - c.mono_position, 1.0);
-            const glm::dvec2 ndc = glm::dvec2(mono_clip) / mono_clip.w;
-            const glm::dvec2 on_axis =
-                eye_pixels_per_mono_ndc(in, c.mono_to_eye[eye], ndc.x, ndc.y, z);
-            c.mono_size = glm::min(c.mono_size, 2.0 * on_axis);
-            continue;
-        }
-        auto to_eye_ndc = [&](double x, double y) {
-            const glm::dvec4 clip = c.mono_to_eye[eye] * glm::dvec4(x, y, z, 1.0);
-            return glm::dvec2(clip) / clip.w;  // the dehomogenisation the paper notes under eq. 8
-        };
-        const glm::dvec2 q00 = to_eye_ndc(-1.0, -1.0);
-        const glm::dvec2 q10 = to_eye_ndc(+1.0, -1.0);
-        const glm::dvec2 q01 = to_eye_ndc(-1.0, +1.0);
-        const double width = 0.5 * (q10.x - q00.x) * in.eye_width;
-        const double height = 0.5 * (q01.y - q00.y) * in.eye_height;  // Vulkan y down: positive
-        c.mono_size = glm::min(c.mono_size, glm::dvec2(width, height));
+        c.mono_size =
+            glm::min(c.mono_size, mono_size_for_eye(in, m, eye, c, c.mono_plane_ndc_depth));
     }
     return c;
 }
@@ -432,6 +438,32 @@ double mono_width_closed_form(const RigInputs& in, double m) {
 // 1344.0000000002 after the matrix products must allocate 1344 pixels, not 1345.
 int ceil_pixels(double size) {
     return static_cast<int>(std::ceil(size - 1e-9 * std::max(1.0, size)));
+}
+
+// W_C, H_C (Sect. 4.2): C's image is allocated once for the nearest selectable m. h_C does not
+// depend on m. For parallel eyes w_C is, as a function of 1/m, a convex function (a max of two
+// lines minus a min of two), so over every selectable m in [nearest, f) it peaks at one of the
+// two ends. For a normal headset (each outer edge belongs to the outer eye) that is the nearest m,
+// as the paper says; for strongly asymmetric frusta it can be the far end, which the second term
+// covers, so the uv sub-range never exceeds [0, 1]^2. Canted eyes have no closed form: the
+// largest size over 64 values of m evenly spaced in 1/m from the nearest to just before f, and
+// never less than this m's own (a selectable m between the samples may still need more; the
+// renderer then grows C's image, as for any m below the allocation's).
+glm::ivec2 mono_allocation(const RigInputs& inputs, const Cameras& cameras) {
+    const double m = inputs.mono_plane;
+    const double nearest = inputs.nearest_mono_plane > 0.0 ? inputs.nearest_mono_plane : m;
+    const glm::dvec2 nearest_size =
+        nearest == m ? cameras.mono_size : compute_cameras(inputs, nearest).mono_size;
+    if (!is_canted(inputs)) {
+        return {ceil_pixels(std::max(nearest_size.x, mono_width_closed_form(inputs, inputs.far))),
+                ceil_pixels(nearest_size.y)};
+    }
+    glm::dvec2 largest = glm::max(nearest_size, cameras.mono_size);
+    for (int i = 1; i < 64; ++i) {
+        const double inverse = 1.0 / nearest + (1.0 / inputs.far - 1.0 / nearest) * i / 64.0;
+        largest = glm::max(largest, compute_cameras(inputs, 1.0 / inverse).mono_size);
+    }
+    return {ceil_pixels(largest.x), ceil_pixels(largest.y)};
 }
 
 // The offsets of the Fig. 2 error at one depth: growth = (z - m) / (z + s), 1 in the limit.
@@ -558,32 +590,9 @@ Result<Rig> build_rig(const RigInputs& inputs) {
     mono.viewport_width = ceil_pixels(mono.width);
     mono.viewport_height = ceil_pixels(mono.height);
 
-    // W_C, H_C (Sect. 4.2): allocated once for the nearest selectable m. h_C does not depend on
-    // m. w_C is, as a function of 1/m, a convex function (a max of two lines minus a min of two),
-    // so over every selectable m in [nearest, f) it peaks at one of the two ends. For a normal
-    // headset (each outer edge belongs to the outer eye) that is the nearest m, as the paper says;
-    // for strongly asymmetric frusta it can be the far end, which the second term covers, so the
-    // uv sub-range never exceeds [0, 1]^2.
-    const double nearest = inputs.nearest_mono_plane > 0.0 ? inputs.nearest_mono_plane : m;
-    const glm::dvec2 nearest_size =
-        nearest == m ? cameras.mono_size : compute_cameras(inputs, nearest).mono_size;
-    if (is_canted(inputs)) {
-        // No closed form for canted eyes: the largest size over 64 values of m evenly spaced in
-        // 1/m from the nearest to just before f, and never less than this m's own viewport (a
-        // selectable m between the samples may still need more; the renderer then grows C's
-        // image, as for any m below the allocation's).
-        glm::dvec2 largest = glm::max(nearest_size, cameras.mono_size);
-        for (int i = 1; i < 64; ++i) {
-            const double inverse = 1.0 / nearest + (1.0 / inputs.far - 1.0 / nearest) * i / 64.0;
-            largest = glm::max(largest, compute_cameras(inputs, 1.0 / inverse).mono_size);
-        }
-        mono.allocated_width = ceil_pixels(largest.x);
-        mono.allocated_height = ceil_pixels(largest.y);
-    } else {
-        mono.allocated_width =
-            ceil_pixels(std::max(nearest_size.x, mono_width_closed_form(inputs, inputs.far)));
-        mono.allocated_height = ceil_pixels(nearest_size.y);
-    }
+    const glm::ivec2 allocation = mono_allocation(inputs, cameras);
+    mono.allocated_width = allocation.x;
+    mono.allocated_height = allocation.y;
     mono.uv_scale = glm::dvec2(mono.viewport_width, mono.viewport_height) /
                     glm::dvec2(mono.allocated_width, mono.allocated_height);
 
