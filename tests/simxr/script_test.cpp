@@ -140,6 +140,13 @@ path = "/user/hand/right/input/trigger/click"
 TEST(SimxrScript, RefusesBadRangesAndOrder) {
     EXPECT_NE(parse_error("display_rate_hz = 0").find("display_rate_hz"), std::string::npos);
     EXPECT_NE(parse_error("exit_after_s = -1").find("exit_after_s"), std::string::npos);
+    // Found by the fuzzer (tests/fuzz): 1e9 / rate ns and times in ns must fit the int64 clock.
+    EXPECT_NE(parse_error("display_rate_hz = 5e-324").find("display_rate_hz"), std::string::npos);
+    EXPECT_NE(parse_error("exit_after_s = 1e300").find("exit_after_s"), std::string::npos);
+    EXPECT_NE(parse_error("[[input]]\nt = 9e9\npath = \"/user/hand/left/input/menu/click\"\n"
+                          "duration = 9e9\n")
+                  .find("input[0].duration"),
+              std::string::npos);
     EXPECT_NE(parse_error("interaction_profile = \"/interaction_profiles/acme/stick\"")
                   .find("interaction_profile"),
               std::string::npos);

@@ -24,8 +24,14 @@ constexpr std::array<std::string_view, 11> kTopLevelKeys = {
     "input"};
 constexpr std::array<std::string_view, 3> kPoseKeys = {"t", "position", "yaw_pitch_roll_deg"};
 constexpr std::array<std::string_view, 3> kInputKeys = {"t", "path", "duration"};
-// Above this a frame period is shorter than any display and the rate is a typo (kHz for Hz).
+// Above this a frame period is shorter than any display and the rate is a typo (kHz for Hz);
+// below the minimum no display refreshes, and 1e9 / rate ns would leave the int64 clock.
+constexpr double kMinDisplayRateHz = 1.0;
 constexpr double kMaxDisplayRateHz = 1000.0;
+// Script times become int64 nanoseconds on the virtual clock (XrTime): beyond about 9.2e9 s they
+// do not fit, and sums of two (a press's start and duration) overflow sooner. A simulated session
+// lasts minutes; 1e6 s (11.6 days) keeps every sum far inside the range.
+constexpr double kMaxScriptTimeS = 1e6;
 
 // A key's value read from a scope; each reader reports a wrong type or range and returns nullopt.
 class Reader {
@@ -130,8 +136,8 @@ void read_hmd(const Reader& root, const std::filesystem::path& folder, Script& s
 void read_settings(const Reader& root, const std::filesystem::path& folder, Script& script) {
     read_hmd(root, folder, script);
     if (const auto rate = root.number("display_rate_hz")) {
-        if (*rate <= 0.0 || *rate > kMaxDisplayRateHz) {
-            root.problem("display_rate_hz", "must lie in (0, 1000] Hz");
+        if (*rate < kMinDisplayRateHz || *rate > kMaxDisplayRateHz) {
+            root.problem("display_rate_hz", "must lie in [1, 1000] Hz");
         } else {
             script.display_rate_hz = *rate;
         }
@@ -173,6 +179,8 @@ void read_settings(const Reader& root, const std::filesystem::path& folder, Scri
         if (const auto seconds = root.number(key)) {
             if (*seconds < 0.0) {
                 root.problem(key, "must be 0 (never) or a positive time in seconds");
+            } else if (*seconds > kMaxScriptTimeS) {
+                root.problem(key, "must be at most 1e6 s (the virtual clock counts nanoseconds)");
             } else {
                 script.*field = *seconds;
             }
@@ -206,6 +214,7 @@ void read_poses(const toml::table& root, TomlProblems& problems, Script& script)
         const auto t = reader.number("t");
         if (!t) continue;
         if (*t < 0.0) reader.problem("t", "must not be negative");
+        if (*t > kMaxScriptTimeS) reader.problem("t", "must be at most 1e6 s");
         if (!script.poses.empty() && *t <= script.poses.back().t) {
             reader.problem("t", "keyframes must be in ascending order of t");
         }
@@ -234,6 +243,7 @@ void read_inputs(const toml::table& root, TomlProblems& problems, Script& script
         const auto path = reader.string("path");
         if (!t || !path) continue;
         if (*t < 0.0) reader.problem("t", "must not be negative");
+        if (*t > kMaxScriptTimeS) reader.problem("t", "must be at most 1e6 s");
         press.t = *t;
         const Component* component = nullptr;
         for (const Component& c : profile->components) {
@@ -254,6 +264,8 @@ void read_inputs(const toml::table& root, TomlProblems& problems, Script& script
         if (const auto duration = reader.number("duration")) {
             if (*duration <= 0.0) {
                 reader.problem("duration", "must be positive (leave it out for one frame)");
+            } else if (*duration > kMaxScriptTimeS) {
+                reader.problem("duration", "must be at most 1e6 s");
             }
             press.duration = *duration;
         }
