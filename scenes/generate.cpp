@@ -1,6 +1,7 @@
 #include "scenes/generate.h"
 
 #include <array>
+#include <cassert>
 #include <utility>
 
 #include "scenes/beams.h"
@@ -38,6 +39,10 @@ Scene generate_scene(SceneId id, Detail detail, std::uint64_t seed) {
         case SceneId::Spheres:
             scene = generate_spheres(detail, seed);
             break;
+        case SceneId::Imported:
+            // Imported scenes come from scenes/gltf/load_gltf.h, which needs a file.
+            assert(false && "generate_scene() cannot make an imported scene");
+            break;
     }
     scene.name = std::string(scene_name(id));
     return scene;
@@ -51,6 +56,8 @@ std::optional<SceneId> parse_scene_id(std::string_view name) {
 }
 
 std::string_view scene_name(SceneId id) {
+    // Not in kSceneNames: parse_scene_id() must never offer a scene generate_scene() cannot make.
+    if (id == SceneId::Imported) return "imported";
     for (const auto& [known, text] : kSceneNames) {
         if (known == id) return text;
     }

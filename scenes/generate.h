@@ -17,13 +17,15 @@ inline constexpr std::uint64_t kDefaultSeed = 1;
 // second, Ultra several. The same arguments give the same bytes (geometry_hash) on every run with
 // the same build; other compilers and C libraries give the same scene up to the last bits of a
 // few sin/cos/pow results (the random numbers themselves are identical everywhere).
+// id may not be SceneId::Imported (imported scenes come from scenes/gltf/load_gltf.h).
 Scene generate_scene(SceneId id, Detail detail, std::uint64_t seed = kDefaultSeed);
 
-// A 64-bit hash of the vertices, indices, chunks and viewpoints, for determinism checks and for
-// tagging results with the exact geometry they were measured on.
+// A 64-bit hash of the vertices, indices, chunks, texture coordinates and viewpoints (not the
+// texels), for determinism checks and for tagging results with the exact geometry they were
+// measured on.
 std::uint64_t geometry_hash(const Scene& scene);
 
-// "beams", "landscape", "spheres".
+// "beams", "landscape", "spheres" (scene_name also gives "imported", which does not parse back).
 std::optional<SceneId> parse_scene_id(std::string_view name);
 std::string_view scene_name(SceneId id);
 // "test", "low", "medium", "high", "ultra".

@@ -8,13 +8,15 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "renderer/rig/pose.h"
 
 namespace monoplane::scenes {
 
-enum class SceneId { Beams, Landscape, Spheres };
+// Imported: read from a file (scenes/gltf/load_gltf.h); generate_scene() cannot make one.
+enum class SceneId { Beams, Landscape, Spheres, Imported };
 
 // test: a few ten thousand triangles (unit and GPU tests); low/medium: interactive on llvmpipe;
 // high/ultra: benchmarks on a GPU, millions of triangles.
@@ -72,6 +74,26 @@ struct Chunk {
     std::int32_t vertex_offset = 0;
     Aabb bounds;
     std::uint32_t flags = kChunkNone;
+    // Index into Scene::textures of the base-colour texture every triangle of the chunk uses, or
+    // -1 for none: a chunk never mixes textures, so one draw binds one texture.
+    std::int32_t texture = -1;
+};
+
+// How texture coordinates outside [0, 1] fold back (the glTF sampler's wrapS / wrapT).
+enum class TextureWrap : std::uint8_t { Repeat, ClampToEdge, MirroredRepeat };
+
+// A decoded base-colour image of an imported scene. The renderer does not sample textures yet:
+// the importer also bakes the texture's colour at each vertex into Vertex::albedo_rgba8, so
+// textured scenes look roughly right today, and these fields keep what a sampler would need.
+struct SceneTexture {
+    std::string name;  // the glTF image's name or file, for messages
+    std::uint32_t width = 0;
+    std::uint32_t height = 0;
+    // width * height RGBA8 texels, colour sRGB-encoded (sample through an _SRGB format), alpha
+    // linear; row 0 is the top of the image, where texture coordinate v = 0 (glTF's convention).
+    std::vector<std::uint8_t> rgba8_srgb;
+    TextureWrap wrap_u = TextureWrap::Repeat;
+    TextureWrap wrap_v = TextureWrap::Repeat;
 };
 
 struct Viewpoint {
@@ -93,12 +115,16 @@ struct Lighting {
 
 struct Scene {
     SceneId id = SceneId::Spheres;
-    std::string name;  // "beams", "landscape", "spheres"
+    std::string name;  // "beams", "landscape", "spheres"; an imported scene's file stem
     Detail detail = Detail::Test;
     std::uint64_t seed = 0;
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;  // chunk-relative: add Chunk::vertex_offset
     std::vector<Chunk> chunks;
+    // Base-colour texture coordinates parallel to vertices, or empty when no chunk has a texture
+    // (procedural scenes never have one); (0, 0) at the vertices of untextured chunks.
+    std::vector<glm::vec2> texcoords;
+    std::vector<SceneTexture> textures;  // what Chunk::texture indexes
     Aabb bounds;
     std::vector<Viewpoint> viewpoints;  // the first is "default"
     Lighting lighting;

@@ -53,6 +53,11 @@ std::uint64_t geometry_hash(const Scene& scene) {
         hasher.value(chunk.bounds.min);
         hasher.value(chunk.bounds.max);
         hasher.value(chunk.flags);
+        // Only imported scenes have textures: procedural hashes stay what they always were.
+        if (!scene.textures.empty()) hasher.value(chunk.texture);
+    }
+    if (!scene.texcoords.empty()) {
+        hasher.bytes(scene.texcoords.data(), scene.texcoords.size() * sizeof(glm::vec2));
     }
     for (const Viewpoint& viewpoint : scene.viewpoints) {
         hasher.bytes(viewpoint.name.data(), viewpoint.name.size());

@@ -22,6 +22,7 @@
 #include "app/commands/frame_summary.h"
 #include "app/commands/image_quality_options.h"
 #include "app/commands/output_directory.h"
+#include "app/commands/scene_source.h"
 #include "app/commands/validation_report.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
@@ -284,11 +285,11 @@ Accuracy measure_accuracy(modes::ModeRenderer& renderer, const modes::FrameInput
 }
 
 void run_bench(const BenchOptions& o, const GlobalOptions& global) {
-    std::vector<scenes::SceneId> scene_ids;
+    std::vector<SceneSource> scene_sources;
     for (const std::string& name : split_list(o.scenes)) {
-        const auto id = scenes::parse_scene_id(name);
-        if (!id) throw UserError("--scenes: '" + name + "' is not beams, landscape or spheres");
-        scene_ids.push_back(*id);
+        Result<SceneSource> source = parse_scene_source(name);
+        if (!source) throw UserError("--scenes: '" + name + "': " + source.error().message);
+        scene_sources.push_back(std::move(source).value());
     }
     std::vector<modes::RenderModeChoice> mode_list;
     for (const std::string& name : split_list(o.modes)) {
@@ -316,7 +317,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     const auto detail = scenes::parse_detail(o.detail);
     if (!detail) throw UserError("--detail " + o.detail + ": use test, low, medium, high or ultra");
     if ((o.width > 0) != (o.height > 0)) throw UserError("--width and --height go together");
-    if (scene_ids.empty() || mode_list.empty()) throw UserError("nothing to measure");
+    if (scene_sources.empty() || mode_list.empty()) throw UserError("nothing to measure");
 
     const std::filesystem::path out = prepare_output_directory("--out", o.out);
 
@@ -356,7 +357,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
             total += static_cast<int>(planes.size() * variants.size());
         if (choice.mode == modes::Mode::kHybridFarfield) total += static_cast<int>(planes.size());
     }
-    total *= static_cast<int>(scene_ids.size());
+    total *= static_cast<int>(scene_sources.size());
     Progress progress(total);
     int done = 0;
 
@@ -375,10 +376,10 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     report.warmup = o.warmup;
     report.frames = o.frames;
 
-    for (scenes::SceneId id : scene_ids) {
-        const std::string scene_name(scenes::scene_name(id));
-        progress.show(done, "generating " + scene_name);
-        const scenes::Scene scene = scenes::generate_scene(id, *detail, o.seed);
+    for (const SceneSource& source : scene_sources) {
+        progress.show(done, (source.builtin ? "generating " : "loading ") + source.label);
+        const scenes::Scene scene = load_scene(source, *detail, o.seed).value_or_throw();
+        const std::string scene_name = source.builtin ? source.label : scene.name;
         const scenes::Viewpoint* viewpoint = scene.find_viewpoint(o.view);
         if (!viewpoint)
             throw UserError("--view " + o.view + ": " + scene_name + " has no such view");

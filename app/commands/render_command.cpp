@@ -13,6 +13,7 @@
 #include "app/commands/frame_summary.h"
 #include "app/commands/image_quality_options.h"
 #include "app/commands/output_directory.h"
+#include "app/commands/scene_source.h"
 #include "app/commands/stereo_comparison.h"
 #include "app/commands/validation_report.h"
 #include "app/png.h"
@@ -198,9 +199,10 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         throw UserError("--debug-view " + o.debug_view +
                         ": use none, tint-mono, stereo-only, mono-only or routing");
     }
-    const auto scene_id = scenes::parse_scene_id(o.scene);
-    if (!scene_id)
-        throw UserError("--scene " + o.scene + ": unknown; use beams, landscape or spheres");
+    Result<SceneSource> scene_source = parse_scene_source(o.scene);
+    if (!scene_source) {
+        throw UserError("--scene " + o.scene + ": " + scene_source.error().message);
+    }
     const auto detail = scenes::parse_detail(o.detail);
     if (!detail)
         throw UserError("--detail " + o.detail + ": unknown; use test, low, medium, high or ultra");
@@ -236,9 +238,13 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
 
     auto ctx = vk_core::Context::create(global.context_options()).value_or_throw();
     std::cerr << "device: " << ctx->device_info().name << "\n";
-    std::cerr << "generating " << o.scene << " (detail " << o.detail << ", seed " << o.seed
-              << ")\n";
-    const scenes::Scene scene = scenes::generate_scene(*scene_id, *detail, o.seed);
+    if (scene_source->builtin) {
+        std::cerr << "generating " << o.scene << " (detail " << o.detail << ", seed " << o.seed
+                  << ")\n";
+    } else {
+        std::cerr << "loading " << o.scene << "\n";
+    }
+    const scenes::Scene scene = load_scene(*scene_source, *detail, o.seed).value_or_throw();
     const scenes::Viewpoint* viewpoint = scene.find_viewpoint(o.view);
     if (!viewpoint) {
         std::vector<std::string> names;

@@ -1,0 +1,187 @@
+#include "scenes/gltf/chunk_assembly.h"
+
+#include <algorithm>
+#include <cassert>
+#include <limits>
+#include <vector>
+
+#include <meshoptimizer.h>
+
+#include "scenes/chunk_builder.h"
+
+namespace monoplane::scenes::gltf {
+namespace {
+
+// A triangle to place: its centre (the split key) and its number in ImportedGeometry order.
+struct TriangleRef {
+    glm::vec3 centre;
+    std::uint32_t triangle;
+};
+
+// Splits refs[begin, end) at the median along the longest axis of their centres until each part
+// has at most `target` triangles; appends the parts' [begin, end) to cells.
+void split(std::vector<TriangleRef>& refs, std::size_t begin, std::size_t end, std::uint32_t target,
+           std::vector<std::pair<std::size_t, std::size_t>>& cells) {
+    if (end - begin <= target) {
+        cells.emplace_back(begin, end);
+        return;
+    }
+    glm::vec3 low(std::numeric_limits<float>::max());
+    glm::vec3 high(std::numeric_limits<float>::lowest());
+    for (std::size_t i = begin; i < end; ++i) {
+        low = glm::min(low, refs[i].centre);
+        high = glm::max(high, refs[i].centre);
+    }
+    const glm::vec3 extent = high - low;
+    const int axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const std::size_t middle = begin + (end - begin) / 2;
+    // The triangle number breaks ties, so the order is total and each side's set of triangles
+    // is the same with every standard library (nth_element leaves the order within a side open;
+    // chunks sort their triangles afterwards).
+    std::nth_element(refs.begin() + static_cast<std::ptrdiff_t>(begin),
+                     refs.begin() + static_cast<std::ptrdiff_t>(middle),
+                     refs.begin() + static_cast<std::ptrdiff_t>(end),
+                     [axis](const TriangleRef& a, const TriangleRef& b) {
+                         return a.centre[axis] < b.centre[axis] ||
+                                (a.centre[axis] == b.centre[axis] && a.triangle < b.triangle);
+                     });
+    split(refs, begin, middle, target, cells);
+    split(refs, middle, end, target, cells);
+}
+
+// Per-chunk scratch: which chunk last used each global vertex, and where.
+class ChunkWriter {
+  public:
+    ChunkWriter(const ImportedGeometry& geometry, const std::vector<std::uint32_t>& corners,
+                bool textured, Scene& scene)
+        : geometry_(geometry),
+          corners_(corners),
+          textured_(textured),
+          scene_(scene),
+          stamp_(geometry.vertices.size(), 0u),
+          local_(geometry.vertices.size(), 0u) {}
+
+    void write(std::vector<std::uint32_t>& triangles, std::int32_t texture) {
+        std::sort(triangles.begin(), triangles.end());
+        // Chunk-local indices in first-use order, then the GPU-friendly triangle order.
+        ++chunk_;
+        globals_.clear();
+        indices_.clear();
+        for (const std::uint32_t t : triangles) {
+            for (std::uint32_t k = 0; k < 3; ++k)
+                indices_.push_back(local_index(corners_[3 * t + k]));
+        }
+        optimized_.resize(indices_.size());
+        meshopt_optimizeVertexCache(optimized_.data(), indices_.data(), indices_.size(),
+                                    globals_.size());
+        // Vertices in the order the optimised triangles first use them (what
+        // meshopt_optimizeVertexFetch would do), so the GPU reads them nearly in sequence.
+        ++chunk_;
+        const std::vector<std::uint32_t> by_first_use = globals_;
+        globals_.clear();
+        Chunk chunk;
+        chunk.first_index = static_cast<std::uint32_t>(scene_.indices.size());
+        chunk.vertex_offset = static_cast<std::int32_t>(scene_.vertices.size());
+        chunk.index_count = static_cast<std::uint32_t>(optimized_.size());
+        chunk.texture = texture;
+        for (const std::uint32_t old_local : optimized_) {
+            const std::uint32_t global = by_first_use[old_local];
+            const std::size_t before = globals_.size();
+            const std::uint32_t index = local_index(global);
+            if (globals_.size() != before) {
+                scene_.vertices.push_back(geometry_.vertices[global]);
+                if (textured_) scene_.texcoords.push_back(geometry_.texcoords[global]);
+            }
+            scene_.indices.push_back(index);
+        }
+        chunk.bounds = bounds_of(scene_.vertices.data() + chunk.vertex_offset, globals_.size());
+        scene_.chunks.push_back(chunk);
+    }
+
+  private:
+    std::uint32_t local_index(std::uint32_t global) {
+        if (stamp_[global] != chunk_) {
+            stamp_[global] = chunk_;
+            local_[global] = static_cast<std::uint32_t>(globals_.size());
+            globals_.push_back(global);
+        }
+        return local_[global];
+    }
+
+    const ImportedGeometry& geometry_;
+    const std::vector<std::uint32_t>& corners_;
+    bool textured_;
+    Scene& scene_;
+    std::uint32_t chunk_ = 0;  // a stamp: two per chunk, one per pass
+    std::vector<std::uint32_t> stamp_;
+    std::vector<std::uint32_t> local_;
+    std::vector<std::uint32_t> globals_;  // local index -> global vertex
+    std::vector<std::uint32_t> indices_;
+    std::vector<std::uint32_t> optimized_;
+};
+
+}  // namespace
+
+void assemble_chunks(const ImportedGeometry& geometry, std::uint32_t target_triangles, Scene& scene,
+                     const std::function<void(std::size_t)>& progress) {
+    assert(geometry.vertices.size() < std::numeric_limits<std::uint32_t>::max());
+    assert(geometry.triangle_count() < std::numeric_limits<std::uint32_t>::max());
+    const std::uint32_t target = std::clamp(target_triangles, kMinChunkTarget, kMaxChunkTriangles);
+
+    // Global vertex numbers of every triangle's corners, and each triangle's texture.
+    const std::size_t triangle_count = geometry.triangle_count();
+    std::vector<std::uint32_t> corners(3 * triangle_count);
+    std::vector<std::int32_t> texture_of(triangle_count);
+    for (const GeometryBatch& batch : geometry.batches) {
+        for (std::size_t i = 0; i < batch.index_count; ++i) {
+            corners[batch.first_index + i] = static_cast<std::uint32_t>(
+                batch.first_vertex + geometry.indices[batch.first_index + i]);
+        }
+        std::fill_n(texture_of.begin() + static_cast<std::ptrdiff_t>(batch.first_index / 3),
+                    batch.index_count / 3, batch.texture);
+    }
+    std::vector<std::int32_t> textures(texture_of.begin(), texture_of.end());
+    std::sort(textures.begin(), textures.end());
+    textures.erase(std::unique(textures.begin(), textures.end()), textures.end());
+
+    scene.vertices.clear();
+    scene.indices.clear();
+    scene.chunks.clear();
+    scene.texcoords.clear();
+    scene.indices.reserve(geometry.indices.size());
+    scene.vertices.reserve(geometry.vertices.size() + geometry.vertices.size() / 8);
+    const bool textured = !textures.empty() && textures.back() >= 0;
+    ChunkWriter writer(geometry, corners, textured, scene);
+    std::size_t done = 0;
+    std::vector<TriangleRef> refs;
+    std::vector<std::pair<std::size_t, std::size_t>> cells;
+    std::vector<std::uint32_t> members;
+    // Triangles of different textures never share a chunk: one k-d tree per texture.
+    for (const std::int32_t texture : textures) {
+        refs.clear();
+        for (std::size_t t = 0; t < triangle_count; ++t) {
+            if (texture_of[t] != texture) continue;
+            const glm::vec3& a = geometry.vertices[corners[3 * t]].position;
+            const glm::vec3& b = geometry.vertices[corners[3 * t + 1]].position;
+            const glm::vec3& c = geometry.vertices[corners[3 * t + 2]].position;
+            refs.push_back({(a + b + c) / 3.0f, static_cast<std::uint32_t>(t)});
+        }
+        cells.clear();
+        split(refs, 0, refs.size(), target, cells);
+        for (const auto& [begin, end] : cells) {
+            members.clear();
+            for (std::size_t i = begin; i < end; ++i) members.push_back(refs[i].triangle);
+            writer.write(members, texture);
+            done += end - begin;
+            if (progress) progress(done);
+        }
+    }
+    scene.bounds = Aabb{};
+    if (!scene.chunks.empty()) {
+        scene.bounds = scene.chunks.front().bounds;
+        for (const Chunk& chunk : scene.chunks) scene.bounds = merge(scene.bounds, chunk.bounds);
+    }
+}
+
+}  // namespace monoplane::scenes::gltf
