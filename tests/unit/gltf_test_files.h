@@ -4,10 +4,12 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <unistd.h>
@@ -180,12 +182,24 @@ class TestGltf {
 };
 
 // A fresh directory per test and process under the system's temporary directory (ctest runs
-// tests in parallel, and other build trees may run the same tests at once).
+// tests in parallel, and other build trees may run the same tests at once), removed when the
+// process exits.
 inline std::filesystem::path test_directory(const std::string& name) {
+    static std::vector<std::filesystem::path> created;
+    static const bool cleanup_registered = [] {
+        std::atexit([] {
+            std::error_code ignored;
+            for (const std::filesystem::path& dir : created)
+                std::filesystem::remove_all(dir, ignored);
+        });
+        return true;
+    }();
+    static_cast<void>(cleanup_registered);
     const std::filesystem::path dir = std::filesystem::temp_directory_path() /
                                       ("monoplane_gltf_" + name + "_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
+    created.push_back(dir);
     return dir;
 }
 
