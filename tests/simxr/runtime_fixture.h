@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,8 @@ class SimxrTest : public ::testing::Test {
     XrGraphicsBindingVulkan2KHR binding() const;
     XrPath path(const char* text) const;
 
+    // Records commands on a fresh command buffer of the binding's queue, submits and waits.
+    void submit_and_wait(const std::function<void(VkCommandBuffer)>& record);
     // Clears the swapchain image to a colour, leaving it in COLOR_ATTACHMENT_OPTIMAL.
     void clear_image(VkImage image, VkClearColorValue colour);
 

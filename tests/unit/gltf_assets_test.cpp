@@ -13,18 +13,14 @@
 #include "scenes/generate.h"
 #include "scenes/gltf/load_gltf.h"
 #include "tests/unit/gltf_scene_checks.h"
+#include "tests/unit/gltf_test_files.h"
 
 namespace monoplane::scenes {
 namespace {
 
-const std::filesystem::path kModels = MONOPLANE_ASSIMP_MODELS;
+using testing::quiet;
 
-GltfLoadOptions quiet() {
-    GltfLoadOptions options;
-    options.progress = false;
-    options.print_warnings = false;
-    return options;
-}
+const std::filesystem::path kModels = MONOPLANE_ASSIMP_MODELS;
 
 class GltfAssets : public ::testing::Test {
   protected:

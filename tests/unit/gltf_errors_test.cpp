@@ -14,14 +14,8 @@ namespace monoplane::scenes {
 namespace {
 
 using nlohmann::json;
+using testing::quiet;
 using testing::TestGltf;
-
-GltfLoadOptions quiet() {
-    GltfLoadOptions options;
-    options.progress = false;
-    options.print_warnings = false;
-    return options;
-}
 
 // The error message, which must start with the file's path.
 std::string load_error(const std::filesystem::path& file,

@@ -19,15 +19,9 @@ namespace {
 
 using nlohmann::json;
 using testing::has_triangle;
+using testing::quiet;
 using testing::TestGltf;
 using testing::triangles_of;
-
-GltfLoadOptions quiet() {
-    GltfLoadOptions options;
-    options.progress = false;
-    options.print_warnings = false;
-    return options;
-}
 
 Scene load_ok(const std::filesystem::path& file, GltfLoadOptions options = quiet(),
               GltfLoadReport* report = nullptr) {

@@ -18,7 +18,17 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include "scenes/gltf/load_gltf.h"
+
 namespace monoplane::scenes::testing {
+
+// Options for tests: no progress line and no warning line on stderr.
+inline GltfLoadOptions quiet() {
+    GltfLoadOptions options;
+    options.progress = false;
+    options.print_warnings = false;
+    return options;
+}
 
 inline constexpr int kByte = 5120;
 inline constexpr int kUnsignedByte = 5121;

@@ -28,14 +28,8 @@ namespace monoplane::scenes {
 namespace {
 
 using nlohmann::json;
+using testing::quiet;
 using testing::TestGltf;
-
-GltfLoadOptions quiet() {
-    GltfLoadOptions options;
-    options.progress = false;
-    options.print_warnings = false;
-    return options;
-}
 
 std::vector<unsigned char> png(int width, int height, const std::vector<unsigned char>& rgba) {
     std::vector<unsigned char> bytes;
