@@ -110,15 +110,16 @@ LocatedHead located_head(const headset::HeadsetFrame& frame) {
 
 // The renderer's viewer: the head relative to the seat, placed at the scene's viewpoint, with
 // the runtime's eye distance and calibrated frusta.
-modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const rig::Pose& head,
-                                    const rig::Pose& seat, const study::Protocol& protocol) {
+modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const LocatedHead& located,
+                                    const rig::Pose& head, const rig::Pose& seat,
+                                    const study::Protocol& protocol) {
     modes::StereoViewInputs inputs;
     inputs.head.position = seat.position + seat.orientation * head.position;
     inputs.head.orientation = seat.orientation * head.orientation;
     inputs.ipd = glm::length(frame.views[1].pose.position - frame.views[0].pose.position);
     inputs.left = frame.views[0].tangents;
     inputs.right = frame.views[1].tangents;
-    inputs.cant = located_head(frame).cant;
+    inputs.cant = located.cant;
     inputs.near = protocol.near;
     inputs.far = protocol.far;
     return inputs;
@@ -278,11 +279,13 @@ class HeadsetLoop {
         // The head relative to the seat: what the frame log records for every frame (the
         // participant's own motion, whatever the screen), and what a trial's views start from.
         std::optional<rig::Pose> tracked;
-        if (frame.views_valid) tracked = anchor_.relative(located_head(frame).head);
+        const LocatedHead located = frame.views_valid ? located_head(frame) : LocatedHead{};
+        if (frame.views_valid) tracked = anchor_.relative(located.head);
         const rig::Pose head = tracked.value_or(rig::Pose{});
         handle_inputs(now);
         const study::LiveScreen screen = live_->screen();
-        const Rendered rendered = frame.should_render ? render(frame, screen, head) : Rendered{};
+        const Rendered rendered =
+            frame.should_render ? render(frame, located, screen, head) : Rendered{};
         // Every frame the eyes' depth was written in carries it (an encoding for all of them).
         std::optional<headset::DepthEncoding> depth;
         if (depth_writer_) depth = headset::DepthEncoding{protocol_.near};
@@ -374,8 +377,8 @@ class HeadsetLoop {
     // The screen into both eyes' swapchain images: the trial's scene through its renderer (the
     // eyes' copies ride in its submission), else the compositor's grey with overlays. No wait for
     // the GPU: each ring waits only for its frame two before.
-    Rendered render(const headset::HeadsetFrame& frame, const study::LiveScreen& screen,
-                    const rig::Pose& head) {
+    Rendered render(const headset::HeadsetFrame& frame, const LocatedHead& located,
+                    const study::LiveScreen& screen, const rig::Pose& head) {
         std::array<vk::Image, 2> targets;
         for (int e = 0; e < 2; ++e) targets[e] = headset_.acquire_eye_image(e).value_or_throw();
         std::array<vk::Image, 2> depth_targets;
@@ -390,7 +393,8 @@ class HeadsetLoop {
         if (screen.kind == ScreenKind::Trial && !screen.paused && frame.views_valid) {
             const study::ScheduledTrial& trial = *screen.trial;
             rendered.renderer = &renderers_.renderer(trial.scene, screen.mode);
-            inputs.views = view_inputs(frame, head, renderers_.seat(trial.scene), protocol_);
+            inputs.views =
+                view_inputs(frame, located, head, renderers_.seat(trial.scene), protocol_);
             inputs.mono_plane = trial.mono_plane;
         }
         const modes::ModeRenderer* renderer = rendered.renderer;
