@@ -12,6 +12,7 @@ packages=(
   librsvg2-dev fonts-dejavu-core
   libtinygltf-dev nlohmann-json3-dev libmeshoptimizer-dev assimp-testmodels
   python3 python3-pandas r-base-core r-cran-jsonlite r-cran-dbi r-cran-rsqlite
+  libeigen3-dev libnlopt-dev chromium
 )
 
 missing=()
