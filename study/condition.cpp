@@ -6,6 +6,8 @@
 #include <cmath>
 #include <iterator>
 
+#include "study/scene_files.h"
+
 namespace monoplane::study {
 namespace {
 
@@ -43,9 +45,10 @@ Result<Condition> validate_condition(const Condition& condition, double near, do
         return Error{"invalid clip range near = " + format_number(near) + " m, far = " +
                      format_number(far) + " m: both must be finite with 0 < near < far"};
     }
-    if (std::ranges::find(kSceneNames, condition.scene) == kSceneNames.end()) {
+    if (std::ranges::find(kSceneNames, condition.scene) == kSceneNames.end() &&
+        !names_scene_file(condition.scene)) {
         return Error{"condition " + describe(condition) + ": unknown scene '" + condition.scene +
-                     "' (known scenes: " + scene_list() + ")"};
+                     "' (known scenes: " + scene_list() + "; or a glTF file, .gltf or .glb)"};
     }
     if (!std::isfinite(condition.mono_plane)) {
         return Error{"condition " + describe(condition) +

@@ -13,7 +13,7 @@
 namespace monoplane::study {
 
 struct Condition {
-    std::string scene;  // one of study_scene_names()
+    std::string scene;  // one of study_scene_names(), or a glTF file (names_scene_file())
     RenderMode mode = RenderMode::Stereo;
     // Metres in front of the eyes. It identifies the trial's distance even for modes that ignore
     // it (stereo), so both alternatives of a trial carry the same value.
@@ -27,9 +27,10 @@ std::span<const std::string_view> study_scene_names();
 std::string describe(const Condition& condition);
 
 // Checks a condition against the clip range it will be rendered with (default 0.1 and 1000 m):
-// the scene is known and the mono plane is finite and strictly inside (near, far) — at or beyond
-// either end hybrid rendering degenerates (DESIGN.md section 3). Returns the condition unchanged
-// when valid. May be called at any time; near and far are checked too (finite, 0 < near < far).
+// the scene is known or names a glTF file (whether the file exists is the protocol's check), and
+// the mono plane is finite and strictly inside (near, far) — at or beyond either end hybrid
+// rendering degenerates (DESIGN.md section 3). Returns the condition unchanged when valid. May
+// be called at any time; near and far are checked too (finite, 0 < near < far).
 Result<Condition> validate_condition(const Condition& condition, double near, double far);
 
 }  // namespace monoplane::study

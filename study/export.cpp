@@ -263,34 +263,69 @@ void write_csv(const ExportData& data, std::ostream& out) {
     });
 }
 
-void write_json(const ExportData& data, std::ostream& out) {
+namespace {
+
+std::string json_value(const Cell& cell) {
+    switch (cell.type) {
+        case Cell::Type::Na:
+            return "null";
+        case Cell::Type::Text:
+            return json_string(cell.text);
+        case Cell::Type::Number:
+            return cell.text;
+        case Cell::Type::Bool:
+            return cell.flag ? "true" : "false";
+    }
+    return "null";
+}
+
+// The files `scene` was read from when the session began: none for a built-in scene.
+std::string json_scene_files(const SessionInfo& session, const std::string& scene) {
+    std::string files;
+    for (const SceneFileRecord& file : session.scene_files) {
+        if (file.scene != scene) continue;
+        files += std::string(files.empty() ? "" : ", ") +
+                 "{\"file_index\": " + std::to_string(file.file_index) +
+                 ", \"path\": " + json_string(file.path.string()) +
+                 ", \"size_bytes\": " + std::to_string(file.digest.size_bytes) +
+                 ", \"sha256\": " + json_string(file.digest.sha256) + "}";
+    }
+    return "[" + files + "]";
+}
+
+std::string json_notes(const SessionInfo& session) {
+    std::string notes;
+    for (const SessionNote& note : session.notes) {
+        notes += std::string(notes.empty() ? "" : ", ") +
+                 "{\"noted_utc\": " + json_string(note.noted_utc) +
+                 ", \"note\": " + json_string(note.text) + "}";
+    }
+    return "[" + notes + "]";
+}
+
+// One trial's object: the export's columns, then two keys CSV has no room for, the trial's
+// scene files and its session's notes.
+std::string json_object(const TrialRecord& record, const SessionInfo& session) {
     const std::vector<std::string_view>& columns = export_columns();
+    const std::vector<Cell> cells = row(record, session);
+    std::string object = "{";
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        object += (i > 0 ? ", " : "") + json_string(columns[i]) + ": " + json_value(cells[i]);
+    }
+    return object + ", \"scene_files\": " + json_scene_files(session, record.trial.scene) +
+           ", \"session_notes\": " + json_notes(session) + "}";
+}
+
+}  // namespace
+
+void write_json(const ExportData& data, std::ostream& out) {
     out << '[';
     bool first = true;
-    for_each_row(data, [&](const std::vector<Cell>& cells) {
-        std::string object = first ? "\n  {" : ",\n  {";
+    for (const TrialRecord& record : data.trials) {
+        out << (first ? "\n  " : ",\n  ")
+            << json_object(record, data.sessions.at(record.session_id));
         first = false;
-        for (std::size_t i = 0; i < cells.size(); ++i) {
-            if (i > 0) object += ", ";
-            object += json_string(columns[i]) + ": ";
-            const Cell& cell = cells[i];
-            switch (cell.type) {
-                case Cell::Type::Na:
-                    object += "null";
-                    break;
-                case Cell::Type::Text:
-                    object += json_string(cell.text);
-                    break;
-                case Cell::Type::Number:
-                    object += cell.text;
-                    break;
-                case Cell::Type::Bool:
-                    object += cell.flag ? "true" : "false";
-                    break;
-            }
-        }
-        out << object << '}';
-    });
+    }
     out << (first ? "]\n" : "\n]\n");
 }
 

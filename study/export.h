@@ -40,7 +40,9 @@ struct ExportData {
 // snapshot of some moment per query.
 Result<ExportData> collect_export(const StudyStore& store, ExportFormat format = ExportFormat::Csv);
 
-// The export's column names, in order (CSV header, JSON keys).
+// The export's column names, in order (CSV header, JSON keys). JSON adds two keys after them:
+// "scene_files" (the files the trial's scene was read from, with their SHA-256 and size; empty
+// for a built-in scene) and "session_notes" (docs/data.md).
 const std::vector<std::string_view>& export_columns();
 // The frame log's columns (frames-csv), in order.
 const std::vector<std::string_view>& frame_export_columns();

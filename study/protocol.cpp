@@ -15,6 +15,7 @@
 #include <span>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -24,6 +25,7 @@
 #include "common/toml/toml_keys.h"
 #include "common/toml/toml_problems.h"
 #include "study/condition.h"
+#include "study/scene_files.h"
 
 namespace monoplane::study {
 namespace {
@@ -195,24 +197,68 @@ void read_name(const TomlScope& root, Protocol& protocol, TomlProblems& problems
     protocol.name = std::move(*name);
 }
 
-void read_scenes(const TomlScope& root, Protocol& protocol, TomlProblems& problems) {
-    const std::string expected = "an array of scene names (known scenes: " + known_scenes() + ")";
+// A scenes entry that names a glTF file. No comma: the database keeps the block order
+// comma-separated. With a folder to resolve it against, the file must exist and not be listed
+// already under another name (that would double its block, as a repeated name would).
+bool accept_scene_file(const std::string& scene, const toml::node& element,
+                       const std::filesystem::path* directory, Protocol& protocol,
+                       TomlProblems& problems) {
+    const std::string prefix = toml_key_prefix("scenes") + "scene file " + in_quotes(scene);
+    if (scene.find(',') != std::string::npos) {
+        problems.add(element.source(), prefix +
+                                           " has a comma in its name, which the database's "
+                                           "comma-separated block order cannot hold; "
+                                           "rename the file");
+        return false;
+    }
+    if (directory == nullptr) return true;
+    const std::filesystem::path path = resolve_scene_file(scene, *directory);
+    std::error_code error;
+    const std::filesystem::file_status status = std::filesystem::status(path, error);
+    if (!std::filesystem::is_regular_file(status)) {
+        const std::string what = std::filesystem::exists(status) ? " is not a regular file ("
+                                                                 : " not found (looked for ";
+        problems.add(element.source(), prefix + what + path.string() +
+                                           "; relative paths start at the protocol "
+                                           "file's folder)");
+        return false;
+    }
+    for (const auto& [label, other] : protocol.scene_files) {
+        if (other == path) {
+            problems.add(element.source(), prefix + " is the same file as " + in_quotes(label) +
+                                               "; list each scene once");
+            return false;
+        }
+    }
+    protocol.scene_files[scene] = path;
+    return true;
+}
+
+void read_scenes(const TomlScope& root, const std::filesystem::path* scene_directory,
+                 Protocol& protocol, TomlProblems& problems) {
+    const std::string expected = "an array of scene names (known scenes: " + known_scenes() +
+                                 ") or glTF files (.gltf, .glb)";
     const toml::node* node = find_required(root, "scenes", expected, problems);
     if (node == nullptr) return;
     const toml::array* array = read_nonempty_array(*node, "scenes", expected, problems);
     if (array == nullptr) return;
     const std::span<const std::string_view> known = study_scene_names();
     for (auto& [scene, element, position] : read_strings(*array, "scenes", problems)) {
-        if (std::ranges::find(known, scene) == known.end()) {
-            std::string message = toml_key_prefix("scenes") + "unknown scene " + in_quotes(scene) +
-                                  " (known scenes: " + known_scenes() + ")";
-            const std::string_view closest = closest_match(scene, known);
-            if (!closest.empty()) message += "; did you mean " + in_quotes(closest) + "?";
-            problems.add(element->source(), message);
-        } else if (std::ranges::find(protocol.scenes, scene) != protocol.scenes.end()) {
+        if (std::ranges::find(protocol.scenes, scene) != protocol.scenes.end()) {
             // A scene listed twice would double its block and unbalance the Latin square.
             problems.add(element->source(), toml_key_prefix("scenes") + "duplicate scene " +
                                                 in_quotes(scene) + "; list each scene once");
+        } else if (names_scene_file(scene)) {
+            if (accept_scene_file(scene, *element, scene_directory, protocol, problems)) {
+                protocol.scenes.push_back(std::move(scene));
+            }
+        } else if (std::ranges::find(known, scene) == known.end()) {
+            std::string message = toml_key_prefix("scenes") + "unknown scene " + in_quotes(scene) +
+                                  " (known scenes: " + known_scenes() +
+                                  "; or a glTF file ending in .gltf or .glb)";
+            const std::string_view closest = closest_match(scene, known);
+            if (!closest.empty()) message += "; did you mean " + in_quotes(closest) + "?";
+            problems.add(element->source(), message);
         } else {
             protocol.scenes.push_back(std::move(scene));
         }
@@ -485,9 +531,8 @@ Result<std::string> read_text_file(const std::filesystem::path& path) {
     return text.str();
 }
 
-}  // namespace
-
-Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view source_name) {
+Result<Protocol> parse(std::string_view toml_text, std::string_view source_name,
+                       const std::filesystem::path* scene_directory) {
     Result<toml::table> document = parse_toml(toml_text, source_name);
     if (!document) return document.error();
 
@@ -496,7 +541,7 @@ Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view sou
     const TomlScope root{*document, ""};
     report_unknown_keys(root, kTopLevelKeys, problems);
     read_name(root, protocol, problems);
-    read_scenes(root, protocol, problems);
+    read_scenes(root, scene_directory, protocol, problems);
     const bool clip_range_valid = read_clip_range(root, protocol, problems);
     read_mono_planes(root, clip_range_valid, protocol, problems);
     read_alternatives(root, protocol, problems);
@@ -511,10 +556,21 @@ Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view sou
     return protocol;
 }
 
+}  // namespace
+
+Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view source_name) {
+    return parse(toml_text, source_name, nullptr);
+}
+
+Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view source_name,
+                                const std::filesystem::path& scene_directory) {
+    return parse(toml_text, source_name, &scene_directory);
+}
+
 Result<Protocol> load_protocol(const std::filesystem::path& path) {
     Result<std::string> text = read_text_file(path);
     if (!text) return text.error();
-    return parse_protocol(*text, path.string());
+    return parse_protocol(*text, path.string(), path.parent_path());
 }
 
 }  // namespace monoplane::study

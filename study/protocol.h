@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -45,7 +46,14 @@ struct RenderSettings {
 
 struct Protocol {
     std::string name;
-    std::vector<std::string> scenes;  // study_scene_names(), no duplicates, not empty
+    // Built-in scenes (study_scene_names()) and glTF files (names_scene_file(): ending in .gltf
+    // or .glb), each as written in the protocol; no duplicates, not empty. These labels are what
+    // the schedule, the database and the export carry.
+    std::vector<std::string> scenes;
+    // The absolute path of each entry that names a glTF file, by entry: resolved against the
+    // protocol file's folder (absolute entries as they are). Empty for protocol text parsed
+    // without a folder (a session's stored protocol: the database records the files it read).
+    std::map<std::string, std::filesystem::path> scene_files;
     std::vector<double> mono_planes;  // metres, strictly inside (near, far), no duplicates
     std::array<RenderMode, 2> alternatives{RenderMode::Stereo, RenderMode::Hybrid};
     TrialOrder order = TrialOrder::Randomized;
@@ -67,12 +75,22 @@ struct Protocol {
 };
 
 // Parses and validates; all problems are reported, one per line, as "FILE:LINE:COL: key 'K': ..."
-// (unknown keys, wrong types, unknown scenes or modes, distances outside (near, far), empty or
-// duplicate lists, bad enum values, MSAA with a hybrid alternative). source_name appears in the
-// messages.
+// (unknown keys, wrong types, unknown scenes or modes, a scene file name with a comma,
+// distances outside (near, far), empty or duplicate lists, bad enum values, MSAA with a hybrid
+// alternative). source_name appears in the messages. Scenes that name glTF files are checked for
+// their form only and Protocol::scene_files stays empty: text alone has no folder to resolve
+// them against. Any time.
 Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view source_name);
 
-// Reads a file and parses it; an unreadable file is an error naming it.
+// As above, with every scene that names a glTF file resolved against scene_directory (see
+// resolve_scene_file) into Protocol::scene_files; a file that does not exist or is no regular
+// file is a located problem like the others, as is an entry that resolves to the same file as
+// an earlier one. Touches the file system only to check that the files exist.
+Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view source_name,
+                                const std::filesystem::path& scene_directory);
+
+// Reads a file and parses it, scene files resolved against the file's folder; an unreadable
+// file is an error naming it.
 Result<Protocol> load_protocol(const std::filesystem::path& path);
 
 }  // namespace monoplane::study

@@ -106,7 +106,30 @@ CREATE TABLE frames (
 );
 )sql";
 
-constexpr std::array<std::string_view, 2> kMigrations = {kVersion1, kVersion2};
+// Version 3 (issue 19): imported (glTF) scenes. Every file each imported scene of a session was
+// read from when the session began, with its size and SHA-256 as `sha256sum` prints it, so a
+// reviewer can check which bytes the participants saw and `study resume` can refuse changed
+// files; and notes for the reviewer, such as a resume that accepted changed files. Sessions
+// of versions 1 and 2 showed built-in scenes only: they have no rows here.
+constexpr std::string_view kVersion3 = R"sql(
+CREATE TABLE scene_files (
+    session_id INTEGER NOT NULL REFERENCES sessions(id),
+    scene      TEXT NOT NULL CHECK (length(scene) > 0),
+    file_index INTEGER NOT NULL CHECK (file_index >= 0),
+    path       TEXT NOT NULL CHECK (substr(path, 1, 1) = '/'),
+    size_bytes INTEGER NOT NULL CHECK (size_bytes >= 0),
+    sha256     TEXT NOT NULL CHECK (length(sha256) = 64 AND sha256 NOT GLOB '*[^0-9a-f]*'),
+    PRIMARY KEY (session_id, scene, file_index)
+);
+CREATE TABLE session_notes (
+    id         INTEGER PRIMARY KEY,
+    session_id INTEGER NOT NULL REFERENCES sessions(id),
+    noted_utc  TEXT NOT NULL,
+    note       TEXT NOT NULL CHECK (length(note) > 0)
+);
+)sql";
+
+constexpr std::array<std::string_view, 3> kMigrations = {kVersion1, kVersion2, kVersion3};
 
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "study/frame_queue.h"
+#include "study/scene_file_store.h"
 #include "study/store_schema.h"
 #include "study/store_sqlite.h"
 
@@ -339,6 +340,8 @@ Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Sc
                      "as P07, never a name."};
     if (Result<bool> valid = validate_schedule(schedule); !valid)
         return Error{"cannot store the schedule: " + valid.error().message};
+    if (Result<bool> valid = validate_scene_files(info.scene_files, schedule); !valid)
+        return Error{"cannot store the scene files: " + valid.error().message};
 
     Result<Transaction> tx = Transaction::begin(db, "starting a session");
     if (!tx) return tx.error();
@@ -427,6 +430,8 @@ Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Sc
         if (Result<bool> ok = trial.value().run("storing the schedule"); !ok) return ok.error();
         trial.value().reset();
     }
+    if (Result<bool> ok = write_scene_files(db, session_id, info.scene_files); !ok)
+        return ok.error();
     if (Result<bool> ok = tx.value().commit("starting a session"); !ok) return ok.error();
     return session_id;
 }
@@ -572,6 +577,12 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
     info.render.anti_aliasing = stmt->text(14);
     info.render.ssao = stmt->text(15);
     info.render.detail = stmt->is_null(16) ? "" : stmt->text(16);
+    Result<std::vector<SceneFileRecord>> files = read_scene_files(db, session_id);
+    if (!files) return files.error();
+    info.scene_files = std::move(files).value();
+    Result<std::vector<SessionNote>> notes = read_session_notes(db, session_id);
+    if (!notes) return notes.error();
+    info.notes = std::move(notes).value();
     return info;
 }
 
@@ -751,6 +762,17 @@ Result<bool> StudyStore::record_answer(std::int64_t session_id, int item, const 
     if (Result<bool> ok = stmt.value().run("recording a questionnaire answer"); !ok) return ok;
     if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
     return impl_->commit_written(tx.value(), "recording a questionnaire answer");
+}
+
+Result<bool> StudyStore::add_session_note(std::int64_t session_id, const std::string& text) {
+    if (text.empty()) return Error{"a session note must say something"};
+    Result<Transaction> tx = Transaction::begin(impl_->db, "adding a session note");
+    if (!tx) return tx.error();
+    if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok;
+    if (Result<bool> ok = write_session_note(impl_->db, session_id, {utc_now_iso8601(), text}); !ok)
+        return ok;
+    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    return impl_->commit_written(tx.value(), "adding a session note");
 }
 
 Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> session_id) const {

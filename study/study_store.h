@@ -15,12 +15,22 @@
 #include "common/result.h"
 #include "study/frame_record.h"
 #include "study/protocol.h"
+#include "study/scene_files.h"
 #include "study/schedule.h"
 #include "study/session_log.h"
 #include "study/trial_events.h"
 #include "study/trial_state_machine.h"
 
 namespace monoplane::study {
+
+// Something the software recorded about a session for whoever reviews its data, e.g. that a
+// resume went ahead with changed scene files (`study resume --accept-changed-scenes`).
+struct SessionNote {
+    std::string noted_utc;  // ISO 8601 UTC
+    std::string text;
+
+    bool operator==(const SessionNote&) const = default;
+};
 
 struct SessionInfo {
     std::int64_t id = 0;
@@ -40,6 +50,12 @@ struct SessionInfo {
     // What the session rendered with: the protocol's [render] table with the command line's
     // overrides. Sessions from schema version 1 read as none / off / "" (detail not recorded).
     RenderSettings render;
+    // Every file each imported (glTF) scene was read from when the session began, with its size
+    // and SHA-256: begin_session requires the record of each such scene's own file (file 0).
+    // Empty for sessions of built-in scenes only (and all sessions before schema version 3).
+    std::vector<SceneFileRecord> scene_files;
+    // Read back by session(); begin_session ignores them (add_session_note adds one).
+    std::vector<SessionNote> notes;
 };
 
 // One row of the export: a trial with its outcome (DESIGN.md section 7; docs/data.md).
@@ -77,10 +93,12 @@ class StudyStore final : public SessionLog {
                                                     const StoreOptions& options);
     ~StudyStore();
 
-    static constexpr int kSchemaVersion = 2;
+    static constexpr int kSchemaVersion = 3;
 
     // Starts a session: refuses a participant code that already has a session (use resume).
-    // Stores the protocol text and hash, the seed and the whole schedule before the first trial.
+    // Stores the protocol text and hash, the seed, the whole schedule and the scene files'
+    // digests (info.scene_files, checked by validate_scene_files: each imported scene of the
+    // schedule needs its record) in one transaction, before the first trial.
     Result<std::int64_t> begin_session(const SessionInfo& info, const Schedule& schedule);
 
     // The schedule stored for a session, and where to continue: the first undecided trial.
@@ -111,6 +129,9 @@ class StudyStore final : public SessionLog {
     Result<bool> set_status(std::int64_t session_id, SessionStatus status) override;
     Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
                                int answer) override;
+    // Appends a note to a session (stamped with the current UTC time), durable when it returns.
+    // Refuses an empty note and an unknown session.
+    Result<bool> add_session_note(std::int64_t session_id, const std::string& text);
 
     Result<std::vector<TrialRecord>> trials(std::optional<std::int64_t> session_id = {}) const;
     Result<std::vector<TrialEvent>> events(std::int64_t session_id) const;

@@ -1,6 +1,7 @@
 // `monoplane protocol check FILE` (DESIGN.md section 8): validates a study protocol before anyone
 // sits down for a session, printing every problem with file, line and key, or, if it is valid, a
-// summary of what a session will contain so the experimenter can check the design itself.
+// summary of what a session will contain so the experimenter can check the design itself. Scene
+// files (glTF) are loaded as a session would load them.
 #include <charconv>
 #include <cstdint>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "app/commands/commands.h"
+#include "app/commands/study_scenes.h"
 #include "common/result.h"
 #include "study/protocol.h"
 
@@ -79,9 +81,25 @@ void print_summary(const study::Protocol& p) {
               << number(100.0 * p.missed_frame_threshold) << " % missed frames\n";
 }
 
+// What each imported scene holds and every file it was read from, digests as `sha256sum`
+// prints them, so the experimenter can compare them with the files they meant to use.
+void print_imported(const ImportedStudyScenes& imported) {
+    for (const auto& [scene, entry] : imported) {
+        std::cout << "  scene file:    " << scene << ": " << describe_size(entry.scene) << "\n";
+        for (const study::SceneFileRecord& file : entry.files) {
+            std::cout << "                 " << file.digest.sha256 << "  " << file.path.string()
+                      << " (" << file.digest.size_bytes << " bytes)\n";
+        }
+    }
+}
+
+// Loads every scene file too: a broken one is reported now, not when a session begins.
 void run_check(const std::string& file) {
     const study::Protocol protocol = study::load_protocol(file).value_or_throw();
+    const ImportedStudyScenes imported =
+        load_imported_scenes(protocol.scene_files, protocol.source).value_or_throw();
     print_summary(protocol);
+    print_imported(imported);
 }
 
 }  // namespace

@@ -1,28 +1,13 @@
 #include "app/commands/scene_source.h"
 
-#include <algorithm>
-#include <cctype>
 #include <system_error>
 
-#include "scenes/gltf/load_gltf.h"
+#include "common/scene_file_name.h"
 
 namespace monoplane::app {
-namespace {
-
-bool ends_with_ignoring_case(std::string_view text, std::string_view suffix) {
-    if (text.size() < suffix.size()) return false;
-    return std::equal(suffix.begin(), suffix.end(),
-                      text.end() - static_cast<std::ptrdiff_t>(suffix.size()), [](char a, char b) {
-                          return std::tolower(static_cast<unsigned char>(a)) ==
-                                 std::tolower(static_cast<unsigned char>(b));
-                      });
-}
-
-}  // namespace
 
 bool names_a_gltf_file(std::string_view name_or_path) {
-    return ends_with_ignoring_case(name_or_path, ".gltf") ||
-           ends_with_ignoring_case(name_or_path, ".glb");
+    return names_gltf_file(name_or_path);
 }
 
 Result<SceneSource> parse_scene_source(std::string_view name_or_path) {
@@ -46,9 +31,9 @@ Result<SceneSource> parse_scene_source(std::string_view name_or_path) {
 }
 
 Result<scenes::Scene> load_scene(const SceneSource& source, scenes::Detail detail,
-                                 std::uint64_t seed) {
+                                 std::uint64_t seed, scenes::GltfLoadReport* gltf_report) {
     if (source.builtin) return scenes::generate_scene(*source.builtin, detail, seed);
-    return scenes::load_gltf_scene(source.file);
+    return scenes::load_gltf_scene(source.file, {}, gltf_report);
 }
 
 }  // namespace monoplane::app

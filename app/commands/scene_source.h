@@ -11,6 +11,7 @@
 
 #include "common/result.h"
 #include "scenes/generate.h"
+#include "scenes/gltf/load_gltf.h"
 #include "scenes/scene.h"
 
 namespace monoplane::app {
@@ -31,7 +32,9 @@ Result<SceneSource> parse_scene_source(std::string_view name_or_path);
 
 // Generates the procedural scene (detail, seed) or loads the file (detail and seed do not apply
 // to files; the loader's progress goes to stderr). Errors name the file and the problem.
+// gltf_report (optional) receives the loader's report of a file, e.g. the files it read.
 Result<scenes::Scene> load_scene(const SceneSource& source, scenes::Detail detail,
-                                 std::uint64_t seed = scenes::kDefaultSeed);
+                                 std::uint64_t seed = scenes::kDefaultSeed,
+                                 scenes::GltfLoadReport* gltf_report = nullptr);
 
 }  // namespace monoplane::app

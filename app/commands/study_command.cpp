@@ -6,10 +6,12 @@
 #include <filesystem>
 #include <iostream>
 #include <random>
+#include <utility>
 
 #include "app/commands/commands.h"
 #include "app/commands/study_headset.h"
 #include "app/commands/study_rows.h"
+#include "app/commands/study_scenes.h"
 #include "hmd/profile.h"
 #include "study/export.h"
 #include "study/observer.h"
@@ -32,6 +34,7 @@ struct StudyOptions {
     std::optional<std::int64_t> session;
     double pace_ms = 0.0;
     bool trace = false;
+    bool accept_changed_scenes = false;  // resume: go on although scene files changed
     std::string format = "csv";
     std::string out;
     HeadsetStudyOptions headset_options;
@@ -75,14 +78,16 @@ study::RunOptions run_options(const StudyOptions& o, const hmd::HmdProfile& hmd,
 
 void run_on_headset(
     const StudyOptions& o, const GlobalOptions& global, study::StudyStore& store,
-    const study::Protocol& protocol, study::Observer* observer, const hmd::HmdProfile& hmd,
+    const study::Protocol& protocol, ImportedStudyScenes imported, study::Observer* observer,
+    const hmd::HmdProfile& hmd,
     const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
     HeadsetStudyOptions options = o.headset_options;
     options.headset = o.headset;
     options.hmd = o.hmd;
     options.trace = o.trace;
-    const study::SessionStatus status = run_headset_session(
-        options, global, store, protocol, observer, error_model(hmd, protocol), begin);
+    const study::SessionStatus status =
+        run_headset_session(options, global, store, protocol, std::move(imported), observer,
+                            error_model(hmd, protocol), begin);
     std::cerr << "session " << study::session_status_name(status) << "\n";
 }
 
@@ -101,6 +106,10 @@ void run_study(const StudyOptions& o, const GlobalOptions& global) {
     check_headset(o.headset);
     const study::Protocol protocol = study::load_protocol(o.protocol).value_or_throw();
     const hmd::HmdProfile hmd = hmd::load_hmd_profile(o.hmd).value_or_throw();
+    // Scene files are loaded and digested before anything is written: a broken file refuses the
+    // session, and the digests go into the session's row with it.
+    ImportedStudyScenes imported =
+        load_imported_scenes(protocol.scene_files, protocol.source).value_or_throw();
     auto store = study::StudyStore::open(o.db).value_or_throw();
     const int participant_index = store->participant_count().value_or_throw();
     const std::uint64_t seed = o.seed ? *o.seed : std::random_device{}() * 0x100000001ull;
@@ -123,6 +132,7 @@ void run_study(const StudyOptions& o, const GlobalOptions& global) {
     // which a headset loop (and a resume) renders with.
     info.render = protocol.render;
     if (!o.headset_options.detail.empty()) info.render.detail = o.headset_options.detail;
+    info.scene_files = scene_file_records(imported);
     std::unique_ptr<study::Observer> observer;
     if (observer_name != "none")
         observer = study::make_observer(observer_name, seed).value_or_throw();
@@ -137,10 +147,12 @@ void run_study(const StudyOptions& o, const GlobalOptions& global) {
         return id;
     };
     if (o.headset != "none") {
-        run_on_headset(o, global, *store, protocol, observer.get(), hmd, begin);
+        run_on_headset(o, global, *store, protocol, std::move(imported), observer.get(), hmd,
+                       begin);
         return;
     }
     if (!observer) throw UserError("--headset none needs an observer to answer (not none)");
+    imported.clear();  // recorded; nothing renders them without a headset
     const std::int64_t session_id = begin("none", "none");
     finish(*store, session_id, protocol, *observer, run_options(o, hmd, protocol));
 }
@@ -160,10 +172,13 @@ void resume_study(const StudyOptions& o, const GlobalOptions& global) {
     if (info.status == study::SessionStatus::Completed) {
         throw UserError("session " + std::to_string(session_id) + " is already completed");
     }
-    // The protocol as it was when the session began, not the file as it is now.
-    const study::Protocol protocol =
+    check_scene_files_before_resume(*store, info, o.accept_changed_scenes);
+    // The protocol as it was when the session began, not the file as it is now; its scene files
+    // where the session recorded them.
+    study::Protocol protocol =
         study::parse_protocol(info.protocol_text, "session " + std::to_string(session_id))
             .value_or_throw();
+    protocol.scene_files = study::recorded_scene_paths(info.scene_files);
     const hmd::HmdProfile hmd = hmd::load_hmd_profile(o.hmd).value_or_throw();
     const int first = store->first_undecided_trial(session_id).value_or_throw();
     std::cerr << "resuming session " << session_id << " (participant " << info.participant_code
@@ -176,7 +191,9 @@ void resume_study(const StudyOptions& o, const GlobalOptions& global) {
                 .value_or_throw();
     }
     if (o.headset != "none") {
-        run_on_headset(o, global, *store, protocol, observer.get(), hmd,
+        ImportedStudyScenes imported =
+            load_imported_scenes(protocol.scene_files, protocol.source).value_or_throw();
+        run_on_headset(o, global, *store, protocol, std::move(imported), observer.get(), hmd,
                        [session_id](const std::string&, const std::string&) { return session_id; });
         return;
     }
@@ -267,6 +284,9 @@ void add_study_command(CLI::App& root, const GlobalOptions& global) {
     resume->add_option("--hmd", options->hmd, "HMD profile")->capture_default_str();
     resume->add_option("--pace-ms", options->pace_ms, "Sleep per logged event (tests)");
     resume->add_flag("--trace", options->trace, "Print each durable write on stdout");
+    resume->add_flag("--accept-changed-scenes", options->accept_changed_scenes,
+                     "Resume although scene files (glTF) changed since the session began; "
+                     "refused without it. The session's notes record each changed file");
     add_headset_options(resume, *options);
     resume->callback([options, &global] { resume_study(*options, global); });
 

@@ -627,7 +627,7 @@ bool want_window(const HeadsetStudyOptions& options, vk_core::ContextOptions& co
 
 study::SessionStatus run_headset_session(
     const HeadsetStudyOptions& options, const GlobalOptions& global, study::StudyStore& store,
-    const study::Protocol& protocol, study::Observer* observer,
+    const study::Protocol& protocol, ImportedStudyScenes imported, study::Observer* observer,
     const std::function<double(const study::ScheduledTrial&)>& trial_error_px,
     const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
     std::optional<fs::path> written_script;
@@ -657,7 +657,7 @@ study::SessionStatus run_headset_session(
     // Sessions of schema version 1 recorded no detail: they rendered at the default, low.
     study::RenderSettings render = store.session(session_id).value_or_throw().render;
     if (render.detail.empty()) render.detail = "low";
-    StudyRenderers renderers(*ctx, protocol, extent, render);
+    StudyRenderers renderers(*ctx, protocol, extent, render, std::move(imported));
     bool finished = false;
     {
         HeadsetLoop loop(options, protocol, store, session_id, *headset, *ctx, experimenter.get(),

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "app/commands/global_options.h"
+#include "app/commands/study_scenes.h"
 #include "hmd/profile.h"
 #include "study/observer.h"
 #include "study/protocol.h"
@@ -47,10 +48,11 @@ std::optional<std::filesystem::path> select_simulated_runtime(const HeadsetStudy
 // Runs the session's remaining trials and questionnaire on the headset. `begin` is called once
 // the headset and device are known (runtime name, device name) and returns the session id (a
 // new session, or the one being resumed). observer: answers for the participant (simulated
-// runs), or null when a person holds the controller.
+// runs), or null when a person holds the controller. imported: the protocol's glTF scenes,
+// loaded (and their files recorded) before the session began.
 study::SessionStatus run_headset_session(
     const HeadsetStudyOptions& options, const GlobalOptions& global, study::StudyStore& store,
-    const study::Protocol& protocol, study::Observer* observer,
+    const study::Protocol& protocol, ImportedStudyScenes imported, study::Observer* observer,
     const std::function<double(const study::ScheduledTrial&)>& trial_error_px,
     const std::function<std::int64_t(const std::string& runtime, const std::string& device)>&
         begin);

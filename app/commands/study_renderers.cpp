@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <utility>
 
 #include "app/commands/image_quality_options.h"
 #include "common/result.h"
@@ -21,8 +22,28 @@ modes::RenderModeChoice renderer_mode(study::RenderMode mode) {
     return *parsed;
 }
 
+namespace {
+
+// A built-in scene generated at the session's detail, or the imported scene of a file.
+std::unique_ptr<scenes::Scene> take_scene(const std::string& name, scenes::Detail detail,
+                                          ImportedStudyScenes& imported) {
+    if (const auto id = scenes::parse_scene_id(name)) {
+        return std::make_unique<scenes::Scene>(scenes::generate_scene(*id, detail));
+    }
+    const auto entry = imported.find(name);
+    if (entry == imported.end()) {
+        throw UserError("scene '" + name +
+                        "' names a glTF file, but the session has no loaded scene for it (its "
+                        "files are recorded when the session begins)");
+    }
+    return std::make_unique<scenes::Scene>(std::move(entry->second.scene));
+}
+
+}  // namespace
+
 StudyRenderers::StudyRenderers(const vk_core::Context& ctx, const study::Protocol& protocol,
-                               vk::Extent2D extent, const study::RenderSettings& render) {
+                               vk::Extent2D extent, const study::RenderSettings& render,
+                               ImportedStudyScenes imported) {
     const double nearest =
         *std::min_element(protocol.mono_planes.begin(), protocol.mono_planes.end());
     const auto detail = scenes::parse_detail(render.detail);
@@ -40,8 +61,7 @@ StudyRenderers::StudyRenderers(const vk_core::Context& ctx, const study::Protoco
     std::uint64_t scene_bytes = 0;
     for (const std::string& name : protocol.scenes) {
         std::cerr << "preparing " << name << "\n";
-        auto scene = std::make_unique<scenes::Scene>(
-            scenes::generate_scene(*scenes::parse_scene_id(name), *detail));
+        auto scene = take_scene(name, *detail, imported);
         // Geometry, chunk table and shadow map once per scene, for all its alternatives.
         const std::uint64_t before_scene = vk_core::live_device_bytes();
         auto resources = std::make_shared<modes::SceneResources>(ctx, *scene, options.shadow);

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "app/commands/study_scenes.h"
 #include "renderer/modes/mode_renderer.h"
 #include "scenes/scene.h"
 #include "study/protocol.h"
@@ -23,10 +24,13 @@ modes::RenderModeChoice renderer_mode(study::RenderMode mode);
 // that no trial waits for one.
 class StudyRenderers {
   public:
-    // The protocol's scenes at the session's detail, rendered with its [render] settings into
-    // eyes of `extent`; C's target sized once for the protocol's nearest m.
+    // The protocol's scenes, rendered with its [render] settings into eyes of `extent`; C's
+    // target sized once for the protocol's nearest m. Built-in scenes are generated at the
+    // session's detail; scenes that name glTF files are taken from `imported` (loaded and
+    // digested before the session began): one missing there is a UserError.
     StudyRenderers(const vk_core::Context& ctx, const study::Protocol& protocol,
-                   vk::Extent2D extent, const study::RenderSettings& render);
+                   vk::Extent2D extent, const study::RenderSettings& render,
+                   ImportedStudyScenes imported);
     modes::ModeRenderer& renderer(const std::string& scene, study::RenderMode mode) {
         return *renderers_.at({scene, mode});
     }

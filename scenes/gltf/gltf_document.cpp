@@ -1,5 +1,6 @@
 #include "scenes/gltf/gltf_document.h"
 
+#include <algorithm>
 #include <exception>
 #include <span>
 #include <string>
@@ -34,6 +35,7 @@ bool keep_encoded_image(tinygltf::Image* image, int /*image_index*/, std::string
 // tinygltf would also look in the working directory ("./name") for what it does not find there.
 struct FileAccess {
     std::string base_directory;
+    std::vector<std::filesystem::path>* files_read;  // GltfDocument::files_read
 };
 
 bool file_exists(const std::string& path, void* user_data) {
@@ -48,13 +50,18 @@ std::string expand_path(const std::string& path, void* /*user_data*/) {
 }
 
 bool read_whole_file(std::vector<unsigned char>* out, std::string* error, const std::string& path,
-                     void* /*user_data*/) {
+                     void* user_data) {
     Result<std::vector<unsigned char>> bytes = read_file_bytes(path);
     if (!bytes) {
         *error = bytes.error().message;
         return false;
     }
     *out = std::move(bytes).value();
+    auto& files_read = *static_cast<const FileAccess*>(user_data)->files_read;
+    const std::filesystem::path read = std::filesystem::path(path).lexically_normal();
+    if (std::find(files_read.begin(), files_read.end(), read) == files_read.end()) {
+        files_read.push_back(read);
+    }
     return true;
 }
 
@@ -106,6 +113,7 @@ Result<GltfDocument> read_gltf_document(const std::filesystem::path& file) {
         bytes = std::move(read).value();
     }
     if (bytes.empty()) return Error{"is empty"};
+    document.files_read.push_back(file.lexically_normal());
     const std::span<const unsigned char> all(bytes);
     const bool glb = is_glb(all);
     std::string_view json_text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
@@ -122,7 +130,7 @@ Result<GltfDocument> read_gltf_document(const std::filesystem::path& file) {
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keep_encoded_image, nullptr);
-    FileAccess access{document.base_directory.string()};
+    FileAccess access{document.base_directory.string(), &document.files_read};
     loader.SetFsCallbacks({&file_exists, &expand_path, &read_whole_file, &refuse_write, &access});
     std::string error;
     std::string warning;

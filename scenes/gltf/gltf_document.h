@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <vector>
 
 #include "common/result.h"
 #include "scenes/gltf/tiny_gltf_config.h"
@@ -17,6 +18,9 @@ struct GltfDocument {
     // Images are not decoded here: a URI image's image.image holds the file's encoded bytes
     // (as_is set), a buffer-view image's is empty; texture_decode.h decodes what a scene uses.
     std::filesystem::path base_directory;  // where the file's relative URIs resolve
+    // Every file read: the .gltf/.glb first, then each external buffer and image (data: URIs
+    // read none), each once, in the order read. Evidence of what a study showed.
+    std::vector<std::filesystem::path> files_read;
 };
 
 // The error is one sentence without the file's name, e.g. "buffer 0: file \"Box0.bin\" not

@@ -153,6 +153,7 @@ Result<Scene> load(const std::filesystem::path& file, const GltfLoadOptions& opt
     if (!read) return read.error();
     GltfDocument& document = read.value();
     const tinygltf::Model& model = document.model;
+    report.files_read = document.files_read;
 
     Result<SceneInstances> instances = instantiate_scene(model);
     if (!instances) return instances.error();

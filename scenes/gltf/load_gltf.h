@@ -57,6 +57,10 @@ struct GltfLoadReport {
     std::size_t normals_generated = 0;             // vertices whose normal the loader computed
     std::size_t textures_without_texcoords = 0;    // primitives drawn without their texture
     std::vector<std::string> warnings;             // one line each, without the file name
+    // Every file the load read: the .gltf/.glb first, then its external buffers and images in
+    // the order read, each once (lexically normal paths as the loader opened them). What a
+    // study session records the digests of (docs/scenes.md).
+    std::vector<std::filesystem::path> files_read;
     double seconds = 0.0;
 };
 

@@ -109,7 +109,7 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"protocol_hash\": \"fnv1a64:cbf29ce484222325\", \"observer\": \"default\", \"runtime\": "
         "\"none\", "
         "\"hmd\": \"vive\", \"session_status\": \"running\", \"anti_aliasing\": \"taa\", "
-        "\"ssao\": \"off\", \"detail\": \"low\"},\n"
+        "\"ssao\": \"off\", \"detail\": \"low\", \"scene_files\": [], \"session_notes\": []},\n"
         "  {\"participant\": \"P01\", \"session\": 1, \"trial_index\": 2, \"block\": 0, "
         "\"scene\": \"spheres\", \"mono_plane\": 1.6, \"label1_mode\": \"stereo\", \"choice\": 1, "
         "\"chosen_mode\": \"stereo\", \"valid\": true, \"switches\": 2, \"time_label1_s\": 1.5, "
@@ -118,9 +118,45 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"protocol\": \"fink2019\", \"protocol_hash\": \"fnv1a64:cbf29ce484222325\", "
         "\"observer\": \"default\", "
         "\"runtime\": \"none\", \"hmd\": \"vive\", \"session_status\": \"running\", "
-        "\"anti_aliasing\": \"taa\", \"ssao\": \"off\", \"detail\": \"low\"}\n"
+        "\"anti_aliasing\": \"taa\", \"ssao\": \"off\", \"detail\": \"low\", "
+        "\"scene_files\": [], \"session_notes\": []}\n"
         "]\n";
     EXPECT_EQ(out.str(), expected);
+}
+
+// An imported scene's trial lists the files the scene was read from (only its own scene's), and
+// every trial of a session its notes; the CSV keeps the scene's label and has no such columns.
+TEST(StudyExport, JsonListsTheTrialsSceneFilesAndTheSessionsNotes) {
+    ExportData data = known_data();
+    const std::string digest = "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad";
+    SessionInfo& session = data.sessions.at(1);
+    session.scene_files = {{"models/room.gltf", 0, "/s/models/room.gltf", {120, digest}},
+                           {"models/room.gltf", 1, "/s/models/room \"1\".bin", {36, digest}},
+                           {"hall.glb", 0, "/s/hall.glb", {7, digest}}};
+    session.notes = {{"2027-01-01T10:00:00Z", "study resume --accept-changed-scenes: ..."}};
+    data.trials[1].trial.scene = "models/room.gltf";
+    std::ostringstream json;
+    write_json(data, json);
+    const std::string text = json.str();
+    const std::string notes =
+        "\"session_notes\": [{\"noted_utc\": \"2027-01-01T10:00:00Z\", \"note\": \"study resume "
+        "--accept-changed-scenes: ...\"}]}";
+    EXPECT_NE(text.find("\"scene_files\": [], " + notes + ",\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"scene\": \"models/room.gltf\", "), std::string::npos) << text;
+    EXPECT_NE(text.find("\"scene_files\": [{\"file_index\": 0, \"path\": \"/s/models/room.gltf\", "
+                        "\"size_bytes\": 120, \"sha256\": \"" +
+                        digest +
+                        "\"}, {\"file_index\": 1, \"path\": \"/s/models/room \\\"1\\\".bin\", "
+                        "\"size_bytes\": 36, \"sha256\": \"" +
+                        digest + "\"}], " + notes + "\n]"),
+              std::string::npos)
+        << text;
+    EXPECT_EQ(text.find("hall.glb"), std::string::npos) << "no trial shows hall.glb";
+    std::ostringstream csv;
+    write_csv(data, csv);
+    EXPECT_NE(csv.str().find(",models/room.gltf,1.6,"), std::string::npos) << csv.str();
+    EXPECT_EQ(csv.str().find("sha256"), std::string::npos);
+    EXPECT_EQ(csv.str().find(digest), std::string::npos);
 }
 
 TEST(StudyExport, EmptyExportsAreStillValid) {

@@ -2,6 +2,7 @@
 // Sect. 6), and every class of malformed protocol is refused before a session starts, with a
 // message that names the file, the line and the key.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -372,6 +373,18 @@ const MalformedCase kMalformedCases[] = {
      "\"spheres\"]",
      "\"sphere\"]",
      {"test.toml:2:", "'scenes'", "did you mean 'spheres'"}},
+    {"scene in an unsupported file format",
+     "\"landscape\"",
+     "\"room.obj\"",
+     {"test.toml:2:20:", "'scenes'", "'room.obj'", "a glTF file ending in .gltf or .glb"}},
+    {"scene file with a comma",
+     "\"landscape\"",
+     "\"a,b.glb\"",
+     {"test.toml:2:20:", "'scenes'", "scene file 'a,b.glb' has a comma"}},
+    {"scene file twice",
+     "\"landscape\", \"spheres\"",
+     "\"room.GLB\", \"room.GLB\"",
+     {"test.toml:2:32:", "'scenes'", "duplicate scene 'room.GLB'"}},
     {"unknown mode",
      "\"hybrid\"]",
      "\"hybird\"]",
@@ -543,6 +556,97 @@ const MalformedCase kMalformedCases[] = {
      "far = 1000\nrender = \"taa\"\n",
      {"test.toml:11:", "'render'", "table"}},
 };
+
+// Scenes that name glTF files (docs/scenes.md, "glTF scenes in a study"): a protocol file and its
+// scene files in a folder of their own.
+class ProtocolSceneFiles : public testing::Test {
+  protected:
+    void SetUp() override {
+        std::string pattern =
+            (std::filesystem::path(testing::TempDir()) / "protocol_scenes_XXXXXX").string();
+        ASSERT_NE(::mkdtemp(pattern.data()), nullptr);
+        root_ = pattern;
+        std::filesystem::create_directories(root_ / "protocols" / "models");
+        std::filesystem::create_directories(root_ / "shared");
+        touch(root_ / "protocols" / "models" / "room.glb");
+        touch(root_ / "shared" / "hall.gltf");
+    }
+    void TearDown() override { std::filesystem::remove_all(root_); }
+
+    static void touch(const std::filesystem::path& path) { std::ofstream(path) << "x"; }
+
+    // The protocol file protocols/p.toml with `scenes` as its second line.
+    std::filesystem::path write_protocol(const std::string& scenes) const {
+        const std::filesystem::path path = root_ / "protocols" / "p.toml";
+        std::ofstream(path) << "name = \"files\"\nscenes = " << scenes
+                            << "\nmono_planes = [3, 8]\nalternatives = [\"stereo\", \"hybrid\"]\n";
+        return path;
+    }
+
+    std::filesystem::path root_;
+};
+
+TEST_F(ProtocolSceneFiles, FileEntriesKeepTheirLabelAndResolveAgainstTheProtocolsFolder) {
+    const std::string absolute = (root_ / "shared" / "hall.gltf").string();
+    const Result<Protocol> p =
+        load_protocol(write_protocol("[\"beams\", \"models/room.glb\", \"" + absolute + "\"]"));
+    ASSERT_TRUE(p.ok()) << p.error().message;
+    EXPECT_EQ(p->scenes, (std::vector<std::string>{"beams", "models/room.glb", absolute}));
+    ASSERT_EQ(p->scene_files.size(), 2u);  // built-in scenes are no files
+    EXPECT_EQ(p->scene_files.at("models/room.glb"), root_ / "protocols" / "models" / "room.glb");
+    EXPECT_EQ(p->scene_files.at(absolute), root_ / "shared" / "hall.gltf");
+    EXPECT_TRUE(p->scene_files.at("models/room.glb").is_absolute());
+    // "../shared/hall.gltf" is the same file by another name: listed once only.
+    const Result<Protocol> twice =
+        load_protocol(write_protocol("[\"../shared/hall.gltf\", \"" + absolute + "\"]"));
+    ASSERT_FALSE(twice.ok());
+    EXPECT_NE(twice.error().message.find(":2:34: key 'scenes': scene file '" + absolute +
+                                         "' is the same file as '../shared/hall.gltf'"),
+              std::string::npos)
+        << twice.error().message;
+}
+
+TEST_F(ProtocolSceneFiles, AMissingFileIsALocatedProblem) {
+    const std::filesystem::path path =
+        write_protocol("[\"models/room.glb\", \"models/gone.gltf\", \"models\"]");
+    const Result<Protocol> p = load_protocol(path);
+    ASSERT_FALSE(p.ok());
+    const std::string& message = p.error().message;
+    // Column 30: the second element, where the user must look.
+    const std::string expected = path.string() + ":2:30: key 'scenes': scene file " +
+                                 "'models/gone.gltf' not found (looked for " +
+                                 (root_ / "protocols" / "models" / "gone.gltf").string() + ";";
+    EXPECT_NE(message.find(expected), std::string::npos) << message;
+    // "models" (a folder) is neither a built-in scene nor a file name: reported too.
+    EXPECT_NE(message.find(":2:50: key 'scenes': unknown scene 'models'"), std::string::npos)
+        << message;
+}
+
+TEST_F(ProtocolSceneFiles, AFolderNamedLikeAFileIsRefused) {
+    std::filesystem::create_directories(root_ / "protocols" / "odd.glb");
+    const Result<Protocol> p = load_protocol(write_protocol("[\"odd.glb\"]"));
+    ASSERT_FALSE(p.ok());
+    EXPECT_NE(p.error().message.find(":2:11: key 'scenes': scene file 'odd.glb' is not a regular "
+                                     "file ("),
+              std::string::npos)
+        << p.error().message;
+}
+
+// Text alone (a session's stored protocol, read by resume and analyze on any machine) has no
+// folder: file entries are checked for their form only and resolve nowhere.
+TEST_F(ProtocolSceneFiles, TextWithoutAFolderChecksTheFormOnly) {
+    const Result<Protocol> p =
+        parse_protocol(mutated("\"landscape\"", "\"nowhere/x.glb\""), "session 1");
+    ASSERT_TRUE(p.ok()) << p.error().message;
+    EXPECT_EQ(p->scenes, (std::vector<std::string>{"beams", "nowhere/x.glb", "spheres"}));
+    EXPECT_TRUE(p->scene_files.empty());
+    // With a folder, the same text is checked against it.
+    const Result<Protocol> checked = parse_protocol(mutated("\"landscape\"", "\"models/room.glb\""),
+                                                    "in folder", root_ / "protocols");
+    ASSERT_TRUE(checked.ok()) << checked.error().message;
+    EXPECT_EQ(checked->scene_files.at("models/room.glb"),
+              root_ / "protocols" / "models" / "room.glb");
+}
 
 INSTANTIATE_TEST_SUITE_P(AllClasses, MalformedProtocol, testing::ValuesIn(kMalformedCases),
                          [](const testing::TestParamInfo<MalformedCase>& info) {

@@ -177,10 +177,10 @@ TEST_F(StudyStoreTest, UsesWalAndRecordsTheSchemaVersion) {
     RawDb raw(db_);
     EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
     EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
-    EXPECT_EQ(StudyStore::kSchemaVersion, 2);
+    EXPECT_EQ(StudyStore::kSchemaVersion, 3);
     EXPECT_EQ(raw.integer("PRAGMA application_id"), 0x4D505354);
-    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"),
-              6);  // version 2 added frames
+    // Version 2 added frames, version 3 scene_files and session_notes.
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 8);
 }
 
 TEST_F(StudyStoreTest, FilesAreReadableByTheOwnerOnly) {
@@ -427,15 +427,15 @@ TEST_F(StudyStoreTest, RefusesANewerSchemaWithoutTouchingIt) {
     { ASSERT_TRUE(open_store()); }
     {
         RawDb raw(db_);
-        ASSERT_EQ(raw.exec("PRAGMA user_version = 3"), SQLITE_OK);
+        ASSERT_EQ(raw.exec("PRAGMA user_version = 4"), SQLITE_OK);
     }
     const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
     ASSERT_FALSE(store.ok());
     const std::string& message = store.error().message;
-    EXPECT_TRUE(contains(message, "schema version 3, newer than this build")) << message;
+    EXPECT_TRUE(contains(message, "schema version 4, newer than this build")) << message;
     EXPECT_TRUE(contains(message, db_.string())) << message;
     RawDb raw(db_);
-    EXPECT_EQ(raw.integer("PRAGMA user_version"), 3);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 4);
     EXPECT_TRUE(fs::exists(db_));
 }
 
@@ -701,7 +701,7 @@ INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame)
     ASSERT_TRUE(store);
     {
         RawDb raw(db_);
-        EXPECT_EQ(raw.integer("PRAGMA user_version"), 2);
+        EXPECT_EQ(raw.integer("PRAGMA user_version"), 3);
     }
     const Result<SessionInfo> info = store->session(1);
     ASSERT_TRUE(info.ok()) << info.error().message;
@@ -725,6 +725,159 @@ INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame)
     store->queue_frame(1, make_frame(1, 1));
     ASSERT_TRUE(store->flush_frames().ok());
     EXPECT_EQ(store->frames(1)->size(), 1u);
+}
+
+// Imported scenes (schema version 3): the files each was read from, with size and SHA-256.
+constexpr std::string_view kDigestA =
+    "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad";
+constexpr std::string_view kDigestB =
+    "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855";
+
+// make_test_schedule with its second block showing the glTF file "models/room.gltf".
+Schedule make_imported_schedule(int participant_index) {
+    Schedule schedule = make_test_schedule(participant_index);
+    schedule.block_order[1] = "models/room.gltf";
+    for (ScheduledTrial& t : schedule.trials)
+        if (t.block == 1) t.scene = "models/room.gltf";
+    return schedule;
+}
+
+std::vector<SceneFileRecord> room_records() {
+    return {{"models/room.gltf", 0, "/study/models/room.gltf", {1234, std::string(kDigestA)}},
+            {"models/room.gltf", 1, "/study/models/room.bin", {0, std::string(kDigestB)}}};
+}
+
+TEST_F(StudyStoreTest, StoresTheSceneFilesWithTheSessionDurably) {
+    SessionInfo info = make_info("P01");
+    info.scene_files = room_records();
+    std::int64_t id = 0;
+    {
+        auto store = open_store();
+        const Result<std::int64_t> begun = store->begin_session(info, make_imported_schedule(0));
+        ASSERT_TRUE(begun.ok()) << begun.error().message;
+        id = *begun;
+        // Committed with the session: another connection sees the rows while the store is open.
+        RawDb raw(db_);
+        EXPECT_EQ(raw.integer("SELECT count(*) FROM scene_files WHERE session_id = " +
+                              std::to_string(id)),
+                  2);
+        EXPECT_EQ(raw.text("SELECT sha256 FROM scene_files WHERE file_index = 0"), kDigestA);
+        EXPECT_EQ(raw.integer("SELECT size_bytes FROM scene_files WHERE file_index = 0"), 1234);
+        EXPECT_EQ(raw.text("SELECT path FROM scene_files WHERE file_index = 1"),
+                  "/study/models/room.bin");
+    }
+    auto store = open_store();
+    const Result<SessionInfo> read = store->session(id);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    EXPECT_EQ(read->scene_files, room_records());
+    EXPECT_TRUE(read->notes.empty());
+    // The trials keep the label as written.
+    EXPECT_EQ(store->load_schedule(id)->trials.back().scene, "models/room.gltf");
+}
+
+TEST_F(StudyStoreTest, RefusesSceneFilesThatCannotBeEvidenceWritingNothing) {
+    auto store = open_store();
+    const auto refused = [&](std::vector<SceneFileRecord> records, const std::string& why) {
+        SessionInfo info = make_info("P01");
+        info.scene_files = std::move(records);
+        const Result<std::int64_t> id = store->begin_session(info, make_imported_schedule(0));
+        EXPECT_FALSE(id.ok()) << why;
+        if (!id.ok()) EXPECT_TRUE(contains(id.error().message, why)) << id.error().message;
+    };
+    refused({}, "scene 'models/room.gltf' names a glTF file but no record of the file itself");
+    refused({room_records()[1]}, "no record of the file itself (file 0)");
+    std::vector<SceneFileRecord> records = room_records();
+    records[1].path = "models/room.bin";
+    refused(records, "the path 'models/room.bin' is not absolute");
+    records = room_records();
+    records[0].digest.sha256[3] = 'F';
+    refused(records, "is not a SHA-256 digest in 64 lowercase hex digits");
+    records = room_records();
+    records[1].scene = "hall.glb";
+    refused(records, "scene file record of 'hall.glb' (file 1): the schedule shows no such scene");
+    records = room_records();
+    records[1].file_index = 0;
+    refused(records, "scene file record of 'models/room.gltf' (file 0) is listed twice");
+    EXPECT_EQ(*store->participant_count(), 0);
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM scene_files"), 0);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sessions"), 0);
+}
+
+TEST_F(StudyStoreTest, SessionNotesAreKeptInOrder) {
+    auto store = open_store();
+    const std::int64_t id = begin(*store, "P01");
+    ASSERT_TRUE(store->add_session_note(id, "first").ok());
+    ASSERT_TRUE(store->add_session_note(id, "second, with \"quotes\"").ok());
+    const Result<SessionInfo> info = store->session(id);
+    ASSERT_TRUE(info.ok()) << info.error().message;
+    ASSERT_EQ(info->notes.size(), 2u);
+    EXPECT_EQ(info->notes[0].text, "first");
+    EXPECT_EQ(info->notes[1].text, "second, with \"quotes\"");
+    EXPECT_EQ(info->notes[0].noted_utc.size(), 20u);  // YYYY-MM-DDThh:mm:ssZ
+    EXPECT_FALSE(store->add_session_note(id, "").ok());
+    const Result<bool> unknown = store->add_session_note(id + 1, "x");
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_TRUE(contains(unknown.error().message, "no session " + std::to_string(id + 1)))
+        << unknown.error().message;
+}
+
+// A database of schema version 2 (made here from versions 1 and 2 of the schema, with rows as
+// that release wrote them: a session, its trials, an event, a frame) opens, migrates to version
+// 3, resumes, exports, and its new tables take rows.
+TEST_F(StudyStoreTest, MigratesAVersion2DatabaseForward) {
+    {
+        RawDb raw(db_);
+        ASSERT_EQ(raw.exec(std::string(store_migrations()[0])), SQLITE_OK);
+        ASSERT_EQ(raw.exec(std::string(store_migrations()[1])), SQLITE_OK);
+        ASSERT_EQ(raw.exec("PRAGMA application_id = " + std::to_string(kStoreApplicationId)),
+                  SQLITE_OK);
+        ASSERT_EQ(raw.exec("PRAGMA user_version = 2"), SQLITE_OK);
+        const char* rows = R"sql(
+INSERT INTO participants VALUES (1, 'P08', 0, '2027-01-01T10:00:00Z');
+INSERT INTO sessions (id, participant_id, protocol_name, protocol_hash, protocol_text, seed,
+    block_order, software_version, hmd, runtime, device, observer, started_utc, status,
+    render_anti_aliasing, render_ssao, render_detail)
+    VALUES (1, 1, 'demo', '0000000000000002', 'name = "demo"', '12', 'spheres',
+            'monoplane 0.1.0', 'vive', 'simulated', 'llvmpipe', 'default',
+            '2027-01-01T10:00:01Z', 'running', 'taa', 'off', 'test');
+INSERT INTO trials (session_id, trial_index, practice, block, scene, mono_plane,
+    label1_alternative, label1_mode, label2_mode)
+    VALUES (1, 0, 0, 0, 'spheres', 8.0, 0, 'stereo', 'hybrid');
+INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame)
+    VALUES (1, 0, 'shown', 1, 5, 3);
+INSERT INTO frames (session_id, frame, trial_index, shown, display_time_ns, cpu_ms, missed)
+    VALUES (1, 3, 0, 'label1', 100, 1.5, 0);
+)sql";
+        ASSERT_EQ(raw.exec(rows), SQLITE_OK) << sqlite3_errmsg(raw.db);
+    }
+    auto store = open_store();
+    ASSERT_TRUE(store);
+    {
+        RawDb raw(db_);
+        EXPECT_EQ(raw.integer("PRAGMA user_version"), 3);
+        EXPECT_EQ(raw.text("PRAGMA integrity_check"), "ok");
+    }
+    const Result<SessionInfo> info = store->session(1);
+    ASSERT_TRUE(info.ok()) << info.error().message;
+    EXPECT_EQ(info->render, (RenderSettings{"taa", "off", "test"}));
+    EXPECT_TRUE(info->scene_files.empty());  // version 2 showed built-in scenes only
+    EXPECT_EQ(store->frames(1)->size(), 1u);
+    EXPECT_EQ(*store->first_undecided_trial(1), 0);
+    EXPECT_EQ(*store->next_frame_number(1), 4);
+    TrialOutcome outcome;
+    outcome.choice = 2;
+    outcome.chosen_mode = RenderMode::Hybrid;
+    ASSERT_TRUE(store->record_outcome(1, 0, outcome).ok());
+    ASSERT_TRUE(store->add_session_note(1, "migrated").ok());
+    EXPECT_EQ(store->session(1)->notes.size(), 1u);
+    // A new session with an imported scene in the migrated file.
+    SessionInfo imported = make_info("P09");
+    imported.scene_files = room_records();
+    const Result<std::int64_t> id = store->begin_session(imported, make_imported_schedule(1));
+    ASSERT_TRUE(id.ok()) << id.error().message;
+    EXPECT_EQ(store->session(*id)->scene_files, room_records());
+    EXPECT_EQ(store->trials()->size(), 9u);
 }
 
 }  // namespace
