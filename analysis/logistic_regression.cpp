@@ -6,9 +6,11 @@
 #include <set>
 
 #include <boost/math/distributions/normal.hpp>
+#include <boost/math/distributions/students_t.hpp>
 
 #include "analysis/exclusions.h"
 #include "analysis/linear_algebra.h"
+#include "analysis/small_sample_covariance.h"
 
 namespace monoplane::analysis {
 namespace {
@@ -69,10 +71,11 @@ Result<Design> build_design(const std::vector<TrialRow>& trials, const LogisticO
     // G - 1 (the scores sum to zero at the estimate): with G <= K some coefficient gets a zero
     // or undefined standard error (Cameron and Miller 2015, sect. VI).
     if (participants.size() <= k)
-        return Error{"logistic regression: clustered standard errors need more participants "
-                     "than coefficients; the trials come from " +
-                     std::to_string(participants.size()) + " participant(s) for " +
-                     std::to_string(k) + " coefficients"};
+        return Error{
+            "logistic regression: clustered standard errors need more participants "
+            "than coefficients; the trials come from " +
+            std::to_string(participants.size()) + " participant(s) for " + std::to_string(k) +
+            " coefficients"};
     if (distances.size() < 2)
         return Error{
             "logistic regression: the trials have only one distance, so its effect "
@@ -139,31 +142,88 @@ Matrix information(const Design& d, const std::vector<double>& mu) {
     return info;
 }
 
-}  // namespace
-
-Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
-                                     const LogisticOptions& options) {
-    Result<Design> built = build_design(trials, options);
-    if (!built) return built.error();
-    const Design& d = *built;
+// Sandwich: bread = (X'WX)^-1 at the estimate, meat = sum_g s_g s_g', scaled by the CR1 factor
+// G/(G-1) * (N-1)/(N-K).
+Matrix cr1_covariance(const Design& d, const std::vector<double>& mu, const Matrix& bread) {
     const std::size_t n = d.y.size();
     const std::size_t k = d.x.columns();
-    const Error singular{
-        "logistic regression: the design is singular (a column is a combination of others, e.g. "
-        "a scene seen at one distance only); fit without scene terms"};
+    std::vector<std::vector<double>> cluster_score(d.clusters, std::vector<double>(k, 0.0));
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < k; ++j)
+            cluster_score[d.cluster[i]][j] += d.x(i, j) * (d.y[i] - mu[i]);
+    Matrix meat(k, k);
+    for (const std::vector<double>& s : cluster_score)
+        for (std::size_t a = 0; a < k; ++a)
+            for (std::size_t b = 0; b < k; ++b) meat(a, b) += s[a] * s[b];
+    const double g = d.clusters;
+    const double correction = g / (g - 1.0) * (static_cast<double>(n) - 1.0) /
+                              (static_cast<double>(n) - static_cast<double>(k));
+    Matrix covariance = bread * meat * bread;
+    for (std::size_t a = 0; a < k; ++a)
+        for (std::size_t b = 0; b < k; ++b) covariance(a, b) *= correction;
+    return covariance;
+}
 
-    // Newton-Raphson (= IRLS for the canonical logit link) from b = 0, halving a step that
-    // lowers the likelihood.
-    std::vector<double> beta(k, 0.0);
-    State state = evaluate(d, beta);
-    LogisticFit fit;
+// The CR1 columns of one coefficient: z test and interval from the normal distribution.
+Result<Coefficient> coefficient(const std::string& name, double estimate, double variance) {
+    if (!std::isfinite(variance) || !(variance > 0.0)) {
+        return Error{"logistic regression: the clustered variance of '" + name +
+                     "' is not positive: the participants' choices do not vary enough "
+                     "to estimate it"};
+    }
+    const boost::math::normal_distribution<double> normal;
+    const double z975 = boost::math::quantile(normal, 0.975);
+    Coefficient c;
+    c.name = name;
+    c.estimate = estimate;
+    c.std_error = std::sqrt(variance);
+    c.z = c.estimate / c.std_error;
+    c.p = 2.0 * boost::math::cdf(boost::math::complement(normal, std::abs(c.z)));
+    c.odds_ratio = std::exp(c.estimate);
+    c.ci_lower = std::exp(c.estimate - z975 * c.std_error);
+    c.ci_upper = std::exp(c.estimate + z975 * c.std_error);
+    return c;
+}
+
+// The CR2 columns: t test on `df` degrees of freedom. A variance of 0 (a coefficient the
+// clusters do not inform beyond what CR1 saw) leaves NaN, which the outputs write as empty/null.
+void add_small_sample_test(Coefficient& c, double variance, double df) {
+    c.df_cr2 = df;
+    c.std_error_cr2 = variance > 0.0 ? std::sqrt(variance) : NAN;
+    c.t_cr2 = c.estimate / c.std_error_cr2;
+    if (!std::isfinite(c.t_cr2) || !(df > 0.0)) {
+        c.p_cr2 = c.ci_lower_cr2 = c.ci_upper_cr2 = NAN;
+        return;
+    }
+    const boost::math::students_t_distribution<double> t(df);
+    const double t975 = boost::math::quantile(t, 0.975);
+    c.p_cr2 = 2.0 * boost::math::cdf(boost::math::complement(t, std::abs(c.t_cr2)));
+    c.ci_lower_cr2 = std::exp(c.estimate - t975 * c.std_error_cr2);
+    c.ci_upper_cr2 = std::exp(c.estimate + t975 * c.std_error_cr2);
+}
+
+// The maximum of the likelihood: Newton-Raphson (= IRLS for the canonical logit link) from
+// b = 0, halving a step that lowers the likelihood; nullopt when X'WX becomes singular.
+struct Maximum {
+    std::vector<double> beta;
+    State state;
+    int iterations = 0;
+    bool converged = false;
+};
+
+std::optional<Maximum> newton_raphson(const Design& d) {
+    const std::size_t n = d.y.size();
+    const std::size_t k = d.x.columns();
+    Maximum m;
+    m.beta.assign(k, 0.0);
+    m.state = evaluate(d, m.beta);
     for (int iteration = 1; iteration <= kMaxIterations; ++iteration) {
         const std::optional<Matrix> covariance =
-            inverse_positive_definite(information(d, state.mu));
-        if (!covariance) return singular;
+            inverse_positive_definite(information(d, m.state.mu));
+        if (!covariance) return std::nullopt;
         std::vector<double> score(k, 0.0);
         for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = 0; j < k; ++j) score[j] += d.x(i, j) * (d.y[i] - state.mu[i]);
+            for (std::size_t j = 0; j < k; ++j) score[j] += d.x(i, j) * (d.y[i] - m.state.mu[i]);
         std::vector<double> step(k, 0.0);
         for (std::size_t a = 0; a < k; ++a)
             for (std::size_t b = 0; b < k; ++b) step[a] += (*covariance)(a, b) * score[b];
@@ -172,23 +232,44 @@ Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
         State next_state;
         double scale = 1.0;
         for (int halving = 0; halving < 30; ++halving, scale /= 2.0) {
-            for (std::size_t j = 0; j < k; ++j) next[j] = beta[j] + scale * step[j];
+            for (std::size_t j = 0; j < k; ++j) next[j] = m.beta[j] + scale * step[j];
             next_state = evaluate(d, next);
             if (std::isfinite(next_state.log_likelihood) &&
-                next_state.log_likelihood >= state.log_likelihood - 1e-12)
+                next_state.log_likelihood >= m.state.log_likelihood - 1e-12)
                 break;
         }
         // Deviance = -2 log-likelihood for 0/1 outcomes; R's convergence test.
         const double deviance = -2.0 * next_state.log_likelihood;
-        const double change = std::abs(deviance + 2.0 * state.log_likelihood);
-        beta = next;
-        state = std::move(next_state);
-        fit.iterations = iteration;
+        const double change = std::abs(deviance + 2.0 * m.state.log_likelihood);
+        m.beta = next;
+        m.state = std::move(next_state);
+        m.iterations = iteration;
         if (change / (std::abs(deviance) + 0.1) < kDevianceTolerance) {
-            fit.converged = true;
+            m.converged = true;
             break;
         }
     }
+    return m;
+}
+
+}  // namespace
+
+Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
+                                     const LogisticOptions& options) {
+    Result<Design> built = build_design(trials, options);
+    if (!built) return built.error();
+    const Design& d = *built;
+    const std::size_t k = d.x.columns();
+    const Error singular{
+        "logistic regression: the design is singular (a column is a combination of others, e.g. "
+        "a scene seen at one distance only); fit without scene terms"};
+    const std::optional<Maximum> maximum = newton_raphson(d);
+    if (!maximum) return singular;
+    const std::vector<double>& beta = maximum->beta;
+    const State& state = maximum->state;
+    LogisticFit fit;
+    fit.iterations = maximum->iterations;
+    fit.converged = maximum->converged;
     const Error separation{
         "logistic regression: the choices are (quasi-)completely separated by the predictors "
         "(fitted probabilities of 0 or 1): the estimates have no finite maximum; report the "
@@ -197,43 +278,18 @@ Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
     for (double mu : state.mu)
         if (mu < kBoundaryProbability || mu > 1.0 - kBoundaryProbability) return separation;
 
-    // Sandwich: bread = (X'WX)^-1 at the estimate, meat = sum_g s_g s_g'.
     const std::optional<Matrix> bread = inverse_positive_definite(information(d, state.mu));
     if (!bread) return singular;
-    std::vector<std::vector<double>> cluster_score(d.clusters, std::vector<double>(k, 0.0));
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < k; ++j)
-            cluster_score[d.cluster[i]][j] += d.x(i, j) * (d.y[i] - state.mu[i]);
-    Matrix meat(k, k);
-    for (const std::vector<double>& s : cluster_score)
-        for (std::size_t a = 0; a < k; ++a)
-            for (std::size_t b = 0; b < k; ++b) meat(a, b) += s[a] * s[b];
-    const double g = d.clusters;
-    const double correction = g / (g - 1.0) * (static_cast<double>(n) - 1.0) /
-                              (static_cast<double>(n) - static_cast<double>(k));
-    const Matrix covariance = *bread * meat * *bread;
-
-    const boost::math::normal_distribution<double> normal;
-    const double z975 = boost::math::quantile(normal, 0.975);
+    const Matrix cr1 = cr1_covariance(d, state.mu, *bread);
+    const SmallSampleCovariance cr2 =
+        cr2_covariance({d.x, d.y, state.mu, d.cluster, d.clusters, *bread});
     for (std::size_t j = 0; j < k; ++j) {
-        Coefficient c;
-        c.name = d.names[j];
-        c.estimate = beta[j];
-        const double variance = correction * covariance(j, j);
-        if (!std::isfinite(variance) || !(variance > 0.0)) {
-            return Error{"logistic regression: the clustered variance of '" + c.name +
-                         "' is not positive: the participants' choices do not vary enough "
-                         "to estimate it"};
-        }
-        c.std_error = std::sqrt(variance);
-        c.z = c.estimate / c.std_error;
-        c.p = 2.0 * boost::math::cdf(boost::math::complement(normal, std::abs(c.z)));
-        c.odds_ratio = std::exp(c.estimate);
-        c.ci_lower = std::exp(c.estimate - z975 * c.std_error);
-        c.ci_upper = std::exp(c.estimate + z975 * c.std_error);
-        fit.coefficients.push_back(c);
+        Result<Coefficient> c = coefficient(d.names[j], beta[j], cr1(j, j));
+        if (!c) return c.error();
+        add_small_sample_test(c.value(), cr2.covariance(j, j), cr2.satterthwaite_df[j]);
+        fit.coefficients.push_back(std::move(c).value());
     }
-    fit.n = static_cast<int>(n);
+    fit.n = static_cast<int>(d.y.size());
     fit.clusters = d.clusters;
     fit.log_likelihood = state.log_likelihood;
     fit.distance_term = d.names[1];

@@ -25,6 +25,15 @@ struct Coefficient {
     double p = 1;                       // two-sided, standard normal
     double odds_ratio = 1;              // exp(estimate)
     double ci_lower = 0, ci_upper = 0;  // 95 % interval of the odds ratio: exp(b -+ 1.96 se)
+    // Small-sample inference (small_sample_covariance.h), which holds its error rate with few
+    // participants: the CR2 standard error, t = estimate / std_error_cr2 referred to Student's t
+    // with df_cr2 (Satterthwaite) degrees of freedom, its two-sided p, and the odds ratio's 95 %
+    // interval exp(b -+ t(df_cr2, 0.975) std_error_cr2).
+    double std_error_cr2 = 0;
+    double t_cr2 = 0;
+    double df_cr2 = 0;
+    double p_cr2 = 1;
+    double ci_lower_cr2 = 0, ci_upper_cr2 = 0;
 };
 
 struct LogisticFit {
@@ -51,8 +60,9 @@ struct LogisticOptions {
 // method) to the analysable trials (others are skipped). Covariance: CR1 sandwich
 // G/(G-1) * (N-1)/(N-K) * B^-1 M B^-1 with B = X'WX, M = sum over participants g of
 // s_g s_g', s_g = sum of x_i (y_i - p_i) over g's trials; as Stata's vce(cluster) and statsmodels'
-// cov_type="cluster" default. Errors: no more trials than coefficients, fewer than 2
-// participants, fewer than 2 distances, a distance <= 0 with log2_distance, a singular design
+// cov_type="cluster" default, with normal (z) tests; and beside it CR2 with Satterthwaite t tests
+// (the *_cr2 fields). May be called any time. Errors: no more trials than coefficients, fewer than
+// 2 participants, fewer than 2 distances, a distance <= 0 with log2_distance, a singular design
 // (e.g. a scene confounded with distance), (quasi-)complete separation (one outcome only, a
 // scene where everyone chose the same, fitted probabilities of 0 or 1, or no convergence).
 Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,

@@ -9,7 +9,8 @@
 
 namespace monoplane::analysis::report {
 
-PowerPoint power_point(int participants, int runs, int detected, int not_estimable) {
+PowerPoint power_point(int participants, int runs, int detected, int not_estimable,
+                       int detected_cr2) {
     PowerPoint p;
     p.participants = participants;
     p.runs = runs;
@@ -18,6 +19,10 @@ PowerPoint power_point(int participants, int runs, int detected, int not_estimab
     const Proportion proportion{detected, runs};
     p.power = estimate(proportion);
     p.wilson = wilson_interval(proportion);
+    p.detected_cr2 = detected_cr2;
+    const Proportion proportion_cr2{detected_cr2, runs};
+    p.power_cr2 = estimate(proportion_cr2);
+    p.wilson_cr2 = wilson_interval(proportion_cr2);
     return p;
 }
 
@@ -33,13 +38,15 @@ std::vector<int> participant_grid(int max_participants) {
 }
 
 std::string power_csv(const PowerStudy& study) {
-    std::string out = csv_line(
-        {"participants", "runs", "detected", "not_estimable", "power", "ci_lower", "ci_upper"});
+    std::string out =
+        csv_line({"participants", "runs", "detected", "not_estimable", "power", "ci_lower",
+                  "ci_upper", "detected_cr2", "power_cr2", "ci_lower_cr2", "ci_upper_cr2"});
     for (const PowerPoint& p : study.points) {
-        out += csv_line({std::to_string(p.participants), std::to_string(p.runs),
-                         std::to_string(p.detected), std::to_string(p.not_estimable),
-                         number_text(p.power), number_text(p.wilson.lower),
-                         number_text(p.wilson.upper)});
+        out += csv_line(
+            {std::to_string(p.participants), std::to_string(p.runs), std::to_string(p.detected),
+             std::to_string(p.not_estimable), number_text(p.power), number_text(p.wilson.lower),
+             number_text(p.wilson.upper), std::to_string(p.detected_cr2), number_text(p.power_cr2),
+             number_text(p.wilson_cr2.lower), number_text(p.wilson_cr2.upper)});
     }
     return out;
 }
@@ -65,6 +72,10 @@ std::string power_json(const PowerStudy& study) {
             .value("power", p.power)
             .value("ci_lower", p.wilson.lower)
             .value("ci_upper", p.wilson.upper)
+            .value("detected_cr2", p.detected_cr2)
+            .value("power_cr2", p.power_cr2)
+            .value("ci_lower_cr2", p.wilson_cr2.lower)
+            .value("ci_upper_cr2", p.wilson_cr2.upper)
             .end_object();
     }
     json.end_array().end_object();
@@ -78,28 +89,36 @@ std::string power_svg(const PowerStudy& study) {
                           std::to_string(study.runs) + " simulated studies per n, alpha " +
                           charts::format_number(study.alpha, 3);
     chart.text.note = "detected: p < alpha for " + study.distance_term +
-                      " (clustered logistic regression); bars: 95 % Wilson";
+                      " (clustered logistic regression); bars: 95 % Wilson; a null observer "
+                      "should stay at alpha";
     chart.x_axis.label = "participants n";
     chart.x_axis.include_zero = true;
     int largest = 1;
     for (const PowerPoint& p : study.points) largest = std::max(largest, p.participants);
     // A margin right of the largest n, so its error bar is not drawn on the frame.
     chart.x_axis.max = largest + std::max(0.5, 0.05 * largest);
-    chart.layout.legend = charts::LegendPosition::none;
     chart.y_axis.label = "power";
     chart.y_axis.min = 0.0;
     chart.y_axis.max = 1.0;
-    charts::LineSeries series;
-    series.name = "observer " + study.observer;
-    for (const PowerPoint& p : study.points) {
-        charts::DataPoint point;
-        point.x = p.participants;
-        point.y = p.power;
-        point.error = charts::ErrorRange{p.wilson.lower, p.wilson.upper};
-        series.points.push_back(point);
+    // The two tests side by side, nudged apart along n so their error bars stay readable.
+    const double dodge = 0.01 * largest;
+    for (const bool cr2 : {false, true}) {
+        charts::LineSeries series;
+        series.name = cr2 ? "CR2, Satterthwaite t" : "CR1, normal z";
+        series.marker = cr2 ? charts::MarkerShape::square : charts::MarkerShape::circle;
+        for (const PowerPoint& p : study.points) {
+            charts::DataPoint point;
+            point.x = p.participants + (cr2 ? dodge : -dodge);
+            point.y = cr2 ? p.power_cr2 : p.power;
+            const Interval& ci = cr2 ? p.wilson_cr2 : p.wilson;
+            point.error = charts::ErrorRange{ci.lower, ci.upper};
+            series.points.push_back(point);
+        }
+        chart.series.push_back(std::move(series));
     }
-    chart.series.push_back(std::move(series));
     chart.reference_lines.push_back({0.8, "0.8", "#000000"});
+    chart.reference_lines.push_back(
+        {study.alpha, "alpha " + charts::format_number(study.alpha, 3), "#777777"});
     return charts::render_svg(chart);
 }
 

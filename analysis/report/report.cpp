@@ -8,13 +8,14 @@
 #include <utility>
 
 #include "analysis/report/figures.h"
+#include "analysis/report/html_format.h"
+#include "analysis/report/regression_section.h"
 #include "analysis/report/text_output.h"
 #include "charts/svg_writer.h"
 
 namespace monoplane::analysis::report {
 namespace {
 
-using charts::format_fixed;
 using charts::xml_escaped;
 
 std::string joined(const std::set<std::string>& names) {
@@ -38,79 +39,6 @@ ChiSquareResult chi_square(const std::vector<TrialRow>& trials, const std::strin
     }
     return result;
 }
-
-// --- number formatting for people (HTML) ---------------------------------------------------
-
-std::string percent(double proportion, int decimals = 1) {
-    if (!std::isfinite(proportion)) return "&ndash;";
-    return format_fixed(100.0 * proportion, decimals) + "&nbsp;%";
-}
-
-std::string interval_percent(const Interval& interval) {
-    return "[" + format_fixed(100.0 * interval.lower, 1) + ", " +
-           format_fixed(100.0 * interval.upper, 1) + "]";
-}
-
-std::string fixed(double value, int decimals) {
-    if (!std::isfinite(value)) return "&ndash;";
-    return format_fixed(value, decimals);
-}
-
-std::string p_value(double p) {
-    if (!std::isfinite(p)) return "&ndash;";
-    if (p < 0.001) return "&lt;&nbsp;0.001";
-    return format_fixed(p, 3);
-}
-
-// "p &lt; 0.001" or "p = 0.042", for a sentence.
-std::string p_statement(double p) {
-    return p < 0.001 ? "p " + p_value(p) : "p = " + p_value(p);
-}
-
-// A coefficient's 95 % confidence interval of the odds ratio, "[0.9812, 1.2034]".
-std::string odds_ratio_ci(const Coefficient& c) {
-    return "[" + fixed(c.ci_lower, 4) + ", " + fixed(c.ci_upper, 4) + "]";
-}
-
-std::string metres(double m) {
-    if (!std::isfinite(m)) return "all";
-    return charts::format_number(m, 3);
-}
-
-std::string upper(std::string text) {
-    for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return text;
-}
-
-std::string scene_name(const std::string& scene) {
-    return scene.empty() ? "all scenes" : upper(scene);
-}
-
-// --- HTML building --------------------------------------------------------------------------
-
-struct Table {
-    std::vector<std::string> header;
-    std::vector<bool> numeric;                   // per column: right-aligned
-    std::vector<std::vector<std::string>> rows;  // cells are HTML already
-
-    std::string html() const {
-        std::string out = "<table>\n<thead><tr>";
-        for (std::size_t c = 0; c < header.size(); ++c) {
-            out += numeric[c] ? "<th class=\"num\">" : "<th>";
-            out += header[c] + "</th>";
-        }
-        out += "</tr></thead>\n<tbody>\n";
-        for (const auto& row : rows) {
-            out += "<tr>";
-            for (std::size_t c = 0; c < row.size(); ++c) {
-                out += c < numeric.size() && numeric[c] ? "<td class=\"num\">" : "<td>";
-                out += row[c] + "</td>";
-            }
-            out += "</tr>\n";
-        }
-        return out + "</tbody>\n</table>\n";
-    }
-};
 
 Table rate_table(const std::vector<ChoiceRate>& rates, bool with_scene, bool with_distance,
                  const std::string& test_mode) {
@@ -157,18 +85,6 @@ Table summary_table(const std::vector<GroupSummary>& groups, int decimals) {
     return t;
 }
 
-std::string inline_svg(const std::string& svg) {
-    // HTML parses <svg> into the SVG namespace by itself; leaving the namespace URL out keeps
-    // the page free of anything that looks like an external reference.
-    std::string out = svg;
-    const std::string ns = " xmlns=\"http://www.w3.org/2000/svg\"";
-    if (const auto at = out.find(ns); at != std::string::npos) out.erase(at, ns.size());
-    if (const auto at = out.find("<svg"); at != std::string::npos) {
-        out.insert(at + 4, " role=\"img\"");
-    }
-    return out;
-}
-
 const char* kCss = R"css(
 body { font-family: system-ui, -apple-system, "Segoe UI", "DejaVu Sans", Helvetica, Arial, sans-serif;
        max-width: 1000px; margin: 2em auto; padding: 0 1.2em; color: #222; line-height: 1.5; }
@@ -191,11 +107,6 @@ nav ul { columns: 2; }
 
 std::string chi_row_label(const ChiSquareResult& c) {
     return scene_name(c.scene);
-}
-
-std::string distance_description(const LogisticOptions& options) {
-    return options.log2_distance ? "log<sub>2</sub> of the mono-plane distance m (metres)"
-                                 : "the mono-plane distance m (metres)";
 }
 
 // The frame log's paragraph: how many data trials a headset recorded frame by frame, and a table
@@ -454,50 +365,7 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
          "correlated: the pooled test understates the uncertainty. It is reported because the "
          "paper reports it; the regression below is the valid test.</p>\n";
 
-    // Regression.
-    h += "<h2 id=\"regression\">Logistic regression with participant-clustered standard "
-         "errors</h2>\n";
-    h += "<p>Why: pooled chi-square and binomial tests count " + std::to_string(r.exclusions.kept) +
-         " decisions as independent, but they come from " +
-         std::to_string(r.analysed_participants) +
-         " participants who each made many of them (repeated measures), so they are not valid "
-         "inference. The model is a logistic regression of the decision (" +
-         test + " chosen = 1) on " + distance_description(r.logistic_options) +
-         (r.logistic_options.scene_terms ? " and the scene (indicator terms against the first "
-                                           "scene)"
-                                         : "") +
-         ", with cluster-robust (sandwich) standard errors clustered by participant, which stay "
-         "valid however a participant's decisions are correlated.</p>\n";
-    if (r.logistic) {
-        const LogisticFit& f = *r.logistic;
-        Table t;
-        t.header = {"term",       "estimate (log-odds)",      "clustered SE", "z", "p",
-                    "odds ratio", "95&nbsp;% CI (odds ratio)"};
-        t.numeric = {false, true, true, true, true, true, true};
-        for (const Coefficient& c : f.coefficients) {
-            const bool distance = c.name == f.distance_term;
-            const std::string name = "<code>" + xml_escaped(c.name) + "</code>";
-            t.rows.push_back({distance ? "<b>" + name + "</b>" : name, fixed(c.estimate, 4),
-                              fixed(c.std_error, 4), fixed(c.z, 3), p_value(c.p),
-                              fixed(c.odds_ratio, 4), odds_ratio_ci(c)});
-        }
-        h += t.html();
-        h += "<p class=\"note\">n = " + std::to_string(f.n) + " decisions in " +
-             std::to_string(f.clusters) + " clusters (participants); " +
-             std::to_string(f.iterations) + " Newton iterations, " +
-             (f.converged ? "converged" : "<b>not converged</b>") + "; log-likelihood " +
-             fixed(f.log_likelihood, 3) + ". The distance term is <code>" +
-             xml_escaped(f.distance_term) + "</code>.</p>\n";
-        for (const Coefficient& c : f.coefficients) {
-            if (c.name != f.distance_term) continue;
-            h += "<p class=\"key\">Distance effect: odds ratio " + fixed(c.odds_ratio, 4) +
-                 " per " + (r.logistic_options.log2_distance ? "doubling of m" : "metre of m") +
-                 " (95&nbsp;% CI " + odds_ratio_ci(c) + "), " + p_statement(c.p) + ".</p>\n";
-        }
-    } else {
-        h += "<p class=\"warn\"><b>Not estimable</b> on these data: " +
-             xml_escaped(r.logistic_error) + "</p>\n";
-    }
+    h += regression_section_html(r);
 
     // Order.
     h += "<h2 id=\"order\">Order effects: by first scene</h2>\n";
@@ -698,38 +566,7 @@ std::string summary_json(const AnalysisResults& r) {
     json.end_object();
     json.end_object();
 
-    json.begin_object("logistic")
-        .value("estimable", r.logistic.has_value())
-        .value("log2_distance", r.logistic_options.log2_distance)
-        .value("scene_terms", r.logistic_options.scene_terms)
-        .value("distance_term", r.logistic                         ? r.logistic->distance_term
-                                : r.logistic_options.log2_distance ? "log2_mono_plane_m"
-                                                                   : "mono_plane_m");
-    if (r.logistic) {
-        const LogisticFit& f = *r.logistic;
-        json.value("n", f.n)
-            .value("clusters", f.clusters)
-            .value("iterations", f.iterations)
-            .value("converged", f.converged)
-            .value("log_likelihood", f.log_likelihood)
-            .begin_array("coefficients");
-        for (const Coefficient& c : f.coefficients) {
-            json.begin_object()
-                .value("name", c.name)
-                .value("estimate", c.estimate)
-                .value("std_error", c.std_error)
-                .value("z", c.z)
-                .value("p", c.p)
-                .value("odds_ratio", c.odds_ratio)
-                .value("ci_lower", c.ci_lower)
-                .value("ci_upper", c.ci_upper)
-                .end_object();
-        }
-        json.end_array();
-    } else {
-        json.value("error", r.logistic_error);
-    }
-    json.end_object();
+    logistic_json(json, r);
 
     groups_json(json, r.decision_times, "decision_time_s");
     groups_json(json, r.switches, "switches");
@@ -753,20 +590,6 @@ std::string rates_csv(const std::vector<ChoiceRate>& rates) {
     std::string out = csv_line({"scene", "mono_plane", "test_chosen", "n", "rate", "wilson_lower",
                                 "wilson_upper", "cp_lower", "cp_upper", "binomial_p"});
     for (const ChoiceRate& r : rates) out += rate_fields(r);
-    return out;
-}
-
-std::string logistic_csv(const AnalysisResults& r) {
-    std::string out = csv_line({"term", "estimate", "std_error", "z", "p", "odds_ratio", "ci_lower",
-                                "ci_upper", "n", "clusters", "converged"});
-    if (!r.logistic) return out;
-    const LogisticFit& f = *r.logistic;
-    for (const Coefficient& c : f.coefficients) {
-        out += csv_line({c.name, number_text(c.estimate), number_text(c.std_error),
-                         number_text(c.z), number_text(c.p), number_text(c.odds_ratio),
-                         number_text(c.ci_lower), number_text(c.ci_upper), std::to_string(f.n),
-                         std::to_string(f.clusters), f.converged ? "TRUE" : "FALSE"});
-    }
     return out;
 }
 

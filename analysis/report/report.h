@@ -77,7 +77,6 @@ struct AnalysisResults {
     FrameTimingSummary frame_timing;  // headset sessions' frame logs
 };
 
-
 // Runs every statistic. Never fails: a test that cannot be computed on these data (too few
 // trials, one distance, separation) is recorded with its reason and the report says so.
 AnalysisResults analyse(const Dataset& data, const ReportOptions& options = {});

@@ -4,7 +4,8 @@
 // square row n), choices made by the session engine of `study run --headset none` (the simulated
 // observer with the rig's projection error as its stimulus, into memory instead of a database),
 // then the clustered logistic
-// regression of the report; detected = the distance term has p < alpha. Deterministic for a seed.
+// regression of the report; detected = the distance term has p < alpha, counted for the CR1 z
+// test and for the small-sample CR2 t test. Deterministic for a seed.
 //
 // Run r's participant p has the same seed in every n, so the studies of n + 2 participants
 // extend those of n (common random numbers): the power curve is not jagged by independent noise.
@@ -129,6 +130,7 @@ void run_simulate(const SimulateOptions& o) {
     analysis::LogisticOptions options;
     options.log2_distance = o.log2_distance;
     std::vector<int> detected(grid.size(), 0);
+    std::vector<int> detected_cr2(grid.size(), 0);
     std::vector<int> not_estimable(grid.size(), 0);
     std::string distance_term = o.log2_distance ? "log2_mono_plane_m" : "mono_plane_m";
     std::string last_error;
@@ -165,7 +167,9 @@ void run_simulate(const SimulateOptions& o) {
             }
             distance_term = fit->distance_term;
             for (const analysis::Coefficient& c : fit->coefficients) {
-                if (c.name == fit->distance_term && c.p < o.alpha) ++detected[g];
+                if (c.name != fit->distance_term) continue;
+                if (c.p < o.alpha) ++detected[g];
+                if (c.p_cr2 < o.alpha) ++detected_cr2[g];
             }
         }
         if ((run + 1) % report_every == 0 || run + 1 == o.runs) {
@@ -185,13 +189,17 @@ void run_simulate(const SimulateOptions& o) {
         power.trials_per_participant += t.practice ? 0 : 1;
     }
     for (std::size_t g = 0; g < grid.size(); ++g) {
-        power.points.push_back(
-            analysis::report::power_point(grid[g], o.runs, detected[g], not_estimable[g]));
+        power.points.push_back(analysis::report::power_point(grid[g], o.runs, detected[g],
+                                                             not_estimable[g], detected_cr2[g]));
         const auto& p = power.points.back();
         std::cerr << "n = " << p.participants << ": power " << charts::format_fixed(p.power, 3)
                   << " [" << charts::format_fixed(p.wilson.lower, 3) << ", "
                   << charts::format_fixed(p.wilson.upper, 3) << "] (" << p.detected << " of "
-                  << p.runs << " detected, " << p.not_estimable << " not estimable)\n";
+                  << p.runs << " detected, " << p.not_estimable << " not estimable); CR2 "
+                  << charts::format_fixed(p.power_cr2, 3) << " ["
+                  << charts::format_fixed(p.wilson_cr2.lower, 3) << ", "
+                  << charts::format_fixed(p.wilson_cr2.upper, 3) << "] (" << p.detected_cr2
+                  << " detected)\n";
     }
     if (!last_error.empty()) {
         std::cerr << "simulate: fits not estimable count as not detected; the last reason: "

@@ -4,7 +4,8 @@
 // whose default use_correction=True is the CR1 factor G/(G-1) * (N-1)/(N-K) used here, with
 // normal (z) tests. Computed by tests/fixtures/analysis/make_reference.py, run as
 //     /usr/bin/python3 tests/fixtures/analysis/make_reference.py
-// on tests/fixtures/analysis/choices.csv (6 participants, 68 analysable trials).
+// on tests/fixtures/analysis/choices.csv (6 participants, 68 analysable trials). The CR2 columns
+// are checked against R's clubSandwich further down.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -107,6 +108,71 @@ TEST(LogisticRegression, MatchesStatsmodelsWithoutSceneTerms) {
                         0.113909679138, 1.0226816872, 0.994635969468, 1.0515182091});
 }
 
+// The small-sample columns against R's clubSandwich 0.5.8 (Debian 12's r-cran-clubsandwich),
+// an implementation independent of this one:
+//     fit <- glm(y ~ mono_plane + scene, data, family = binomial)
+//     coef_test(fit, vcov = vcovCR(fit, cluster = participant, type = "CR2"),
+//               test = "Satterthwaite")
+// computed by tests/fixtures/analysis/make_cr2_reference.R on the same choices.csv. The CR2
+// standard error differs from CR1's (e.g. 0.01422 against 0.01462 for the distance) and the df
+// from G - 1 = 5 (4.96), so a formula slip in either shows.
+struct ExpectedCr2 {
+    const char* name;
+    double se, t, df, p, lower, upper;
+};
+
+void expect_cr2(const Coefficient& c, const ExpectedCr2& e) {
+    SCOPED_TRACE(e.name);
+    EXPECT_EQ(c.name, e.name);
+    EXPECT_TRUE(near_relative(c.std_error_cr2, e.se, kRegression));
+    EXPECT_TRUE(near_relative(c.t_cr2, e.t, kRegression));
+    EXPECT_TRUE(near_relative(c.df_cr2, e.df, kRegression));
+    EXPECT_TRUE(near_relative(c.p_cr2, e.p, kRegression));
+    EXPECT_TRUE(near_relative(c.ci_lower_cr2, e.lower, kRegression));
+    EXPECT_TRUE(near_relative(c.ci_upper_cr2, e.upper, kRegression));
+}
+
+TEST(LogisticRegression, Cr2MatchesClubSandwichWithDistanceInMetresAndScenes) {
+    const Result<LogisticFit> fit = fit_choice_model(choices());
+    ASSERT_TRUE(fit.ok()) << fit.error().message;
+    ASSERT_EQ(fit->coefficients.size(), 4u);
+    expect_cr2(fit->coefficients[0], {"intercept", 0.534752129532, -1.24707367107, 4.92755040163,
+                                      0.268364568859, 0.129044143274, 2.04183749372});
+    expect_cr2(fit->coefficients[1], {"mono_plane_m", 0.0142153007308, 1.58842646152, 4.9612963798,
+                                      0.173509004008, 0.986050664558, 1.06099533353});
+    expect_cr2(fit->coefficients[2],
+               {"scene[landscape]", 0.493165086998, 0.726781421463, 4.97145770069, 0.500125135524,
+                0.401924803109, 5.09539255439});
+    expect_cr2(fit->coefficients[3],
+               {"scene[spheres]", 0.725832983784, 1.10500675747, 4.96767105213, 0.319780576438,
+                0.343894336136, 14.4619568336});
+}
+
+TEST(LogisticRegression, Cr2MatchesClubSandwichWithLog2Distance) {
+    const Result<LogisticFit> fit = fit_choice_model(choices(), {.log2_distance = true});
+    ASSERT_TRUE(fit.ok()) << fit.error().message;
+    ASSERT_EQ(fit->coefficients.size(), 4u);
+    expect_cr2(fit->coefficients[0], {"intercept", 0.593174020643, -1.2220589311, 4.97953835659,
+                                      0.276360023221, 0.105232566289, 2.2295399012});
+    expect_cr2(fit->coefficients[1], {"log2_mono_plane_m", 0.110162972605, 1.22742255665,
+                                      4.98836044521, 0.274415838827, 0.86228858691, 1.51982973436});
+    expect_cr2(fit->coefficients[2],
+               {"scene[landscape]", 0.503163830191, 0.717370839803, 4.97106889464, 0.505430685109,
+                0.392689461381, 5.24170209519});
+    expect_cr2(fit->coefficients[3], {"scene[spheres]", 0.732643859093, 1.08160867482,
+                                      4.96678974179, 0.32912159804, 0.334646352918, 14.5785150766});
+}
+
+TEST(LogisticRegression, Cr2MatchesClubSandwichWithoutSceneTerms) {
+    const Result<LogisticFit> fit = fit_choice_model(choices(), {.scene_terms = false});
+    ASSERT_TRUE(fit.ok()) << fit.error().message;
+    ASSERT_EQ(fit->coefficients.size(), 2u);
+    expect_cr2(fit->coefficients[0], {"intercept", 0.5165401402, -0.509114915412, 4.98648750061,
+                                      0.632392897528, 0.203544636036, 2.90348975371});
+    expect_cr2(fit->coefficients[1], {"mono_plane_m", 0.0140752496782, 1.59345538099, 4.96778746597,
+                                      0.172315488314, 0.986271133767, 1.06043642313});
+}
+
 // A small synthetic data set: participants P0..P(participants-1), every participant at every
 // distance and scene, the test chosen where `chooses` says so.
 template <class Chooses>
@@ -166,8 +232,7 @@ TEST(LogisticRegression, RefusesTooFewClustersTrialsOrDistances) {
     const Result<LogisticFit> three =
         fit_choice_model(synthetic(3, {1.6, 3, 8, 20, 39.5}, {"beams", "spheres"}, mixed));
     ASSERT_FALSE(three.ok());
-    EXPECT_NE(three.error().message.find("3 participant(s) for 3 coefficients"),
-              std::string::npos)
+    EXPECT_NE(three.error().message.find("3 participant(s) for 3 coefficients"), std::string::npos)
         << three.error().message;
     const Result<LogisticFit> four =
         fit_choice_model(synthetic(4, {1.6, 3, 8, 20, 39.5}, {"beams", "spheres"}, mixed));

@@ -151,8 +151,11 @@ TEST(ReportBuilder, HtmlIsSelfContainedWithFiguresAndCounts) {
     EXPECT_TRUE(contains(html, "<td class=\"num\"><b>16</b></td>"));
     EXPECT_TRUE(contains(html, "<code>site-b.csv</code>"));
     EXPECT_TRUE(contains(html, "Of 16 valid decisions, 8 (50.00&nbsp;%"));
-    // The regression, its reason and the distance term; the chi-square with phi and V.
+    // The regression, its reason and the distance term, CR2 first and CR1 for comparison; the
+    // chi-square with phi and V.
     EXPECT_TRUE(contains(html, "repeated measures"));
+    EXPECT_LT(html.find("<th class=\"num\">CR2 SE</th>"), html.find("For comparison: CR1"));
+    EXPECT_TRUE(contains(html, "<th class=\"num\">CR1 SE</th>"));
     EXPECT_TRUE(contains(html, "<code>mono_plane_m</code>"));
     EXPECT_TRUE(contains(html, "Cram&eacute;r's V"));
     EXPECT_TRUE(contains(html, "I noticed differences"));
@@ -176,6 +179,10 @@ TEST(ReportBuilder, SummaryJsonHasTheValues) {
                                  "\"estimable\": true",
                                  "\"clusters\": 4",
                                  "\"distance_term\": \"mono_plane_m\"",
+                                 "\"small_sample_method\": \"CR2 with Satterthwaite t\"",
+                                 "\"std_error_cr2\": ",
+                                 "\"df_cr2\": ",
+                                 "\"p_cr2\": ",
                                  "\"source\": \"site-b.csv\"",
                                  "\"first_scene\": \"beams\"",
                                  "\"mono_plane\": 8",
@@ -215,7 +222,7 @@ TEST(ReportBuilder, RegressionNotEstimableStillGivesAReport) {
     EXPECT_TRUE(contains(json, "\"error\": "));
     EXPECT_EQ(logistic_csv(r),
               "term,estimate,std_error,z,p,odds_ratio,ci_lower,ci_upper,n,"
-              "clusters,converged\n");
+              "clusters,converged,std_error_cr2,t_cr2,df_cr2,p_cr2,ci_lower_cr2,ci_upper_cr2\n");
 }
 
 TEST(ReportBuilder, EmptyDatasetGivesAReport) {
@@ -237,8 +244,16 @@ TEST(ReportBuilder, CsvTables) {
     EXPECT_TRUE(contains(distances, "\n,8,5,8,0.625,"));
     const std::string logistic = logistic_csv(r);
     EXPECT_TRUE(contains(logistic, "\nintercept,"));
-    EXPECT_TRUE(contains(logistic, "\nmono_plane_m,"));
     EXPECT_TRUE(contains(logistic, "\nscene[spheres],"));
+    // The distance row: CR1 columns where they always were, the CR2 columns appended.
+    ASSERT_TRUE(r.logistic.has_value());
+    const Coefficient& m = r.logistic->coefficients[1];
+    EXPECT_TRUE(contains(logistic, "\nmono_plane_m," + number_text(m.estimate) + "," +
+                                       number_text(m.std_error) + ","));
+    EXPECT_TRUE(contains(logistic, ",16,4,TRUE," + number_text(m.std_error_cr2) + "," +
+                                       number_text(m.t_cr2) + "," + number_text(m.df_cr2) + "," +
+                                       number_text(m.p_cr2) + ","))
+        << logistic;
     const std::string items = questionnaire_csv(r.questionnaire);
     EXPECT_TRUE(contains(items, "count_7\n"));
     // P1..P3 answered 2, 3, 4 to item 0.
@@ -299,17 +314,26 @@ TEST(ReportPower, GridPointsAndOutputs) {
     study.hmd = "vive";
     study.distance_term = "mono_plane_m";
     study.runs = 20;
-    study.points = {power_point(2, 20, 3, 1), power_point(4, 20, 10, 0)};
+    study.points = {power_point(2, 20, 3, 1, 2), power_point(4, 20, 10, 0, 8)};
     EXPECT_DOUBLE_EQ(study.points[1].power, 0.5);
     EXPECT_LT(study.points[1].wilson.lower, 0.5);
     EXPECT_GT(study.points[1].wilson.upper, 0.5);
+    EXPECT_DOUBLE_EQ(study.points[1].power_cr2, 0.4);
+    // Wilson 95 % for 8 of 20 (z = 1.959964): (0.4 + z^2/40 -+ z sqrt(0.012 + z^2/1600)) /
+    // (1 + z^2/20) = [0.218807, 0.613418].
+    EXPECT_NEAR(study.points[1].wilson_cr2.lower, 0.218807, 1e-6);
+    EXPECT_NEAR(study.points[1].wilson_cr2.upper, 0.613418, 1e-6);
     const std::string csv = power_csv(study);
     EXPECT_TRUE(contains(csv,
-                         "participants,runs,detected,not_estimable,power,ci_lower,ci_upper\n"
+                         "participants,runs,detected,not_estimable,power,ci_lower,ci_upper,"
+                         "detected_cr2,power_cr2,ci_lower_cr2,ci_upper_cr2\n"
                          "2,20,3,1,0.15,"));
+    EXPECT_TRUE(contains(csv, ",2,0.1,"));
     const std::string json = power_json(study);
     EXPECT_TRUE(contains(json, "\"not_estimable\": 1"));
     EXPECT_TRUE(contains(json, "\"power\": 0.5"));
+    EXPECT_TRUE(contains(json, "\"detected_cr2\": 8"));
+    EXPECT_TRUE(contains(json, "\"power_cr2\": 0.4"));
     const std::string svg = power_svg(study);
     EXPECT_TRUE(contains(svg, "<svg"));
     EXPECT_TRUE(contains(svg, "0.8"));
