@@ -9,6 +9,8 @@
 
 #include "analysis/report/figures.h"
 #include "analysis/report/html_format.h"
+#include "analysis/report/psychometric_figure.h"
+#include "analysis/report/psychometric_section.h"
 #include "analysis/report/regression_section.h"
 #include "analysis/report/text_output.h"
 #include "charts/svg_writer.h"
@@ -216,6 +218,8 @@ AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
         r.logistic_error = fit.error().message;
     }
 
+    r.psychometric = fit_psychometric_functions(kept, options.psychometric);
+
     r.decision_times = decision_times_by_scene(kept);
     r.switches = switches_by_scene(kept);
     r.questionnaire = questionnaire_summaries(data.answers);
@@ -238,6 +242,15 @@ std::vector<Figure> report_figures(const AnalysisResults& r) {
                        decision_times_svg(r.decision_times, counts)});
     figures.push_back({"switches", "Switches between the two alternatives per trial, per scene.",
                        switches_svg(r.switches, counts)});
+    for (const PsychometricFit& f : r.psychometric) {
+        if (f.participant != "all") continue;
+        figures.push_back({"psychometric_" + f.scene,
+                           "Choices of " + r.reference_mode + " in " + upper_case(f.scene) +
+                               " over the mono-plane distance m with the fitted psychometric "
+                               "functions: the group's (green, with its threshold and 95 % "
+                               "interval) and each participant's (grey).",
+                           psychometric_svg(r.psychometric, f.scene, r.reference_mode)});
+    }
     return figures;
 }
 
@@ -270,6 +283,7 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
          "<li><a href=\"#choices\">Choices</a></li>"
          "<li><a href=\"#chi-square\">Distance &times; decision (chi-square)</a></li>"
          "<li><a href=\"#regression\">Logistic regression</a></li>"
+         "<li><a href=\"#psychometric\">Psychometric functions</a></li>"
          "<li><a href=\"#order\">Order effects</a></li>"
          "<li><a href=\"#times\">Decision times and switches</a></li>"
          "<li><a href=\"#questionnaire\">Questionnaire</a></li></ul></nav>\n";
@@ -366,6 +380,7 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
          "paper reports it; the regression below is the valid test.</p>\n";
 
     h += regression_section_html(r);
+    h += psychometric_section_html(r, figures);
 
     // Order.
     h += "<h2 id=\"order\">Order effects: by first scene</h2>\n";
@@ -567,6 +582,7 @@ std::string summary_json(const AnalysisResults& r) {
     json.end_object();
 
     logistic_json(json, r);
+    psychometric_json(json, r);
 
     groups_json(json, r.decision_times, "decision_time_s");
     groups_json(json, r.switches, "switches");
@@ -651,6 +667,7 @@ Result<WrittenReport> write_report(const AnalysisResults& r, const std::vector<F
              return rates_csv(rates);
          }()},
         {"logistic.csv", logistic_csv(r)},
+        {"psychometric.csv", psychometric_csv(r)},
         {"questionnaire.csv", questionnaire_csv(r.questionnaire)},
     };
     for (const auto& [name, text] : tables) {

@@ -16,6 +16,7 @@
 #include "analysis/exclusions.h"
 #include "analysis/frame_timing.h"
 #include "analysis/logistic_regression.h"
+#include "analysis/psychometric_fits.h"
 #include "analysis/summaries.h"
 #include "common/result.h"
 
@@ -23,6 +24,7 @@ namespace monoplane::analysis::report {
 
 struct ReportOptions {
     LogisticOptions logistic;
+    PsychometricOptions psychometric;
     std::string title = "monoplane study analysis";
 };
 
@@ -71,8 +73,9 @@ struct AnalysisResults {
     LogisticOptions logistic_options;
     std::optional<LogisticFit> logistic;  // unset: not estimable, see logistic_error
     std::string logistic_error;
-    std::vector<GroupSummary> decision_times;  // seconds, per scene
-    std::vector<GroupSummary> switches;        // per scene
+    std::vector<PsychometricFit> psychometric;  // per scene: the group's, then participants'
+    std::vector<GroupSummary> decision_times;   // seconds, per scene
+    std::vector<GroupSummary> switches;         // per scene
     std::vector<ItemSummary> questionnaire;
     FrameTimingSummary frame_timing;  // headset sessions' frame logs
 };
@@ -87,7 +90,7 @@ struct Figure {
     std::string svg;      // a self-contained SVG document
 };
 
-// choices (Fig. 7), decision_times, switches.
+// choices (Fig. 7), decision_times, switches, then psychometric_<scene> per scene fitted.
 std::vector<Figure> report_figures(const AnalysisResults& results);
 
 // The HTML page: no external resources (CSS inline, figures inline SVG without namespace URLs).
@@ -112,7 +115,8 @@ struct WrittenReport {
 };
 
 // Writes report.html, summary.json, rates_by_scene.csv, rates_by_distance.csv,
-// rates_by_scene_distance.csv, rates_by_first_scene.csv, logistic.csv, questionnaire.csv and
+// rates_by_scene_distance.csv, rates_by_first_scene.csv, logistic.csv, psychometric.csv,
+// questionnaire.csv and
 // figures/<name>.svg into `dir` (which must exist). The error names the file.
 Result<WrittenReport> write_report(const AnalysisResults& results,
                                    const std::vector<Figure>& figures,

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "analysis/report/power.h"
+#include "analysis/report/psychometric_section.h"
 #include "analysis/report/report.h"
 #include "analysis/report/text_output.h"
 #include "charts/svg_writer.h"
@@ -130,16 +131,19 @@ TEST(ReportBuilder, CountsSourcesAndExclusions) {
 TEST(ReportBuilder, HtmlIsSelfContainedWithFiguresAndCounts) {
     const AnalysisResults r = analyse(make_dataset());
     const std::vector<Figure> figures = report_figures(r);
-    ASSERT_EQ(figures.size(), 3u);
+    // Choices, decision times, switches, and the psychometric functions of both scenes.
+    ASSERT_EQ(figures.size(), 5u);
+    EXPECT_EQ(figures[3].name, "psychometric_beams");
+    EXPECT_EQ(figures[4].name, "psychometric_spheres");
     const std::string html = report_html(r, figures);
     EXPECT_TRUE(contains(html, "<!DOCTYPE html>"));
-    // Three inline figures, none pointing anywhere.
+    // Five inline figures, none pointing anywhere.
     std::size_t svgs = 0;
     for (std::size_t at = html.find("<svg"); at != std::string::npos;
          at = html.find("<svg", at + 1)) {
         ++svgs;
     }
-    EXPECT_EQ(svgs, 3u);
+    EXPECT_EQ(svgs, 5u);
     EXPECT_FALSE(contains(html, "http://"));
     EXPECT_FALSE(contains(html, "https://"));
     EXPECT_FALSE(contains(html, "<link"));
@@ -271,8 +275,9 @@ TEST(ReportBuilder, WritesEveryFile) {
     for (const char* name :
          {"report.html", "summary.json", "rates_by_scene.csv", "rates_by_distance.csv",
           "rates_by_scene_distance.csv", "rates_by_first_scene.csv", "logistic.csv",
-          "questionnaire.csv", "figures/choices.svg", "figures/decision_times.svg",
-          "figures/switches.svg"}) {
+          "psychometric.csv", "questionnaire.csv", "figures/choices.svg",
+          "figures/decision_times.svg", "figures/switches.svg", "figures/psychometric_beams.svg",
+          "figures/psychometric_spheres.svg"}) {
         EXPECT_TRUE(std::filesystem::is_regular_file(dir / name)) << name;
     }
     // A file where the folder should be: an error naming it.
@@ -298,6 +303,71 @@ TEST(ReportText, CsvAndJsonEscaping) {
         .value("nan", std::nan(""))
         .end_object();
     EXPECT_EQ(json.str(), "{\n  \"text\": \"quote \\\" and \\\\ and \\n\",\n  \"nan\": null\n}\n");
+}
+
+// Three participants in BEAMS whose reference choices follow P = 0.5 + 0.5 / (1 + (m / 8)^3)
+// (counts of 20 per distance rounded from it), and P3 who chose at chance: the group's and
+// P1's thresholds are estimable, P3's is not; the report carries them everywhere.
+Dataset psychometric_dataset() {
+    Dataset d;
+    d.sources = {"psychometric.csv"};
+    int index = 0;
+    for (const std::string code : {"P1", "P2", "P3"}) {
+        for (const double m : {2.0, 4.0, 6.0, 8.0, 11.0, 16.0, 32.0}) {
+            const double p = code == "P3" ? 0.5 : 0.5 + 0.5 / (1.0 + std::pow(m / 8.0, 3.0));
+            const int reference = static_cast<int>(std::lround(20 * p));
+            for (int t = 0; t < 20; ++t) {
+                d.trials.push_back(
+                    trial("psychometric.csv", 1, code, index++, "beams", m, t >= reference));
+            }
+        }
+    }
+    for (auto& t : d.trials) t.reference_mode = "stereo";
+    derive_session_fields(d.trials);
+    return d;
+}
+
+TEST(ReportBuilder, PsychometricFitsInJsonCsvAndHtml) {
+    ReportOptions options;
+    options.psychometric.bootstrap_replicates = 100;
+    const AnalysisResults r = analyse(psychometric_dataset(), options);
+    ASSERT_EQ(r.psychometric.size(), 4u);  // all, P1, P2, P3
+    const PsychometricFit& group = r.psychometric[0];
+    ASSERT_EQ(group.participant, "all");
+    ASSERT_TRUE(group.estimable) << group.reason;
+    EXPECT_EQ(group.n, 420);
+    ASSERT_TRUE(r.psychometric[1].estimable) << r.psychometric[1].reason;
+    // P1's counts are the curve rounded: its threshold is close to 8 m.
+    EXPECT_NEAR(r.psychometric[1].parameters.threshold, 8.0, 0.8);
+    EXPECT_FALSE(r.psychometric[3].estimable);
+
+    const std::string json = summary_json(r);
+    EXPECT_TRUE(contains(json, "\"psychometric\": ["));
+    EXPECT_TRUE(contains(json, "\"participant\": \"all\""));
+    EXPECT_TRUE(contains(json, "\"threshold_m\": " + number_text(group.parameters.threshold)));
+    EXPECT_TRUE(contains(json, "\"slope\": " + number_text(group.parameters.slope)));
+    EXPECT_TRUE(contains(json, "\"threshold_ci\": ["));
+    EXPECT_TRUE(contains(json, "\"interval_method\": \"participant bootstrap\""));
+    EXPECT_TRUE(contains(json, "\"estimable\": false"));  // P3
+    EXPECT_TRUE(contains(json, "\"threshold_m\": null"));
+    EXPECT_TRUE(contains(json, "\"m\": 32"));
+
+    const std::string csv = psychometric_csv(r);
+    EXPECT_EQ(csv.substr(0, csv.find('\n')),
+              "participant,scene,n,participants,estimable,threshold_m,threshold_ci_lower,"
+              "threshold_ci_upper,slope,lapse,log_likelihood,interval_method,reason");
+    EXPECT_TRUE(
+        contains(csv, "\nall,beams,420,3,TRUE," + number_text(group.parameters.threshold) + ","));
+    EXPECT_TRUE(contains(csv, "\nP3,beams,140,1,FALSE,,,,,,,,"));
+
+    const std::vector<Figure> figures = report_figures(r);
+    ASSERT_EQ(figures.back().name, "psychometric_beams");
+    EXPECT_TRUE(contains(figures.back().svg, "Psychometric function, BEAMS"));
+    EXPECT_TRUE(contains(figures.back().svg, "2 of 3 participants"));
+    const std::string html = report_html(r, figures);
+    EXPECT_TRUE(contains(html, "<figure id=\"figure-psychometric_beams\">"));
+    EXPECT_TRUE(contains(html, "<a href=\"#psychometric\">"));
+    EXPECT_TRUE(contains(html, "not estimable: the fitted threshold"));
 }
 
 TEST(ReportPower, GridPointsAndOutputs) {
