@@ -33,7 +33,7 @@ std::vector<PsychometricFit> fixture_fits() {
     EXPECT_TRUE(data.ok()) << data.error().message;
     if (!data.ok()) return {};
     derive_session_fields(data.value().trials);
-    return fit_psychometric_functions(data->trials, {.bootstrap_replicates = 200});
+    return fit_psychometric_functions(data->trials, {.bootstrap_replicates = 50});
 }
 
 const PsychometricFit* find(const std::vector<PsychometricFit>& fits, const std::string& who,
@@ -175,31 +175,38 @@ std::vector<TrialRow> study(const std::vector<PsychometricParameters>& parameter
     return rows;
 }
 
+double width(const PsychometricFit& fit) {
+    EXPECT_TRUE(fit.threshold_lower && fit.threshold_upper) << fit.participant;
+    return fit.threshold_upper.value_or(NAN) - fit.threshold_lower.value_or(NAN);
+}
+
 TEST(PsychometricFit, GroupIntervalResamplesParticipants) {
-    // Two groups of six with the same pooled curve shape and trial count: in one everybody's
-    // threshold is 8 m, in the other they spread from 4 to 16 m. A bootstrap of trials would
-    // see the same binomial noise in both; resampling participants makes the spread group's
-    // interval the wider one.
+    // Two groups of six, 20 trials per distance each: in one everybody's threshold is 8 m, in
+    // the other they spread from 4 to 16 m. The profile interval of the pooled trials, which
+    // treats every trial as independent, is about as wide for both (2.2 and 2.5 m); resampling
+    // participants widens the spread group's interval (about 3 times) and not the alike one's.
     std::mt19937_64 random(3);
     const std::vector<PsychometricParameters> alike(6, {8.0, 3.0, 0.02});
     std::vector<PsychometricParameters> spread;
     for (const double t : {4.0, 5.0, 6.5, 10.0, 13.0, 16.0}) spread.push_back({t, 3.0, 0.02});
-    const PsychometricOptions options{.bootstrap_replicates = 300};
-    const auto fits_alike = fit_psychometric_functions(study(alike, 20, random), options);
-    const auto fits_spread = fit_psychometric_functions(study(spread, 20, random), options);
-    ASSERT_EQ(fits_alike.front().participant, "all");
-    ASSERT_EQ(fits_spread.front().participant, "all");
-    const PsychometricFit& a = fits_alike.front();
-    const PsychometricFit& s = fits_spread.front();
+    const PsychometricOptions options{.bootstrap_replicates = 150};
+    const PsychometricFit a = fit_psychometric_functions(study(alike, 20, random), options).front();
+    const PsychometricFit s =
+        fit_psychometric_functions(study(spread, 20, random), options).front();
+    ASSERT_EQ(a.participant, "all");
+    ASSERT_EQ(s.participant, "all");
     ASSERT_TRUE(a.estimable && s.estimable);
     EXPECT_EQ(a.participants, 6);
     EXPECT_EQ(a.n, 6 * 10 * 20);
-    EXPECT_EQ(a.bootstrap_replicates, 300);
-    ASSERT_TRUE(a.threshold_lower && a.threshold_upper && s.threshold_lower && s.threshold_upper);
+    EXPECT_EQ(a.interval_method, "participant bootstrap");
+    EXPECT_EQ(a.bootstrap_replicates, 150);
     EXPECT_LT(*a.threshold_lower, 8.0);
     EXPECT_GT(*a.threshold_upper, 8.0);
-    EXPECT_GT(*s.threshold_upper - *s.threshold_lower,
-              1.5 * (*a.threshold_upper - *a.threshold_lower));
+    const double alike_trials = width(fit_levels(a.levels));
+    const double spread_trials = width(fit_levels(s.levels));
+    EXPECT_LT(width(a), 1.5 * alike_trials);
+    EXPECT_GT(width(s), 2.0 * spread_trials);
+    EXPECT_GT(width(s), 2.0 * width(a));
     // The same data and seed give the same interval.
     std::mt19937_64 again(3);
     const auto repeated = fit_psychometric_functions(study(alike, 20, again), options);

@@ -86,12 +86,21 @@ Dataset make_dataset() {
     return d;
 }
 
+// analyse() with a short bootstrap: the tests below are about counts, tables and files, not the
+// group threshold's interval (PsychometricFitsInJsonCsvAndHtml and analysis_psychometric_test
+// are), and 1000 refits per scene take seconds under the sanitizers.
+AnalysisResults analyse_quickly(const Dataset& data) {
+    ReportOptions options;
+    options.psychometric.bootstrap_replicates = 20;
+    return analyse(data, options);
+}
+
 bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
 
 TEST(ReportBuilder, CountsSourcesAndExclusions) {
-    const AnalysisResults r = analyse(make_dataset());
+    const AnalysisResults r = analyse_quickly(make_dataset());
     ASSERT_EQ(r.sources.size(), 2u);
     EXPECT_EQ(r.sources[0].source, "site-a.sqlite");
     EXPECT_EQ(r.sources[0].sessions, 3);
@@ -129,7 +138,7 @@ TEST(ReportBuilder, CountsSourcesAndExclusions) {
 }
 
 TEST(ReportBuilder, HtmlIsSelfContainedWithFiguresAndCounts) {
-    const AnalysisResults r = analyse(make_dataset());
+    const AnalysisResults r = analyse_quickly(make_dataset());
     const std::vector<Figure> figures = report_figures(r);
     // Choices, decision times, switches, and the psychometric functions of both scenes.
     ASSERT_EQ(figures.size(), 5u);
@@ -167,7 +176,7 @@ TEST(ReportBuilder, HtmlIsSelfContainedWithFiguresAndCounts) {
 }
 
 TEST(ReportBuilder, SummaryJsonHasTheValues) {
-    const std::string json = summary_json(analyse(make_dataset()));
+    const std::string json = summary_json(analyse_quickly(make_dataset()));
     for (const char* expected : {"\"schema_version\": 1",
                                  "\"total\": 22",
                                  "\"data\": 18",
@@ -216,7 +225,7 @@ TEST(ReportBuilder, RegressionNotEstimableStillGivesAReport) {
         if (t.participant == "P1") one.push_back(t);
     }
     d.trials = one;
-    const AnalysisResults r = analyse(d);
+    const AnalysisResults r = analyse_quickly(d);
     EXPECT_FALSE(r.logistic.has_value());
     EXPECT_FALSE(r.logistic_error.empty());
     const std::string html = report_html(r, report_figures(r));
@@ -237,7 +246,7 @@ TEST(ReportBuilder, EmptyDatasetGivesAReport) {
 }
 
 TEST(ReportBuilder, CsvTables) {
-    const AnalysisResults r = analyse(make_dataset());
+    const AnalysisResults r = analyse_quickly(make_dataset());
     const std::string scenes = rates_csv(r.by_scene);
     EXPECT_EQ(scenes.substr(0, scenes.find('\n')),
               "scene,mono_plane,test_chosen,n,rate,wilson_lower,wilson_upper,cp_lower,cp_upper,"
@@ -269,7 +278,7 @@ TEST(ReportBuilder, WritesEveryFile) {
     const auto dir = std::filesystem::temp_directory_path() / "monoplane_report_builder_test";
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
-    const AnalysisResults r = analyse(make_dataset());
+    const AnalysisResults r = analyse_quickly(make_dataset());
     const auto written = write_report(r, report_figures(r), dir);
     ASSERT_TRUE(written) << written.error().message;
     for (const char* name :
