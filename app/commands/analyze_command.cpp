@@ -1,7 +1,8 @@
 // `monoplane analyze [--db FILE...] [--csv FILE...] --out DIR` (DESIGN.md section 8, issue 7):
 // merges the sessions of several study databases and CSV exports (a multi-site study), excludes
 // and counts practice, undecided and invalid trials, and writes report.html (self-contained,
-// figures inline), summary.json, CSV tables and the figures as SVG and PNG (docs/analysis.md).
+// figures inline), summary.json, CSV tables and the figures as SVG and PNG (docs/analysis.md),
+// among them the psychometric functions per participant and scene (issue 21).
 #include <filesystem>
 #include <iostream>
 #include <set>
@@ -98,6 +99,17 @@ void run_analyze(const AnalyzeOptions& o) {
     if (!results.logistic) {
         std::cerr << "analyze: the logistic regression is not estimable on these data ("
                   << results.logistic_error << "); the report marks it so\n";
+    }
+    // Thresholds that the data cannot locate are common with one decision per distance: say how
+    // many fits there are, so a reader looks at the reasons in the report.
+    if (!results.psychometric.empty()) {
+        int estimable = 0;
+        for (const analysis::PsychometricFit& f : results.psychometric) {
+            estimable += f.estimable ? 1 : 0;
+        }
+        std::cerr << "psychometric functions: " << estimable << " of "
+                  << results.psychometric.size()
+                  << " fits estimable (per scene the group's and each participant's)\n";
     }
     std::cout << "report: " << std::filesystem::absolute(written.html).string() << "\n";
 }
