@@ -20,7 +20,8 @@ struct Condition {
     double mono_plane = 0.0;
 };
 
-// The scenes a study may name (DESIGN.md section 5): "beams", "landscape", "spheres".
+// The built-in scenes a study may name (DESIGN.md section 5): "beams", "landscape", "spheres".
+// It may name glTF files too (study/scene_files.h).
 std::span<const std::string_view> study_scene_names();
 
 // "spheres / hybrid / m = 8 m": for logs and error messages.

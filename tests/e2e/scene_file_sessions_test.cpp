@@ -117,7 +117,7 @@ class StudySceneFiles : public ::testing::Test {
     fs::path models() const { return dir_ / "protocols" / "models"; }
 
     fs::path write_protocol(const std::string& scenes, const std::string& planes = "[3, 8]") {
-        const fs::path path = dir_ / "protocols" / "files.toml";
+        fs::path path = dir_ / "protocols" / "files.toml";
         std::ofstream(path) << "name = \"files\"\nscenes = " << scenes
                             << "\nmono_planes = " << planes
                             << "\nalternatives = [\"stereo\", \"hybrid\"]\npractice_trials = 0\n";
@@ -317,17 +317,32 @@ TEST_F(StudySceneFiles, AnAcceptedChangeIsRecordedInTheSessionsNotes) {
 }
 
 // --headset simulated renders the file: the trial's frames show the red triangle, which no
-// built-in scene has. Tiny: one trial, eyes at a tenth of the Vive's size, 20 Hz.
+// built-in scene has. Tiny: one trial, eyes at a tenth of the Vive's size, 20 Hz, and the
+// simulated runtime's controller (a trigger press switches, a trackpad press confirms: the
+// controller mapping of docs/headsets.md) decides within a second of virtual time.
 TEST_F(StudySceneFiles, ASimulatedHeadsetSessionRendersTheImportedScene) {
     const fs::path protocol = write_protocol(std::string("[\"") + kLabel + "\"]", "[3]");
     const fs::path frames = dir_ / "frames";
+    const fs::path script = dir_ / "controller.toml";
+    {
+        std::ofstream out(script);
+        out << "hmd = \"vive\"\ndisplay_rate_hz = 20\n"
+            << "interaction_profile = \"/interaction_profiles/htc/vive_controller\"\n"
+            << "dump_dir = \"" << frames.string() << "\"\n";
+        // Pairs every half second: whichever falls before the trial shows is refused, the
+        // session ends at the first confirmation after both labels were seen.
+        for (int k = 0; k < 20; ++k) {
+            out << "[[input]]\nt = " << 0.5 * k + 0.1
+                << "\npath = \"/user/hand/right/input/trigger/click\"\nduration = 0.1\n"
+                << "[[input]]\nt = " << 0.5 * k + 0.35
+                << "\npath = \"/user/hand/right/input/trackpad/click\"\nduration = 0.1\n";
+        }
+    }
     std::string output;
     ASSERT_EQ(run(monoplane("--validation study run --protocol " + protocol.string() +
                             " --participant H1 --db " + db_.string() +
-                            " --headset simulated --observer default --window off "
-                            "--resolution-scale 0.1 --sim-rate 20 --neutral-s 0.2 --seed 3 "
-                            "--dump-frames " +
-                            frames.string()),
+                            " --headset simulated --observer none --sim-script " + script.string() +
+                            " --window off --resolution-scale 0.1 --neutral-s 0.2 --seed 3"),
                   &output),
               0)
         << output;
@@ -344,14 +359,17 @@ TEST_F(StudySceneFiles, ASimulatedHeadsetSessionRendersTheImportedScene) {
     int width = 0, height = 0, channels = 0;
     unsigned char* rgba = stbi_load((frames / name).c_str(), &width, &height, &channels, 4);
     ASSERT_NE(rgba, nullptr) << (frames / name);
+    // Lit, tone-mapped and with the sky's reflection the red texture shows as about (223, 146,
+    // 139) on llvmpipe; the ground (about 173, 165, 150) and the sky (blue above red) are far from
+    // it, and so are the label digits (white and grey).
     std::size_t red = 0;
     for (int i = 0; i < width * height; ++i) {
         const unsigned char* p = rgba + 4 * i;
-        red += p[0] > 96 && p[0] > 2 * p[1] && p[0] > 2 * p[2];
+        red += p[0] > 96 && p[0] > p[1] + 40 && p[0] > p[2] + 40;
     }
     stbi_image_free(rgba);
-    // The triangle covers a good part of the framed view; sky and labels are not red.
-    EXPECT_GT(red, static_cast<std::size_t>(width * height) / 20) << red << " red pixels";
+    // The triangle covers about 3.5 % of the eye (703 of 20,234 pixels when this was written).
+    EXPECT_GT(red, static_cast<std::size_t>(width * height) / 100) << red << " red pixels";
 }
 
 }  // namespace

@@ -577,7 +577,7 @@ class ProtocolSceneFiles : public testing::Test {
 
     // The protocol file protocols/p.toml with `scenes` as its second line.
     std::filesystem::path write_protocol(const std::string& scenes) const {
-        const std::filesystem::path path = root_ / "protocols" / "p.toml";
+        std::filesystem::path path = root_ / "protocols" / "p.toml";
         std::ofstream(path) << "name = \"files\"\nscenes = " << scenes
                             << "\nmono_planes = [3, 8]\nalternatives = [\"stereo\", \"hybrid\"]\n";
         return path;

@@ -40,7 +40,7 @@ class SceneFilesTest : public ::testing::Test {
     void TearDown() override { fs::remove_all(dir_); }
 
     fs::path write(const std::string& name, const std::string& bytes) {
-        const fs::path path = dir_ / name;
+        fs::path path = dir_ / name;
         std::ofstream(path, std::ios::binary) << bytes;
         return path;
     }
