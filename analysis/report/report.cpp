@@ -1,6 +1,7 @@
 #include "analysis/report/report.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -138,6 +139,18 @@ std::string frame_timing_html(const FrameTimingSummary& f) {
     return h + t.html();
 }
 
+// A scene name as part of a file name under figures/: scene names may be glTF files' paths
+// ("models/room.glb"), whose '/' would name a folder. Letters, digits, '-', '_' and '.' stay.
+std::string file_stem_of(const std::string& scene) {
+    std::string stem = scene;
+    for (char& c : stem) {
+        const bool safe =
+            std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '_' || c == '.';
+        if (!safe) c = '_';
+    }
+    return stem;
+}
+
 }  // namespace
 
 AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
@@ -244,7 +257,7 @@ std::vector<Figure> report_figures(const AnalysisResults& r) {
                        switches_svg(r.switches, counts)});
     for (const PsychometricFit& f : r.psychometric) {
         if (f.participant != "all") continue;
-        figures.push_back({"psychometric_" + f.scene,
+        figures.push_back({"psychometric_" + file_stem_of(f.scene),
                            "Choices of " + r.reference_mode + " in " + upper_case(f.scene) +
                                " over the mono-plane distance m with the fitted psychometric "
                                "functions: the group's (green, with its threshold and 95 % "

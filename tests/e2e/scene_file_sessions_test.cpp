@@ -239,6 +239,8 @@ TEST_F(StudySceneFiles, ASessionRecordsEveryFileAsSha256sumSeesIt) {
         0)
         << output;
     EXPECT_TRUE(contains(read_text(dir_ / "analysis" / "rates_by_scene.csv"), kLabel));
+    // Per-scene figure files take the label with '/' replaced: no folder is named by accident.
+    EXPECT_TRUE(fs::exists(dir_ / "analysis" / "figures" / "psychometric_models_tri.gltf.svg"));
 }
 
 TEST_F(StudySceneFiles, ABrokenSceneFileRefusesTheSessionBeforeItBegins) {
