@@ -82,9 +82,9 @@ struct Chunk {
 // How texture coordinates outside [0, 1] fold back (the glTF sampler's wrapS / wrapT).
 enum class TextureWrap : std::uint8_t { Repeat, ClampToEdge, MirroredRepeat };
 
-// A decoded base-colour image of an imported scene. The renderer does not sample textures yet:
-// the importer also bakes the texture's colour at each vertex into Vertex::albedo_rgba8, so
-// textured scenes look roughly right today, and these fields keep what a sampler would need.
+// A decoded base-colour image of an imported scene. The forward pass multiplies the vertex's
+// albedo (base-colour factor times vertex colour) by the texture, sampled trilinearly through an
+// sRGB format at Scene::texcoords (renderer/passes/shared/scene_textures.h).
 struct SceneTexture {
     std::string name;  // the glTF image's name or file, for messages
     std::uint32_t width = 0;

@@ -170,7 +170,7 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const Plan
     if (pass.view == "eyes") {
         // Both eyes in one pass, from the list of chunks either eye needs.
         eyes_forward_->record(cmd, eye_layers_->forward_targets(eye_extent_), *eye_pair_set_,
-                              *merged_depth_set_, resources_->geometry(),
+                              *merged_depth_set_, resources_->geometry(), resources_->textures(),
                               culling_.draws(passes::CullView::kBothEyes), draws);
         return;
     }
@@ -182,14 +182,14 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const Plan
         });
         const bool clear_color = masked && (options_.read_back || ssao_);
         forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,
-                        *merged_depth_set_, resources_->geometry(),
+                        *merged_depth_set_, resources_->geometry(), resources_->textures(),
                         culling_.draws(passes::CullView::kMono), draws);
         return;
     }
     const int e = pass.view == "left" ? 0 : 1;
     forward_.record(cmd, eyes_[e]->forward_targets(), *eyes_[e]->forward_set, *merged_depth_set_,
-                    resources_->geometry(), culling_.draws(static_cast<passes::CullView>(e)),
-                    draws);
+                    resources_->geometry(), resources_->textures(),
+                    culling_.draws(static_cast<passes::CullView>(e)), draws);
 }
 
 void ModeRenderer::record_pyramid(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,

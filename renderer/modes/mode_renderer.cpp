@@ -102,9 +102,10 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       eye_extent_(eye_extent),
       options_(checked(ctx, mode, options)),
       nearest_mono_plane_(nearest_mono_plane),
-      forward_(ctx, passes::ForwardConfig{options.anti_aliasing == AntiAliasing::kTaa,
-                                          msaa_samples(options.anti_aliasing),
-                                          passes::StereoDuplication::kNone, options.vertex_work}),
+      forward_(ctx, resources_->textures().layout(),
+               passes::ForwardConfig{options.anti_aliasing == AntiAliasing::kTaa,
+                                     msaa_samples(options.anti_aliasing),
+                                     passes::StereoDuplication::kNone, options.vertex_work}),
       tonemap_(ctx),
       composite_(ctx, options.anti_aliasing == AntiAliasing::kTaa),
       culling_(ctx, scene_, resources_->chunk_table()),
@@ -123,8 +124,9 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
                 ? passes::StereoDuplication::kMultiview
                 : passes::StereoDuplication::kGeometryShader;
         eyes_forward_ = std::make_unique<passes::ForwardPass>(
-            ctx, passes::ForwardConfig{taa, msaa_samples(options.anti_aliasing), duplication,
-                                       options.vertex_work});
+            ctx, resources_->textures().layout(),
+            passes::ForwardConfig{taa, msaa_samples(options.anti_aliasing), duplication,
+                                  options.vertex_work});
         eye_pair_constants_.emplace(ctx, 2 * sizeof(passes::ViewConstants),
                                     vk::BufferUsageFlagBits::eUniformBuffer,
                                     vk_core::MemoryUse::kDeviceLocal);

@@ -12,6 +12,7 @@ SceneResources::SceneResources(const vk_core::Context& ctx, const scenes::Scene&
     : scene_(scene),
       shadow_params_(shadow),
       geometry_(ctx, scene),
+      textures_(ctx, scene),
       chunk_table_(passes::ChunkCullingPass::make_chunk_table(ctx, scene)),
       shadow_(ctx, shadow),
       shadow_draws_(ctx, scene.chunks.size()) {

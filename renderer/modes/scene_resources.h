@@ -1,7 +1,7 @@
 // What every renderer of one scene shares on the GPU: its geometry (vertex and index buffers),
-// its chunk table for the culling pass, the shadow map's draw list and the shadow map itself. A
-// study with 3 scenes x 2 alternatives uploads each scene once, not once per renderer (study run
-// prints the device memory it holds).
+// its textures, its chunk table for the culling pass, the shadow map's draw list and the shadow map
+// itself. A study with 3 scenes x 2 alternatives uploads each scene once, not once per renderer
+// (study run prints the device memory it holds).
 //
 // When may this be used: by renderers whose frames do not overlap on the GPU (each frame is
 // submitted and waited for, as ModeRenderer does); the shadow map is redrawn by whichever
@@ -14,6 +14,7 @@
 
 #include "renderer/passes/shadow/shadow_pass.h"
 #include "renderer/passes/shared/scene_geometry.h"
+#include "renderer/passes/shared/scene_textures.h"
 #include "renderer/vk/buffer.h"
 #include "scenes/scene.h"
 
@@ -26,6 +27,7 @@ class SceneResources {
 
     const scenes::Scene& scene() const { return scene_; }
     const passes::SceneGeometry& geometry() const { return geometry_; }
+    const passes::SceneTextures& textures() const { return textures_; }
     const vk_core::Buffer& chunk_table() const { return chunk_table_; }
     const passes::ShadowParams& shadow_params() const { return shadow_params_; }
     const passes::ShadowPass& shadow() const { return shadow_; }
@@ -42,6 +44,7 @@ class SceneResources {
     const scenes::Scene& scene_;
     passes::ShadowParams shadow_params_;
     passes::SceneGeometry geometry_;
+    passes::SceneTextures textures_;
     vk_core::Buffer chunk_table_;
     passes::ShadowPass shadow_;
     passes::DrawList shadow_draws_;  // every chunk

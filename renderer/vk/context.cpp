@@ -171,6 +171,11 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
             });
         const auto properties = ctx->physical_device_.getProperties();
         caps.timestamp_period_ns = properties.limits.timestampPeriod;
+        caps.max_sampler_anisotropy =
+            f10.samplerAnisotropy ? properties.limits.maxSamplerAnisotropy : 1.0f;
+        caps.draw_indirect_first_instance = f10.drawIndirectFirstInstance;
+        caps.max_image_dimension_2d = properties.limits.maxImageDimension2D;
+        caps.max_image_array_layers = properties.limits.maxImageArrayLayers;
         caps.timestamp_valid_bits =
             ctx->physical_device_.getQueueFamilyProperties()[ctx->queue_family_].timestampValidBits;
 
@@ -185,6 +190,7 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
         enable10.pipelineStatisticsQuery = f10.pipelineStatisticsQuery;
         enable10.geometryShader = f10.geometryShader;
         enable10.depthClamp = f10.depthClamp;
+        enable10.samplerAnisotropy = f10.samplerAnisotropy;
         chain.get<vk::PhysicalDeviceVulkan11Features>().multiview = f11.multiview;
         chain.get<vk::PhysicalDeviceVulkan12Features>().hostQueryReset = VK_TRUE;
         // The GPU culling writes each view's draw count (Vulkan 1.2 core, optional feature).

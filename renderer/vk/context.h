@@ -61,6 +61,14 @@ struct DeviceCapabilities {
     bool conditional_rendering = false;
     float timestamp_period_ns = 1.0f;
     std::uint32_t timestamp_valid_bits = 0;
+    // Anisotropic texture filtering (imported scenes' textures): 1 without samplerAnisotropy.
+    float max_sampler_anisotropy = 1.0f;
+    // drawIndirectFirstInstance: the culling pass's draws carry the chunk index as first
+    // instance, which the debug view "routing" and textured scenes read.
+    bool draw_indirect_first_instance = false;
+    // Sides of 2D images and layers of array images the device allows.
+    std::uint32_t max_image_dimension_2d = 4096;
+    std::uint32_t max_image_array_layers = 256;
 };
 
 class Context {

@@ -13,19 +13,21 @@ Image::Image(const Context& ctx, const ImageDesc& desc)
     : desc_(desc),
       aspect_(is_depth_format(desc.format) ? vk::ImageAspectFlagBits::eDepth
                                            : vk::ImageAspectFlagBits::eColor) {
-    const vk::ImageCreateInfo info(
-        {}, vk::ImageType::e2D, desc.format, vk::Extent3D(desc.extent, 1), 1, desc.layers,
-        desc.samples, vk::ImageTiling::eOptimal, desc.usage, vk::SharingMode::eExclusive);
+    const vk::ImageCreateInfo info({}, vk::ImageType::e2D, desc.format,
+                                   vk::Extent3D(desc.extent, 1), desc.mip_levels, desc.layers,
+                                   desc.samples, vk::ImageTiling::eOptimal, desc.usage,
+                                   vk::SharingMode::eExclusive);
     image_ = vk::raii::Image(ctx.device(), info);
     memory_ = allocate_memory(ctx, image_.getMemoryRequirements(),
                               vk::MemoryPropertyFlagBits::eDeviceLocal);
     image_.bindMemory(*memory_, 0);
     handle_ = *image_;
-    const auto view_type = desc.layers > 1 ? vk::ImageViewType::e2DArray : vk::ImageViewType::e2D;
+    const auto view_type =
+        desc.layers > 1 || desc.array_view ? vk::ImageViewType::e2DArray : vk::ImageViewType::e2D;
     view_ = vk::raii::ImageView(
-        ctx.device(),
-        vk::ImageViewCreateInfo({}, *image_, view_type, desc.format, {},
-                                vk::ImageSubresourceRange(aspect_, 0, 1, 0, desc.layers)));
+        ctx.device(), vk::ImageViewCreateInfo(
+                          {}, *image_, view_type, desc.format, {},
+                          vk::ImageSubresourceRange(aspect_, 0, desc.mip_levels, 0, desc.layers)));
 }
 
 Image Image::layer_of(const Context& ctx, const Image& parent, std::uint32_t layer) {
@@ -36,9 +38,10 @@ Image Image::layer_of(const Context& ctx, const Image& parent, std::uint32_t lay
     image.handle_ = parent.handle_;
     image.base_layer_ = parent.base_layer_ + layer;
     image.view_ = vk::raii::ImageView(
-        ctx.device(), vk::ImageViewCreateInfo(
-                          {}, parent.handle_, vk::ImageViewType::e2D, parent.desc_.format, {},
-                          vk::ImageSubresourceRange(image.aspect_, 0, 1, image.base_layer_, 1)));
+        ctx.device(),
+        vk::ImageViewCreateInfo({}, parent.handle_, vk::ImageViewType::e2D, parent.desc_.format, {},
+                                vk::ImageSubresourceRange(image.aspect_, 0, parent.desc_.mip_levels,
+                                                          image.base_layer_, 1)));
     return image;
 }
 
@@ -56,7 +59,8 @@ void transition(const vk::raii::CommandBuffer& cmd, const Image& image, vk::Imag
     const vk::ImageMemoryBarrier2 barrier(
         src_stage, src_access, dst_stage, dst_access, from, to, VK_QUEUE_FAMILY_IGNORED,
         VK_QUEUE_FAMILY_IGNORED, image.handle(),
-        vk::ImageSubresourceRange(image.aspect(), 0, 1, image.base_layer(), image.desc().layers));
+        vk::ImageSubresourceRange(image.aspect(), 0, image.desc().mip_levels, image.base_layer(),
+                                  image.desc().layers));
     cmd.pipelineBarrier2(vk::DependencyInfo({}, {}, {}, barrier));
 }
 

@@ -14,6 +14,8 @@ struct ImageDesc {
     vk::ImageUsageFlags usage;
     std::uint32_t layers = 1;
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;  // > 1: an MSAA target
+    std::uint32_t mip_levels = 1;  // the view and transition() cover them all
+    bool array_view = false;       // an array view even of one layer (for sampler2DArray)
 };
 
 class Image {

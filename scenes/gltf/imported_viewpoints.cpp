@@ -10,6 +10,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "scenes/gltf/open_space.h"
+
 namespace monoplane::scenes::gltf {
 namespace {
 
@@ -56,20 +58,25 @@ std::optional<rig::Pose> camera_pose(const glm::dmat4& world) {
     return pose;
 }
 
-std::vector<Viewpoint> imported_viewpoints(const Aabb& bounds,
+std::vector<Viewpoint> imported_viewpoints(const Scene& scene,
                                            const std::optional<rig::Pose>& camera) {
+    const Aabb& bounds = scene.bounds;
     Viewpoint standing;
     if (camera) {
         standing.name = "default";
         standing.head = *camera;
-    } else if (is_walkable(bounds)) {
-        const double depth = static_cast<double>(bounds.max.z) - bounds.min.z;
-        const glm::dvec3 position(0.5 * (static_cast<double>(bounds.min.x) + bounds.max.x),
-                                  static_cast<double>(bounds.min.y) + kEyeHeight,
-                                  static_cast<double>(bounds.max.z) - std::min(1.0, 0.25 * depth));
-        standing = make_viewpoint("default", position);
     } else {
         standing = framing("default", bounds, 0.0, 20.0);
+        if (is_walkable(bounds)) {
+            const double depth = static_cast<double>(bounds.max.z) - bounds.min.z;
+            const glm::dvec3 position(
+                0.5 * (static_cast<double>(bounds.min.x) + bounds.max.x),
+                static_cast<double>(bounds.min.y) + kEyeHeight,
+                static_cast<double>(bounds.max.z) - std::min(1.0, 0.25 * depth));
+            if (is_open_space(scene, position, glm::dvec3(0.0, 0.0, -1.0))) {
+                standing = make_viewpoint("default", position);
+            }
+        }
     }
     Viewpoint forward = standing;
     forward.name = "bench-forward";

@@ -27,11 +27,13 @@ bool is_walkable(const Aabb& bounds);
 std::optional<rig::Pose> camera_pose(const glm::dmat4& world);
 
 // "default": the camera pose if there is one; else, in a walkable scene, standing at eye height
-// near its +z side looking down -z across it; else outside the bounds, looking at their centre
-// from the +z side and 20 degrees above. Then "bench-forward" (the default looking 10 degrees
-// further down), "bench-overview" (from above a corner) and "bench-side" (from +x), all three
-// framing the whole bounds except bench-forward.
-std::vector<Viewpoint> imported_viewpoints(const Aabb& bounds,
+// near its +z side looking down -z across it, if that spot is open space (open_space.h: not
+// inside a solid, nothing right in front of the eyes); else outside the bounds, looking at their
+// centre from the +z side and 20 degrees above. Then "bench-forward" (the default looking 10
+// degrees further down), "bench-overview" (from above a corner) and "bench-side" (from +x), all
+// three framing the whole bounds except bench-forward. The scene's chunks, indices, vertices and
+// bounds must be complete.
+std::vector<Viewpoint> imported_viewpoints(const Scene& scene,
                                            const std::optional<rig::Pose>& camera);
 
 }  // namespace monoplane::scenes::gltf

@@ -15,6 +15,7 @@
 #include "scenes/gltf/node_instances.h"
 #include "scenes/gltf/primitive_import.h"
 #include "scenes/gltf/primitive_topology.h"
+#include "scenes/gltf/surface_look.h"
 #include "scenes/gltf/texture_set.h"
 
 namespace monoplane::scenes {
@@ -62,11 +63,15 @@ Result<bool> check_expanded_size(const tinygltf::Model& model,
             const std::uint64_t added = mode == static_cast<int>(PrimitiveMode::Triangles)
                                             ? sequence / 3
                                             : (sequence >= 3 ? sequence - 2 : 0);
-            triangles = saturating_add(triangles, added);
             const bool flat = options.generated_normals == GeneratedNormals::Flat &&
                               primitive.attributes.count("NORMAL") == 0;
             const std::uint64_t corners = saturating_add(saturating_add(added, added), added);
-            vertices = saturating_add(vertices, flat ? corners : positions);
+            // A double-sided primitive's back faces are triangles and vertices of their own.
+            const int sides = is_double_sided(model, primitive.material) ? 2 : 1;
+            for (int side = 0; side < sides; ++side) {
+                triangles = saturating_add(triangles, added);
+                vertices = saturating_add(vertices, flat ? corners : positions);
+            }
         }
     }
     if (triangles > max_triangles) {
@@ -117,6 +122,13 @@ std::vector<std::string> warnings_for(const tinygltf::Model& model, const GltfLo
         ignored += (ignored.empty() ? "" : ", ") + extension;
     }
     if (!ignored.empty()) lines.push_back("ignores extensions " + ignored);
+    const auto translucent = std::count_if(
+        model.materials.begin(), model.materials.end(),
+        [](const tinygltf::Material& material) { return material.alphaMode != "OPAQUE"; });
+    if (translucent > 0) {
+        lines.push_back("draws " + plural(static_cast<std::size_t>(translucent), "material") +
+                        " with alphaMode MASK or BLEND as opaque");
+    }
     if (!model.skins.empty() || !model.animations.empty()) {
         lines.push_back("ignores skins and animations (meshes are drawn in their rest pose)");
     }
@@ -200,7 +212,7 @@ Result<Scene> load(const std::filesystem::path& file, const GltfLoadOptions& opt
                     [&](std::size_t done) { progress.chunking(done, triangles); });
     geometry = ImportedGeometry{};
     scene.textures = textures.take();
-    scene.viewpoints = imported_viewpoints(scene.bounds, camera);
+    scene.viewpoints = imported_viewpoints(scene, camera);
     return scene;
 }
 

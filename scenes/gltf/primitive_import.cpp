@@ -64,6 +64,31 @@ Result<std::vector<glm::vec3>> to_world(const FloatElements& positions, const gl
     return result;
 }
 
+// glTF's doubleSided: the batch's triangles seen from behind, as triangles of their own with
+// the winding reversed and the normals turned, so that they stay counter-clockwise about their
+// normals (scene.h) and survive back-face culling exactly where the front faces do not.
+void add_back_faces(GeometryBatch& batch, ImportedGeometry& geometry) {
+    const std::size_t front_first_vertex = batch.first_vertex;
+    const std::size_t front_vertices = batch.vertex_count;
+    for (std::size_t k = 0; k < front_vertices; ++k) {
+        Vertex back = geometry.vertices[front_first_vertex + k];
+        back.normal = -back.normal;
+        geometry.vertices.push_back(back);
+        geometry.texcoords.push_back(geometry.texcoords[front_first_vertex + k]);
+    }
+    const std::size_t front_indices = batch.index_count;
+    const auto offset = static_cast<std::uint32_t>(front_vertices);
+    for (std::size_t t = 0; t < front_indices; t += 3) {
+        const std::uint32_t* front = &geometry.indices[batch.first_index + t];
+        const std::uint32_t a = front[0] + offset;
+        const std::uint32_t b = front[1] + offset;
+        const std::uint32_t c = front[2] + offset;
+        geometry.indices.insert(geometry.indices.end(), {a, c, b});
+    }
+    batch.vertex_count = static_cast<std::uint32_t>(2 * front_vertices);
+    batch.index_count = 2 * front_indices;
+}
+
 }  // namespace
 
 std::string describe_primitive(const tinygltf::Model& model, int mesh, int primitive) {
@@ -228,7 +253,8 @@ Result<bool> import_primitive(const PrimitiveSource& source, const GltfLoadOptio
     geometry.texcoords.reserve(geometry.texcoords.size() + output_count);
     for (std::size_t k = 0; k < output_count; ++k) {
         const std::size_t from = flat ? origin[k] : k;
-        glm::vec4 colour = look->base_color;  // linear, like COLOR_0 and the baked texture
+        // Linear, like COLOR_0; the renderer multiplies in the texture (forward_shading.glsl).
+        glm::vec4 colour = look->base_color;
         if (!colours.values.empty()) {
             const float* c = &colours.values[from * colours.components];
             colour *= glm::vec4(c[0], c[1], c[2], colours.components == 4 ? c[3] : 1.0f);
@@ -236,9 +262,6 @@ Result<bool> import_primitive(const PrimitiveSource& source, const GltfLoadOptio
         glm::vec2 texcoord(0.0f);
         if (scene_texture >= 0) {
             texcoord = {uv.values[2 * from], uv.values[2 * from + 1]};
-            // The renderer does not sample textures yet: the texture's colour around this
-            // vertex stands in (texture_bake.h).
-            colour *= textures.bake(scene_texture).sample(texcoord);
         }
         Vertex vertex;
         vertex.position = (*world_positions)[from];
@@ -262,6 +285,7 @@ Result<bool> import_primitive(const PrimitiveSource& source, const GltfLoadOptio
         }
     }
     geometry.indices.insert(geometry.indices.end(), list.indices.begin(), list.indices.end());
+    if (look->double_sided) add_back_faces(batch, geometry);
     geometry.batches.push_back(batch);
     return true;
 }

@@ -49,7 +49,13 @@ Result<SurfaceLook> surface_look(const tinygltf::Model& model, int material_inde
         }
     }
     look.material_packed = pack_material(material);
+    look.double_sided = is_double_sided(model, material_index);
     return look;
+}
+
+bool is_double_sided(const tinygltf::Model& model, int material) {
+    return material >= 0 && static_cast<std::size_t>(material) < model.materials.size() &&
+           model.materials[static_cast<std::size_t>(material)].doubleSided;
 }
 
 }  // namespace monoplane::scenes::gltf

@@ -16,7 +16,14 @@ struct SurfaceLook {
     std::uint32_t material_packed = 0;  // pack_material()
     int texture = -1;                   // glTF texture of the base colour, or -1
     int texcoord_set = 0;               // its TEXCOORD_n
+    // glTF's doubleSided: back faces are drawn too (the importer adds them as triangles of their
+    // own, since the renderer culls back faces of every chunk alike).
+    bool double_sided = false;
 };
+
+// Whether material `material` is double-sided; false for -1 (glTF's default material) and for an
+// index that names no material (surface_look() reports that). Any time.
+bool is_double_sided(const tinygltf::Model& model, int material);
 
 // The look of material `material`, or glTF's default material for -1 (white, metallic 1,
 // roughness 1). Metals are approximated: the base colour stays the diffuse albedo (the renderer

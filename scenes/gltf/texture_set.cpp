@@ -1,6 +1,5 @@
 #include "scenes/gltf/texture_set.h"
 
-#include <cassert>
 #include <utility>
 
 #include "scenes/gltf/texture_decode.h"
@@ -17,20 +16,13 @@ Result<int> TextureSet::use(int texture) {
     if (!decoded) return decoded.error();
     texels_left_ -= std::uint64_t{decoded->width} * decoded->height;
     const int index = static_cast<int>(textures_.size());
-    bakes_.emplace_back(*decoded);
     textures_.push_back(std::move(decoded).value());
     scene_index_of_.emplace(texture, index);
     return index;
 }
 
-const TextureBake& TextureSet::bake(int scene_texture) const {
-    assert(scene_texture >= 0 && static_cast<std::size_t>(scene_texture) < bakes_.size());
-    return bakes_[static_cast<std::size_t>(scene_texture)];
-}
-
 std::vector<SceneTexture> TextureSet::take() {
     scene_index_of_.clear();
-    bakes_.clear();
     return std::exchange(textures_, {});
 }
 

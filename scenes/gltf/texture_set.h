@@ -8,7 +8,6 @@
 
 #include "common/result.h"
 #include "scenes/gltf/gltf_document.h"
-#include "scenes/gltf/texture_bake.h"
 #include "scenes/scene.h"
 
 namespace monoplane::scenes::gltf {
@@ -20,8 +19,6 @@ class TextureSet {
 
     // The Scene::textures index of glTF texture `texture`, decoding it on first use.
     Result<int> use(int texture);
-    // May be called only with an index use() returned.
-    const TextureBake& bake(int scene_texture) const;
     // The decoded textures, in Scene::textures order; the set is empty afterwards.
     std::vector<SceneTexture> take();
 
@@ -30,7 +27,6 @@ class TextureSet {
     std::uint64_t texels_left_;
     std::map<int, int> scene_index_of_;
     std::vector<SceneTexture> textures_;
-    std::vector<TextureBake> bakes_;
 };
 
 }  // namespace monoplane::scenes::gltf

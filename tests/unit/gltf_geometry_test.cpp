@@ -214,6 +214,37 @@ TEST(GltfGeometry, MirroredNodeKeepsCounterClockwiseWinding) {
     }
 }
 
+// glTF's doubleSided: the back of the triangle is a triangle of its own, wound the other way
+// about the opposite normal (so back-face culling keeps exactly one of the two from any side);
+// a single-sided material keeps one triangle. Counted against the triangle limit as two.
+TEST(GltfGeometry, DoubleSidedMaterialsGetBackFaces) {
+    for (const bool double_sided : {true, false}) {
+        const auto dir = testing::test_directory(double_sided ? "two_sided" : "one_sided");
+        TestGltf file;
+        file.json["materials"] = {{{"doubleSided", double_sided}}};
+        const int positions = file.add_positions({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+        file.add_node({{"mesh", file.add_mesh({{"POSITION", positions}}, -1, 4, 0)}});
+        file.write_gltf(dir / "sides.gltf");
+        const Scene scene = load_ok(dir / "sides.gltf");
+        testing::expect_well_formed(scene);
+        ASSERT_EQ(scene.triangle_count(), double_sided ? 2u : 1u);
+        EXPECT_TRUE(has_triangle(scene, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}));
+        EXPECT_EQ(has_triangle(scene, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}), double_sided);
+        for (const testing::WorldTriangle& t : testing::triangles_of(scene)) {
+            const glm::vec3 face = glm::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]);
+            for (const glm::vec3& n : t.n) EXPECT_TRUE(testing::near(n, glm::normalize(face)));
+        }
+        if (double_sided) {
+            GltfLoadOptions limited = quiet();
+            limited.max_triangles = 1;
+            Result<Scene> refused = load_gltf_scene(dir / "sides.gltf", limited);
+            ASSERT_FALSE(refused.ok());
+            EXPECT_NE(refused.error().message.find("has 2 triangles"), std::string::npos)
+                << refused.error().message;
+        }
+    }
+}
+
 // An octahedron with shared vertices: each vertex touches four faces of equal area whose normals
 // (+-1, +-1, +-1)/sqrt(3) sum to its own direction, so the generated normal is the vertex's
 // position.
@@ -401,6 +432,40 @@ TEST(GltfGeometry, DefaultViewpointStandsInAWalkableScene) {
     EXPECT_NEAR(head.orientation.w, 1.0, 1e-12);
     // Triangles face up (+y): counter-clockwise seen from above.
     for (const Vertex& vertex : scene.vertices) EXPECT_GT(vertex.normal.y, 0.99f);
+}
+
+// A 10 m cube, wound counter-clockwise seen from outside (a solid, like a large engine block) or
+// from inside (a room). Its walkable standing spot (1.7 m above the floor, 1 m inside the +z
+// wall) lies inside both: in the room it is open space and the participant stands there; in the
+// solid every ray meets a face from behind, so the object is framed from outside instead
+// (bounding sphere radius 5 sqrt(3) = 8.660254 at r / sin 35 deg = 15.098689 from its centre).
+TEST(GltfGeometry, DefaultViewpointNeverStandsInsideASolid) {
+    for (const bool room : {true, false}) {
+        const auto dir = testing::test_directory(room ? "room" : "solid");
+        TestGltf file;
+        const std::vector<glm::vec3> v = {{-5, 0, -5}, {5, 0, -5}, {5, 10, -5}, {-5, 10, -5},
+                                          {-5, 0, 5},  {5, 0, 5},  {5, 10, 5},  {-5, 10, 5}};
+        // Outward counter-clockwise faces of the cube.
+        std::vector<std::uint32_t> faces = {0, 3, 2, 0, 2, 1, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                                            3, 7, 6, 3, 6, 2, 0, 4, 7, 0, 7, 3, 1, 2, 6, 1, 6, 5};
+        if (room) {
+            for (std::size_t t = 0; t < faces.size(); t += 3) std::swap(faces[t + 1], faces[t + 2]);
+        }
+        file.add_node({{"mesh", file.add_mesh({{"POSITION", file.add_positions(v)}},
+                                              file.add_indices(faces))}});
+        file.write_gltf(dir / "cube.gltf");
+        const Scene scene = load_ok(dir / "cube.gltf");
+        const rig::Pose& head = scene.viewpoints.front().head;
+        if (room) {
+            EXPECT_NEAR(head.position.y, 1.7, 1e-9);
+            EXPECT_NEAR(head.position.z, 4.0, 1e-9);
+        } else {
+            const double distance = 5.0 * std::sqrt(3.0) / std::sin(35.0 * std::numbers::pi / 180);
+            const double angle = 20.0 * std::numbers::pi / 180;
+            EXPECT_NEAR(head.position.y, 5.0 + distance * std::sin(angle), 1e-5);
+            EXPECT_NEAR(head.position.z, distance * std::cos(angle), 1e-5);
+        }
+    }
 }
 
 // `scene` picks the scene; without it the first scene; without scenes every root node.

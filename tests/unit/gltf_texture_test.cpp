@@ -1,7 +1,6 @@
 // Base-colour textures of imported scenes: kept (image, texture coordinates, chunk texture) for
-// the renderer, and baked per vertex as linear albedo meanwhile. Expected albedos are worked out
-// by hand from the sRGB transfer function: sRGB 128 is linear ((128/255 + 0.055) / 1.055)^2.4
-// = 0.215861, which packs to round(55.04) = 55.
+// the renderer, which samples them (tests/gpu/textured_scene_test.cpp); the vertex albedo holds
+// only the base-colour factor and vertex colour, which the texture multiplies in the shader.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -66,7 +65,7 @@ json textured_material(int texture, std::vector<double> factor = {1, 1, 1, 1}) {
 const std::vector<unsigned char> kOrange = {255, 128, 0, 255, 255, 128, 0, 255,
                                             255, 128, 0, 255, 255, 128, 0, 255};
 
-TEST(GltfTexture, ExternalPngIsKeptAndBakedIntoLinearAlbedo) {
+TEST(GltfTexture, ExternalPngIsKeptWithItsCoordinates) {
     const auto dir = testing::test_directory("texture_png");
     write_bytes(dir / "orange.png", png(2, 2, kOrange));
     TestGltf file;
@@ -93,40 +92,36 @@ TEST(GltfTexture, ExternalPngIsKeptAndBakedIntoLinearAlbedo) {
         const glm::vec3 p = scene.vertices[i].position;
         const glm::vec2 expected = p.x > 0.5f ? uv[1] : (p.y > 0.5f ? uv[2] : uv[0]);
         EXPECT_EQ(scene.texcoords[i], expected);
-        // factor 0.5 * linear 1.0 -> 128; linear 0.215861 -> 55; 0; alpha 255.
-        EXPECT_EQ(scene.vertices[i].albedo_rgba8, 0xff003780u)
+        // The factor only (0.5 packs to 128): the renderer multiplies the texture in.
+        EXPECT_EQ(scene.vertices[i].albedo_rgba8, 0xffffff80u)
             << std::hex << scene.vertices[i].albedo_rgba8;
     }
 }
 
-// A 2 x 1 texture, black then white. Texel centres at u = 0.25 and 0.75; at u = 0 the bilinear
-// sample is half the left texel and half its neighbour beyond the edge: black again when
-// clamped, white when repeated (linear 0.5 packs to 128).
-TEST(GltfTexture, BakeSamplesBilinearlyWithTheSamplersWrapMode) {
-    for (const bool clamp : {true, false}) {
-        const auto dir = testing::test_directory(clamp ? "wrap_clamp" : "wrap_repeat");
-        write_bytes(dir / "ramp.png", png(2, 1, {0, 0, 0, 255, 255, 255, 255, 255}));
+TEST(GltfTexture, TheSamplersWrapModesAreKept) {
+    struct Case {
+        int wrap_s, wrap_t;
+        TextureWrap u, v;
+    };
+    const std::vector<Case> cases = {
+        {33071, 10497, TextureWrap::ClampToEdge, TextureWrap::Repeat},
+        {33648, 33071, TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge},
+    };
+    const auto dir = testing::test_directory("wrap_modes");
+    write_bytes(dir / "ramp.png", png(2, 1, {0, 0, 0, 255, 255, 255, 255, 255}));
+    for (const Case& c : cases) {
         TestGltf file;
         file.json["images"] = {{{"uri", "ramp.png"}}};
-        file.json["samplers"] = {{{"wrapS", clamp ? 33071 : 10497}, {"wrapT", 33071}}};
+        file.json["samplers"] = {{{"wrapS", c.wrap_s}, {"wrapT", c.wrap_t}}};
         file.json["textures"] = {{{"source", 0}, {"sampler", 0}}};
         file.json["materials"] = {textured_material(0)};
         add_textured_triangle(file, {{0.25f, 0.5f}, {0.75f, 0.5f}, {0.0f, 0.5f}});
         file.write_glb(dir / "ramp.glb");
         Result<Scene> scene = load_gltf_scene(dir / "ramp.glb", quiet());
         ASSERT_TRUE(scene.ok()) << scene.error().message;
-        EXPECT_EQ(scene->textures[0].wrap_u,
-                  clamp ? TextureWrap::ClampToEdge : TextureWrap::Repeat);
-        for (const Vertex& v : scene->vertices) {
-            const std::uint32_t red = v.albedo_rgba8 & 0xffu;
-            if (v.position.x > 0.5f) {
-                EXPECT_EQ(red, 255u);  // u = 0.75
-            } else if (v.position.y > 0.5f) {
-                EXPECT_EQ(red, clamp ? 0u : 128u) << clamp;  // u = 0
-            } else {
-                EXPECT_EQ(red, 0u);  // u = 0.25
-            }
-        }
+        EXPECT_EQ(scene->textures[0].wrap_u, c.u) << c.wrap_s;
+        EXPECT_EQ(scene->textures[0].wrap_v, c.v) << c.wrap_t;
+        for (const Vertex& v : scene->vertices) EXPECT_EQ(v.albedo_rgba8, 0xffffffffu);
     }
 }
 
@@ -156,7 +151,7 @@ TEST(GltfTexture, EmbeddedImages) {
         ASSERT_TRUE(scene.ok()) << scene.error().message;
         ASSERT_EQ(scene->textures.size(), 1u) << name;
         EXPECT_EQ(scene->textures[0].rgba8_srgb, kOrange) << name;
-        for (const Vertex& v : scene->vertices) EXPECT_EQ(v.albedo_rgba8, 0xff0037ffu) << name;
+        for (const Vertex& v : scene->vertices) EXPECT_EQ(v.albedo_rgba8, 0xffffffffu) << name;
     }
 }
 
@@ -183,7 +178,7 @@ TEST(GltfTexture, ChunksNeverMixTextures) {
         const int texture = white ? 1 : 0;
         EXPECT_EQ(t.texture, texture);
         EXPECT_EQ(scene->textures[static_cast<std::size_t>(texture)].width, white ? 1u : 2u);
-        EXPECT_EQ(t.albedo[0], white ? 0xffffffffu : 0xff0037ffu);
+        EXPECT_EQ(t.albedo[0], 0xffffffffu);
     }
 }
 

@@ -147,7 +147,8 @@ ShaderSet shader_set(const ForwardConfig& config) {
 }
 }  // namespace
 
-ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& config)
+ForwardPass::ForwardPass(const vk_core::Context& ctx, vk::DescriptorSetLayout scene_textures_layout,
+                         const ForwardConfig& config)
     : ctx_(ctx), config_(config) {
     using Stage = vk::ShaderStageFlagBits;
     const bool gs = config.stereo == StereoDuplication::kGeometryShader;
@@ -178,7 +179,7 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& confi
     merged_depth_layout_ = vk::raii::DescriptorSetLayout(
         ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, set1_bindings));
     // One layout for all pipelines; set 1 is bound only for the steps that read it.
-    const std::array set_layouts = {*set_layout_, *merged_depth_layout_};
+    const std::array set_layouts = {*set_layout_, *merged_depth_layout_, scene_textures_layout};
     layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layouts));
 
     const ShaderSet shaders = shader_set(config);
@@ -267,8 +268,8 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx, const ForwardConfig& confi
 
 void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
                          vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
-                         const SceneGeometry& geometry, const IndirectDraws& chunks,
-                         std::span<const ForwardDraw> steps) const {
+                         const SceneGeometry& geometry, const SceneTextures& textures,
+                         const IndirectDraws& chunks, std::span<const ForwardDraw> steps) const {
     using Stage = vk::PipelineStageFlagBits2;
     using Access = vk::AccessFlagBits2;
     const MultisampleTargets* ms = targets.multisample;
@@ -338,6 +339,7 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                            .setPDepthAttachment(&depth));
     vk_core::set_viewport_and_scissor(cmd, targets.area);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, view_set, {});
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 2, textures.set(), {});
     geometry.bind(cmd);
     // Whether a depth pre-pass precedes the chunk steps: they then test for its depths.
     bool prepassed = false;

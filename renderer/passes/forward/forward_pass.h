@@ -1,5 +1,6 @@
 // Forward shading of one view into an HDR target, then the sky where nothing was drawn.
-// Reads: view constants (set 0, binding 0), the shadow map (binding 1).
+// Reads: view constants (set 0, binding 0), the shadow map (binding 1), the scene's textures
+// (set 2, SceneTextures).
 // Writes: HDR colour, reversed-Z depth, linear depth (metres in front of the eyes' plane), and with
 // ForwardConfig::velocity the screen-space velocity TAA reprojects with.
 #pragma once
@@ -9,6 +10,7 @@
 
 #include "renderer/passes/shared/indirect_draws.h"
 #include "renderer/passes/shared/scene_geometry.h"
+#include "renderer/passes/shared/scene_textures.h"
 #include "renderer/passes/shared/view_constants.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptor_set.h"
@@ -84,7 +86,10 @@ class ForwardPass {
     // NDC now minus NDC in the previous frame: a pixel is 2 / width, well within half precision.
     static constexpr vk::Format kVelocityFormat = vk::Format::eR16G16Sfloat;
 
-    explicit ForwardPass(const vk_core::Context& ctx, const ForwardConfig& config = {});
+    // scene_textures_layout: SceneTextures::layout() of the scene this pass will draw (its set
+    // 2); the layout must outlive the pass.
+    ForwardPass(const vk_core::Context& ctx, vk::DescriptorSetLayout scene_textures_layout,
+                const ForwardConfig& config = {});
 
     const ForwardConfig& config() const { return config_; }
 
@@ -102,10 +107,11 @@ class ForwardPass {
     // Expects the targets in eUndefined (their contents are replaced); leaves the colour targets
     // (velocity included) in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
     // merged_depth_set is needed only by the kMaskHidden and kChunksShowRouting steps (set 1).
+    // textures: the scene's, made with the layout this pass was made with.
     void record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
                 vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
-                const SceneGeometry& geometry, const IndirectDraws& chunks,
-                std::span<const ForwardDraw> steps) const;
+                const SceneGeometry& geometry, const SceneTextures& textures,
+                const IndirectDraws& chunks, std::span<const ForwardDraw> steps) const;
 
   private:
     const vk_core::Context& ctx_;

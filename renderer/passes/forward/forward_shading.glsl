@@ -21,6 +21,10 @@ layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec3 in_albedo;
 layout(location = 3) flat in uint in_material;
+layout(location = 6) in vec2 in_uv;
+layout(location = 7) flat in uvec4 in_texture;
+#define MONOPLANE_SCENE_TEXTURES_FRAGMENT
+#include "renderer/passes/shared/scene_textures.glsl"
 layout(location = 0) out vec4 out_color;
 // Distance in front of the eyes' plane along the head's forward axis: the same for all three
 // cameras of the rig (they share the head's orientation), so hybrid can assemble it per pixel.
@@ -91,7 +95,11 @@ void main() {
     float roughness = float(in_material & 0xffu) / 255.0;
     float specular = float((in_material >> 8) & 0xffu) / 255.0;
     uint pattern = (in_material >> 16) & 0xffu;
-    vec3 albedo = patterned_albedo(in_albedo, pattern, in_world);
+    vec3 albedo = in_albedo;
+    // glTF: the base colour is factor x vertex colour (in_albedo) x texture. The slot is flat,
+    // so the branch is uniform within every primitive and the texture's gradients are valid.
+    if (in_texture.x != MONOPLANE_NO_TEXTURE) albedo *= base_colour_texture(in_texture, in_uv).rgb;
+    albedo = patterned_albedo(albedo, pattern, in_world);
 
     float n_dot_l = max(dot(n, l), 0.0);
     float visibility = n_dot_l > 0.0 ? sun_visibility(in_world, n) : 0.0;

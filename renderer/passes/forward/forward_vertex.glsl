@@ -6,6 +6,8 @@
 #endif
 #include "renderer/passes/shared/view_block.glsl"
 #include "renderer/passes/shared/scene_vertex.glsl"
+#define MONOPLANE_SCENE_TEXTURES_VERTEX
+#include "renderer/passes/shared/scene_textures.glsl"
 
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
@@ -14,6 +16,8 @@ layout(location = 3) flat out uint out_material;
 #ifdef MONOPLANE_SHOW_ROUTING
 layout(location = 4) flat out uint out_chunk;  // the draw's first instance: its chunk index
 #endif
+layout(location = 6) out vec2 out_uv;             // base-colour texture coordinate
+layout(location = 7) flat out uvec4 out_texture;  // its slot (scene_textures.glsl)
 
 // The benchmark's vertex-heavy configuration (papers/001 Table 1: single-pass stereo gains most
 // where vertices cost most): rounds of dependent per-vertex arithmetic, as skinning or procedural
@@ -34,6 +38,7 @@ void main() {
     out_normal = in_normal;
     out_albedo = in_albedo.rgb;
     out_material = in_material;
+    fetch_texture(out_texture, out_uv);
 #ifdef MONOPLANE_SHOW_ROUTING
     out_chunk = uint(gl_InstanceIndex);
 #endif

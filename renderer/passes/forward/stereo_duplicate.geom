@@ -44,6 +44,10 @@ layout(location = 3) flat out uint out_material;
 layout(location = 4) in uint in_chunk[];
 layout(location = 4) flat out uint out_chunk;
 #endif
+layout(location = 6) in vec2 in_uv[];
+layout(location = 7) in uvec4 in_texture[];
+layout(location = 6) out vec2 out_uv;
+layout(location = 7) flat out uvec4 out_texture;
 
 // Whether all three vertices lie beyond one clip plane (reversed Z: 0 <= z <= w inside): the
 // rasteriser would draw nothing of the copy, so it is not emitted. Chunks are culled against the
@@ -67,6 +71,8 @@ void main() {
             out_normal = in_normal[i];
             out_albedo = in_albedo[i];
             out_material = in_material[i];
+            out_uv = in_uv[i];
+            out_texture = in_texture[i];
 #ifdef MONOPLANE_SHOW_ROUTING
             out_chunk = in_chunk[i];
 #endif
