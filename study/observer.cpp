@@ -11,12 +11,17 @@
 //   extra look-back pairs: geometric, P(k) = 0.4 * 0.6^k, mean 1.5.
 //   dwell times: log-normal, median 2.5 s, sigma 0.6, clamped to [0.25 s, 30 s] (a reaction time
 //     at least; a wandering participant at most).
+//
+// "psychometric:threshold=T,slope=B,lapse=L" (issue 21): chooses the reference with the
+// probability of study/psychometric.h at the trial's m, whatever the projection error; views
+// both labels once, so every decision is valid and moves a staircase.
 #include "study/observer.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
+#include "study/observer_spec.h"
 #include "study/random.h"
 
 namespace monoplane::study {
@@ -122,6 +127,23 @@ class DefaultObserver final : public ObserverBase {
     }
 };
 
+class PsychometricObserver final : public ObserverBase {
+  public:
+    PsychometricObserver(const PsychometricFunction& function, std::uint64_t seed)
+        : ObserverBase(seed), function_(function) {}
+    std::string_view name() const override { return "psychometric"; }
+    TrialPlan plan_trial(const ScheduledTrial& trial, int reference_label, double) override {
+        Rng rng = trial_rng(trial);
+        const bool reference = rng.bernoulli(reference_probability(function_, trial.mono_plane));
+        const int reference_at = reference_label == 2 ? 2 : 1;
+        return viewing_both(reference ? reference_at : 3 - reference_at, 0, rng);
+    }
+    int answer(int, int scale_points) override { return std::max(1, (scale_points + 1) / 2); }
+
+  private:
+    PsychometricFunction function_;
+};
+
 }  // namespace
 
 std::vector<std::string> observer_names() {
@@ -129,12 +151,18 @@ std::vector<std::string> observer_names() {
 }
 
 Result<std::unique_ptr<Observer>> make_observer(std::string_view name, std::uint64_t seed) {
+    if (name.starts_with(kPsychometricPrefix)) {
+        Result<PsychometricFunction> function = parse_psychometric_spec(name);
+        if (!function) return function.error();
+        return std::unique_ptr<Observer>(new PsychometricObserver(*function, seed));
+    }
     if (name == "default") return std::unique_ptr<Observer>(new DefaultObserver(seed));
     if (name == "chance") return std::unique_ptr<Observer>(new ChanceObserver(seed));
     if (name == "reference") return std::unique_ptr<Observer>(new ReferenceObserver(seed));
     std::string known;
     for (const std::string& n : observer_names()) known += (known.empty() ? "" : ", ") + n;
-    return Error{"unknown observer '" + std::string(name) + "' (known observers: " + known + ")"};
+    return Error{"unknown observer '" + std::string(name) + "' (known observers: " + known +
+                 "; or " + std::string(kPsychometricPrefix) + "threshold=T,slope=B,lapse=L)"};
 }
 
 }  // namespace monoplane::study

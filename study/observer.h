@@ -36,7 +36,9 @@ class Observer {
     virtual int answer(int item, int scale_points) = 0;
 };
 
-// "default", "chance", "reference"; an unknown name is an error listing these.
+// "default", "chance", "reference" (observer_names()), or
+// "psychometric:threshold=T,slope=B,lapse=L" (study/observer_spec.h; a bad specification is an
+// error saying where). An unknown name is an error listing these.
 Result<std::unique_ptr<Observer>> make_observer(std::string_view name, std::uint64_t seed);
 std::vector<std::string> observer_names();
 

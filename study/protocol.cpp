@@ -30,7 +30,7 @@
 namespace monoplane::study {
 namespace {
 
-constexpr std::array<std::string_view, 13> kTopLevelKeys = {"name",
+constexpr std::array<std::string_view, 15> kTopLevelKeys = {"name",
                                                             "scenes",
                                                             "mono_planes",
                                                             "alternatives",
@@ -42,7 +42,9 @@ constexpr std::array<std::string_view, 13> kTopLevelKeys = {"name",
                                                             "far",
                                                             "questionnaire",
                                                             "render",
-                                                            "missed_frame_threshold"};
+                                                            "missed_frame_threshold",
+                                                            "procedure",
+                                                            "staircase"};
 constexpr std::array<std::string_view, 2> kQuestionnaireKeys = {"items", "scale_points"};
 constexpr std::array<std::string_view, 3> kRenderKeys = {"anti_aliasing", "ssao", "detail"};
 // The render command's names (renderer/plan/render_choices.h, scenes/generate.h).
@@ -544,6 +546,7 @@ Result<Protocol> parse(std::string_view toml_text, std::string_view source_name,
     read_scenes(root, scene_directory, protocol, problems);
     const bool clip_range_valid = read_clip_range(root, protocol, problems);
     read_mono_planes(root, clip_range_valid, protocol, problems);
+    read_procedure(root, protocol.mono_planes, protocol.procedure, protocol.staircase, problems);
     read_alternatives(root, protocol, problems);
     read_session_options(root, protocol, problems);
     read_questionnaire(root, protocol, problems);

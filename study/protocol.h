@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/result.h"
+#include "study/protocol_staircase.h"
 #include "study/render_mode.h"
 
 namespace monoplane::study {
@@ -56,6 +57,11 @@ struct Protocol {
     std::map<std::string, std::filesystem::path> scene_files;
     std::vector<double> mono_planes;  // metres, strictly inside (near, far), no duplicates
     std::array<RenderMode, 2> alternatives{RenderMode::Stereo, RenderMode::Hybrid};
+    // Constant: every scene x distance once. Staircase: per scene, up to
+    // staircase.trials_per_scene trials whose m an adaptive rule chooses within mono_planes'
+    // range, the scenes' trials interleaved (study/schedule.h).
+    Procedure procedure = Procedure::Constant;
+    StaircaseSettings staircase;
     TrialOrder order = TrialOrder::Randomized;
     FirstSceneBalance first_scene = FirstSceneBalance::LatinSquare;
     bool require_both_viewed = true;
@@ -71,7 +77,14 @@ struct Protocol {
     std::string text;             // the file's text, stored with every session
     std::uint64_t text_hash = 0;  // FNV-1a 64 of text: identifies the protocol version
 
-    std::size_t trials_per_session() const { return scenes.size() * mono_planes.size(); }
+    // The data trials of a session; for a staircase the most (a posterior-width stopping rule
+    // may end a scene's staircase sooner).
+    std::size_t trials_per_session() const {
+        const std::size_t per_scene = procedure == Procedure::Staircase
+                                          ? static_cast<std::size_t>(staircase.trials_per_scene)
+                                          : mono_planes.size();
+        return scenes.size() * per_scene;
+    }
 };
 
 // Parses and validates; all problems are reported, one per line, as "FILE:LINE:COL: key 'K': ..."

@@ -259,5 +259,58 @@ TEST(Observer, AnswersAreOnTheScale) {
     EXPECT_EQ(chance->answer(0, 1), 1);
 }
 
+// psychometric:threshold=8,slope=3,lapse=0.02 (issue 21) chooses the reference with probability
+// 0.5 + 0.48 / (1 + (m / 8)^3): 0.5 + 0.48 / 1.125 = 0.9267 at 4 m, 0.74 at 8 m and
+// 0.5 + 0.48 / 9 = 0.5533 at 16 m, whichever label shows the reference; it always views both.
+TEST(Observer, PsychometricChoosesTheReferenceAsItsFunctionSays) {
+    auto o = observer("psychometric:threshold=8,slope=3,lapse=0.02", 11);
+    ASSERT_TRUE(o);
+    for (const auto& [m, p] : {std::pair{4.0, 0.5 + 0.48 / 1.125}, std::pair{8.0, 0.74},
+                               std::pair{16.0, 0.5 + 0.48 / 9.0}}) {
+        int reference = 0;
+        for (int i = 0; i < kTrials; ++i) {
+            ScheduledTrial t = trial(i);
+            t.mono_plane = m;
+            const TrialPlan plan = o->plan_trial(t, reference_label(i), 0.0);
+            ASSERT_GE(plan.dwell_ns.size(), 2u);  // both labels viewed
+            reference += plan.confirmed_label() == reference_label(i);
+        }
+        EXPECT_TRUE(within_sigmas(reference, kTrials, p)) << "m = " << m << ": " << reference;
+    }
+    // Without a lapse the rate at the threshold is 0.75; lapse is optional.
+    auto no_lapse = observer("psychometric:slope=2,threshold=5", 12);
+    ASSERT_TRUE(no_lapse);
+    int reference = 0;
+    for (int i = 0; i < kTrials; ++i) {
+        ScheduledTrial t = trial(i);
+        t.mono_plane = 5.0;
+        reference += no_lapse->plan_trial(t, reference_label(i), 0.0).confirmed_label() ==
+                     reference_label(i);
+    }
+    EXPECT_TRUE(within_sigmas(reference, kTrials, 0.75)) << reference;
+}
+
+TEST(Observer, BadPsychometricSpecificationsSayWhereAndWhat) {
+    const std::pair<std::string_view, std::string_view> cases[] = {
+        {"psychometric:threshold=8,slop=3",
+         "character 26: unknown key 'slop'; did you mean 'slope'?"},
+        {"psychometric:threshold=8,slope=x", "character 32: slope = 'x' is not a finite number"},
+        {"psychometric:threshold=-1,slope=3", "character 24: threshold must be greater than 0"},
+        {"psychometric:threshold=8,slope=3,lapse=0.5", "character 40: lapse must lie in [0, 0.5)"},
+        {"psychometric:threshold=8,threshold=9,slope=3", "character 26: threshold is given twice"},
+        {"psychometric:threshold=8", "character 25: slope is missing"},
+        {"psychometric:threshold", "character 14: 'threshold' is not key=value"},
+        {"psychometric:threshold=8,slope=inf", "slope = 'inf' is not a finite number"},
+    };
+    for (const auto& [spec, why] : cases) {
+        const Result<std::unique_ptr<Observer>> made = make_observer(spec, 1);
+        ASSERT_FALSE(made.ok()) << spec;
+        EXPECT_NE(made.error().message.find(why), std::string::npos) << made.error().message;
+        EXPECT_NE(made.error().message.find("psychometric:threshold=T,slope=B,lapse=L"),
+                  std::string::npos)
+            << made.error().message;
+    }
+}
+
 }  // namespace
 }  // namespace monoplane::study
