@@ -16,9 +16,9 @@ std::string optional_number(const std::optional<double>& value) {
 
 const std::vector<std::string_view>& frame_export_columns() {
     static const std::vector<std::string_view> columns = {
-        "participant", "session", "frame",   "trial_index", "shown",  "display_time_s",
-        "cpu_ms",      "gpu_ms",  "missed",  "head_x",      "head_y", "head_z",
-        "head_qw",     "head_qx", "head_qy", "head_qz"};
+        "participant", "session", "frame",   "trial_index", "shown",     "display_time_s",
+        "cpu_ms",      "gpu_ms",  "missed",  "head_x",      "head_y",    "head_z",
+        "head_qw",     "head_qx", "head_qy", "head_qz",     "mono_plane"};
     return columns;
 }
 
@@ -43,6 +43,7 @@ void write_frames_csv(const ExportData& data, std::ostream& out) {
             for (std::size_t i = 0; i < 7; ++i) {
                 line += ',' + (f.head ? number_text((*f.head)[i]) : std::string("NA"));
             }
+            line += ',' + optional_number(f.mono_plane);
             out << line << '\n';
         }
     }

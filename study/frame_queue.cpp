@@ -10,8 +10,9 @@ void FrameQueue::add(std::int64_t session_id, const FrameRecord& frame) {
     rows_.push_back({session_id, frame});
 }
 
-void FrameQueue::add_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms) {
-    gpu_.push_back({session_id, frame, gpu_ms});
+void FrameQueue::add_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms,
+                            std::optional<double> mono_plane) {
+    gpu_.push_back({session_id, frame, gpu_ms, mono_plane});
 }
 
 void FrameQueue::clear() {
@@ -42,11 +43,17 @@ Result<bool> FrameQueue::write(const sqlite::Connection& db) const {
         if (Result<bool> ok = s.run(what); !ok) return ok;
     }
     Result<Statement> update =
-        Statement::prepare(db, "UPDATE frames SET gpu_ms = ? WHERE session_id = ? AND frame = ?");
+        Statement::prepare(db,
+                           "UPDATE frames SET gpu_ms = ?, mono_plane = ? WHERE session_id = ? AND "
+                           "frame = ?");
     if (!update) return update.error();
     for (const GpuTime& g : gpu_) {
         update.value().reset();
-        update.value().bind(1, g.gpu_ms).bind(2, g.session_id).bind(3, g.frame);
+        update.value()
+            .bind(1, g.gpu_ms)
+            .bind(2, g.mono_plane)
+            .bind(3, g.session_id)
+            .bind(4, g.frame);
         if (Result<bool> ok = update.value().run("logging a frame's GPU time"); !ok) return ok;
     }
     return true;
@@ -69,7 +76,8 @@ Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,
     Result<Statement> stmt = Statement::prepare(
         db,
         "SELECT frame, trial_index, shown, display_time_ns, cpu_ms, gpu_ms, missed, head_x, "
-        "head_y, head_z, head_qw, head_qx, head_qy, head_qz FROM frames WHERE session_id = ? "
+        "head_y, head_z, head_qw, head_qx, head_qy, head_qz, mono_plane FROM frames WHERE "
+        "session_id = ? "
         "ORDER BY frame");
     if (!stmt) return stmt.error();
     stmt.value().bind(1, session_id);
@@ -92,6 +100,7 @@ Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,
             for (int i = 0; i < 7; ++i) head[static_cast<std::size_t>(i)] = s.real(7 + i);
             f.head = head;
         }
+        if (!s.is_null(14)) f.mono_plane = s.real(14);
         frames.push_back(std::move(f));
     }
     return frames;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "common/result.h"
@@ -16,8 +17,9 @@ namespace monoplane::study {
 class FrameQueue {
   public:
     void add(std::int64_t session_id, const FrameRecord& frame);
-    // The GPU time of a frame queued (or written) earlier.
-    void add_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms);
+    // The GPU time (and mono plane, hybrid modes) of a frame queued (or written) earlier.
+    void add_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms,
+                    std::optional<double> mono_plane = std::nullopt);
     bool empty() const { return rows_.empty() && gpu_.empty(); }
     // Writes every queued row, then the GPU times, inside the caller's open transaction (a row
     // written again replaces the old one). Keeps the queue: clear() it once the transaction has
@@ -34,6 +36,7 @@ class FrameQueue {
         std::int64_t session_id;
         std::int64_t frame;
         double gpu_ms;
+        std::optional<double> mono_plane;
     };
     std::vector<Row> rows_;
     std::vector<GpuTime> gpu_;

@@ -24,6 +24,10 @@ struct FrameRecord {
     // by it): x, y, z in metres, then the orientation quaternion w, x, y, z; none while tracking
     // was lost.
     std::optional<std::array<double, 7>> head;
+    // Hybrid modes: the frame's mono plane in metres (with hybrid-auto, the renderer's choice that
+    // frame; the far plane when it drew the frame as stereo); none for stereo modes and screens
+    // without a scene. Known when the frame completes, like gpu_ms.
+    std::optional<double> mono_plane;
 };
 
 }  // namespace monoplane::study

@@ -30,7 +30,7 @@
 namespace monoplane::study {
 namespace {
 
-constexpr std::array<std::string_view, 15> kTopLevelKeys = {"name",
+constexpr std::array<std::string_view, 16> kTopLevelKeys = {"name",
                                                             "scenes",
                                                             "mono_planes",
                                                             "alternatives",
@@ -43,6 +43,7 @@ constexpr std::array<std::string_view, 15> kTopLevelKeys = {"name",
                                                             "questionnaire",
                                                             "render",
                                                             "missed_frame_threshold",
+                                                            "auto",
                                                             "procedure",
                                                             "staircase"};
 constexpr std::array<std::string_view, 2> kQuestionnaireKeys = {"items", "scale_points"};
@@ -467,7 +468,8 @@ std::optional<std::string> read_name_choice(const toml::node& node, std::string_
 }
 
 bool is_hybrid(RenderMode mode) {
-    return mode == RenderMode::Hybrid || mode == RenderMode::HybridFarfield;
+    return mode == RenderMode::Hybrid || mode == RenderMode::HybridFarfield ||
+           mode == RenderMode::HybridAuto;
 }
 
 void read_render(const TomlScope& root, Protocol& protocol, TomlProblems& problems) {
@@ -551,6 +553,8 @@ Result<Protocol> parse(std::string_view toml_text, std::string_view source_name,
     read_session_options(root, protocol, problems);
     read_questionnaire(root, protocol, problems);
     read_render(root, protocol, problems);  // after the alternatives: MSAA depends on them
+    read_auto_plane(root, std::ranges::count(protocol.alternatives, RenderMode::HybridAuto) > 0,
+                    protocol.auto_plane, problems);
     if (!problems.empty()) return problems.error();
 
     protocol.source = std::string(source_name);

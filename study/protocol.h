@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/result.h"
+#include "study/protocol_auto.h"
 #include "study/protocol_staircase.h"
 #include "study/render_mode.h"
 
@@ -70,6 +71,7 @@ struct Protocol {
     double far = 1000.0;
     Questionnaire questionnaire;
     RenderSettings render;
+    AutoPlaneSettings auto_plane;  // [auto]: how hybrid-auto alternatives choose m
     // A trial whose frame log shows more than this share of its displayed frames missing their
     // display slot is flagged by `analyze` (a stutter participants may have noticed).
     double missed_frame_threshold = 0.05;

@@ -12,17 +12,18 @@ struct NamedMode {
     std::string_view name;
 };
 
-constexpr std::array<NamedMode, 5> kNamedModes = {{
+constexpr std::array<NamedMode, 6> kNamedModes = {{
     {RenderMode::Stereo, "stereo"},
     {RenderMode::StereoMultiview, "stereo-multiview"},
     {RenderMode::StereoGs, "stereo-gs"},
     {RenderMode::Hybrid, "hybrid"},
     {RenderMode::HybridFarfield, "hybrid-farfield"},
+    {RenderMode::HybridAuto, "hybrid-auto"},
 }};
 
-constexpr std::array<RenderMode, 5> kAllModes = {RenderMode::Stereo, RenderMode::StereoMultiview,
-                                                 RenderMode::StereoGs, RenderMode::Hybrid,
-                                                 RenderMode::HybridFarfield};
+constexpr std::array<RenderMode, 6> kAllModes = {
+    RenderMode::Stereo, RenderMode::StereoMultiview, RenderMode::StereoGs,
+    RenderMode::Hybrid, RenderMode::HybridFarfield,  RenderMode::HybridAuto};
 
 }  // namespace
 

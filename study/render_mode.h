@@ -15,6 +15,9 @@ enum class RenderMode {
     StereoGs,         // "stereo-gs": both eyes in one pass via a geometry shader
     Hybrid,           // "hybrid": Fink et al. 2019, stereo up to the mono plane, mono beyond
     HybridFarfield,   // "hybrid-farfield": the engine-style far-field variant (papers/003)
+    // "hybrid-auto": hybrid whose renderer chooses m every frame within the protocol's [auto]
+    // budget, never nearer than the trial's distance (issue 20; study/protocol_auto.h)
+    HybridAuto,
 };
 
 // Every mode, in the order of the enum: for help texts and exhaustive tests.

@@ -129,7 +129,14 @@ CREATE TABLE session_notes (
 );
 )sql";
 
-constexpr std::array<std::string_view, 3> kMigrations = {kVersion1, kVersion2, kVersion3};
+// Version 4 (issue 20): each frame's mono plane (hybrid modes; with hybrid-auto the renderer
+// chooses it every frame). Earlier sessions' frames have NULL: their m is the trial's.
+constexpr std::string_view kVersion4 = R"sql(
+ALTER TABLE frames ADD COLUMN mono_plane REAL CHECK (mono_plane > 0);
+)sql";
+
+constexpr std::array<std::string_view, 4> kMigrations = {kVersion1, kVersion2, kVersion3,
+                                                         kVersion4};
 
 }  // namespace
 

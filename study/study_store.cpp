@@ -590,8 +590,9 @@ void StudyStore::queue_frame(std::int64_t session_id, const FrameRecord& frame) 
     impl_->frames.add(session_id, frame);
 }
 
-void StudyStore::queue_frame_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms) {
-    impl_->frames.add_gpu_ms(session_id, frame, gpu_ms);
+void StudyStore::queue_frame_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms,
+                                    std::optional<double> mono_plane) {
+    impl_->frames.add_gpu_ms(session_id, frame, gpu_ms, mono_plane);
 }
 
 Result<bool> StudyStore::flush_frames() {

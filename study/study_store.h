@@ -93,7 +93,7 @@ class StudyStore final : public SessionLog {
                                                     const StoreOptions& options);
     ~StudyStore();
 
-    static constexpr int kSchemaVersion = 3;
+    static constexpr int kSchemaVersion = 4;
 
     // Starts a session: refuses a participant code that already has a session (use resume).
     // Stores the protocol text and hash, the seed, the whole schedule and the scene files'
@@ -115,7 +115,8 @@ class StudyStore final : public SessionLog {
     // queued before it committed with it. A frame's GPU time, known frames later, is queued
     // the same way and fills the stored row.
     void queue_frame(std::int64_t session_id, const FrameRecord& frame);
-    void queue_frame_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms);
+    void queue_frame_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms,
+                            std::optional<double> mono_plane = std::nullopt);
     Result<bool> flush_frames();
     Result<std::vector<FrameRecord>> frames(std::int64_t session_id) const;
     // One past the highest frame number the session's frame log or events use (0 for none):

@@ -28,12 +28,15 @@ std::string pass_group(const std::string& pass) {
 }
 
 std::string plane_label(const BenchRun& run) {
+    if (run.mono_plane_auto) return "auto (" + charts::format_number(*run.mono_plane, 1) + ")";
     if (run.mono_plane_is_far) return "far";
     return charts::format_number(*run.mono_plane, 1);
 }
 
+// `--mono-planes auto` runs are a configuration of their own: one point each.
 std::string config_name(const BenchRun& run) {
-    return run.variant.empty() ? run.mode : run.mode + " " + run.variant;
+    const std::string name = run.variant.empty() ? run.mode : run.mode + " " + run.variant;
+    return run.mono_plane_auto ? name + " auto" : name;
 }
 
 // Runs of one scene and configuration, ordered by m.
@@ -118,6 +121,7 @@ std::string time_chart(const BenchReport& report, const std::string& scene,
         chart.components.push_back(component);
     }
     for (const std::string& config : hybrid_configs(report, scene)) {
+        if (config.ends_with(" auto")) continue;  // no category of its own: the m varies
         charts::CategoryLine line;
         line.name = config + " frame";
         for (const BenchRun* run : stacked) {
@@ -140,7 +144,8 @@ std::string time_chart(const BenchReport& report, const std::string& scene,
 // Fig. 5, top: drawn primitives per view of the frustum-culled configuration, with the
 // occlusion-culled total and stereo's as references.
 std::string primitives_chart(const BenchReport& report, const std::string& scene) {
-    const std::vector<std::string> configs = hybrid_configs(report, scene);
+    std::vector<std::string> configs = hybrid_configs(report, scene);
+    std::erase_if(configs, [](const std::string& c) { return c.ends_with(" auto"); });
     const std::string base =
         std::find(configs.begin(), configs.end(), "hybrid no-opt") != configs.end()
             ? "hybrid no-opt"
@@ -227,6 +232,44 @@ std::string time_vs_error_chart(const BenchReport& report, const std::string& sc
     return charts::render_svg(chart);
 }
 
+// Issue 20's comparison: frame time relative to stereo over the error a visible pixel can have
+// (arcminutes at the farthest depth the scene shows), fixed m as lines, auto as its own points.
+// An auto point on or below the fixed-m line is on the frontier: no fixed m is both faster and
+// more accurate.
+std::string time_vs_visible_error_chart(const BenchReport& report, const std::string& scene) {
+    charts::LineChart chart;
+    chart.text.title = scene + ": frame time against the visible error, fixed m and auto";
+    chart.text.subtitle = subtitle(report);
+    chart.text.note =
+        "x: largest error of a visible pixel beyond m (arcmin, rig at the farthest depth stereo "
+        "shows); auto: its largest over the frames. Labels: m. Below 1: faster than stereo.";
+    chart.x_axis.label = "visible error (arcmin)";
+    chart.x_axis.include_zero = true;
+    chart.y_axis.label = "frame time / stereo's";
+    chart.y_axis.include_zero = true;
+    chart.layout.width = 1000.0;
+    chart.layout.legend_width = 280.0;
+    chart.reference_lines.push_back({1.0, "stereo"});
+    for (const std::string& config : hybrid_configs(report, scene)) {
+        charts::LineSeries series;
+        series.name = config;
+        for (const BenchRun* run : runs_of(report, scene, config)) {
+            if (!run->time_ratio || !run->visible_error_arcmin) continue;
+            charts::DataPoint point;
+            point.x = *run->visible_error_arcmin;
+            point.y = *run->time_ratio;
+            point.label = "m " + plane_label(*run);
+            series.points.push_back(point);
+            if (run->mono_plane_auto) {
+                series.connect = false;
+                series.marker = charts::MarkerShape::diamond;
+            }
+        }
+        if (!series.points.empty()) chart.series.push_back(series);
+    }
+    return charts::render_svg(chart);
+}
+
 }  // namespace
 
 Result<std::vector<std::filesystem::path>> write_bench_plots(const BenchReport& report,
@@ -237,7 +280,9 @@ Result<std::vector<std::filesystem::path>> write_bench_plots(const BenchReport& 
         if (run.mono_plane) scenes.insert(run.scene);
     }
     for (const std::string& scene : scenes) {
-        const std::vector<std::string> configs = hybrid_configs(report, scene);
+        std::vector<std::string> configs = hybrid_configs(report, scene);
+        std::erase_if(configs, [](const std::string& c) { return c.ends_with(" auto"); });
+        if (configs.empty()) continue;  // auto alone: no sweep over m to draw
         const std::string stacked =
             std::find(configs.begin(), configs.end(), "hybrid discard") != configs.end()
                 ? "hybrid discard"
@@ -246,6 +291,7 @@ Result<std::vector<std::filesystem::path>> write_bench_plots(const BenchReport& 
             {scene + "_time.svg", time_chart(report, scene, stacked)},
             {scene + "_primitives.svg", primitives_chart(report, scene)},
             {scene + "_time_vs_error.svg", time_vs_error_chart(report, scene)},
+            {scene + "_time_vs_visible_error.svg", time_vs_visible_error_chart(report, scene)},
         };
         for (const auto& [name, svg] : figures) {
             const Result<bool> ok = charts::write_svg_file(out / name, svg);

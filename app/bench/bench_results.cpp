@@ -32,6 +32,35 @@ void add_ratios_to_stereo(BenchReport& report) {
     }
 }
 
+void mark_auto_frontier(BenchReport& report) {
+    for (BenchRun& automatic : report.runs) {
+        if (!automatic.mono_plane_auto || !automatic.time_ratio ||
+            !automatic.visible_error_arcmin) {
+            continue;
+        }
+        automatic.dominated_by.clear();
+        for (const BenchRun& fixed : report.runs) {
+            if (fixed.mono_plane_auto || !fixed.mono_plane || fixed.scene != automatic.scene ||
+                fixed.mode != automatic.mode || fixed.variant != automatic.variant ||
+                !fixed.time_ratio || !fixed.visible_error_arcmin) {
+                continue;
+            }
+            if (*fixed.time_ratio < *automatic.time_ratio &&
+                *fixed.visible_error_arcmin < *automatic.visible_error_arcmin) {
+                std::ostringstream name;
+                name << "m=";
+                if (fixed.mono_plane_is_far) {
+                    name << "far";
+                } else {
+                    name << *fixed.mono_plane;
+                }
+                automatic.dominated_by.push_back(name.str());
+            }
+        }
+        automatic.on_fixed_m_frontier = automatic.dominated_by.empty();
+    }
+}
+
 namespace {
 
 void optional_value(JsonWriter& j, std::string_view key, const std::optional<double>& value) {
@@ -62,6 +91,16 @@ std::string bench_json(const BenchReport& report) {
         j.value("stereo_pass", run.stereo_pass);
         optional_value(j, "mono_plane", run.mono_plane);
         j.value("mono_plane_is_far", run.mono_plane_is_far);
+        j.value("mono_plane_auto", run.mono_plane_auto);
+        if (run.mono_plane_auto) {
+            optional_value(j, "mono_plane_min", run.mono_plane_min);
+            optional_value(j, "mono_plane_max", run.mono_plane_max);
+            j.value("stereo_frames", run.stereo_frames);
+            if (run.on_fixed_m_frontier) j.value("on_fixed_m_frontier", *run.on_fixed_m_frontier);
+            j.begin_array("dominated_by");
+            for (const std::string& other : run.dominated_by) j.value(std::string_view(), other);
+            j.end_array();
+        }
         j.value("frame_ms_median", run.frame_ms_median).value("frame_ms_p90", run.frame_ms_p90);
         j.value("frame_ms_p10", run.frame_ms_p10).value("cpu_ms_median", run.cpu_ms_median);
         j.begin_object("passes");
@@ -91,6 +130,8 @@ std::string bench_json(const BenchReport& report) {
         modes::write_plan_json(j, run.plan);
         optional_value(j, "ssim_vs_stereo", run.ssim_vs_stereo);
         optional_value(j, "max_error_px", run.max_error_px);
+        optional_value(j, "max_error_arcmin", run.max_error_arcmin);
+        optional_value(j, "visible_error_arcmin", run.visible_error_arcmin);
         optional_value(j, "drift_px", run.drift_px);
         j.value("drift_patches", static_cast<std::uint64_t>(run.drift_patches));
         optional_value(j, "time_ratio_vs_stereo", run.time_ratio);
@@ -132,7 +173,8 @@ std::string bench_csv(const BenchReport& report) {
            "primitives_mono,draws_left,draws_right,draws_mono,ssim_vs_stereo,max_error_px,"
            "drift_px,time_ratio_vs_stereo,primitive_ratio_vs_stereo,stereo_pass,"
            "vertex_invocations,geometry_invocations,vertex_invocation_ratio_vs_stereo,"
-           "max_channel_difference_vs_stereo";
+           "max_channel_difference_vs_stereo,mono_plane_auto,max_error_arcmin,"
+           "visible_error_arcmin";
     for (const std::string& name : pass_names) csv << ",pass_ms_" << name;
     csv << "\n";
     auto count = [](const std::map<std::string, std::uint64_t>& values, const char* key) {
@@ -152,7 +194,9 @@ std::string bench_csv(const BenchReport& report) {
             << number(run.time_ratio) << "," << number(run.primitive_ratio) << ","
             << run.stereo_pass << "," << run.vertex_invocations << "," << run.geometry_invocations
             << "," << number(run.vertex_invocation_ratio) << ","
-            << (run.max_channel_difference ? std::to_string(*run.max_channel_difference) : "");
+            << (run.max_channel_difference ? std::to_string(*run.max_channel_difference) : "")
+            << "," << (run.mono_plane_auto ? "TRUE" : "FALSE") << ","
+            << number(run.max_error_arcmin) << "," << number(run.visible_error_arcmin);
         for (const std::string& name : pass_names) {
             const auto found = run.pass_ms_median.find(name);
             csv << ",";

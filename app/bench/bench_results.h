@@ -20,8 +20,15 @@ struct BenchRun {
     std::string stereo_pass = "two";
     std::string variant;         // hybrid: no-opt, discard, occlusion-cull, auto; otherwise empty
     std::string variant_chosen;  // auto: the variant in use at the last frame; otherwise empty
-    std::optional<double> mono_plane;  // none for stereo
+    std::optional<double> mono_plane;  // none for stereo; auto: the median of its frames
     bool mono_plane_is_far = false;    // m = f: C skipped, hybrid records stereo's passes
+    // `--mono-planes auto` (issue 20): the renderer chose m every frame; the smallest and largest
+    // it chose over the measured frames, and how many frames it drew as stereo.
+    bool mono_plane_auto = false;
+    std::optional<double> mono_plane_min;
+    std::optional<double> mono_plane_max;
+    int stereo_frames = 0;
+    std::vector<double> frame_mono_planes;  // each measured frame's m (not written out)
     int frames = 0;
     double frame_ms_median = 0.0;
     double frame_ms_p10 = 0.0;
@@ -48,7 +55,12 @@ struct BenchRun {
     // Accuracy against stereo (hybrid modes below far).
     std::optional<double> ssim_vs_stereo;  // mean of both eyes, Gaussian SSIM
     std::optional<double> max_error_px;    // analytic supremum (rig)
-    std::optional<double> drift_px;        // measured: 95th percentile of patch displacements
+    // The same in visual angle (rig/angular_error.h): each eye's supremum at infinity, and at the
+    // farthest depth the stereo reference shows (the error any visible pixel can have; auto: the
+    // largest over its frames).
+    std::optional<double> max_error_arcmin;
+    std::optional<double> visible_error_arcmin;
+    std::optional<double> drift_px;  // measured: 95th percentile of patch displacements
     std::size_t drift_patches = 0;
     // Single-pass stereo: the largest channel difference (8-bit levels) of either eye's image
     // from two-pass stereo's; 0 or 1 where they draw the same images.
@@ -60,6 +72,10 @@ struct BenchRun {
     std::optional<double> stereo_frame_ms_median;  // of the interleaved stereo frames
     std::optional<double> primitive_ratio;
     std::optional<double> vertex_invocation_ratio;  // to the scene's stereo run
+    // Auto runs: whether no fixed-m run of the same scene, mode and variant is both faster
+    // (time ratio) and more accurate (visible error), and which are.
+    std::optional<bool> on_fixed_m_frontier;
+    std::vector<std::string> dominated_by;  // "m=8", ...
     // The plan of the last measured frame (renderer/plan/frame_plan.h).
     modes::FramePlan plan;
 };
@@ -83,6 +99,10 @@ struct BenchReport {
 
 // Fills time_ratio, primitive_ratio and vertex_invocation_ratio from each scene's stereo run.
 void add_ratios_to_stereo(BenchReport& report);
+
+// Fills on_fixed_m_frontier and dominated_by of every auto run from the fixed-m runs of its
+// scene, mode and variant (after add_ratios_to_stereo).
+void mark_auto_frontier(BenchReport& report);
 
 std::string bench_json(const BenchReport& report);
 std::string bench_csv(const BenchReport& report);

@@ -18,6 +18,7 @@
 
 #include "app/bench/bench_plots.h"
 #include "app/bench/bench_results.h"
+#include "app/commands/auto_mono_plane_options.h"
 #include "app/commands/commands.h"
 #include "app/commands/frame_summary.h"
 #include "app/commands/image_quality_options.h"
@@ -26,9 +27,11 @@
 #include "app/commands/validation_report.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
+#include "renderer/passes/shared/view_constants.h"
 #include "renderer/quality/channel_difference.h"
 #include "renderer/quality/drift.h"
 #include "renderer/quality/ssim.h"
+#include "renderer/rig/angular_error.h"
 #include "renderer/vk/context.h"
 #include "scenes/generate.h"
 #include "study/protocol.h"
@@ -60,6 +63,8 @@ struct BenchOptions {
     std::uint32_t vertex_work = 0;
     double grazing_deg = 1.0;  // rig::RigInputs::grazing_angle, degrees
     bool depth_prepass = false;
+    AutoMonoPlaneFlags auto_flags;  // the "auto" entry of --mono-planes
+    int auto_warmup = 40;           // extra warm-up frames for auto to settle on its m
     std::string out;
 };
 
@@ -75,10 +80,11 @@ std::vector<std::string> split_list(const std::string& text) {
     return items;
 }
 
-// A mono plane of the sweep: metres, or the far plane.
+// A mono plane of the sweep: metres, the far plane, or chosen by the renderer every frame.
 struct Plane {
     double metres = 0.0;
     bool far = false;
+    bool automatic = false;
 };
 
 std::vector<Plane> parse_planes(const BenchOptions& o, double far) {
@@ -94,11 +100,16 @@ std::vector<Plane> parse_planes(const BenchOptions& o, double far) {
             planes.push_back({far, true});
             continue;
         }
+        if (item == "auto") {
+            planes.push_back({far, false, true});
+            continue;
+        }
         char* end = nullptr;
         const double m = std::strtod(item.c_str(), &end);
         if (end == item.c_str() || *end != '\0' || !std::isfinite(m) || m <= 0.1) {
             throw UserError("--mono-planes: '" + item +
-                            "' is not a distance in metres beyond the near plane (0.1) or 'far'");
+                            "' is not a distance in metres beyond the near plane (0.1), 'far' "
+                            "or 'auto'");
         }
         planes.push_back({std::min(m, far), m >= far});
     }
@@ -193,11 +204,13 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
     std::vector<profile::FrameStats> frames;
     std::vector<double> ratios;
     std::vector<double> reference_ms;
+    std::vector<double> frame_mono_planes;
     for (std::size_t i = static_cast<std::size_t>(o.warmup); i < measured.size(); ++i) {
         if (reference && i < paired.size() && paired[i].gpu_frame_ms > 0.0) {
             ratios.push_back(measured[i].gpu_frame_ms / paired[i].gpu_frame_ms);
             reference_ms.push_back(paired[i].gpu_frame_ms);
         }
+        if (measured[i].mono_plane) frame_mono_planes.push_back(*measured[i].mono_plane);
         frames.push_back(std::move(measured[i]));
     }
     const FrameSummary summary = summarize(frames);
@@ -215,6 +228,7 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
         run.stereo_frame_ms_median = percentile(reference_ms, 0.5);
     }
     run.plan = renderer.last_plan();
+    run.frame_mono_planes = std::move(frame_mono_planes);
     for (const profile::ViewStatistics& v : summary.views) {
         run.fragments += v.fragment_invocations;
         run.view_fragments[v.view] = v.fragment_invocations;
@@ -260,8 +274,10 @@ int max_channel_difference(modes::ModeRenderer& renderer, const modes::FrameInpu
     return largest;
 }
 
+// beyond_m: where the drift is measured (stereo's pixels beyond it); inputs.mono_plane unless the
+// renderer chooses m itself.
 Accuracy measure_accuracy(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs,
-                          const Reference& reference) {
+                          const Reference& reference, std::optional<double> beyond_m = {}) {
     renderer.set_read_back(true);
     renderer.render_frame(inputs);
     renderer.set_read_back(false);
@@ -274,7 +290,7 @@ Accuracy measure_accuracy(modes::ModeRenderer& renderer, const modes::FrameInput
         // Drift where stereo sees beyond the plane (where hybrid can differ at all).
         std::vector<std::uint8_t> beyond(reference.depth[e].size());
         for (std::size_t i = 0; i < beyond.size(); ++i) {
-            beyond[i] = reference.depth[e][i] > inputs.mono_plane ? 1 : 0;
+            beyond[i] = reference.depth[e][i] > beyond_m.value_or(inputs.mono_plane) ? 1 : 0;
         }
         const quality::DriftMeasurement drift =
             quality::measure_drift(a, b, beyond).value_or_throw();
@@ -282,6 +298,83 @@ Accuracy measure_accuracy(modes::ModeRenderer& renderer, const modes::FrameInput
         accuracy.drift_patches += drift.patches;
     }
     return accuracy;
+}
+
+// The farthest depth either eye of the stereo reference shows (the sky left out): no pixel a
+// configuration shows lies beyond it, so the error there bounds every visible pixel's.
+double farthest_visible_depth(const Reference& reference) {
+    double farthest = 0.0;
+    for (const std::vector<float>& depth : reference.depth) {
+        for (const float d : depth) {
+            if (d < 0.5f * static_cast<float>(MONOPLANE_SKY_LINEAR_DEPTH)) {
+                farthest = std::max(farthest, static_cast<double>(d));
+            }
+        }
+    }
+    return farthest;
+}
+
+struct AutoRunContext {
+    const hmd::HmdProfile& profile;
+    vk::Extent2D extent;
+    double visible_depth = 0.0;
+    const Reference& reference;
+};
+
+// Each eye's error at `depth` for the profile's rig at m (0 at or beyond the far plane).
+double eye_error_arcmin(const AutoRunContext& c, const modes::FrameInputs& inputs, double m,
+                        double depth) {
+    if (m >= inputs.views.far) return 0.0;
+    rig::RigInputs in = hmd::rig_inputs(c.profile, m);
+    in.eye_width = static_cast<int>(c.extent.width);
+    in.eye_height = static_cast<int>(c.extent.height);
+    in.ipd = inputs.views.ipd;
+    in.near = inputs.views.near;
+    in.far = inputs.views.far;
+    return rig::angular_error_at_depth(rig::build_rig(in).value_or_throw(), depth).eye_arcmin;
+}
+
+// An auto run: warm-up frames for the chooser to settle (o.auto_warmup more than fixed runs),
+// measured frames against interleaved stereo, the m it chose per frame, the largest visible
+// error over them, and the accuracy of one more frame.
+BenchRun measure_auto(modes::ModeRenderer& renderer, modes::FrameInputs inputs,
+                      modes::MonoCulling variant, const BenchOptions& o,
+                      const AutoRunContext& context, modes::ModeRenderer& stereo,
+                      const modes::FrameInputs& stereo_inputs) {
+    inputs.mono_culling = variant;
+    BenchOptions longer = o;
+    longer.warmup = o.warmup + o.auto_warmup;
+    BenchRun run = measure(renderer, inputs, longer, &stereo, &stereo_inputs);
+    run.mode = modes::mode_name(modes::Mode::kHybrid);
+    run.variant = modes::mono_culling_name(variant);
+    if (variant == modes::MonoCulling::kAuto) {
+        run.variant_chosen = modes::mono_culling_name(renderer.last_variant());
+    }
+    run.mono_plane_auto = true;
+    std::vector<double> planes = run.frame_mono_planes;
+    if (!planes.empty()) {
+        std::sort(planes.begin(), planes.end());
+        run.mono_plane = planes[planes.size() / 2];
+        run.mono_plane_min = planes.front();
+        run.mono_plane_max = planes.back();
+        double worst = 0.0;
+        for (const double m : run.frame_mono_planes) {
+            worst = std::max(worst, eye_error_arcmin(context, inputs, m, context.visible_depth));
+            if (m >= inputs.views.far) ++run.stereo_frames;
+        }
+        run.visible_error_arcmin = worst;
+        run.max_error_arcmin = eye_error_arcmin(context, inputs, *run.mono_plane,
+                                                std::numeric_limits<double>::infinity());
+    }
+    if (renderer.last_rig()) run.max_error_px = renderer.last_rig()->max_error_px;
+    if (o.accuracy) {
+        const Accuracy accuracy = measure_accuracy(renderer, inputs, context.reference,
+                                                   run.mono_plane.value_or(inputs.views.far));
+        run.ssim_vs_stereo = accuracy.ssim;
+        run.drift_px = accuracy.drift_px;
+        run.drift_patches = accuracy.drift_patches;
+    }
+    return run;
 }
 
 void run_bench(const BenchOptions& o, const GlobalOptions& global) {
@@ -332,7 +425,10 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     base.grazing_angle = o.grazing_deg * std::numbers::pi / 180.0;
     const std::vector<Plane> planes = parse_planes(o, base.views.far);
     double nearest = base.views.far;
-    for (const Plane& p : planes) nearest = std::min(nearest, p.metres);
+    for (const Plane& p : planes) {
+        if (!p.automatic) nearest = std::min(nearest, p.metres);
+    }
+    const modes::AutoMonoPlaneParams auto_params = auto_mono_plane_params(o.auto_flags);
 
     modes::RendererOptions renderer_options;
     apply_image_quality_flags(o.anti_aliasing, o.ssao, renderer_options);
@@ -404,15 +500,15 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
                 report.runs.push_back(std::move(run));
                 ++done;
             }
-            if (o.accuracy) {
-                stereo.set_read_back(true);
-                stereo.render_frame(inputs);
-                for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
-                    reference.images[static_cast<int>(eye)] = stereo.eye_image(eye);
-                    reference.depth[static_cast<int>(eye)] = stereo.eye_linear_depth(eye);
-                }
+            // The reference frame: images for the accuracy, depth for the visible error.
+            stereo.set_read_back(true);
+            stereo.render_frame(inputs);
+            for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
+                reference.images[static_cast<int>(eye)] = stereo.eye_image(eye);
+                reference.depth[static_cast<int>(eye)] = stereo.eye_linear_depth(eye);
             }
         }
+        const double visible_depth = farthest_visible_depth(reference);
 
         for (const modes::RenderModeChoice& choice : mode_list) {
             if (is_two_pass_stereo(choice)) continue;
@@ -442,6 +538,28 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
             const std::vector<modes::MonoCulling> mode_variants =
                 mode == modes::Mode::kHybrid ? variants : std::vector{modes::MonoCulling::kNoOpt};
             for (const Plane& plane : planes) {
+                if (plane.automatic) {
+                    if (mode != modes::Mode::kHybrid) {
+                        // papers/003's far field has another error model than the rig's.
+                        done += 1;
+                        continue;
+                    }
+                    for (modes::MonoCulling variant : mode_variants) {
+                        progress.show(done, scene_name + " hybrid " +
+                                                modes::mono_culling_name(variant) + " m=auto");
+                        modes::RendererOptions auto_options = options;
+                        auto_options.auto_mono_plane = auto_params;
+                        modes::ModeRenderer automatic(*ctx, scene, mode, extent, auto_options,
+                                                      nearest);
+                        AutoRunContext context{profile, extent, visible_depth, reference};
+                        report.runs.push_back(measure_auto(automatic, inputs, variant, o, context,
+                                                           stereo, stereo_inputs));
+                        report.runs.back().scene = scene_name;
+                        report.runs.back().stereo_pass = pass_name;
+                        ++done;
+                    }
+                    continue;
+                }
                 inputs.mono_plane = plane.metres;
                 std::optional<Accuracy> accuracy;
                 for (modes::MonoCulling variant : mode_variants) {
@@ -465,7 +583,13 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
                     }
                     run.mono_plane = plane.metres;
                     run.mono_plane_is_far = plane.far;
-                    if (renderer.last_rig()) run.max_error_px = renderer.last_rig()->max_error_px;
+                    if (renderer.last_rig()) {
+                        const rig::Rig& rig = *renderer.last_rig();
+                        run.max_error_px = rig.max_error_px;
+                        run.max_error_arcmin = rig::max_angular_error(rig).eye_arcmin;
+                        run.visible_error_arcmin =
+                            rig::angular_error_at_depth(rig, visible_depth).eye_arcmin;
+                    }
                     // The variants draw identical images (tests/gpu/culling_test.cpp): measure
                     // the accuracy once per mono plane.
                     if (o.accuracy && !accuracy) {
@@ -486,6 +610,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     if (isatty(2)) std::cerr << "\n";
 
     add_ratios_to_stereo(report);
+    mark_auto_frontier(report);
     std::ofstream(out / "bench.json") << bench_json(report) << "\n";
     std::ofstream(out / "bench.csv") << bench_csv(report);
     const auto plots = write_bench_plots(report, out).value_or_throw();
@@ -496,6 +621,7 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
         std::cerr << "  " << std::left << std::setw(10) << run.scene << std::setw(16) << run.mode
                   << std::setw(15) << run.variant << " m " << std::setw(6)
                   << (!run.mono_plane         ? std::string("-")
+                      : run.mono_plane_auto   ? "auto~" + plane_text(*run.mono_plane)
                       : run.mono_plane_is_far ? std::string("far")
                                               : plane_text(*run.mono_plane))
                   << " time " << std::fixed << std::setprecision(2) << *run.time_ratio
@@ -505,6 +631,12 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
             std::cerr << "  max difference " << *run.max_channel_difference << "/255";
         if (run.ssim_vs_stereo)
             std::cerr << "  SSIM " << std::setprecision(4) << *run.ssim_vs_stereo;
+        if (run.visible_error_arcmin)
+            std::cerr << "  error " << std::setprecision(2) << *run.visible_error_arcmin << "'";
+        if (run.on_fixed_m_frontier) {
+            std::cerr << (*run.on_fixed_m_frontier ? "  on the fixed-m frontier"
+                                                   : "  dominated by a fixed m");
+        }
         std::cerr << std::defaultfloat << "\n";
     }
     fail_on_validation_messages(*ctx, global);
@@ -526,7 +658,13 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
                     "and auto (measures them on its frames and uses the fastest)")
         ->capture_default_str();
     cmd->add_option("--mono-planes", options->mono_planes,
-                    "Comma-separated distances in metres; 'far' is the far plane")
+                    "Comma-separated distances in metres; 'far' is the far plane, 'auto' the "
+                    "renderer's choice every frame within --error-budget-arcmin (hybrid only)")
+        ->capture_default_str();
+    add_auto_mono_plane_flags(*cmd, options->auto_flags);
+    cmd->add_option("--auto-warmup", options->auto_warmup,
+                    "Extra warm-up frames of an auto run, for its m to settle")
+        ->check(CLI::Range(0, 100000))
         ->capture_default_str();
     cmd->add_option("--protocol", options->protocol,
                     "Take the mono planes from this protocol (plus far) instead");

@@ -52,7 +52,7 @@ void HeadsetFrameLog::completed(const modes::ModeRenderer* renderer,
     std::deque<std::int64_t>& frames = awaiting_gpu_[renderer];
     for (const profile::FrameStats& s : stats) {
         if (frames.empty()) break;  // not a logged frame (none is submitted unlogged)
-        store_.queue_frame_gpu_ms(session_id_, frames.front(), s.gpu_frame_ms);
+        store_.queue_frame_gpu_ms(session_id_, frames.front(), s.gpu_frame_ms, s.mono_plane);
         frames.pop_front();
     }
 }

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "app/commands/ao_consistency.h"
+#include "app/commands/auto_mono_plane_options.h"
 #include "app/commands/commands.h"
 #include "app/commands/depth_profile_json.h"
 #include "app/commands/frame_summary.h"
@@ -32,7 +33,8 @@ struct RenderOptions {
     std::string scene = "spheres";
     std::string mode = "stereo";
     std::string stereo_pass;  // empty: the mode's (two for stereo and the hybrid modes)
-    std::optional<double> mono_plane;
+    std::string mono_plane;   // metres, or "auto"
+    AutoMonoPlaneFlags auto_flags;
     double overlap_k = 2.0;
     double grazing_deg = 1.0;  // rig::RigInputs::grazing_angle, degrees
     double blend_band = 0.3;
@@ -73,7 +75,8 @@ std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& 
                          const std::optional<quality::InconsistencyMap>& ao,
                          const modes::FramePlan& plan, modes::MonoCulling last_variant,
                          const std::filesystem::path& out,
-                         const std::function<void(JsonWriter&)>& depth_profile) {
+                         const std::function<void(JsonWriter&)>& depth_profile,
+                         const std::function<void(JsonWriter&)>& auto_mono_plane) {
     JsonWriter j;
     j.begin_object();
     j.value("command", "render").value("scene", scene.name).value("mode", o.mode);
@@ -157,6 +160,7 @@ std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& 
     }
     j.value("depth_prepass", o.depth_prepass);
     if (depth_profile) depth_profile(j);
+    auto_mono_plane(j);
     modes::write_plan_json(j, plan);  // the last frame's
     j.begin_object("files");
     j.value("left", (out / "left.png").string()).value("right", (out / "right.png").string());
@@ -186,8 +190,15 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         choice->stereo_pass = pass;
     }
     const modes::Mode mode = choice->mode;
-    if (mode != modes::Mode::kStereo && !o.mono_plane) {
-        throw UserError("--mode " + o.mode + " needs --mono-plane M (metres)");
+    if (mode != modes::Mode::kStereo && o.mono_plane.empty()) {
+        throw UserError("--mode " + o.mode + " needs --mono-plane M (metres) or auto");
+    }
+    const std::optional<double> fixed_plane =
+        o.mono_plane.empty() ? std::optional<double>()
+                             : parse_mono_plane_value("--mono-plane", o.mono_plane);
+    const bool auto_plane = !o.mono_plane.empty() && !fixed_plane;
+    if (auto_plane && mode == modes::Mode::kStereo) {
+        throw UserError("--mono-plane auto needs a hybrid mode: stereo has no mono plane");
     }
     const auto mono_culling = modes::parse_mono_culling(o.mono_culling);
     if (!mono_culling) {
@@ -254,6 +265,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
 
     renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
     renderer_options.depth_prepass = o.depth_prepass;
+    if (auto_plane) renderer_options.auto_mono_plane = auto_mono_plane_params(o.auto_flags);
     modes::ModeRenderer renderer(
         *ctx, scene, mode,
         vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
@@ -264,7 +276,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     inputs.views.left = profile.left;
     inputs.views.right = profile.right;
     inputs.views.cant = hmd::cant_radians(profile);
-    inputs.mono_plane = o.mono_plane.value_or(inputs.views.far);
+    inputs.mono_plane = fixed_plane.value_or(inputs.views.far);  // auto: the renderer's
     inputs.overlap_k = o.overlap_k;
     inputs.grazing_angle = o.grazing_deg * std::numbers::pi / 180.0;
     inputs.view_blend_band = o.blend_band;
@@ -293,6 +305,9 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         std::make_move_iterator(completed.end()));
     if (total > 1) std::cerr << "\n";
 
+    // Auto: the comparisons below look at the last frame, rendered with the chooser's m.
+    if (auto_plane && renderer.last_rig())
+        inputs.mono_plane = renderer.last_rig()->inputs.mono_plane;
     write_png(out / "left.png", renderer.eye_image(modes::Eye::kLeft)).value_or_throw();
     write_png(out / "right.png", renderer.eye_image(modes::Eye::kRight)).value_or_throw();
     const modes::RgbaImage* mono = renderer.mono_image();
@@ -326,9 +341,13 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         write_depth_profile_json(j, "depth_profile", in,
                                  renderer.eye_linear_depth(modes::Eye::kLeft));
     };
-    const std::string json = summary_json(
-        o, *choice, profile, scene, *ctx, width, height, summarize(measured), renderer.last_rig(),
-        mono, comparison, ao, renderer.last_plan(), renderer.last_variant(), out, depth_profile);
+    const auto auto_json = [&](JsonWriter& j) {
+        if (auto_plane) write_auto_mono_plane_json(j, *renderer_options.auto_mono_plane, measured);
+    };
+    const std::string json =
+        summary_json(o, *choice, profile, scene, *ctx, width, height, summarize(measured),
+                     renderer.last_rig(), mono, comparison, ao, renderer.last_plan(),
+                     renderer.last_variant(), out, depth_profile, auto_json);
     std::ofstream(out / "stats.json") << json << "\n";
     if (o.json) std::cout << json << "\n";
     std::cerr << "wrote " << (out / "left.png").string() << ", " << (out / "right.png").string()
@@ -352,7 +371,9 @@ void add_render_command(CLI::App& root, const GlobalOptions& global) {
                     "two (one pass per eye), multiview (VK_KHR_multiview) or gs (geometry-shader "
                     "duplication, papers/001); default two, or the mode's");
     cmd->add_option("--mono-plane", options->mono_plane,
-                    "Mono-plane distance m in metres (hybrid modes)");
+                    "Mono-plane distance m in metres (hybrid modes), or auto: chosen every frame "
+                    "within --error-budget-arcmin (docs/hybrid.md, \"Choosing m\")");
+    add_auto_mono_plane_flags(*cmd, options->auto_flags);
     cmd->add_option("--k", options->overlap_k, "Overlap constant k of eq. 3: eps = k s m")
         ->capture_default_str();
     cmd->add_option("--grazing-deg", options->grazing_deg,

@@ -17,10 +17,12 @@
 
 #include "app/commands/commands.h"
 #include "app/commands/output_directory.h"
+#include "app/commands/rig_error_budget.h"
 #include "charts/line_chart.h"
 #include "charts/svg_writer.h"
 #include "common/json_writer.h"
 #include "hmd/profile.h"
+#include "renderer/rig/angular_error.h"
 #include "renderer/rig/rig.h"
 
 namespace monoplane::app {
@@ -44,6 +46,9 @@ struct RigOptions {
     std::string fig2_dir;
     std::vector<double> fig2_mono_planes = kFink2019MonoPlanes;
     int fig2_samples = 200;
+    std::optional<double> error_budget_arcmin;
+    bool disparity = false;           // the budget bounds the disparity error, not each eye's
+    double budget_depth = kInfinity;  // ... for content up to this depth
 };
 
 rig::RigInputs rig_inputs(const RigOptions& o, const hmd::HmdProfile& profile, double m) {
@@ -150,18 +155,22 @@ void print_summary(std::ostream& out, const hmd::HmdProfile& profile, const rig:
                   c.allocated_width, c.allocated_height, c.uv_scale.x, c.uv_scale.y);
     out << line;
     out << "\nerror beyond the mono plane, hybrid vs stereo (Fig. 2), largest over both eyes\n";
-    std::snprintf(line, sizeof line, "  %-14s %14s %14s\n", "depth (m)", "horizontal px", "2d px");
+    std::snprintf(line, sizeof line, "  %-14s %14s %14s %14s %16s\n", "depth (m)", "horizontal px",
+                  "2d px", "eye arcmin", "disparity arcmin");
     out << line;
     for (double depth : table_depths(in.mono_plane, in.far)) {
         const rig::PixelError e = rig::error_at_depth(rig, depth);
+        const rig::AngularError a = rig::angular_error_at_depth(rig, depth);
         const std::string label = std::isinf(depth) ? "infinity" : fixed(depth, 6);
-        std::snprintf(line, sizeof line, "  %-14s %14.4f %14.4f\n", label.c_str(), e.horizontal_px,
-                      e.euclidean_px);
+        std::snprintf(line, sizeof line, "  %-14s %14.4f %14.4f %14.4f %16.4f\n", label.c_str(),
+                      e.horizontal_px, e.euclidean_px, a.eye_arcmin, a.disparity_arcmin);
         out << line;
     }
+    const rig::AngularError limit = rig::max_angular_error(rig);
     std::snprintf(line, sizeof line,
-                  "max_error_px %.4f (horizontal: the disparity error), max_error_px_2d %.4f\n",
-                  rig.max_error_px, rig.max_error_px_2d);
+                  "max_error_px %.4f (horizontal: the disparity error), max_error_px_2d %.4f\n"
+                  "max_error_arcmin %.4f (each eye), max_disparity_error_arcmin %.4f\n",
+                  rig.max_error_px, rig.max_error_px_2d, limit.eye_arcmin, limit.disparity_arcmin);
     out << line;
 }
 
@@ -205,14 +214,21 @@ std::string summary_json(const hmd::HmdProfile& profile, const rig::Rig& rig) {
     j.end_object();
     j.value("overlap", rig.overlap);
     j.value("max_error_px", rig.max_error_px).value("max_error_px_2d", rig.max_error_px_2d);
+    // The same suprema in visual angle (issue 20): arcminutes compare across headsets.
+    const rig::AngularError limit = rig::max_angular_error(rig);
+    j.value("max_error_arcmin", limit.eye_arcmin);
+    j.value("max_disparity_error_arcmin", limit.disparity_arcmin);
     j.begin_array("error_at_depth");
     if (!rig.mono_skipped) {
         for (double depth : table_depths(in.mono_plane, in.far)) {
             if (std::isinf(depth)) continue;  // JSON has no infinity: max_error_px is the limit
             const rig::PixelError e = rig::error_at_depth(rig, depth);
+            const rig::AngularError a = rig::angular_error_at_depth(rig, depth);
             j.begin_object();
             j.value("depth", depth).value("error_px", e.horizontal_px);
             j.value("error_px_2d", e.euclidean_px);
+            j.value("error_arcmin", a.eye_arcmin)
+                .value("disparity_error_arcmin", a.disparity_arcmin);
             j.end_object();
         }
     }
@@ -319,12 +335,21 @@ void write_fig2(const RigOptions& o, const hmd::HmdProfile& profile) {
 }
 
 void run_rig(const RigOptions& o) {
-    if (!o.mono_plane && o.fig2_dir.empty()) {
+    if (!o.mono_plane && o.fig2_dir.empty() && !o.error_budget_arcmin) {
         throw UserError(
             "give --mono-plane M for the rig at one distance, --fig2 DIR for the error plot of "
-            "Fig. 2, or both");
+            "Fig. 2, --error-budget-arcmin A for the nearest m within a budget, or several");
     }
     const hmd::HmdProfile profile = hmd::load_hmd_profile(o.hmd).value_or_throw();
+    if (o.error_budget_arcmin) {
+        const rig::ErrorMeasure measure =
+            o.disparity ? rig::ErrorMeasure::kDisparity : rig::ErrorMeasure::kEye;
+        // The search ignores m: any valid one builds the inputs.
+        const rig::RigInputs inputs = rig_inputs(o, profile, o.far);
+        print_error_budget(std::cout, profile, inputs, *o.error_budget_arcmin, measure,
+                           o.budget_depth, o.json && !o.mono_plane);
+        if (!o.mono_plane && o.fig2_dir.empty()) return;
+    }
     if (!o.fig2_dir.empty()) write_fig2(o, profile);
     if (o.mono_plane) {
         const rig::Rig rig = build_or_throw(o, profile, *o.mono_plane);
@@ -349,8 +374,7 @@ void add_rig_command(CLI::App& root, const GlobalOptions& /*global: no GPU here*
         ->capture_default_str();
     cmd->add_option("--ipd", options->ipd,
                     "Interpupillary distance d in metres (default: the profile's)");
-    CLI::Option* mono_plane =
-        cmd->add_option("--mono-plane", options->mono_plane, "Mono-plane distance m in metres");
+    cmd->add_option("--mono-plane", options->mono_plane, "Mono-plane distance m in metres");
     cmd->add_option("--far", options->far, "Far plane f in metres")->capture_default_str();
     cmd->add_option("--near", options->near, "Near plane n in metres")->capture_default_str();
     cmd->add_option("--k", options->overlap_k, "Overlap constant k of eps = k s m (eq. 3)")
@@ -361,8 +385,19 @@ void add_rig_command(CLI::App& root, const GlobalOptions& /*global: no GPU here*
         ->capture_default_str();
     cmd->add_option("--nearest-mono-plane", options->nearest_mono_plane,
                     "Allocate C's image for this nearest selectable m (Sect. 4.2; default: m)");
-    cmd->add_flag("--json", options->json, "Print the rig as JSON (keys: DESIGN.md section 8)")
-        ->needs(mono_plane);
+    cmd->add_flag("--json", options->json,
+                  "Print the rig (or with --error-budget-arcmin alone, the choice) as JSON (keys: "
+                  "DESIGN.md section 8)");
+    cmd->add_option("--error-budget-arcmin", options->error_budget_arcmin,
+                    "Print the nearest m whose error in visual angle stays within this many "
+                    "arcminutes (each eye's error; --disparity: the disparity error)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--disparity", options->disparity,
+                  "With --error-budget-arcmin: bound the change of binocular disparity instead");
+    cmd->add_option("--budget-depth", options->budget_depth,
+                    "With --error-budget-arcmin: the farthest depth in metres the budget must hold "
+                    "for (default: infinity, any scene)")
+        ->check(CLI::PositiveNumber);
     cmd->add_option("--fig2", options->fig2_dir,
                     "Write fig2.csv and fig2.svg (error over depth per m, cf. the paper's Fig. 2 "
                     "right) to this directory");

@@ -396,6 +396,8 @@ class HeadsetLoop {
             inputs.views =
                 view_inputs(frame, located, head, renderers_.seat(trial.scene), protocol_);
             inputs.mono_plane = trial.mono_plane;
+            // hybrid-auto: the trial's distance is the nearest plane its chooser may take.
+            inputs.nearest_auto_plane = trial.mono_plane;
         }
         const modes::ModeRenderer* renderer = rendered.renderer;
         const auto record_eyes = [&](const vk::raii::CommandBuffer& cmd) {

@@ -13,6 +13,7 @@
 namespace monoplane::app {
 
 modes::RenderModeChoice renderer_mode(study::RenderMode mode) {
+    if (mode == study::RenderMode::HybridAuto) return {modes::Mode::kHybrid};
     const auto parsed = modes::parse_render_mode(std::string(study::render_mode_name(mode)));
     if (!parsed) {
         throw UserError("render mode " + std::string(study::render_mode_name(mode)) +
@@ -20,6 +21,16 @@ modes::RenderModeChoice renderer_mode(study::RenderMode mode) {
                         "hybrid-farfield");
     }
     return *parsed;
+}
+
+modes::AutoMonoPlaneParams auto_mono_plane_params(const study::AutoPlaneSettings& settings) {
+    modes::AutoMonoPlaneParams params;
+    params.error_budget_arcmin = settings.error_budget_arcmin;
+    params.measure =
+        settings.measure == "disparity" ? rig::ErrorMeasure::kDisparity : rig::ErrorMeasure::kEye;
+    params.max_step_arcmin = settings.step_arcmin;
+    params.time_budget_ms = settings.time_budget_ms;
+    return params;
 }
 
 namespace {
@@ -72,6 +83,9 @@ StudyRenderers::StudyRenderers(const vk_core::Context& ctx, const study::Protoco
             const modes::RenderModeChoice choice = renderer_mode(mode);
             modes::RendererOptions mode_options = options;
             mode_options.stereo_pass = choice.stereo_pass;
+            if (mode == study::RenderMode::HybridAuto) {
+                mode_options.auto_mono_plane = auto_mono_plane_params(protocol.auto_plane);
+            }
             renderers_[key] = std::make_unique<modes::ModeRenderer>(ctx, resources, choice.mode,
                                                                     extent, mode_options, nearest);
         }

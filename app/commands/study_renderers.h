@@ -20,6 +20,9 @@ namespace monoplane::app {
 // are stereo drawn in one pass).
 modes::RenderModeChoice renderer_mode(study::RenderMode mode);
 
+// The chooser's parameters of a protocol's [auto] table (hybrid-auto alternatives).
+modes::AutoMonoPlaneParams auto_mono_plane_params(const study::AutoPlaneSettings& settings);
+
 // The scenes and a renderer per (scene, mode) of the protocol, made before the first trial so
 // that no trial waits for one.
 class StudyRenderers {

@@ -1,36 +1,58 @@
 #include "app/commands/study_rows.h"
 
+#include <algorithm>
 #include <map>
 #include <memory>
 #include <system_error>
 
+#include "renderer/rig/error_budget.h"
 #include "renderer/rig/rig.h"
 #include "study/export.h"
 #include "study/render_mode.h"
 
 namespace monoplane::app {
 
+namespace {
+
+bool shows(const study::ScheduledTrial& trial, study::RenderMode mode) {
+    return trial.label1_mode == mode || trial.label2_mode == mode;
+}
+
+// hybrid-auto never goes nearer than the trial's m nor than the budget allows for content at
+// any depth: the nearer of the two is the worst the simulated observer can be shown.
+double effective_plane(const hmd::HmdProfile& hmd, const study::Protocol& protocol, double m) {
+    rig::RigInputs inputs = hmd::rig_inputs(hmd, m);
+    inputs.near = protocol.near;
+    inputs.far = protocol.far;
+    const study::AutoPlaneSettings& a = protocol.auto_plane;
+    const auto budget = rig::nearest_mono_plane_within(
+        inputs, a.error_budget_arcmin,
+        a.measure == "disparity" ? rig::ErrorMeasure::kDisparity : rig::ErrorMeasure::kEye);
+    return budget ? std::max(m, budget->mono_plane) : m;
+}
+
+}  // namespace
+
 std::function<double(const study::ScheduledTrial&)> trial_error_model(
     const hmd::HmdProfile& hmd, const study::Protocol& protocol) {
-    auto cache = std::make_shared<std::map<double, double>>();
-    return
-        [hmd, near = protocol.near, far = protocol.far, cache](const study::ScheduledTrial& trial) {
-            const bool hybrid_shown = trial.label1_mode == study::RenderMode::Hybrid ||
-                                      trial.label2_mode == study::RenderMode::Hybrid ||
-                                      trial.label1_mode == study::RenderMode::HybridFarfield ||
-                                      trial.label2_mode == study::RenderMode::HybridFarfield;
-            if (!hybrid_shown) return 0.0;
-            if (const auto found = cache->find(trial.mono_plane); found != cache->end()) {
-                return found->second;
-            }
-            rig::RigInputs inputs = hmd::rig_inputs(hmd, trial.mono_plane);
-            inputs.near = near;
-            inputs.far = far;
-            const auto rig = rig::build_rig(inputs);
-            const double error = rig ? rig->max_error_px : 0.0;
-            cache->emplace(trial.mono_plane, error);
-            return error;
-        };
+    auto cache = std::make_shared<std::map<std::pair<double, bool>, double>>();
+    return [hmd, protocol, cache](const study::ScheduledTrial& trial) {
+        const bool automatic = shows(trial, study::RenderMode::HybridAuto);
+        const bool hybrid_shown = automatic || shows(trial, study::RenderMode::Hybrid) ||
+                                  shows(trial, study::RenderMode::HybridFarfield);
+        if (!hybrid_shown) return 0.0;
+        const auto key = std::make_pair(trial.mono_plane, automatic);
+        if (const auto found = cache->find(key); found != cache->end()) return found->second;
+        const double m =
+            automatic ? effective_plane(hmd, protocol, trial.mono_plane) : trial.mono_plane;
+        rig::RigInputs inputs = hmd::rig_inputs(hmd, m);
+        inputs.near = protocol.near;
+        inputs.far = protocol.far;
+        const auto rig = rig::build_rig(inputs);
+        const double error = rig ? rig->max_error_px : 0.0;
+        cache->emplace(key, error);
+        return error;
+    };
 }
 
 analysis::TrialRow trial_row(const study::TrialRecord& record, const study::SessionInfo& session,

@@ -16,8 +16,8 @@ using Access = vk::AccessFlagBits2;
 void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image) {
     vk_core::transition(cmd, image, vk::ImageLayout::eColorAttachmentOptimal,
                         vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eColorAttachmentOutput,
-                        Access::eColorAttachmentWrite, Stage::eFragmentShader,
-                        Access::eShaderSampledRead);
+                        Access::eColorAttachmentWrite,
+                        Stage::eFragmentShader | Stage::eComputeShader, Access::eShaderSampledRead);
 }
 
 void copy_to_buffer(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image,
@@ -155,6 +155,9 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const Plan
             break;
         case PassKind::kTonemap:
             record_tonemap(cmd, pass, frame);
+            break;
+        case PassKind::kDepthHistogram:
+            auto_mono_plane_->record(cmd, frame.slot);
             break;
         case PassKind::kReadback:
             record_readback(cmd, frame);

@@ -81,6 +81,9 @@ const RendererOptions& checked(const vk_core::Context& ctx, Mode mode,
     if (options.read_back_ao && !options.ssao) {
         throw UserError("reading back ambient occlusion needs SSAO switched on");
     }
+    if (options.auto_mono_plane && mode == Mode::kStereo) {
+        throw UserError("--mono-plane auto needs a hybrid mode: stereo has no mono plane");
+    }
     return options;
 }
 
@@ -147,6 +150,11 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
     forward_.write_merged_depth(merged_depth_set_, pyramid_.view(), pyramid_.sampler(),
                                 culling_.routing());
+    if (options.auto_mono_plane) {
+        auto_mono_plane_ = std::make_unique<AutoMonoPlane>(ctx, scene_, *options.auto_mono_plane);
+        auto_mono_plane_->set_eye_depths(
+            {eyes_[0]->linear_depth.view(), eyes_[1]->linear_depth.view()}, eye_extent_);
+    }
 }
 
 void ModeRenderer::make_taa_sets(View& view) const {
@@ -283,7 +291,7 @@ ModeRenderer::FrameState ModeRenderer::prepare_frame(const FrameInputs& inputs) 
     frame.taa = options_.anti_aliasing == AntiAliasing::kTaa;
     const std::uint64_t frame_index = inputs.frame_index.value_or(next_frame_index_);
     history_valid_ = frame.taa && frame_index == next_frame_index_ && frame_index > 0 &&
-                     history_mono_plane_ == inputs.mono_plane;
+                     history_continues_at(inputs.mono_plane);
     next_frame_index_ = frame_index + 1;
     history_mono_plane_ = inputs.mono_plane;
     frame.jitter_px = frame.taa ? rig::halton_jitter(frame_index) : glm::dvec2(0.0);
@@ -304,6 +312,22 @@ ModeRenderer::FrameState ModeRenderer::prepare_frame(const FrameInputs& inputs) 
     return frame;
 }
 
+const FrameInputs& ModeRenderer::resolve_mono_plane(const FrameInputs& inputs) {
+    if (!auto_mono_plane_) return inputs;
+    auto_inputs_ = inputs;
+    auto_inputs_.mono_plane =
+        auto_mono_plane_->choose(inputs.views, eye_extent_, inputs.nearest_auto_plane).mono_plane;
+    return auto_inputs_;
+}
+
+bool ModeRenderer::history_continues_at(double mono_plane) const {
+    // A fixed m that changes is another configuration (a study switching alternatives). The
+    // chooser's m moves by at most a sub-pixel step per frame, which the history absorbs as it
+    // absorbs head motion; only a jump the error budget forced restarts it.
+    if (auto_mono_plane_) return !auto_mono_plane_->last().jumped;
+    return history_mono_plane_ == mono_plane;
+}
+
 void ModeRenderer::resolve_variant(const FrameInputs& inputs, FrameState& frame) {
     frame.mono_culling = inputs.mono_culling;
     if (inputs.mono_culling != MonoCulling::kAuto) return;
@@ -312,9 +336,13 @@ void ModeRenderer::resolve_variant(const FrameInputs& inputs, FrameState& frame)
         frame.mono_culling = MonoCulling::kNoOpt;
         return;
     }
-    // Another m changes what the pyramid saves: measure again.
-    if (variant_mono_plane_ != inputs.mono_plane) variant_chooser_.reset();
-    variant_mono_plane_ = inputs.mono_plane;
+    // Another m changes what the pyramid saves: measure again. Under --mono-plane auto m moves a
+    // little every frame; only a move beyond the chooser's hysteresis is another m.
+    const double tolerance = auto_mono_plane_ ? options_.auto_mono_plane->hysteresis : 0.0;
+    if (!(std::abs(std::log(inputs.mono_plane / variant_mono_plane_)) <= tolerance)) {
+        variant_chooser_.reset();
+        variant_mono_plane_ = inputs.mono_plane;
+    }
     frame.mono_culling = variant_chooser_.next();
     frame.measuring_variant = true;
 }
@@ -433,6 +461,7 @@ void ModeRenderer::update_plan(const FrameInputs& inputs, const FrameState& fram
     options.read_back_depth = options_.read_back_depth;
     options.read_back_ao = options_.read_back_ao;
     options.read_back_draw_lists = options_.read_back_draw_lists;
+    options.depth_histogram = auto_mono_plane_ != nullptr;
     PlanFrame planned;
     planned.mono_skipped = !frame.use_mono;
     planned.mono_culling = frame.mono_culling;
@@ -452,7 +481,7 @@ void ModeRenderer::submit_frame(
     // The slot's previous frame first: its results, then its command buffer, are reused.
     complete_frame(ring_.next_slot());
     const auto cpu_start = std::chrono::steady_clock::now();
-    FrameState frame = prepare_frame(inputs);
+    FrameState frame = prepare_frame(resolve_mono_plane(inputs));
     frame.slot = ring_.begin();
     const vk::raii::CommandBuffer& cmd = ring_.commands(frame.slot);
     uploads_.record(cmd);
@@ -465,7 +494,12 @@ void ModeRenderer::submit_frame(
             .count();
     if (record_after) record_after(cmd);
     ring_.submit(frame.slot);
-    pending_[frame.slot] = PendingFrame{record_ms, frame.measuring_variant};
+    PendingFrame pending{record_ms, frame.measuring_variant};
+    const PlannedPass* histogram = last_plan_.find("depth_histogram");
+    pending.depth_histogram = histogram != nullptr && !histogram->skipped;
+    if (mode_ != Mode::kStereo) pending.mono_plane = frame.inputs->mono_plane;
+    if (auto_mono_plane_) pending.mono_plane_reason = auto_mono_plane_->last().reason;
+    pending_[frame.slot] = std::move(pending);
     mono_rendered_ = frame.use_mono && options_.read_back;
     if (frame.taa) history_parity_ = 1 - history_parity_;
     last_variant_ = frame.mono_culling;
@@ -480,7 +514,10 @@ void ModeRenderer::complete_frame(std::uint32_t slot) {
     const PendingFrame pending = *pending_[slot];
     pending_[slot].reset();
     profile::FrameStats stats = collect_frame(slot, pending.record_ms);
+    stats.mono_plane = pending.mono_plane;
+    stats.mono_plane_reason = pending.mono_plane_reason;
     if (pending.measuring_variant) variant_chooser_.record(stats.gpu_frame_ms);
+    if (auto_mono_plane_) auto_mono_plane_->complete(slot, pending.depth_histogram, stats);
     completed_.push_back(std::move(stats));
 }
 

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/modes/auto_mono_plane.h"
 #include "renderer/modes/scene_resources.h"
 #include "renderer/modes/view_setup.h"
 #include "renderer/passes/composite/composite_pass.h"
@@ -57,6 +58,10 @@ struct RendererOptions {
     bool read_back = true;              // display images to the host (PNGs, tests)
     bool read_back_depth = false;       // linear depth to the host (tests, later analyses)
     bool read_back_draw_lists = false;  // each view's chunk list to the host (tests)
+    // `--mono-plane auto` (hybrid modes): every frame's m is chosen by the renderer within this
+    // budget (renderer/plan/mono_plane_chooser.h) and FrameInputs::mono_plane is ignored; each
+    // frame's FrameStats carry the m chosen and why.
+    std::optional<AutoMonoPlaneParams> auto_mono_plane;
 };
 
 struct FrameInputs {
@@ -71,6 +76,9 @@ struct FrameInputs {
     // Drives TAA's jitter and tells whether the history continues: a frame whose index does not
     // follow the renderer's previous one starts the history anew. Unset: the next index.
     std::optional<std::uint64_t> frame_index{};
+    // With RendererOptions::auto_mono_plane: the nearest m the chooser may take this frame
+    // (a study's hybrid-auto trial at distance m); unset: AutoMonoPlaneParams::min_mono_plane.
+    std::optional<double> nearest_auto_plane;
 };
 
 // Where an eye looked from in the last frame, as rasterised (TAA's jitter included): what a
@@ -158,6 +166,10 @@ class ModeRenderer {
     // The variant the last hybrid frame used (FrameInputs::mono_culling resolved: with kAuto,
     // the one the measurement chose or is trying).
     MonoCulling last_variant() const { return last_variant_; }
+    // With RendererOptions::auto_mono_plane: the last submitted frame's choice of m.
+    const MonoPlaneDecision* last_mono_plane_decision() const {
+        return auto_mono_plane_ ? &auto_mono_plane_->last() : nullptr;
+    }
 
   private:
     struct ForwardImages;
@@ -181,6 +193,11 @@ class ModeRenderer {
     // A frame: its state, the plan for it, and one recorder per kind of pass.
     struct FrameState;
     FrameState prepare_frame(const FrameInputs& inputs);
+    // The inputs with this frame's m: FrameInputs::mono_plane, or with auto_mono_plane the
+    // chooser's (held in auto_inputs_ until the frame is recorded).
+    const FrameInputs& resolve_mono_plane(const FrameInputs& inputs);
+    // Whether TAA's history may continue from the last frame's m to this frame's.
+    bool history_continues_at(double mono_plane) const;
     void build_frame_rig(const FrameInputs& inputs, FrameState& frame);
     void resolve_variant(const FrameInputs& inputs, FrameState& frame);
     void update_frame_views(const FrameInputs& inputs, FrameState& frame);
@@ -255,6 +272,9 @@ class ModeRenderer {
     VariantChooser variant_chooser_;
     double variant_mono_plane_ = -1.0;
     MonoCulling last_variant_ = MonoCulling::kNoOpt;
+    // --mono-plane auto: the chooser, and the inputs of the frame being recorded with its m.
+    std::unique_ptr<AutoMonoPlane> auto_mono_plane_;
+    FrameInputs auto_inputs_;
     // TAA's history: which of each view's two output images holds it, and what it continues.
     std::uint64_t next_frame_index_ = 0;
     int history_parity_ = 0;
@@ -266,6 +286,9 @@ class ModeRenderer {
     struct PendingFrame {
         double record_ms = 0.0;
         bool measuring_variant = false;
+        bool depth_histogram = false;  // the plan counted the eyes' depth (auto m)
+        std::optional<double> mono_plane;
+        std::string mono_plane_reason;
     };
     std::array<std::optional<PendingFrame>, vk_core::FrameRing::kFramesInFlight> pending_;
     std::vector<profile::FrameStats> completed_;

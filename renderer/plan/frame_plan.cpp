@@ -20,6 +20,7 @@ constexpr NameTable<PassKind> kPassKindNames = {{PassKind::kCulling, "culling"},
                                                 {PassKind::kSsao, "ssao"},
                                                 {PassKind::kTaa, "taa"},
                                                 {PassKind::kTonemap, "tonemap"},
+                                                {PassKind::kDepthHistogram, "depth_histogram"},
                                                 {PassKind::kReadback, "readback"}};
 constexpr NameTable<GpuPredicate> kPredicateNames = {
     {GpuPredicate::kAlways, "always"},
@@ -76,6 +77,7 @@ class PlanBuilder {
         add_eye_forward();
         if (s_.hybrid) add_mono_passes();
         add_post_processing();
+        if (options_.depth_histogram) add_depth_histogram();
         add_readback();
         return std::move(plan_);
     }
@@ -260,6 +262,13 @@ class PlanBuilder {
                 pass.skipped = "no read-back: C's own image is only looked at";
             }
         }
+    }
+
+    // The eyes' final depth (C's where it shows through), counted for `--mono-plane auto`.
+    void add_depth_histogram() {
+        PlannedPass& pass = add(PassKind::kDepthHistogram, "depth_histogram");
+        for (const char* eye : kEyes) pass.reads.push_back(resource(eye, "linear_depth"));
+        pass.writes = {"depth_histogram"};
     }
 
     void add_readback() {

@@ -11,7 +11,7 @@
 //   hybrid:          culling, shadow*, per eye {forward n..m: chunks, sky only if C has nothing},
 //                    [depth pyramid, [occlusion culling]], C {forward m-eps..f + sky}, [C's ssao],
 //                    per eye {composite C through M_{E->C}}, [ssao of the near content],
-//                    per eye {[taa], tonemap}, [C's tonemap], read-back
+//                    per eye {[taa], tonemap}, [C's tonemap], [depth histogram], read-back
 //   hybrid-farfield: as hybrid with C at the eyes' centre, no pyramid, an offset copy
 // (* only when the light's region changed). With m >= f (the rig's mono_skipped) hybrid's executed
 // passes are exactly stereo's: nothing lies beyond the plane.
@@ -40,6 +40,7 @@ enum class PassKind {
     kSsao,              // the eyes' ambient occlusion (near content only in hybrid)
     kTaa,               // an eye's temporal anti-aliasing resolve
     kTonemap,           // an eye's (or C's) tone mapping into its display image
+    kDepthHistogram,    // both eyes' final depth counted into bins (--mono-plane auto)
     kReadback,          // images, depths, AO and draw lists to the host; not part of GPU time
 };
 std::string pass_kind_name(PassKind kind);
@@ -116,6 +117,8 @@ struct PlanOptions {
     bool read_back_depth = false;
     bool read_back_ao = false;
     bool read_back_draw_lists = false;
+    // `--mono-plane auto`: the eyes' final depth is counted for the next frames' choice of m.
+    bool depth_histogram = false;
     bool operator==(const PlanOptions&) const = default;
 };
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,10 @@ struct FrameStats {
     std::vector<ViewStatistics> views;
     double gpu_frame_ms = 0.0;   // first pass start to last pass end
     double cpu_record_ms = 0.0;  // command recording and culling on the CPU
+    // Hybrid modes: the frame's mono plane (the far plane: drawn as stereo), and with
+    // `--mono-plane auto` why the chooser put it there (renderer/plan/mono_plane_chooser.h).
+    std::optional<double> mono_plane;
+    std::string mono_plane_reason;
 };
 
 }  // namespace monoplane::profile

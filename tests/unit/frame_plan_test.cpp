@@ -547,6 +547,27 @@ TEST(FramePlan, MonoTonemapOnlyWhenReadBack) {
     EXPECT_TRUE(contains(read.find("readback")->reads, "mono.display"));
 }
 
+// --mono-plane auto: both eyes' final depth is counted after everything that writes it (the
+// composites, SSAO's apply, TAA reads it) and before the read-back; nothing else changes.
+TEST(FramePlan, AutoMonoPlaneCountsTheEyesFinalDepthBeforeTheReadBack) {
+    for (const bool mono_skipped : {false, true}) {
+        PlanOptions options = options_for(Mode::kHybrid);
+        options.anti_aliasing = AntiAliasing::kTaa;
+        const FramePlan plain = plan_of(options, frame_with(mono_skipped), true);
+        options.depth_histogram = true;
+        const FramePlan counted = plan_of(options, frame_with(mono_skipped), true);
+        std::vector<std::string> expected = plain.executed_names();
+        expected.insert(expected.end() - 1, "depth_histogram");
+        EXPECT_EQ(counted.executed_names(), expected);
+        const PlannedPass* pass = counted.find("depth_histogram");
+        ASSERT_NE(pass, nullptr);
+        EXPECT_EQ(pass->kind, PassKind::kDepthHistogram);
+        EXPECT_EQ(pass->reads,
+                  (std::vector<std::string>{"left.linear_depth", "right.linear_depth"}));
+        EXPECT_EQ(pass->writes, (std::vector<std::string>{"depth_histogram"}));
+    }
+}
+
 // One combination of the options the generic checks go over.
 struct Combination {
     PlanOptions options;
@@ -663,6 +684,7 @@ TEST(FramePlan, NamesOfKindsPredicatesAndStepsAreNonEmptyAndDistinct) {
                                          PassKind::kSsao,
                                          PassKind::kTaa,
                                          PassKind::kTonemap,
+                                         PassKind::kDepthHistogram,
                                          PassKind::kReadback};
     const std::vector<GpuPredicate> predicates = {GpuPredicate::kAlways, GpuPredicate::kMonoAny,
                                                   GpuPredicate::kMonoNone,

@@ -24,7 +24,8 @@ TEST(RenderMode, CliNamesAreTheDesignsNames) {
 }
 
 TEST(RenderMode, EveryNameRoundTrips) {
-    EXPECT_EQ(all_render_modes().size(), 5u);
+    EXPECT_EQ(all_render_modes().size(), 6u);
+    EXPECT_EQ(render_mode_name(RenderMode::HybridAuto), "hybrid-auto");
     std::set<std::string_view> names;
     for (RenderMode mode : all_render_modes()) {
         const Result<RenderMode> parsed = parse_render_mode(render_mode_name(mode));

@@ -22,13 +22,13 @@ const std::string kHeader =
     "participant,session,trial_index,block,scene,mono_plane,label1_mode,choice,chosen_mode,valid,"
     "switches,time_label1_s,time_label2_s,decision_time_s,practice,decided,label2_mode,"
     "participant_index,protocol,protocol_hash,observer,runtime,hmd,session_status,"
-    "anti_aliasing,ssao,detail\n";
+    "anti_aliasing,ssao,detail,procedure\n";
 const std::string kPracticeRow =
     "P01,1,0,NA,landscape,5,stereo,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,hybrid,0,fink2019,"
-    "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low\n";
+    "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant\n";
 const std::string kDecidedRow =
     "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,hybrid,0,"
-    "fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low\n";
+    "fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant\n";
 
 SessionInfo known_session() {
     SessionInfo info;
@@ -109,7 +109,8 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"protocol_hash\": \"fnv1a64:cbf29ce484222325\", \"observer\": \"default\", \"runtime\": "
         "\"none\", "
         "\"hmd\": \"vive\", \"session_status\": \"running\", \"anti_aliasing\": \"taa\", "
-        "\"ssao\": \"off\", \"detail\": \"low\", \"scene_files\": [], \"session_notes\": []},\n"
+        "\"ssao\": \"off\", \"detail\": \"low\", \"procedure\": \"constant\", "
+        "\"scene_files\": [], \"session_notes\": []},\n"
         "  {\"participant\": \"P01\", \"session\": 1, \"trial_index\": 2, \"block\": 0, "
         "\"scene\": \"spheres\", \"mono_plane\": 1.6, \"label1_mode\": \"stereo\", \"choice\": 1, "
         "\"chosen_mode\": \"stereo\", \"valid\": true, \"switches\": 2, \"time_label1_s\": 1.5, "
@@ -119,7 +120,7 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"observer\": \"default\", "
         "\"runtime\": \"none\", \"hmd\": \"vive\", \"session_status\": \"running\", "
         "\"anti_aliasing\": \"taa\", \"ssao\": \"off\", \"detail\": \"low\", "
-        "\"scene_files\": [], \"session_notes\": []}\n"
+        "\"procedure\": \"constant\", \"scene_files\": [], \"session_notes\": []}\n"
         "]\n";
     EXPECT_EQ(out.str(), expected);
 }
@@ -233,7 +234,7 @@ TEST(StudyExport, FormatNames) {
     EXPECT_EQ(export_format_name(ExportFormat::Json), "json");
     EXPECT_EQ(*parse_export_format("frames-csv"), ExportFormat::FramesCsv);
     EXPECT_EQ(export_format_name(ExportFormat::FramesCsv), "frames-csv");
-    EXPECT_EQ(export_columns().size(), 27u);
+    EXPECT_EQ(export_columns().size(), 28u);
     EXPECT_EQ(export_columns().front(), "participant");
 }
 
@@ -253,15 +254,16 @@ TEST(StudyExport, FramesCsvHasOneExactRowPerFrame) {
     shown.gpu_ms = 10.75;
     shown.missed = true;
     shown.head = std::array<double, 7>{0.5, 1.6, -2, 1, 0, 0, 0};
+    shown.mono_plane = 16.25;
     data.frames[1] = {neutral, shown};
     std::ostringstream out;
     out.imbue(std::locale(std::locale::classic(), new GermanNumbers));
     write_frames_csv(data, out);
     EXPECT_EQ(out.str(),
               "participant,session,frame,trial_index,shown,display_time_s,cpu_ms,gpu_ms,missed,"
-              "head_x,head_y,head_z,head_qw,head_qx,head_qy,head_qz\n"
-              "P01,1,7,NA,neutral,1.5,0.25,NA,FALSE,NA,NA,NA,NA,NA,NA,NA\n"
-              "P01,1,8,2,label2,1.511111111,12.5,10.75,TRUE,0.5,1.6,-2,1,0,0,0\n");
+              "head_x,head_y,head_z,head_qw,head_qx,head_qy,head_qz,mono_plane\n"
+              "P01,1,7,NA,neutral,1.5,0.25,NA,FALSE,NA,NA,NA,NA,NA,NA,NA,NA\n"
+              "P01,1,8,2,label2,1.511111111,12.5,10.75,TRUE,0.5,1.6,-2,1,0,0,0,16.25\n");
 }
 
 // Through the database: the same rows come out of a real store, and the file form is complete.
@@ -291,7 +293,7 @@ TEST(StudyExport, ExportsFromTheStoreToAFile) {
                                std::istreambuf_iterator<char>());
         const std::string beams =
             "P01,1,1,NA,beams,3,hybrid,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,stereo,0,fink2019,"
-            "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low\n";
+            "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant\n";
         EXPECT_EQ(text, kHeader + kPracticeRow + beams + kDecidedRow);
         EXPECT_FALSE(fs::exists(dir / "trials.csv.tmp"));
 

@@ -162,6 +162,25 @@ TEST(StudyProtocol, RenderTableIsReadAndDefaultsToNoAntiAliasing) {
     EXPECT_EQ(msaa->render.anti_aliasing, "msaa4");
 }
 
+TEST(StudyProtocol, AutoTableConfiguresHybridAuto) {
+    const std::string text =
+        mutated("alternatives = [\"stereo\", \"hybrid\"]",
+                "alternatives = [\"stereo\", \"hybrid-auto\"]") +
+        "\n[auto]\nerror_budget_arcmin = 4.5\nmeasure = \"disparity\"\nstep_arcmin = 0.5\n"
+        "time_budget_ms = 11.1\n";
+    const Result<Protocol> p = parse_protocol(text, "test.toml");
+    ASSERT_TRUE(p.ok()) << p.error().message;
+    EXPECT_EQ(p->alternatives[1], RenderMode::HybridAuto);
+    EXPECT_EQ(p->auto_plane, (AutoPlaneSettings{4.5, "disparity", 0.5, 11.1}));
+    // Without the table: the defaults (6 arcmin, each eye's error, 0.25 arcmin steps, no time).
+    const Result<Protocol> defaults = parse_protocol(
+        mutated("alternatives = [\"stereo\", \"hybrid\"]",
+                "alternatives = [\"stereo\", \"hybrid-auto\"]"),
+        "test.toml");
+    ASSERT_TRUE(defaults.ok()) << defaults.error().message;
+    EXPECT_EQ(defaults->auto_plane, AutoPlaneSettings{});
+}
+
 TEST(StudyProtocol, DemoFileIsShort) {
     if (source_dir().empty()) GTEST_SKIP() << "MONOPLANE_SOURCE_DIR not set (run through ctest)";
     const Result<Protocol> p = load_protocol(source_dir() / "protocols" / "demo.toml");
@@ -555,6 +574,23 @@ const MalformedCase kMalformedCases[] = {
      "far = 1000\n",
      "far = 1000\nrender = \"taa\"\n",
      {"test.toml:11:", "'render'", "table"}},
+    // The [auto] table (appended after [questionnaire]: line 16 on).
+    {"auto without a hybrid-auto alternative",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[auto]\nerror_budget_arcmin = 5\n",
+     {"test.toml:16:", "'auto'", "neither alternative is hybrid-auto"}},
+    {"a budget that is not positive",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[auto]\nerror_budget_arcmin = -2\n",
+     {"test.toml:17:", "'auto.error_budget_arcmin'", "positive number of arcminutes"}},
+    {"an unknown measure",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[auto]\nmeasure = \"pixels\"\n",
+     {"test.toml:17:", "'auto.measure'", "not eye or disparity"}},
+    {"an unknown auto key",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[auto]\nbudget = 5\n",
+     {"test.toml:17:", "'auto.budget'", "error_budget_arcmin"}},
 };
 
 // Scenes that name glTF files (docs/scenes.md, "glTF scenes in a study"): a protocol file and its

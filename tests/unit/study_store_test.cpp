@@ -177,7 +177,7 @@ TEST_F(StudyStoreTest, UsesWalAndRecordsTheSchemaVersion) {
     RawDb raw(db_);
     EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
     EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
-    EXPECT_EQ(StudyStore::kSchemaVersion, 3);
+    EXPECT_EQ(StudyStore::kSchemaVersion, 4);
     EXPECT_EQ(raw.integer("PRAGMA application_id"), 0x4D505354);
     // Version 2 added frames, version 3 scene_files and session_notes.
     EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 8);
@@ -427,15 +427,15 @@ TEST_F(StudyStoreTest, RefusesANewerSchemaWithoutTouchingIt) {
     { ASSERT_TRUE(open_store()); }
     {
         RawDb raw(db_);
-        ASSERT_EQ(raw.exec("PRAGMA user_version = 4"), SQLITE_OK);
+        ASSERT_EQ(raw.exec("PRAGMA user_version = 5"), SQLITE_OK);
     }
     const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
     ASSERT_FALSE(store.ok());
     const std::string& message = store.error().message;
-    EXPECT_TRUE(contains(message, "schema version 4, newer than this build")) << message;
+    EXPECT_TRUE(contains(message, "schema version 5, newer than this build")) << message;
     EXPECT_TRUE(contains(message, db_.string())) << message;
     RawDb raw(db_);
-    EXPECT_EQ(raw.integer("PRAGMA user_version"), 4);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 5);
     EXPECT_TRUE(fs::exists(db_));
 }
 
@@ -607,7 +607,7 @@ TEST_F(StudyStoreTest, TheFrameLogBecomesDurableWithTheNextEvent) {
     EXPECT_EQ(raw.integer("SELECT count(*) FROM frames"), 2);
     EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE gpu_ms IS NULL"), 2);
     // A GPU time known later fills its row; flush_frames writes without an event.
-    store->queue_frame_gpu_ms(id, 3, 7.25);
+    store->queue_frame_gpu_ms(id, 3, 7.25, 12.5);  // a hybrid frame's m (schema 4)
     store->queue_frame(id, make_frame(4, 0));
     ASSERT_TRUE(store->flush_frames().ok());
     EXPECT_EQ(raw.integer("SELECT count(*) FROM frames"), 3);
@@ -626,6 +626,9 @@ TEST_F(StudyStoreTest, TheFrameLogBecomesDurableWithTheNextEvent) {
     EXPECT_EQ(trial.cpu_ms, 5.5);
     ASSERT_TRUE(trial.gpu_ms);
     EXPECT_EQ(*trial.gpu_ms, 7.25);
+    EXPECT_EQ(trial.mono_plane, 12.5);
+    EXPECT_FALSE(neutral.mono_plane);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE mono_plane = 12.5"), 1);
     EXPECT_TRUE(trial.missed);
     ASSERT_TRUE(trial.head);
     EXPECT_EQ(*trial.head, (std::array<double, 7>{0.25, 1.6, -3.0, 0.5, 0.5, -0.5, 0.5}));
@@ -701,7 +704,7 @@ INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame)
     ASSERT_TRUE(store);
     {
         RawDb raw(db_);
-        EXPECT_EQ(raw.integer("PRAGMA user_version"), 3);
+        EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
     }
     const Result<SessionInfo> info = store->session(1);
     ASSERT_TRUE(info.ok()) << info.error().message;
@@ -855,7 +858,7 @@ INSERT INTO frames (session_id, frame, trial_index, shown, display_time_ns, cpu_
     ASSERT_TRUE(store);
     {
         RawDb raw(db_);
-        EXPECT_EQ(raw.integer("PRAGMA user_version"), 3);
+        EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
         EXPECT_EQ(raw.text("PRAGMA integrity_check"), "ok");
     }
     const Result<SessionInfo> info = store->session(1);

@@ -1,0 +1,80 @@
+#include "renderer/modes/auto_mono_plane.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+#include "common/result.h"
+#include "renderer/modes/content_depth.h"
+#include "renderer/vk/frame_ring.h"
+
+namespace monoplane::modes {
+namespace {
+
+// The passes a stereo frame would not run (the chooser's "hybrid only" cost).
+bool hybrid_only(const std::string& pass) {
+    return pass == "depth_pyramid" || pass == "occlusion_culling" || pass == "left.composite" ||
+           pass == "right.composite" || pass == "mono.tonemap";
+}
+
+FrameCost cost_of(const profile::FrameStats& stats) {
+    FrameCost cost;
+    cost.frame_ms = stats.gpu_frame_ms;
+    for (const profile::PassTime& pass : stats.passes) {
+        if (pass.name == "mono.forward") {
+            cost.hybrid = true;
+            cost.mono_forward_ms += pass.gpu_ms;
+        } else if (hybrid_only(pass.name)) {
+            cost.hybrid_only_ms += pass.gpu_ms;
+        }
+    }
+    return cost;
+}
+
+}  // namespace
+
+AutoMonoPlane::AutoMonoPlane(const vk_core::Context& ctx, const scenes::Scene& scene,
+                             AutoMonoPlaneParams params)
+    : scene_(scene), chooser_(std::move(params)), ctx_(ctx) {}
+
+const MonoPlaneDecision& AutoMonoPlane::choose(const StereoViewInputs& views,
+                                               vk::Extent2D eye_extent,
+                                               std::optional<double> nearest) {
+    rig::RigInputs eyes;
+    eyes.eyes = {views.left, views.right};
+    eyes.eye_width = static_cast<int>(eye_extent.width);
+    eyes.eye_height = static_cast<int>(eye_extent.height);
+    eyes.ipd = views.ipd;
+    eyes.near = views.near;
+    eyes.far = views.far;
+    eyes.cant = views.cant;
+    const double depth = farthest_content_depth(scene_, views);
+    decision_ = chooser_.next(eyes, depth, nearest).value_or_throw();
+    if (!histogram_) {
+        // The bins span the first frame's clip range (a renderer keeps its near and far).
+        histogram_ = std::make_unique<passes::DepthHistogramPass>(
+            ctx_, vk_core::FrameRing::kFramesInFlight, views.near, views.far);
+        if (eye_depths_) histogram_->set_eye_depths(*eye_depths_, eye_extent_);
+    }
+    return decision_;
+}
+
+void AutoMonoPlane::set_eye_depths(std::array<vk::ImageView, 2> linear_depth,
+                                   vk::Extent2D eye_extent) {
+    eye_depths_ = linear_depth;
+    eye_extent_ = eye_extent;
+    if (histogram_) histogram_->set_eye_depths(linear_depth, eye_extent);
+}
+
+void AutoMonoPlane::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const {
+    if (histogram_ && eye_depths_) histogram_->record(cmd, slot);
+}
+
+void AutoMonoPlane::complete(std::uint32_t slot, bool histogram_recorded,
+                             const profile::FrameStats& stats) {
+    std::optional<DepthHistogram> histogram;
+    if (histogram_recorded && histogram_) histogram = histogram_->result(slot);
+    chooser_.record(histogram, cost_of(stats));
+}
+
+}  // namespace monoplane::modes

@@ -1,0 +1,54 @@
+// `--mono-plane auto` inside a renderer (issue 20): each frame's m from the chooser
+// (renderer/plan/mono_plane_chooser.h, the policy), fed by the content's depth from the chunks'
+// bounds (content_depth.h), the depth histogram of the frames the GPU completed
+// (renderer/passes/depth_histogram) and their pass times.
+//
+// When may this be used: by one ModeRenderer, whose frames it sees in submission order (choose,
+// then the histogram recorded into the frame's slot, then complete when the slot completes).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+
+#include "renderer/modes/view_setup.h"
+#include "renderer/passes/depth_histogram/depth_histogram_pass.h"
+#include "renderer/plan/mono_plane_chooser.h"
+#include "renderer/profile/frame_stats.h"
+#include "scenes/scene.h"
+
+namespace monoplane::modes {
+
+class AutoMonoPlane {
+  public:
+    // The scene must outlive this.
+    AutoMonoPlane(const vk_core::Context& ctx, const scenes::Scene& scene,
+                  AutoMonoPlaneParams params);
+
+    // This frame's decision for the eyes and head in `views` at the renderer's eye size, with
+    // overlap k and grazing angle as the frame's rig will have them. Throws UserError for eyes
+    // the rig refuses.
+    // nearest: the nearest m allowed (FrameInputs::nearest_auto_plane).
+    const MonoPlaneDecision& choose(const StereoViewInputs& views, vk::Extent2D eye_extent,
+                                    std::optional<double> nearest);
+    const MonoPlaneDecision& last() const { return decision_; }
+
+    // The eyes' linear depth images the histogram counts (before the first record, and again
+    // whenever they change).
+    void set_eye_depths(std::array<vk::ImageView, 2> linear_depth, vk::Extent2D eye_extent);
+    // The histogram of this frame's final eye depths into the slot's buffer.
+    void record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const;
+    // A completed frame: its histogram (if it recorded one) and pass times go to the chooser.
+    void complete(std::uint32_t slot, bool histogram_recorded, const profile::FrameStats& stats);
+
+  private:
+    const scenes::Scene& scene_;
+    MonoPlaneChooser chooser_;
+    std::unique_ptr<passes::DepthHistogramPass> histogram_;
+    const vk_core::Context& ctx_;
+    std::optional<std::array<vk::ImageView, 2>> eye_depths_;
+    vk::Extent2D eye_extent_{0, 0};
+    MonoPlaneDecision decision_;
+};
+
+}  // namespace monoplane::modes
