@@ -15,7 +15,7 @@ namespace monoplane::study {
 // The procedure's own estimate of the threshold (the m at which the reference is chosen with
 // probability 0.75 - lapse / 2 for QUEST+, with the target probability for the up-down rule).
 struct ThresholdEstimate {
-    double threshold_m = 0.0;
+    double threshold_m = 0.0;  // QUEST+: the posterior median
     // QUEST+: the posterior's standard deviation of log10 threshold and its equal-tailed 95 %
     // credible interval. The up-down rule has no posterior: unset.
     std::optional<double> sd_log10;

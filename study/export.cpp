@@ -77,6 +77,7 @@ std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s) {
         text(s.render.anti_aliasing),
         text(s.render.ssao),
         s.render.detail.empty() ? na() : text(s.render.detail),  // NA: not recorded (schema 1)
+        text(std::string(procedure_name(s.procedure))),
     };
 }
 
@@ -146,7 +147,7 @@ const std::vector<std::string_view>& export_columns() {
         "observer",      "runtime",
         "hmd",           "session_status",
         "anti_aliasing", "ssao",
-        "detail",
+        "detail",        "procedure",
     };
     return columns;
 }

@@ -1,5 +1,8 @@
 #include "study/live_session.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace monoplane::study {
 
 std::string_view live_input_name(LiveInput input) {
@@ -41,17 +44,32 @@ Result<std::unique_ptr<LiveSession>> LiveSession::open(StudyStore& store, std::i
     if (!schedule) return schedule.error();
     Result<int> first = store.first_undecided_trial(session_id);
     if (!first) return first.error();
-    return begin(store, session_id, protocol, options, std::move(*schedule), *first);
+    // Every decision so far: a staircase's slots skipped (stopped) may lie before decided ones.
+    Result<std::vector<TrialRecord>> history = store.trials(session_id);
+    if (!history) return history.error();
+    return begin(store, session_id, protocol, options, std::move(schedule).value(), *first,
+                 *history);
 }
 
 Result<std::unique_ptr<LiveSession>> LiveSession::begin(SessionLog& log, std::int64_t session_id,
                                                         const Protocol& protocol,
                                                         const LiveOptions& options,
-                                                        Schedule schedule, int first_trial) {
+                                                        Schedule schedule, int first_trial,
+                                                        const std::vector<TrialRecord>& history) {
     Result<bool> ok = log.set_status(session_id, SessionStatus::Running);
     if (!ok) return ok.error();
-    return std::unique_ptr<LiveSession>(
+    auto session = std::unique_ptr<LiveSession>(
         new LiveSession(log, session_id, protocol, options, std::move(schedule), first_trial));
+    std::vector<const TrialRecord*> decided;
+    for (const TrialRecord& r : history) {
+        if (r.decided) decided.push_back(&r);
+    }
+    std::ranges::sort(decided, {}, [](const TrialRecord* r) { return r->trial.index; });
+    for (const TrialRecord* r : decided) {
+        session->decided_.insert(r->trial.index);
+        if (session->staircases_) session->staircases_->record(r->trial, r->outcome);
+    }
+    return session;
 }
 
 LiveSession::LiveSession(SessionLog& log, std::int64_t session_id, const Protocol& protocol,
@@ -63,6 +81,7 @@ LiveSession::LiveSession(SessionLog& log, std::int64_t session_id, const Protoco
       schedule_(std::move(schedule)),
       next_trial_(0),
       answers_(protocol.questionnaire.items.size(), 0) {
+    if (protocol_.procedure == Procedure::Staircase) staircases_.emplace(protocol_);
     while (next_trial_ < schedule_.trials.size() &&
            schedule_.trials[next_trial_].index < first_trial) {
         ++next_trial_;
@@ -130,8 +149,28 @@ Result<bool> LiveSession::finish(SessionStatus status) {
     return true;
 }
 
+Result<bool> LiveSession::prepare_next_trial() {
+    for (; next_trial_ < schedule_.trials.size(); ++next_trial_) {
+        ScheduledTrial& trial = schedule_.trials[next_trial_];
+        if (decided_.contains(trial.index)) continue;  // after a skipped slot, in a resume
+        // Constant and practice trials, and an adaptive trial whose m was chosen before an
+        // interruption (it is shown at that m again).
+        if (!trial.adaptive || !std::isnan(trial.mono_plane)) return true;
+        if (staircases_->finished(trial.scene)) continue;  // its staircase has stopped
+        trial.mono_plane = staircases_->next_mono_plane(trial.scene);
+        Result<bool> ok = log_.record_stimulus(session_id_, trial);
+        if (!ok) return ok;
+        committed("trial " + std::to_string(trial.index) + " stimulus m " +
+                  std::to_string(trial.mono_plane));
+        return true;
+    }
+    return false;
+}
+
 Result<bool> LiveSession::start_next_trial(std::int64_t time_ns) {
-    if (next_trial_ >= schedule_.trials.size()) {
+    Result<bool> prepared = prepare_next_trial();
+    if (!prepared) return prepared;
+    if (!*prepared) {
         machine_.reset();
         if (protocol_.questionnaire.items.empty()) return finish(SessionStatus::Completed);
         kind_ = ScreenKind::Questionnaire;
@@ -252,6 +291,7 @@ Result<std::string> LiveSession::request(LiveInput input, std::int64_t time_ns) 
     if (machine_->state() == TrialState::Decided) {
         ok = log_.record_outcome(session_id_, machine_->trial().index, machine_->outcome());
         if (!ok) return ok.error();
+        if (staircases_) staircases_->record(machine_->trial(), machine_->outcome());
         committed("trial " + std::to_string(machine_->trial().index) + " outcome choice " +
                   std::to_string(machine_->outcome().choice));
         kind_ = ScreenKind::Neutral;

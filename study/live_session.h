@@ -14,10 +14,12 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "common/result.h"
 #include "study/protocol.h"
+#include "study/staircases.h"
 #include "study/study_store.h"
 #include "study/trial_state_machine.h"
 
@@ -59,16 +61,24 @@ struct LiveOptions {
 
 class LiveSession {
   public:
-    // Continues a stored session at its first undecided trial and marks it running.
+    // Continues a stored session at its first undecided trial and marks it running; a
+    // staircase protocol's staircases are rebuilt from the session's stored decisions.
     static Result<std::unique_ptr<LiveSession>> open(StudyStore& store, std::int64_t session_id,
                                                      const Protocol& protocol,
                                                      const LiveOptions& options);
     // Runs `schedule` from trial position first_trial on, writing to `log` (a simulation's
-    // memory, or the store as open() does); marks the session running.
+    // memory, or the store as open() does); marks the session running. `history`: the trials of
+    // a resumed session: its decided ones are not shown again (a staircase's skipped slot may
+    // precede them), and a staircase protocol's staircases record them again, in trial order,
+    // before the first trial starts.
     static Result<std::unique_ptr<LiveSession>> begin(SessionLog& log, std::int64_t session_id,
                                                       const Protocol& protocol,
                                                       const LiveOptions& options, Schedule schedule,
-                                                      int first_trial);
+                                                      int first_trial,
+                                                      const std::vector<TrialRecord>& history = {});
+
+    // The staircases of a staircase protocol (their estimates for the experimenter), else null.
+    const Staircases* staircases() const { return staircases_ ? &*staircases_ : nullptr; }
 
     LiveScreen screen() const;
     LiveProgress progress() const;
@@ -92,6 +102,9 @@ class LiveSession {
     Result<bool> log(const std::vector<TrialEvent>& events);
     void committed(const std::string& what) const;
     Result<bool> start_next_trial(std::int64_t time_ns);
+    // Skips the slots of stopped staircases and has the next adaptive trial's m chosen and
+    // recorded; false when no trial is left.
+    Result<bool> prepare_next_trial();
     Result<bool> record_answer(int item, int value);
     Result<bool> finish(SessionStatus status);
 
@@ -103,7 +116,9 @@ class LiveSession {
     std::size_t next_trial_;  // position in schedule_.trials of the next trial to start
     ScreenKind kind_ = ScreenKind::Neutral;
     std::optional<TrialStateMachine> machine_;
-    std::int64_t neutral_since_ns_ = -1;  // -1: from the next frame
+    std::optional<Staircases> staircases_;  // procedure = "staircase" only
+    std::set<int> decided_;                 // trial indices decided before this run
+    std::int64_t neutral_since_ns_ = -1;    // -1: from the next frame
     int trial_number_ = 0;
     std::int64_t trial_started_ns_ = -1;
     std::vector<int> answers_;  // per questionnaire item, 0: not yet answered

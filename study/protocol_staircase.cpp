@@ -187,8 +187,9 @@ void read_up_down_keys(const toml::table& table, const std::vector<double>& mono
         }
     }
     if (const toml::node* node = table.get("start_m")) {
-        const auto [low, high] = std::ranges::minmax(
+        const auto ends = std::ranges::minmax(
             mono_planes.empty() ? std::vector<double>{0.0, INFINITY} : mono_planes);
+        const double low = ends.min, high = ends.max;
         const std::string range = "within the ends of mono_planes [" + format_number(low) + ", " +
                                   format_number(high) + "] m";
         const auto inside = [low, high](double v) { return v >= low && v <= high; };

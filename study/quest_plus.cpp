@@ -131,7 +131,10 @@ ThresholdEstimate QuestPlus::estimate() const {
     }
     const double variance = std::max(0.0, square - mean * mean);
     ThresholdEstimate estimate;
-    estimate.threshold_m = std::exp(mean);
+    // The median, not the mean: the marginal posterior is skewed (answers far above the
+    // threshold are near chance and say little), so its mean lies above its median; the median
+    // was unbiased in simulation (docs/analysis.md) and is the same on the m and log m scales.
+    estimate.threshold_m = std::exp(log_quantile(log_t, marginal, 0.5));
     estimate.sd_log10 = std::sqrt(variance) / std::log(10.0);
     estimate.lower_m = std::exp(log_quantile(log_t, marginal, 0.025));
     estimate.upper_m = std::exp(log_quantile(log_t, marginal, 0.975));

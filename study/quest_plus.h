@@ -2,7 +2,9 @@
 // study/psychometric.h: a posterior over a grid of (threshold, slope, lapse), starting uniform;
 // each next stimulus is the candidate m whose answer is expected to leave the least entropy in
 // the posterior. Everything is exact Bayes on the grid: the state after n answers is the prior
-// times the n likelihoods, whatever order they are recorded in.
+// times the n likelihoods, whatever order they are recorded in. The estimate is the median of
+// the threshold's marginal posterior with its equal-tailed 95 % credible interval, each from the
+// posterior spread evenly over log-m bins around the grid's thresholds.
 #pragma once
 
 #include <cstddef>

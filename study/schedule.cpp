@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cassert>
+#include <functional>
+#include <limits>
 
 #include "study/random.h"
 
@@ -10,7 +12,13 @@ namespace {
 
 // Independent streams of one seed: a protocol with more practice trials, say, keeps the same
 // block order, distance order and labels for the data trials.
-enum Stream : std::uint64_t { kPractice = 1, kBlockOrder = 2, kDistanceOrder = 3, kLabels = 4 };
+enum Stream : std::uint64_t {
+    kPractice = 1,
+    kBlockOrder = 2,
+    kDistanceOrder = 3,
+    kLabels = 4,
+    kRoundOrder = 5,  // the staircase's interleaving
+};
 
 void assign_labels(ScheduledTrial& trial, const Protocol& protocol, Rng& rng) {
     // Independent fair coin per trial (not balanced within a session): the assignment carries no
@@ -48,6 +56,49 @@ std::vector<std::string> block_order(const Protocol& protocol, std::uint64_t see
     return order;
 }
 
+using AppendTrial = std::function<void(ScheduledTrial)>;
+
+// Constant procedure: one block per scene, every distance once, in random or listed order.
+void append_constant_trials(const Protocol& protocol, const Schedule& schedule, Rng& labels,
+                            const AppendTrial& append) {
+    Rng distance_rng(schedule.seed, kDistanceOrder);
+    for (std::size_t block = 0; block < schedule.block_order.size(); ++block) {
+        std::vector<double> distances = protocol.mono_planes;
+        if (protocol.order == TrialOrder::Randomized) distance_rng.shuffle(distances);
+        for (double m : distances) {
+            ScheduledTrial trial;
+            trial.block = static_cast<int>(block);
+            trial.scene = schedule.block_order[block];
+            trial.mono_plane = m;
+            assign_labels(trial, protocol, labels);
+            append(std::move(trial));
+        }
+    }
+}
+
+// Staircase procedure: rounds of one slot per scene, so every staircase advances at the same
+// pace through the session (fatigue and practice spread alike over the scenes), and the order
+// within a round does not let a participant predict the next scene.
+void append_staircase_trials(const Protocol& protocol, const Schedule& schedule, Rng& labels,
+                             const AppendTrial& append) {
+    Rng round_rng(schedule.seed, kRoundOrder);
+    std::vector<int> positions(schedule.block_order.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) positions[i] = static_cast<int>(i);
+    for (int round = 0; round < protocol.staircase.trials_per_scene; ++round) {
+        std::vector<int> order = positions;
+        if (round > 0 && protocol.order == TrialOrder::Randomized) round_rng.shuffle(order);
+        for (int block : order) {
+            ScheduledTrial trial;
+            trial.block = block;
+            trial.scene = schedule.block_order[static_cast<std::size_t>(block)];
+            trial.mono_plane = std::numeric_limits<double>::quiet_NaN();
+            trial.adaptive = true;
+            assign_labels(trial, protocol, labels);
+            append(std::move(trial));
+        }
+    }
+}
+
 }  // namespace
 
 int Schedule::practice_count() const {
@@ -82,19 +133,11 @@ Schedule make_schedule(const Protocol& protocol, std::uint64_t seed, int partici
         }
     }
 
-    Rng distance_rng(seed, kDistanceOrder);
     Rng label_rng(seed, kLabels);
-    for (std::size_t block = 0; block < schedule.block_order.size(); ++block) {
-        std::vector<double> distances = protocol.mono_planes;
-        if (protocol.order == TrialOrder::Randomized) distance_rng.shuffle(distances);
-        for (double m : distances) {
-            ScheduledTrial trial;
-            trial.block = static_cast<int>(block);
-            trial.scene = schedule.block_order[block];
-            trial.mono_plane = m;
-            assign_labels(trial, protocol, label_rng);
-            append(std::move(trial));
-        }
+    if (protocol.procedure == Procedure::Staircase) {
+        append_staircase_trials(protocol, schedule, label_rng, append);
+    } else {
+        append_constant_trials(protocol, schedule, label_rng, append);
     }
     return schedule;
 }

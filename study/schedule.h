@@ -1,7 +1,9 @@
 // The seeded, recorded order of a session (DESIGN.md section 7 and 10: Session -> Block -> Trial):
 // practice trials first and apart from the data, then one block per scene whose order is
 // counterbalanced across participants, distances within a block in random order, and per trial
-// a random assignment of the two alternatives to the blind labels 1 and 2.
+// a random assignment of the two alternatives to the blind labels 1 and 2. With a staircase
+// procedure the data trials are slots of the scenes' staircases, interleaved in rounds, whose
+// mono planes are chosen when they start (study/staircases.h).
 #pragma once
 
 #include <cstdint>
@@ -17,11 +19,15 @@ struct ScheduledTrial {
     bool practice = false;
     int block = -1;  // -1 for practice; else the block's position (0 = first scene block)
     std::string scene;
+    // Metres. For an adaptive trial: NaN until its staircase chooses it as the trial starts.
     double mono_plane = 0.0;
     // Which alternative each blind label shows: label1_mode = alternatives[label1_alternative].
     int label1_alternative = 0;  // 0 or 1
     RenderMode label1_mode = RenderMode::Stereo;
     RenderMode label2_mode = RenderMode::Hybrid;
+    // A staircase's slot (procedure = "staircase", data trials only): its scene's staircase
+    // chooses mono_plane when the trial starts, or skips the slot once it has stopped.
+    bool adaptive = false;
 };
 
 struct Schedule {
@@ -33,7 +39,11 @@ struct Schedule {
     int practice_count() const;
 };
 
-// Deterministic: the same protocol, seed and participant index give the same schedule.
+// Deterministic: the same protocol, seed and participant index give the same schedule. With the
+// staircase procedure the data trials come in staircase.trials_per_scene rounds of one slot per
+// scene: the first round in the counterbalanced block order (so first_scene balances the first
+// scene seen), each later round shuffled with the seed (order = "randomized") or in block order
+// too ("fixed"). A slot's block is its scene's position in the block order.
 Schedule make_schedule(const Protocol& protocol, std::uint64_t seed, int participant_index);
 
 // Row `row` of a balanced Latin square of order n (Williams design: n rows for even n, 2n for

@@ -1,5 +1,7 @@
 #include "study/session_log.h"
 
+#include <cmath>
+
 namespace monoplane::study {
 
 Result<bool> MemorySessionLog::append_event(std::int64_t, const TrialEvent& event) {
@@ -24,6 +26,18 @@ Result<bool> MemorySessionLog::set_status(std::int64_t, SessionStatus status) {
 Result<bool> MemorySessionLog::record_answer(std::int64_t, int item, const std::string&,
                                              int answer) {
     answers_[item] = answer;  // asked again: the latest answer counts, as in the database
+    return true;
+}
+
+Result<bool> MemorySessionLog::record_stimulus(std::int64_t, const ScheduledTrial& trial) {
+    const std::string name = "trial " + std::to_string(trial.index);
+    if (!trial.adaptive) return Error{name + " is not a staircase's trial; its m is scheduled"};
+    if (!(std::isfinite(trial.mono_plane) && trial.mono_plane > 0.0)) {
+        return Error{name + ": the chosen mono plane is not a positive distance"};
+    }
+    if (!adaptive_trials_.emplace(trial.index, trial).second) {
+        return Error{name + " has its mono plane already; a chosen m is never changed"};
+    }
     return true;
 }
 

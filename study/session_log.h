@@ -27,6 +27,11 @@ class SessionLog {
     virtual Result<bool> set_status(std::int64_t session_id, SessionStatus status) = 0;
     virtual Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
                                        int answer) = 0;
+    // A staircase chose an adaptive trial's mono plane as the trial starts (trial.adaptive and
+    // trial.mono_plane set): written before the trial's first event, so a resumed session shows
+    // the trial at the same m. Refuses a trial that is not adaptive or not planned, a second
+    // choice for one trial and an m that is not a finite positive number.
+    virtual Result<bool> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) = 0;
 };
 
 // One session's log in memory. Refuses a second outcome for a trial, as the database does.
@@ -38,8 +43,11 @@ class MemorySessionLog final : public SessionLog {
     Result<bool> set_status(std::int64_t session_id, SessionStatus status) override;
     Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
                                int answer) override;
+    Result<bool> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) override;
 
     const std::vector<TrialEvent>& events() const { return events_; }
+    // The adaptive trials started, with their mono planes, by trial index.
+    const std::map<int, ScheduledTrial>& adaptive_trials() const { return adaptive_trials_; }
     const std::map<int, TrialOutcome>& outcomes() const { return outcomes_; }  // by trial index
     const std::map<int, int>& answers() const { return answers_; }             // by item
     SessionStatus status() const { return status_; }
@@ -48,6 +56,7 @@ class MemorySessionLog final : public SessionLog {
     std::vector<TrialEvent> events_;
     std::map<int, TrialOutcome> outcomes_;
     std::map<int, int> answers_;
+    std::map<int, ScheduledTrial> adaptive_trials_;
     SessionStatus status_ = SessionStatus::Running;
 };
 

@@ -135,8 +135,27 @@ constexpr std::string_view kVersion4 = R"sql(
 ALTER TABLE frames ADD COLUMN mono_plane REAL CHECK (mono_plane > 0);
 )sql";
 
-constexpr std::array<std::string_view, 4> kMigrations = {kVersion1, kVersion2, kVersion3,
-                                                         kVersion4};
+// Version 5 (issue 21): adaptive procedures. A staircase session's data trials are slots whose
+// mono plane is chosen only as each starts; their seeded order, scenes and blind labels are
+// stored before the first trial in planned_trials, and a slot gets its row in `trials` (with the
+// chosen m) when it starts. Sessions record their procedure; earlier ones were all constant.
+constexpr std::string_view kVersion5 = R"sql(
+ALTER TABLE sessions ADD COLUMN procedure TEXT NOT NULL DEFAULT 'constant'
+    CHECK (procedure IN ('constant', 'staircase'));
+CREATE TABLE planned_trials (
+    session_id         INTEGER NOT NULL REFERENCES sessions(id),
+    trial_index        INTEGER NOT NULL CHECK (trial_index >= 0),
+    block              INTEGER NOT NULL CHECK (block >= 0),
+    scene              TEXT NOT NULL,
+    label1_alternative INTEGER NOT NULL CHECK (label1_alternative IN (0, 1)),
+    label1_mode        TEXT NOT NULL,
+    label2_mode        TEXT NOT NULL,
+    PRIMARY KEY (session_id, trial_index)
+);
+)sql";
+
+constexpr std::array<std::string_view, 5> kMigrations = {kVersion1, kVersion2, kVersion3, kVersion4,
+                                                         kVersion5};
 
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "study/frame_queue.h"
+#include "study/planned_trial_store.h"
 #include "study/scene_file_store.h"
 #include "study/store_schema.h"
 #include "study/store_sqlite.h"
@@ -106,7 +107,10 @@ Result<bool> validate_schedule(const Schedule& schedule) {
             return Error{where + "practice trials have block -1 and data trials a block >= 0"};
         if (t.block < -1) return Error{where + "block is below -1"};
         if (t.scene.empty()) return Error{where + "no scene"};
-        if (!std::isfinite(t.mono_plane)) return Error{where + "mono plane is not finite"};
+        if (t.adaptive && (t.practice || !std::isnan(t.mono_plane)))
+            return Error{where + "a staircase's trial is a data trial whose m is not chosen yet"};
+        if (!t.adaptive && !std::isfinite(t.mono_plane))
+            return Error{where + "mono plane is not finite"};
         if (t.label1_alternative != 0 && t.label1_alternative != 1)
             return Error{where + "label1_alternative must be 0 or 1"};
     }
@@ -384,8 +388,8 @@ Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Sc
         db,
         "INSERT INTO sessions (participant_id, protocol_name, protocol_hash, protocol_text, "
         "seed, block_order, software_version, hmd, runtime, device, observer, started_utc, "
-        "status, render_anti_aliasing, render_ssao, render_detail) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        "status, render_anti_aliasing, render_ssao, render_detail, procedure) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     if (!session) return session.error();
     session.value()
         .bind(1, participant_id)
@@ -408,6 +412,7 @@ Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Sc
     } else {
         session.value().bind(16, info.render.detail);
     }
+    session.value().bind(17, procedure_name(schedule_procedure(schedule)));
     if (Result<bool> ok = session.value().run("adding the session"); !ok) return ok.error();
     const std::int64_t session_id = sqlite3_last_insert_rowid(db.get());
 
@@ -417,6 +422,7 @@ Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Sc
         "label1_alternative, label1_mode, label2_mode) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
     if (!trial) return trial.error();
     for (const ScheduledTrial& t : schedule.trials) {
+        if (t.adaptive) continue;  // a plan until it starts (write_planned_trials)
         trial.value()
             .bind(1, session_id)
             .bind(2, t.index)
@@ -430,6 +436,7 @@ Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Sc
         if (Result<bool> ok = trial.value().run("storing the schedule"); !ok) return ok.error();
         trial.value().reset();
     }
+    if (Result<bool> ok = write_planned_trials(db, session_id, schedule); !ok) return ok.error();
     if (Result<bool> ok = write_scene_files(db, session_id, info.scene_files); !ok)
         return ok.error();
     if (Result<bool> ok = tx.value().commit("starting a session"); !ok) return ok.error();
@@ -438,12 +445,14 @@ Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Sc
 
 namespace {
 
-// The trial columns in the order read_trial() expects.
+// The trial columns in the order read_trial() expects; the last says whether the row is a
+// started slot of a staircase (planned_trial_store.h).
 constexpr std::string_view kTrialColumns =
     "t.trial_index, t.practice, t.block, t.scene, t.mono_plane, t.label1_alternative, "
     "t.label1_mode, t.label2_mode, t.decided, t.choice, t.chosen_mode, t.valid, t.switches, "
-    "t.time_label1_ns, t.time_label2_ns, t.decision_time_ns";
-constexpr int kTrialColumnCount = 16;
+    "t.time_label1_ns, t.time_label2_ns, t.decision_time_ns, EXISTS (SELECT 1 FROM "
+    "planned_trials pt WHERE pt.session_id = t.session_id AND pt.trial_index = t.trial_index)";
+constexpr int kTrialColumnCount = 17;
 
 Result<RenderMode> read_mode(const Statement& stmt, int column, const std::string& file) {
     const std::string name = stmt.text(column);
@@ -461,7 +470,8 @@ Result<bool> read_trial(const Statement& stmt, const std::string& file, Schedule
     trial.practice = stmt.int64(1) != 0;
     trial.block = stmt.int32(2);
     trial.scene = stmt.text(3);
-    trial.mono_plane = stmt.real(4);
+    // NULL: a staircase's slot whose m is chosen when it starts.
+    trial.mono_plane = stmt.is_null(4) ? std::nan("") : stmt.real(4);
     trial.label1_alternative = stmt.int32(5);
     Result<RenderMode> label1 = read_mode(stmt, 6, file);
     if (!label1) return label1.error();
@@ -469,6 +479,7 @@ Result<bool> read_trial(const Statement& stmt, const std::string& file, Schedule
     if (!label2) return label2.error();
     trial.label1_mode = *label1;
     trial.label2_mode = *label2;
+    trial.adaptive = stmt.int64(16) != 0;
     decided = stmt.int64(8) != 0;
     outcome = TrialOutcome{};
     if (!decided) return true;
@@ -506,9 +517,11 @@ Result<Schedule> StudyStore::load_schedule(std::int64_t session_id) const {
     schedule.participant_index = head->int32(1);
     schedule.block_order = split_scenes(head->text(2));
 
+    // The trials started so far and the staircases' slots not started yet.
     Result<Statement> rows =
         Statement::prepare(db, "SELECT " + std::string(kTrialColumns) +
-                                   " FROM trials t WHERE t.session_id = ? ORDER BY t.trial_index");
+                                   " FROM trials t WHERE t.session_id = ?1 UNION ALL " +
+                                   std::string(kUnstartedPlannedTrials) + " ORDER BY 1");
     if (!rows) return rows.error();
     rows.value().bind(1, session_id);
     for (;;) {
@@ -527,11 +540,15 @@ Result<Schedule> StudyStore::load_schedule(std::int64_t session_id) const {
 
 Result<int> StudyStore::first_undecided_trial(std::int64_t session_id) const {
     if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok.error();
-    // All decided: the trial count, i.e. one past the last trial.
+    // All decided: the trial count, i.e. one past the last trial. Slots not started count as
+    // undecided.
     Result<Statement> stmt = Statement::prepare(
         impl_->db,
-        "SELECT coalesce(min(CASE WHEN decided = 0 THEN trial_index END), count(*)) "
-        "FROM trials WHERE session_id = ?");
+        "SELECT coalesce(min(CASE WHEN decided = 0 THEN trial_index END), count(*)) FROM "
+        "(SELECT trial_index, decided FROM trials WHERE session_id = ?1 UNION ALL "
+        "SELECT pt.trial_index, 0 FROM planned_trials pt WHERE pt.session_id = ?1 AND NOT EXISTS "
+        "(SELECT 1 FROM trials t WHERE t.session_id = pt.session_id AND "
+        "t.trial_index = pt.trial_index))");
     if (!stmt) return stmt.error();
     stmt.value().bind(1, session_id);
     Result<bool> row = stmt.value().step("finding the first undecided trial");
@@ -545,8 +562,9 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
         db,
         "SELECT s.id, p.code, p.participant_index, s.protocol_name, s.protocol_hash, "
         "s.protocol_text, s.seed, s.software_version, s.hmd, s.runtime, s.device, s.observer, "
-        "s.started_utc, s.status, s.render_anti_aliasing, s.render_ssao, s.render_detail "
-        "FROM sessions s JOIN participants p ON p.id = s.participant_id WHERE s.id = ?");
+        "s.started_utc, s.status, s.render_anti_aliasing, s.render_ssao, s.render_detail, "
+        "s.procedure FROM sessions s JOIN participants p ON p.id = s.participant_id "
+        "WHERE s.id = ?");
     if (!stmt) return stmt.error();
     stmt.value().bind(1, session_id);
     Result<bool> found = stmt.value().step("reading a session");
@@ -577,6 +595,10 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
     info.render.anti_aliasing = stmt->text(14);
     info.render.ssao = stmt->text(15);
     info.render.detail = stmt->is_null(16) ? "" : stmt->text(16);
+    Result<Procedure> procedure = parse_procedure(stmt->text(17));
+    if (!procedure)
+        return Error{"study database '" + db.path() + "': " + procedure.error().message};
+    info.procedure = *procedure;
     Result<std::vector<SceneFileRecord>> files = read_scene_files(db, session_id);
     if (!files) return files.error();
     info.scene_files = std::move(files).value();
@@ -763,6 +785,19 @@ Result<bool> StudyStore::record_answer(std::int64_t session_id, int item, const 
     if (Result<bool> ok = stmt.value().run("recording a questionnaire answer"); !ok) return ok;
     if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
     return impl_->commit_written(tx.value(), "recording a questionnaire answer");
+}
+
+Result<bool> StudyStore::record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) {
+    if (!trial.adaptive)
+        return Error{"trial " + std::to_string(trial.index) +
+                     " is not a staircase's trial; its m is scheduled"};
+    Result<Transaction> tx = Transaction::begin(impl_->db, "recording a staircase's choice");
+    if (!tx) return tx.error();
+    if (Result<bool> ok = start_planned_trial(impl_->db, session_id, trial.index, trial.mono_plane);
+        !ok)
+        return ok;
+    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    return impl_->commit_written(tx.value(), "recording a staircase's choice");
 }
 
 Result<bool> StudyStore::add_session_note(std::int64_t session_id, const std::string& text) {

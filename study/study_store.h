@@ -56,6 +56,9 @@ struct SessionInfo {
     std::vector<SceneFileRecord> scene_files;
     // Read back by session(); begin_session ignores them (add_session_note adds one).
     std::vector<SessionNote> notes;
+    // Read back by session(); begin_session records the procedure its schedule was made for
+    // (staircase when it has adaptive trials). Sessions before schema version 5: constant.
+    Procedure procedure = Procedure::Constant;
 };
 
 // One row of the export: a trial with its outcome (DESIGN.md section 7; docs/data.md).
@@ -93,15 +96,17 @@ class StudyStore final : public SessionLog {
                                                     const StoreOptions& options);
     ~StudyStore();
 
-    static constexpr int kSchemaVersion = 4;
+    static constexpr int kSchemaVersion = 5;
 
     // Starts a session: refuses a participant code that already has a session (use resume).
     // Stores the protocol text and hash, the seed, the whole schedule and the scene files'
     // digests (info.scene_files, checked by validate_scene_files: each imported scene of the
-    // schedule needs its record) in one transaction, before the first trial.
+    // schedule needs its record) in one transaction, before the first trial. A staircase's
+    // adaptive trials are stored as plans without a mono plane (record_stimulus adds it).
     Result<std::int64_t> begin_session(const SessionInfo& info, const Schedule& schedule);
 
-    // The schedule stored for a session, and where to continue: the first undecided trial.
+    // The schedule stored for a session (adaptive trials not started yet with a NaN mono
+    // plane), and where to continue: the first undecided trial or unstarted slot.
     Result<Schedule> load_schedule(std::int64_t session_id) const;
     Result<int> first_undecided_trial(std::int64_t session_id) const;
     Result<SessionInfo> session(std::int64_t session_id) const;
@@ -130,10 +135,13 @@ class StudyStore final : public SessionLog {
     Result<bool> set_status(std::int64_t session_id, SessionStatus status) override;
     Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
                                int answer) override;
+    // The started adaptive trial becomes a row of the trials table with its m.
+    Result<bool> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) override;
     // Appends a note to a session (stamped with the current UTC time), durable when it returns.
     // Refuses an empty note and an unknown session.
     Result<bool> add_session_note(std::int64_t session_id, const std::string& text);
 
+    // The trials shown or being shown (a staircase's slots once started), by session and index.
     Result<std::vector<TrialRecord>> trials(std::optional<std::int64_t> session_id = {}) const;
     Result<std::vector<TrialEvent>> events(std::int64_t session_id) const;
     // The questionnaire answers of a session, by item (the latest answer to each item).

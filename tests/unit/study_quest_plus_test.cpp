@@ -38,10 +38,11 @@ TEST(QuestPlus, PosteriorAfterTwoAnswersIsBayesRuleByHand) {
     EXPECT_NEAR(quest.posterior()[1], 3.0 / 11.0, 1e-15);
     EXPECT_EQ(quest.trials(), 2);
 
-    // The estimate: the posterior mean of ln T, its SD in log10, and the equal-tailed 95 %
-    // interval of the posterior spread evenly over bins [1, 4] and [4, 16] m (in log m).
+    // The estimate: the median and the equal-tailed 95 % interval of the posterior spread
+    // evenly over the bins [1, 4] and [4, 16] m (in log m), and the SD of log10 T over the grid
+    // (mean ln T = 8/11 ln 2 + 3/11 ln 8).
     const ThresholdEstimate e = quest.estimate();
-    EXPECT_NEAR(e.threshold_m, std::pow(2.0, 17.0 / 11.0), 1e-12);
+    EXPECT_NEAR(e.threshold_m, std::pow(4.0, 0.5 * 11.0 / 8.0), 1e-12);
     EXPECT_NEAR(*e.sd_log10, std::sqrt(24.0) / 11.0 * std::log10(4.0), 1e-12);
     EXPECT_NEAR(*e.lower_m, std::pow(4.0, 0.025 * 11.0 / 8.0), 1e-12);
     EXPECT_NEAR(*e.upper_m, std::pow(4.0, 1.0 + (0.975 - 8.0 / 11.0) * 11.0 / 3.0), 1e-12);

@@ -278,5 +278,72 @@ TEST(Schedule, EveryConditionIsEquallyLikelyAtEveryPosition) {
         << first_trial_label1_is_first;
 }
 
+// Staircase procedure (issue 21): after the practice trials, trials_per_scene rounds of one slot
+// per scene; round 0 in the counterbalanced block order, later rounds shuffled; every slot an
+// adaptive data trial whose m is not chosen yet, in its scene's block.
+Protocol staircase(int trials_per_scene) {
+    Protocol p = fink2019();
+    p.procedure = Procedure::Staircase;
+    p.staircase.trials_per_scene = trials_per_scene;
+    return p;
+}
+
+TEST(Schedule, StaircaseSlotsComeInRoundsOfEveryScene) {
+    const Protocol protocol = staircase(20);
+    for (int participant = 0; participant < 6; ++participant) {
+        const Schedule s = make_schedule(protocol, 99, participant);
+        ASSERT_EQ(s.trials.size(), 2u + 3u * 20u);
+        EXPECT_EQ(s.practice_count(), 2);
+        // The Latin square's row for this participant, as for the constant procedure.
+        const std::vector<int> row = balanced_latin_square_row(3, participant);
+        for (int round = 0; round < 20; ++round) {
+            std::set<std::string> scenes;
+            for (int k = 0; k < 3; ++k) {
+                const ScheduledTrial& t = s.trials[static_cast<std::size_t>(2 + 3 * round + k)];
+                EXPECT_TRUE(t.adaptive && !t.practice && std::isnan(t.mono_plane)) << t.index;
+                EXPECT_EQ(s.block_order[static_cast<std::size_t>(t.block)], t.scene);
+                EXPECT_EQ(t.label1_mode, protocol.alternatives[t.label1_alternative]);
+                scenes.insert(t.scene);
+                if (round == 0) {
+                    EXPECT_EQ(t.scene, protocol.scenes[static_cast<std::size_t>(row[k])]);
+                    EXPECT_EQ(t.block, k);
+                }
+            }
+            EXPECT_EQ(scenes.size(), 3u) << "round " << round;
+        }
+        for (int i = 0; i < 2; ++i) {
+            EXPECT_FALSE(s.trials[static_cast<std::size_t>(i)].adaptive);  // practice: m known
+            EXPECT_TRUE(std::isfinite(s.trials[static_cast<std::size_t>(i)].mono_plane));
+        }
+    }
+}
+
+TEST(Schedule, StaircaseRoundsAreShuffledUnlessTheOrderIsFixed) {
+    // Over 200 rounds each of the 3! orders comes up; with order = "fixed" only the block order.
+    std::map<std::string, int> orders;
+    const Schedule s = make_schedule(staircase(200), 5, 0);
+    for (int round = 1; round < 200; ++round) {
+        std::string order;
+        for (int k = 0; k < 3; ++k)
+            order += s.trials[static_cast<std::size_t>(2 + 3 * round + k)].scene + " ";
+        ++orders[order];
+    }
+    EXPECT_EQ(orders.size(), 6u);
+    for (const auto& [order, count] : orders) EXPECT_GT(count, 15) << order;  // expected 33
+
+    Protocol fixed = staircase(10);
+    fixed.order = TrialOrder::Fixed;
+    const Schedule f = make_schedule(fixed, 5, 0);
+    for (std::size_t i = 2; i < f.trials.size(); ++i) {
+        EXPECT_EQ(f.trials[i].block, static_cast<int>((i - 2) % 3)) << i;
+    }
+    // The same seed gives the same slots, labels included.
+    const Schedule again = make_schedule(staircase(200), 5, 0);
+    for (std::size_t i = 0; i < s.trials.size(); ++i) {
+        EXPECT_EQ(again.trials[i].scene, s.trials[i].scene);
+        EXPECT_EQ(again.trials[i].label1_alternative, s.trials[i].label1_alternative);
+    }
+}
+
 }  // namespace
 }  // namespace monoplane::study

@@ -177,10 +177,10 @@ TEST_F(StudyStoreTest, UsesWalAndRecordsTheSchemaVersion) {
     RawDb raw(db_);
     EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
     EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
-    EXPECT_EQ(StudyStore::kSchemaVersion, 4);
+    EXPECT_EQ(StudyStore::kSchemaVersion, 5);
     EXPECT_EQ(raw.integer("PRAGMA application_id"), 0x4D505354);
-    // Version 2 added frames, version 3 scene_files and session_notes.
-    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 8);
+    // Version 2 added frames, version 3 scene_files and session_notes, version 5 planned_trials.
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 9);
 }
 
 TEST_F(StudyStoreTest, FilesAreReadableByTheOwnerOnly) {
@@ -427,15 +427,15 @@ TEST_F(StudyStoreTest, RefusesANewerSchemaWithoutTouchingIt) {
     { ASSERT_TRUE(open_store()); }
     {
         RawDb raw(db_);
-        ASSERT_EQ(raw.exec("PRAGMA user_version = 5"), SQLITE_OK);
+        ASSERT_EQ(raw.exec("PRAGMA user_version = 6"), SQLITE_OK);
     }
     const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
     ASSERT_FALSE(store.ok());
     const std::string& message = store.error().message;
-    EXPECT_TRUE(contains(message, "schema version 5, newer than this build")) << message;
+    EXPECT_TRUE(contains(message, "schema version 6, newer than this build")) << message;
     EXPECT_TRUE(contains(message, db_.string())) << message;
     RawDb raw(db_);
-    EXPECT_EQ(raw.integer("PRAGMA user_version"), 5);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 6);
     EXPECT_TRUE(fs::exists(db_));
 }
 
