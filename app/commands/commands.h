@@ -15,5 +15,6 @@ void add_study_command(CLI::App& root, const GlobalOptions& global);
 void add_bench_command(CLI::App& root, const GlobalOptions& global);
 void add_analyze_command(CLI::App& root, const GlobalOptions& global);
 void add_simulate_command(CLI::App& root, const GlobalOptions& global);
+void add_simulate_threshold_command(CLI::App& root, const GlobalOptions& global);
 
 }  // namespace monoplane::app

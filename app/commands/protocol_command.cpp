@@ -53,6 +53,19 @@ std::string hex(std::uint64_t value) {
     return buffer;
 }
 
+// The procedure's line: constant, or the staircase rule with its trials and stopping rule.
+std::string procedure_summary(const study::Protocol& p) {
+    if (p.procedure == study::Procedure::Constant) return "constant (every scene x distance once)";
+    const study::StaircaseSettings& s = p.staircase;
+    std::string text = "staircase, " + std::string(study::staircase_rule_name(s.rule)) +
+                       ", up to " + std::to_string(s.trials_per_scene) + " trials per scene";
+    if (s.stop_sd_log10) {
+        text += ", stopping at a posterior SD of log10 threshold <= " + number(*s.stop_sd_log10) +
+                " after " + std::to_string(s.min_trials_per_scene);
+    }
+    return text;
+}
+
 void print_summary(const study::Protocol& p) {
     std::string scenes;
     for (const std::string& scene : p.scenes) scenes += (scenes.empty() ? "" : ", ") + scene;
@@ -64,9 +77,13 @@ void print_summary(const study::Protocol& p) {
               << "  mono planes:   " << distances << " m\n"
               << "  alternatives:  " << study::render_mode_name(p.alternatives[0])
               << " (reference) vs " << study::render_mode_name(p.alternatives[1]) << "\n"
-              << "  trials:        " << p.trials_per_session() << " per session ("
-              << p.scenes.size() << " scenes x " << p.mono_planes.size() << " distances), plus "
-              << p.practice_trials << " practice\n"
+              << "  procedure:     " << procedure_summary(p) << "\n"
+              << "  trials:        " << (p.procedure == study::Procedure::Staircase ? "up to " : "")
+              << p.trials_per_session() << " per session (" << p.scenes.size() << " scenes x "
+              << (p.procedure == study::Procedure::Staircase
+                      ? std::to_string(p.staircase.trials_per_scene) + " trials"
+                      : std::to_string(p.mono_planes.size()) + " distances")
+              << "), plus " << p.practice_trials << " practice\n"
               << "  order:         " << order_name(p.order) << ", first scene "
               << first_scene_name(p.first_scene)
               << (p.require_both_viewed ? ", both alternatives must be viewed"

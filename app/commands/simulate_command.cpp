@@ -9,6 +9,7 @@
 //
 // Run r's participant p has the same seed in every n, so the studies of n + 2 participants
 // extend those of n (common random numbers): the power curve is not jagged by independent noise.
+// Staircase protocols work alike: each session's staircases choose its trials' m.
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "analysis/report/report.h"
 #include "app/commands/commands.h"
 #include "app/commands/output_directory.h"
+#include "app/commands/simulated_sessions.h"
 #include "app/commands/study_rows.h"
 #include "charts/png/svg_to_png.h"
 #include "charts/svg_writer.h"
@@ -47,44 +49,17 @@ struct SimulateOptions {
     bool log2_distance = false;
 };
 
-constexpr std::uint64_t mix64(std::uint64_t x) {
-    x += 0x9E3779B97F4A7C15ull;
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-}
-
-// The session seed of participant p in simulated study r.
-std::uint64_t session_seed(std::uint64_t seed, int run, int participant) {
-    return mix64(mix64(seed ^ 0x51A1'0000'0000'0000ull) + static_cast<std::uint64_t>(run)) ^
-           mix64(0xC0DE'0000'0000'0000ull + static_cast<std::uint64_t>(participant));
-}
-
 std::string name(study::RenderMode mode) {
     return std::string(study::render_mode_name(mode));
 }
 
-// One simulated session as analysis rows: the session engine of `study run` (LiveSession with
-// the observer at its controls, study::run_simulated_session) over the participant's schedule,
-// into memory instead of a database; every trial decided by the same rules a participant's are.
+// One simulated session (simulated_sessions.h) as analysis rows.
 std::vector<analysis::TrialRow> simulate_session(
     const study::Protocol& protocol, const std::string& observer_name, std::uint64_t seed,
     int participant, const std::function<double(const study::ScheduledTrial&)>& error_px) {
-    const study::Schedule schedule = study::make_schedule(protocol, seed, participant);
-    std::unique_ptr<study::Observer> observer =
-        study::make_observer(observer_name, seed).value_or_throw();
-    study::RunOptions options;
-    options.trial_error_px = error_px;
-    options.neutral_ns = 0;  // virtual time between trials changes no decision
-    // Decisions do not depend on the display rate, only decision times (not in the power
-    // analysis) are quantised by it: a coarse virtual display keeps thousands of sessions fast.
-    options.frame_rate_hz = 20.0;
-    study::MemorySessionLog log;
-    study::run_simulated_session(log, protocol, schedule, *observer, options).value_or_throw();
     std::vector<analysis::TrialRow> rows;
-    rows.reserve(schedule.trials.size());
-    for (const study::ScheduledTrial& trial : schedule.trials) {
-        const study::TrialOutcome& outcome = log.outcomes().at(trial.index);
+    for (const auto& [trial, outcome] :
+         simulate_trials(protocol, observer_name, seed, participant, error_px)) {
         analysis::TrialRow row;
         row.source = "simulation";
         row.session_id = participant + 1;
@@ -226,7 +201,9 @@ void add_simulate_command(CLI::App& root, const GlobalOptions&) {
     cmd->add_option("--participants", o->participants,
                     "Largest number of participants N (the grid runs 2, 4, ... up to N)")
         ->required();
-    cmd->add_option("--observer", o->observer, "Simulated observer: default, chance, reference")
+    cmd->add_option("--observer", o->observer,
+                    "Simulated observer: default, chance, reference, or "
+                    "psychometric:threshold=T,slope=B,lapse=L")
         ->required();
     cmd->add_option("--runs", o->runs, "Simulated studies per number of participants")->required();
     cmd->add_option("--out", o->out, "Output directory")->required();

@@ -281,6 +281,11 @@ TEST(Schedule, EveryConditionIsEquallyLikelyAtEveryPosition) {
 // Staircase procedure (issue 21): after the practice trials, trials_per_scene rounds of one slot
 // per scene; round 0 in the counterbalanced block order, later rounds shuffled; every slot an
 // adaptive data trial whose m is not chosen yet, in its scene's block.
+// The position of round `round`'s k-th slot, after the 2 practice trials of 3 scenes.
+std::size_t slot(int round, int k) {
+    return 2 + 3 * static_cast<std::size_t>(round) + static_cast<std::size_t>(k);
+}
+
 Protocol staircase(int trials_per_scene) {
     Protocol p = fink2019();
     p.procedure = Procedure::Staircase;
@@ -299,7 +304,7 @@ TEST(Schedule, StaircaseSlotsComeInRoundsOfEveryScene) {
         for (int round = 0; round < 20; ++round) {
             std::set<std::string> scenes;
             for (int k = 0; k < 3; ++k) {
-                const ScheduledTrial& t = s.trials[static_cast<std::size_t>(2 + 3 * round + k)];
+                const ScheduledTrial& t = s.trials[slot(round, k)];
                 EXPECT_TRUE(t.adaptive && !t.practice && std::isnan(t.mono_plane)) << t.index;
                 EXPECT_EQ(s.block_order[static_cast<std::size_t>(t.block)], t.scene);
                 EXPECT_EQ(t.label1_mode, protocol.alternatives[t.label1_alternative]);
@@ -324,8 +329,7 @@ TEST(Schedule, StaircaseRoundsAreShuffledUnlessTheOrderIsFixed) {
     const Schedule s = make_schedule(staircase(200), 5, 0);
     for (int round = 1; round < 200; ++round) {
         std::string order;
-        for (int k = 0; k < 3; ++k)
-            order += s.trials[static_cast<std::size_t>(2 + 3 * round + k)].scene + " ";
+        for (int k = 0; k < 3; ++k) order += s.trials[slot(round, k)].scene + " ";
         ++orders[order];
     }
     EXPECT_EQ(orders.size(), 6u);
