@@ -7,6 +7,9 @@
 #include <numbers>
 #include <optional>
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
 #include "app/commands/ao_consistency.h"
 #include "app/commands/auto_mono_plane_options.h"
 #include "app/commands/commands.h"
@@ -175,6 +178,22 @@ std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& 
     return j.str();
 }
 
+// A scene wholly beyond the far plane renders as sky alone: say why (glTF files modelled in
+// millimetres put a camera "metres" away that are really millimetres, e.g. 2CylinderEngine's
+// camera stands 1,500 units from the engine).
+void warn_if_beyond_far_plane(const scenes::Scene& scene, const scenes::Viewpoint& view,
+                              double far) {
+    const glm::dvec3 p = view.head.position;
+    const glm::dvec3 nearest =
+        glm::clamp(p, glm::dvec3(scene.bounds.min), glm::dvec3(scene.bounds.max));
+    const double distance = glm::length(nearest - p);
+    if (distance <= far) return;
+    std::cerr << "warning: view '" << view.name << "' is " << distance
+              << " m from the nearest point of the scene's bounds, beyond the far plane (" << far
+              << " m): only sky will show. If the file is modelled in other units than metres, "
+                 "scale it, or try --view bench-overview\n";
+}
+
 void run_render(const RenderOptions& o, const GlobalOptions& global) {
     auto choice = modes::parse_render_mode(o.mode);
     if (!choice) {
@@ -262,6 +281,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         for (const auto& v : scene.viewpoints) names.push_back(v.name);
         throw UserError("--view " + o.view + ": " + o.scene + " has the views " + joined(names));
     }
+    warn_if_beyond_far_plane(scene, *viewpoint, modes::StereoViewInputs{}.far);
 
     renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
     renderer_options.depth_prepass = o.depth_prepass;

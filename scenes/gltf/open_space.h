@@ -1,6 +1,6 @@
 // Whether a point of a scene is open space a participant could stand in, or lies inside a solid
-// (a large object's interior: 2CylinderEngine is 700 m long in glTF's metres, so its "walkable"
-// standing point at 1.7 m above its lowest point lies inside the crankcase and shows nothing).
+// (a large object's interior: a machine modelled in millimetres is hundreds of glTF "metres"
+// wide, so a "walkable" standing point 1.7 m above its lowest point lies inside it).
 // CPU only.
 #pragma once
 
