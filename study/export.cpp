@@ -9,6 +9,8 @@
 #include <fstream>
 #include <system_error>
 
+#include "study/staircase_estimates.h"
+
 namespace monoplane::study {
 namespace {
 
@@ -44,8 +46,14 @@ std::string hash_text(std::uint64_t hash) {
     return buffer;
 }
 
-// The row for one trial, in export_columns() order. Outcome columns are NA until decided.
-std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s) {
+Cell optional_number(const std::optional<double>& value) {
+    return value ? number(number_text(*value)) : na();
+}
+
+// The row for one trial, in export_columns() order. Outcome columns are NA until decided; the
+// staircase columns are NA unless `staircase` (its scene's estimate after the trial) is given.
+std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s,
+                      const ThresholdEstimate* staircase) {
     const ScheduledTrial& t = r.trial;
     const TrialOutcome& o = r.outcome;
     const bool d = r.decided;
@@ -78,13 +86,26 @@ std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s) {
         text(s.render.ssao),
         s.render.detail.empty() ? na() : text(s.render.detail),  // NA: not recorded (schema 1)
         text(std::string(procedure_name(s.procedure))),
+        staircase ? number(number_text(staircase->threshold_m)) : na(),
+        staircase ? optional_number(staircase->lower_m) : na(),
+        staircase ? optional_number(staircase->upper_m) : na(),
     };
+}
+
+// The trial's staircase estimate after its decision, or null (constant sessions, practice and
+// undecided trials).
+const ThresholdEstimate* staircase_estimate(const ExportData& data, const TrialRecord& record) {
+    const auto session = data.staircase_estimates.find(record.session_id);
+    if (session == data.staircase_estimates.end()) return nullptr;
+    const auto found = session->second.find(record.trial.index);
+    return found == session->second.end() ? nullptr : &found->second;
 }
 
 template <class Write>
 void for_each_row(const ExportData& data, Write write) {
-    for (const TrialRecord& record : data.trials)
-        write(row(record, data.sessions.at(record.session_id)));
+    for (const TrialRecord& record : data.trials) {
+        write(row(record, data.sessions.at(record.session_id), staircase_estimate(data, record)));
+    }
 }
 
 void write_export(const ExportData& data, ExportFormat format, std::ostream& out) {
@@ -134,20 +155,37 @@ Result<ExportFormat> parse_export_format(std::string_view name) {
 
 const std::vector<std::string_view>& export_columns() {
     static const std::vector<std::string_view> columns = {
-        "participant",   "session",
-        "trial_index",   "block",
-        "scene",         "mono_plane",
-        "label1_mode",   "choice",
-        "chosen_mode",   "valid",
-        "switches",      "time_label1_s",
-        "time_label2_s", "decision_time_s",
-        "practice",      "decided",
-        "label2_mode",   "participant_index",
-        "protocol",      "protocol_hash",
-        "observer",      "runtime",
-        "hmd",           "session_status",
-        "anti_aliasing", "ssao",
-        "detail",        "procedure",
+        "participant",
+        "session",
+        "trial_index",
+        "block",
+        "scene",
+        "mono_plane",
+        "label1_mode",
+        "choice",
+        "chosen_mode",
+        "valid",
+        "switches",
+        "time_label1_s",
+        "time_label2_s",
+        "decision_time_s",
+        "practice",
+        "decided",
+        "label2_mode",
+        "participant_index",
+        "protocol",
+        "protocol_hash",
+        "observer",
+        "runtime",
+        "hmd",
+        "session_status",
+        "anti_aliasing",
+        "ssao",
+        "detail",
+        "procedure",
+        "staircase_threshold_m",
+        "staircase_lower_m",
+        "staircase_upper_m",
     };
     return columns;
 }
@@ -162,6 +200,13 @@ Result<ExportData> collect_export(const StudyStore& store, ExportFormat format) 
         Result<SessionInfo> info = store.session(record.session_id);
         if (!info) return info.error();
         data.sessions.emplace(record.session_id, std::move(info).value());
+    }
+    for (const auto& [id, info] : data.sessions) {
+        if (info.procedure != Procedure::Staircase) continue;
+        Result<std::map<int, ThresholdEstimate>> estimates =
+            replay_staircase_estimates(info, data.trials);
+        if (!estimates) return estimates.error();
+        data.staircase_estimates.emplace(id, std::move(estimates).value());
     }
     if (format != ExportFormat::FramesCsv) return data;
     for (const auto& [id, info] : data.sessions) {
@@ -306,9 +351,10 @@ std::string json_notes(const SessionInfo& session) {
 
 // One trial's object: the export's columns, then two keys CSV has no room for, the trial's
 // scene files and its session's notes.
-std::string json_object(const TrialRecord& record, const SessionInfo& session) {
+std::string json_object(const TrialRecord& record, const SessionInfo& session,
+                        const ThresholdEstimate* staircase) {
     const std::vector<std::string_view>& columns = export_columns();
-    const std::vector<Cell> cells = row(record, session);
+    const std::vector<Cell> cells = row(record, session, staircase);
     std::string object = "{";
     for (std::size_t i = 0; i < cells.size(); ++i) {
         object += (i > 0 ? ", " : "") + json_string(columns[i]) + ": " + json_value(cells[i]);
@@ -324,7 +370,8 @@ void write_json(const ExportData& data, std::ostream& out) {
     bool first = true;
     for (const TrialRecord& record : data.trials) {
         out << (first ? "\n  " : ",\n  ")
-            << json_object(record, data.sessions.at(record.session_id));
+            << json_object(record, data.sessions.at(record.session_id),
+                           staircase_estimate(data, record));
         first = false;
     }
     out << (first ? "]\n" : "\n]\n");

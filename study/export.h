@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "common/result.h"
+#include "study/adaptive_procedure.h"
 #include "study/study_store.h"
 
 namespace monoplane::study {
@@ -33,9 +34,14 @@ struct ExportData {
     std::vector<TrialRecord> trials;
     std::map<std::int64_t, SessionInfo> sessions;
     std::map<std::int64_t, std::vector<FrameRecord>> frames;  // FramesCsv only, per session
+    // Staircase sessions: each scene's staircase estimate after each decided adaptive trial, by
+    // session and trial index (replayed from the stored decisions; study/staircase_estimates.h).
+    std::map<std::int64_t, std::map<int, ThresholdEstimate>> staircase_estimates;
 };
 
-// Reads every trial and its session (and, for FramesCsv, every session's frame log). May be called
+// Reads every trial and its session (and, for FramesCsv, every session's frame log), and replays
+// each staircase session's decisions for its estimates; a staircase session whose stored
+// protocol text does not parse is an error naming it. May be called
 // while a study writes (WAL readers do not block the writer); the export is then a consistent
 // snapshot of some moment per query.
 Result<ExportData> collect_export(const StudyStore& store, ExportFormat format = ExportFormat::Csv);

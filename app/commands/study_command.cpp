@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <random>
 #include <utility>
 
@@ -18,6 +19,7 @@
 #include "study/protocol.h"
 #include "study/schedule.h"
 #include "study/session_runner.h"
+#include "study/staircase_estimates.h"
 #include "study/study_store.h"
 
 namespace monoplane::app {
@@ -76,6 +78,24 @@ study::RunOptions run_options(const StudyOptions& o, const hmd::HmdProfile& hmd,
     return options;
 }
 
+// After a staircase session (or its part run now): each scene's threshold as its staircase
+// estimates it from the stored decisions, so the experimenter sees at once whether a staircase
+// converged.
+void print_staircase_estimates(const study::StudyStore& store, std::int64_t session_id) {
+    const study::SessionInfo info = store.session(session_id).value_or_throw();
+    if (info.procedure != study::Procedure::Staircase) return;
+    const auto trials = store.trials(session_id).value_or_throw();
+    const auto estimates = study::final_staircase_estimates(info, trials).value_or_throw();
+    for (const auto& [scene, estimate] : estimates) {
+        std::fprintf(stderr, "staircase %s: threshold %.3g m", scene.c_str(), estimate.threshold_m);
+        if (estimate.lower_m && estimate.upper_m) {
+            std::fprintf(stderr, " (95 %% credible interval %.3g-%.3g m)", *estimate.lower_m,
+                         *estimate.upper_m);
+        }
+        std::fprintf(stderr, " after %d trials\n", estimate.trials);
+    }
+}
+
 void run_on_headset(
     const StudyOptions& o, const GlobalOptions& global, study::StudyStore& store,
     const study::Protocol& protocol, ImportedStudyScenes imported, study::Observer* observer,
@@ -85,10 +105,16 @@ void run_on_headset(
     options.headset = o.headset;
     options.hmd = o.hmd;
     options.trace = o.trace;
+    std::optional<std::int64_t> session_id;
+    const auto begin_and_note = [&](const std::string& runtime, const std::string& device) {
+        session_id = begin(runtime, device);
+        return *session_id;
+    };
     const study::SessionStatus status =
         run_headset_session(options, global, store, protocol, std::move(imported), observer,
-                            error_model(hmd, protocol), begin);
+                            error_model(hmd, protocol), begin_and_note);
     std::cerr << "session " << study::session_status_name(status) << "\n";
+    if (session_id) print_staircase_estimates(store, *session_id);
 }
 
 void finish(study::StudyStore& store, std::int64_t session_id, const study::Protocol& protocol,
@@ -100,6 +126,7 @@ void finish(study::StudyStore& store, std::int64_t session_id, const study::Prot
     for (const auto& t : trials) decided += t.decided ? 1 : 0;
     std::cerr << "session " << session_id << " " << study::session_status_name(status) << ": "
               << decided << " of " << trials.size() << " trials decided\n";
+    print_staircase_estimates(store, session_id);
 }
 
 void run_study(const StudyOptions& o, const GlobalOptions& global) {

@@ -22,13 +22,14 @@ const std::string kHeader =
     "participant,session,trial_index,block,scene,mono_plane,label1_mode,choice,chosen_mode,valid,"
     "switches,time_label1_s,time_label2_s,decision_time_s,practice,decided,label2_mode,"
     "participant_index,protocol,protocol_hash,observer,runtime,hmd,session_status,"
-    "anti_aliasing,ssao,detail,procedure\n";
+    "anti_aliasing,ssao,detail,procedure,staircase_threshold_m,staircase_lower_m,staircase_upper_"
+    "m\n";
 const std::string kPracticeRow =
     "P01,1,0,NA,landscape,5,stereo,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,hybrid,0,fink2019,"
-    "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant\n";
+    "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA\n";
 const std::string kDecidedRow =
     "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,hybrid,0,"
-    "fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant\n";
+    "fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA\n";
 
 SessionInfo known_session() {
     SessionInfo info;
@@ -110,7 +111,8 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"none\", "
         "\"hmd\": \"vive\", \"session_status\": \"running\", \"anti_aliasing\": \"taa\", "
         "\"ssao\": \"off\", \"detail\": \"low\", \"procedure\": \"constant\", "
-        "\"scene_files\": [], \"session_notes\": []},\n"
+        "\"staircase_threshold_m\": null, \"staircase_lower_m\": null, "
+        "\"staircase_upper_m\": null, \"scene_files\": [], \"session_notes\": []},\n"
         "  {\"participant\": \"P01\", \"session\": 1, \"trial_index\": 2, \"block\": 0, "
         "\"scene\": \"spheres\", \"mono_plane\": 1.6, \"label1_mode\": \"stereo\", \"choice\": 1, "
         "\"chosen_mode\": \"stereo\", \"valid\": true, \"switches\": 2, \"time_label1_s\": 1.5, "
@@ -120,9 +122,34 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"observer\": \"default\", "
         "\"runtime\": \"none\", \"hmd\": \"vive\", \"session_status\": \"running\", "
         "\"anti_aliasing\": \"taa\", \"ssao\": \"off\", \"detail\": \"low\", "
-        "\"procedure\": \"constant\", \"scene_files\": [], \"session_notes\": []}\n"
+        "\"procedure\": \"constant\", \"staircase_threshold_m\": null, "
+        "\"staircase_lower_m\": null, \"staircase_upper_m\": null, \"scene_files\": [], "
+        "\"session_notes\": []}\n"
         "]\n";
     EXPECT_EQ(out.str(), expected);
+}
+
+// A staircase session's trial carries its scene's estimate after the trial's decision; the
+// up-down rule has no interval (NA).
+TEST(StudyExport, StaircaseTrialsCarryTheirStaircasesEstimate) {
+    ExportData data = known_data();
+    data.sessions.at(1).procedure = Procedure::Staircase;
+    data.staircase_estimates[1][2] = ThresholdEstimate{6.25, 0.1, 3.0, 12.5, 7};
+    std::ostringstream out;
+    write_csv(data, out);
+    const std::string staircase_row =
+        "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,"
+        "hybrid,0,fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,"
+        "staircase,6.25,3,12.5\n";
+    const std::string practice_row =
+        kPracticeRow.substr(0, kPracticeRow.size() - 18) + "staircase,NA,NA,NA\n";
+    EXPECT_EQ(out.str(), kHeader + practice_row + staircase_row);
+
+    data.staircase_estimates[1][2] =
+        ThresholdEstimate{6.25, std::nullopt, std::nullopt, std::nullopt, 7};
+    std::ostringstream up_down;
+    write_csv(data, up_down);
+    EXPECT_NE(up_down.str().find(",staircase,6.25,NA,NA\n"), std::string::npos);
 }
 
 // An imported scene's trial lists the files the scene was read from (only its own scene's), and
@@ -234,7 +261,7 @@ TEST(StudyExport, FormatNames) {
     EXPECT_EQ(export_format_name(ExportFormat::Json), "json");
     EXPECT_EQ(*parse_export_format("frames-csv"), ExportFormat::FramesCsv);
     EXPECT_EQ(export_format_name(ExportFormat::FramesCsv), "frames-csv");
-    EXPECT_EQ(export_columns().size(), 28u);
+    EXPECT_EQ(export_columns().size(), 31u);
     EXPECT_EQ(export_columns().front(), "participant");
 }
 
@@ -293,7 +320,7 @@ TEST(StudyExport, ExportsFromTheStoreToAFile) {
                                std::istreambuf_iterator<char>());
         const std::string beams =
             "P01,1,1,NA,beams,3,hybrid,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,stereo,0,fink2019,"
-            "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant\n";
+            "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA\n";
         EXPECT_EQ(text, kHeader + kPracticeRow + beams + kDecidedRow);
         EXPECT_FALSE(fs::exists(dir / "trials.csv.tmp"));
 

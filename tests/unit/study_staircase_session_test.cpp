@@ -16,12 +16,14 @@
 #include <string>
 #include <vector>
 
+#include "study/export.h"
 #include "study/live_session.h"
 #include "study/observer.h"
 #include "study/observer_input.h"
 #include "study/protocol.h"
 #include "study/schedule.h"
 #include "study/session_runner.h"
+#include "study/staircase_estimates.h"
 #include "study/store_schema.h"
 #include "study/study_store.h"
 
@@ -243,6 +245,58 @@ TEST(StaircaseSession, ChoosesEachTrialsMonoPlaneFromTheAnswersBefore) {
         EXPECT_EQ(memory.adaptive_trials().at(r.trial.index).mono_plane, r.trial.mono_plane);
         EXPECT_EQ(memory.outcomes().at(r.trial.index).choice, r.outcome.choice);
     }
+}
+
+// The export's staircase columns and the end-of-session summary replay the stored decisions: after
+// each adaptive trial, its scene's estimate equals that of staircases fed the same decisions here;
+// practice trials have none; the final estimate per scene is the last trial's.
+TEST(StaircaseSession, ExportedEstimatesAreTheStaircasesAfterEachDecision) {
+    const Protocol protocol = parse_protocol(kQuest, "s.toml").value_or_throw();
+    TempDir dir;
+    auto store = StudyStore::open(dir.path / "s.sqlite").value_or_throw();
+    const std::int64_t id = begin(*store, protocol);
+    drive(*store, id, protocol, [](const std::string&) { return false; });
+    const SessionInfo info = store->session(id).value_or_throw();
+    const std::vector<TrialRecord> trials = store->trials(id).value_or_throw();
+    const auto estimates = replay_staircase_estimates(info, trials).value_or_throw();
+    const auto finals = final_staircase_estimates(info, trials).value_or_throw();
+    const ExportData exported = collect_export(*store).value_or_throw();
+    const auto& exported_estimates = exported.staircase_estimates.at(id);
+
+    Staircases replay(protocol);
+    std::map<std::string, ThresholdEstimate> last;
+    for (const TrialRecord& r : trials) {
+        if (!r.trial.adaptive) {
+            EXPECT_FALSE(estimates.contains(r.trial.index)) << r.trial.index;
+            continue;
+        }
+        replay.record(r.trial, r.outcome);
+        const ThresholdEstimate expected = replay.estimate(r.trial.scene);
+        last[r.trial.scene] = expected;
+        ASSERT_TRUE(estimates.contains(r.trial.index)) << r.trial.index;
+        EXPECT_EQ(estimates.at(r.trial.index).threshold_m, expected.threshold_m);
+        EXPECT_EQ(estimates.at(r.trial.index).lower_m, expected.lower_m);
+        EXPECT_EQ(estimates.at(r.trial.index).upper_m, expected.upper_m);
+        EXPECT_EQ(exported_estimates.at(r.trial.index).threshold_m, expected.threshold_m);
+    }
+    ASSERT_EQ(finals.size(), 2u);
+    for (const auto& [scene, estimate] : last) {
+        EXPECT_EQ(finals.at(scene).threshold_m, estimate.threshold_m) << scene;
+        EXPECT_EQ(finals.at(scene).trials, estimate.trials) << scene;
+        ASSERT_TRUE(estimate.lower_m && estimate.upper_m) << scene;
+        EXPECT_LT(*estimate.lower_m, estimate.threshold_m) << scene;
+        EXPECT_GT(*estimate.upper_m, estimate.threshold_m) << scene;
+    }
+
+    // A stored protocol text that is no longer a staircase's is named.
+    SessionInfo changed = info;
+    changed.protocol_text =
+        "name = \"x\"\nscenes = [\"beams\"]\nmono_planes = [3]\n"
+        "alternatives = [\"stereo\", \"hybrid\"]\n";
+    const auto refused = replay_staircase_estimates(changed, trials);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message.find("not a staircase protocol"), std::string::npos)
+        << refused.error().message;
 }
 
 TEST(StaircaseSession, StoreRefusesAStimulusThatDoesNotFitThePlan) {
