@@ -32,6 +32,27 @@ void add_ratios_to_stereo(BenchReport& report) {
     }
 }
 
+namespace {
+
+bool same_configuration(const BenchRun& fixed, const BenchRun& automatic) {
+    return !fixed.mono_plane_auto && fixed.mono_plane && fixed.scene == automatic.scene &&
+           fixed.mode == automatic.mode && fixed.variant == automatic.variant && fixed.time_ratio &&
+           fixed.visible_error_arcmin;
+}
+
+std::string fixed_name(const BenchRun& fixed) {
+    std::ostringstream name;
+    name << "m=";
+    if (fixed.mono_plane_is_far) {
+        name << "far";
+    } else {
+        name << *fixed.mono_plane;
+    }
+    return name.str();
+}
+
+}  // namespace
+
 void mark_auto_frontier(BenchReport& report) {
     for (BenchRun& automatic : report.runs) {
         if (!automatic.mono_plane_auto || !automatic.time_ratio ||
@@ -39,22 +60,16 @@ void mark_auto_frontier(BenchReport& report) {
             continue;
         }
         automatic.dominated_by.clear();
+        automatic.dominated_beyond_spread_by.clear();
         for (const BenchRun& fixed : report.runs) {
-            if (fixed.mono_plane_auto || !fixed.mono_plane || fixed.scene != automatic.scene ||
-                fixed.mode != automatic.mode || fixed.variant != automatic.variant ||
-                !fixed.time_ratio || !fixed.visible_error_arcmin) {
-                continue;
+            if (!same_configuration(fixed, automatic)) continue;
+            if (!(*fixed.visible_error_arcmin < *automatic.visible_error_arcmin)) continue;
+            if (*fixed.time_ratio < *automatic.time_ratio) {
+                automatic.dominated_by.push_back(fixed_name(fixed));
             }
-            if (*fixed.time_ratio < *automatic.time_ratio &&
-                *fixed.visible_error_arcmin < *automatic.visible_error_arcmin) {
-                std::ostringstream name;
-                name << "m=";
-                if (fixed.mono_plane_is_far) {
-                    name << "far";
-                } else {
-                    name << *fixed.mono_plane;
-                }
-                automatic.dominated_by.push_back(name.str());
+            if (fixed.time_ratio_p75 && automatic.time_ratio_p25 &&
+                *fixed.time_ratio_p75 < *automatic.time_ratio_p25) {
+                automatic.dominated_beyond_spread_by.push_back(fixed_name(fixed));
             }
         }
         automatic.on_fixed_m_frontier = automatic.dominated_by.empty();
@@ -100,6 +115,11 @@ std::string bench_json(const BenchReport& report) {
             j.begin_array("dominated_by");
             for (const std::string& other : run.dominated_by) j.value(std::string_view(), other);
             j.end_array();
+            j.begin_array("dominated_beyond_spread_by");
+            for (const std::string& other : run.dominated_beyond_spread_by) {
+                j.value(std::string_view(), other);
+            }
+            j.end_array();
         }
         j.value("frame_ms_median", run.frame_ms_median).value("frame_ms_p90", run.frame_ms_p90);
         j.value("frame_ms_p10", run.frame_ms_p10).value("cpu_ms_median", run.cpu_ms_median);
@@ -136,6 +156,8 @@ std::string bench_json(const BenchReport& report) {
         j.value("drift_patches", static_cast<std::uint64_t>(run.drift_patches));
         optional_value(j, "time_ratio_vs_stereo", run.time_ratio);
         optional_value(j, "stereo_frame_ms_median", run.stereo_frame_ms_median);
+        optional_value(j, "time_ratio_p25", run.time_ratio_p25);
+        optional_value(j, "time_ratio_p75", run.time_ratio_p75);
         optional_value(j, "primitive_ratio_vs_stereo", run.primitive_ratio);
         optional_value(j, "vertex_invocation_ratio_vs_stereo", run.vertex_invocation_ratio);
         if (run.max_channel_difference) {

@@ -70,12 +70,19 @@ struct BenchRun {
     // the scene's stereo run.
     std::optional<double> time_ratio;
     std::optional<double> stereo_frame_ms_median;  // of the interleaved stereo frames
+    // Quartiles of the per-pair time ratios: how much a ratio varies frame to frame.
+    std::optional<double> time_ratio_p25;
+    std::optional<double> time_ratio_p75;
     std::optional<double> primitive_ratio;
     std::optional<double> vertex_invocation_ratio;  // to the scene's stereo run
     // Auto runs: whether no fixed-m run of the same scene, mode and variant is both faster
-    // (time ratio) and more accurate (visible error), and which are.
+    // (median time ratio) and more accurate (visible error), and which are (issue 20's target).
     std::optional<bool> on_fixed_m_frontier;
     std::vector<std::string> dominated_by;  // "m=8", ...
+    // Of those, the ones faster beyond the frame-to-frame spread: the fixed run's upper quartile
+    // of per-pair ratios below auto's lower quartile. On a busy CPU rasterizer the medians of
+    // runs of a few frames differ by noise; this says which dominations survive it.
+    std::vector<std::string> dominated_beyond_spread_by;
     // The plan of the last measured frame (renderer/plan/frame_plan.h).
     modes::FramePlan plan;
 };
@@ -100,8 +107,8 @@ struct BenchReport {
 // Fills time_ratio, primitive_ratio and vertex_invocation_ratio from each scene's stereo run.
 void add_ratios_to_stereo(BenchReport& report);
 
-// Fills on_fixed_m_frontier and dominated_by of every auto run from the fixed-m runs of its
-// scene, mode and variant (after add_ratios_to_stereo).
+// Fills on_fixed_m_frontier, dominated_by and dominated_beyond_spread_by of every auto run from the
+// fixed-m runs of its scene, mode and variant (after add_ratios_to_stereo).
 void mark_auto_frontier(BenchReport& report);
 
 std::string bench_json(const BenchReport& report);

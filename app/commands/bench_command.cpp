@@ -225,6 +225,8 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
     run.pass_ms_p90 = summary.pass_ms_p90;
     if (!ratios.empty()) {
         run.time_ratio = percentile(ratios, 0.5);
+        run.time_ratio_p25 = percentile(ratios, 0.25);
+        run.time_ratio_p75 = percentile(ratios, 0.75);
         run.stereo_frame_ms_median = percentile(reference_ms, 0.5);
     }
     run.plan = renderer.last_plan();
@@ -636,6 +638,10 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
         if (run.on_fixed_m_frontier) {
             std::cerr << (*run.on_fixed_m_frontier ? "  on the fixed-m frontier"
                                                    : "  dominated by a fixed m");
+            if (!run.dominated_by.empty()) {
+                std::cerr << " (" << run.dominated_beyond_spread_by.size() << " of "
+                          << run.dominated_by.size() << " beyond the frame-to-frame spread)";
+            }
         }
         std::cerr << std::defaultfloat << "\n";
     }
