@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config
+  build-essential cmake ninja-build pkg-config lld
   libvulkan-dev glslc mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   libglm-dev libstb-dev libcli11-dev libtomlplusplus-dev libboost-math-dev
   libgtest-dev libgmock-dev libbenchmark-dev libsqlite3-dev libssl-dev

@@ -78,7 +78,7 @@ struct FrameInputs {
     std::optional<std::uint64_t> frame_index{};
     // With RendererOptions::auto_mono_plane: the nearest m the chooser may take this frame
     // (a study's hybrid-auto trial at distance m); unset: AutoMonoPlaneParams::min_mono_plane.
-    std::optional<double> nearest_auto_plane;
+    std::optional<double> nearest_auto_plane{};
 };
 
 // Where an eye looked from in the last frame, as rasterised (TAA's jitter included): what a
@@ -287,8 +287,8 @@ class ModeRenderer {
         double record_ms = 0.0;
         bool measuring_variant = false;
         bool depth_histogram = false;  // the plan counted the eyes' depth (auto m)
-        std::optional<double> mono_plane;
-        std::string mono_plane_reason;
+        std::optional<double> mono_plane{};
+        std::string mono_plane_reason{};
     };
     std::array<std::optional<PendingFrame>, vk_core::FrameRing::kFramesInFlight> pending_;
     std::vector<profile::FrameStats> completed_;

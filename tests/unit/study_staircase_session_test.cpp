@@ -226,7 +226,9 @@ TEST(StaircaseSession, ChoosesEachTrialsMonoPlaneFromTheAnswersBefore) {
     for (const auto& [scene, n] : per_scene) {
         EXPECT_TRUE(replay.finished(scene)) << scene;
         EXPECT_GE(n, 3) << scene;
-        if (n < per_scene_slots) EXPECT_LE(*replay.estimate(scene).sd_log10, 0.3) << scene;
+        if (n < per_scene_slots) {
+            EXPECT_LE(*replay.estimate(scene).sd_log10, 0.3) << scene;
+        }
     }
     EXPECT_LT(shown, static_cast<int>(slots));
     EXPECT_EQ(store->load_schedule(id)->trials.size(), 1 + slots);  // skipped slots stay plans

@@ -785,7 +785,9 @@ TEST_F(StudyStoreTest, RefusesSceneFilesThatCannotBeEvidenceWritingNothing) {
         info.scene_files = std::move(records);
         const Result<std::int64_t> id = store->begin_session(info, make_imported_schedule(0));
         EXPECT_FALSE(id.ok()) << why;
-        if (!id.ok()) EXPECT_TRUE(contains(id.error().message, why)) << id.error().message;
+        if (!id.ok()) {
+            EXPECT_TRUE(contains(id.error().message, why)) << id.error().message;
+        }
     };
     refused({}, "scene 'models/room.gltf' names a glTF file but no record of the file itself");
     refused({room_records()[1]}, "no record of the file itself (file 0)");

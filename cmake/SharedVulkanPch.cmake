@@ -1,0 +1,72 @@
+# Vulkan-Hpp's precompiled header (renderer/vk/vulkan.h) is built once, by monoplane_vk, and
+# reused by every target that compiles against monoplane_vk. A PUBLIC precompiled header would
+# make each of them build its own copy: about 25 s of CPU per target at -O2, some 30 targets,
+# a third of a clean build's compile time on the 2-core CI machine.
+#
+# monoplane_share_vulkan_pch() is called once every target exists (the end of the top-level
+# CMakeLists.txt). Position-independent targets (those that end up in the simulated runtime's
+# shared object) are compiled with other flags than monoplane_vk and keep no precompiled header.
+
+# Every build-system target defined in `dir` and below.
+function(_monoplane_targets_below dir out)
+  get_property(targets DIRECTORY ${dir} PROPERTY BUILDSYSTEM_TARGETS)
+  get_property(children DIRECTORY ${dir} PROPERTY SUBDIRECTORIES)
+  foreach(child IN LISTS children)
+    _monoplane_targets_below(${child} below)
+    list(APPEND targets ${below})
+  endforeach()
+  set(${out} ${targets} PARENT_SCOPE)
+endfunction()
+
+# TRUE in `out` when `target` links monoplane_vk directly or through project libraries.
+function(_monoplane_links_vk target out)
+  set(pending ${target})
+  set(seen "")
+  while(pending)
+    list(POP_FRONT pending current)
+    if(current IN_LIST seen)
+      continue()
+    endif()
+    list(APPEND seen ${current})
+    if(current STREQUAL "monoplane_vk" AND NOT target STREQUAL "monoplane_vk")
+      set(${out} TRUE PARENT_SCOPE)
+      return()
+    endif()
+    if(NOT TARGET ${current})
+      continue()
+    endif()
+    get_target_property(imported ${current} IMPORTED)
+    if(imported)
+      continue()
+    endif()
+    get_target_property(direct ${current} LINK_LIBRARIES)
+    get_target_property(interface ${current} INTERFACE_LINK_LIBRARIES)
+    foreach(dependency IN LISTS direct interface)
+      if(dependency AND NOT dependency MATCHES "^\\$<" AND TARGET ${dependency})
+        list(APPEND pending ${dependency})
+      endif()
+    endforeach()
+  endwhile()
+  set(${out} FALSE PARENT_SCOPE)
+endfunction()
+
+function(monoplane_share_vulkan_pch)
+  if(NOT TARGET monoplane_vk)
+    return()
+  endif()
+  _monoplane_targets_below(${PROJECT_SOURCE_DIR} targets)
+  foreach(target IN LISTS targets)
+    get_target_property(type ${target} TYPE)
+    if(NOT type MATCHES "^(EXECUTABLE|STATIC_LIBRARY|OBJECT_LIBRARY)$")
+      continue()
+    endif()
+    get_target_property(pic ${target} POSITION_INDEPENDENT_CODE)
+    if(pic)
+      continue()
+    endif()
+    _monoplane_links_vk(${target} links)
+    if(links)
+      set_target_properties(${target} PROPERTIES PRECOMPILE_HEADERS_REUSE_FROM monoplane_vk)
+    endif()
+  endforeach()
+endfunction()
