@@ -74,6 +74,7 @@ void AutoMonoPlane::complete(std::uint32_t slot, bool histogram_recorded,
                              const profile::FrameStats& stats) {
     std::optional<DepthHistogram> histogram;
     if (histogram_recorded && histogram_) histogram = histogram_->result(slot);
+    if (histogram) last_histogram_ = histogram;
     chooser_.record(histogram, cost_of(stats));
 }
 

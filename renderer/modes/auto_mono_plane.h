@@ -40,6 +40,9 @@ class AutoMonoPlane {
     void record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const;
     // A completed frame: its histogram (if it recorded one) and pass times go to the chooser.
     void complete(std::uint32_t slot, bool histogram_recorded, const profile::FrameStats& stats);
+    // The histogram of the last completed frame that recorded one (tests: its counts against the
+    // read-back depth).
+    const std::optional<DepthHistogram>& last_histogram() const { return last_histogram_; }
 
   private:
     const scenes::Scene& scene_;
@@ -49,6 +52,7 @@ class AutoMonoPlane {
     std::optional<std::array<vk::ImageView, 2>> eye_depths_;
     vk::Extent2D eye_extent_{0, 0};
     MonoPlaneDecision decision_;
+    std::optional<DepthHistogram> last_histogram_;
 };
 
 }  // namespace monoplane::modes

@@ -170,6 +170,12 @@ class ModeRenderer {
     const MonoPlaneDecision* last_mono_plane_decision() const {
         return auto_mono_plane_ ? &auto_mono_plane_->last() : nullptr;
     }
+    // With RendererOptions::auto_mono_plane: the depth histogram of the last completed frame
+    // that counted one (null before), which with read_back_depth is eye_linear_depth's frame.
+    const DepthHistogram* last_depth_histogram() const {
+        if (!auto_mono_plane_ || !auto_mono_plane_->last_histogram()) return nullptr;
+        return &*auto_mono_plane_->last_histogram();
+    }
 
   private:
     struct ForwardImages;

@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 #include "hmd/profile.h"
@@ -111,6 +113,60 @@ TEST_F(AutoMonoPlane, ChoosesAPlaneInAnEmptyDepthBand) {
     EXPECT_EQ(d.reason, "gap");
     ASSERT_TRUE(renderer.last_rig());
     EXPECT_EQ(renderer.last_rig()->inputs.mono_plane, d.mono_plane);
+}
+
+// The GPU histogram (each invocation counting a block of pixels, runs of one bin added at once)
+// counts every pixel of both eyes once: the sky exactly, the geometry pixels by bin as the
+// read-back depth gives them binned here (a pixel within float rounding of a bin edge may land
+// in the neighbour), and the farthest depth exactly. At an eye size that is not a multiple of the
+// blocks, so partial blocks and workgroups are covered.
+TEST_F(AutoMonoPlane, TheHistogramCountsEveryEyePixelOnce) {
+    const scenes::Scene scene = band_scene();
+    modes::AutoMonoPlaneParams params;
+    params.error_budget_arcmin = 25.0;
+    modes::ModeRenderer renderer(ctx(), scene, Mode::kHybrid, extent_, options(params));
+    rig::Pose head = scene.viewpoints[0].head;
+    for (int frame = 0; frame < 4; ++frame) {
+        // Turning and looking down a little more each frame: the sky's share changes.
+        head.orientation = rig::orientation_from_yaw_pitch(0.05 * frame, -0.08 * frame);
+        renderer.render_frame(testing::profile_inputs(vive_, head, 8.0));
+        const modes::DepthHistogram* gpu = renderer.last_depth_histogram();
+        ASSERT_NE(gpu, nullptr) << "frame " << frame;
+
+        std::array<std::int64_t, modes::DepthHistogram::kBins> expected{};
+        std::int64_t sky = 0;
+        double farthest = 0.0;
+        std::int64_t near_an_edge = 0;
+        const double log_ratio = std::log(gpu->far / gpu->near);
+        for (Eye eye : {Eye::kLeft, Eye::kRight}) {
+            for (const float d : renderer.eye_linear_depth(eye)) {
+                if (d >= 0.5e30f) {
+                    ++sky;
+                    continue;
+                }
+                const double position = std::log(std::max(double(d), 1e-30) / gpu->near) /
+                                        log_ratio * modes::DepthHistogram::kBins;
+                const int bin = std::clamp(static_cast<int>(std::floor(position)), 0,
+                                           modes::DepthHistogram::kBins - 1);
+                ++expected[static_cast<std::size_t>(bin)];
+                if (std::abs(position - std::round(position)) < 1e-3) ++near_an_edge;
+                farthest = std::max(farthest, double(d));
+            }
+        }
+        EXPECT_EQ(sky + std::accumulate(expected.begin(), expected.end(), std::int64_t{0}),
+                  2 * std::int64_t{extent_.width} * extent_.height);
+        EXPECT_EQ(gpu->sky, sky) << "frame " << frame;
+        EXPECT_GT(sky, 0) << "the view shows sky";
+        EXPECT_EQ(static_cast<std::int64_t>(gpu->geometry_pixels()),
+                  2 * std::int64_t{extent_.width} * extent_.height - sky);
+        std::int64_t misplaced = 0;
+        for (int b = 0; b < modes::DepthHistogram::kBins; ++b) {
+            misplaced += std::abs(std::int64_t{gpu->counts[static_cast<std::size_t>(b)]} -
+                                  expected[static_cast<std::size_t>(b)]);
+        }
+        EXPECT_LE(misplaced, 2 * near_an_edge) << "frame " << frame;
+        EXPECT_FLOAT_EQ(static_cast<float>(gpu->farthest), static_cast<float>(farthest));
+    }
 }
 
 TEST_F(AutoMonoPlane, EveryVisiblePixelStaysWithinTheBudgetAlongAPosePath) {

@@ -14,7 +14,9 @@ const std::uint32_t kDepthHistogram[] = {
 #include "depth_histogram.comp.spv.inc"
 };
 
-constexpr std::uint32_t kGroup = 16;  // the shader's local size in x and y
+// The pixels one workgroup counts along x and y: the shader's local size (16) times the block each
+// invocation counts (kBlock, 4).
+constexpr std::uint32_t kGroup = 16 * 4;
 constexpr vk::DeviceSize kBytes = MONOPLANE_DEPTH_HISTOGRAM_WORDS * sizeof(std::uint32_t);
 
 struct Push {
