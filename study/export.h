@@ -67,9 +67,9 @@ Result<bool> export_trials(const StudyStore& store, ExportFormat format,
 
 // Building blocks, exposed for tests and other writers.
 // RFC 4180: a field with a comma, double quote, CR or LF is quoted, inner quotes doubled.
-std::string csv_field(std::string_view text);
+std::string csv_field(std::string_view value);
 // A JSON string literal with quotes, escaping '"', '\\' and control characters.
-std::string json_string(std::string_view text);
+std::string json_string(std::string_view value);
 // Integer nanoseconds as exact decimal seconds, '.' as the point regardless of locale:
 // 1500000000 -> "1.5", 0 -> "0.0", 1 -> "0.000000001".
 std::string seconds_text(std::int64_t ns);
