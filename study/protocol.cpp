@@ -98,32 +98,6 @@ std::optional<std::string> read_string(const toml::node& node, std::string_view 
     return text->get();
 }
 
-// Integers are accepted where a real number is expected: `far = 1000` means 1000.0.
-std::optional<double> read_number(const toml::node& node, std::string_view key,
-                                  std::string_view expected, TomlProblems& problems) {
-    if (const auto* integer = node.as_integer()) return static_cast<double>(integer->get());
-    if (const auto* real = node.as_floating_point()) return real->get();
-    report_wrong_type(node, key, expected, problems);
-    return std::nullopt;
-}
-
-std::optional<std::int64_t> read_integer_in(const toml::node& node, std::string_view key,
-                                            std::int64_t low, std::int64_t high,
-                                            TomlProblems& problems) {
-    const std::string range = std::to_string(low) + ".." + std::to_string(high);
-    const auto* integer = node.as_integer();
-    if (integer == nullptr) {
-        report_wrong_type(node, key, "an integer in " + range, problems);
-        return std::nullopt;
-    }
-    if (integer->get() < low || integer->get() > high) {
-        problems.add(node.source(), toml_key_prefix(key) + std::to_string(integer->get()) +
-                                        " is outside the allowed range " + range);
-        return std::nullopt;
-    }
-    return integer->get();
-}
-
 // An array whose elements all have a type, or nullopt after reporting what is wrong. An empty
 // array is a problem: every list in a protocol must name at least one thing.
 const toml::array* read_nonempty_array(const toml::node& node, std::string_view key,

@@ -17,11 +17,9 @@ std::optional<double> read_positive(const toml::table& table, std::string_view k
     const toml::node* node = table.get(key);
     if (node == nullptr) return std::nullopt;
     const std::string qualified = "auto." + std::string(key);
-    const std::optional<double> value = node->value<double>();
-    if (!value || node->is_boolean() || node->is_string()) {
-        report_wrong_type(*node, qualified, "a number of " + std::string(unit), problems);
-        return std::nullopt;
-    }
+    const std::optional<double> value =
+        read_number(*node, qualified, "a number of " + std::string(unit), problems);
+    if (!value) return std::nullopt;
     if (!(std::isfinite(*value) && *value > 0.0)) {
         problems.add(node->source(), toml_key_prefix(qualified) + "is " + format_number(*value) +
                                          "; it must be a positive number of " + std::string(unit));

@@ -58,13 +58,9 @@ std::optional<std::string_view> read_name(const toml::node& node, const std::str
 template <class Valid>
 std::optional<double> read_real(const toml::node& node, const std::string& key,
                                 std::string_view expected, Valid valid, TomlProblems& problems) {
-    std::optional<double> value;
-    if (const auto* integer = node.as_integer()) value = static_cast<double>(integer->get());
-    if (const auto* real = node.as_floating_point()) value = real->get();
-    if (!value) {
-        report_wrong_type(node, key, "a number " + std::string(expected), problems);
-        return std::nullopt;
-    }
+    const std::optional<double> value =
+        read_number(node, key, "a number " + std::string(expected), problems);
+    if (!value) return std::nullopt;
     if (!std::isfinite(*value) || !valid(*value)) {
         problems.add(node.source(), toml_key_prefix(key) + format_number(*value) + " is not " +
                                         std::string(expected));
@@ -75,18 +71,9 @@ std::optional<double> read_real(const toml::node& node, const std::string& key,
 
 std::optional<int> read_count(const toml::node& node, const std::string& key, std::int64_t low,
                               std::int64_t high, TomlProblems& problems) {
-    const std::string range = std::to_string(low) + ".." + std::to_string(high);
-    const auto* integer = node.as_integer();
-    if (integer == nullptr) {
-        report_wrong_type(node, key, "an integer in " + range, problems);
-        return std::nullopt;
-    }
-    if (integer->get() < low || integer->get() > high) {
-        problems.add(node.source(), toml_key_prefix(key) + std::to_string(integer->get()) +
-                                        " is outside the allowed range " + range);
-        return std::nullopt;
-    }
-    return static_cast<int>(integer->get());
+    const std::optional<std::int64_t> count = read_integer_in(node, key, low, high, problems);
+    if (!count) return std::nullopt;
+    return static_cast<int>(*count);
 }
 
 // A non-empty array of numbers, each satisfying `valid`, none repeated; nothing when any is not.

@@ -21,10 +21,13 @@ std::vector<const TrialRecord*> decided_adaptive(const SessionInfo& session,
 
 }  // namespace
 
-Result<std::map<int, ThresholdEstimate>> replay_staircase_estimates(
-    const SessionInfo& session, const std::vector<TrialRecord>& trials) {
-    std::map<int, ThresholdEstimate> estimates;
-    if (session.procedure != Procedure::Staircase) return estimates;
+// The session's staircases rebuilt from its stored protocol text, each decided adaptive trial
+// recorded in trial order, `after(trial, staircases)` called after each and `at_end(staircases)`
+// once after the last.
+template <class After, class AtEnd>
+Result<bool> replay(const SessionInfo& session, const std::vector<TrialRecord>& trials, After after,
+                    AtEnd at_end) {
+    if (session.procedure != Procedure::Staircase) return true;
     const std::string name = "session " + std::to_string(session.id) + "'s protocol";
     Result<Protocol> protocol = parse_protocol(session.protocol_text, name);
     if (!protocol) return protocol.error();
@@ -34,19 +37,37 @@ Result<std::map<int, ThresholdEstimate>> replay_staircase_estimates(
     Staircases staircases(*protocol);
     for (const TrialRecord* r : decided_adaptive(session, trials)) {
         staircases.record(r->trial, r->outcome);
-        estimates[r->trial.index] = staircases.estimate(r->trial.scene);
+        after(r->trial, staircases);
     }
+    at_end(staircases);
+    return true;
+}
+
+Result<std::map<int, ThresholdEstimate>> replay_staircase_estimates(
+    const SessionInfo& session, const std::vector<TrialRecord>& trials) {
+    std::map<int, ThresholdEstimate> estimates;
+    const Result<bool> replayed = replay(
+        session, trials,
+        [&](const ScheduledTrial& trial, const Staircases& staircases) {
+            estimates[trial.index] = staircases.estimate(trial.scene);
+        },
+        [](const Staircases&) {});
+    if (!replayed) return replayed.error();
     return estimates;
 }
 
 Result<std::map<std::string, ThresholdEstimate>> final_staircase_estimates(
     const SessionInfo& session, const std::vector<TrialRecord>& trials) {
-    Result<std::map<int, ThresholdEstimate>> after = replay_staircase_estimates(session, trials);
-    if (!after) return after.error();
+    // Each scene's estimate once, after its last decision (QUEST+'s estimate marginalises the
+    // whole posterior: not worth computing after every trial here).
     std::map<std::string, ThresholdEstimate> last;
-    for (const TrialRecord* r : decided_adaptive(session, trials)) {
-        last[r->trial.scene] = after->at(r->trial.index);
-    }
+    const Result<bool> replayed = replay(
+        session, trials,
+        [&](const ScheduledTrial& trial, const Staircases&) { last[trial.scene] = {}; },
+        [&](const Staircases& staircases) {
+            for (auto& [scene, estimate] : last) estimate = staircases.estimate(scene);
+        });
+    if (!replayed) return replayed.error();
     return last;
 }
 

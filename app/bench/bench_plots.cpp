@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <utility>
 
 #include "charts/bar_chart.h"
 #include "charts/line_chart.h"
@@ -197,20 +198,31 @@ std::string primitives_chart(const BenchReport& report, const std::string& scene
 
 // What each configuration costs against what it gets wrong: frame time relative to stereo over
 // the analytic maximum error, each point labelled with its m.
-std::string time_vs_error_chart(const BenchReport& report, const std::string& scene) {
+// The frame of both time-against-error charts: time relative to stereo (from zero, stereo's 1
+// marked) over an error from zero.
+charts::LineChart time_against_error_frame(const BenchReport& report, std::string title,
+                                           std::string note, std::string x_label,
+                                           double legend_width) {
     charts::LineChart chart;
-    chart.text.title = scene + ": frame time against error";
+    chart.text.title = std::move(title);
     chart.text.subtitle = subtitle(report);
-    chart.text.note =
-        "x: analytic maximum disparity error (px, rig); labels: m and the SSIM against stereo. "
-        "Below 1: faster than stereo.";
-    chart.x_axis.label = "maximum error (px)";
+    chart.text.note = std::move(note);
+    chart.x_axis.label = std::move(x_label);
     chart.x_axis.include_zero = true;
     chart.y_axis.label = "frame time / stereo's";
     chart.y_axis.include_zero = true;
     chart.layout.width = 1000.0;
-    chart.layout.legend_width = 260.0;
+    chart.layout.legend_width = legend_width;
     chart.reference_lines.push_back({1.0, "stereo"});
+    return chart;
+}
+
+std::string time_vs_error_chart(const BenchReport& report, const std::string& scene) {
+    charts::LineChart chart = time_against_error_frame(
+        report, scene + ": frame time against error",
+        "x: analytic maximum disparity error (px, rig); labels: m and the SSIM against stereo. "
+        "Below 1: faster than stereo.",
+        "maximum error (px)", 260.0);
     for (const std::string& config : hybrid_configs(report, scene)) {
         charts::LineSeries series;
         series.name = config;
@@ -237,19 +249,11 @@ std::string time_vs_error_chart(const BenchReport& report, const std::string& sc
 // An auto point on or below the fixed-m line is on the frontier: no fixed m is both faster and
 // more accurate.
 std::string time_vs_visible_error_chart(const BenchReport& report, const std::string& scene) {
-    charts::LineChart chart;
-    chart.text.title = scene + ": frame time against the visible error, fixed m and auto";
-    chart.text.subtitle = subtitle(report);
-    chart.text.note =
+    charts::LineChart chart = time_against_error_frame(
+        report, scene + ": frame time against the visible error, fixed m and auto",
         "x: largest error of a visible pixel beyond m (arcmin, rig at the farthest depth stereo "
-        "shows); auto: its largest over the frames. Labels: m. Below 1: faster than stereo.";
-    chart.x_axis.label = "visible error (arcmin)";
-    chart.x_axis.include_zero = true;
-    chart.y_axis.label = "frame time / stereo's";
-    chart.y_axis.include_zero = true;
-    chart.layout.width = 1000.0;
-    chart.layout.legend_width = 280.0;
-    chart.reference_lines.push_back({1.0, "stereo"});
+        "shows); auto: its largest over the frames. Labels: m. Below 1: faster than stereo.",
+        "visible error (arcmin)", 280.0);
     for (const std::string& config : hybrid_configs(report, scene)) {
         charts::LineSeries series;
         series.name = config;

@@ -80,11 +80,12 @@ study::RunOptions run_options(const StudyOptions& o, const hmd::HmdProfile& hmd,
 
 // After a staircase session (or its part run now): each scene's threshold as its staircase
 // estimates it from the stored decisions, so the experimenter sees at once whether a staircase
-// converged.
-void print_staircase_estimates(const study::StudyStore& store, std::int64_t session_id) {
+// converged. `trials`: the session's, as the store holds them now.
+void print_staircase_estimates(const study::StudyStore& store, std::int64_t session_id,
+                               const study::Protocol& protocol,
+                               const std::vector<study::TrialRecord>& trials) {
+    if (protocol.procedure != study::Procedure::Staircase) return;
     const study::SessionInfo info = store.session(session_id).value_or_throw();
-    if (info.procedure != study::Procedure::Staircase) return;
-    const auto trials = store.trials(session_id).value_or_throw();
     const auto estimates = study::final_staircase_estimates(info, trials).value_or_throw();
     for (const auto& [scene, estimate] : estimates) {
         std::fprintf(stderr, "staircase %s: threshold %.3g m", scene.c_str(), estimate.threshold_m);
@@ -114,7 +115,10 @@ void run_on_headset(
         run_headset_session(options, global, store, protocol, std::move(imported), observer,
                             error_model(hmd, protocol), begin_and_note);
     std::cerr << "session " << study::session_status_name(status) << "\n";
-    if (session_id) print_staircase_estimates(store, *session_id);
+    if (session_id && protocol.procedure == study::Procedure::Staircase) {
+        print_staircase_estimates(store, *session_id, protocol,
+                                  store.trials(*session_id).value_or_throw());
+    }
 }
 
 void finish(study::StudyStore& store, std::int64_t session_id, const study::Protocol& protocol,
@@ -126,7 +130,7 @@ void finish(study::StudyStore& store, std::int64_t session_id, const study::Prot
     for (const auto& t : trials) decided += t.decided ? 1 : 0;
     std::cerr << "session " << session_id << " " << study::session_status_name(status) << ": "
               << decided << " of " << trials.size() << " trials decided\n";
-    print_staircase_estimates(store, session_id);
+    print_staircase_estimates(store, session_id, protocol, trials);
 }
 
 void run_study(const StudyOptions& o, const GlobalOptions& global) {

@@ -114,11 +114,18 @@ std::vector<RecoverySummary> summarise_recovery(const std::vector<RecoveryEstima
 
 std::optional<int> trials_to_precision(const std::vector<RecoverySummary>& summaries,
                                        std::string_view estimator, double precision_log10) {
-    for (const RecoverySummary& s : summaries) {
-        if (s.estimator != estimator || s.estimable == 0) continue;
-        if (s.estimable >= 0.95 * s.estimates && s.rmse_log10 <= precision_log10) return s.trials;
+    // From the most trials backwards (summaries come in trial order per estimator): the first n
+    // of the last unbroken run of checkpoints that meet the precision, so an early lucky
+    // checkpoint (the prior's median near the true threshold) does not count.
+    std::optional<int> from;
+    for (auto s = summaries.rbegin(); s != summaries.rend(); ++s) {
+        if (s->estimator != estimator) continue;
+        const bool meets = s->estimable > 0 && s->estimable >= 0.95 * s->estimates &&
+                           s->rmse_log10 <= precision_log10;
+        if (!meets) break;
+        from = s->trials;
     }
-    return std::nullopt;
+    return from;
 }
 
 std::string recovery_csv(const std::vector<RecoveryEstimate>& estimates, double true_threshold_m) {

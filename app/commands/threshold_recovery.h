@@ -66,8 +66,9 @@ struct RecoverySummary {
 std::vector<RecoverySummary> summarise_recovery(const std::vector<RecoveryEstimate>& estimates,
                                                 double true_threshold_m);
 
-// The fewest trials per scene at which `estimator` has an RMSE of log10 at most precision_log10
-// with at least 95 % of its fits estimable; nullopt if none.
+// The fewest trials per scene from which on `estimator` has an RMSE of log10 at most
+// precision_log10 with at least 95 % of its fits estimable at every later checkpoint too;
+// nullopt if its last checkpoint does not. `summaries` as summarise_recovery orders them.
 std::optional<int> trials_to_precision(const std::vector<RecoverySummary>& summaries,
                                        std::string_view estimator, double precision_log10);
 

@@ -52,4 +52,30 @@ void report_wrong_type(const toml::node& node, std::string_view qualified_key,
                                     std::string(toml_type_phrase(node.type())));
 }
 
+std::optional<double> read_number(const toml::node& node, std::string_view qualified_key,
+                                  std::string_view expected, TomlProblems& problems) {
+    if (const auto* integer = node.as_integer()) return static_cast<double>(integer->get());
+    if (const auto* real = node.as_floating_point()) return real->get();
+    report_wrong_type(node, qualified_key, expected, problems);
+    return std::nullopt;
+}
+
+std::optional<std::int64_t> read_integer_in(const toml::node& node, std::string_view qualified_key,
+                                            std::int64_t low, std::int64_t high,
+                                            TomlProblems& problems) {
+    const std::string range = std::to_string(low) + ".." + std::to_string(high);
+    const auto* integer = node.as_integer();
+    if (integer == nullptr) {
+        report_wrong_type(node, qualified_key, "an integer in " + range, problems);
+        return std::nullopt;
+    }
+    if (integer->get() < low || integer->get() > high) {
+        problems.add(node.source(), toml_key_prefix(qualified_key) +
+                                        std::to_string(integer->get()) +
+                                        " is outside the allowed range " + range);
+        return std::nullopt;
+    }
+    return integer->get();
+}
+
 }  // namespace monoplane

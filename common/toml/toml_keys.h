@@ -2,6 +2,8 @@
 // ..."), shared by HMD profiles and study protocols so both report problems the same way.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -39,5 +41,16 @@ const toml::node* find_required(const TomlScope& scope, std::string_view key,
 // "key 'K': must be <expected>, but is <the node's type>".
 void report_wrong_type(const toml::node& node, std::string_view qualified_key,
                        std::string_view expected, TomlProblems& problems);
+
+// A real number, integers accepted (`far = 1000` means 1000.0); else reports the wrong type
+// ("expected" describes the value) and returns nothing.
+std::optional<double> read_number(const toml::node& node, std::string_view qualified_key,
+                                  std::string_view expected, TomlProblems& problems);
+
+// An integer in [low, high]; else reports the wrong type or "N is outside the allowed range
+// low..high" and returns nothing.
+std::optional<std::int64_t> read_integer_in(const toml::node& node, std::string_view qualified_key,
+                                            std::int64_t low, std::int64_t high,
+                                            TomlProblems& problems);
 
 }  // namespace monoplane

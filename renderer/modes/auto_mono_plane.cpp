@@ -40,14 +40,8 @@ AutoMonoPlane::AutoMonoPlane(const vk_core::Context& ctx, const scenes::Scene& s
 const MonoPlaneDecision& AutoMonoPlane::choose(const StereoViewInputs& views,
                                                vk::Extent2D eye_extent,
                                                std::optional<double> nearest) {
-    rig::RigInputs eyes;
-    eyes.eyes = {views.left, views.right};
-    eyes.eye_width = static_cast<int>(eye_extent.width);
-    eyes.eye_height = static_cast<int>(eye_extent.height);
-    eyes.ipd = views.ipd;
-    eyes.near = views.near;
-    eyes.far = views.far;
-    eyes.cant = views.cant;
+    const rig::RigInputs eyes = rig_inputs_for(views, static_cast<int>(eye_extent.width),
+                                               static_cast<int>(eye_extent.height));
     const double depth = farthest_content_depth(scene_, views);
     decision_ = chooser_.next(eyes, depth, nearest).value_or_throw();
     if (!histogram_) {
@@ -72,10 +66,12 @@ void AutoMonoPlane::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slo
 
 void AutoMonoPlane::complete(std::uint32_t slot, bool histogram_recorded,
                              const profile::FrameStats& stats) {
-    std::optional<DepthHistogram> histogram;
-    if (histogram_recorded && histogram_) histogram = histogram_->result(slot);
-    if (histogram) last_histogram_ = histogram;
-    chooser_.record(histogram, cost_of(stats));
+    if (histogram_recorded && histogram_) {
+        last_histogram_ = histogram_->result(slot);
+        chooser_.record(last_histogram_, cost_of(stats));
+    } else {
+        chooser_.record(std::nullopt, cost_of(stats));
+    }
 }
 
 }  // namespace monoplane::modes

@@ -352,17 +352,11 @@ void ModeRenderer::build_frame_rig(const FrameInputs& inputs, FrameState& frame)
     rig_.reset();
     if (mode_ == Mode::kStereo) return;
     const StereoViewInputs& views = inputs.views;
-    rig::RigInputs rig_inputs;
-    rig_inputs.eyes = {views.left, views.right};
-    rig_inputs.eye_width = static_cast<int>(eye_extent_.width);
-    rig_inputs.eye_height = static_cast<int>(eye_extent_.height);
-    rig_inputs.ipd = views.ipd;
+    rig::RigInputs rig_inputs = rig_inputs_for(views, static_cast<int>(eye_extent_.width),
+                                               static_cast<int>(eye_extent_.height));
     rig_inputs.mono_plane = inputs.mono_plane;
-    rig_inputs.near = views.near;
-    rig_inputs.far = views.far;
     rig_inputs.overlap_k = inputs.overlap_k;
     rig_inputs.grazing_angle = inputs.grazing_angle;
-    rig_inputs.cant = views.cant;
     if (nearest_mono_plane_ > 0.0 && nearest_mono_plane_ <= inputs.mono_plane) {
         rig_inputs.nearest_mono_plane = nearest_mono_plane_;
     }

@@ -23,4 +23,16 @@ glm::dmat4 eye_view_proj(const StereoViewInputs& inputs, Eye eye) {
     return rig::projection_reversed_z(tangents, inputs.near, inputs.far) * eye_view(inputs, eye);
 }
 
+rig::RigInputs rig_inputs_for(const StereoViewInputs& views, int eye_width, int eye_height) {
+    rig::RigInputs in;
+    in.eyes = {views.left, views.right};
+    in.eye_width = eye_width;
+    in.eye_height = eye_height;
+    in.ipd = views.ipd;
+    in.near = views.near;
+    in.far = views.far;
+    in.cant = views.cant;
+    return in;
+}
+
 }  // namespace monoplane::modes

@@ -9,6 +9,7 @@
 #include <glm/ext/matrix_double4x4.hpp>
 
 #include "renderer/rig/pose.h"
+#include "renderer/rig/rig.h"
 #include "renderer/rig/tangents.h"
 
 namespace monoplane::modes {
@@ -36,6 +37,11 @@ glm::dvec3 eye_offset(Eye eye, double ipd);
 glm::dmat4 eye_view(const StereoViewInputs& inputs, Eye eye);
 // World -> clip (reversed Z, near..far) of one eye.
 glm::dmat4 eye_view_proj(const StereoViewInputs& inputs, Eye eye);
+
+// The rig's inputs for these eyes at an eye size in pixels (a mode's render targets): the
+// frusta, ipd, clip range and cants. The mono plane, overlap and grazing angle keep RigInputs'
+// defaults; the caller sets them for its frame.
+rig::RigInputs rig_inputs_for(const StereoViewInputs& views, int eye_width, int eye_height);
 
 // An 8-bit RGBA image read back from the GPU, rows top to bottom, sRGB-encoded.
 struct RgbaImage {
