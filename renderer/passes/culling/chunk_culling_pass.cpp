@@ -72,7 +72,7 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
                vk::BufferUsageFlagBits::eStorageBuffer, vk_core::MemoryUse::kDeviceLocal),
       order_(ctx, vk::DeviceSize{std::max(chunk_count_, 1u)} * sizeof(std::uint32_t),
              vk::BufferUsageFlagBits::eStorageBuffer, vk_core::MemoryUse::kDeviceLocal),
-      constants_(ctx, sizeof(CullConstants), vk::BufferUsageFlagBits::eUniformBuffer,
+      constants_(ctx, sizeof(CullConstants), vk::BufferUsageFlagBits::eStorageBuffer,
                  vk_core::MemoryUse::kDeviceLocal),
       commands_readback_(ctx, commands_.size(), vk::BufferUsageFlagBits::eTransferDst,
                          vk_core::MemoryUse::kHostVisible),
@@ -87,15 +87,14 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
         vk::DescriptorSetLayoutBinding(0, Type::eStorageBuffer, 1, compute),
         vk::DescriptorSetLayoutBinding(1, Type::eStorageBuffer, 1, compute),
         vk::DescriptorSetLayoutBinding(2, Type::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(3, Type::eUniformBuffer, 1, compute),
+        vk::DescriptorSetLayoutBinding(3, Type::eStorageBuffer, 1, compute),
         vk::DescriptorSetLayoutBinding(4, Type::eCombinedImageSampler, 1, compute),
         vk::DescriptorSetLayoutBinding(5, Type::eStorageBuffer, 1, compute),
         vk::DescriptorSetLayoutBinding(6, Type::eStorageBuffer, 1, compute),
     };
     set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
                                                 vk::DescriptorSetLayoutCreateInfo({}, bindings));
-    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 5),
-                                   vk::DescriptorPoolSize(Type::eUniformBuffer, 1),
+    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 6),
                                    vk::DescriptorPoolSize(Type::eCombinedImageSampler, 1)};
     pool_ = vk::raii::DescriptorPool(
         ctx.device(), vk::DescriptorPoolCreateInfo(
@@ -119,7 +118,7 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
         vk::WriteDescriptorSet(*set_, 0, 0, Type::eStorageBuffer, {}, chunks_info),
         vk::WriteDescriptorSet(*set_, 1, 0, Type::eStorageBuffer, {}, commands_info),
         vk::WriteDescriptorSet(*set_, 2, 0, Type::eStorageBuffer, {}, counts_info),
-        vk::WriteDescriptorSet(*set_, 3, 0, Type::eUniformBuffer, {}, constants_info),
+        vk::WriteDescriptorSet(*set_, 3, 0, Type::eStorageBuffer, {}, constants_info),
         vk::WriteDescriptorSet(*set_, 5, 0, Type::eStorageBuffer, {}, routing_info),
         vk::WriteDescriptorSet(*set_, 6, 0, Type::eStorageBuffer, {}, order_info),
     };

@@ -24,7 +24,11 @@ struct DrawCommand {
 };
 layout(std430, set = 0, binding = 1) writeonly buffer Commands { DrawCommand commands[]; };
 layout(std430, set = 0, binding = 2) buffer Counts { uint counts[MONOPLANE_COUNT_WORDS]; };
-layout(std140, set = 0, binding = 3) uniform Constants { CullConstants cull; };
+// The frame's planes and matrices, read from a storage buffer rather than a uniform buffer: an
+// LLVM-based driver (lavapipe) inlines uniform values that this shader stores and reuses into
+// the compiled code, and would compile a new variant whenever the head turned the planes (the
+// layout is the same under std430: every member is 16 bytes).
+layout(std430, set = 0, binding = 3) readonly buffer Constants { CullConstants cull; };
 // Reversed-Z depth, minimum (farthest) over each texel's region of both eyes; mip 0 is level 2.
 layout(set = 0, binding = 4) uniform sampler2D merged_depth;
 // Per chunk: the MONOPLANE_ROUTE_* bits of this frame, for the debug view "routing".
@@ -40,9 +44,8 @@ shared uint written[MONOPLANE_CULL_LISTS];
 bool outside_frustum(uint view, vec3 lo, vec3 hi) {
     for (uint i = 0; i < 6; ++i) {
         vec4 p = cull.planes[view * 6 + i];
-        // The box corner furthest along the plane's normal.
-        vec3 corner = vec3(p.x >= 0.0 ? hi.x : lo.x, p.y >= 0.0 ? hi.y : lo.y,
-                           p.z >= 0.0 ? hi.z : lo.z);
+        // The box corner furthest along the plane's normal (a select per component).
+        vec3 corner = mix(lo, hi, greaterThanEqual(p.xyz, vec3(0.0)));
         if (dot(p.xyz, corner) + p.w < 0.0) return true;
     }
     return false;

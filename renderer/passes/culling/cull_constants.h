@@ -70,7 +70,7 @@ struct ChunkRecord {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CullConstants) == 18 * 16 + 16 + 64 + 16, "std140 layout shared with GLSL");
+static_assert(sizeof(CullConstants) == 18 * 16 + 16 + 64 + 16, "std430 layout shared with GLSL");
 static_assert(sizeof(ChunkRecord) == 48, "std430 layout shared with GLSL");
 }  // namespace monoplane::passes
 #endif
