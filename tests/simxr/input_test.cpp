@@ -45,17 +45,19 @@ path = "/user/hand/left/input/menu/click"
     attach.countActionSets = 1;
     attach.actionSets = &set;
     ASSERT_EQ(xrAttachSessionActionSets(session_, &attach), XR_SUCCESS);
-    auto profile = xr_struct<XrInteractionProfileState>(XR_TYPE_INTERACTION_PROFILE_STATE);
-    ASSERT_EQ(xrGetCurrentInteractionProfile(session_, hands[1], &profile), XR_SUCCESS);
-    EXPECT_EQ(profile.interactionProfile, suggested.interactionProfile);
-
-    begin_and_focus();            // frame 0
-    EXPECT_EQ(other_events_, 1);  // XrEventDataInteractionProfileChanged
+    begin_and_focus();  // frame 0
 
     XrActiveActionSet active{set, XR_NULL_PATH};
     auto sync = xr_struct<XrActionsSyncInfo>(XR_TYPE_ACTIONS_SYNC_INFO);
     sync.countActiveActionSets = 1;
     sync.activeActionSets = &active;
+    // The first sync of the running session chooses the profile (spec 11.4).
+    ASSERT_EQ(xrSyncActions(session_, &sync), XR_SUCCESS);
+    poll_states();
+    EXPECT_EQ(other_events_, 1);  // XrEventDataInteractionProfileChanged
+    auto profile = xr_struct<XrInteractionProfileState>(XR_TYPE_INTERACTION_PROFILE_STATE);
+    ASSERT_EQ(xrGetCurrentInteractionProfile(session_, hands[1], &profile), XR_SUCCESS);
+    EXPECT_EQ(profile.interactionProfile, suggested.interactionProfile);
     auto query = [&](XrPath subaction) {
         auto get = xr_struct<XrActionStateGetInfo>(XR_TYPE_ACTION_STATE_GET_INFO);
         get.action = action;
@@ -137,6 +139,51 @@ uint32_t bound_source_count(XrSession session, XrAction action) {
     uint32_t count = 99;
     EXPECT_EQ(xrEnumerateBoundSourcesForAction(session, &info, 0, &count, nullptr), XR_SUCCESS);
     return count;
+}
+
+// spec 11.4: the runtime chooses the interaction profile, and queues
+// XrEventDataInteractionProfileChanged, only in xrSyncActions, and sends that event to running
+// sessions only; until then xrGetCurrentInteractionProfile says XR_NULL_PATH and nothing is bound.
+TEST_F(SimxrTest, InteractionProfileIsChosenInTheFirstSyncOfARunningSession) {
+    start("");
+    const XrPath right = path("/user/hand/right");
+    const XrPath simple = path("/interaction_profiles/khr/simple_controller");
+    const XrActionSet set = make_set(instance_);
+    const XrAction press = make_action(set, "press", XR_ACTION_TYPE_BOOLEAN_INPUT);
+    ASSERT_EQ(suggest(instance_, simple,
+                      {{press, path("/user/hand/left/input/select/click")},
+                       {press, path("/user/hand/right/input/select/click")}}),
+              XR_SUCCESS);
+    attach(session_, set);
+    const auto current = [&] {
+        auto state = xr_struct<XrInteractionProfileState>(XR_TYPE_INTERACTION_PROFILE_STATE);
+        EXPECT_EQ(xrGetCurrentInteractionProfile(session_, right, &state), XR_SUCCESS);
+        return state.interactionProfile;
+    };
+    EXPECT_EQ(current(), XR_NULL_PATH);
+    EXPECT_EQ(bound_source_count(session_, press), 0u);
+    EXPECT_EQ(sync(session_, set), XR_SESSION_NOT_FOCUSED);  // not running: no event
+    poll_states();
+    EXPECT_EQ(other_events_, 0);
+    EXPECT_EQ(current(), XR_NULL_PATH);
+
+    begin_and_focus();  // running and focused, but no sync since
+    EXPECT_EQ(other_events_, 0);
+    EXPECT_EQ(current(), XR_NULL_PATH);
+    ASSERT_EQ(sync(session_, set), XR_SUCCESS);
+    EXPECT_EQ(current(), simple);
+    EXPECT_EQ(bound_source_count(session_, press), 2u);
+    auto event = xr_struct<XrEventDataBuffer>(XR_TYPE_EVENT_DATA_BUFFER);
+    ASSERT_EQ(xrPollEvent(instance_, &event), XR_SUCCESS);
+    ASSERT_EQ(event.type, XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED);
+    EXPECT_EQ(reinterpret_cast<const XrEventDataInteractionProfileChanged&>(event).session,
+              session_);
+    // The profile stays; later syncs send nothing more.
+    empty_frame();
+    ASSERT_EQ(sync(session_, set), XR_SUCCESS);
+    event = xr_struct<XrEventDataBuffer>(XR_TYPE_EVENT_DATA_BUFFER);
+    EXPECT_EQ(xrPollEvent(instance_, &event), XR_EVENT_UNAVAILABLE);
+    EXPECT_EQ(current(), simple);
 }
 
 // spec 11.4: a runtime must accept every binding of every 1.0 interaction profile, also for
@@ -254,6 +301,8 @@ path = "/user/gamepad/input/thumbstick_left/y"
                        {buzz, path("/user/gamepad/output/haptic_right")}}),
               XR_SUCCESS);
     attach(session_, set);
+    begin_and_focus();                           // frame 0
+    ASSERT_EQ(sync(session_, set), XR_SUCCESS);  // chooses the profile
     auto state = xr_struct<XrInteractionProfileState>(XR_TYPE_INTERACTION_PROFILE_STATE);
     ASSERT_EQ(xrGetCurrentInteractionProfile(session_, path("/user/gamepad"), &state), XR_SUCCESS);
     EXPECT_EQ(state.interactionProfile, xbox);
@@ -261,8 +310,6 @@ path = "/user/gamepad/input/thumbstick_left/y"
               XR_SUCCESS);
     EXPECT_EQ(state.interactionProfile, XR_NULL_PATH);
     EXPECT_EQ(bound_source_count(session_, move), 2u);  // thumbstick_left/x and /y
-
-    begin_and_focus();  // frame 0
     for (int frame = 1; frame <= 5; ++frame) {
         empty_frame();
         ASSERT_EQ(sync(session_, set), XR_SUCCESS);

@@ -11,12 +11,13 @@ TEST_F(SimxrTest, SessionWalksThroughTheSpecLifeCycle) {
     EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_IDLE, XR_SESSION_STATE_READY}));
     const XrSessionBeginInfo info = begin_info();
     ASSERT_EQ(xrBeginSession(session_, &info), XR_SUCCESS);
-    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_SYNCHRONIZED}));
+    EXPECT_EQ(poll_states(), States{});  // no frame submitted yet: still READY
 
     const XrFrameState frame0 = empty_frame();
-    EXPECT_FALSE(frame0.shouldRender);  // SYNCHRONIZED: frames are not shown yet
+    EXPECT_FALSE(frame0.shouldRender);  // READY: frames are not shown yet
     EXPECT_EQ(frame0.predictedDisplayPeriod, 10'000'000);
-    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_VISIBLE, XR_SESSION_STATE_FOCUSED}));
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_SYNCHRONIZED, XR_SESSION_STATE_VISIBLE,
+                                     XR_SESSION_STATE_FOCUSED}));
     const XrFrameState frame1 = empty_frame();
     EXPECT_TRUE(frame1.shouldRender);
     // Frame n is displayed at frame 0's time + n periods; waiting never sleeps.
@@ -27,6 +28,43 @@ TEST_F(SimxrTest, SessionWalksThroughTheSpecLifeCycle) {
     ASSERT_EQ(xrRequestExitSession(session_), XR_SUCCESS);
     EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_VISIBLE, XR_SESSION_STATE_SYNCHRONIZED,
                                      XR_SESSION_STATE_STOPPING}));
+    ASSERT_EQ(xrEndSession(session_), XR_SUCCESS);
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_IDLE, XR_SESSION_STATE_EXITING}));
+}
+
+// spec 9.3: READY becomes SYNCHRONIZED once the application's frame loop is synchronized with
+// the runtime, i.e. after it submitted a frame (OpenXR-CTS "Session State" polls right after
+// xrBeginSession and fails on any change).
+TEST_F(SimxrTest, SynchronizedWaitsForTheFirstSubmittedFrame) {
+    start("");
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_IDLE, XR_SESSION_STATE_READY}));
+    const XrSessionBeginInfo info = begin_info();
+    ASSERT_EQ(xrBeginSession(session_, &info), XR_SUCCESS);
+    EXPECT_EQ(poll_states(), States{});
+    auto state = xr_struct<XrFrameState>(XR_TYPE_FRAME_STATE);
+    ASSERT_EQ(xrWaitFrame(session_, nullptr, &state), XR_SUCCESS);
+    EXPECT_FALSE(state.shouldRender);
+    ASSERT_EQ(xrBeginFrame(session_, nullptr), XR_SUCCESS);
+    EXPECT_EQ(poll_states(), States{});  // waited and begun, not yet submitted
+    auto end = xr_struct<XrFrameEndInfo>(XR_TYPE_FRAME_END_INFO);
+    end.displayTime = state.predictedDisplayTime;
+    end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+    ASSERT_EQ(xrEndFrame(session_, &end), XR_SUCCESS);
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_SYNCHRONIZED, XR_SESSION_STATE_VISIBLE,
+                                     XR_SESSION_STATE_FOCUSED}));
+    EXPECT_TRUE(empty_frame().shouldRender);
+    EXPECT_EQ(poll_states(), States{});  // only the first frame moves the state
+}
+
+// An exit requested before any frame still walks the spec's graph: READY, SYNCHRONIZED,
+// STOPPING (there is no edge from READY to STOPPING).
+TEST_F(SimxrTest, ExitBeforeTheFirstFramePassesThroughSynchronized) {
+    start("");
+    poll_states();
+    const XrSessionBeginInfo info = begin_info();
+    ASSERT_EQ(xrBeginSession(session_, &info), XR_SUCCESS);
+    ASSERT_EQ(xrRequestExitSession(session_), XR_SUCCESS);
+    EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_SYNCHRONIZED, XR_SESSION_STATE_STOPPING}));
     ASSERT_EQ(xrEndSession(session_), XR_SUCCESS);
     EXPECT_EQ(poll_states(), (States{XR_SESSION_STATE_IDLE, XR_SESSION_STATE_EXITING}));
 }

@@ -2,12 +2,17 @@
 #include "tests/simxr/runtime_fixture.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
 
 namespace monoplane::simxr::testing {
 namespace {
 
-XrSwapchain make_swapchain(XrSession session, int64_t format, uint32_t width, uint32_t height) {
+XrSwapchain make_swapchain(XrSession session, int64_t format, uint32_t width, uint32_t height,
+                           XrSwapchainCreateFlags flags = 0) {
     auto info = xr_struct<XrSwapchainCreateInfo>(XR_TYPE_SWAPCHAIN_CREATE_INFO);
+    info.createFlags = flags;
     info.usageFlags = XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT | XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT;
     info.format = format;
     info.sampleCount = 1;
@@ -83,10 +88,34 @@ TEST_F(SimxrTest, FrameCallsMustComeInOrder) {
     end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
     EXPECT_EQ(xrEndFrame(session_, &end), XR_ERROR_CALL_ORDER_INVALID);
     ASSERT_EQ(xrBeginFrame(session_, nullptr), XR_SUCCESS);
-    end.displayTime = state.predictedDisplayTime + 1;
-    EXPECT_EQ(xrEndFrame(session_, &end), XR_ERROR_TIME_INVALID);
     end.displayTime = state.predictedDisplayTime;
     EXPECT_EQ(xrEndFrame(session_, &end), XR_SUCCESS);
+}
+
+// spec (xrEndFrame): displayTime should come from xrWaitFrame, but only a time <= 0 is
+// XR_ERROR_TIME_INVALID. OpenXR-CTS "xrBeginFrame/xrEndFrame" ends a frame with an earlier
+// frame's time; a pipelined application may end one with the latest wait's time.
+TEST_F(SimxrTest, EndFrameTakesAnyPositiveDisplayTime) {
+    start("");
+    begin_and_focus();
+    auto first = xr_struct<XrFrameState>(XR_TYPE_FRAME_STATE);
+    ASSERT_EQ(xrWaitFrame(session_, nullptr, &first), XR_SUCCESS);
+    ASSERT_EQ(xrBeginFrame(session_, nullptr), XR_SUCCESS);
+    auto second = xr_struct<XrFrameState>(XR_TYPE_FRAME_STATE);
+    ASSERT_EQ(xrWaitFrame(session_, nullptr, &second), XR_SUCCESS);
+    ASSERT_GT(second.predictedDisplayTime, first.predictedDisplayTime);
+    auto end = xr_struct<XrFrameEndInfo>(XR_TYPE_FRAME_END_INFO);
+    end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+    end.displayTime = second.predictedDisplayTime;  // the next frame's time
+    EXPECT_EQ(xrEndFrame(session_, &end), XR_SUCCESS);
+    ASSERT_EQ(xrBeginFrame(session_, nullptr), XR_SUCCESS);
+    end.displayTime = 0;
+    EXPECT_EQ(xrEndFrame(session_, &end), XR_ERROR_TIME_INVALID);
+    end.displayTime = -1;
+    EXPECT_EQ(xrEndFrame(session_, &end), XR_ERROR_TIME_INVALID);
+    end.displayTime = 1;  // long past, still a time
+    EXPECT_EQ(xrEndFrame(session_, &end), XR_SUCCESS);
+    EXPECT_EQ(xrEndFrame(session_, &end), XR_ERROR_CALL_ORDER_INVALID);  // nothing begun now
 }
 
 TEST_F(SimxrTest, SwapchainImagesMustBeAcquiredWaitedReleasedInOrder) {
@@ -111,6 +140,29 @@ TEST_F(SimxrTest, SwapchainImagesMustBeAcquiredWaitedReleasedInOrder) {
     EXPECT_EQ(xrReleaseSwapchainImage(swapchain, nullptr), XR_SUCCESS);
     EXPECT_EQ(xrDestroySwapchain(swapchain), XR_SUCCESS);
     EXPECT_EQ(xrDestroySwapchain(swapchain), XR_ERROR_HANDLE_INVALID);
+}
+
+// spec (XrSwapchainCreateFlagBits, xrAcquireSwapchainImage): a static swapchain is acquired
+// and released once over its whole life; a second acquire is XR_ERROR_CALL_ORDER_INVALID.
+TEST_F(SimxrTest, StaticSwapchainHasOneImageAcquiredOnce) {
+    start("");
+    const XrSwapchain swapchain = make_swapchain(session_, VK_FORMAT_R8G8B8A8_SRGB, 64, 64,
+                                                 XR_SWAPCHAIN_CREATE_STATIC_IMAGE_BIT);
+    uint32_t count = 0;
+    ASSERT_EQ(xrEnumerateSwapchainImages(swapchain, 0, &count, nullptr), XR_SUCCESS);
+    EXPECT_EQ(count, 1u);
+    uint32_t index = 99;
+    ASSERT_EQ(xrAcquireSwapchainImage(swapchain, nullptr, &index), XR_SUCCESS);
+    EXPECT_EQ(index, 0u);
+    auto wait = xr_struct<XrSwapchainImageWaitInfo>(XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO);
+    wait.timeout = XR_INFINITE_DURATION;
+    ASSERT_EQ(xrWaitSwapchainImage(swapchain, &wait), XR_SUCCESS);
+    ASSERT_EQ(xrReleaseSwapchainImage(swapchain, nullptr), XR_SUCCESS);
+    EXPECT_EQ(xrAcquireSwapchainImage(swapchain, nullptr, &index), XR_ERROR_CALL_ORDER_INVALID);
+    // The other swapchains keep their three images, acquired round-robin.
+    const XrSwapchain dynamic = make_swapchain(session_, VK_FORMAT_R8G8B8A8_SRGB, 64, 64);
+    ASSERT_EQ(xrEnumerateSwapchainImages(dynamic, 0, &count, nullptr), XR_SUCCESS);
+    EXPECT_EQ(count, 3u);
 }
 
 TEST_F(SimxrTest, UnsupportedSwapchainFormatIsRefused) {
@@ -172,6 +224,200 @@ TEST_F(SimxrTest, LayerWithAnUnreleasedSwapchainIsInvalid) {
     EXPECT_EQ(xrEndFrame(session_, &end), XR_ERROR_SWAPCHAIN_RECT_INVALID);
     views[1].subImage.imageRect = {{0, 0}, {64, 64}};
     EXPECT_EQ(xrEndFrame(session_, &end), XR_SUCCESS);
+}
+
+// spec (XrPosef): a runtime must return XR_ERROR_POSE_INVALID if the orientation norm deviates
+// by more than 1% from unit length; OpenXR-CTS submits a projection view of norm 0.2 and a quad
+// of norm 0.98.
+TEST_F(SimxrTest, LayerPosesMustBeUnitQuaternions) {
+    start("");
+    begin_and_focus();
+    const XrSwapchain swapchain = make_swapchain(session_, VK_FORMAT_R8G8B8A8_SRGB, 64, 64);
+    uint32_t index = 0;
+    ASSERT_EQ(xrAcquireSwapchainImage(swapchain, nullptr, &index), XR_SUCCESS);
+    auto wait = xr_struct<XrSwapchainImageWaitInfo>(XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO);
+    wait.timeout = XR_INFINITE_DURATION;
+    ASSERT_EQ(xrWaitSwapchainImage(swapchain, &wait), XR_SUCCESS);
+    ASSERT_EQ(xrReleaseSwapchainImage(swapchain, nullptr), XR_SUCCESS);
+    auto space_info = xr_struct<XrReferenceSpaceCreateInfo>(XR_TYPE_REFERENCE_SPACE_CREATE_INFO);
+    space_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
+    space_info.poseInReferenceSpace.orientation.w = 1.0f;
+    XrSpace local = XR_NULL_HANDLE;
+    ASSERT_EQ(xrCreateReferenceSpace(session_, &space_info, &local), XR_SUCCESS);
+
+    XrCompositionLayerProjectionView views[2];
+    for (auto& view : views) {
+        view =
+            xr_struct<XrCompositionLayerProjectionView>(XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW);
+        view.pose.orientation.w = 1.0f;
+        view.fov = {-0.5f, 0.5f, 0.5f, -0.5f};
+        view.subImage.swapchain = swapchain;
+        view.subImage.imageRect = {{0, 0}, {64, 64}};
+    }
+    auto projection = xr_struct<XrCompositionLayerProjection>(XR_TYPE_COMPOSITION_LAYER_PROJECTION);
+    projection.space = local;
+    projection.viewCount = 2;
+    projection.views = views;
+    auto quad = xr_struct<XrCompositionLayerQuad>(XR_TYPE_COMPOSITION_LAYER_QUAD);
+    quad.space = local;
+    quad.eyeVisibility = XR_EYE_VISIBILITY_BOTH;
+    quad.subImage = views[0].subImage;
+    quad.pose = {{0.0f, 0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, -1.0f}};
+    quad.size = {1.0f, 1.0f};
+    auto state = xr_struct<XrFrameState>(XR_TYPE_FRAME_STATE);
+    const auto submit = [&](const void* layer) {
+        const auto* header = static_cast<const XrCompositionLayerBaseHeader*>(layer);
+        auto end = xr_struct<XrFrameEndInfo>(XR_TYPE_FRAME_END_INFO);
+        end.displayTime = state.predictedDisplayTime;
+        end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+        end.layerCount = 1;
+        end.layers = &header;
+        return xrEndFrame(session_, &end);
+    };
+    ASSERT_EQ(xrWaitFrame(session_, nullptr, &state), XR_SUCCESS);
+    ASSERT_EQ(xrBeginFrame(session_, nullptr), XR_SUCCESS);
+    views[1].pose.orientation = {0.1f, 0.1f, 0.1f, 0.1f};  // norm 0.2
+    EXPECT_EQ(submit(&projection), XR_ERROR_POSE_INVALID);
+    views[1].pose.orientation = {0.0f, 0.0f, 0.0f, 0.0f};
+    EXPECT_EQ(submit(&projection), XR_ERROR_POSE_INVALID);
+    views[1].pose.orientation = {0.0f, 0.0f, 0.0f, std::nanf("")};
+    EXPECT_EQ(submit(&projection), XR_ERROR_POSE_INVALID);
+    quad.pose.orientation = {0.0f, 0.0f, 0.0f, 0.98f};  // 2 % short
+    EXPECT_EQ(submit(&quad), XR_ERROR_POSE_INVALID);
+    quad.pose.orientation = {0.0f, 0.0f, 0.0f, 1.005f};  // within 1 %: accepted
+    EXPECT_EQ(submit(&quad), XR_SUCCESS);
+    ASSERT_EQ(xrWaitFrame(session_, nullptr, &state), XR_SUCCESS);
+    ASSERT_EQ(xrBeginFrame(session_, nullptr), XR_SUCCESS);
+    views[1].pose.orientation = {0.0f, 0.70710678f, 0.0f, 0.70710678f};  // turned 90 degrees
+    EXPECT_EQ(submit(&projection), XR_SUCCESS);
+}
+
+XrResult create_set(XrInstance instance, const char* name, const char* localized,
+                    XrActionSet* set) {
+    auto info = xr_struct<XrActionSetCreateInfo>(XR_TYPE_ACTION_SET_CREATE_INFO);
+    std::snprintf(info.actionSetName, sizeof(info.actionSetName), "%s", name);
+    std::snprintf(info.localizedActionSetName, sizeof(info.localizedActionSetName), "%s",
+                  localized);
+    return xrCreateActionSet(instance, &info, set);
+}
+
+XrResult create_action(XrActionSet set, const char* name, const char* localized,
+                       const std::vector<XrPath>& subaction_paths, XrAction* action) {
+    auto info = xr_struct<XrActionCreateInfo>(XR_TYPE_ACTION_CREATE_INFO);
+    info.actionType = XR_ACTION_TYPE_BOOLEAN_INPUT;
+    std::snprintf(info.actionName, sizeof(info.actionName), "%s", name);
+    std::snprintf(info.localizedActionName, sizeof(info.localizedActionName), "%s", localized);
+    info.countSubactionPaths = static_cast<uint32_t>(subaction_paths.size());
+    info.subactionPaths = subaction_paths.empty() ? nullptr : subaction_paths.data();
+    return xrCreateAction(set, &info, action);
+}
+
+// spec 11.2 and 11.3: localized names are unique among the instance's action sets and among
+// one set's actions; destroying the holder frees the name.
+TEST_F(SimxrTest, LocalizedNamesMustBeUnique) {
+    start("", {.create_session = false});
+    XrActionSet study = XR_NULL_HANDLE;
+    XrActionSet other = XR_NULL_HANDLE;
+    ASSERT_EQ(create_set(instance_, "study", "Study", &study), XR_SUCCESS);
+    EXPECT_EQ(create_set(instance_, "study2", "Study", &other), XR_ERROR_LOCALIZED_NAME_DUPLICATED);
+    EXPECT_EQ(create_set(instance_, "study", "Study 2", &other), XR_ERROR_NAME_DUPLICATED);
+    ASSERT_EQ(create_set(instance_, "menu", "Menu", &other), XR_SUCCESS);
+
+    XrAction select = XR_NULL_HANDLE;
+    XrAction action = XR_NULL_HANDLE;
+    ASSERT_EQ(create_action(study, "select", "Select", {}, &select), XR_SUCCESS);
+    EXPECT_EQ(create_action(study, "choose", "Select", {}, &action),
+              XR_ERROR_LOCALIZED_NAME_DUPLICATED);
+    // Another set's actions are another name space.
+    EXPECT_EQ(create_action(other, "choose", "Select", {}, &action), XR_SUCCESS);
+    ASSERT_EQ(xrDestroyAction(select), XR_SUCCESS);
+    EXPECT_EQ(create_action(study, "choose", "Select", {}, &action), XR_SUCCESS);
+
+    ASSERT_EQ(xrDestroyActionSet(study), XR_SUCCESS);
+    EXPECT_EQ(create_set(instance_, "study2", "Study", &study), XR_SUCCESS);
+    EXPECT_EQ(create_set(instance_, "study3", "Menu", &study), XR_ERROR_LOCALIZED_NAME_DUPLICATED);
+}
+
+// Each call's code for a subaction path: xrCreateAction refuses a path that is not a top level
+// user path, or listed twice, with XR_ERROR_PATH_UNSUPPORTED (spec 11.3); a value that is no
+// path atom at all is XR_ERROR_PATH_INVALID everywhere (OpenXR-CTS passes 0x1234); a path the
+// action (xrGetActionState*, haptics) or no action of the set (xrSyncActions) was created with
+// is XR_ERROR_PATH_UNSUPPORTED.
+TEST_F(SimxrTest, SubactionPathsGetEachCallsCode) {
+    start("", {.xr_validation = false});  // simxr's own answers, behind the layer's checks
+    const XrPath left = path("/user/hand/left");
+    const XrPath gamepad = path("/user/gamepad");
+    const XrPath not_an_atom = 0x1234;
+    XrActionSet set = XR_NULL_HANDLE;
+    ASSERT_EQ(create_set(instance_, "study", "Study", &set), XR_SUCCESS);
+    XrAction action = XR_NULL_HANDLE;
+    EXPECT_EQ(create_action(set, "a", "A", {path("/user/hand/left/input")}, &action),
+              XR_ERROR_PATH_UNSUPPORTED);
+    EXPECT_EQ(create_action(set, "a", "A", {path("/user/invalid")}, &action),
+              XR_ERROR_PATH_UNSUPPORTED);
+    EXPECT_EQ(create_action(set, "a", "A", {left, left}, &action), XR_ERROR_PATH_UNSUPPORTED);
+    EXPECT_EQ(create_action(set, "a", "A", {not_an_atom}, &action), XR_ERROR_PATH_INVALID);
+    ASSERT_EQ(create_action(set, "press", "Press", {left}, &action), XR_SUCCESS);
+    auto vibrate = xr_struct<XrActionCreateInfo>(XR_TYPE_ACTION_CREATE_INFO);
+    vibrate.actionType = XR_ACTION_TYPE_VIBRATION_OUTPUT;
+    std::snprintf(vibrate.actionName, sizeof(vibrate.actionName), "buzz");
+    std::snprintf(vibrate.localizedActionName, sizeof(vibrate.localizedActionName), "Buzz");
+    vibrate.countSubactionPaths = 1;
+    vibrate.subactionPaths = &left;
+    XrAction buzz = XR_NULL_HANDLE;
+    ASSERT_EQ(xrCreateAction(set, &vibrate, &buzz), XR_SUCCESS);
+    auto attach = xr_struct<XrSessionActionSetsAttachInfo>(XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO);
+    attach.countActionSets = 1;
+    attach.actionSets = &set;
+    ASSERT_EQ(xrAttachSessionActionSets(session_, &attach), XR_SUCCESS);
+
+    auto get = xr_struct<XrActionStateGetInfo>(XR_TYPE_ACTION_STATE_GET_INFO);
+    get.action = action;
+    auto state = xr_struct<XrActionStateBoolean>(XR_TYPE_ACTION_STATE_BOOLEAN);
+    get.subactionPath = not_an_atom;
+    EXPECT_EQ(xrGetActionStateBoolean(session_, &get, &state), XR_ERROR_PATH_INVALID);
+    get.subactionPath = gamepad;
+    EXPECT_EQ(xrGetActionStateBoolean(session_, &get, &state), XR_ERROR_PATH_UNSUPPORTED);
+    get.subactionPath = left;
+    EXPECT_EQ(xrGetActionStateBoolean(session_, &get, &state), XR_SUCCESS);
+
+    auto haptic = xr_struct<XrHapticActionInfo>(XR_TYPE_HAPTIC_ACTION_INFO);
+    haptic.action = buzz;
+    haptic.subactionPath = not_an_atom;
+    auto vibration = xr_struct<XrHapticVibration>(XR_TYPE_HAPTIC_VIBRATION);
+    vibration.duration = XR_MIN_HAPTIC_DURATION;
+    const auto* feedback = reinterpret_cast<const XrHapticBaseHeader*>(&vibration);
+    EXPECT_EQ(xrApplyHapticFeedback(session_, &haptic, feedback), XR_ERROR_PATH_INVALID);
+    EXPECT_EQ(xrStopHapticFeedback(session_, &haptic), XR_ERROR_PATH_INVALID);
+
+    XrActiveActionSet active{set, not_an_atom};
+    auto sync = xr_struct<XrActionsSyncInfo>(XR_TYPE_ACTIONS_SYNC_INFO);
+    sync.countActiveActionSets = 1;
+    sync.activeActionSets = &active;
+    EXPECT_EQ(xrSyncActions(session_, &sync), XR_ERROR_PATH_INVALID);
+    active.subactionPath = gamepad;  // a top level user path, but none of the set's actions has it
+    EXPECT_EQ(xrSyncActions(session_, &sync), XR_ERROR_PATH_UNSUPPORTED);
+    active.subactionPath = left;
+    EXPECT_EQ(xrSyncActions(session_, &sync), XR_SESSION_NOT_FOCUSED);
+}
+
+// spec (xrGetSystem): a form factor the runtime does not have is
+// XR_ERROR_FORM_FACTOR_UNSUPPORTED, whatever the value (OpenXR-CTS passes
+// XR_FORM_FACTOR_MAX_ENUM).
+TEST_F(SimxrTest, EveryFormFactorButTheHmdIsUnsupported) {
+    start("", {.create_session = false, .xr_validation = false});  // the layer refuses MAX_ENUM
+    auto info = xr_struct<XrSystemGetInfo>(XR_TYPE_SYSTEM_GET_INFO);
+    for (XrFormFactor form : {XR_FORM_FACTOR_HANDHELD_DISPLAY, XR_FORM_FACTOR_MAX_ENUM,
+                              static_cast<XrFormFactor>(12345)}) {
+        info.formFactor = form;
+        XrSystemId system = 42;
+        EXPECT_EQ(xrGetSystem(instance_, &info, &system), XR_ERROR_FORM_FACTOR_UNSUPPORTED) << form;
+        EXPECT_EQ(system, 42u) << form;  // untouched
+    }
+    info.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
+    XrSystemId system = XR_NULL_SYSTEM_ID;
+    EXPECT_EQ(xrGetSystem(instance_, &info, &system), XR_SUCCESS);
+    EXPECT_EQ(system, system_);
 }
 
 TEST_F(SimxrTest, BindingsMustNameKnownProfilesAndComponents) {

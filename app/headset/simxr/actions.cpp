@@ -63,12 +63,12 @@ XrResult resolve_state_query(const Session& session, const XrActionStateGetInfo*
     if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (action->type != expected) return XR_ERROR_ACTION_TYPE_MISMATCH;
     if (!is_attached_to(session, action->set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+    if (XrResult r = check_subaction_path(*session.instance, *action, info->subactionPath);
+        r != XR_SUCCESS) {
+        return r;
+    }
     std::string prefix;
     if (info->subactionPath != XR_NULL_PATH) {
-        if (std::ranges::find(action->subaction_paths, info->subactionPath) ==
-            action->subaction_paths.end()) {
-            return XR_ERROR_PATH_UNSUPPORTED;
-        }
         prefix = *session.instance->paths.find(info->subactionPath) + "/";
     }
     for (const auto& [bound_action, component] : session.bindings) {
@@ -96,21 +96,55 @@ ActionUse use_of(XrActionType type) {
     }
 }
 
-// spec 11.6: a haptic action's subactionPath must be one it was created with (or null).
-XrResult check_subaction(const Action& action, XrPath subaction) {
-    if (subaction == XR_NULL_PATH ||
-        std::ranges::find(action.subaction_paths, subaction) != action.subaction_paths.end()) {
-        return XR_SUCCESS;
-    }
-    return XR_ERROR_PATH_UNSUPPORTED;
-}
-
 float value_in(const std::map<std::string, float>& values, const std::string& component) {
     const auto found = values.find(component);
     return found == values.end() ? 0.0f : found->second;
 }
 
+// spec (XrActiveActionSet): a subaction path that none of the set's actions was created with is
+// XR_ERROR_PATH_UNSUPPORTED; a value that is no path atom is XR_ERROR_PATH_INVALID.
+XrResult check_active_subaction_path(const Instance& instance, const ActionSet& set, XrPath path) {
+    if (path == XR_NULL_PATH) return XR_SUCCESS;
+    if (instance.paths.find(path) == nullptr) return XR_ERROR_PATH_INVALID;
+    const bool declared = std::ranges::any_of(set.actions, [path](const Action* action) {
+        return std::ranges::find(action->subaction_paths, path) != action->subaction_paths.end();
+    });
+    return declared ? XR_SUCCESS : XR_ERROR_PATH_UNSUPPORTED;
+}
+
+// spec 11.4: the runtime chooses the interaction profile, and may change it, only in
+// xrSyncActions, and tells only running sessions. simxr's controllers are the script's profile
+// from the start, so the first sync of a running session chooses it for good: its suggested
+// bindings become the session's, and an application that suggested nothing for it gets no
+// bindings, XR_NULL_PATH as the current profile and no event (the event is only sent for a
+// profile the application suggested bindings for).
+void choose_interaction_profile(Session& session) {
+    session.profile_chosen = true;
+    Instance& instance = *session.instance;
+    const XrPath profile = instance.paths.intern(instance.script.interaction_profile);
+    if (auto found = instance.suggested_bindings.find(profile);
+        found != instance.suggested_bindings.end()) {
+        for (const auto& binding : found->second) {
+            if (is_attached_to(session, binding.first->set)) session.bindings.push_back(binding);
+        }
+    }
+    if (session.bindings.empty()) return;
+    session.interaction_profile = profile;
+    auto event = xr_struct<XrEventDataInteractionProfileChanged>(
+        XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED);
+    event.session = reinterpret_cast<XrSession>(&session);
+    queue_event(instance, &event, sizeof(event), &session);
+}
+
 }  // namespace
+
+XrResult check_subaction_path(const Instance& instance, const Action& action, XrPath path) {
+    if (path == XR_NULL_PATH) return XR_SUCCESS;
+    if (instance.paths.find(path) == nullptr) return XR_ERROR_PATH_INVALID;
+    const bool declared =
+        std::ranges::find(action.subaction_paths, path) != action.subaction_paths.end();
+    return declared ? XR_SUCCESS : XR_ERROR_PATH_UNSUPPORTED;
+}
 
 void destroy_action_set(ActionSet* set) {
     for (Action* action : set->actions) {
@@ -138,12 +172,19 @@ XrResult XRAPI_CALL xrCreateActionSet(XrInstance handle, const XrActionSetCreate
         r != XR_SUCCESS) {
         return r;
     }
+    // spec 11.2: both names are unique among the instance's live action sets.
     for (const ActionSet* existing : instance->action_sets) {
         if (existing->name == info->actionSetName) return XR_ERROR_NAME_DUPLICATED;
+    }
+    for (const ActionSet* existing : instance->action_sets) {
+        if (existing->localized_name == info->localizedActionSetName) {
+            return XR_ERROR_LOCALIZED_NAME_DUPLICATED;
+        }
     }
     auto set = std::make_unique<ActionSet>();
     set->instance = instance;
     set->name = info->actionSetName;
+    set->localized_name = info->localizedActionSetName;
     instance->action_sets.push_back(set.get());
     *set_handle = register_object<XrActionSet>(std::move(set));
     return XR_SUCCESS;
@@ -170,8 +211,14 @@ XrResult XRAPI_CALL xrCreateAction(XrActionSet set_handle, const XrActionCreateI
     if (XrResult r = check_name(info->actionName, info->localizedActionName); r != XR_SUCCESS) {
         return r;
     }
+    // spec 11.3: both names are unique among the set's live actions.
     for (const Action* existing : set->actions) {
         if (existing->name == info->actionName) return XR_ERROR_NAME_DUPLICATED;
+    }
+    for (const Action* existing : set->actions) {
+        if (existing->localized_name == info->localizedActionName) {
+            return XR_ERROR_LOCALIZED_NAME_DUPLICATED;
+        }
     }
     switch (info->actionType) {
         case XR_ACTION_TYPE_BOOLEAN_INPUT:
@@ -186,7 +233,11 @@ XrResult XRAPI_CALL xrCreateAction(XrActionSet set_handle, const XrActionCreateI
     auto action = std::make_unique<Action>();
     action->set = set;
     action->name = info->actionName;
+    action->localized_name = info->localizedActionName;
     action->type = info->actionType;
+    // spec 11.3 (XrActionCreateInfo): each subaction path is one of the top level user paths
+    // and listed once, else XR_ERROR_PATH_UNSUPPORTED; a value that is no path atom at all is
+    // XR_ERROR_PATH_INVALID.
     for (uint32_t i = 0; i < info->countSubactionPaths; ++i) {
         const XrPath path = info->subactionPaths[i];
         const std::string* text = set->instance->paths.find(path);
@@ -266,25 +317,9 @@ XrResult XRAPI_CALL xrAttachSessionActionSets(XrSession handle,
         if (set == nullptr) return XR_ERROR_HANDLE_INVALID;
         sets.push_back(set);
     }
-    Instance& instance = *session->instance;
     for (ActionSet* set : sets) set->attached = true;
+    // The interaction profile and bindings follow in xrSyncActions (choose_interaction_profile).
     session->attached_sets = sets;
-
-    const XrPath profile = instance.paths.intern(instance.script.interaction_profile);
-    session->bindings.clear();
-    if (auto found = instance.suggested_bindings.find(profile);
-        found != instance.suggested_bindings.end()) {
-        for (const auto& binding : found->second) {
-            if (is_attached_to(*session, binding.first->set)) session->bindings.push_back(binding);
-        }
-    }
-    // The simulated controllers are the script's profile; an application that suggested nothing
-    // for it gets no bindings and sees XR_NULL_PATH as the current profile.
-    session->interaction_profile = session->bindings.empty() ? XR_NULL_PATH : profile;
-    auto event = xr_struct<XrEventDataInteractionProfileChanged>(
-        XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED);
-    event.session = handle;
-    queue_event(instance, &event, sizeof(event), session);
     return XR_SUCCESS;
 }
 
@@ -322,13 +357,15 @@ XrResult XRAPI_CALL xrSyncActions(XrSession handle, const XrActionsSyncInfo* inf
         ActionSet* set = lookup<ActionSet>(info->activeActionSets[i].actionSet);
         if (set == nullptr) return XR_ERROR_HANDLE_INVALID;
         if (!is_attached_to(*session, set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
-        const XrPath filter = info->activeActionSets[i].subactionPath;
-        if (filter != XR_NULL_PATH) {
-            const std::string* text = session->instance->paths.find(filter);
-            if (text == nullptr) return XR_ERROR_PATH_INVALID;
-            if (!is_top_level_path(*text)) return XR_ERROR_PATH_UNSUPPORTED;
+        if (XrResult r = check_active_subaction_path(*session->instance, *set,
+                                                     info->activeActionSets[i].subactionPath);
+            r != XR_SUCCESS) {
+            return r;
         }
         sets.push_back(set);
+    }
+    if (session->running && !session->profile_chosen && !session->attached_sets.empty()) {
+        choose_interaction_profile(*session);
     }
     // spec 11.5.2: without input focus every action is inactive and the call says why.
     if (session->state != XR_SESSION_STATE_FOCUSED) {
@@ -542,7 +579,10 @@ XrResult XRAPI_CALL xrApplyHapticFeedback(XrSession handle, const XrHapticAction
     if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (action->type != XR_ACTION_TYPE_VIBRATION_OUTPUT) return XR_ERROR_ACTION_TYPE_MISMATCH;
     if (!is_attached_to(*session, action->set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
-    if (XrResult r = check_subaction(*action, info->subactionPath); r != XR_SUCCESS) return r;
+    if (XrResult r = check_subaction_path(*session->instance, *action, info->subactionPath);
+        r != XR_SUCCESS) {
+        return r;
+    }
     return session->state == XR_SESSION_STATE_FOCUSED ? XR_SUCCESS : XR_SESSION_NOT_FOCUSED;
 }
 
@@ -555,7 +595,10 @@ XrResult XRAPI_CALL xrStopHapticFeedback(XrSession handle, const XrHapticActionI
     if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (action->type != XR_ACTION_TYPE_VIBRATION_OUTPUT) return XR_ERROR_ACTION_TYPE_MISMATCH;
     if (!is_attached_to(*session, action->set)) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
-    if (XrResult r = check_subaction(*action, info->subactionPath); r != XR_SUCCESS) return r;
+    if (XrResult r = check_subaction_path(*session->instance, *action, info->subactionPath);
+        r != XR_SUCCESS) {
+        return r;
+    }
     return session->state == XR_SESSION_STATE_FOCUSED ? XR_SUCCESS : XR_SESSION_NOT_FOCUSED;
 }
 

@@ -71,6 +71,23 @@ XrResult check_depth_info(const Session& session, const XrCompositionLayerDepthI
     return depth_range && planes ? XR_SUCCESS : XR_ERROR_VALIDATION_FAILURE;
 }
 
+// A projection view: its pose, colour sub-image and, with the extension, depth.
+XrResult check_projection_view(const Session& session,
+                               const XrCompositionLayerProjectionView& view) {
+    if (view.type != XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW) return XR_ERROR_VALIDATION_FAILURE;
+    if (!is_unit_quaternion(view.pose.orientation)) return XR_ERROR_POSE_INVALID;
+    if (XrResult r = check_sub_image(session, view.subImage); r != XR_SUCCESS) return r;
+    // The extension asks for depth on every view of a layer but does not make a view without it
+    // an error, so each view is checked on its own.
+    if (const auto* depth = depth_info(session, view)) return check_depth_info(session, *depth);
+    return XR_SUCCESS;
+}
+
+XrResult check_quad(const Session& session, const XrCompositionLayerQuad& quad) {
+    if (!is_unit_quaternion(quad.pose.orientation)) return XR_ERROR_POSE_INVALID;
+    return check_sub_image(session, quad.subImage);
+}
+
 XrResult check_layer(const Session& session, const XrCompositionLayerBaseHeader* layer) {
     if (layer == nullptr) return XR_ERROR_LAYER_INVALID;
     const Space* space = lookup<Space>(layer->space);
@@ -82,26 +99,28 @@ XrResult check_layer(const Session& session, const XrCompositionLayerBaseHeader*
             return XR_ERROR_VALIDATION_FAILURE;
         }
         for (uint32_t i = 0; i < 2; ++i) {
-            if (projection->views[i].type != XR_TYPE_COMPOSITION_LAYER_PROJECTION_VIEW) {
-                return XR_ERROR_VALIDATION_FAILURE;
-            }
-            if (XrResult r = check_sub_image(session, projection->views[i].subImage);
+            if (XrResult r = check_projection_view(session, projection->views[i]);
                 r != XR_SUCCESS) {
                 return r;
-            }
-            // The extension asks for depth on every view of a layer but does not make a view
-            // without it an error, so each view is checked on its own.
-            if (const auto* depth = depth_info(session, projection->views[i])) {
-                if (XrResult r = check_depth_info(session, *depth); r != XR_SUCCESS) return r;
             }
         }
         return XR_SUCCESS;
     }
     if (layer->type == XR_TYPE_COMPOSITION_LAYER_QUAD) {
-        return check_sub_image(session,
-                               reinterpret_cast<const XrCompositionLayerQuad*>(layer)->subImage);
+        return check_quad(session, *reinterpret_cast<const XrCompositionLayerQuad*>(layer));
     }
     return XR_ERROR_LAYER_INVALID;
+}
+
+// spec 9.3: a running session leaves READY for SYNCHRONIZED once the application's frame loop
+// is synchronized with the runtime, which simxr takes to be its first submitted frame
+// (OpenXR-CTS "Session State": no change before a frame is submitted). simxr shows the
+// application's frames and gives it input at once, so VISIBLE and FOCUSED follow at the same
+// time: frame 0 is not rendered (shouldRender false in READY), every later one is.
+void synchronize(Session& session) {
+    queue_state_change(session, XR_SESSION_STATE_SYNCHRONIZED, session.now());
+    queue_state_change(session, XR_SESSION_STATE_VISIBLE, session.now());
+    queue_state_change(session, XR_SESSION_STATE_FOCUSED, session.now());
 }
 
 XrResult dump_frame(Session& session, std::int64_t frame, const XrFrameEndInfo& info) {
@@ -189,9 +208,10 @@ XrResult XRAPI_CALL xrEndFrame(XrSession handle, const XrFrameEndInfo* info) {
     // spec: xrEndFrame without a matching xrBeginFrame is XR_ERROR_CALL_ORDER_INVALID.
     if (!session->begun_frame) return XR_ERROR_CALL_ORDER_INVALID;
     const std::int64_t frame = *session->begun_frame;
-    // simxr is strict: displayTime must be the predicted display time xrWaitFrame gave for this
-    // frame (spec: an invalid displayTime is XR_ERROR_TIME_INVALID).
-    if (info->displayTime != session->predicted_display_time(frame)) return XR_ERROR_TIME_INVALID;
+    // spec (xrEndFrame): displayTime should be computed from xrWaitFrame's prediction, but the
+    // runtime must be robust against pipelined applications, so only a time that is no time
+    // (<= 0) is XR_ERROR_TIME_INVALID. The frame keeps its index (dumps) whatever the time.
+    if (info->displayTime <= 0) return XR_ERROR_TIME_INVALID;
     if (info->environmentBlendMode != XR_ENVIRONMENT_BLEND_MODE_OPAQUE) {
         return XR_ERROR_ENVIRONMENT_BLEND_MODE_UNSUPPORTED;
     }
@@ -204,14 +224,7 @@ XrResult XRAPI_CALL xrEndFrame(XrSession handle, const XrFrameEndInfo* info) {
     }
     const XrResult dumped = dump_frame(*session, frame, *info);
     session->begun_frame.reset();
-    ++session->frames_ended;
-    // The first submitted frame makes the application visible and focused (spec 9.3: VISIBLE
-    // and FOCUSED follow SYNCHRONIZED once the runtime shows the application's frames).
-    if (session->frames_ended == 1 && session->queued_state == XR_SESSION_STATE_SYNCHRONIZED &&
-        !session->exit_requested && !session->loss_pending) {
-        queue_state_change(*session, XR_SESSION_STATE_VISIBLE, session->now());
-        queue_state_change(*session, XR_SESSION_STATE_FOCUSED, session->now());
-    }
+    if (session->queued_state == XR_SESSION_STATE_READY) synchronize(*session);
     return dumped;
 }
 

@@ -73,6 +73,7 @@ struct Swapchain {
     std::deque<uint32_t> in_flight;  // acquired, oldest first (spec: wait and release in order)
     uint32_t next_to_acquire = 0;
     std::optional<uint32_t> last_released;
+    bool acquired_once = false;  // XR_SWAPCHAIN_CREATE_STATIC_IMAGE_BIT allows one acquire ever
 };
 
 struct Space {
@@ -88,6 +89,7 @@ struct Space {
 struct ActionSet {
     Instance* instance = nullptr;
     std::string name;
+    std::string localized_name;
     std::vector<Action*> actions;
     bool attached = false;
 };
@@ -95,6 +97,7 @@ struct ActionSet {
 struct Action {
     ActionSet* set = nullptr;
     std::string name;
+    std::string localized_name;
     XrActionType type = XR_ACTION_TYPE_BOOLEAN_INPUT;
     std::vector<XrPath> subaction_paths;
 };
@@ -114,12 +117,14 @@ struct Session {
     std::int64_t frames_waited = 0;             // n of the next xrWaitFrame
     std::deque<std::int64_t> waited_not_begun;  // frame indices
     std::optional<std::int64_t> begun_frame;
-    std::int64_t frames_ended = 0;
     XrTime latest_wait_time = 0;  // predicted display time of the latest xrWaitFrame
     std::vector<Swapchain*> swapchains;
     std::vector<Space*> spaces;
     // Actions.
     std::vector<ActionSet*> attached_sets;
+    // Chosen by the first xrSyncActions of the running session (spec 11.4); empty and
+    // XR_NULL_PATH until then.
+    bool profile_chosen = false;
     std::vector<std::pair<Action*, std::string>> bindings;  // of the script's profile
     XrPath interaction_profile = XR_NULL_PATH;
     std::vector<ActionSet*> synced_sets;  // active in the latest xrSyncActions while focused
@@ -164,6 +169,15 @@ template <class Object>
 void unregister_object(Object* object) {
     live_objects<Object>().erase(object);
 }
+
+// spec (XrPosef): an orientation whose norm is more than 1% away from 1 is XR_ERROR_POSE_INVALID.
+bool is_unit_quaternion(const XrQuaternionf& q);
+
+// A subaction path given to a call about `action`: XR_NULL_PATH or one the action was created
+// with; XR_ERROR_PATH_INVALID for a value that is no path atom, XR_ERROR_PATH_UNSUPPORTED for a
+// path the action was not created with (spec 11.3, XrActionStateGetInfo, XrHapticActionInfo,
+// XrActionSpaceCreateInfo).
+XrResult check_subaction_path(const Instance& instance, const Action& action, XrPath path);
 
 // Destroys what a session owns (spec: destroying a parent destroys its children).
 void destroy_swapchain(Swapchain* swapchain);

@@ -1,6 +1,6 @@
 // Session creation and its life cycle (spec 9.3 "Session Lifecycle"): IDLE and READY on
-// creation, SYNCHRONIZED on xrBeginSession, VISIBLE and FOCUSED after the first frame is
-// submitted (frame_loop.cpp), STOPPING on an exit request, IDLE and EXITING on xrEndSession.
+// creation, SYNCHRONIZED, VISIBLE and FOCUSED after the first frame is submitted
+// (frame_loop.cpp), STOPPING on an exit request, IDLE and EXITING on xrEndSession.
 #include "app/headset/simxr/entry_points.h"
 #include "app/headset/simxr/runtime_state.h"
 
@@ -18,7 +18,10 @@ void begin_exit(Session& session) {
     if (session.queued_state == XR_SESSION_STATE_FOCUSED) {
         queue_state_change(session, XR_SESSION_STATE_VISIBLE, now);
     }
-    if (session.queued_state == XR_SESSION_STATE_VISIBLE) {
+    // Before its first frame a running session is still READY; STOPPING is only reached from
+    // SYNCHRONIZED, so the session passes through it.
+    if (session.queued_state == XR_SESSION_STATE_VISIBLE ||
+        session.queued_state == XR_SESSION_STATE_READY) {
         queue_state_change(session, XR_SESSION_STATE_SYNCHRONIZED, now);
     }
     queue_state_change(session, XR_SESSION_STATE_STOPPING, now);
@@ -101,8 +104,8 @@ XrResult XRAPI_CALL xrBeginSession(XrSession handle, const XrSessionBeginInfo* i
     if (info->primaryViewConfigurationType != XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO) {
         return XR_ERROR_VIEW_CONFIGURATION_TYPE_UNSUPPORTED;
     }
+    // SYNCHRONIZED follows the first submitted frame (frame_loop.cpp), not this call.
     session->running = true;
-    queue_state_change(*session, XR_SESSION_STATE_SYNCHRONIZED, session->now());
     return XR_SUCCESS;
 }
 

@@ -87,11 +87,6 @@ std::optional<rig::Pose> space_in_local(const Session& session, const Space& spa
     return compose(origin, offset);
 }
 
-bool is_unit_quaternion(const XrQuaternionf& q) {
-    const double length = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
-    return std::abs(length - 1.0) < 1e-2;  // spec 2.17: runtimes accept slightly unnormalized
-}
-
 constexpr XrSpaceLocationFlags kFullyTracked =
     XR_SPACE_LOCATION_ORIENTATION_VALID_BIT | XR_SPACE_LOCATION_POSITION_VALID_BIT |
     XR_SPACE_LOCATION_ORIENTATION_TRACKED_BIT | XR_SPACE_LOCATION_POSITION_TRACKED_BIT;
@@ -103,6 +98,12 @@ XrFovf fov_of(const rig::Tangents& tangents) {
 }
 
 }  // namespace
+
+bool is_unit_quaternion(const XrQuaternionf& q) {
+    const double length = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+    // Slightly unnormalized is fine (applications' float maths); NaN fails the comparison.
+    return std::abs(length - 1.0) <= 1e-2;
+}
 
 XrResult XRAPI_CALL xrEnumerateReferenceSpaces(XrSession handle, uint32_t capacity, uint32_t* count,
                                                XrReferenceSpaceType* spaces) {
@@ -162,16 +163,9 @@ XrResult XRAPI_CALL xrCreateActionSpace(XrSession handle, const XrActionSpaceCre
     const Action* action = lookup<Action>(info->action);
     if (action == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (action->type != XR_ACTION_TYPE_POSE_INPUT) return XR_ERROR_ACTION_TYPE_MISMATCH;
-    // spec (XrActionSpaceCreateInfo): a subaction path the action was not created with is
-    // XR_ERROR_PATH_UNSUPPORTED.
-    if (info->subactionPath != XR_NULL_PATH) {
-        if (session->instance->paths.find(info->subactionPath) == nullptr) {
-            return XR_ERROR_PATH_INVALID;
-        }
-        if (std::ranges::find(action->subaction_paths, info->subactionPath) ==
-            action->subaction_paths.end()) {
-            return XR_ERROR_PATH_UNSUPPORTED;
-        }
+    if (XrResult r = check_subaction_path(*session->instance, *action, info->subactionPath);
+        r != XR_SUCCESS) {
+        return r;
     }
     if (!is_unit_quaternion(info->poseInActionSpace.orientation)) return XR_ERROR_POSE_INVALID;
     auto space = std::make_unique<Space>();

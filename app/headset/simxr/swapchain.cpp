@@ -17,6 +17,12 @@ constexpr std::array<VkFormat, 4> kFormats = {VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT
 constexpr uint32_t kImageCount = 3;
 constexpr uint32_t kMaxSize = 16384;
 
+// spec (XrSwapchainCreateFlagBits): a static swapchain is acquired and released only once, so
+// one image is all it needs.
+bool is_static(const XrSwapchainCreateInfo& info) {
+    return (info.createFlags & XR_SWAPCHAIN_CREATE_STATIC_IMAGE_BIT) != 0;
+}
+
 bool is_depth(VkFormat format) {
     return format == VK_FORMAT_D32_SFLOAT;
 }
@@ -55,7 +61,7 @@ XrResult create_images(Swapchain& swapchain, VkImageUsageFlags usage, VkImageCre
     image_info.usage = usage;
     image_info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
     image_info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    for (uint32_t i = 0; i < kImageCount; ++i) {
+    for (std::size_t i = 0; i < swapchain.states.size(); ++i) {
         VkImage image = VK_NULL_HANDLE;
         if (vk.vkCreateImage(vk.device(), &image_info, nullptr, &image) != VK_SUCCESS) {
             return XR_ERROR_RUNTIME_FAILURE;
@@ -164,7 +170,7 @@ XrResult XRAPI_CALL xrCreateSwapchain(XrSession handle, const XrSwapchainCreateI
     swapchain->info.next = nullptr;
     swapchain->format = format;
     swapchain->depth = depth;
-    swapchain->states.assign(kImageCount, Swapchain::ImageState::available);
+    swapchain->states.assign(is_static(*info) ? 1 : kImageCount, Swapchain::ImageState::available);
     Swapchain* raw = swapchain.get();
     session->swapchains.push_back(raw);
     *swapchain_handle = register_object<XrSwapchain>(std::move(swapchain));
@@ -205,8 +211,8 @@ XrResult XRAPI_CALL xrEnumerateSwapchainImages(XrSwapchain handle, uint32_t capa
     return XR_SUCCESS;
 }
 
-// spec (xrAcquireSwapchainImage): images are acquired in a fixed order; with none available the
-// call is XR_ERROR_CALL_ORDER_INVALID.
+// spec (xrAcquireSwapchainImage): images are acquired in a fixed order; with none available, or
+// for a static swapchain acquired before, the call is XR_ERROR_CALL_ORDER_INVALID.
 XrResult XRAPI_CALL xrAcquireSwapchainImage(XrSwapchain handle,
                                             const XrSwapchainImageAcquireInfo* info,
                                             uint32_t* index) {
@@ -218,9 +224,11 @@ XrResult XRAPI_CALL xrAcquireSwapchainImage(XrSwapchain handle,
         return XR_ERROR_VALIDATION_FAILURE;
     }
     const uint32_t next = swapchain->next_to_acquire;
-    if (swapchain->states[next] != Swapchain::ImageState::available) {
+    if (swapchain->states[next] != Swapchain::ImageState::available ||
+        (is_static(swapchain->info) && swapchain->acquired_once)) {
         return XR_ERROR_CALL_ORDER_INVALID;
     }
+    swapchain->acquired_once = true;
     swapchain->states[next] = Swapchain::ImageState::acquired;
     swapchain->in_flight.push_back(next);
     swapchain->next_to_acquire = (next + 1) % static_cast<uint32_t>(swapchain->images.size());
