@@ -1,6 +1,16 @@
 #include "renderer/vk/pipeline.h"
 
+#include <atomic>
+
 namespace monoplane::vk_core {
+
+namespace {
+std::atomic<std::uint64_t> created_pipelines{0};
+}  // namespace
+
+std::uint64_t pipelines_created() {
+    return created_pipelines.load(std::memory_order_relaxed);
+}
 
 vk::raii::ShaderModule make_shader(const Context& ctx, std::span<const std::uint32_t> spirv) {
     return vk::raii::ShaderModule(ctx.device(),
@@ -47,6 +57,7 @@ vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipe
     const vk::GraphicsPipelineCreateInfo info(
         {}, stages, &vertex_input, &input_assembly, nullptr, &viewport, &raster, &multisample,
         &depth, &color_blend, &dynamic_state, desc.layout, nullptr, 0, nullptr, -1, &rendering);
+    created_pipelines.fetch_add(1, std::memory_order_relaxed);
     return vk::raii::Pipeline(ctx.device(), nullptr, info);
 }
 
@@ -54,6 +65,7 @@ vk::raii::Pipeline make_compute_pipeline(const Context& ctx, vk::PipelineLayout 
                                          vk::ShaderModule compute) {
     const vk::PipelineShaderStageCreateInfo stage({}, vk::ShaderStageFlagBits::eCompute, compute,
                                                   "main");
+    created_pipelines.fetch_add(1, std::memory_order_relaxed);
     return vk::raii::Pipeline(ctx.device(), nullptr,
                               vk::ComputePipelineCreateInfo({}, stage, layout));
 }

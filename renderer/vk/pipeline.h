@@ -47,4 +47,9 @@ vk::raii::Pipeline make_compute_pipeline(const Context& ctx, vk::PipelineLayout 
 
 void set_viewport_and_scissor(const vk::raii::CommandBuffer& cmd, vk::Extent2D extent);
 
+// How many pipelines make_graphics_pipeline and make_compute_pipeline have created in this
+// process, on any thread: a frame that creates one after warm-up stalls while the driver compiles
+// it (the headset's frame log and the tests read the count before and after frames).
+std::uint64_t pipelines_created();
+
 }  // namespace monoplane::vk_core
