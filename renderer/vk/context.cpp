@@ -152,6 +152,8 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
             ctx->physical_device_
                 .getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features,
                               vk::PhysicalDeviceVulkan12Features>();
+        const bool timeline_semaphore =
+            supported.get<vk::PhysicalDeviceVulkan12Features>().timelineSemaphore;
         const auto& f10 = supported.get<vk::PhysicalDeviceFeatures2>().features;
         const auto& f11 = supported.get<vk::PhysicalDeviceVulkan11Features>();
         if (!supported.get<vk::PhysicalDeviceVulkan12Features>().drawIndirectCount) {
@@ -179,10 +181,17 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
         caps.timestamp_valid_bits =
             ctx->physical_device_.getQueueFamilyProperties()[ctx->queue_family_].timestampValidBits;
 
-        vk::StructureChain<vk::DeviceCreateInfo, vk::PhysicalDeviceFeatures2,
-                           vk::PhysicalDeviceVulkan11Features, vk::PhysicalDeviceVulkan12Features,
-                           vk::PhysicalDeviceVulkan13Features,
-                           vk::PhysicalDeviceConditionalRenderingFeaturesEXT>
+        // Vulkan 1.2's features are asked for through their own structures, not through
+        // VkPhysicalDeviceVulkan12Features: an OpenXR runtime's xrCreateVulkanDeviceKHR may add
+        // VkPhysicalDeviceTimelineSemaphoreFeatures to this chain (Monado does unless the chain
+        // has one), and next to VkPhysicalDeviceVulkan12Features that is invalid
+        // (VUID-VkDeviceCreateInfo-pNext-02830). So the chain carries that structure itself,
+        // with timeline semaphores on where the device has them (what such runtimes want).
+        vk::StructureChain<
+            vk::DeviceCreateInfo, vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features,
+            vk::PhysicalDeviceHostQueryResetFeatures, vk::PhysicalDeviceTimelineSemaphoreFeatures,
+            vk::PhysicalDeviceVulkan12Features, vk::PhysicalDeviceVulkan13Features,
+            vk::PhysicalDeviceConditionalRenderingFeaturesEXT>
             chain;
         vk::PhysicalDeviceFeatures& enable10 = chain.get<vk::PhysicalDeviceFeatures2>().features;
         enable10.multiDrawIndirect = VK_TRUE;
@@ -192,10 +201,25 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
         enable10.depthClamp = f10.depthClamp;
         enable10.samplerAnisotropy = f10.samplerAnisotropy;
         chain.get<vk::PhysicalDeviceVulkan11Features>().multiview = f11.multiview;
-        chain.get<vk::PhysicalDeviceVulkan12Features>().hostQueryReset = VK_TRUE;
-        // The GPU culling writes each view's draw count (Vulkan 1.2 core, optional feature).
-        chain.get<vk::PhysicalDeviceVulkan12Features>().drawIndirectCount = VK_TRUE;
+        chain.get<vk::PhysicalDeviceHostQueryResetFeatures>().hostQueryReset = VK_TRUE;
+        chain.get<vk::PhysicalDeviceTimelineSemaphoreFeatures>().timelineSemaphore =
+            timeline_semaphore;
+        // The GPU culling writes each view's draw count: Vulkan 1.2's optional drawIndirectCount,
+        // which has no structure of its own outside VkPhysicalDeviceVulkan12Features; enabling
+        // VK_KHR_draw_indirect_count, which devices with the feature offer, enables it. A device
+        // without the extension gets VkPhysicalDeviceVulkan12Features instead.
         std::vector<const char*> device_extension_names;
+        if (has_extension(device_extensions, VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME)) {
+            device_extension_names.push_back(VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME);
+            chain.unlink<vk::PhysicalDeviceVulkan12Features>();
+        } else {
+            auto& enable12 = chain.get<vk::PhysicalDeviceVulkan12Features>();
+            enable12.drawIndirectCount = VK_TRUE;
+            enable12.hostQueryReset = VK_TRUE;
+            enable12.timelineSemaphore = timeline_semaphore;
+            chain.unlink<vk::PhysicalDeviceHostQueryResetFeatures>();
+            chain.unlink<vk::PhysicalDeviceTimelineSemaphoreFeatures>();
+        }
         if (auto missing = add_extensions(options.device_extensions, device_extensions, "device",
                                           device_extension_names)) {
             return *missing;
