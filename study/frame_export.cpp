@@ -12,13 +12,18 @@ std::string optional_number(const std::optional<double>& value) {
     return value ? number_text(*value) : "NA";
 }
 
+std::string optional_count(const std::optional<std::int64_t>& value) {
+    return value ? std::to_string(*value) : "NA";
+}
+
 }  // namespace
 
 const std::vector<std::string_view>& frame_export_columns() {
     static const std::vector<std::string_view> columns = {
-        "participant", "session", "frame",   "trial_index", "shown",     "display_time_s",
-        "cpu_ms",      "gpu_ms",  "missed",  "head_x",      "head_y",    "head_z",
-        "head_qw",     "head_qx", "head_qy", "head_qz",     "mono_plane"};
+        "participant",    "session", "frame",   "trial_index", "shown",      "display_time_s",
+        "cpu_ms",         "gpu_ms",  "missed",  "head_x",      "head_y",     "head_z",
+        "head_qw",        "head_qx", "head_qy", "head_qz",     "mono_plane", "pipelines_created",
+        "driver_compiles"};
     return columns;
 }
 
@@ -44,6 +49,8 @@ void write_frames_csv(const ExportData& data, std::ostream& out) {
                 line += ',' + (f.head ? number_text((*f.head)[i]) : std::string("NA"));
             }
             line += ',' + optional_number(f.mono_plane);
+            line += ',' + optional_count(f.pipelines_created);
+            line += ',' + optional_count(f.driver_compiles);
             out << line << '\n';
         }
     }

@@ -25,8 +25,9 @@ Result<bool> FrameQueue::write(const sqlite::Connection& db) const {
     Result<Statement> insert = Statement::prepare(
         db,
         "INSERT OR REPLACE INTO frames (session_id, frame, trial_index, shown, display_time_ns, "
-        "cpu_ms, gpu_ms, missed, head_x, head_y, head_z, head_qw, head_qx, head_qy, head_qz) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        "cpu_ms, gpu_ms, missed, head_x, head_y, head_z, head_qw, head_qx, head_qy, head_qz, "
+        "pipelines_created, driver_compiles) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     if (!insert) return insert.error();
     for (const Row& row : rows_) {
         const FrameRecord& f = row.frame;
@@ -38,6 +39,7 @@ Result<bool> FrameQueue::write(const sqlite::Connection& db) const {
             s.bind(9 + static_cast<int>(i),
                    f.head ? std::optional<double>((*f.head)[i]) : std::nullopt);
         }
+        s.bind(16, f.pipelines_created).bind(17, f.driver_compiles);
         const std::string what = "logging frame " + std::to_string(f.frame) + " of session " +
                                  std::to_string(row.session_id);
         if (Result<bool> ok = s.run(what); !ok) return ok;
@@ -76,7 +78,8 @@ Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,
     Result<Statement> stmt = Statement::prepare(
         db,
         "SELECT frame, trial_index, shown, display_time_ns, cpu_ms, gpu_ms, missed, head_x, "
-        "head_y, head_z, head_qw, head_qx, head_qy, head_qz, mono_plane FROM frames WHERE "
+        "head_y, head_z, head_qw, head_qx, head_qy, head_qz, mono_plane, pipelines_created, "
+        "driver_compiles FROM frames WHERE "
         "session_id = ? "
         "ORDER BY frame");
     if (!stmt) return stmt.error();
@@ -101,6 +104,8 @@ Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,
             f.head = head;
         }
         if (!s.is_null(14)) f.mono_plane = s.real(14);
+        if (!s.is_null(15)) f.pipelines_created = s.int64(15);
+        if (!s.is_null(16)) f.driver_compiles = s.int64(16);
         frames.push_back(std::move(f));
     }
     return frames;

@@ -28,6 +28,12 @@ struct FrameRecord {
     // frame; the far plane when it drew the frame as stereo); none for stereo modes and screens
     // without a scene. Known when the frame completes, like gpu_ms.
     std::optional<double> mono_plane;
+    // Since the previous logged frame (the first: since the renderers were built): pipelines
+    // monoplane created, and shader modules the driver compiled (none where it cannot be
+    // counted; profile::driver_compiles). Both 0 after warm-up; none in sessions before these
+    // were logged.
+    std::optional<std::int64_t> pipelines_created;
+    std::optional<std::int64_t> driver_compiles;
 };
 
 }  // namespace monoplane::study

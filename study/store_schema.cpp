@@ -154,8 +154,16 @@ CREATE TABLE planned_trials (
 );
 )sql";
 
-constexpr std::array<std::string_view, 5> kMigrations = {kVersion1, kVersion2, kVersion3, kVersion4,
-                                                         kVersion5};
+// Version 6 (issue 29): what each frame made the renderer build: pipelines monoplane created and
+// shader modules the driver compiled (NULL where the driver's compiles cannot be counted). After
+// warm-up both are 0; a driver compiling variants while the head turns stalls those frames.
+constexpr std::string_view kVersion6 = R"sql(
+ALTER TABLE frames ADD COLUMN pipelines_created INTEGER CHECK (pipelines_created >= 0);
+ALTER TABLE frames ADD COLUMN driver_compiles INTEGER CHECK (driver_compiles >= 0);
+)sql";
+
+constexpr std::array<std::string_view, 6> kMigrations = {kVersion1, kVersion2, kVersion3,
+                                                         kVersion4, kVersion5, kVersion6};
 
 }  // namespace
 

@@ -96,7 +96,7 @@ class StudyStore final : public SessionLog {
                                                     const StoreOptions& options);
     ~StudyStore();
 
-    static constexpr int kSchemaVersion = 5;
+    static constexpr int kSchemaVersion = 6;
 
     // Starts a session: refuses a participant code that already has a session (use resume).
     // Stores the protocol text and hash, the seed, the whole schedule and the scene files'

@@ -1,5 +1,9 @@
 #include "app/commands/headset_frame_log.h"
 
+#include <sstream>
+
+#include "renderer/vk/pipeline.h"
+
 namespace monoplane::app {
 
 std::string shown_name(const study::LiveScreen& screen) {
@@ -19,7 +23,10 @@ std::string shown_name(const study::LiveScreen& screen) {
 }
 
 HeadsetFrameLog::HeadsetFrameLog(study::StudyStore& store, std::int64_t session_id)
-    : store_(store), session_id_(session_id) {}
+    : store_(store),
+      session_id_(session_id),
+      pipelines_seen_(vk_core::pipelines_created()),
+      compiles_seen_(profile::driver_compiles()) {}
 
 void HeadsetFrameLog::displayed(const headset::HeadsetFrame& frame, const study::LiveScreen& screen,
                                 const std::optional<rig::Pose>& head, double cpu_ms,
@@ -42,9 +49,53 @@ void HeadsetFrameLog::displayed(const headset::HeadsetFrame& frame, const study:
             std::array<double, 7>{p.position.x,    p.position.y,    p.position.z,   p.orientation.w,
                                   p.orientation.x, p.orientation.y, p.orientation.z};
     }
+    count_builds(row);
     store_.queue_frame(session_id_, row);
     if (renderer) awaiting_gpu_[renderer].push_back(frame.index);
     if (++since_flush_ >= kFlushFrames) flush();
+}
+
+void HeadsetFrameLog::count_builds(study::FrameRecord& row) {
+    const std::uint64_t pipelines = vk_core::pipelines_created();
+    const profile::DriverCompiles compiles = profile::driver_compiles();
+    const profile::DriverCompiles since = profile::compiles_between(compiles_seen_, compiles);
+    row.pipelines_created = static_cast<std::int64_t>(pipelines - pipelines_seen_);
+    if (since.measurable) row.driver_compiles = static_cast<std::int64_t>(since.modules);
+    if (frames_ > 0) late_pipelines_ += *row.pipelines_created;
+    const auto screen = std::make_pair(row.trial_index, row.shown);
+    screen_frames_ = previous_screen_ == screen ? screen_frames_ + 1 : 1;
+    const bool steady = screen_frames_ > kSettlingFrames;
+    if (steady) ++steady_frames_;
+    if (steady && since.modules > 0) {
+        steady_compiles_ += static_cast<std::int64_t>(since.modules);
+        ++steady_compile_frames_;
+        steady_compile_seconds_ += since.seconds;
+    }
+    previous_screen_ = screen;
+    pipelines_seen_ = pipelines;
+    compiles_seen_ = compiles;
+    ++frames_;
+}
+
+std::string HeadsetFrameLog::build_summary() const {
+    std::ostringstream out;
+    out << "builds while frames ran: " << late_pipelines_
+        << " pipelines created after the first frame; ";
+    if (!compiles_seen_.measurable) {
+        out << "the driver's shader compiles cannot be counted on this device\n";
+        return out.str();
+    }
+    out << steady_compiles_ << " driver shader compiles in " << steady_compile_frames_ << " of "
+        << steady_frames_ << " frames that showed what the " << kSettlingFrames
+        << " frames before showed";
+    if (steady_compiles_ > 0) {
+        out.precision(3);
+        out << " (" << steady_compile_seconds_
+            << " s): the driver compiled shader variants while a screen was showing, and those "
+               "frames stalled";
+    }
+    out << "\n";
+    return out.str();
 }
 
 void HeadsetFrameLog::completed(const modes::ModeRenderer* renderer,

@@ -8,10 +8,13 @@
 #include <deque>
 #include <map>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "app/headset/frame_times.h"
 #include "app/headset/openxr_headset.h"
+#include "renderer/profile/driver_compiles.h"
 #include "renderer/profile/frame_stats.h"
 #include "renderer/rig/pose.h"
 #include "study/live_session.h"
@@ -43,11 +46,32 @@ class HeadsetFrameLog {
                    const std::vector<profile::FrameStats>& stats);
     // Writes what is queued.
     void flush();
+    // What frames made the renderer build, for the end of the session: pipelines created after
+    // the first logged frame, and the driver's compiles in steady frames (a frame that shows
+    // what the kSettlingFrames frames before it showed: a screen's first frame may compile what
+    // it is the first to draw, and the driver compiles its work while the next frames are
+    // logged, as many as there are frames in flight). Steady compiles stall what the participant
+    // sees.
+    static constexpr int kSettlingFrames = 2;
+    std::string build_summary() const;
 
   private:
+    // Fills the row's pipelines_created and driver_compiles, and the session's totals.
+    void count_builds(study::FrameRecord& row);
+
     study::StudyStore& store_;
     std::int64_t session_id_;
     std::optional<std::int64_t> previous_display_ns_;
+    std::uint64_t pipelines_seen_;
+    profile::DriverCompiles compiles_seen_;
+    std::optional<std::pair<std::optional<int>, std::string>> previous_screen_;
+    std::int64_t frames_ = 0;
+    std::int64_t late_pipelines_ = 0;  // after the first frame
+    int screen_frames_ = 0;            // frames the current screen has shown, this one included
+    std::int64_t steady_frames_ = 0;
+    std::int64_t steady_compiles_ = 0;
+    std::int64_t steady_compile_frames_ = 0;
+    double steady_compile_seconds_ = 0.0;
     int since_flush_ = 0;
     std::map<const modes::ModeRenderer*, std::deque<std::int64_t>>
         awaiting_gpu_;  // per renderer, in order

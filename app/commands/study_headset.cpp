@@ -186,6 +186,7 @@ std::optional<fs::path> select_simulated_runtime(const HeadsetStudyOptions& opti
     out << "# written by monoplane study run --headset simulated\n";
     out << "hmd = \"" << hmd << "\"\n";
     out << "display_rate_hz = " << options.sim_rate_hz << "\n";
+    out << "head_motion = \"" << options.sim_head_motion << "\"\n";
     if (!options.dump_frames.empty()) {
         fs::create_directories(options.dump_frames);
         out << "dump_dir = \"" << fs::absolute(options.dump_frames).string() << "\"\n";
@@ -553,6 +554,7 @@ class HeadsetLoop {
         renderers_.for_each(
             [&](modes::ModeRenderer& r) { frame_log_.completed(&r, r.finish_frames()); });
         frame_log_.flush();
+        std::cerr << frame_log_.build_summary();
     }
 
     void request_exit() {

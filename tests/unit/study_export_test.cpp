@@ -282,15 +282,18 @@ TEST(StudyExport, FramesCsvHasOneExactRowPerFrame) {
     shown.missed = true;
     shown.head = std::array<double, 7>{0.5, 1.6, -2, 1, 0, 0, 0};
     shown.mono_plane = 16.25;
+    shown.pipelines_created = 0;
+    shown.driver_compiles = 3;
     data.frames[1] = {neutral, shown};
     std::ostringstream out;
     out.imbue(std::locale(std::locale::classic(), new GermanNumbers));
     write_frames_csv(data, out);
     EXPECT_EQ(out.str(),
               "participant,session,frame,trial_index,shown,display_time_s,cpu_ms,gpu_ms,missed,"
-              "head_x,head_y,head_z,head_qw,head_qx,head_qy,head_qz,mono_plane\n"
-              "P01,1,7,NA,neutral,1.5,0.25,NA,FALSE,NA,NA,NA,NA,NA,NA,NA,NA\n"
-              "P01,1,8,2,label2,1.511111111,12.5,10.75,TRUE,0.5,1.6,-2,1,0,0,0,16.25\n");
+              "head_x,head_y,head_z,head_qw,head_qx,head_qy,head_qz,mono_plane,pipelines_created,"
+              "driver_compiles\n"
+              "P01,1,7,NA,neutral,1.5,0.25,NA,FALSE,NA,NA,NA,NA,NA,NA,NA,NA,NA,NA\n"
+              "P01,1,8,2,label2,1.511111111,12.5,10.75,TRUE,0.5,1.6,-2,1,0,0,0,16.25,0,3\n");
 }
 
 // Through the database: the same rows come out of a real store, and the file form is complete.

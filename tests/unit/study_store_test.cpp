@@ -177,7 +177,7 @@ TEST_F(StudyStoreTest, UsesWalAndRecordsTheSchemaVersion) {
     RawDb raw(db_);
     EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
     EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
-    EXPECT_EQ(StudyStore::kSchemaVersion, 5);
+    EXPECT_EQ(StudyStore::kSchemaVersion, 6);
     EXPECT_EQ(raw.integer("PRAGMA application_id"), 0x4D505354);
     // Version 2 added frames, version 3 scene_files and session_notes, version 5 planned_trials.
     EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 9);
@@ -427,15 +427,15 @@ TEST_F(StudyStoreTest, RefusesANewerSchemaWithoutTouchingIt) {
     { ASSERT_TRUE(open_store()); }
     {
         RawDb raw(db_);
-        ASSERT_EQ(raw.exec("PRAGMA user_version = 6"), SQLITE_OK);
+        ASSERT_EQ(raw.exec("PRAGMA user_version = 7"), SQLITE_OK);
     }
     const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
     ASSERT_FALSE(store.ok());
     const std::string& message = store.error().message;
-    EXPECT_TRUE(contains(message, "schema version 6, newer than this build")) << message;
+    EXPECT_TRUE(contains(message, "schema version 7, newer than this build")) << message;
     EXPECT_TRUE(contains(message, db_.string())) << message;
     RawDb raw(db_);
-    EXPECT_EQ(raw.integer("PRAGMA user_version"), 6);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 7);
     EXPECT_TRUE(fs::exists(db_));
 }
 
@@ -633,12 +633,48 @@ TEST_F(StudyStoreTest, TheFrameLogBecomesDurableWithTheNextEvent) {
     ASSERT_TRUE(trial.head);
     EXPECT_EQ(*trial.head, (std::array<double, 7>{0.25, 1.6, -3.0, 0.5, 0.5, -0.5, 0.5}));
     EXPECT_FALSE((*frames)[2].missed);
+    EXPECT_FALSE(trial.pipelines_created);  // not logged: NULL (schema 6)
+    EXPECT_FALSE(trial.driver_compiles);
     // A bad row fails the write that carries it, and the event with it: nothing half-written.
     FrameRecord bad = make_frame(5, 0);
     bad.shown = "sideways";
     store->queue_frame(id, bad);
     EXPECT_FALSE(store->append_event(id, {EventKind::Switched, 0, 2, 1'060, 5}).ok());
     EXPECT_EQ(raw.integer("SELECT count(*) FROM events WHERE kind = 'switched'"), 0);
+}
+
+// Schema 6: what each frame built. The driver's count is NULL where it cannot be counted.
+TEST_F(StudyStoreTest, TheFrameLogKeepsWhatEachFrameBuilt) {
+    auto store = open_store();
+    const std::int64_t id = begin(*store, "P01");
+    FrameRecord first = make_frame(0, std::nullopt);
+    first.pipelines_created = 41;
+    first.driver_compiles = 57;
+    FrameRecord steady = make_frame(1, 0);
+    steady.pipelines_created = 0;
+    steady.driver_compiles = 0;
+    FrameRecord uncounted = make_frame(2, 0);
+    uncounted.pipelines_created = 0;
+    store->queue_frame(id, first);
+    store->queue_frame(id, steady);
+    store->queue_frame(id, uncounted);
+    ASSERT_TRUE(store->flush_frames().ok());
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("SELECT sum(pipelines_created) FROM frames"), 41);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE driver_compiles IS NULL"), 1);
+    const Result<std::vector<FrameRecord>> frames = store->frames(id);
+    ASSERT_TRUE(frames.ok()) << frames.error().message;
+    ASSERT_EQ(frames->size(), 3u);
+    EXPECT_EQ((*frames)[0].pipelines_created, 41);
+    EXPECT_EQ((*frames)[0].driver_compiles, 57);
+    EXPECT_EQ((*frames)[1].driver_compiles, 0);
+    EXPECT_EQ((*frames)[2].pipelines_created, 0);
+    EXPECT_FALSE((*frames)[2].driver_compiles);
+    // A negative count is no count: the row is refused.
+    FrameRecord negative = make_frame(3, 0);
+    negative.driver_compiles = -1;
+    store->queue_frame(id, negative);
+    EXPECT_FALSE(store->flush_frames().ok());
 }
 
 TEST_F(StudyStoreTest, AResumedRunsFramesContinueAfterEveryNumberUsed) {
