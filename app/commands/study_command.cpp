@@ -274,6 +274,11 @@ void add_headset_options(CLI::App* cmd, StudyOptions& o) {
     cmd->add_option("--sim-rate", h.sim_rate_hz, "simulated: display rate in Hz (virtual clock)")
         ->capture_default_str()
         ->check(CLI::Range(1.0, 1000.0));
+    cmd->add_option("--sim-head-motion", h.sim_head_motion,
+                    "simulated: the head's motion, seated (a seated person's small continuous "
+                    "turns and sways) or still")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"seated", "still"}));
     cmd->add_option("--dump-frames", h.dump_frames,
                     "simulated: write every submitted frame's eyes as PNG into this folder");
 }

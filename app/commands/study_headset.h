@@ -37,7 +37,8 @@ struct HeadsetStudyOptions {
     std::string sim_script;    // a simxr script; empty: one is written from the options below
     std::string hmd = "vive";  // the simulated headset's profile
     double sim_rate_hz = 90.0;
-    std::string dump_frames;  // folder for the submitted frames as PNG
+    std::string sim_head_motion = "seated";  // simxr's head_motion: still or seated
+    std::string dump_frames;                 // folder for the submitted frames as PNG
 };
 
 // Points the OpenXR loader at monoplane's simulated runtime and writes its script. Call before

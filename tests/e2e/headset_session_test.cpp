@@ -12,8 +12,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <stb/stb_image.h>
 
@@ -272,11 +274,42 @@ TEST_F(HeadsetSessionTest, LostSessionIsResumable) {
 // frame one display slot late (missed_slot_every); the log marks exactly those frames missed
 // (derived here from the frame indices alone), every frame has the head and every scene frame its
 // GPU time, and analyze flags every data trial (1 in 8 frames missed is above the protocol's 5 %).
+// Heads turn (issue 29): every frame sees a new view, and once a screen has shown for a few
+// frames the renderer builds nothing: no pipeline after the first frame, and no shader the
+// driver compiles (where it can be counted: lavapipe) in a frame showing what the two frames
+// before it showed.
+void expect_nothing_built_while_the_head_turns(const std::vector<study::FrameRecord>& frames) {
+    std::set<std::array<double, 4>> orientations;
+    int counted = 0;
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        const study::FrameRecord& f = frames[i];
+        ASSERT_TRUE(f.pipelines_created.has_value()) << "frame " << f.frame;
+        if (i > 0) EXPECT_EQ(*f.pipelines_created, 0) << "frame " << f.frame << " " << f.shown;
+        if (f.head) orientations.insert({(*f.head)[3], (*f.head)[4], (*f.head)[5], (*f.head)[6]});
+        // A screen's first frames may still compile what they are the first to draw, and the
+        // driver compiles a frame's work while the next frames run (two in flight).
+        const auto same = [&](std::size_t back) {
+            return i >= back && frames[i - back].trial_index == f.trial_index &&
+                   frames[i - back].shown == f.shown;
+        };
+        const bool steady = same(1) && same(2);
+        if (!steady || !f.driver_compiles) continue;
+        ++counted;
+        EXPECT_EQ(*f.driver_compiles, 0) << "frame " << f.frame << " " << f.shown;
+    }
+    EXPECT_GT(orientations.size(), frames.size() * 9 / 10) << "the head turns every frame";
+    // Counted at all (an LLVM-based driver such as lavapipe; turning_head_test checks that the
+    // count is live there): then in every steady frame.
+    if (frames.back().driver_compiles) EXPECT_GT(counted, 50);
+}
+
 TEST_F(HeadsetSessionTest, MissedSlotsAreLoggedPerFrameAndFlaggedPerTrial) {
     const fs::path script = dir_ / "late.toml";
     // 5 Hz: the default observer looks for seconds per trial on the virtual clock; fewer frames
-    // per virtual second keep the test short, and 1 in 8 late is still above the 5 % flag.
-    std::ofstream(script) << "hmd = \"vive\"\ndisplay_rate_hz = 5\nmissed_slot_every = 8\n";
+    // per virtual second keep the test short, and 1 in 8 late is still above the 5 % flag. The
+    // head moves as a seated participant's does (the default of `--headset simulated`).
+    std::ofstream(script)
+        << "hmd = \"vive\"\ndisplay_rate_hz = 5\nmissed_slot_every = 8\nhead_motion = \"seated\"\n";
     const fs::path db = dir_ / "late.sqlite";
     std::string output;
     ASSERT_EQ(run(std::string(MONOPLANE_EXE) + " --validation study run --protocol " +
@@ -310,7 +343,12 @@ TEST_F(HeadsetSessionTest, MissedSlotsAreLoggedPerFrameAndFlaggedPerTrial) {
         }
         EXPECT_GT(missed, 10);
         EXPECT_GT(scene_frames, 50);
+        expect_nothing_built_while_the_head_turns(*frames);
     }
+    // The session's summary says so too.
+    EXPECT_NE(output.find("builds while frames ran: 0 pipelines created after the first frame"),
+              std::string::npos)
+        << output;
     const fs::path report = dir_ / "analysis";
     ASSERT_EQ(run(std::string(MONOPLANE_EXE) + " analyze --db " + db.string() + " --out " +
                       report.string(),

@@ -1,6 +1,7 @@
 // simxr's script: values, defaults, located errors, pose interpolation, press windows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -239,6 +240,57 @@ TEST(SimxrScript, PitchLooksUpAndRollTiltsLeft) {
     const Script rolled = parse_ok("[[pose]]\nt = 0\nyaw_pitch_roll_deg = [0, 0, 90]\n");
     const glm::dvec3 right = head_pose_at(rolled, 0.0).orientation * glm::dvec3(1, 0, 0);
     EXPECT_NEAR(right.y, 1.0, 1e-12);
+}
+
+// head_motion = "seated": a seated person's small continuous motion on top of the keyframes.
+// Checked against its stated envelope (yaw up to 9 degrees at up to about 11 degrees a second,
+// pitch 4.5, roll 1, position 3 cm) over ten minutes of 90 Hz frames, independently of its
+// formula: angles from the forward and right vectors, rates from consecutive frames.
+TEST(SimxrScript, SeatedMotionTurnsTheHeadSmallAndContinuously) {
+    EXPECT_EQ(parse_ok("").head_motion, HeadMotion::kStill);
+    const Script script = parse_ok(
+        "head_motion = \"seated\"\n[[pose]]\nt = 0\n"
+        "position = [0.5, 1.2, 0.0]\nyaw_pitch_roll_deg = [90, 0, 0]\n");
+    ASSERT_EQ(script.head_motion, HeadMotion::kSeated);
+    const double frame = 1.0 / 90.0;
+    double max_yaw = 0.0, max_pitch = 0.0, max_roll = 0.0, max_offset = 0.0, max_rate = 0.0;
+    double previous_yaw = 0.0;
+    std::size_t distinct = 0;
+    glm::dquat previous_orientation{1.0, 0.0, 0.0, 0.0};
+    for (int i = 0; i < 90 * 600; ++i) {
+        const rig::Pose pose = head_pose_at(script, i * frame);
+        // In the keyframe's frame: the keyframe turned the head 90 degrees left.
+        const glm::dquat keyed = glm::angleAxis(glm::radians(90.0), glm::dvec3(0, 1, 0));
+        const glm::dquat motion = glm::inverse(keyed) * pose.orientation;
+        const glm::dvec3 forward = motion * glm::dvec3(0, 0, -1);
+        const glm::dvec3 right = motion * glm::dvec3(1, 0, 0);
+        const double yaw = glm::degrees(std::atan2(-forward.x, -forward.z));
+        max_yaw = std::max(max_yaw, std::abs(yaw));
+        max_pitch = std::max(max_pitch, std::abs(glm::degrees(std::asin(forward.y))));
+        max_roll = std::max(max_roll, std::abs(glm::degrees(std::asin(right.y))));
+        max_offset = std::max(max_offset, glm::length(pose.position - glm::dvec3(0.5, 1.2, 0.0)));
+        if (i > 0) max_rate = std::max(max_rate, std::abs(yaw - previous_yaw) / frame);
+        if (i > 0 && pose.orientation != previous_orientation) ++distinct;
+        previous_yaw = yaw;
+        previous_orientation = pose.orientation;
+    }
+    EXPECT_GT(max_yaw, 6.0);  // it does turn, within its envelope
+    EXPECT_LE(max_yaw, 9.0 + 1e-6);
+    EXPECT_GT(max_pitch, 2.0);
+    EXPECT_LE(max_pitch, 4.5 + 0.1);  // pitch measured after yaw: within a tenth of a degree
+    EXPECT_LE(max_roll, 1.0 + 0.1);
+    EXPECT_GT(max_offset, 0.01);
+    EXPECT_LE(max_offset, std::sqrt(0.02 * 0.02 + 0.01 * 0.01 + 0.015 * 0.015) + 1e-12);
+    // The yaw's rate is at most 2 pi (6 * 0.11 + 3 * 0.22 golden) degrees a second: 10.9.
+    EXPECT_LE(max_rate,
+              2.0 * 3.14159265358979 * (6.0 * 0.11 + 3.0 * 0.11 * (1.0 + std::sqrt(5.0))));
+    EXPECT_EQ(distinct, 90u * 600u - 1u);  // every frame a new view
+    // And no view comes back: 100 s later (the period rational frequencies would give) the head
+    // is elsewhere.
+    EXPECT_GT(
+        glm::length(head_pose_at(script, 110.0).position - head_pose_at(script, 10.0).position),
+        1e-4);
+    EXPECT_NE(parse_error("head_motion = \"wobbly\"\n").find("still"), std::string::npos);
 }
 
 TEST(SimxrScript, PressWindowIsHalfOpen) {

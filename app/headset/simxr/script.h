@@ -28,6 +28,13 @@ struct PoseKeyframe {
     glm::dvec3 yaw_pitch_roll_deg{0.0};
 };
 
+// Motion on top of the keyframes: none, or a seated person's small continuous movement (the head
+// turns up to 9 degrees either way, at up to 10.9 degrees a second, nods up to 4.5, tilts 1,
+// and moves up to 3 cm): sums of sines of incommensurate periods, so no two frames of a
+// session see the same view. monoplane's simulated headset uses "seated", so every session test
+// turns the head as participants do.
+enum class HeadMotion { kStill, kSeated };
+
 // A component held down during [t, t + duration).
 struct InputPress {
     double t = 0.0;
@@ -50,6 +57,7 @@ struct Script {
     double exit_after_s = 0.0;        // > 0: runtime-initiated STOPPING at that time
     double lose_session_at_s = 0.0;   // > 0: LOSS_PENDING at that time
     std::vector<PoseKeyframe> poses;  // ascending t; empty: the default keyframe
+    HeadMotion head_motion = HeadMotion::kStill;
     std::vector<InputPress> inputs;
 
     std::int64_t frame_period_ns() const;
@@ -65,7 +73,8 @@ Result<Script> load_script(const std::filesystem::path& path);
 // The script SIMXR_SCRIPT names, or the defaults when it is unset or empty.
 Result<Script> load_script_from_environment();
 
-// The head pose in LOCAL space at script time t (seconds).
+// The head pose in LOCAL space at script time t (seconds): the keyframes', then head_motion in
+// that pose's frame.
 rig::Pose head_pose_at(const Script& script, double t);
 
 // Whether the component at this full path is held down at script time t_ns (nanoseconds; integer

@@ -18,10 +18,10 @@
 namespace monoplane::simxr {
 namespace {
 
-constexpr std::array<std::string_view, 11> kTopLevelKeys = {
+constexpr std::array<std::string_view, 12> kTopLevelKeys = {
     "hmd",      "display_rate_hz", "missed_slot_every", "physical_device",   "interaction_profile",
     "dump_dir", "dump_every",      "exit_after_s",      "lose_session_at_s", "pose",
-    "input"};
+    "input",    "head_motion"};
 constexpr std::array<std::string_view, 3> kPoseKeys = {"t", "position", "yaw_pitch_roll_deg"};
 constexpr std::array<std::string_view, 3> kInputKeys = {"t", "path", "duration"};
 // Above this a frame period is shorter than any display and the rate is a typo (kHz for Hz);
@@ -165,6 +165,15 @@ void read_settings(const Reader& root, const std::filesystem::path& folder, Scri
             root.problem("missed_slot_every", "must be 0 (never) or at least 2 frames");
         } else {
             script.missed_slot_every = *every;
+        }
+    }
+    if (const auto motion = root.string("head_motion")) {
+        if (*motion == "still") {
+            script.head_motion = HeadMotion::kStill;
+        } else if (*motion == "seated") {
+            script.head_motion = HeadMotion::kSeated;
+        } else {
+            root.problem("head_motion", "must be \"still\" or \"seated\"");
         }
     }
     if (const auto every = root.integer("dump_every")) {

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include <glm/ext/quaternion_trigonometric.hpp>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/headset/simxr/script.h"
@@ -25,9 +26,7 @@ std::int64_t to_ns(double seconds) {
     return std::llround(seconds * 1e9);
 }
 
-}  // namespace
-
-rig::Pose head_pose_at(const Script& script, double t) {
+rig::Pose keyframe_pose_at(const Script& script, double t) {
     if (script.poses.empty()) return pose_of(PoseKeyframe{});
     if (t <= script.poses.front().t) return pose_of(script.poses.front());
     for (std::size_t i = 1; i < script.poses.size(); ++i) {
@@ -40,6 +39,36 @@ rig::Pose head_pose_at(const Script& script, double t) {
                 glm::normalize(glm::slerp(pose_of(a).orientation, pose_of(b).orientation, s))};
     }
     return pose_of(script.poses.back());
+}
+
+double wave(double amplitude, double hz, double phase, double t) {
+    return amplitude * std::sin(2.0 * glm::pi<double>() * hz * t + phase);
+}
+
+// HeadMotion::kSeated at time t, in the head's own frame. The frequencies are irrational
+// multiples of the slowest (0.11 Hz, a 9 s look around): with rational ones the motion would
+// repeat (every 100 s for multiples of 0.01 Hz) and a long session would see old views again.
+rig::Pose seated_motion(double t) {
+    constexpr double f = 0.11;
+    const double golden = (1.0 + std::sqrt(5.0)) / 2.0;
+    const glm::dvec3 yaw_pitch_roll_deg{
+        wave(6.0, f, 0.0, t) + wave(3.0, 2.0 * golden * f, 1.3, t),
+        wave(3.0, std::sqrt(3.0) * f, 0.4, t) + wave(1.5, std::sqrt(23.0) * f, 0.0, t),
+        wave(1.0, std::sqrt(4.4) * f, 2.0, t)};
+    const glm::dvec3 offset{wave(0.02, std::sqrt(1.4) * f, 0.7, t),
+                            wave(0.01, std::sqrt(7.0) * f, 0.0, t),
+                            wave(0.015, std::sqrt(2.4) * f, 1.1, t)};
+    return {offset, orientation_of(yaw_pitch_roll_deg)};
+}
+
+}  // namespace
+
+rig::Pose head_pose_at(const Script& script, double t) {
+    const rig::Pose keyed = keyframe_pose_at(script, t);
+    if (script.head_motion == HeadMotion::kStill) return keyed;
+    const rig::Pose motion = seated_motion(t);
+    return {keyed.position + keyed.orientation * motion.position,
+            glm::normalize(keyed.orientation * motion.orientation)};
 }
 
 bool input_pressed_at(const Script& script, std::string_view component_path, std::int64_t t_ns) {
