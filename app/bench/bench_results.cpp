@@ -160,6 +160,16 @@ std::string bench_json(const BenchReport& report) {
         optional_value(j, "time_ratio_p75", run.time_ratio_p75);
         optional_value(j, "primitive_ratio_vs_stereo", run.primitive_ratio);
         optional_value(j, "vertex_invocation_ratio_vs_stereo", run.vertex_invocation_ratio);
+        if (run.turning_frames > 0) {
+            j.value("turning_frames", static_cast<std::uint64_t>(run.turning_frames));
+            optional_value(j, "turning_time_ratio", run.turning_time_ratio);
+            if (run.turning_driver_compiles) {
+                j.value("turning_driver_compiles", *run.turning_driver_compiles);
+            } else {
+                j.null("turning_driver_compiles");
+            }
+            optional_value(j, "turning_compile_share", run.turning_compile_share);
+        }
         if (run.max_channel_difference) {
             j.value("max_channel_difference_vs_stereo", *run.max_channel_difference);
         } else {
@@ -196,7 +206,8 @@ std::string bench_csv(const BenchReport& report) {
            "drift_px,time_ratio_vs_stereo,primitive_ratio_vs_stereo,stereo_pass,"
            "vertex_invocations,geometry_invocations,vertex_invocation_ratio_vs_stereo,"
            "max_channel_difference_vs_stereo,mono_plane_auto,max_error_arcmin,"
-           "visible_error_arcmin";
+           "visible_error_arcmin,turning_time_ratio,turning_driver_compiles,"
+           "turning_compile_share";
     for (const std::string& name : pass_names) csv << ",pass_ms_" << name;
     csv << "\n";
     auto count = [](const std::map<std::string, std::uint64_t>& values, const char* key) {
@@ -218,7 +229,10 @@ std::string bench_csv(const BenchReport& report) {
             << "," << number(run.vertex_invocation_ratio) << ","
             << (run.max_channel_difference ? std::to_string(*run.max_channel_difference) : "")
             << "," << (run.mono_plane_auto ? "TRUE" : "FALSE") << ","
-            << number(run.max_error_arcmin) << "," << number(run.visible_error_arcmin);
+            << number(run.max_error_arcmin) << "," << number(run.visible_error_arcmin) << ","
+            << number(run.turning_time_ratio) << ","
+            << (run.turning_driver_compiles ? std::to_string(*run.turning_driver_compiles) : "")
+            << "," << number(run.turning_compile_share);
         for (const std::string& name : pass_names) {
             const auto found = run.pass_ms_median.find(name);
             csv << ",";

@@ -75,6 +75,15 @@ struct BenchRun {
     std::optional<double> time_ratio_p75;
     std::optional<double> primitive_ratio;
     std::optional<double> vertex_invocation_ratio;  // to the scene's stereo run
+    // The turning-head configuration (--turning-frames): the median ratio of a frame's GPU time
+    // with the head turning (every pose new) to the still frame beside it, and over those
+    // frames the shader modules the driver compiled and the share of the wall time it spent
+    // compiling (none where the driver's compiles cannot be counted). A ratio near 1 and no
+    // compiles: the renderer's cost does not depend on where the head looks.
+    int turning_frames = 0;
+    std::optional<double> turning_time_ratio;
+    std::optional<std::uint64_t> turning_driver_compiles;
+    std::optional<double> turning_compile_share;
     // Auto runs: whether no fixed-m run of the same scene, mode and variant is both faster
     // (median time ratio) and more accurate (visible error), and which are (issue 20's target).
     std::optional<bool> on_fixed_m_frontier;

@@ -28,10 +28,12 @@
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/passes/shared/view_constants.h"
+#include "renderer/profile/driver_compiles.h"
 #include "renderer/quality/channel_difference.h"
 #include "renderer/quality/drift.h"
 #include "renderer/quality/ssim.h"
 #include "renderer/rig/angular_error.h"
+#include "renderer/rig/pose_path.h"
 #include "renderer/vk/context.h"
 #include "scenes/generate.h"
 #include "study/protocol.h"
@@ -65,6 +67,7 @@ struct BenchOptions {
     bool depth_prepass = false;
     AutoMonoPlaneFlags auto_flags;  // the "auto" entry of --mono-planes
     int auto_warmup = 40;           // extra warm-up frames for auto to settle on its m
+    int turning_frames = 0;         // pairs of still and turning-head frames per run (0: none)
     std::string out;
 };
 
@@ -172,6 +175,46 @@ std::uint64_t view_pixels(const modes::ModeRenderer& renderer, const std::string
     return 0;
 }
 
+// The turning-head configuration (--turning-frames): after a run's measured frames, the same
+// renderer alternates the run's still pose with poses along the "turn" path (yaw back and forth
+// at 30 degrees a second, 90 frames a second: every turning pose is new). A turning frame's GPU
+// time over the still frame beside it, median over the pairs; the driver's compiles over those
+// frames where they can be counted, and their share of the wall time. A driver that keys shader
+// variants on view-dependent values compiles on every turning frame and the ratio shows it.
+void measure_turning(modes::ModeRenderer& renderer, const modes::FrameInputs& still, int pairs,
+                     BenchRun& run) {
+    const rig::PosePath turn = *rig::builtin_pose_path("turn");
+    constexpr double kFrameRateHz = 90.0;
+    std::vector<profile::FrameStats> frames;
+    const auto wall_start = std::chrono::steady_clock::now();
+    const profile::DriverCompiles before = profile::driver_compiles();
+    for (int i = 0; i < 2 * pairs; ++i) {
+        modes::FrameInputs inputs = still;
+        if (i % 2 == 1) {
+            inputs.views.head = rig::pose_along(turn, still.views.head, (i / 2 + 1) / kFrameRateHz);
+        }
+        renderer.submit_frame(inputs);
+        for (profile::FrameStats& s : renderer.take_completed()) frames.push_back(std::move(s));
+    }
+    for (profile::FrameStats& s : renderer.finish_frames()) frames.push_back(std::move(s));
+    const double wall_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    const profile::DriverCompiles during =
+        profile::compiles_between(before, profile::driver_compiles());
+    std::vector<double> ratios;
+    for (std::size_t i = 1; i < frames.size(); i += 2) {
+        if (frames[i - 1].gpu_frame_ms > 0.0) {
+            ratios.push_back(frames[i].gpu_frame_ms / frames[i - 1].gpu_frame_ms);
+        }
+    }
+    run.turning_frames = pairs;
+    if (!ratios.empty()) run.turning_time_ratio = percentile(ratios, 0.5);
+    if (during.measurable) {
+        run.turning_driver_compiles = during.modules;
+        run.turning_compile_share = wall_s > 0.0 ? during.seconds / wall_s : 0.0;
+    }
+}
+
 // Warm-up frames (shader compilation, the one-off shadow map, C's allocation), then measured
 // frames without read-back. With a reference renderer (stereo), its frames are interleaved with
 // the measured ones (in alternating order) and the time ratio is the median of the per-pair
@@ -245,6 +288,7 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
         run.view_primitives[v.view] = v.clipping_invocations;
         run.view_draws[v.view] = v.draws;
     }
+    if (o.turning_frames > 0) measure_turning(renderer, inputs, o.turning_frames, run);
     return run;
 }
 
@@ -711,6 +755,12 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
     cmd->add_option("--grazing-deg", options->grazing_deg,
                     "Overlap for surfaces down to this angle to the view rays (0: eps = k s m)")
         ->capture_default_str();
+    cmd->add_option("--turning-frames", options->turning_frames,
+                    "After each run's frames, this many pairs of a still frame and a frame with "
+                    "the head turning (the turn pose path): the time ratio, and the driver's "
+                    "shader compiles where they can be counted (turning_* in bench.json)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1000));
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->callback([options, &global] { run_bench(*options, global); });
 }
