@@ -206,14 +206,15 @@ if(rc EQUAL 0 OR NOT log MATCHES "bad.toml:3" OR NOT log MATCHES "ordr")
   message(FATAL_ERROR "protocol check must name file, line and key (${rc}): ${log}")
 endif()
 
-# The benchmark (DESIGN.md section 8) on a tiny sweep: the files, the keys tools read, one run per
-# configuration, m = far equal to stereo in primitives, and bad input refused.
+# The benchmark on a tiny sweep: the files, the keys tools read, one run per configuration,
+# m = far equal to stereo in primitives, the turning-head pairs compiling nothing in the driver
+# (where counted: lavapipe; else null), and bad input refused.
 set(dir ${OUT}/bench)
 file(REMOVE_RECURSE ${dir})
 execute_process(
   COMMAND ${MONOPLANE} --validation bench --scenes spheres --modes stereo,hybrid,hybrid-farfield
           --mono-planes 3,far --hmd vive --width 64 --height 72 --detail test --frames 1
-          --warmup 0 --out ${dir}
+          --warmup 0 --turning-frames 2 --out ${dir}
   RESULT_VARIABLE rc ERROR_VARIABLE log)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "bench failed (${rc}):\n${log}")
@@ -239,6 +240,14 @@ foreach(i RANGE ${last})
       message(FATAL_ERROR "bench run ${i} lacks '${key}'")
     endif()
   endforeach()
+  string(JSON turning_ratio ERROR_VARIABLE missing GET "${json}" runs ${i} turning_time_ratio)
+  string(JSON compiles ERROR_VARIABLE missing_compiles GET "${json}" runs ${i}
+         turning_driver_compiles)
+  if(missing OR missing_compiles
+     OR NOT (compiles STREQUAL "0" OR compiles STREQUAL "null" OR compiles STREQUAL ""))
+    message(FATAL_ERROR "bench run ${i}: turning_time_ratio '${turning_ratio}', "
+                        "turning_driver_compiles '${compiles}' (expected 0 or null)")
+  endif()
   string(JSON mode GET "${json}" runs ${i} mode)
   string(JSON far GET "${json}" runs ${i} mono_plane_is_far)
   string(JSON primitives GET "${json}" runs ${i} primitives)
