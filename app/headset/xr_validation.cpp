@@ -1,7 +1,9 @@
 #include "app/headset/xr_validation.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
+#include <string_view>
 
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 
@@ -44,6 +46,22 @@ bool extension_offered(const char* layer, const char* name) {
     });
 }
 
+// Whether XR_ENABLE_API_LAYERS (the loader's list, separated by ':') already names the layer:
+// the loader then enables it itself, and naming it again in xrCreateInstance makes Debian 12's
+// loader fail with XR_ERROR_API_LAYER_NOT_PRESENT.
+bool enabled_by_environment(const char* name) {
+    const char* list = std::getenv("XR_ENABLE_API_LAYERS");
+    if (list == nullptr) return false;
+    std::string_view rest(list);
+    while (!rest.empty()) {
+        const std::size_t end = rest.find(':');
+        if (rest.substr(0, end) == name) return true;
+        if (end == std::string_view::npos) break;
+        rest.remove_prefix(end + 1);
+    }
+    return false;
+}
+
 }  // namespace
 
 Result<XrValidation> XrValidation::plan(bool requested) {
@@ -61,7 +79,7 @@ Result<XrValidation> XrValidation::plan(bool requested) {
                      " to receive the OpenXR validation layer's messages, and neither the "
                      "loader nor the layer offers it"};
     }
-    validation.layers_ = {kXrValidationLayer};
+    if (!enabled_by_environment(kXrValidationLayer)) validation.layers_ = {kXrValidationLayer};
     validation.extensions_ = {XR_EXT_DEBUG_UTILS_EXTENSION_NAME};
     return validation;
 }

@@ -29,9 +29,10 @@ class XrValidation {
     // Nothing to enable when not requested. Call before the instance exists.
     static Result<XrValidation> plan(bool requested);
 
+    // The layer, unless XR_ENABLE_API_LAYERS already names it (the loader enables it then).
     const std::vector<const char*>& layers() const { return layers_; }
     const std::vector<const char*>& extensions() const { return extensions_; }
-    bool enabled() const { return !layers_.empty(); }
+    bool enabled() const { return !extensions_.empty(); }
 
     // Creates the messenger on the instance made with layers() and extensions(). Any message at
     // warning severity or above is recorded. Call once, right after xrCreateInstance; the

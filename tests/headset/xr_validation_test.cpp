@@ -89,6 +89,32 @@ TEST_F(XrValidationTest, CleanCallsLeaveNoMessageAndAMisuseIsCounted) {
     EXPECT_EQ(xrDestroyInstance(instance), XR_SUCCESS);
 }
 
+// The layer already enabled through the loader's environment variable (as the OpenXR docs
+// suggest for any application): naming it again made Debian 12's loader refuse the instance
+// (XR_ERROR_API_LAYER_NOT_PRESENT); now it is not named again, and its messages still arrive.
+TEST_F(XrValidationTest, ALayerTheEnvironmentEnablesIsNotNamedTwice) {
+    setenv("XR_ENABLE_API_LAYERS", (std::string("XR_APILAYER_other:") + kXrValidationLayer).c_str(),
+           1);
+    Result<XrValidation> planned = XrValidation::plan(true);
+    ASSERT_TRUE(planned) << planned.error().message;
+    XrValidation validation = std::move(planned.value());
+    EXPECT_TRUE(validation.enabled());
+    EXPECT_TRUE(validation.layers().empty());
+    // The loader warns about the unknown XR_APILAYER_other but creates the instance.
+    setenv("XR_ENABLE_API_LAYERS", kXrValidationLayer, 1);
+    const XrInstance instance = create_instance(validation);
+    unsetenv("XR_ENABLE_API_LAYERS");
+    ASSERT_NE(instance, XR_NULL_HANDLE);
+    ASSERT_TRUE(validation.attach(instance));
+    XrSystemGetInfo system_info{XR_TYPE_SYSTEM_GET_INFO};
+    system_info.formFactor = static_cast<XrFormFactor>(77);
+    XrSystemId system = XR_NULL_SYSTEM_ID;
+    EXPECT_EQ(xrGetSystem(instance, &system_info, &system), XR_ERROR_VALIDATION_FAILURE);
+    EXPECT_GE(validation.messages().count(), 1u);
+    validation.detach();
+    EXPECT_EQ(xrDestroyInstance(instance), XR_SUCCESS);
+}
+
 TEST_F(XrValidationTest, AMissingLayerIsRefusedWithWhatToInstall) {
     // The loader looks for explicit layers only here now: an empty folder.
     setenv("XR_API_LAYER_PATH", dir_.c_str(), 1);
