@@ -64,7 +64,8 @@ void HeadsetFrameLog::count_builds(study::FrameRecord& row) {
     if (frames_ > 0) late_pipelines_ += *row.pipelines_created;
     const auto screen = std::make_pair(row.trial_index, row.shown);
     screen_frames_ = previous_screen_ == screen ? screen_frames_ + 1 : 1;
-    const bool steady = screen_frames_ > kSettlingFrames;
+    const bool scene = row.shown == "label1" || row.shown == "label2";
+    const bool steady = scene && screen_frames_ > kSettlingFrames;
     if (steady) ++steady_frames_;
     if (steady && since.modules > 0) {
         steady_compiles_ += static_cast<std::int64_t>(since.modules);
@@ -86,7 +87,7 @@ std::string HeadsetFrameLog::build_summary() const {
         return out.str();
     }
     out << steady_compiles_ << " driver shader compiles in " << steady_compile_frames_ << " of "
-        << steady_frames_ << " frames that showed what the " << kSettlingFrames
+        << steady_frames_ << " frames of a trial's scene that showed what the " << kSettlingFrames
         << " frames before showed";
     if (steady_compiles_ > 0) {
         out.precision(3);
