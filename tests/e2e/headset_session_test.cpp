@@ -278,7 +278,9 @@ TEST_F(HeadsetSessionTest, LostSessionIsResumable) {
 // frames the renderer builds nothing: no pipeline after the first frame, and no shader the
 // driver compiles (where it can be counted: lavapipe) in a frame of a trial's scene showing what
 // the two frames before it showed.
-void expect_nothing_built_while_the_head_turns(const std::vector<study::FrameRecord>& frames) {
+// distinct_views: the least share of frames whose head orientation no earlier frame had.
+void expect_nothing_built_while_the_head_turns(const std::vector<study::FrameRecord>& frames,
+                                               double distinct_views) {
     std::set<std::array<double, 4>> orientations;
     int counted = 0;
     for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -298,7 +300,9 @@ void expect_nothing_built_while_the_head_turns(const std::vector<study::FrameRec
         ++counted;
         EXPECT_EQ(*f.driver_compiles, 0) << "frame " << f.frame << " " << f.shown;
     }
-    EXPECT_GT(orientations.size(), frames.size() * 9 / 10) << "the head turns every frame";
+    EXPECT_GT(static_cast<double>(orientations.size()),
+              distinct_views * static_cast<double>(frames.size()))
+        << "the head turns";
     // Counted at all (an LLVM-based driver such as lavapipe; turning_head_test checks that the
     // count is live there): then in every steady frame.
     if (frames.back().driver_compiles) EXPECT_GT(counted, 50);
@@ -344,7 +348,7 @@ TEST_F(HeadsetSessionTest, MissedSlotsAreLoggedPerFrameAndFlaggedPerTrial) {
         }
         EXPECT_GT(missed, 10);
         EXPECT_GT(scene_frames, 50);
-        expect_nothing_built_while_the_head_turns(*frames);
+        expect_nothing_built_while_the_head_turns(*frames, 0.9);  // simxr: a new view each frame
     }
     // The session's summary says so too.
     EXPECT_NE(output.find("builds while frames ran: 0 pipelines created after the first frame"),
@@ -393,7 +397,8 @@ TEST_F(HeadsetSessionTest, DemoSessionOnMonado) {
     const auto frames = (*store)->frames(1);
     ASSERT_TRUE(frames) << frames.error().message;
     ASSERT_GT(frames->size(), 60u);
-    expect_nothing_built_while_the_head_turns(*frames);
+    // Monado's simulated HMD wobbles, holding some poses for more than a frame.
+    expect_nothing_built_while_the_head_turns(*frames, 0.25);
 }
 
 TEST(HeadsetWithoutRuntime, ClearMessageAndNonZeroExit) {
