@@ -49,11 +49,12 @@ class HeadsetFrameLog {
     // What frames made the renderer build, for the end of the session: pipelines created after
     // the first logged frame, and the driver's compiles in steady frames (a frame of a trial's
     // scene that shows what the kSettlingFrames frames before it showed: a screen's first frame
-    // may compile what it is the first to draw, and the driver compiles its work while the next
-    // frames are logged, as many as there are frames in flight). Steady compiles stall what the
-    // participant sees while the head turns. (Screens without a scene, such as the
+    // may compile what it is the first to draw, and the driver compiles its work while it runs,
+    // which a renderer with two frames in flight may log up to three frames later: seen on
+    // simxr, the first scene frame's compile landing in the third frame's wait). Steady compiles
+    // stall what the participant sees while the head turns. (Screens without a scene, such as the
     // questionnaire, change what they draw as the participant answers.)
-    static constexpr int kSettlingFrames = 2;
+    static constexpr int kSettlingFrames = 3;
     std::string build_summary() const;
 
   private:
