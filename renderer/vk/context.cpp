@@ -99,169 +99,185 @@ Context::~Context() {
 Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) {
     std::unique_ptr<Context> ctx(new Context());
     try {
-        if (ctx->loader_.enumerateInstanceVersion() < VK_API_VERSION_1_3) {
-            return Error{"the Vulkan loader is older than 1.3; install libvulkan1 from Debian 12"};
-        }
-        std::vector<const char*> layers;
-        std::vector<const char*> extensions;
-        if (options.validation) {
-            if (!has_layer(ctx->loader_, kValidationLayer)) {
-                return Error{std::string("validation requested but ") + kValidationLayer +
-                             " is not installed (apt-get install vulkan-validationlayers)"};
-            }
-            layers.push_back(kValidationLayer);
-            extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-        }
-        if (auto missing = add_extensions(options.instance_extensions,
-                                          ctx->loader_.enumerateInstanceExtensionProperties(),
-                                          "instance", extensions)) {
-            return *missing;
-        }
-        const vk::ApplicationInfo app_info("monoplane", 1, "monoplane", 1, VK_API_VERSION_1_3);
-        const vk::InstanceCreateInfo instance_info({}, &app_info, layers, extensions);
-        if (options.hooks.create_instance) {
-            Result<VkInstance> handle = options.hooks.create_instance(
-                static_cast<const VkInstanceCreateInfo&>(instance_info));
-            if (!handle) return handle.error();
-            ctx->instance_ = vk::raii::Instance(ctx->loader_, *handle);
-        } else {
-            ctx->instance_ = vk::raii::Instance(ctx->loader_, instance_info);
-        }
-
-        if (options.validation) {
-            using Severity = vk::DebugUtilsMessageSeverityFlagBitsEXT;
-            using Type = vk::DebugUtilsMessageTypeFlagBitsEXT;
-            const vk::DebugUtilsMessengerCreateInfoEXT messenger_info(
-                {}, Severity::eWarning | Severity::eError,
-                Type::eGeneral | Type::eValidation | Type::ePerformance, &on_debug_message,
-                ctx->validation_messages_.get());
-            ctx->messenger_ = vk::raii::DebugUtilsMessengerEXT(ctx->instance_, messenger_info);
-        }
-
-        const std::vector<DeviceInfo> devices = describe_devices(ctx->instance_);
-        Result<int> chosen =
-            options.hooks.physical_device
-                ? named_device(ctx->instance_, devices, options.hooks.physical_device)
-                : select_device(devices, options.device_selector);
-        if (!chosen) return chosen.error();
-        ctx->device_info_ = devices[*chosen];
-        ctx->physical_device_ = std::move(vk::raii::PhysicalDevices(ctx->instance_)[*chosen]);
-        ctx->queue_family_ = find_queue_family(ctx->physical_device_);
-
-        const auto supported =
-            ctx->physical_device_
-                .getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features,
-                              vk::PhysicalDeviceVulkan12Features>();
-        const bool timeline_semaphore =
-            supported.get<vk::PhysicalDeviceVulkan12Features>().timelineSemaphore;
-        const auto& f10 = supported.get<vk::PhysicalDeviceFeatures2>().features;
-        const auto& f11 = supported.get<vk::PhysicalDeviceVulkan11Features>();
-        if (!supported.get<vk::PhysicalDeviceVulkan12Features>().drawIndirectCount) {
-            return Error{"device '" + ctx->device_info_.name +
-                         "' lacks drawIndirectCount (Vulkan 1.2), which the GPU culling needs; "
-                         "choose another with --device (see `monoplane devices`)"};
-        }
-        DeviceCapabilities& caps = ctx->capabilities_;
-        caps.pipeline_statistics = f10.pipelineStatisticsQuery;
-        caps.geometry_shader = f10.geometryShader;
-        caps.multiview = f11.multiview;
-        const auto device_extensions = ctx->physical_device_.enumerateDeviceExtensionProperties();
-        caps.conditional_rendering = std::any_of(
-            device_extensions.begin(), device_extensions.end(), [](const auto& extension) {
-                return std::string_view(extension.extensionName) ==
-                       VK_EXT_CONDITIONAL_RENDERING_EXTENSION_NAME;
-            });
-        const auto properties = ctx->physical_device_.getProperties();
-        caps.timestamp_period_ns = properties.limits.timestampPeriod;
-        caps.max_sampler_anisotropy =
-            f10.samplerAnisotropy ? properties.limits.maxSamplerAnisotropy : 1.0f;
-        caps.draw_indirect_first_instance = f10.drawIndirectFirstInstance;
-        caps.max_image_dimension_2d = properties.limits.maxImageDimension2D;
-        caps.max_image_array_layers = properties.limits.maxImageArrayLayers;
-        caps.timestamp_valid_bits =
-            ctx->physical_device_.getQueueFamilyProperties()[ctx->queue_family_].timestampValidBits;
-
-        // Vulkan 1.2's features are asked for through their own structures, not through
-        // VkPhysicalDeviceVulkan12Features: an OpenXR runtime's xrCreateVulkanDeviceKHR may add
-        // VkPhysicalDeviceTimelineSemaphoreFeatures to this chain (Monado does unless the chain
-        // has one), and next to VkPhysicalDeviceVulkan12Features that is invalid
-        // (VUID-VkDeviceCreateInfo-pNext-02830). So the chain carries that structure itself,
-        // with timeline semaphores on where the device has them (what such runtimes want).
-        vk::StructureChain<
-            vk::DeviceCreateInfo, vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features,
-            vk::PhysicalDeviceHostQueryResetFeatures, vk::PhysicalDeviceTimelineSemaphoreFeatures,
-            vk::PhysicalDeviceVulkan12Features, vk::PhysicalDeviceVulkan13Features,
-            vk::PhysicalDeviceConditionalRenderingFeaturesEXT>
-            chain;
-        vk::PhysicalDeviceFeatures& enable10 = chain.get<vk::PhysicalDeviceFeatures2>().features;
-        enable10.multiDrawIndirect = VK_TRUE;
-        enable10.drawIndirectFirstInstance = f10.drawIndirectFirstInstance;
-        enable10.pipelineStatisticsQuery = f10.pipelineStatisticsQuery;
-        enable10.geometryShader = f10.geometryShader;
-        enable10.depthClamp = f10.depthClamp;
-        enable10.samplerAnisotropy = f10.samplerAnisotropy;
-        chain.get<vk::PhysicalDeviceVulkan11Features>().multiview = f11.multiview;
-        chain.get<vk::PhysicalDeviceHostQueryResetFeatures>().hostQueryReset = VK_TRUE;
-        chain.get<vk::PhysicalDeviceTimelineSemaphoreFeatures>().timelineSemaphore =
-            timeline_semaphore;
-        // The GPU culling writes each view's draw count: Vulkan 1.2's optional drawIndirectCount,
-        // which has no structure of its own outside VkPhysicalDeviceVulkan12Features; enabling
-        // VK_KHR_draw_indirect_count, which devices with the feature offer, enables it. A device
-        // without the extension gets VkPhysicalDeviceVulkan12Features instead.
-        std::vector<const char*> device_extension_names;
-        if (has_extension(device_extensions, VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME)) {
-            device_extension_names.push_back(VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME);
-            chain.unlink<vk::PhysicalDeviceVulkan12Features>();
-        } else {
-            auto& enable12 = chain.get<vk::PhysicalDeviceVulkan12Features>();
-            enable12.drawIndirectCount = VK_TRUE;
-            enable12.hostQueryReset = VK_TRUE;
-            enable12.timelineSemaphore = timeline_semaphore;
-            chain.unlink<vk::PhysicalDeviceHostQueryResetFeatures>();
-            chain.unlink<vk::PhysicalDeviceTimelineSemaphoreFeatures>();
-        }
-        if (auto missing = add_extensions(options.device_extensions, device_extensions, "device",
-                                          device_extension_names)) {
-            return *missing;
-        }
-        if (caps.conditional_rendering) {
-            chain.get<vk::PhysicalDeviceConditionalRenderingFeaturesEXT>().conditionalRendering =
-                VK_TRUE;
-            device_extension_names.push_back(VK_EXT_CONDITIONAL_RENDERING_EXTENSION_NAME);
-        } else {
-            chain.unlink<vk::PhysicalDeviceConditionalRenderingFeaturesEXT>();
-        }
-        chain.get<vk::DeviceCreateInfo>().setPEnabledExtensionNames(device_extension_names);
-        chain.get<vk::PhysicalDeviceVulkan13Features>().dynamicRendering = VK_TRUE;
-        chain.get<vk::PhysicalDeviceVulkan13Features>().synchronization2 = VK_TRUE;
-        // Required by Vulkan 1.3; glslc expresses compute local sizes with LocalSizeId for it.
-        chain.get<vk::PhysicalDeviceVulkan13Features>().maintenance4 = VK_TRUE;
-
-        const float priority = 1.0f;
-        const vk::DeviceQueueCreateInfo queue_info({}, ctx->queue_family_, 1, &priority);
-        chain.get<vk::DeviceCreateInfo>().setQueueCreateInfos(queue_info);
-        if (options.hooks.create_device) {
-            Result<VkDevice> handle = options.hooks.create_device(
-                *ctx->physical_device_,
-                static_cast<const VkDeviceCreateInfo&>(chain.get<vk::DeviceCreateInfo>()));
-            if (!handle) return handle.error();
-            ctx->device_ = vk::raii::Device(ctx->physical_device_, *handle);
-        } else {
-            ctx->device_ =
-                vk::raii::Device(ctx->physical_device_, chain.get<vk::DeviceCreateInfo>());
-        }
-        ctx->device_extensions_.assign(device_extension_names.begin(),
-                                       device_extension_names.end());
-        ctx->queue_ = vk::raii::Queue(ctx->device_, ctx->queue_family_, 0);
-        ctx->command_pool_ = vk::raii::CommandPool(
-            ctx->device_,
-            vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eTransient |
-                                          vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
-                                      ctx->queue_family_));
+        if (auto error = ctx->create_instance(options)) return *error;
+        if (auto error = ctx->choose_device(options)) return *error;
+        if (auto error = ctx->create_device(options)) return *error;
     } catch (const vk::SystemError& e) {
         return Error{std::string("Vulkan initialisation failed: ") + e.what()};
     }
     return ctx;
+}
+
+std::optional<Error> Context::create_instance(const ContextOptions& options) {
+    if (loader_.enumerateInstanceVersion() < VK_API_VERSION_1_3) {
+        return Error{"the Vulkan loader is older than 1.3; install libvulkan1 from Debian 12"};
+    }
+    std::vector<const char*> layers;
+    std::vector<const char*> extensions;
+    if (options.validation) {
+        if (!has_layer(loader_, kValidationLayer)) {
+            return Error{std::string("validation requested but ") + kValidationLayer +
+                         " is not installed (apt-get install vulkan-validationlayers)"};
+        }
+        layers.push_back(kValidationLayer);
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    }
+    if (auto missing = add_extensions(options.instance_extensions,
+                                      loader_.enumerateInstanceExtensionProperties(), "instance",
+                                      extensions)) {
+        return *missing;
+    }
+    const vk::ApplicationInfo app_info("monoplane", 1, "monoplane", 1, VK_API_VERSION_1_3);
+    const vk::InstanceCreateInfo instance_info({}, &app_info, layers, extensions);
+    if (options.hooks.create_instance) {
+        Result<VkInstance> handle =
+            options.hooks.create_instance(static_cast<const VkInstanceCreateInfo&>(instance_info));
+        if (!handle) return handle.error();
+        instance_ = vk::raii::Instance(loader_, *handle);
+    } else {
+        instance_ = vk::raii::Instance(loader_, instance_info);
+    }
+
+    if (options.validation) {
+        using Severity = vk::DebugUtilsMessageSeverityFlagBitsEXT;
+        using Type = vk::DebugUtilsMessageTypeFlagBitsEXT;
+        const vk::DebugUtilsMessengerCreateInfoEXT messenger_info(
+            {}, Severity::eWarning | Severity::eError,
+            Type::eGeneral | Type::eValidation | Type::ePerformance, &on_debug_message,
+            validation_messages_.get());
+        messenger_ = vk::raii::DebugUtilsMessengerEXT(instance_, messenger_info);
+    }
+    return std::nullopt;
+}
+
+std::optional<Error> Context::choose_device(const ContextOptions& options) {
+    const std::vector<DeviceInfo> devices = describe_devices(instance_);
+    Result<int> chosen = options.hooks.physical_device
+                             ? named_device(instance_, devices, options.hooks.physical_device)
+                             : select_device(devices, options.device_selector);
+    if (!chosen) return chosen.error();
+    device_info_ = devices[*chosen];
+    physical_device_ = std::move(vk::raii::PhysicalDevices(instance_)[*chosen]);
+    queue_family_ = find_queue_family(physical_device_);
+
+    const auto supported =
+        physical_device_
+            .getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features,
+                          vk::PhysicalDeviceVulkan12Features>();
+    const auto& f10 = supported.get<vk::PhysicalDeviceFeatures2>().features;
+    const auto& f11 = supported.get<vk::PhysicalDeviceVulkan11Features>();
+    if (!supported.get<vk::PhysicalDeviceVulkan12Features>().drawIndirectCount) {
+        return Error{"device '" + device_info_.name +
+                     "' lacks drawIndirectCount (Vulkan 1.2), which the GPU culling needs; "
+                     "choose another with --device (see `monoplane devices`)"};
+    }
+    DeviceCapabilities& caps = capabilities_;
+    caps.pipeline_statistics = f10.pipelineStatisticsQuery;
+    caps.geometry_shader = f10.geometryShader;
+    caps.multiview = f11.multiview;
+    const auto device_extensions = physical_device_.enumerateDeviceExtensionProperties();
+    caps.conditional_rendering =
+        std::any_of(device_extensions.begin(), device_extensions.end(), [](const auto& extension) {
+            return std::string_view(extension.extensionName) ==
+                   VK_EXT_CONDITIONAL_RENDERING_EXTENSION_NAME;
+        });
+    const auto properties = physical_device_.getProperties();
+    caps.timestamp_period_ns = properties.limits.timestampPeriod;
+    caps.max_sampler_anisotropy =
+        f10.samplerAnisotropy ? properties.limits.maxSamplerAnisotropy : 1.0f;
+    caps.draw_indirect_first_instance = f10.drawIndirectFirstInstance;
+    caps.max_image_dimension_2d = properties.limits.maxImageDimension2D;
+    caps.max_image_array_layers = properties.limits.maxImageArrayLayers;
+    caps.timestamp_valid_bits =
+        physical_device_.getQueueFamilyProperties()[queue_family_].timestampValidBits;
+    return std::nullopt;
+}
+
+std::optional<Error> Context::create_device(const ContextOptions& options) {
+    const auto supported =
+        physical_device_
+            .getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features,
+                          vk::PhysicalDeviceVulkan12Features>();
+    const bool timeline_semaphore =
+        supported.get<vk::PhysicalDeviceVulkan12Features>().timelineSemaphore;
+    const auto& f10 = supported.get<vk::PhysicalDeviceFeatures2>().features;
+    const auto& f11 = supported.get<vk::PhysicalDeviceVulkan11Features>();
+    const auto device_extensions = physical_device_.enumerateDeviceExtensionProperties();
+    const DeviceCapabilities& caps = capabilities_;
+    // Vulkan 1.2's features are asked for through their own structures, not through
+    // VkPhysicalDeviceVulkan12Features: an OpenXR runtime's xrCreateVulkanDeviceKHR may add
+    // VkPhysicalDeviceTimelineSemaphoreFeatures to this chain (Monado does unless the chain
+    // has one), and next to VkPhysicalDeviceVulkan12Features that is invalid
+    // (VUID-VkDeviceCreateInfo-pNext-02830). So the chain carries that structure itself,
+    // with timeline semaphores on where the device has them (what such runtimes want).
+    vk::StructureChain<vk::DeviceCreateInfo, vk::PhysicalDeviceFeatures2,
+                       vk::PhysicalDeviceVulkan11Features, vk::PhysicalDeviceHostQueryResetFeatures,
+                       vk::PhysicalDeviceTimelineSemaphoreFeatures,
+                       vk::PhysicalDeviceVulkan12Features, vk::PhysicalDeviceVulkan13Features,
+                       vk::PhysicalDeviceConditionalRenderingFeaturesEXT>
+        chain;
+    vk::PhysicalDeviceFeatures& enable10 = chain.get<vk::PhysicalDeviceFeatures2>().features;
+    enable10.multiDrawIndirect = VK_TRUE;
+    enable10.drawIndirectFirstInstance = f10.drawIndirectFirstInstance;
+    enable10.pipelineStatisticsQuery = f10.pipelineStatisticsQuery;
+    enable10.geometryShader = f10.geometryShader;
+    enable10.depthClamp = f10.depthClamp;
+    enable10.samplerAnisotropy = f10.samplerAnisotropy;
+    chain.get<vk::PhysicalDeviceVulkan11Features>().multiview = f11.multiview;
+    chain.get<vk::PhysicalDeviceHostQueryResetFeatures>().hostQueryReset = VK_TRUE;
+    chain.get<vk::PhysicalDeviceTimelineSemaphoreFeatures>().timelineSemaphore = timeline_semaphore;
+    // The GPU culling writes each view's draw count: Vulkan 1.2's optional drawIndirectCount,
+    // which has no structure of its own outside VkPhysicalDeviceVulkan12Features; enabling
+    // VK_KHR_draw_indirect_count, which devices with the feature offer, enables it. A device
+    // without the extension gets VkPhysicalDeviceVulkan12Features instead.
+    std::vector<const char*> device_extension_names;
+    if (has_extension(device_extensions, VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME)) {
+        device_extension_names.push_back(VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME);
+        chain.unlink<vk::PhysicalDeviceVulkan12Features>();
+    } else {
+        auto& enable12 = chain.get<vk::PhysicalDeviceVulkan12Features>();
+        enable12.drawIndirectCount = VK_TRUE;
+        enable12.hostQueryReset = VK_TRUE;
+        enable12.timelineSemaphore = timeline_semaphore;
+        chain.unlink<vk::PhysicalDeviceHostQueryResetFeatures>();
+        chain.unlink<vk::PhysicalDeviceTimelineSemaphoreFeatures>();
+    }
+    if (auto missing = add_extensions(options.device_extensions, device_extensions, "device",
+                                      device_extension_names)) {
+        return *missing;
+    }
+    if (caps.conditional_rendering) {
+        chain.get<vk::PhysicalDeviceConditionalRenderingFeaturesEXT>().conditionalRendering =
+            VK_TRUE;
+        device_extension_names.push_back(VK_EXT_CONDITIONAL_RENDERING_EXTENSION_NAME);
+    } else {
+        chain.unlink<vk::PhysicalDeviceConditionalRenderingFeaturesEXT>();
+    }
+    chain.get<vk::DeviceCreateInfo>().setPEnabledExtensionNames(device_extension_names);
+    chain.get<vk::PhysicalDeviceVulkan13Features>().dynamicRendering = VK_TRUE;
+    chain.get<vk::PhysicalDeviceVulkan13Features>().synchronization2 = VK_TRUE;
+    // Required by Vulkan 1.3; glslc expresses compute local sizes with LocalSizeId for it.
+    chain.get<vk::PhysicalDeviceVulkan13Features>().maintenance4 = VK_TRUE;
+
+    const float priority = 1.0f;
+    const vk::DeviceQueueCreateInfo queue_info({}, queue_family_, 1, &priority);
+    chain.get<vk::DeviceCreateInfo>().setQueueCreateInfos(queue_info);
+    if (options.hooks.create_device) {
+        Result<VkDevice> handle = options.hooks.create_device(
+            *physical_device_,
+            static_cast<const VkDeviceCreateInfo&>(chain.get<vk::DeviceCreateInfo>()));
+        if (!handle) return handle.error();
+        device_ = vk::raii::Device(physical_device_, *handle);
+    } else {
+        device_ = vk::raii::Device(physical_device_, chain.get<vk::DeviceCreateInfo>());
+    }
+    device_extensions_.assign(device_extension_names.begin(), device_extension_names.end());
+    queue_ = vk::raii::Queue(device_, queue_family_, 0);
+    command_pool_ = vk::raii::CommandPool(
+        device_, vk::CommandPoolCreateInfo(vk::CommandPoolCreateFlagBits::eTransient |
+                                               vk::CommandPoolCreateFlagBits::eResetCommandBuffer,
+                                           queue_family_));
+    return std::nullopt;
 }
 
 bool Context::has_device_extension(std::string_view name) const {

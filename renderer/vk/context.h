@@ -4,6 +4,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <mutex>
 #include <string>
 #include <string_view>
@@ -99,6 +100,10 @@ class Context {
 
   private:
     Context() = default;
+    // The steps of create(), in order; each fills its members or says why it cannot.
+    std::optional<Error> create_instance(const ContextOptions& options);
+    std::optional<Error> choose_device(const ContextOptions& options);  // and its capabilities
+    std::optional<Error> create_device(const ContextOptions& options);
 
     vk::raii::Context loader_;
     vk::raii::Instance instance_{nullptr};
