@@ -1,7 +1,7 @@
 // The analysis's input: plain rows, one per trial and one per questionnaire answer, whatever file
 // they came from. The app converts a study database into these rows; read_export_csv() reads the
 // CSV of `monoplane study export`. Keeping the rows plain keeps analysis/ free of the study
-// library, SQLite and the renderer (DESIGN.md section 1).
+// library, SQLite and the renderer (docs/architecture.md).
 #pragma once
 
 #include <cstdint>

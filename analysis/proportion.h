@@ -3,7 +3,7 @@
 // 452 SPHERES decisions for hybrid).
 //
 // Error channel: the counts come from the study database or a validated export, never straight
-// from a user, so invalid arguments are programming errors (DESIGN.md section 10). They are
+// from a user, so invalid arguments are programming errors. They are
 // checked in every build type, not only with asserts on: a violated precondition prints the
 // reason and aborts, instead of returning a NaN that could end up in a report. Callers holding
 // untrusted counts check is_valid() first.

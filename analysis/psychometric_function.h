@@ -1,4 +1,4 @@
-// The 2AFC psychometric function of DESIGN.md section 7 and its maximum-likelihood fit:
+// The 2AFC psychometric function and its maximum-likelihood fit (docs/analysis.md):
 //
 //     P(reference chosen at m) = 0.5 + (0.5 - lapse) / (1 + (m / threshold)^slope)
 //

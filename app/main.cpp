@@ -1,5 +1,5 @@
 // monoplane: hybrid mono-stereo rendering for VR perception studies (see README.md).
-// Exceptions end here: a user error prints its message and exits 1 (DESIGN.md section 10).
+// Exceptions end here: a user error prints its message and exits 1.
 #include <iostream>
 
 #include <CLI/CLI.hpp>

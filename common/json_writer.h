@@ -1,6 +1,6 @@
 // A minimal JSON writer: objects, arrays, strings and numbers, with correct escaping and no NaN
 // (JSON has none, so a non-finite number is written null). Shared by the CLI's --json output (one
-// line, DESIGN.md section 8) and the analysis report's summary.json (indented, every digit kept).
+// line) and the analysis report's summary.json (indented, every digit kept).
 // Numbers are formatted with std::to_chars, so the text is the same on every platform and locale.
 // Output keys written with it are part of the public interface.
 #pragma once

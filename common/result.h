@@ -1,4 +1,4 @@
-// Runtime-failure channel (DESIGN.md section 10): functions that can fail because of the user's
+// Runtime-failure channel: functions that can fail because of the user's
 // input or the machine (bad file, no device) return Result<T>; programming errors assert.
 #pragma once
 

@@ -1,6 +1,6 @@
-// Which scene names are files (DESIGN.md section 5, "Imported scenes"): one rule for the command
+// Which scene names are files (docs/scenes.md, "Imported scenes"): one rule for the command
 // line (app/commands/scene_source.h) and for study protocols (study/scene_files.h), which may not
-// include each other's headers (DESIGN.md section 1).
+// include each other's headers (docs/architecture.md).
 #pragma once
 
 #include <algorithm>

@@ -1,8 +1,8 @@
-// HMD profiles (DESIGN.md section 4): a headset's per-eye frusta, per-eye render-target size and
+// HMD profiles: a headset's per-eye frusta, per-eye render-target size and
 // default IPD, read from TOML. Built-ins (vive, vive-pro, symmetric-90, symmetric-110, canted-15)
 // are compiled in from hmd/profiles/; a file path is accepted anywhere a built-in name is.
 //
-// Tangent convention: OpenXR's XrFovf angles through tan (DESIGN.md section 2), +y up, so
+// Tangent convention: OpenXR's XrFovf angles through tan, +y up, so
 // tan_left < 0 < tan_right and tan_down < 0 < tan_up. OpenVR's GetProjectionRaw reports top and
 // bottom in a y-down frame; the values Fink et al. 2019 quote for the Vive (t = -1.464287,
 // b = 1.468819 for the left eye) are GetProjectionRaw's, so a profile stores tan_up = -t and

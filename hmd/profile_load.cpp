@@ -1,5 +1,4 @@
-// Finding an HMD profile by built-in name or file path (DESIGN.md section 4: "a path accepted
-// anywhere a name is").
+// Finding an HMD profile by built-in name or file path (a path is accepted anywhere a name is).
 #include <cerrno>
 #include <cstring>
 #include <filesystem>

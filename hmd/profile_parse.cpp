@@ -1,5 +1,5 @@
-// Parsing and validation of HMD profile TOML (DESIGN.md section 4). Every value the rig will use
-// is checked here, so the rig may assert on its inputs instead of re-validating them.
+// Parsing and validation of HMD profile TOML. Every value the rig will use is checked here, so
+// the rig may assert on its inputs instead of re-validating them.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -155,7 +155,7 @@ std::optional<double> read_tangent(const TomlScope& eye, const TangentRule& rule
 constexpr double kMaxCantDegrees = 45.0;
 
 // cant_deg: the eye's yaw about the head's +y axis in degrees, positive turning it left
-// (DESIGN.md section 4); 0 when absent.
+// (docs/headsets.md, "Canted headsets"); 0 when absent.
 std::optional<double> read_cant(const TomlScope& eye, TomlProblems& problems) {
     const toml::node* node = eye.table.get("cant_deg");
     if (node == nullptr) return 0.0;

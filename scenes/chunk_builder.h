@@ -1,6 +1,6 @@
 // Collects a scene's geometry as small pieces (one object, one beam section, one terrain tile)
 // and groups nearby pieces into chunks of a bounded triangle count: the unit of culling and of
-// indirect draws (DESIGN.md section 5; the paper's Sect. 5 needs a fine-grained subdivision).
+// indirect draws (the paper's Sect. 5 needs a fine-grained subdivision).
 #pragma once
 
 #include <cstdint>

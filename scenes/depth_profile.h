@@ -1,5 +1,5 @@
-// How a scene's geometry spreads over the mono-plane distances seen from one eye (DESIGN.md
-// section 5, papers/000 Sect. 6: "geometry which is uniformly distributed across space"): for
+// How a scene's geometry spreads over the mono-plane distances seen from one eye (docs/scenes.md,
+// papers/000 Sect. 6: "geometry which is uniformly distributed across space"): for
 // each distance m, the fraction of the triangles in view, and of the pixels, nearer than m.
 // Pure CPU math on the scene model: no Vulkan, no I/O.
 #pragma once

@@ -1,5 +1,5 @@
 // The scenes library's public entry: procedural BEAMS, LANDSCAPE and SPHERES scenes
-// (DESIGN.md section 5), deterministic from a seed, with names for the CLI and the study.
+// (docs/scenes.md), deterministic from a seed, with names for the CLI and the study.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-// The scene model shared by generators, culling and the renderer (DESIGN.md section 5).
+// The scene model shared by generators, culling and the renderer.
 // World frame: metres, +y up; a participant at a scene's default viewpoint looks down -z.
 // Triangles wind counter-clockwise seen from the side their vertex normals point to (right-handed:
 // cross(b - a, c - a) agrees with the normals), so back-face culling may be enabled.

@@ -1,4 +1,4 @@
-// An adaptive procedure (issue 21, DESIGN.md section 7 "Procedures"): one scene's staircase. It
+// An adaptive procedure (issue 21): one scene's staircase. It
 // says where the next trial's mono plane goes and learns from each answer. Its whole state is a
 // function of the answers recorded in order, so a resumed session rebuilds it by recording the
 // stored decisions again (replay, study/staircases.h); nothing it knows lives only in memory.

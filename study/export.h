@@ -1,4 +1,4 @@
-// Export of the study database (DESIGN.md section 7): one tidy row per trial, identity columns
+// Export of the study database: one tidy row per trial, identity columns
 // first, as CSV or JSON that pandas and R read without options. docs/data.md lists every column
 // with its type and unit.
 //

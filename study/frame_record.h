@@ -1,4 +1,4 @@
-// A row of the frame and head log (DESIGN.md section 7; docs/data.md, table frames).
+// A row of the frame and head log (docs/data.md, table frames).
 #pragma once
 
 #include <array>
@@ -8,7 +8,7 @@
 
 namespace monoplane::study {
 
-// One displayed frame of a headset session: the frame and head log (DESIGN.md section 7).
+// One displayed frame of a headset session: the frame and head log.
 struct FrameRecord {
     std::int64_t frame = 0;          // the runtime's frame index (HeadsetFrame::index)
     std::optional<int> trial_index;  // none outside a trial

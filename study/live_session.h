@@ -1,4 +1,4 @@
-// A session driven frame by frame by a display and live input (DESIGN.md section 7): the headset
+// A session driven frame by frame by a display and live input: the headset
 // path of `study run`. Between trials, and before the first, a neutral screen; then each trial of
 // the stored schedule through the 2AFC state machine; then the questionnaire, answered one item
 // at a time on a Likert scale (switch moves the selection, confirm accepts it) or all at once by

@@ -1,4 +1,4 @@
-// Simulated observers (DESIGN.md section 7). Each trial's plan is drawn from its own stream of the
+// Simulated observers. Each trial's plan is drawn from its own stream of the
 // seed, keyed by the trial's index, so a resumed session replays the plans of the interrupted one
 // and the order in which trials are planned does not matter.
 //

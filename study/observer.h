@@ -1,4 +1,4 @@
-// The simulated observer (DESIGN.md section 7): a seeded model participant whose preference for
+// The simulated observer: a seeded model participant whose preference for
 // the reference alternative grows with the trial's projection error, with switch counts and dwell
 // times drawn from simple distributions. Used by tests, demos and power analysis; with a headset
 // the same plan drives the input path a controller would.

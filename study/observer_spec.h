@@ -1,4 +1,4 @@
-// The specification of a psychometric simulated observer (issue 21, DESIGN.md section 7):
+// The specification of a psychometric simulated observer (issue 21):
 // `psychometric:threshold=T,slope=B,lapse=L`, the observer that chooses the reference with the
 // probability study/psychometric.h gives at the trial's m. Its known threshold is what the
 // staircase validation (`simulate`) compares estimates with.

@@ -1,4 +1,4 @@
-// Parsing and validation of study protocols (DESIGN.md section 7). Everything a session will rely
+// Parsing and validation of study protocols. Everything a session will rely
 // on is checked here, before the first trial: a mistake found halfway through a participant's
 // session costs the participant. Every reader records its problems and goes on, so the user sees
 // all of them at once, each with file, line, column and key.

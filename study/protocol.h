@@ -1,4 +1,4 @@
-// A study protocol (DESIGN.md section 7): which scenes, distances and alternatives, in what order,
+// A study protocol: which scenes, distances and alternatives, in what order,
 // with how many practice trials and which questionnaire. Parsed from TOML and validated before
 // anything runs; every problem names the file, the line and the key.
 #pragma once
@@ -34,7 +34,7 @@ struct Questionnaire {
     int scale_points = 7;            // answers 1..scale_points
 };
 
-// How every trial is rendered (the protocol's [render] table, DESIGN.md section 7): part of the
+// How every trial is rendered (the protocol's [render] table, docs/headsets.md): part of the
 // protocol because participants compare images, and papers/000 rendered its study with TAA, so
 // aliasing that differs between the alternatives would confound the choices. Names as the render
 // command takes them; study/ stays free of renderer types.
@@ -67,7 +67,7 @@ struct Protocol {
     FirstSceneBalance first_scene = FirstSceneBalance::LatinSquare;
     bool require_both_viewed = true;
     int practice_trials = 2;
-    double near = 0.1;  // clip range the conditions are rendered with (DESIGN.md section 2)
+    double near = 0.1;  // clip range the conditions are rendered with (papers/000 Sect. 5.1)
     double far = 1000.0;
     Questionnaire questionnaire;
     RenderSettings render;

@@ -1,8 +1,8 @@
-// The protocol's `procedure` key and [staircase] table (issue 21, DESIGN.md section 7
-// "Procedures"): whether each scene is shown once at every listed distance (constant, papers/000's
-// design) or an adaptive procedure places each next trial's mono plane from the participant's
-// earlier answers. Plain data, validated with located errors like the rest of the protocol; the
-// procedures themselves are in study/quest_plus.h and study/weighted_up_down.h.
+// The protocol's `procedure` key and [staircase] table (issue 21): whether each scene is shown
+// once at every listed distance (constant, papers/000's design) or an adaptive procedure places
+// each next trial's mono plane from the participant's earlier answers. Plain data, validated with
+// located errors like the rest of the protocol; the procedures themselves are in study/quest_plus.h
+// and study/weighted_up_down.h.
 #pragma once
 
 #include <array>

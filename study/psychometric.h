@@ -1,10 +1,10 @@
-// The 2AFC psychometric function of DESIGN.md section 7, for the study's side: the simulated
+// The 2AFC psychometric function (docs/analysis.md), for the study's side: the simulated
 // observer that answers by it and the QUEST+ staircase that assumes it.
 //
 //     P(reference chosen at m) = 0.5 + (0.5 - lapse) / (1 + (m / threshold)^slope)
 //
 // analysis/psychometric_function.h fits the same function to recorded choices; study/ may not
-// include analysis/ (DESIGN.md section 1), and the two are checked against each other by tests.
+// include analysis/ (docs/architecture.md), and the two are checked against each other by tests.
 #pragma once
 
 namespace monoplane::study {

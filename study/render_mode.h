@@ -1,4 +1,4 @@
-// The render modes a study can compare (DESIGN.md section 6), by the names the CLI, protocol
+// The render modes a study can compare, by the names the CLI, protocol
 // files and the database use. The study only names them; the app maps them to renderer modes.
 #pragma once
 

@@ -1,5 +1,5 @@
-// The glTF files a study protocol's scenes may name (DESIGN.md section 5, "Imported scenes";
-// docs/scenes.md, "glTF scenes in a study"): which entries are files, where they resolve, the
+// The glTF files a study protocol's scenes may name (docs/scenes.md, "Imported scenes" and
+// "glTF scenes in a study"): which entries are files, where they resolve, the
 // record of every file a scene was read from (stored with its session, docs/data.md table
 // scene_files), and the check `study resume` makes against that record so that a resumed
 // session shows the scene its first trials showed. study/ never loads a glTF file itself: the

@@ -1,4 +1,4 @@
-// The seeded, recorded order of a session (DESIGN.md section 7 and 10: Session -> Block -> Trial):
+// The seeded, recorded order of a session (Session -> Block -> Trial):
 // practice trials first and apart from the data, then one block per scene whose order is
 // counterbalanced across participants, distances within a block in random order, and per trial
 // a random assignment of the two alternatives to the blind labels 1 and 2. With a staircase

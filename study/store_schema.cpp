@@ -7,7 +7,7 @@ namespace {
 
 // Version 1 (the first release). docs/data.md describes every table and column; keep the two in
 // step.
-// - Integer nanoseconds of the monotonic clock for durations and event times (DESIGN.md 2).
+// - Integer nanoseconds of the monotonic clock for durations and event times.
 // - Render modes and event kinds as their stable text names, so the file reads without the code.
 // - 64-bit unsigned values (seed, protocol hash) as text: SQLite integers are signed.
 // - CHECK constraints make a wrong value a refused write rather than a silent bad row.

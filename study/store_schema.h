@@ -1,4 +1,4 @@
-// Private to the study store: the schema as a list of migrations in code (DESIGN.md section 7).
+// Private to the study store: the schema as a list of migrations in code (docs/data.md).
 // migrations()[v] takes a database from user_version v to v + 1; a new schema version appends a
 // step and never edits an old one, so every database ever written can be brought forward.
 #pragma once

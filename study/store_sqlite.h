@@ -1,7 +1,7 @@
 // Private to the study store: a thin RAII layer over the SQLite C API. The C API rather than
 // SQLiteCpp because failures are the normal path here (locked, full, not a database) and the
 // store must turn each into a Result with a message naming the file; SQLiteCpp reports them as
-// exceptions, which DESIGN.md section 10 keeps for main() only.
+// exceptions, which monoplane keeps for main() only.
 #pragma once
 
 #include <sqlite3.h>

@@ -1,4 +1,4 @@
-// The study database (DESIGN.md section 7): SQLite in WAL mode, schema version with migrations in
+// The study database (docs/data.md): SQLite in WAL mode, schema version with migrations in
 // code, every event committed before the next frame starts, unique pseudonymous participant
 // codes, sessions with status, resumable. Nothing is written at the end only: a killed process
 // loses no confirmed decision and no switch.
@@ -61,7 +61,7 @@ struct SessionInfo {
     Procedure procedure = Procedure::Constant;
 };
 
-// One row of the export: a trial with its outcome (DESIGN.md section 7; docs/data.md).
+// One row of the export: a trial with its outcome (docs/data.md).
 struct TrialRecord {
     std::int64_t session_id = 0;
     std::string participant_code;

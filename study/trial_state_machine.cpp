@@ -1,4 +1,4 @@
-// The 2AFC trial's rules (DESIGN.md section 7). What counts is what the participant saw: a change
+// The 2AFC trial's rules. What counts is what the participant saw: a change
 // takes effect with the frame that shows it, so a switch requested and taken back before the next
 // frame was never seen and is neither logged nor counted, and a confirmation applies to the label
 // on screen, not to one still pending. Times on the labels and the decision time leave out pauses,

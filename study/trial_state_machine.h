@@ -1,4 +1,4 @@
-// The 2AFC trial (DESIGN.md section 7): label 1 is shown first; the participant switches freely
+// The 2AFC trial: label 1 is shown first; the participant switches freely
 // between labels 1 and 2, unlimited in time, then confirms the label shown. Confirmation is
 // refused until both were shown when the protocol requires it. The experimenter may pause,
 // resume and abort.

@@ -15,7 +15,7 @@ std::string psychometric_section_html(const AnalysisResults& results,
                                       const std::vector<Figure>& figures);
 
 // Writes the "psychometric" array into an open JSON object: per fit {"participant" (code or
-// "all"), "scene", "threshold_m", "threshold_ci": [lo, hi], "slope", "n"} (DESIGN.md section 7),
+// "all"), "scene", "threshold_m", "threshold_ci": [lo, hi], "slope", "n"},
 // plus "lapse", "estimable", "reason", "interval_method", "participants", "log_likelihood",
 // "bootstrap_replicates" and "levels": [{"m", "reference", "trials"}]. Numbers that do not exist
 // (no fit, an open end of the interval) are null. Any time after analyse().

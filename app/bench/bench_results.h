@@ -1,4 +1,4 @@
-// The results of `monoplane bench` (DESIGN.md section 8): one run per scene x mode x variant x
+// The results of `monoplane bench` (docs/benchmarks.md): one run per scene x mode x variant x
 // mono plane, and their CSV and JSON forms. Plain data; the sweep is in bench_command.cpp.
 #pragma once
 

@@ -1,4 +1,4 @@
-// `monoplane analyze [--db FILE...] [--csv FILE...] --out DIR` (DESIGN.md section 8, issue 7):
+// `monoplane analyze [--db FILE...] [--csv FILE...] --out DIR` (issue 7):
 // merges the sessions of several study databases and CSV exports (a multi-site study), excludes
 // and counts practice, undecided and invalid trials, and writes report.html (self-contained,
 // figures inline), summary.json, CSV tables and the figures as SVG and PNG (docs/analysis.md),

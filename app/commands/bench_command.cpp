@@ -1,7 +1,7 @@
-// `monoplane bench` (DESIGN.md section 8): sweeps scenes x modes x variants x mono planes,
+// `monoplane bench`: sweeps scenes x modes x variants x mono planes,
 // measures GPU time per pass, pipeline statistics and each hybrid configuration's accuracy
 // against stereo, and writes bench.json, bench.csv and the figures of app/bench/bench_plots.h.
-// Speed is reported as ratios to stereo within one run (DESIGN.md section 9).
+// Speed is reported as ratios to stereo within one run.
 #include <algorithm>
 #include <chrono>
 #include <cmath>

@@ -1,6 +1,6 @@
-// The "depth_profile" object of `render --json --depth-profile` (DESIGN.md section 5, docs/
-// scenes.md): per mono-plane distance m, the fraction of the triangles in the left eye's view and
-// of the left eye's pixels nearer than m, so readers see what a scene offers hybrid rendering.
+// The "depth_profile" object of `render --json --depth-profile` (docs/scenes.md): per mono-plane
+// distance m, the fraction of the triangles in the left eye's view and of the left eye's pixels
+// nearer than m, so readers see what a scene offers hybrid rendering.
 #pragma once
 
 #include <string_view>

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "common/resident_memory.h"
 #include "renderer/vk/pipeline.h"
 
 namespace monoplane::app {
@@ -76,6 +77,7 @@ void HeadsetFrameLog::count_builds(study::FrameRecord& row) {
     pipelines_seen_ = pipelines;
     compiles_seen_ = compiles;
     ++frames_;
+    if (frames_ == kMemoryWarmupFrames) resident_after_warmup_ = resident_bytes();
 }
 
 std::string HeadsetFrameLog::build_summary() const {
@@ -96,6 +98,17 @@ std::string HeadsetFrameLog::build_summary() const {
                "frames stalled";
     }
     out << "\n";
+    const std::optional<std::uint64_t> now = resident_bytes();
+    if (resident_after_warmup_ && now) {
+        const double mib = 1024.0 * 1024.0;
+        out.precision(1);
+        out << std::fixed
+            << "resident memory: " << static_cast<double>(*resident_after_warmup_) / mib
+            << " MiB after " << kMemoryWarmupFrames << " frames, "
+            << static_cast<double>(*now) / mib << " MiB after " << frames_ << " (" << std::showpos
+            << (static_cast<double>(*now) - static_cast<double>(*resident_after_warmup_)) / mib
+            << std::noshowpos << " MiB)\n";
+    }
     return out.str();
 }
 

@@ -1,4 +1,4 @@
-// The frame and head log of a headset session (DESIGN.md section 7): one row per displayed frame
+// The frame and head log of a headset session: one row per displayed frame
 // through StudyStore's frame queue, so rows become durable with the next committed event (and at
 // least every kFlushFrames frames). A frame's GPU time arrives when its renderer's frame in
 // flight completes, frames later; it is matched to the frame by submission order.
@@ -55,6 +55,9 @@ class HeadsetFrameLog {
     // stall what the participant sees while the head turns. (Screens without a scene, such as the
     // questionnaire, change what they draw as the participant answers.)
     static constexpr int kSettlingFrames = 3;
+    // The summary also gives resident memory after this many frames and at its end: a session
+    // must not grow however long it runs.
+    static constexpr std::int64_t kMemoryWarmupFrames = 300;
     std::string build_summary() const;
 
   private:
@@ -74,6 +77,7 @@ class HeadsetFrameLog {
     std::int64_t steady_compiles_ = 0;
     std::int64_t steady_compile_frames_ = 0;
     double steady_compile_seconds_ = 0.0;
+    std::optional<std::uint64_t> resident_after_warmup_;
     int since_flush_ = 0;
     std::map<const modes::ModeRenderer*, std::deque<std::int64_t>>
         awaiting_gpu_;  // per renderer, in order

@@ -1,4 +1,4 @@
-// `monoplane protocol check FILE` (DESIGN.md section 8): validates a study protocol before anyone
+// `monoplane protocol check FILE`: validates a study protocol before anyone
 // sits down for a session, printing every problem with file, line and key, or, if it is valid, a
 // summary of what a session will contain so the experimenter can check the design itself. Scene
 // files (glTF) are loaded as a session would load them.
@@ -122,7 +122,8 @@ void run_check(const std::string& file) {
 }  // namespace
 
 void add_protocol_command(CLI::App& root, const GlobalOptions& /*global: no GPU involved*/) {
-    CLI::App* cmd = root.add_subcommand("protocol", "Study protocol files (DESIGN.md section 7)");
+    CLI::App* cmd =
+        root.add_subcommand("protocol", "Study protocol files (TOML; examples in protocols/)");
     cmd->require_subcommand(1);
     auto file = std::make_shared<std::string>();
     CLI::App* check = cmd->add_subcommand(

@@ -1,5 +1,5 @@
-// `monoplane rig`: the triple-frustum rig of an HMD profile at one mono-plane distance (DESIGN.md
-// sections 3 and 8), as a readable summary or JSON, and with --fig2 the projection error over
+// `monoplane rig`: the triple-frustum rig of an HMD profile at one mono-plane distance
+// (docs/hybrid.md), as a readable summary or JSON, and with --fig2 the projection error over
 // depth for several mono planes as CSV and SVG (papers/000 Fig. 2, right). No GPU is touched.
 #include <algorithm>
 #include <cmath>
@@ -30,7 +30,7 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// The mono-plane distances of the fink2019 protocol (DESIGN.md section 7).
+// The mono-plane distances of the fink2019 protocol (protocols/fink2019.toml).
 const std::vector<double> kFink2019MonoPlanes = {1.6, 3, 5, 8, 12, 16, 20, 25, 31, 39.5};
 
 struct RigOptions {
@@ -196,7 +196,7 @@ std::string summary_json(const hmd::HmdProfile& profile, const rig::Rig& rig) {
     j.value("width", in.eye_width).value("height", in.eye_height);
     tangents_json(j, "left", in.eyes[rig::kLeft]);
     tangents_json(j, "right", in.eyes[rig::kRight]);
-    // Canted displays (DESIGN.md section 4): each eye's yaw, degrees, positive turning it left.
+    // Canted displays: each eye's yaw, degrees, positive turning it left.
     j.value("left_cant_deg", in.cant[rig::kLeft] * 180.0 / std::numbers::pi);
     j.value("right_cant_deg", in.cant[rig::kRight] * 180.0 / std::numbers::pi);
     j.end_object();
@@ -387,7 +387,7 @@ void add_rig_command(CLI::App& root, const GlobalOptions& /*global: no GPU here*
                     "Allocate C's image for this nearest selectable m (Sect. 4.2; default: m)");
     cmd->add_flag("--json", options->json,
                   "Print the rig (or with --error-budget-arcmin alone, the choice) as JSON (keys: "
-                  "DESIGN.md section 8)");
+                  "docs/hybrid.md)");
     cmd->add_option("--error-budget-arcmin", options->error_budget_arcmin,
                     "Print the nearest m whose error in visual angle stays within this many "
                     "arcminutes (each eye's error; --disparity: the disparity error)")

@@ -1,4 +1,4 @@
-// Where a scene comes from (DESIGN.md section 5): one of the procedural scenes by name ("beams",
+// Where a scene comes from (docs/scenes.md): one of the procedural scenes by name ("beams",
 // "landscape", "spheres") or a glTF 2.0 file (".gltf" or ".glb"), accepted wherever a scene name
 // is. CPU only; no Vulkan.
 #pragma once

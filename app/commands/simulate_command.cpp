@@ -1,5 +1,5 @@
-// `monoplane simulate --protocol P --participants N --observer MODEL --runs R --out DIR` (DESIGN.md
-// section 8, issue 7): power analysis. For each n on a grid up to N, R simulated studies of n
+// `monoplane simulate --protocol P --participants N --observer MODEL --runs R --out DIR` (issue
+// 7, docs/analysis.md): power analysis. For each n on a grid up to N, R simulated studies of n
 // participants: each participant's schedule from study::make_schedule (the protocol's Latin
 // square row n), choices made by the session engine of `study run --headset none` (the simulated
 // observer with the rig's projection error as its stimulus, into memory instead of a database),

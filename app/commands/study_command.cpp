@@ -1,4 +1,4 @@
-// `monoplane study run|resume|export` (DESIGN.md section 8): sessions of the 2AFC study. With
+// `monoplane study run|resume|export`: sessions of the 2AFC study. With
 // `--headset none` a simulated observer answers on a virtual clock: no rendering, a whole session
 // in well under a second. With `--headset simulated|openxr` the session runs on an OpenXR headset
 // (study_headset.h): monoplane's simulated runtime, or whichever runtime is active.

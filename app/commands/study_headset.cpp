@@ -72,7 +72,7 @@ class SeatAnchor {
 };
 
 // The head from the two located eyes: their midpoint, and the orientation halfway between
-// theirs. Canted views (DESIGN.md section 4) differ from it by a yaw each, their cant; a
+// theirs. Canted views differ from it by a yaw each, their cant; a
 // runtime whose views differ otherwise (a pitch or roll between the eyes) is refused, because
 // the rig models displays turned about the head's vertical axis only.
 struct LocatedHead {
@@ -100,8 +100,8 @@ LocatedHead located_head(const headset::HeadsetFrame& frame) {
                             " view is turned by " +
                             std::to_string(off_axis * 180.0 / 3.14159265358979) +
                             " degrees about an axis other than the head's vertical; monoplane's "
-                            "rig supports parallel views and views canted by a yaw (DESIGN.md "
-                            "section 4)");
+                            "rig supports parallel views and views canted by a yaw "
+                            "(docs/headsets.md, \"Canted headsets\")");
         }
         located.cant[e] = 2.0 * std::atan2(relative.y, relative.w);
     }

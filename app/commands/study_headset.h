@@ -1,5 +1,5 @@
 // `study run|resume --headset simulated|openxr`: the study core, the renderer and an OpenXR
-// headset wired together (DESIGN.md section 7). Each trial renders its scene in the shown
+// headset wired together (docs/headsets.md). Each trial renders its scene in the shown
 // alternative's mode at the trial's m; a switch is drawn in the next frame and logged with the
 // index of the frame that showed it; between trials a neutral screen; at the end the
 // questionnaire, in the headset or entered by the experimenter in the window.

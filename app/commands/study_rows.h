@@ -1,5 +1,5 @@
 // The study library's records as the analysis's plain rows (analysis/dataset.h): the app is where
-// study/ and analysis/ meet (DESIGN.md section 1). Also the observer's error model, shared by
+// study/ and analysis/ meet (docs/architecture.md). Also the observer's error model, shared by
 // `study run|resume` (the trial's stimulus strength) and `simulate` (power analysis).
 #pragma once
 
@@ -17,7 +17,7 @@
 namespace monoplane::app {
 
 // The observer's stimulus strength: the rig's largest projection error (pixels) for the trial's
-// hybrid alternative at its mono plane (DESIGN.md section 3); 0 when both alternatives are
+// hybrid alternative at its mono plane (papers/000 Fig. 2, right); 0 when both alternatives are
 // stereo-like. Memoised per mono plane: a power analysis asks for the same few distances
 // millions of times.
 std::function<double(const study::ScheduledTrial&)> trial_error_model(

@@ -1,5 +1,5 @@
 // The end of every GPU command run with --validation: any validation message fails the command,
-// with the first messages shown (DESIGN.md section 9).
+// with the first messages shown.
 #pragma once
 
 #include "app/commands/global_options.h"

@@ -30,7 +30,7 @@ struct EyeDepthSource {
     modes::EyeDepthImage linear_depth;  // metres in front of the eyes' plane; left in its layout
     rig::Tangents tangents;             // the eye's frustum, in its own frame
     // The rotation of directions from the head's frame to the eye's: identity for parallel
-    // eyes; a canted eye's yaw relative to the head (DESIGN.md section 4) otherwise.
+    // eyes; a canted eye's yaw relative to the head otherwise.
     glm::dmat3 head_to_eye{1.0};
     double eye_in_front = 0.0;  // metres the eye lies in front of the eyes' plane
 };

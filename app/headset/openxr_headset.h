@@ -1,4 +1,4 @@
-// An OpenXR session over Vulkan (XR_KHR_vulkan_enable2), DESIGN.md sections 1 and 7: the runtime
+// An OpenXR session over Vulkan (XR_KHR_vulkan_enable2; docs/headsets.md): the runtime
 // creates the Vulkan instance and device on the physical device it names, one swapchain per eye
 // receives the rendered views, xrLocateViews feeds each frame's eye poses and calibrated
 // asymmetric frusta to the rig, and the participant's controller drives switch, confirm and pause

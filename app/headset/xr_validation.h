@@ -1,7 +1,7 @@
 // The OpenXR core validation layer (XR_APILAYER_LUNARG_core_validation, Debian's
 // openxr-layer-corevalidation), the OpenXR counterpart of Vulkan's validation layer: with
 // `--validation`, monoplane enables it on its XrInstance and collects what it reports through an
-// XR_EXT_debug_utils messenger; any message fails the command (DESIGN.md section 9), exactly as a
+// XR_EXT_debug_utils messenger; any message fails the command, exactly as a
 // Vulkan validation message does.
 //
 // Use: before xrCreateInstance, `XrValidation::plan(requested)` says which layer and extension

@@ -1,7 +1,7 @@
 // Error reporting for the TOML files monoplane reads (HMD profiles, study protocols): every
 // problem found in a document, each prefixed "source:line:column:" like a compiler's, so a user
 // sees all mistakes in a file at once and editors can jump to them. Shared by hmd/ and study/,
-// which may not include each other (DESIGN.md section 1).
+// which may not include each other (docs/architecture.md).
 #pragma once
 
 #include <span>

@@ -1,4 +1,4 @@
-// The render modes of DESIGN.md section 6, executed from the frame plan (renderer/plan/
+// The render modes (stereo, hybrid, hybrid-farfield), executed from the frame plan (renderer/plan/
 // frame_plan.h: which passes run, in what order, what each reads and writes): the renderer owns
 // the views' images and the passes, prepares a frame's matrices and culling, asks plan_frame for
 // the passes and records each. Colour images an earlier pass left as attachments are made

@@ -19,9 +19,9 @@ struct StereoViewInputs {
     double ipd = 0.064;
     rig::Tangents left;  // each in its eye's own frame
     rig::Tangents right;
-    double near = 0.1;  // DESIGN.md section 2: the paper's values
+    double near = 0.1;  // the paper's values (papers/000 Sect. 5.1)
     double far = 1000.0;
-    // Canted displays (DESIGN.md section 4): each eye's yaw about the head's +y axis, radians,
+    // Canted displays: each eye's yaw about the head's +y axis, radians,
     // positive turning it left; [0] left, [1] right. Zero: parallel eyes.
     std::array<double, 2> cant = {0.0, 0.0};
 };

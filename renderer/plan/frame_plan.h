@@ -2,7 +2,7 @@
 // which GPU predicate, and, for a pass the frame leaves out, why. A pure function of the mode, the
 // renderer's options, the frame's rig and the device's capabilities: the renderer
 // (renderer/modes/mode_renderer.h) only executes it, render --json and bench.json report it
-// (DESIGN.md section 8, "plan"), and tests/unit/frame_plan_test.cpp checks it without a GPU.
+// ("plan"), and tests/unit/frame_plan_test.cpp checks it without a GPU.
 //
 // The plans (docs/architecture.md prints them as plan_frame produces them):
 //   stereo:          culling, shadow*, per eye {forward: chunks, sky}, [ssao],

@@ -1,4 +1,4 @@
-// The executed frame plan as render --json and bench.json report it (DESIGN.md section 8):
+// The executed frame plan as render --json and bench.json report it (docs/architecture.md):
 // "plan": [{"pass": name, "kind": k, "view": v, "skipped": reason-or-null, "draws": [...]}, ...],
 // every planned pass in order, skipped ones with their reason.
 #pragma once

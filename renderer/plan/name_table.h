@@ -1,5 +1,5 @@
 // An enum's names as one table, read both ways: the CLI, protocols and JSON name the renderer's
-// choices and the plan's passes, draws and predicates with these (DESIGN.md section 8).
+// choices and the plan's passes, draws and predicates with these.
 #pragma once
 
 #include <initializer_list>

@@ -13,7 +13,7 @@ constexpr NameTable<Mode> kModeNames = {{Mode::kStereo, "stereo"},
 constexpr NameTable<StereoPass> kStereoPassNames = {{StereoPass::kTwoPasses, "two"},
                                                     {StereoPass::kMultiview, "multiview"},
                                                     {StereoPass::kGeometryShader, "gs"}};
-// The stereo mode's name with each stereo pass (DESIGN.md section 6).
+// The stereo mode's name with each stereo pass.
 constexpr NameTable<StereoPass> kStereoModeNames = {{StereoPass::kTwoPasses, "stereo"},
                                                     {StereoPass::kMultiview, "stereo-multiview"},
                                                     {StereoPass::kGeometryShader, "stereo-gs"}};

@@ -1,7 +1,7 @@
-// The choices that shape a frame, as the CLI, protocols and bench.json name them (DESIGN.md
-// section 6): the mode, how the eyes' forward passes are drawn, hybrid's depth-based savings,
-// anti-aliasing and the debug views. Vulkan-free, so the frame plan (frame_plan.h) and its tests
-// need no GPU; renderer/modes/mode_renderer.h maps them onto passes.
+// The choices that shape a frame, as the CLI, protocols and bench.json name them: the mode, how
+// the eyes' forward passes are drawn, hybrid's depth-based savings, anti-aliasing and the debug
+// views. Vulkan-free, so the frame plan (frame_plan.h) and its tests need no GPU;
+// renderer/modes/mode_renderer.h maps them onto passes.
 #pragma once
 
 #include <optional>
@@ -19,7 +19,7 @@ std::optional<StereoPass> parse_stereo_pass(const std::string& name);  // "two",
 std::string stereo_pass_name(StereoPass pass);
 
 // A mode as the CLI, protocols and bench.json name it: stereo-multiview and stereo-gs are stereo
-// with a single-pass StereoPass (DESIGN.md section 6).
+// with a single-pass StereoPass (docs/single-pass-stereo.md).
 struct RenderModeChoice {
     Mode mode = Mode::kStereo;
     StereoPass stereo_pass = StereoPass::kTwoPasses;
@@ -29,7 +29,7 @@ std::optional<RenderModeChoice> parse_render_mode(const std::string& name);
 // stereo pass is not part of their name).
 std::string render_mode_name(const RenderModeChoice& choice);
 
-// Debug views (DESIGN.md section 6) of the hybrid modes.
+// Debug views of the hybrid modes.
 // kRouting (any mode) colours each chunk by the lists the GPU culling put it in: green eyes
 // only, blue C only, magenta both (papers/003's tool for choosing force-mono objects).
 enum class DebugView { kNone, kTintMono, kStereoOnly, kMonoOnly, kRouting };

@@ -1,6 +1,6 @@
 // A borrowed 8-bit image as the renderer reads it back (row-major, tightly packed, no row
 // padding), so callers pass their buffers to the metrics without copying. This library has no
-// Vulkan and no renderer headers (DESIGN.md section 1), hence its own view type instead of
+// Vulkan and no renderer headers (docs/architecture.md), hence its own view type instead of
 // modes::RgbaImage; rgba_view() adapts that type (or any with the same members) in place.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Hybrid's error in visual angle (DESIGN.md section 8, issue 20): pixels are the wrong unit
+// Hybrid's error in visual angle (issue 20, docs/hybrid.md): pixels are the wrong unit
 // across headsets (4 px on a Vive is not 4 px on a Vive Pro), arcminutes are what perception
 // thresholds are stated in. Pure double-precision math over a built rig; no Vulkan.
 //

@@ -1,5 +1,4 @@
-// Head and eye poses in the OpenXR view convention (DESIGN.md section 2): right-handed,
-// +x right, +y up, -z forward.
+// Head and eye poses in the OpenXR view convention: right-handed, +x right, +y up, -z forward.
 #pragma once
 
 #include <glm/ext/matrix_double4x4.hpp>

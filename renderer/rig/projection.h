@@ -1,5 +1,5 @@
 // Projection matrices for asymmetric frusta given as tangents, in Vulkan clip space with
-// reversed Z (DESIGN.md section 2): view-space point (x, y, z), z < 0 forward;
+// reversed Z: view-space point (x, y, z), z < 0 forward;
 // depth 1 at the near plane, 0 at the far plane; clip-space y points down.
 #pragma once
 

@@ -1,5 +1,6 @@
-// The triple-frustum rig of Fink et al. 2019 (papers/000, Sect. 3, 4.1, 4.2); docs/rig.md maps
-// every equation to the names used here. All distances are metres, all tangents XrFovf-style.
+// The triple-frustum rig of Fink et al. 2019 (papers/000, Sect. 3, 4.1, 4.2); docs/hybrid.md
+// ("The camera rig") maps every equation to the names used here. All distances are metres, all
+// tangents XrFovf-style.
 #include "renderer/rig/rig.h"
 
 #include <algorithm>
@@ -117,7 +118,8 @@ std::optional<std::string> cant_problem(const RigInputs& in, int eye) {
             return std::string("the ") + eye_name(eye) + " eye's field, turned by " +
                    number(cant * 180.0 / kPi) +
                    " degrees, reaches beyond 84 degrees from the head's forward axis, where its "
-                   "cross-section with the mono plane is unbounded (DESIGN.md section 4)";
+                   "cross-section with the mono plane is unbounded "
+                   "(docs/hybrid.md, \"Canted displays\")";
         }
     }
     return std::nullopt;
@@ -254,7 +256,7 @@ glm::dmat4 eye_from_head_matrix(const RigInputs& in, int eye) {
     return rotation * glm::translate(glm::dmat4(1.0), -glm::dvec3(eye_x(in, eye), 0.0, 0.0));
 }
 
-// C's frustum (eq. 2, geometric meaning per DESIGN.md 3): the slopes from C, at distance
+// C's frustum (eq. 2's geometric meaning, docs/hybrid.md): the slopes from C, at distance
 // m + s from the mono plane, to the outermost points of the eyes' cross-sections with the plane.
 // A cross-section is the quadrilateral of the eye's four corner rays met with z = -m; C's
 // frustum is a rectangle in its tangents, so containing the eight corners contains both

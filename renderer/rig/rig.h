@@ -1,5 +1,5 @@
 // The triple-frustum camera rig of Fink et al. 2019, Sect. 3 and 4.1-4.2, for calibrated
-// asymmetric frusta (DESIGN.md section 3). Pure double-precision math: no Vulkan, no I/O.
+// asymmetric frusta (docs/hybrid.md). Pure double-precision math: no Vulkan, no I/O.
 //
 // Symbols of the paper and their names here (head frame: +x right, +y up, -z forward, eyes at
 // x = -d/2 and +d/2 in the plane z = 0):
@@ -14,7 +14,7 @@
 //   W_C, H_C MonoCamera::allocated_*        C's allocation for the nearest selectable m
 //   M_{C->E} Rig::mono_to_eye[e]            eq. 5, clip space of C -> clip space of eye e
 //   M_{E->C} Rig::eye_to_mono[e]            eq. 5, the inverse
-//   R_e      RigInputs::cant[e]             canted displays (DESIGN.md section 4, beyond the
+//   R_e      RigInputs::cant[e]             canted displays (docs/hybrid.md, beyond the
 //                                           paper): eye e is turned by a yaw about the head's +y
 //
 // Canted eyes: the mono plane stays the head's plane z = -m. Each eye's cross-section with it is

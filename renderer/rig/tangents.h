@@ -1,4 +1,4 @@
-// A view frustum as four tangents (OpenXR XrFovf angles through tan), DESIGN.md section 2:
+// A view frustum as four tangents (OpenXR XrFovf angles through tan):
 // tan_left < 0 < tan_right and tan_down < 0 < tan_up for a normal headset.
 #pragma once
 

@@ -27,7 +27,7 @@ struct GraphicsPipelineDesc {
     vk::CullModeFlags cull = vk::CullModeFlagBits::eBack;
     bool depth_test = true;
     bool depth_write = true;
-    // Reversed Z (DESIGN.md section 2): nearer is greater.
+    // Reversed Z: nearer is greater.
     vk::CompareOp depth_compare = vk::CompareOp::eGreaterOrEqual;
     bool depth_bias = false;
     // MSAA: the rasterisation samples of every attachment (ImageDesc::samples).

@@ -1,5 +1,5 @@
-// Imported geometry into the scene's chunks (DESIGN.md section 5: the unit of culling and of
-// indirect draws). The triangles of each texture are split by a k-d tree over their centres,
+// Imported geometry into the scene's chunks (the unit of culling and of indirect draws,
+// docs/scenes.md). The triangles of each texture are split by a k-d tree over their centres,
 // always at the median along the longest axis, until a cell holds at most the target; each cell
 // is a chunk, spatially compact by construction whatever the meshes' sizes (one huge mesh or
 // thousands of small ones). meshoptimizer then orders each chunk's triangles for the GPU's

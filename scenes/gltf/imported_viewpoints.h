@@ -1,5 +1,5 @@
-// Viewpoints for an imported scene (DESIGN.md section 5: "a default viewpoint from the file's
-// first camera or, without one, framing its bounds"), plus benchmark views.
+// Viewpoints for an imported scene (a default viewpoint from the file's first camera or, without
+// one, framing its bounds), plus benchmark views.
 #pragma once
 
 #include <optional>
@@ -22,7 +22,7 @@ inline constexpr double kWalkableFootprint = 4.0;
 bool is_walkable(const Aabb& bounds);
 
 // A glTF camera's world transform as a head pose: glTF cameras look down -z with +y up, like the
-// head frame (DESIGN.md section 2); scale is dropped. Nothing for a singular or mirroring
+// head frame; scale is dropped. Nothing for a singular or mirroring
 // transform, which no head pose can express.
 std::optional<rig::Pose> camera_pose(const glm::dmat4& world);
 

@@ -1,4 +1,4 @@
-// glTF 2.0 import (DESIGN.md section 5, "Imported scenes"): a .gltf (external or data: buffers
+// glTF 2.0 import (docs/scenes.md, "Imported scenes"): a .gltf (external or data: buffers
 // and images) or .glb file becomes a scenes::Scene, chunked for culling like the procedural
 // scenes, with a default viewpoint. CPU only, no Vulkan.
 //

@@ -84,7 +84,7 @@ fs::path depth_file(const fs::path& dir, std::int64_t frame, const char* eye) {
     return dir / name;
 }
 
-// The Vive's calibrated frusta and IPD (DESIGN.md section 4), which simxr reports.
+// The Vive's calibrated frusta and IPD (hmd/profiles/vive.toml), which simxr reports.
 struct EyeFrustum {
     const char* name;
     double left, right, up, down;
@@ -94,7 +94,7 @@ constexpr EyeFrustum kEyes[2] = {{"left", -1.391937, 1.247409, 1.464287, -1.4688
 constexpr double kIpd = 0.064;
 constexpr double kEyeHeight = 1.7;  // BEAMS' viewpoint "default": (0, 1.7, 0), looking level
 constexpr double kMonoPlane = 3.0;
-// C sits s behind the eyes where their outer frustum planes meet (DESIGN.md section 3).
+// C sits s behind the eyes where their outer frustum planes meet (papers/000 Sect. 3, eq. 1).
 const double kMonoBehind = std::max(kIpd / (2.0 * -kEyes[0].left), kIpd / (2.0 * kEyes[1].right));
 
 double tan_y(const EyeFrustum& eye, double row, int height) {
@@ -200,7 +200,7 @@ void expect_all_infinite(const Pfm& pfm, const std::string& what) {
 // A scene frame of BEAMS against the ground's geometry. `slack_px`: how many pixel rows the
 // sampled position may be off (TAA's jitter, MSAA's sample positions); 0 for exact pixel centres.
 // Hybrid's far region always has a row's slack: the composite reads C's depth at the nearest of
-// C's texels, which are no smaller than the eye's pixels (DESIGN.md section 3, eq. 8).
+// C's texels, which are no smaller than the eye's pixels (papers/000 Sect. 4.2, eq. 8).
 // `ground_within`: only rows whose ground is nearer are checked against it (a canted eye's near
 // region does not end at a row).
 void expect_beams_depth(const Pfm& pfm, const EyeFrustum& eye, bool hybrid, double slack_px,

@@ -15,7 +15,7 @@ foreach(scene beams landscape spheres)
       message(FATAL_ERROR "render ${scene} did not write ${file}")
     endif()
   endforeach()
-  # Keys other tools read (DESIGN.md section 8 and docs/benchmarks.md).
+  # Keys other tools read (docs/benchmarks.md).
   foreach(key scene mode width height device frame_ms_median passes views primitives fragments)
     string(JSON value ERROR_VARIABLE missing GET "${json}" ${key})
     if(missing)
@@ -93,7 +93,7 @@ string(JSON skipped GET "${json}" mono_skipped)
 if(NOT ssim GREATER 0.5 OR NOT ssim LESS 1.0 OR skipped)
   message(FATAL_ERROR "hybrid: ssim_vs_stereo ${ssim}, mono_skipped ${skipped}: ${json}")
 endif()
-# The executed frame plan (DESIGN.md section 8): hybrid at m = 3 with occlusion culling runs C and
+# The executed frame plan (docs/architecture.md): hybrid at m = 3 with occlusion culling runs C and
 # both composites; the mono tone mapping runs because the images are read back.
 string(JSON passes LENGTH "${json}" plan)
 set(executed "")
@@ -111,7 +111,7 @@ if(NOT executed STREQUAL expected)
   message(FATAL_ERROR "hybrid plan: executed '${executed}', expected '${expected}': ${json}")
 endif()
 
-# The rig as other tools read it (DESIGN.md section 8), for the Vive at m = 8: s = 0.0230 m and
+# The rig as other tools read it, for the Vive at m = 8: s = 0.0230 m and
 # a largest offset of about 3.9 px, the paper's "4 pixels".
 execute_process(COMMAND ${MONOPLANE} rig --hmd vive --mono-plane 8 --json
                 RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE log)

@@ -1,5 +1,5 @@
 // GPU test fixture: one Vulkan context per test with the validation layer on; any validation
-// message fails the test (DESIGN.md section 9).
+// message fails the test.
 #pragma once
 
 #include <gtest/gtest.h>

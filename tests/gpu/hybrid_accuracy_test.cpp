@@ -1,5 +1,5 @@
 // Hybrid mono-stereo rendering measured on rendered images (issue 3, item 6 a-c), with expected
-// values derived here from the geometry of DESIGN.md section 3, not from the rig's functions.
+// values derived here from the geometry of papers/000 Sect. 3, not from the rig's functions.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -179,7 +179,7 @@ TEST_F(Hybrid, NoCuttingLineOnGrazingSurfaces) {
 }
 
 // (c) A marker far beyond m appears displaced in hybrid by the analytic error: its central
-// projection from C onto the mono plane, seen by the eye (DESIGN.md section 3, "Error").
+// projection from C onto the mono plane, seen by the eye (papers/000 Sect. 3, Fig. 2).
 TEST_F(Hybrid, DriftOfAFarMarkerMatchesTheAnalyticError) {
     const double m = 2.0;
     const double d = vive_.ipd;
@@ -224,7 +224,7 @@ TEST_F(Hybrid, DriftOfAFarMarkerMatchesTheAnalyticError) {
     }
 }
 
-// On the mono plane itself the error is zero (DESIGN.md section 3): monoplane's hybrid puts a
+// On the mono plane itself the error is zero (papers/000 Sect. 3): monoplane's hybrid puts a
 // marker there where stereo does, to a fraction of a pixel. The engine-style far field
 // (papers/003) copies C with a rounded offset and one pixel density for both eyes: it is off by
 // its rounding and the eyes' asymmetry, but still within a pixel and a half at this size.

@@ -1,4 +1,4 @@
-// Hybrid rendering on canted displays (issue 18 item 4; DESIGN.md sections 3 and 4), measured on
+// Hybrid rendering on canted displays (issue 18 item 4; docs/hybrid.md), measured on
 // rendered images for the Vive's frusta turned by +-5 and +-15 degrees (outwards and inwards).
 // Expected positions come from a pinhole model of the turned eyes written here, not from the
 // rig: a point's tangents in an eye turned by yaw a are those of R_y(-a) (p - eye).

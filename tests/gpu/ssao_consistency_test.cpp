@@ -95,7 +95,7 @@ TEST_F(SsaoConsistency, StereoConsistentSsaoHasALowerMeanErrorOnEveryScene) {
     }
 }
 
-// Canted displays (DESIGN.md section 4): papers/002's reprojection between the eyes goes through
+// Canted displays: papers/002's reprojection between the eyes goes through
 // each view's matrices, so it needs nothing of the rig's parallel-eye case; with the displays
 // turned 15 degrees outwards the stereo-consistent estimate still beats the per-eye one.
 TEST_F(SsaoConsistency, StereoConsistentSsaoHoldsOnCantedDisplays) {

@@ -156,7 +156,7 @@ TEST_F(EyeDepthWriterTest, ParallelEyeGetsNearOverDistanceInEveryLayoutItLeavesA
 }
 
 // A wall parallel to the eyes' plane, D = 2 m in front of it, seen by an eye yawed by theta =
-// 20 degrees to the left (DESIGN.md section 4) and 3 cm in front of the plane. In the head's
+// 20 degrees to the left and 3 cm in front of the plane. In the head's
 // frame the eye looks along f = (-sin theta, 0, -cos theta) with right axis
 // r = (cos theta, 0, -sin theta); the pixel with tangents (tx, ty) looks along tx r + ty y + f,
 // which gains tx sin theta + cos theta of the head's forward per metre along the eye's axis. So

@@ -11,7 +11,7 @@
 namespace monoplane::headset {
 namespace {
 
-// The Vive's left eye (DESIGN.md section 4) at its full per-eye size.
+// The Vive's left eye (hmd/profiles/vive.toml) at its full per-eye size.
 rig::Tangents vive_left() {
     rig::Tangents t;
     t.left = -1.391937;

@@ -476,7 +476,7 @@ TEST_F(DepthLayerTest, DumpsHoldEachEyesDistanceInMetres) {
         // is the plane at minDepth, here infinity) and a standard mapping on a narrowed range.
         {{0.0f, 1.0f, kInfinity, 0.1f}, {0.25f, 0.75f, 0.5f, 20.0f}},
         // Standard with an infinite far plane (1 - 0.1 / distance); reversed finite, as
-        // monoplane renders (DESIGN.md 2: 0.1 m -> 1, 1000 m -> 0).
+        // monoplane renders (0.1 m -> 1, 1000 m -> 0).
         {{0.0f, 1.0f, 0.1f, kInfinity}, {0.0f, 1.0f, 1000.0f, 0.1f}},
     };
     // Spot checks of window_depth itself, by hand (reversed infinite is 0.1 / s); 1e-8 allows

@@ -2,7 +2,7 @@
 // an application does: instance, system, Vulkan instance and device through
 // XR_KHR_vulkan_enable2 with the Khronos validation layer on, then a session. The OpenXR core
 // validation layer (XR_APILAYER_LUNARG_core_validation) watches every OpenXR call too. Any
-// message of either layer fails the test (DESIGN.md section 9).
+// message of either layer fails the test.
 #pragma once
 
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 namespace monoplane::simxr::testing {
 namespace {
 
-// The vive profile's numbers (DESIGN.md section 4), written out so the test does not share code
+// The vive profile's numbers (hmd/profiles/vive.toml), written out so the test does not share code
 // with the runtime.
 constexpr double kViveLeft[4] = {-1.391937, 1.247409, 1.464287, -1.468819};  // l, r, u, d
 constexpr double kViveRight[4] = {-1.246557, 1.398447, 1.472458, -1.465505};

@@ -3,7 +3,7 @@
 // many meshes (default 10, one node each, no normals: the loader generates them), and
 // `gltf_big_scene load FILE.glb` loads it with the progress line on and prints the time, the
 // scene's size and the process's peak memory. Two commands so that the peak belongs to the load
-// alone. Not a test (no test asserts a time, DESIGN.md section 9); write to /tmp, not the tree.
+// alone. Not a test (no test asserts a time); write to /tmp, not the tree.
 #include <sys/resource.h>
 
 #include <cmath>

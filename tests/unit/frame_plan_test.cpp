@@ -1,5 +1,5 @@
 // The frame plan (renderer/plan/frame_plan.h) against pass lists written out here by hand from the
-// rules of the modes (docs/hybrid.md, "The pipeline: the frame plan"; DESIGN.md section 8), not
+// rules of the modes (docs/hybrid.md, "The pipeline: the frame plan"), not
 // copied from plan_frame's output, and a generic check that every resource a pass reads was
 // written by an earlier pass of the same frame, over every combination of options. No GPU.
 //

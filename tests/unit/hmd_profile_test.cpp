@@ -1,4 +1,4 @@
-// HMD profiles (DESIGN.md section 4): the built-ins carry the paper's values, and every class of
+// HMD profiles: the built-ins carry the paper's values, and every class of
 // malformed profile is refused with a message that names the source and the offending key.
 #include <gtest/gtest.h>
 

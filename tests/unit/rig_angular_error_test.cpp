@@ -19,7 +19,7 @@ namespace {
 constexpr double kArcmin = 60.0 * 180.0 / 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The paper's HTC Vive calibration (DESIGN.md section 4).
+// The paper's HTC Vive calibration (papers/000 Sect. 4.2).
 RigInputs vive(double m, int width = 1344, int height = 1512) {
     RigInputs in;
     in.eyes[kLeft] = {-1.391937, 1.247409, -1.468819, 1.464287};
@@ -87,7 +87,7 @@ TEST(RigAngularError, ViveAtEightMetresMatchesTheGeometry) {
     const Rig rig = build_rig(vive(8.0)).value_or_throw();
     const AngularError error = max_angular_error(rig);
     EXPECT_NEAR(error.eye_arcmin, brute_eye_error(rig.inputs, kInf), 1e-6);
-    EXPECT_NEAR(error.eye_arcmin, 15.3, 0.05);  // DESIGN.md section 8
+    EXPECT_NEAR(error.eye_arcmin, 15.3, 0.05);  // docs/hybrid.md: 15.32 at m = 8
     // At infinity both eyes see direction u at the plane point u (m + s): the change is
     // atan((u (m + s) + d/2) / m) - atan((u (m + s) - d/2) / m), largest at u = 0: 2 atan(d/2m).
     EXPECT_NEAR(error.disparity_arcmin, 2.0 * std::atan(0.064 / 16.0) * kArcmin, 1e-7);
@@ -96,7 +96,7 @@ TEST(RigAngularError, ViveAtEightMetresMatchesTheGeometry) {
 }
 
 TEST(RigAngularError, ArcminutesAreTheSameOnAViveProWherePixelsAreNot) {
-    // The Vive Pro reuses the Vive's tangents at 2352 x 2612 (DESIGN.md section 4).
+    // The Vive Pro reuses the Vive's tangents at 2352 x 2612 (hmd/profiles/vive-pro.toml).
     const Rig vive_rig = build_rig(vive(8.0)).value_or_throw();
     const Rig pro_rig = build_rig(vive(8.0, 2352, 2612)).value_or_throw();
     EXPECT_NEAR(pro_rig.max_error_px / vive_rig.max_error_px, 2352.0 / 1344.0, 1e-9);

@@ -1,7 +1,7 @@
-// The rig with canted displays (DESIGN.md sections 3 and 4): eyes turned by a yaw about the
+// The rig with canted displays (docs/hybrid.md, "Canted displays"): eyes turned by a yaw about the
 // head's +y. Every expected value is derived here from a pinhole model of each camera written
 // independently of renderer/rig/rig.cpp: a point's tangents in a camera turned by yaw a are
-// those of R_y(-a) (p - position), and pixels follow from the tangents as in DESIGN.md section 2.
+// those of R_y(-a) (p - position), and pixels follow from the tangents (renderer/rig/tangents.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -374,7 +374,7 @@ TEST(CantedRigParallel, ZeroCantIsTheParallelRigBitForBit) {
     const Rig b = built(parallel);
     EXPECT_EQ(a.max_error_px, b.max_error_px);
     EXPECT_EQ(a.mono.viewport_width, b.mono.viewport_width);
-    EXPECT_NEAR(a.max_error_px, 3.9, 0.1);  // DESIGN.md section 3: "about 3.9 px" at m = 8
+    EXPECT_NEAR(a.max_error_px, 3.9, 0.1);  // docs/hybrid.md: 3.862 px at m = 8
 }
 
 }  // namespace

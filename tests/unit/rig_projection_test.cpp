@@ -1,4 +1,4 @@
-// The eye projection checked against the tangent definition of a frustum (DESIGN.md section 2),
+// The eye projection checked against the tangent definition of a frustum (renderer/rig/tangents.h),
 // computed here by hand rather than through the matrix code.
 #include <gtest/gtest.h>
 

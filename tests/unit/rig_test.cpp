@@ -58,7 +58,7 @@ TEST(Rig, ViveOffsetBehindEyesIsTheFartherBackOuterPlaneCrossing) {
     ASSERT_GT(left_behind, right_behind);  // the left eye's plane crosses farther back
     const Rig rig = built(vive_inputs(8.0));
     EXPECT_NEAR(rig.mono.offset_behind_eyes, left_behind, 1e-15);
-    EXPECT_NEAR(rig.mono.offset_behind_eyes, 0.0230, 5e-5);  // DESIGN.md section 3
+    EXPECT_NEAR(rig.mono.offset_behind_eyes, 0.0230, 5e-5);  // docs/hybrid.md, "Measured"
     EXPECT_EQ(rig.mono_position, glm::dvec3(0.0, 0.0, left_behind));
     EXPECT_EQ(rig.eye_positions[kLeft], glm::dvec3(-0.032, 0.0, 0.0));
     EXPECT_EQ(rig.eye_positions[kRight], glm::dvec3(0.032, 0.0, 0.0));

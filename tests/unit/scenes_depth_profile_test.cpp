@@ -1,4 +1,4 @@
-// Unit tests of scenes/depth_profile.h (DESIGN.md section 5, docs/scenes.md) on a hand-built scene
+// Unit tests of scenes/depth_profile.h (docs/scenes.md) on a hand-built scene
 // whose answer is known exactly: triangles placed at chosen depths in an eye's frame, some inside
 // the frustum, some outside it, seen from a turned eye so the orientation matters.
 #include <gtest/gtest.h>

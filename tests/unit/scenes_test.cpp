@@ -1,4 +1,4 @@
-// Unit tests of the scenes library (DESIGN.md section 5): determinism, chunk invariants, the depth
+// Unit tests of the scenes library (docs/scenes.md): determinism, chunk invariants, the depth
 // spread that makes every mono-plane distance matter, the BEAMS rails, detail budgets, names.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Study conditions (DESIGN.md sections 1 and 7): render-mode names round-trip, and invalid
+// Study conditions: render-mode names round-trip, and invalid
 // conditions are refused with a message a user can act on.
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 namespace monoplane::study {
 namespace {
 
-constexpr double kNear = 0.1;  // the paper's clip range (DESIGN.md section 2)
+constexpr double kNear = 0.1;  // the paper's clip range (papers/000 Sect. 5.1)
 constexpr double kFar = 1000.0;
 
 TEST(RenderMode, CliNamesAreTheDesignsNames) {

@@ -1,4 +1,4 @@
-// The export (DESIGN.md section 7; docs/data.md): one row per trial, identity columns first,
+// The export (docs/data.md): one row per trial, identity columns first,
 // RFC 4180 CSV with '.' decimals whatever the locale, TRUE/FALSE for booleans and NA for missing
 // values (what R's read.csv and pandas.read_csv take without options), and JSON with the same
 // keys, numbers as numbers, true/false and null for NA. Exact text for known records.

@@ -1,4 +1,4 @@
-// The live session (DESIGN.md section 7): a study session driven frame by frame by a display and
+// The live session: a study session driven frame by frame by a display and
 // live input, and the simulated observer at its controls. Every test drives a virtual 90 Hz
 // display: frame n is presented at n * kPeriod; at each frame the requests due are applied first
 // (with the frame's time), then frame_presented(n, t). Expected frames, times and outcomes are

@@ -1,4 +1,4 @@
-// Simulated observers (DESIGN.md section 7): deterministic per seed, and their choice rates and
+// Simulated observers: deterministic per seed, and their choice rates and
 // viewing behaviour match the documented model within statistical margins (4 sigma; fixed seeds,
 // so the outcome is deterministic).
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
-// Study protocols (DESIGN.md section 7): the shipped files carry the paper's design (papers/000
-// Sect. 6), and every class of malformed protocol is refused before a session starts, with a
-// message that names the file, the line and the key.
+// Study protocols: the shipped files carry the paper's design (papers/000 Sect. 6), and every
+// class of malformed protocol is refused before a session starts, with a message that names the
+// file, the line and the key.
 #include <gtest/gtest.h>
 #include <unistd.h>
 

@@ -14,7 +14,7 @@
 namespace monoplane::study {
 namespace {
 
-// The 2AFC function as DESIGN.md section 7 writes it, evaluated plainly: independent of the
+// The 2AFC function as docs/analysis.md writes it, evaluated plainly: independent of the
 // library's cancellation-free form.
 double p_reference(double m, double t, double b, double lapse) {
     return 0.5 + (0.5 - lapse) / (1.0 + std::pow(m / t, b));

@@ -1,4 +1,4 @@
-// Session schedules (DESIGN.md sections 7 and 10): balanced Latin squares, the session's layout,
+// Session schedules: balanced Latin squares, the session's layout,
 // determinism, and statistical checks that the seeded orders are uniform. The statistical tests use
 // fixed seeds, so they are deterministic: a failure means a biased generator, not bad luck.
 #include <gtest/gtest.h>

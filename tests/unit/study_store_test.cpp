@@ -1,4 +1,4 @@
-// The study database (DESIGN.md section 7): WAL, schema version, private files, unique
+// The study database (docs/data.md): WAL, schema version, private files, unique
 // pseudonymous participants, exact round trips, resumption, and every failure a clear error that
 // leaves earlier data intact (locked, not a database, newer schema, unwritable, disk full).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The 2AFC trial state machine (DESIGN.md section 7): what becomes visible when, what is logged,
+// The 2AFC trial state machine: what becomes visible when, what is logged,
 // how times are counted, and that every call in a wrong state is an error.
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Reference spaces, action spaces and view location. LOCAL and STAGE are the same space: the
 // script's head positions are given in it, so a standing height is part of the keyframes
-// (y = 1.6). VIEW is the head. Eyes sit at -ipd/2 and +ipd/2 along the head's x axis (DESIGN.md
-// section 2). The simulated controllers are held still in front of the head (hand_in_head).
+// (y = 1.6). VIEW is the head. Eyes sit at -ipd/2 and +ipd/2 along the head's x axis. The
+// simulated controllers are held still in front of the head (hand_in_head).
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -257,8 +257,8 @@ XrResult XRAPI_CALL xrLocateViews(XrSession handle, const XrViewLocateInfo* info
     const rig::Pose local_to_space = inverse(*space_pose);
     for (int eye = 0; eye < 2; ++eye) {
         const double x = (eye == 0 ? -0.5 : 0.5) * hmd.ipd;
-        // A canted profile turns the view by its cant_deg about the head's +y (DESIGN.md
-        // section 4); XrFovf stays relative to the turned view, as the spec defines it.
+        // A canted profile turns the view by its cant_deg about the head's +y; XrFovf stays
+        // relative to the turned view, as the spec defines it.
         const double cant = hmd::cant_radians(hmd)[eye];
         const rig::Pose eye_in_head{{x, 0.0, 0.0}, glm::angleAxis(cant, glm::dvec3(0.0, 1.0, 0.0))};
         views[eye].pose = to_xr(compose(local_to_space, compose(head, eye_in_head)));

@@ -1,7 +1,7 @@
 // Draws and passes whose extent the GPU decides: indirect draw commands with a GPU-written count,
 // and predicates (VK_EXT_conditional_rendering) that skip commands when the GPU culling left
 // nothing for them. Together they let one command buffer serve every culling outcome without a
-// round trip to the CPU (papers/000 Sect. 4.4; DESIGN.md section 6).
+// round trip to the CPU (papers/000 Sect. 4.4).
 #pragma once
 
 #include <cstdint>
