@@ -86,6 +86,18 @@ void optional_value(JsonWriter& j, std::string_view key, const std::optional<dou
     }
 }
 
+// The turning-head configuration's keys (bench --turning-frames).
+void write_turning(JsonWriter& j, const BenchRun& run) {
+    j.value("turning_frames", static_cast<std::uint64_t>(run.turning_frames));
+    optional_value(j, "turning_time_ratio", run.turning_time_ratio);
+    if (run.turning_driver_compiles) {
+        j.value("turning_driver_compiles", *run.turning_driver_compiles);
+    } else {
+        j.null("turning_driver_compiles");
+    }
+    optional_value(j, "turning_compile_share", run.turning_compile_share);
+}
+
 }  // namespace
 
 std::string bench_json(const BenchReport& report) {
@@ -160,16 +172,7 @@ std::string bench_json(const BenchReport& report) {
         optional_value(j, "time_ratio_p75", run.time_ratio_p75);
         optional_value(j, "primitive_ratio_vs_stereo", run.primitive_ratio);
         optional_value(j, "vertex_invocation_ratio_vs_stereo", run.vertex_invocation_ratio);
-        if (run.turning_frames > 0) {
-            j.value("turning_frames", static_cast<std::uint64_t>(run.turning_frames));
-            optional_value(j, "turning_time_ratio", run.turning_time_ratio);
-            if (run.turning_driver_compiles) {
-                j.value("turning_driver_compiles", *run.turning_driver_compiles);
-            } else {
-                j.null("turning_driver_compiles");
-            }
-            optional_value(j, "turning_compile_share", run.turning_compile_share);
-        }
+        if (run.turning_frames > 0) write_turning(j, run);
         if (run.max_channel_difference) {
             j.value("max_channel_difference_vs_stereo", *run.max_channel_difference);
         } else {

@@ -18,7 +18,9 @@
 namespace monoplane::profile {
 
 struct DriverCompiles {
-    // An LLVM-based driver is loaded in this process, so the counts below mean something.
+    // The driver compiles through LLVM (it has compiled at least once: lavapipe compiles every
+    // pipeline it creates), so the counts below mean something. Reading it costs two loads: it
+    // may be read every frame.
     bool measurable = false;
     std::uint64_t modules = 0;  // shader modules the driver compiled, since the process began
     double seconds = 0.0;       // time spent in those compiles, summed over the driver's threads

@@ -77,6 +77,62 @@ Result<int> named_device(const vk::raii::Instance& instance, const std::vector<D
     return Error{"the physical device named by the runtime is not one of the instance's devices"};
 }
 
+// The device's create info and every feature structure monoplane may enable.
+using DeviceChain =
+    vk::StructureChain<vk::DeviceCreateInfo, vk::PhysicalDeviceFeatures2,
+                       vk::PhysicalDeviceVulkan11Features, vk::PhysicalDeviceHostQueryResetFeatures,
+                       vk::PhysicalDeviceTimelineSemaphoreFeatures,
+                       vk::PhysicalDeviceVulkan12Features, vk::PhysicalDeviceVulkan13Features,
+                       vk::PhysicalDeviceConditionalRenderingFeaturesEXT>;
+
+// Enables on `chain` the core features monoplane uses (the optional ones where the device has
+// them). Vulkan 1.2's are asked for through their own structures, not through
+// VkPhysicalDeviceVulkan12Features: an OpenXR runtime's xrCreateVulkanDeviceKHR may add
+// VkPhysicalDeviceTimelineSemaphoreFeatures to the chain (Monado does unless the chain has one),
+// and next to VkPhysicalDeviceVulkan12Features that is invalid
+// (VUID-VkDeviceCreateInfo-pNext-02830). So the chain carries that structure itself, with
+// timeline semaphores on where the device has them (what such runtimes want). The GPU culling
+// writes each view's draw count: Vulkan 1.2's optional drawIndirectCount, which has no structure
+// of its own outside VkPhysicalDeviceVulkan12Features; VK_KHR_draw_indirect_count, which devices
+// with the feature offer, enables it (indirect_count_extension: the caller enables the
+// extension). A device without the extension gets VkPhysicalDeviceVulkan12Features instead.
+void enable_features(DeviceChain& chain, const vk::raii::PhysicalDevice& device,
+                     bool indirect_count_extension) {
+    const auto supported =
+        device.getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features,
+                            vk::PhysicalDeviceVulkan12Features>();
+    const auto& f10 = supported.get<vk::PhysicalDeviceFeatures2>().features;
+    const bool timeline_semaphore =
+        supported.get<vk::PhysicalDeviceVulkan12Features>().timelineSemaphore;
+    vk::PhysicalDeviceFeatures& enable10 = chain.get<vk::PhysicalDeviceFeatures2>().features;
+    enable10.multiDrawIndirect = VK_TRUE;
+    enable10.drawIndirectFirstInstance = f10.drawIndirectFirstInstance;
+    enable10.pipelineStatisticsQuery = f10.pipelineStatisticsQuery;
+    enable10.geometryShader = f10.geometryShader;
+    enable10.depthClamp = f10.depthClamp;
+    enable10.samplerAnisotropy = f10.samplerAnisotropy;
+    chain.get<vk::PhysicalDeviceVulkan11Features>().multiview =
+        supported.get<vk::PhysicalDeviceVulkan11Features>().multiview;
+    if (indirect_count_extension) {
+        chain.get<vk::PhysicalDeviceHostQueryResetFeatures>().hostQueryReset = VK_TRUE;
+        chain.get<vk::PhysicalDeviceTimelineSemaphoreFeatures>().timelineSemaphore =
+            timeline_semaphore;
+        chain.unlink<vk::PhysicalDeviceVulkan12Features>();
+    } else {
+        auto& enable12 = chain.get<vk::PhysicalDeviceVulkan12Features>();
+        enable12.drawIndirectCount = VK_TRUE;
+        enable12.hostQueryReset = VK_TRUE;
+        enable12.timelineSemaphore = timeline_semaphore;
+        chain.unlink<vk::PhysicalDeviceHostQueryResetFeatures>();
+        chain.unlink<vk::PhysicalDeviceTimelineSemaphoreFeatures>();
+    }
+    auto& enable13 = chain.get<vk::PhysicalDeviceVulkan13Features>();
+    enable13.dynamicRendering = VK_TRUE;
+    enable13.synchronization2 = VK_TRUE;
+    // Required by Vulkan 1.3; glslc expresses compute local sizes with LocalSizeId for it.
+    enable13.maintenance4 = VK_TRUE;
+}
+
 }  // namespace
 
 void ValidationMessages::record(const std::string& message) {
@@ -194,59 +250,20 @@ std::optional<Error> Context::choose_device(const ContextOptions& options) {
 }
 
 std::optional<Error> Context::create_device(const ContextOptions& options) {
-    const auto supported =
-        physical_device_
-            .getFeatures2<vk::PhysicalDeviceFeatures2, vk::PhysicalDeviceVulkan11Features,
-                          vk::PhysicalDeviceVulkan12Features>();
-    const bool timeline_semaphore =
-        supported.get<vk::PhysicalDeviceVulkan12Features>().timelineSemaphore;
-    const auto& f10 = supported.get<vk::PhysicalDeviceFeatures2>().features;
-    const auto& f11 = supported.get<vk::PhysicalDeviceVulkan11Features>();
     const auto device_extensions = physical_device_.enumerateDeviceExtensionProperties();
-    const DeviceCapabilities& caps = capabilities_;
-    // Vulkan 1.2's features are asked for through their own structures, not through
-    // VkPhysicalDeviceVulkan12Features: an OpenXR runtime's xrCreateVulkanDeviceKHR may add
-    // VkPhysicalDeviceTimelineSemaphoreFeatures to this chain (Monado does unless the chain
-    // has one), and next to VkPhysicalDeviceVulkan12Features that is invalid
-    // (VUID-VkDeviceCreateInfo-pNext-02830). So the chain carries that structure itself,
-    // with timeline semaphores on where the device has them (what such runtimes want).
-    vk::StructureChain<vk::DeviceCreateInfo, vk::PhysicalDeviceFeatures2,
-                       vk::PhysicalDeviceVulkan11Features, vk::PhysicalDeviceHostQueryResetFeatures,
-                       vk::PhysicalDeviceTimelineSemaphoreFeatures,
-                       vk::PhysicalDeviceVulkan12Features, vk::PhysicalDeviceVulkan13Features,
-                       vk::PhysicalDeviceConditionalRenderingFeaturesEXT>
-        chain;
-    vk::PhysicalDeviceFeatures& enable10 = chain.get<vk::PhysicalDeviceFeatures2>().features;
-    enable10.multiDrawIndirect = VK_TRUE;
-    enable10.drawIndirectFirstInstance = f10.drawIndirectFirstInstance;
-    enable10.pipelineStatisticsQuery = f10.pipelineStatisticsQuery;
-    enable10.geometryShader = f10.geometryShader;
-    enable10.depthClamp = f10.depthClamp;
-    enable10.samplerAnisotropy = f10.samplerAnisotropy;
-    chain.get<vk::PhysicalDeviceVulkan11Features>().multiview = f11.multiview;
-    chain.get<vk::PhysicalDeviceHostQueryResetFeatures>().hostQueryReset = VK_TRUE;
-    chain.get<vk::PhysicalDeviceTimelineSemaphoreFeatures>().timelineSemaphore = timeline_semaphore;
-    // The GPU culling writes each view's draw count: Vulkan 1.2's optional drawIndirectCount,
-    // which has no structure of its own outside VkPhysicalDeviceVulkan12Features; enabling
-    // VK_KHR_draw_indirect_count, which devices with the feature offer, enables it. A device
-    // without the extension gets VkPhysicalDeviceVulkan12Features instead.
+    const bool indirect_count_extension =
+        has_extension(device_extensions, VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME);
+    DeviceChain chain;
+    enable_features(chain, physical_device_, indirect_count_extension);
     std::vector<const char*> device_extension_names;
-    if (has_extension(device_extensions, VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME)) {
+    if (indirect_count_extension) {
         device_extension_names.push_back(VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME);
-        chain.unlink<vk::PhysicalDeviceVulkan12Features>();
-    } else {
-        auto& enable12 = chain.get<vk::PhysicalDeviceVulkan12Features>();
-        enable12.drawIndirectCount = VK_TRUE;
-        enable12.hostQueryReset = VK_TRUE;
-        enable12.timelineSemaphore = timeline_semaphore;
-        chain.unlink<vk::PhysicalDeviceHostQueryResetFeatures>();
-        chain.unlink<vk::PhysicalDeviceTimelineSemaphoreFeatures>();
     }
     if (auto missing = add_extensions(options.device_extensions, device_extensions, "device",
                                       device_extension_names)) {
         return *missing;
     }
-    if (caps.conditional_rendering) {
+    if (capabilities_.conditional_rendering) {
         chain.get<vk::PhysicalDeviceConditionalRenderingFeaturesEXT>().conditionalRendering =
             VK_TRUE;
         device_extension_names.push_back(VK_EXT_CONDITIONAL_RENDERING_EXTENSION_NAME);
@@ -254,10 +271,6 @@ std::optional<Error> Context::create_device(const ContextOptions& options) {
         chain.unlink<vk::PhysicalDeviceConditionalRenderingFeaturesEXT>();
     }
     chain.get<vk::DeviceCreateInfo>().setPEnabledExtensionNames(device_extension_names);
-    chain.get<vk::PhysicalDeviceVulkan13Features>().dynamicRendering = VK_TRUE;
-    chain.get<vk::PhysicalDeviceVulkan13Features>().synchronization2 = VK_TRUE;
-    // Required by Vulkan 1.3; glslc expresses compute local sizes with LocalSizeId for it.
-    chain.get<vk::PhysicalDeviceVulkan13Features>().maintenance4 = VK_TRUE;
 
     const float priority = 1.0f;
     const vk::DeviceQueueCreateInfo queue_info({}, queue_family_, 1, &priority);
