@@ -2,6 +2,7 @@
 
 #include <map>
 #include <set>
+#include <string_view>
 #include <utility>
 
 namespace monoplane::analysis {
@@ -11,8 +12,20 @@ void merge(Dataset& into, Dataset from) {
                        std::make_move_iterator(from.trials.end()));
     into.answers.insert(into.answers.end(), std::make_move_iterator(from.answers.begin()),
                         std::make_move_iterator(from.answers.end()));
+    into.sessions.insert(into.sessions.end(), std::make_move_iterator(from.sessions.begin()),
+                         std::make_move_iterator(from.sessions.end()));
     into.sources.insert(into.sources.end(), std::make_move_iterator(from.sources.begin()),
                         std::make_move_iterator(from.sources.end()));
+}
+
+std::string unguarded_cell(std::string text) {
+    // The export guards every apostrophe run before a formula character ("'=x" typed is written
+    // "''=x"), so removing one apostrophe restores the typed text.
+    const std::size_t first = text.find_first_not_of('\'');
+    if (first != 0 && first != std::string::npos &&
+        std::string_view("=+-@\t\r").find(text[first]) != std::string_view::npos)
+        text.erase(0, 1);
+    return text;
 }
 
 void derive_session_fields(std::vector<TrialRow>& trials) {

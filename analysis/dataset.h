@@ -6,7 +6,10 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "common/result.h"
@@ -17,8 +20,12 @@ struct TrialRow {
     std::string source;  // the file it came from (database or CSV path)
     std::int64_t session_id = 0;
     std::string participant;  // pseudonymous code: the cluster for repeated measures
+    int session_number = 1;   // the participant's session, 1-based (the export's `session`)
     std::string protocol;
     int trial_index = 0;
+    // Which showing of its scene x distance condition (protocol `repetitions`), 1-based: every
+    // repetition is a trial of its own in every statistic.
+    int repetition = 1;
     bool practice = false;
     int block = -1;  // -1 for practice trials
     std::string scene;
@@ -50,10 +57,56 @@ struct AnswerRow {
     int scale_points = 7;
 };
 
+// A note on a session (the experimenter's window, `monoplane study note`, or the software).
+struct NoteRow {
+    std::string noted_utc;  // ISO 8601 UTC
+    std::optional<int> trial_index;
+    std::string written_by;  // "window", "command" or "software"
+    std::string text;        // as typed
+};
+
+// What an input knows about a session beyond its trial rows: who and which of their sessions,
+// the Latin-square row selector, the participant's variables and the notes. Readers fill what
+// their input holds (a CSV export has no notes and does not say how its protocol orders scenes).
+struct SessionRow {
+    std::string source;
+    std::int64_t session_id = 0;
+    std::string participant;
+    int session_number = 1;
+    // The participant's position in the whole study, which picked the Latin-square row of their
+    // block order, 0-based (`study run --participant-number N` and the export's column count from
+    // 1: this is N - 1; exports without it: the participant's index within their database).
+    int participant_number = 0;
+    std::string protocol;
+    std::string started_utc;  // "" when unknown (CSV)
+    // The protocol's `first_scene`: "latin-square", "random" or "fixed"; "" when the input does
+    // not say (a CSV export).
+    std::string first_scene_order;
+    int scenes = 0;  // scenes in the protocol (CSV: distinct scenes of the session's data trials)
+    // Rows of the protocol's balanced Latin square; 0 when not known or not a Latin square. The
+    // reader of the input fills it (analysis/ does not know the schedule's design).
+    int latin_square_rows = 0;
+    // The participant's variables (protocol [[variables]]) as (name, value), in declaration
+    // order; variables not given are left out.
+    std::vector<std::pair<std::string, std::string>> variables;
+    std::vector<NoteRow> notes;
+};
+
+// How participant codes found in more than one input are joined (`analyze --codes`).
+enum class SharedCodes {
+    Refuse,       // a shared code is an error (the default): no silent merge
+    SamePerson,   // one person: their sessions from every input form one cluster
+    PerDatabase,  // each input's codes are its own: every code gets its file's stem as prefix
+};
+
 struct Dataset {
     std::vector<TrialRow> trials;
     std::vector<AnswerRow> answers;
+    std::vector<SessionRow> sessions;  // may be empty (hand-built data): nothing beyond trials
     std::vector<std::string> sources;  // in the order they were read
+    // Set by join_participant_codes(): the rule applied and the codes more than one input held.
+    SharedCodes codes = SharedCodes::Refuse;
+    std::vector<std::string> shared_codes;
 };
 
 // Reads the CSV of `monoplane study export --format csv` (columns: study/export.cpp
@@ -61,15 +114,35 @@ struct Dataset {
 // add columns at the end. Practice and undecided trials are kept (analysable_trials() drops and
 // counts them); the export has no questionnaire answers, so `answers` stays empty.
 // reference_mode / test_mode / first_scene / chose_test come from derive_session_fields().
+// Sessions: with a `session_id` column, `session` is the participant's session number; without
+// one, an export that has `repetition` numbers sessions in `session` too (sessions are then told
+// apart by participant and number), and an older export has the session id in `session` (one
+// session per participant). `sessions` gets one row per session, its variables from the
+// `var_<name>` columns. Text cells that the export guarded against spreadsheet formulas (a
+// leading apostrophe before =, +, -, @, tab or CR) come back as typed.
 // Errors (a file that cannot be read, a missing column, a malformed field or record) name the
 // file, the line and, for a field, the column.
 Result<Dataset> read_export_csv(const std::filesystem::path& path);
 
+// A CSV text cell without the apostrophe the export puts before text that begins with =, +, -,
+// @, tab or CR after any apostrophes (so that a spreadsheet shows it as text): "'=1+2" -> "=1+2",
+// "''=x" -> "'=x"; anything else unchanged.
+std::string unguarded_cell(std::string text);
+
 // Appends another source. Sessions stay apart by (source, session_id): two databases may both
-// have a session 1. Participants are *not* kept apart by source: a code is one person, the
-// conservative choice for clustering (two people sharing a code merge into one, coarser
-// cluster, which stays valid; one person split into two clusters would not).
+// have a session 1. Participants are not kept apart here: join_participant_codes() decides what
+// a code that several sources hold means.
 void merge(Dataset& into, Dataset from);
+
+// Applies `rule` to the codes found in more than one source of `data` (trials, answers and
+// sessions alike): Refuse fails with a message that names the codes, their files and the two
+// ways on (`--codes same-person`, `--codes per-database`); SamePerson keeps the codes (one
+// person, one cluster); PerDatabase prefixes every code with its source's file stem and "/"
+// ("site-a.sqlite" -> "site-a/a1"), and fails when two sources share a stem. Records the rule
+// and the shared codes in data.codes and data.shared_codes.
+Result<bool> join_participant_codes(Dataset& data, SharedCodes rule);
+// "same-person" / "per-database" (as `--codes` takes them); "refuse" for the default.
+std::string_view shared_codes_name(SharedCodes rule);
 
 // Fills, per session (source, session_id): first_scene = scene of the session's data trial in
 // block 0; reference_mode = the one already set on any of the session's rows (a database

@@ -1,9 +1,11 @@
 // read_export_csv() (declared in dataset.h): the CSV of `monoplane study export` into TrialRows.
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string_view>
 
@@ -29,10 +31,11 @@ std::string lower(std::string_view text) {
 }
 
 // One record with its header, turning fields into values or into errors that say where.
+using Columns = std::map<std::string, std::size_t, std::less<>>;
+
 class Row {
   public:
-    Row(const std::string& file, const CsvRecord& record,
-        const std::map<std::string, std::size_t, std::less<>>& columns)
+    Row(const std::string& file, const CsvRecord& record, const Columns& columns)
         : file_(file), record_(record), columns_(columns) {}
 
     // The export writes NA; pandas' to_csv writes an empty field.
@@ -41,10 +44,26 @@ class Row {
         return value.empty() || value == "NA";
     }
 
+    bool has(std::string_view column) const { return columns_.contains(column); }
+
+    // A text cell as typed: without the export's guard against spreadsheet formulas.
+    std::string raw_text(std::string_view column) const { return unguarded_cell(field(column)); }
+
     Result<std::string> text(std::string_view column) const {
         const std::string& value = field(column);
         if (is_na(column)) return fail(column, value, "where a value is needed");
-        return value;
+        return unguarded_cell(value);
+    }
+
+    // The header's columns whose names begin with `prefix`, in the order of the file.
+    std::vector<std::string> columns_starting_with(std::string_view prefix) const {
+        std::vector<std::pair<std::size_t, std::string>> found;
+        for (const auto& [name, index] : columns_)
+            if (name.starts_with(prefix)) found.emplace_back(index, name);
+        std::sort(found.begin(), found.end());
+        std::vector<std::string> names;
+        for (auto& [index, name] : found) names.push_back(std::move(name));
+        return names;
     }
 
     Result<std::int64_t> integer(std::string_view column) const {
@@ -94,7 +113,7 @@ class Row {
 
     const std::string& file_;
     const CsvRecord& record_;
-    const std::map<std::string, std::size_t, std::less<>>& columns_;
+    const Columns& columns_;
 };
 
 // Assigns a Result's value or returns its error from the enclosing function.
@@ -105,20 +124,49 @@ class Row {
         target = std::move(result_).value();  \
     } while (false)
 
-Result<TrialRow> trial_row(const Row& row) {
+// How an export names its sessions (read_export_csv() in dataset.h says why there are three).
+enum class SessionLayout {
+    IdAndNumber,  // session_id: the database's id; session: the participant's session number
+    NumberOnly,   // session: the participant's session number; no id
+    IdOnly,       // session: the database's id (exports before participants had sessions)
+};
+
+SessionLayout session_layout(const Columns& columns) {
+    if (columns.contains(std::string_view("session_id"))) return SessionLayout::IdAndNumber;
+    if (columns.contains(std::string_view("repetition"))) return SessionLayout::NumberOnly;
+    return SessionLayout::IdOnly;
+}
+
+Result<int> small_integer(const Row& row, std::string_view column) {
+    std::int64_t value = 0;
+    MONOPLANE_ASSIGN(value, row.integer(column));
+    return static_cast<int>(value);
+}
+
+// The trial's session (the id, NumberOnly's left for the caller) and repetition.
+Result<bool> session_fields(const Row& row, SessionLayout layout, TrialRow& t) {
+    if (layout == SessionLayout::IdOnly) {
+        MONOPLANE_ASSIGN(t.session_id, row.integer("session"));
+    } else {
+        MONOPLANE_ASSIGN(t.session_number, small_integer(row, "session"));
+        if (layout == SessionLayout::IdAndNumber)
+            MONOPLANE_ASSIGN(t.session_id, row.integer("session_id"));
+    }
+    if (row.has("repetition") && !row.is_na("repetition"))
+        MONOPLANE_ASSIGN(t.repetition, small_integer(row, "repetition"));
+    return true;
+}
+
+Result<TrialRow> trial_row(const Row& row, SessionLayout layout) {
     TrialRow t;
     MONOPLANE_ASSIGN(t.participant, row.text("participant"));
-    MONOPLANE_ASSIGN(t.session_id, row.integer("session"));
-    std::int64_t index = 0;
-    MONOPLANE_ASSIGN(index, row.integer("trial_index"));
-    t.trial_index = static_cast<int>(index);
+    if (Result<bool> session = session_fields(row, layout, t); !session) return session.error();
+    MONOPLANE_ASSIGN(t.trial_index, small_integer(row, "trial_index"));
     MONOPLANE_ASSIGN(t.practice, row.boolean("practice"));
     if (row.is_na("block")) {
         t.block = -1;  // NA for practice trials
     } else {
-        std::int64_t block = 0;
-        MONOPLANE_ASSIGN(block, row.integer("block"));
-        t.block = static_cast<int>(block);
+        MONOPLANE_ASSIGN(t.block, small_integer(row, "block"));
     }
     MONOPLANE_ASSIGN(t.scene, row.text("scene"));
     MONOPLANE_ASSIGN(t.mono_plane, row.number("mono_plane"));
@@ -128,36 +176,55 @@ Result<TrialRow> trial_row(const Row& row) {
     if (t.decided) {  // the outcome columns are NA until decided
         MONOPLANE_ASSIGN(t.chosen_mode, row.text("chosen_mode"));
         MONOPLANE_ASSIGN(t.valid, row.boolean("valid"));
-        std::int64_t switches = 0;
-        MONOPLANE_ASSIGN(switches, row.integer("switches"));
-        t.switches = static_cast<int>(switches);
+        MONOPLANE_ASSIGN(t.switches, small_integer(row, "switches"));
         MONOPLANE_ASSIGN(t.decision_time_s, row.number("decision_time_s"));
     }
+    if (row.has("protocol")) t.protocol = row.raw_text("protocol");
     return t;
+}
+
+// The session of a trial's row: the participant's number (participant_number, or the older
+// exports' participant_index) and variables (every var_<name> column that is not NA).
+Result<SessionRow> session_row(const Row& row, const TrialRow& t) {
+    SessionRow s;
+    s.source = t.source;
+    s.session_id = t.session_id;
+    s.participant = t.participant;
+    s.session_number = t.session_number;
+    s.protocol = t.protocol;
+    if (row.has("participant_number") && !row.is_na("participant_number")) {
+        MONOPLANE_ASSIGN(s.participant_number, small_integer(row, "participant_number"));
+        s.participant_number -= 1;  // the export's is 1-based, as --participant-number takes it
+    } else if (row.has("participant_index") && !row.is_na("participant_index")) {
+        MONOPLANE_ASSIGN(s.participant_number, small_integer(row, "participant_index"));
+    }
+    for (const std::string& column : row.columns_starting_with("var_")) {
+        if (column.size() > 4 && !row.is_na(column))
+            s.variables.emplace_back(column.substr(4), row.raw_text(column));
+    }
+    return s;
 }
 
 #undef MONOPLANE_ASSIGN
 
-}  // namespace
-
-Result<Dataset> read_export_csv(const std::filesystem::path& path) {
+Result<std::vector<CsvRecord>> read_records(const std::filesystem::path& path) {
     const std::string file = path.string();
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error{file + ": cannot open the file (does it exist, is it readable?)"};
     std::ostringstream buffer;
     buffer << in.rdbuf();
     if (in.bad()) return Error{file + ": reading the file failed"};
-
     Result<std::vector<CsvRecord>> parsed = parse_csv(buffer.str(), file);
     if (!parsed) return parsed.error();
-    const std::vector<CsvRecord>& records = *parsed;
-    if (records.empty())
+    if (parsed->empty())
         return Error{file +
                      ":1: the file is empty; expected the header of `monoplane study "
                      "export --format csv`"};
+    return parsed;
+}
 
-    std::map<std::string, std::size_t, std::less<>> columns;
-    const CsvRecord& header = records.front();
+Result<Columns> header_columns(const std::string& file, const CsvRecord& header) {
+    Columns columns;
     for (std::size_t i = 0; i < header.fields.size(); ++i) columns.emplace(header.fields[i], i);
     for (std::string_view name : kRequired) {
         if (!columns.contains(name))
@@ -165,23 +232,74 @@ Result<Dataset> read_export_csv(const std::filesystem::path& path) {
                          std::string(name) +
                          "'; is this the CSV of `monoplane study export --format csv`?"};
     }
-    const auto protocol = columns.find(std::string_view("protocol"));
+    return columns;
+}
+
+// Exports without session ids: each participant's session numbers become ids 1, 2, ... in the
+// order they appear, so that sessions stay apart by (source, id) as everywhere else.
+void number_sessions(std::vector<TrialRow>& trials) {
+    std::map<std::pair<std::string, int>, std::int64_t> ids;
+    for (TrialRow& t : trials) {
+        const auto next = static_cast<std::int64_t>(ids.size()) + 1;
+        t.session_id = ids.emplace(std::pair(t.participant, t.session_number), next).first->second;
+    }
+}
+
+// One SessionRow per session, from its first row, with the distinct scenes of its data trials.
+Result<std::vector<SessionRow>> sessions_of(const std::vector<TrialRow>& trials,
+                                            const std::vector<Row>& rows) {
+    std::map<std::pair<std::string, std::int64_t>, std::size_t> index;
+    std::vector<SessionRow> sessions;
+    std::vector<std::set<std::string>> scenes;
+    for (std::size_t i = 0; i < trials.size(); ++i) {
+        const TrialRow& t = trials[i];
+        const auto key = std::pair(t.participant, t.session_id);
+        auto found = index.find(key);
+        if (found == index.end()) {
+            Result<SessionRow> session = session_row(rows[i], t);
+            if (!session) return session.error();
+            found = index.emplace(key, sessions.size()).first;
+            sessions.push_back(std::move(session).value());
+            scenes.emplace_back();
+        }
+        if (!t.practice) scenes[found->second].insert(t.scene);
+    }
+    for (std::size_t i = 0; i < sessions.size(); ++i)
+        sessions[i].scenes = static_cast<int>(scenes[i].size());
+    return sessions;
+}
+
+}  // namespace
+
+Result<Dataset> read_export_csv(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    Result<std::vector<CsvRecord>> records = read_records(path);
+    if (!records) return records.error();
+    const CsvRecord& header = records->front();
+    Result<Columns> columns = header_columns(file, header);
+    if (!columns) return columns.error();
+    const SessionLayout layout = session_layout(*columns);
 
     Dataset dataset;
     dataset.sources.push_back(file);
-    for (std::size_t r = 1; r < records.size(); ++r) {
-        const CsvRecord& record = records[r];
+    std::vector<Row> rows;
+    for (std::size_t r = 1; r < records->size(); ++r) {
+        const CsvRecord& record = (*records)[r];
         if (record.fields.size() != header.fields.size())
             return Error{file + ":" + std::to_string(record.line) + ": " +
                          std::to_string(record.fields.size()) + " fields, but the header has " +
                          std::to_string(header.fields.size())};
-        Result<TrialRow> row = trial_row(Row(file, record, columns));
+        rows.emplace_back(file, record, *columns);
+        Result<TrialRow> row = trial_row(rows.back(), layout);
         if (!row) return row.error();
         TrialRow& trial = row.value();
         trial.source = file;
-        if (protocol != columns.end()) trial.protocol = record.fields[protocol->second];
         dataset.trials.push_back(std::move(trial));
     }
+    if (layout == SessionLayout::NumberOnly) number_sessions(dataset.trials);
+    Result<std::vector<SessionRow>> sessions = sessions_of(dataset.trials, rows);
+    if (!sessions) return sessions.error();
+    dataset.sessions = std::move(sessions).value();
     derive_session_fields(dataset.trials);
     return dataset;
 }

@@ -1,13 +1,9 @@
 #include "study/export.h"
 
-#include <unistd.h>
-
-#include <cerrno>
+#include <algorithm>
 #include <charconv>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <system_error>
+#include <set>
 
 #include "study/staircase_estimates.h"
 
@@ -50,16 +46,55 @@ Cell optional_number(const std::optional<double>& value) {
     return value ? number(number_text(*value)) : na();
 }
 
-// The row for one trial, in export_columns() order. Outcome columns are NA until decided; the
-// staircase columns are NA unless `staircase` (its scene's estimate after the trial) is given.
+// True for text that is a number as JSON writes one (-?int[.frac][e[+-]exp]), which CSV readers
+// take as a number too.
+bool is_json_number(std::string_view text) {
+    std::size_t at = text.starts_with('-') ? 1 : 0;
+    const auto digits = [&] {
+        const std::size_t from = at;
+        while (at < text.size() && text[at] >= '0' && text[at] <= '9') ++at;
+        return at - from;
+    };
+    const std::size_t whole = digits();
+    if (whole == 0 || (whole > 1 && text[at - whole] == '0')) return false;
+    if (at < text.size() && text[at] == '.' && (++at, digits() == 0)) return false;
+    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+        ++at;
+        if (at < text.size() && (text[at] == '+' || text[at] == '-')) ++at;
+        if (digits() == 0) return false;
+    }
+    return at == text.size();
+}
+
+// A variable's value: integer and number variables as numbers (their stored text is canonical;
+// one that is not a plain number stays text rather than break the JSON), the others as text.
+Cell variable_cell(const VariableValue& value) {
+    const bool numeric = value.type == VariableType::Integer || value.type == VariableType::Number;
+    return numeric && is_json_number(value.value) ? number(value.value) : text(value.value);
+}
+
+// The cells of the var_ columns: the session's participant's value, NA where none was given.
+void append_variables(std::vector<Cell>& cells, const SessionInfo& s,
+                      const std::vector<std::string>& names) {
+    for (const std::string& name : names) {
+        const auto found = std::find_if(s.variables.begin(), s.variables.end(),
+                                        [&](const VariableValue& v) { return v.name == name; });
+        cells.push_back(found == s.variables.end() ? na() : variable_cell(*found));
+    }
+}
+
+// The row for one trial, in export_columns() order, then one cell per variable of `variables`.
+// Outcome columns are NA until decided; the staircase columns are NA unless `staircase` (its
+// scene's estimate after the trial) is given.
 std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s,
-                      const ThresholdEstimate* staircase) {
+                      const ThresholdEstimate* staircase,
+                      const std::vector<std::string>& variables) {
     const ScheduledTrial& t = r.trial;
     const TrialOutcome& o = r.outcome;
     const bool d = r.decided;
-    return {
+    std::vector<Cell> cells = {
         text(r.participant_code),
-        integer(r.session_id),
+        integer(s.session_number),
         integer(t.index),
         t.practice ? na() : integer(t.block),
         text(t.scene),
@@ -89,7 +124,12 @@ std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s,
         staircase ? number(number_text(staircase->threshold_m)) : na(),
         staircase ? optional_number(staircase->lower_m) : na(),
         staircase ? optional_number(staircase->upper_m) : na(),
+        integer(r.session_id),
+        integer(t.repetition),
+        integer(s.participant_number + 1),  // 1-based, as --participant-number takes it
     };
+    append_variables(cells, s, variables);
+    return cells;
 }
 
 // The trial's staircase estimate after its decision, or null (constant sessions, practice and
@@ -101,10 +141,25 @@ const ThresholdEstimate* staircase_estimate(const ExportData& data, const TrialR
     return found == session->second.end() ? nullptr : &found->second;
 }
 
+// The var_ column names without their prefix.
+std::vector<std::string> variable_names(const ExportData& data) {
+    std::vector<std::string> names;
+    std::set<std::string, std::less<>> seen;
+    const auto add = [&](const std::string& name) {
+        if (seen.insert(name).second) names.push_back(name);
+    };
+    for (const std::string& name : data.variable_names) add(name);
+    for (const auto& [id, session] : data.sessions)
+        for (const VariableValue& value : session.variables) add(value.name);
+    return names;
+}
+
 template <class Write>
 void for_each_row(const ExportData& data, Write write) {
+    const std::vector<std::string> variables = variable_names(data);
     for (const TrialRecord& record : data.trials) {
-        write(row(record, data.sessions.at(record.session_id), staircase_estimate(data, record)));
+        write(row(record, data.sessions.at(record.session_id), staircase_estimate(data, record),
+                  variables));
     }
 }
 
@@ -119,16 +174,38 @@ void write_export(const ExportData& data, ExportFormat format, std::ostream& out
         case ExportFormat::FramesCsv:
             write_frames_csv(data, out);
             return;
+        case ExportFormat::NotesCsv:
+            write_notes_csv(data, out);
+            return;
     }
 }
 
-Result<bool> check_stream(const std::ostream& out, std::string_view where) {
-    if (!out.good()) {
-        const int err = errno;
-        return Error{"writing the export to " + std::string(where) + " failed" +
-                     (err != 0 ? std::string(": ") + std::strerror(err) : std::string())};
-    }
-    return true;
+// The header line of a CSV export whose columns begin with the first `count` of `columns`: a
+// file whose first line starts so is one of ours.
+bool csv_header_starts_with(std::string_view head, const std::vector<std::string_view>& columns,
+                            std::size_t count) {
+    std::string prefix;
+    for (std::size_t i = 0; i < count && i < columns.size(); ++i)
+        prefix += (i > 0 ? "," : "") + std::string(columns[i]);
+    if (!head.starts_with(prefix)) return false;
+    return head.size() > prefix.size() &&
+           std::string_view(",\r\n").find(head[prefix.size()]) != std::string_view::npos;
+}
+
+// The JSON export's shape: an array, empty or of objects whose first key is "participant".
+bool is_json_export(std::string_view head) {
+    const auto skip_space = [&](std::size_t at) {
+        while (at < head.size() &&
+               std::string_view(" \t\r\n").find(head[at]) != std::string_view::npos)
+            ++at;
+        return at;
+    };
+    std::size_t at = skip_space(0);
+    if (at >= head.size() || head[at] != '[') return false;
+    at = skip_space(at + 1);
+    if (at < head.size() && head[at] == ']') return skip_space(at + 1) == head.size();
+    if (at >= head.size() || head[at] != '{') return false;
+    return head.substr(skip_space(at + 1)).starts_with("\"participant\":");
 }
 
 }  // namespace
@@ -141,6 +218,8 @@ std::string_view export_format_name(ExportFormat format) {
             return "json";
         case ExportFormat::FramesCsv:
             return "frames-csv";
+        case ExportFormat::NotesCsv:
+            return "notes-csv";
     }
     return "csv";
 }
@@ -149,8 +228,30 @@ Result<ExportFormat> parse_export_format(std::string_view name) {
     if (name == "csv") return ExportFormat::Csv;
     if (name == "json") return ExportFormat::Json;
     if (name == "frames-csv") return ExportFormat::FramesCsv;
+    if (name == "notes-csv") return ExportFormat::NotesCsv;
     return Error{"unknown export format '" + std::string(name) +
-                 "'; use csv, json or frames-csv (the frame and head log)"};
+                 "'; use csv, json, frames-csv (the frame and head log) or notes-csv (the "
+                 "sessions' notes)"};
+}
+
+OutputKind export_output_kind(ExportFormat format) {
+    switch (format) {
+        case ExportFormat::Csv:
+            return {"export of --format csv", [](std::string_view head) {
+                        return csv_header_starts_with(head, export_columns(), 5);
+                    }};
+        case ExportFormat::Json:
+            return {"export of --format json", is_json_export};
+        case ExportFormat::FramesCsv:
+            return {"export of --format frames-csv", [](std::string_view head) {
+                        return csv_header_starts_with(head, frame_export_columns(), 5);
+                    }};
+        case ExportFormat::NotesCsv:
+            return {"export of --format notes-csv", [](std::string_view head) {
+                        return csv_header_starts_with(head, notes_export_columns(), 7);
+                    }};
+    }
+    return {"export", [](std::string_view) { return false; }};
 }
 
 const std::vector<std::string_view>& export_columns() {
@@ -186,11 +287,59 @@ const std::vector<std::string_view>& export_columns() {
         "staircase_threshold_m",
         "staircase_lower_m",
         "staircase_upper_m",
+        "session_id",
+        "repetition",
+        "participant_number",
     };
     return columns;
 }
 
+std::vector<std::string> variable_columns(const ExportData& data) {
+    std::vector<std::string> columns;
+    for (const std::string& name : variable_names(data)) columns.push_back("var_" + name);
+    return columns;
+}
+
+namespace {
+
+// Every session of the database, trials or not (a session may have notes before its first
+// trial started), for the notes export.
+Result<ExportData> collect_notes(const StudyStore& store) {
+    Result<std::vector<RosterRow>> roster = store.roster();
+    if (!roster) return roster.error();
+    ExportData data;
+    for (const RosterRow& row : *roster) {
+        Result<SessionInfo> info = store.session(row.session_id);
+        if (!info) return info.error();
+        data.sessions.emplace(row.session_id, std::move(info).value());
+    }
+    return data;
+}
+
+// The variables the sessions' protocols declare, so that a column exists for a variable no
+// participant has been given yet. A stored protocol this build cannot parse any more declares
+// none here: its sessions' stored values still get their columns (variable_columns).
+std::vector<std::string> declared_variables(const std::map<std::int64_t, SessionInfo>& sessions) {
+    std::vector<std::string> names;
+    std::set<std::string, std::less<>> protocols_seen;
+    for (const auto& [id, session] : sessions) {
+        const std::string key = std::to_string(session.protocol_hash) + session.protocol_name;
+        if (!protocols_seen.insert(key).second) continue;  // the same protocol: parsed once
+        Result<Protocol> protocol =
+            parse_protocol(session.protocol_text, "session " + std::to_string(id) + "'s protocol");
+        if (!protocol) continue;
+        for (const ParticipantVariable& variable : protocol->day.variables) {
+            if (std::find(names.begin(), names.end(), variable.name) == names.end())
+                names.push_back(variable.name);
+        }
+    }
+    return names;
+}
+
+}  // namespace
+
 Result<ExportData> collect_export(const StudyStore& store, ExportFormat format) {
+    if (format == ExportFormat::NotesCsv) return collect_notes(store);
     Result<std::vector<TrialRecord>> trials = store.trials();
     if (!trials) return trials.error();
     ExportData data;
@@ -201,6 +350,7 @@ Result<ExportData> collect_export(const StudyStore& store, ExportFormat format) 
         if (!info) return info.error();
         data.sessions.emplace(record.session_id, std::move(info).value());
     }
+    data.variable_names = declared_variables(data.sessions);
     for (const auto& [id, info] : data.sessions) {
         if (info.procedure != Procedure::Staircase) continue;
         Result<std::map<int, ThresholdEstimate>> estimates =
@@ -225,6 +375,36 @@ std::string csv_field(std::string_view value) {
         quoted += c;
     }
     return quoted + '"';
+}
+
+namespace {
+
+// Text a spreadsheet would take for a formula (OWASP, "CSV Injection"): its first character
+// after any apostrophes. Counting the apostrophes makes the rule reversible: "'=x" typed as
+// such is written "''=x" and comes back as "'=x".
+bool looks_like_formula(std::string_view value) {
+    const std::size_t first = value.find_first_not_of('\'');
+    return first != std::string_view::npos &&
+           std::string_view("=+-@\t\r").find(value[first]) != std::string_view::npos;
+}
+
+}  // namespace
+
+std::string csv_text(std::string_view value) {
+    if (!looks_like_formula(value)) return csv_field(value);
+    // Quoted, so that the apostrophe is part of the cell's text in every CSV reader.
+    std::string quoted = "\"'";
+    for (char c : value) {
+        if (c == '"') quoted += '"';
+        quoted += c;
+    }
+    return quoted + '"';
+}
+
+std::string csv_text_original(std::string_view cell) {
+    if (cell.starts_with('\'') && looks_like_formula(cell.substr(1)))
+        return std::string(cell.substr(1));
+    return std::string(cell);
 }
 
 std::string json_string(std::string_view value) {
@@ -278,35 +458,64 @@ std::string number_text(double value) {
     return std::string(buffer, result.ptr);
 }
 
+namespace {
+
+// One CSV cell: NA and TRUE/FALSE as R writes them (read.csv and pandas.read_csv take them
+// without options as missing and as logical / bool columns); text guarded against formulas.
+std::string csv_cell(const Cell& cell) {
+    switch (cell.type) {
+        case Cell::Type::Na:
+            return "NA";
+        case Cell::Type::Text:
+            return csv_text(cell.text);
+        case Cell::Type::Number:
+            return cell.text;
+        case Cell::Type::Bool:
+            return cell.flag ? "TRUE" : "FALSE";
+    }
+    return "NA";
+}
+
+}  // namespace
+
 void write_csv(const ExportData& data, std::ostream& out) {
     std::string line;
     for (std::string_view column : export_columns())
         line += (line.empty() ? "" : ",") + std::string(column);
+    for (const std::string& column : variable_columns(data)) line += "," + column;
     out << line << '\n';
     for_each_row(data, [&](const std::vector<Cell>& cells) {
         line.clear();
         for (std::size_t i = 0; i < cells.size(); ++i) {
             if (i > 0) line += ',';
-            const Cell& cell = cells[i];
-            switch (cell.type) {
-                // NA and TRUE/FALSE as R writes them: read.csv and pandas.read_csv take them
-                // without options as missing and as logical / bool columns.
-                case Cell::Type::Na:
-                    line += "NA";
-                    break;
-                case Cell::Type::Text:
-                    line += csv_field(cell.text);
-                    break;
-                case Cell::Type::Number:
-                    line += cell.text;
-                    break;
-                case Cell::Type::Bool:
-                    line += cell.flag ? "TRUE" : "FALSE";
-                    break;
-            }
+            line += csv_cell(cells[i]);
         }
         out << line << '\n';
     });
+}
+
+const std::vector<std::string_view>& notes_export_columns() {
+    static const std::vector<std::string_view> columns = {
+        "participant", "session", "trial", "noted_utc", "runtime_time_ns", "source", "note"};
+    return columns;
+}
+
+void write_notes_csv(const ExportData& data, std::ostream& out) {
+    std::string line;
+    for (std::string_view column : notes_export_columns())
+        line += (line.empty() ? "" : ",") + std::string(column);
+    out << line << '\n';
+    for (const auto& [id, session] : data.sessions) {
+        for (const SessionNote& note : session.notes) {
+            line = csv_text(session.participant_code) + ',' +
+                   std::to_string(session.session_number) + ',';
+            line += (note.trial_index ? std::to_string(*note.trial_index) : "NA") + ',';
+            line += csv_text(note.noted_utc) + ',';
+            line += (note.runtime_time_ns ? std::to_string(*note.runtime_time_ns) : "NA") + ',';
+            line += csv_text(note_source_name(note.source)) + ',' + csv_text(note.text);
+            out << line << '\n';
+        }
+    }
 }
 
 namespace {
@@ -339,39 +548,50 @@ std::string json_scene_files(const SessionInfo& session, const std::string& scen
     return "[" + files + "]";
 }
 
+// The session's notes with every field, their text exactly as typed (JSON needs no guard
+// against spreadsheet formulas).
 std::string json_notes(const SessionInfo& session) {
+    const auto optional = [](const auto& value) {
+        return value ? std::to_string(*value) : std::string("null");
+    };
     std::string notes;
     for (const SessionNote& note : session.notes) {
         notes += std::string(notes.empty() ? "" : ", ") +
                  "{\"noted_utc\": " + json_string(note.noted_utc) +
-                 ", \"note\": " + json_string(note.text) + "}";
+                 ", \"note\": " + json_string(note.text) +
+                 ", \"source\": " + json_string(note_source_name(note.source)) +
+                 ", \"runtime_time_ns\": " + optional(note.runtime_time_ns) +
+                 ", \"trial\": " + optional(note.trial_index) + "}";
     }
     return "[" + notes + "]";
 }
 
-// One trial's object: the export's columns, then two keys CSV has no room for, the trial's
-// scene files and its session's notes.
-std::string json_object(const TrialRecord& record, const SessionInfo& session,
-                        const ThresholdEstimate* staircase) {
-    const std::vector<std::string_view>& columns = export_columns();
-    const std::vector<Cell> cells = row(record, session, staircase);
+// One trial's object: the export's columns (`keys`, JSON strings already), then two keys CSV
+// has no room for, the trial's scene files and its session's notes.
+std::string json_object(const std::vector<std::string>& keys, const std::vector<Cell>& cells,
+                        const SessionInfo& session, const std::string& scene) {
     std::string object = "{";
     for (std::size_t i = 0; i < cells.size(); ++i) {
-        object += (i > 0 ? ", " : "") + json_string(columns[i]) + ": " + json_value(cells[i]);
+        object += (i > 0 ? ", " : "") + keys[i] + ": " + json_value(cells[i]);
     }
-    return object + ", \"scene_files\": " + json_scene_files(session, record.trial.scene) +
+    return object + ", \"scene_files\": " + json_scene_files(session, scene) +
            ", \"session_notes\": " + json_notes(session) + "}";
 }
 
 }  // namespace
 
 void write_json(const ExportData& data, std::ostream& out) {
+    std::vector<std::string> keys;
+    for (std::string_view column : export_columns()) keys.push_back(json_string(column));
+    for (const std::string& column : variable_columns(data)) keys.push_back(json_string(column));
+    const std::vector<std::string> variables = variable_names(data);
     out << '[';
     bool first = true;
     for (const TrialRecord& record : data.trials) {
+        const SessionInfo& session = data.sessions.at(record.session_id);
         out << (first ? "\n  " : ",\n  ")
-            << json_object(record, data.sessions.at(record.session_id),
-                           staircase_estimate(data, record));
+            << json_object(keys, row(record, session, staircase_estimate(data, record), variables),
+                           session, record.trial.scene);
         first = false;
     }
     out << (first ? "]\n" : "\n]\n");
@@ -382,39 +602,24 @@ Result<bool> export_trials(const StudyStore& store, ExportFormat format, std::os
     if (!data) return data.error();
     write_export(*data, format, out);
     out.flush();
-    return check_stream(out, "the output stream");
+    if (!out.good()) return Error{"writing the export to the output stream failed"};
+    return true;
 }
 
 Result<bool> export_trials(const StudyStore& store, ExportFormat format,
-                           const std::filesystem::path& path) {
-    // Collect first: a database error leaves no file behind at all.
+                           const std::filesystem::path& path, bool force) {
+    // Checked before anything is read or written: a refusal changes nothing.
+    if (Result<bool> allowed =
+            check_output(path, export_output_kind(format), {store.path()}, force);
+        !allowed)
+        return allowed;
+    // Collected before the file is begun: a database error leaves no file behind at all.
     Result<ExportData> data = collect_export(store, format);
     if (!data) return data.error();
-    const std::string target = path.string();
-    const std::string temporary = target + ".tmp";
-    {
-        errno = 0;
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out) {
-            const int err = errno;
-            return Error{"cannot write export file '" + temporary + "'" +
-                         (err != 0 ? std::string(": ") + std::strerror(err) : std::string()) +
-                         "; check that the directory exists and is writable."};
-        }
+    return write_file_atomically(path, [&](std::ostream& out) -> Result<bool> {
         write_export(*data, format, out);
-        out.close();
-        if (Result<bool> ok = check_stream(out, "'" + temporary + "'"); !ok) {
-            ::unlink(temporary.c_str());
-            return ok;
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) {
-        ::unlink(temporary.c_str());
-        return Error{"cannot move the export into place at '" + target + "': " + ec.message()};
-    }
-    return true;
+        return true;
+    });
 }
 
 }  // namespace monoplane::study

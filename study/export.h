@@ -1,11 +1,13 @@
 // Export of the study database: one tidy row per trial, identity columns
-// first, as CSV or JSON that pandas and R read without options. docs/data.md lists every column
-// with its type and unit.
+// first, as CSV or JSON that pandas and R read without options, and the sessions' notes as CSV.
+// docs/data.md lists every column with its type and unit.
 //
 // Every trial of every session is exported, practice trials too, flagged by the `practice`
 // column, so an analysis filters them explicitly (and can check them); undecided trials appear
 // with NA outcome columns (`decided` false). In CSV, booleans are TRUE / FALSE and NA is the
-// unquoted field NA (as R writes them); in JSON they are true / false and null.
+// unquoted field NA (as R writes them); in JSON they are true / false and null. A CSV text cell
+// that begins with =, +, -, @, a tab or a carriage return gets a leading apostrophe, so a
+// spreadsheet shows it as text instead of evaluating it (csv_text); JSON keeps text as typed.
 #pragma once
 
 #include <cstdint>
@@ -18,56 +20,88 @@
 
 #include "common/result.h"
 #include "study/adaptive_procedure.h"
+#include "study/output_file.h"
 #include "study/study_store.h"
 
 namespace monoplane::study {
 
-// Csv and Json: the trials; FramesCsv: the frame and head log of every headset session.
-enum class ExportFormat { Csv, Json, FramesCsv };
+// Csv and Json: the trials; FramesCsv: the frame and head log of every headset session;
+// NotesCsv: the notes of every session.
+enum class ExportFormat { Csv, Json, FramesCsv, NotesCsv };
 
-// "csv", "json" or "frames-csv", as the CLI's --format takes them.
+// "csv", "json", "frames-csv" or "notes-csv", as the CLI's --format takes them.
 std::string_view export_format_name(ExportFormat format);
 Result<ExportFormat> parse_export_format(std::string_view name);
 
 // What an export holds: the trials and the sessions they belong to, keyed by session id.
 struct ExportData {
     std::vector<TrialRecord> trials;
+    // The trials' sessions; for NotesCsv every session of the database, trials or not.
     std::map<std::int64_t, SessionInfo> sessions;
+    // The participant variables the sessions' protocols declare, in first-seen declaration order
+    // (sessions in id order); variable_columns() adds any a session has a value for.
+    std::vector<std::string> variable_names;
     std::map<std::int64_t, std::vector<FrameRecord>> frames;  // FramesCsv only, per session
     // Staircase sessions: each scene's staircase estimate after each decided adaptive trial, by
     // session and trial index (replayed from the stored decisions; study/staircase_estimates.h).
     std::map<std::int64_t, std::map<int, ThresholdEstimate>> staircase_estimates;
 };
 
-// Reads every trial and its session (and, for FramesCsv, every session's frame log), and replays
+// Reads every trial and its session (and, for FramesCsv, every session's frame log; for NotesCsv
+// only the sessions, every one), the variables the sessions' protocols declare, and replays
 // each staircase session's decisions for its estimates; a staircase session whose stored
-// protocol text does not parse is an error naming it. May be called
-// while a study writes (WAL readers do not block the writer); the export is then a consistent
-// snapshot of some moment per query.
+// protocol text does not parse is an error naming it. May be called while a study writes (WAL
+// readers do not block the writer); the export is then a consistent snapshot of some moment per
+// query.
 Result<ExportData> collect_export(const StudyStore& store, ExportFormat format = ExportFormat::Csv);
 
-// The export's column names, in order (CSV header, JSON keys). JSON adds two keys after them:
-// "scene_files" (the files the trial's scene was read from, with their SHA-256 and size; empty
-// for a built-in scene) and "session_notes" (docs/data.md).
+// The export's fixed column names, in order (CSV header, JSON keys); one column
+// "var_<name>" per participant variable follows them (variable_columns). JSON adds two keys
+// after those: "scene_files" (the files the trial's scene was read from, with their SHA-256 and
+// size; empty for a built-in scene) and "session_notes" (docs/data.md).
 const std::vector<std::string_view>& export_columns();
+// "var_<name>" for each of data.variable_names, then for each variable a session has a value
+// for that is not among them (sessions in id order, values in declaration order).
+std::vector<std::string> variable_columns(const ExportData& data);
 // The frame log's columns (frames-csv), in order.
 const std::vector<std::string_view>& frame_export_columns();
+// The notes' columns (notes-csv), in order.
+const std::vector<std::string_view>& notes_export_columns();
+
+// How an earlier export of `format` is recognised, for check_output (study/output_file.h): a
+// CSV by the start of its header line, the JSON export by its shape (an array of objects whose
+// first key is "participant").
+OutputKind export_output_kind(ExportFormat format);
 
 // Pure formatting of collected data.
 void write_csv(const ExportData& data, std::ostream& out);
 void write_json(const ExportData& data, std::ostream& out);
 // One row per logged frame, sessions in id order (study/frame_export.cpp).
 void write_frames_csv(const ExportData& data, std::ostream& out);
+// One row per note, sessions in id order, each session's notes in the order they were noted.
+void write_notes_csv(const ExportData& data, std::ostream& out);
 
-// Collects and writes. The path form writes a temporary file beside `path` and renames it over
-// `path` only when complete, so a failure never leaves a truncated export.
+// Collects and writes. The path form first checks `path` with check_output (the store's own
+// file is an input; `force` is --force), then writes a temporary file beside `path` and renames
+// it over `path` only when complete, so a failure never leaves a truncated export and a refusal
+// changes nothing.
 Result<bool> export_trials(const StudyStore& store, ExportFormat format, std::ostream& out);
 Result<bool> export_trials(const StudyStore& store, ExportFormat format,
-                           const std::filesystem::path& path);
+                           const std::filesystem::path& path, bool force = false);
 
 // Building blocks, exposed for tests and other writers.
 // RFC 4180: a field with a comma, double quote, CR or LF is quoted, inner quotes doubled.
 std::string csv_field(std::string_view value);
+// A CSV cell of text (every text cell of the exports: notes, text and choice variables, codes,
+// scene names; anything a person typed): csv_field, except that text a spreadsheet would
+// evaluate as a formula (OWASP, CSV injection), one that begins with =, +, -, @, tab or CR after
+// any apostrophes, gets one more leading apostrophe and is always quoted: =1+1 is written
+// "'=1+1", quotes included. Counting the apostrophes keeps it reversible for every text.
+std::string csv_text(std::string_view value);
+// The text as typed from a cell's value (quotes already removed by the CSV reader): one leading
+// apostrophe removed where apostrophes are followed by one of those characters, as docs/data.md
+// shows for R and pandas.
+std::string csv_text_original(std::string_view cell);
 // A JSON string literal with quotes, escaping '"', '\\' and control characters.
 std::string json_string(std::string_view value);
 // Integer nanoseconds as exact decimal seconds, '.' as the point regardless of locale:

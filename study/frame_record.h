@@ -12,7 +12,9 @@ namespace monoplane::study {
 struct FrameRecord {
     std::int64_t frame = 0;          // the runtime's frame index (HeadsetFrame::index)
     std::optional<int> trial_index;  // none outside a trial
-    std::string shown;  // label1 | label2 | neutral | paused | questionnaire | finished
+    // label1 | label2 | neutral | paused | questionnaire | finished | instructions | ready |
+    // break | end
+    std::string shown;
     std::int64_t display_time_ns = 0;  // the runtime's predicted display time
     double cpu_ms = 0.0;               // host time of the frame, xrWaitFrame to xrEndFrame
     std::optional<double> gpu_ms;      // the renderer's timestamps; none without a scene

@@ -33,6 +33,14 @@ std::string_view screen_kind_name(ScreenKind kind) {
             return "finished";
         case ScreenKind::Aborted:
             return "aborted";
+        case ScreenKind::Instructions:
+            return "instructions";
+        case ScreenKind::Ready:
+            return "ready";
+        case ScreenKind::Break:
+            return "break";
+        case ScreenKind::End:
+            return "end";
     }
     return "invalid";
 }
@@ -47,15 +55,20 @@ Result<std::unique_ptr<LiveSession>> LiveSession::open(StudyStore& store, std::i
     // Every decision so far: a staircase's slots skipped (stopped) may lie before decided ones.
     Result<std::vector<TrialRecord>> history = store.trials(session_id);
     if (!history) return history.error();
+    // Where it stood among the protocol's screens is in the events alone.
+    Result<std::vector<TrialEvent>> events = store.events(session_id);
+    if (!events) return events.error();
+    // A break's time also shows in the frame log of a headset session.
+    Result<std::vector<FrameRecord>> frames = store.frames(session_id);
+    if (!frames) return frames.error();
     return begin(store, session_id, protocol, options, std::move(schedule).value(), *first,
-                 *history);
+                 *history, *events, *frames);
 }
 
-Result<std::unique_ptr<LiveSession>> LiveSession::begin(SessionLog& log, std::int64_t session_id,
-                                                        const Protocol& protocol,
-                                                        const LiveOptions& options,
-                                                        Schedule schedule, int first_trial,
-                                                        const std::vector<TrialRecord>& history) {
+Result<std::unique_ptr<LiveSession>> LiveSession::begin(
+    SessionLog& log, std::int64_t session_id, const Protocol& protocol, const LiveOptions& options,
+    Schedule schedule, int first_trial, const std::vector<TrialRecord>& history,
+    const std::vector<TrialEvent>& events, const std::vector<FrameRecord>& frames) {
     Result<bool> ok = log.set_status(session_id, SessionStatus::Running);
     if (!ok) return ok.error();
     auto session = std::unique_ptr<LiveSession>(
@@ -68,7 +81,9 @@ Result<std::unique_ptr<LiveSession>> LiveSession::begin(SessionLog& log, std::in
     for (const TrialRecord* r : decided) {
         session->decided_.insert(r->trial.index);
         if (session->staircases_) session->staircases_->record(r->trial, r->outcome);
+        session->last_trial_shown_ = r->trial.index;
     }
+    session->resume_screens(events, frames);
     return session;
 }
 
@@ -121,6 +136,20 @@ LiveScreen LiveSession::screen() const {
         }
         screen.selection = selection_;
     }
+    if (on_page_screen()) {
+        const StudyDaySettings& day = protocol_.day;
+        if (kind_ == ScreenKind::Instructions) {
+            screen.text = &day.instructions[static_cast<std::size_t>(page_)].text;
+            screen.page = page_;
+            screen.page_count = static_cast<int>(day.instructions.size());
+        }
+        if (kind_ == ScreenKind::Ready) screen.text = &day.ready->text;
+        if (kind_ == ScreenKind::End) screen.text = &day.end->text;
+        if (kind_ == ScreenKind::Break) {
+            screen.text = &day.breaks->text;
+            screen.break_remaining_ns = screen_visible_ ? break_remaining_ns_ : break_min_ns_;
+        }
+    }
     return screen;
 }
 
@@ -138,13 +167,19 @@ LiveProgress LiveSession::progress() const {
 }
 
 bool LiveSession::finished() const {
-    return kind_ == ScreenKind::Finished || kind_ == ScreenKind::Aborted;
+    return kind_ == ScreenKind::Finished || kind_ == ScreenKind::Aborted ||
+           (kind_ == ScreenKind::End && screen_visible_);
 }
 
 Result<bool> LiveSession::finish(SessionStatus status) {
     Result<bool> ok = log_.set_status(session_id_, status);
     if (!ok) return ok;
-    kind_ = status == SessionStatus::Completed ? ScreenKind::Finished : ScreenKind::Aborted;
+    // A completed session's end screen stays up for the participant.
+    if (status == SessionStatus::Aborted) {
+        kind_ = ScreenKind::Aborted;
+    } else if (kind_ != ScreenKind::End) {
+        kind_ = ScreenKind::Finished;
+    }
     committed("session " + std::string(session_status_name(status)));
     return true;
 }
@@ -172,7 +207,7 @@ Result<bool> LiveSession::start_next_trial(std::int64_t time_ns) {
     if (!prepared) return prepared;
     if (!*prepared) {
         machine_.reset();
-        if (protocol_.questionnaire.items.empty()) return finish(SessionStatus::Completed);
+        if (protocol_.questionnaire.items.empty()) return complete();
         kind_ = ScreenKind::Questionnaire;
         // The middle of the scale: no answer is suggested by the starting position.
         selection_ = (protocol_.questionnaire.scale_points + 1) / 2;
@@ -182,6 +217,7 @@ Result<bool> LiveSession::start_next_trial(std::int64_t time_ns) {
     machine_.emplace(schedule_.trials[next_trial_], protocol_.require_both_viewed);
     ++next_trial_;
     trial_number_ = static_cast<int>(next_trial_);
+    last_trial_shown_ = machine_->trial().index;
     trial_started_ns_ = -1;
     kind_ = ScreenKind::Trial;
     Result<std::vector<TrialEvent>> events = machine_->start(time_ns);
@@ -190,6 +226,8 @@ Result<bool> LiveSession::start_next_trial(std::int64_t time_ns) {
 }
 
 Result<bool> LiveSession::frame_presented(std::int64_t frame, std::int64_t time_ns) {
+    latest_ns_ = std::max(latest_ns_, time_ns);
+    if (on_page_screen()) return screen_presented(frame, time_ns);
     if (kind_ == ScreenKind::Neutral) {
         if (neutral_since_ns_ < 0) neutral_since_ns_ = time_ns;
         // The trial starts now and its label 1 is visible from the next frame on.
@@ -214,7 +252,7 @@ Result<bool> LiveSession::record_answer(int item, int value) {
             return true;
         }
     }
-    return finish(SessionStatus::Completed);
+    return complete();
 }
 
 Result<bool> LiveSession::answer(int item, int value) {
@@ -230,37 +268,71 @@ Result<bool> LiveSession::answer(int item, int value) {
     return record_answer(item, value);
 }
 
-Result<std::string> LiveSession::request(LiveInput input, std::int64_t time_ns) {
-    const std::string name(live_input_name(input));
-    if (input == LiveInput::Abort && !finished()) {
-        if (machine_ && kind_ == ScreenKind::Trial) {
-            Result<std::vector<TrialEvent>> events = machine_->abort(time_ns);
-            if (events) {
-                Result<bool> ok = log(*events);
-                if (!ok) return ok.error();
-            }
-        }
-        Result<bool> ok = finish(SessionStatus::Aborted);
-        if (!ok) return ok.error();
-        return std::string("session aborted");
+Result<bool> LiveSession::complete() {
+    if (!protocol_.day.end) return finish(SessionStatus::Completed);
+    show_screen(ScreenKind::End);  // completed when it shows (screen_presented)
+    return true;
+}
+
+Result<bool> LiveSession::note(const std::string& text, NoteSource source) {
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+        return Error{"a note must not be empty"};
     }
-    if (kind_ == ScreenKind::Questionnaire) {
-        const int scale = protocol_.questionnaire.scale_points;
-        if (input == LiveInput::Switch) {
-            selection_ = selection_ % scale + 1;
-            return "questionnaire selection " + std::to_string(selection_);
-        }
-        if (input == LiveInput::Confirm) {
-            const int item = screen().question;
-            Result<bool> ok = record_answer(item, selection_);
+    SessionNote note;
+    note.text = text;
+    note.source = source;
+    if (latest_ns_ >= 0) note.runtime_time_ns = latest_ns_;
+    note.trial_index = last_trial_shown_;
+    Result<bool> ok = log_.add_note(session_id_, note);
+    if (!ok) return ok;
+    // The text stays out of the line: it may hold line breaks, and the line is parsed by tests.
+    committed("note " + std::string(note_source_name(source)) +
+              (last_trial_shown_ ? " trial " + std::to_string(*last_trial_shown_) : "") + " t " +
+              std::to_string(latest_ns_));
+    return true;
+}
+
+Result<std::string> LiveSession::abort_session(std::int64_t time_ns) {
+    if (machine_ && kind_ == ScreenKind::Trial) {
+        Result<std::vector<TrialEvent>> events = machine_->abort(time_ns);
+        if (events) {
+            Result<bool> ok = log(*events);
             if (!ok) return ok.error();
-            return "answered item " + std::to_string(item + 1);
         }
-        return name + " ignored during the questionnaire";
     }
+    Result<bool> ok = finish(SessionStatus::Aborted);
+    if (!ok) return ok.error();
+    return std::string("session aborted");
+}
+
+Result<std::string> LiveSession::questionnaire_request(LiveInput input) {
+    const int scale = protocol_.questionnaire.scale_points;
+    if (input == LiveInput::Switch) {
+        selection_ = selection_ % scale + 1;
+        return "questionnaire selection " + std::to_string(selection_);
+    }
+    if (input == LiveInput::Confirm) {
+        const int item = screen().question;
+        Result<bool> ok = record_answer(item, selection_);
+        if (!ok) return ok.error();
+        return "answered item " + std::to_string(item + 1);
+    }
+    return std::string(live_input_name(input)) + " ignored during the questionnaire";
+}
+
+Result<std::string> LiveSession::request(LiveInput input, std::int64_t time_ns) {
+    latest_ns_ = std::max(latest_ns_, time_ns);
+    if (input == LiveInput::Abort && !finished()) return abort_session(time_ns);
+    if (kind_ == ScreenKind::Questionnaire) return questionnaire_request(input);
+    if (on_page_screen() && !finished()) return screen_request(input, time_ns);
     if (kind_ != ScreenKind::Trial) {
-        return name + " ignored on the " + std::string(screen_kind_name(kind_)) + " screen";
+        return std::string(live_input_name(input)) + " ignored on the " +
+               std::string(screen_kind_name(kind_)) + " screen";
     }
+    return trial_request(input, time_ns);
+}
+
+Result<std::string> LiveSession::trial_request(LiveInput input, std::int64_t time_ns) {
     Result<std::vector<TrialEvent>> events = std::vector<TrialEvent>{};
     switch (input) {
         case LiveInput::Switch:
@@ -288,18 +360,18 @@ Result<std::string> LiveSession::request(LiveInput input, std::int64_t time_ns) 
     }
     Result<bool> ok = log(*events);
     if (!ok) return ok.error();
-    if (machine_->state() == TrialState::Decided) {
-        ok = log_.record_outcome(session_id_, machine_->trial().index, machine_->outcome());
-        if (!ok) return ok.error();
-        if (staircases_) staircases_->record(machine_->trial(), machine_->outcome());
-        committed("trial " + std::to_string(machine_->trial().index) + " outcome choice " +
-                  std::to_string(machine_->outcome().choice));
-        kind_ = ScreenKind::Neutral;
-        neutral_since_ns_ = time_ns;
-        return "trial " + std::to_string(machine_->trial().index) + " decided: label " +
-               std::to_string(machine_->outcome().choice);
-    }
-    return name;
+    if (machine_->state() != TrialState::Decided) return std::string(live_input_name(input));
+    const int index = machine_->trial().index;
+    ok = log_.record_outcome(session_id_, index, machine_->outcome());
+    if (!ok) return ok.error();
+    if (staircases_) staircases_->record(machine_->trial(), machine_->outcome());
+    committed("trial " + std::to_string(index) + " outcome choice " +
+              std::to_string(machine_->outcome().choice));
+    decided_.insert(index);
+    screens_.break_taken = false;  // a new gap between trials
+    enter_next(time_ns);
+    return "trial " + std::to_string(index) + " decided: label " +
+           std::to_string(machine_->outcome().choice);
 }
 
 }  // namespace monoplane::study

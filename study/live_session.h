@@ -2,12 +2,15 @@
 // path of `study run`. Between trials, and before the first, a neutral screen; then each trial of
 // the stored schedule through the 2AFC state machine; then the questionnaire, answered one item
 // at a time on a Likert scale (switch moves the selection, confirm accepts it) or all at once by
-// the experimenter; then the session's status. Every event is written to the store inside the
+// the experimenter; then the session's status. A protocol's screens come in between: its
+// instruction pages before the first trial (confirm: next page, switch: back one), the ready
+// screen before the first data trial, breaks between data trials (confirm continues once the
+// countdown is over) and the end screen last. Every event is written to the store inside the
 // call that caused it, so it is durable before the next frame starts.
 //
 // Time: the caller passes the monotonic time of each request and of each presented frame (in a
-// headset session, the runtime's predicted display time). A requested change of label becomes
-// visible with the next presented frame, whose index the events carry.
+// headset session, the runtime's predicted display time). A requested change of label or screen
+// becomes visible with the next presented frame, whose index the events carry.
 #pragma once
 
 #include <cstdint>
@@ -16,9 +19,11 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "common/result.h"
 #include "study/protocol.h"
+#include "study/session_screens.h"
 #include "study/staircases.h"
 #include "study/study_store.h"
 #include "study/trial_state_machine.h"
@@ -28,7 +33,20 @@ namespace monoplane::study {
 enum class LiveInput { Switch, Confirm, Pause, Resume, Abort };
 std::string_view live_input_name(LiveInput input);
 
-enum class ScreenKind { Neutral, Trial, Questionnaire, Finished, Aborted };
+// Instructions, Ready, Break and End are the protocol's pages (study/protocol_study_day.h):
+// instructions before the first trial, ready after practice, breaks between data trials, end
+// after the questionnaire (End counts as finished: the session is completed when it shows).
+enum class ScreenKind {
+    Neutral,
+    Trial,
+    Questionnaire,
+    Finished,
+    Aborted,
+    Instructions,
+    Ready,
+    Break,
+    End
+};
 std::string_view screen_kind_name(ScreenKind kind);
 
 // What the next frame shows.
@@ -40,6 +58,12 @@ struct LiveScreen {
     RenderMode mode = RenderMode::Stereo;   // Trial: that label's mode
     int question = 0;                       // Questionnaire: the item asked, 0-based
     int selection = 0;                      // Questionnaire: the answer selected, 1..scale
+    // Instructions, Ready, Break, End: the page's text (the protocol's), else null.
+    const std::string* text = nullptr;
+    int page = 0;        // Instructions: the page shown, 0-based
+    int page_count = 0;  // Instructions: how many pages
+    // Break: how long until confirm continues (the countdown; 0: "press confirm to continue").
+    std::int64_t break_remaining_ns = 0;
 };
 
 // Progress for the experimenter's window (not logged: derived from what is).
@@ -61,8 +85,9 @@ struct LiveOptions {
 
 class LiveSession {
   public:
-    // Continues a stored session at its first undecided trial and marks it running; a
-    // staircase protocol's staircases are rebuilt from the session's stored decisions.
+    // Continues a stored session at its first undecided trial, or at the screen where it stood,
+    // and marks it running; a staircase protocol's staircases are rebuilt from the session's
+    // stored decisions.
     static Result<std::unique_ptr<LiveSession>> open(StudyStore& store, std::int64_t session_id,
                                                      const Protocol& protocol,
                                                      const LiveOptions& options);
@@ -70,12 +95,17 @@ class LiveSession {
     // memory, or the store as open() does); marks the session running. `history`: the trials of
     // a resumed session: its decided ones are not shown again (a staircase's skipped slot may
     // precede them), and a staircase protocol's staircases record them again, in trial order,
-    // before the first trial starts.
+    // before the first trial starts. `events`: a resumed session's events, in the order logged:
+    // they tell where it stood among the protocol's screens (study/session_screens.h):
+    // instructions already read and a ready screen already confirmed are not shown again, a
+    // break that had started and not ended is shown for the rest of its minimum time.
     static Result<std::unique_ptr<LiveSession>> begin(SessionLog& log, std::int64_t session_id,
                                                       const Protocol& protocol,
                                                       const LiveOptions& options, Schedule schedule,
                                                       int first_trial,
-                                                      const std::vector<TrialRecord>& history = {});
+                                                      const std::vector<TrialRecord>& history = {},
+                                                      const std::vector<TrialEvent>& events = {},
+                                                      const std::vector<FrameRecord>& frames = {});
 
     // The staircases of a staircase protocol (their estimates for the experimenter), else null.
     const Staircases* staircases() const { return staircases_ ? &*staircases_ : nullptr; }
@@ -85,12 +115,17 @@ class LiveSession {
     bool finished() const;  // completed or aborted
 
     // A participant's or experimenter's request. A request that does not apply now (a switch on
-    // the neutral screen, a refused confirmation) is not an error: the returned line says what
-    // happened. Errors are failures to write the log.
+    // the neutral screen, a refused confirmation, a confirm before a break's countdown is over or
+    // on a screen not yet presented) is not an error: the returned line says what happened.
+    // Errors are failures to write the log. Abort ends the session on any screen but the end.
     Result<std::string> request(LiveInput input, std::int64_t time_ns);
     // The experimenter's answer to questionnaire item `item` (1..scale), entered in the window:
     // recorded at once; the questionnaire moves past answered items.
     Result<bool> answer(int item, int value);
+    // The experimenter's note, typed in the window: stored at once with the session's latest time
+    // (of its latest presented frame or request; none before either) and the trial on screen or
+    // the last one shown (none before the first). Refuses a blank note.
+    Result<bool> note(const std::string& text, NoteSource source = NoteSource::Window);
     // Frame `frame` became visible at time_ns: pending changes take effect and are logged; the
     // neutral screen ends and the next trial starts when its time is up.
     Result<bool> frame_presented(std::int64_t frame, std::int64_t time_ns);
@@ -106,7 +141,29 @@ class LiveSession {
     // recorded; false when no trial is left.
     Result<bool> prepare_next_trial();
     Result<bool> record_answer(int item, int value);
+    Result<std::string> abort_session(std::int64_t time_ns);
+    Result<std::string> questionnaire_request(LiveInput input);
+    Result<std::string> trial_request(LiveInput input, std::int64_t time_ns);
+    // The end screen when the protocol has one (completed when it shows), else completed now.
+    Result<bool> complete();
     Result<bool> finish(SessionStatus status);
+
+    // The protocol's screens (live_session_screens.cpp; the rules in study/session_screens.h).
+    // Where a resumed (or new) session starts: a screen, or the neutral screen before a trial.
+    void resume_screens(const std::vector<TrialEvent>& events,
+                        const std::vector<FrameRecord>& frames);
+    // After a decision or a screen: the screen due before the next trial, else the neutral
+    // screen from time_ns (-1: from the next frame).
+    void enter_next(std::int64_t time_ns);
+    void show_screen(ScreenKind kind);
+    // The position of the next trial to show, as prepare_next_trial() will find it, without
+    // choosing an adaptive trial's m; none when no trial is left.
+    std::optional<std::size_t> peek_next_trial() const;
+    bool on_page_screen() const;
+    Result<bool> screen_presented(std::int64_t frame, std::int64_t time_ns);
+    Result<std::string> screen_request(LiveInput input, std::int64_t time_ns);
+    Result<std::string> confirm_screen(std::int64_t time_ns);
+    Result<bool> log_screen(EventKind kind, std::int64_t time_ns, std::int64_t frame);
 
     SessionLog& log_;
     std::int64_t session_id_;
@@ -117,12 +174,23 @@ class LiveSession {
     ScreenKind kind_ = ScreenKind::Neutral;
     std::optional<TrialStateMachine> machine_;
     std::optional<Staircases> staircases_;  // procedure = "staircase" only
-    std::set<int> decided_;                 // trial indices decided before this run
+    std::set<int> decided_;                 // trial indices decided (this run and before)
     std::int64_t neutral_since_ns_ = -1;    // -1: from the next frame
     int trial_number_ = 0;
     std::int64_t trial_started_ns_ = -1;
     std::vector<int> answers_;  // per questionnaire item, 0: not yet answered
     int selection_ = 0;
+    ScreenProgress screens_;
+    int page_ = 0;                 // Instructions: the page on screen
+    bool screen_visible_ = false;  // a screen's appearance was presented (and logged)
+    // Break: the countdown's start (the minimum, or what a resumed break has left of it) and
+    // the time of the frame that first showed it; a resumed break logs no second start.
+    std::int64_t break_min_ns_ = 0;
+    std::int64_t break_visible_ns_ = -1;
+    std::int64_t break_remaining_ns_ = 0;
+    bool break_resumed_ = false;
+    std::optional<int> last_trial_shown_;  // for notes: the trial on screen or last shown
+    std::int64_t latest_ns_ = -1;          // the latest request or frame time (the session clock)
 };
 
 }  // namespace monoplane::study

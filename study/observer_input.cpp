@@ -6,8 +6,36 @@ ObserverInput::ObserverInput(Observer& observer, const Protocol& protocol,
                              std::function<double(const ScheduledTrial&)> trial_error_px)
     : observer_(observer), protocol_(protocol), trial_error_px_(std::move(trial_error_px)) {}
 
+std::int64_t ObserverInput::reading_ns(const std::string& text) {
+    constexpr std::int64_t kBaseNs = 2'000'000'000;
+    constexpr std::int64_t kPerCharacterNs = 40'000'000;
+    return kBaseNs + static_cast<std::int64_t>(text.size()) * kPerCharacterNs;
+}
+
+std::vector<LiveInput> ObserverInput::poll_page(const LiveScreen& screen, std::int64_t time_ns) {
+    if (screen.kind == ScreenKind::End) return {};  // the experimenter takes over
+    const std::pair<ScreenKind, int> page{screen.kind, screen.page};
+    if (page_ != page) {
+        page_ = page;
+        page_since_ns_ = time_ns;
+    }
+    if (screen.kind == ScreenKind::Break) {
+        // Rests until confirm is accepted.
+        if (screen.break_remaining_ns > 0) return {};
+        return {LiveInput::Confirm};
+    }
+    if (time_ns - page_since_ns_ < reading_ns(screen.text ? *screen.text : std::string()))
+        return {};
+    return {LiveInput::Confirm};
+}
+
 std::vector<LiveInput> ObserverInput::poll(const LiveScreen& screen, const LiveProgress& progress,
                                            std::int64_t time_ns) {
+    if (screen.kind == ScreenKind::Instructions || screen.kind == ScreenKind::Ready ||
+        screen.kind == ScreenKind::Break || screen.kind == ScreenKind::End) {
+        return poll_page(screen, time_ns);
+    }
+    page_.reset();  // a later screen, even of the same kind and page, is read anew
     if (screen.kind == ScreenKind::Questionnaire) {
         if (screen.question != question_) {
             question_ = screen.question;

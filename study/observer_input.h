@@ -2,13 +2,18 @@
 // on screen, as a participant reacting to what they see: it looks at a label for the planned
 // dwell from the frame that showed it, switches, and confirms after the last dwell; a refused
 // confirmation makes it look at the other label too. It answers the questionnaire by moving the
-// selection to its answer and confirming. Used with the simulated headset (`study run --headset
-// simulated`), where it drives the same requests a controller would.
+// selection to its answer and confirming. The protocol's screens: it reads an instruction page or
+// the ready screen for reading_ns() from its first poll, then confirms; on a break it waits for the
+// countdown to end, then confirms; on the end screen it does nothing. Used with the simulated
+// headset (`study run --headset simulated`) and headless (`--headset none`, on the virtual
+// clock), where it drives the same requests a controller would.
 #pragma once
 
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "study/live_session.h"
@@ -27,7 +32,13 @@ class ObserverInput {
     std::vector<LiveInput> poll(const LiveScreen& screen, const LiveProgress& progress,
                                 std::int64_t time_ns);
 
+    // How long the observer reads a screen's text: 2 s, plus 40 ms a character (about 250 words
+    // a minute, a typical adult's silent reading rate). Deterministic, so tests can count on it.
+    static std::int64_t reading_ns(const std::string& text);
+
   private:
+    std::vector<LiveInput> poll_page(const LiveScreen& screen, std::int64_t time_ns);
+
     Observer& observer_;
     const Protocol& protocol_;
     std::function<double(const ScheduledTrial&)> trial_error_px_;
@@ -41,6 +52,9 @@ class ObserverInput {
     LiveInput sent_ = LiveInput::Switch;
     int question_ = -1;
     int wanted_answer_ = 0;
+    // The instructions, ready or break screen being read (its kind and page) and since when.
+    std::optional<std::pair<ScreenKind, int>> page_;
+    std::int64_t page_since_ns_ = 0;
 };
 
 }  // namespace monoplane::study

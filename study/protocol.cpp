@@ -25,27 +25,22 @@
 #include "common/toml/toml_keys.h"
 #include "common/toml/toml_problems.h"
 #include "study/condition.h"
+#include "study/protocol_study_day_parse.h"
 #include "study/scene_files.h"
 
 namespace monoplane::study {
 namespace {
 
-constexpr std::array<std::string_view, 16> kTopLevelKeys = {"name",
-                                                            "scenes",
-                                                            "mono_planes",
-                                                            "alternatives",
-                                                            "order",
-                                                            "first_scene",
-                                                            "require_both_viewed",
-                                                            "practice_trials",
-                                                            "near",
-                                                            "far",
-                                                            "questionnaire",
-                                                            "render",
-                                                            "missed_frame_threshold",
-                                                            "auto",
-                                                            "procedure",
-                                                            "staircase"};
+constexpr std::array<std::string_view, 25> kTopLevelKeys = {
+    "name", "scenes", "mono_planes", "alternatives", "order", "first_scene", "require_both_viewed",
+    "practice_trials", "near", "far", "questionnaire", "render", "missed_frame_threshold", "auto",
+    "procedure", "staircase",
+    // A study day (protocol_study_day_parse.h).
+    "sessions", "repetitions", "blocking", "text_height_deg", "instructions", "ready", "breaks",
+    "end", "variables"};
+static_assert(std::ranges::all_of(kStudyDayKeys, [](std::string_view key) {
+    return std::ranges::find(kTopLevelKeys, key) != kTopLevelKeys.end();
+}));
 constexpr std::array<std::string_view, 2> kQuestionnaireKeys = {"items", "scale_points"};
 constexpr std::array<std::string_view, 3> kRenderKeys = {"anti_aliasing", "ssao", "detail"};
 // The render command's names (renderer/plan/render_choices.h, scenes/generate.h).
@@ -529,6 +524,11 @@ Result<Protocol> parse(std::string_view toml_text, std::string_view source_name,
     read_render(root, protocol, problems);  // after the alternatives: MSAA depends on them
     read_auto_plane(root, std::ranges::count(protocol.alternatives, RenderMode::HybridAuto) > 0,
                     protocol.auto_plane, problems);
+    read_study_day(root, protocol.procedure, protocol.day, problems);  // after the procedure
+    // Only for a protocol whose scenes and distances all read: the count is the session's.
+    if (problems.empty()) {
+        check_break_interval(root, protocol.day, protocol.trials_per_session(), problems);
+    }
     if (!problems.empty()) return problems.error();
 
     protocol.source = std::string(source_name);
@@ -538,6 +538,18 @@ Result<Protocol> parse(std::string_view toml_text, std::string_view source_name,
 }
 
 }  // namespace
+
+std::string_view trial_order_name(TrialOrder order) {
+    for (const auto& [name, value] : kOrders)
+        if (value == order) return name;
+    return "?";
+}
+
+std::string_view first_scene_name(FirstSceneBalance balance) {
+    for (const auto& [name, value] : kFirstScenes)
+        if (value == balance) return name;
+    return "?";
+}
 
 Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view source_name) {
     return parse(toml_text, source_name, nullptr);

@@ -14,6 +14,7 @@
 #include "common/result.h"
 #include "study/protocol_auto.h"
 #include "study/protocol_staircase.h"
+#include "study/protocol_study_day.h"
 #include "study/render_mode.h"
 
 namespace monoplane::study {
@@ -28,6 +29,11 @@ enum class FirstSceneBalance {
     Random,       // block order shuffled with the session's seed
     Fixed,        // scenes in the order listed
 };
+
+// The protocol's names for these values ("randomized", "latin-square", ...), as its `order` and
+// `first_scene` keys take them.
+std::string_view trial_order_name(TrialOrder order);
+std::string_view first_scene_name(FirstSceneBalance balance);
 
 struct Questionnaire {
     std::vector<std::string> items;  // Likert statements asked after the last trial
@@ -75,16 +81,21 @@ struct Protocol {
     // A trial whose frame log shows more than this share of its displayed frames missing their
     // display slot is flagged by `analyze` (a stutter participants may have noticed).
     double missed_frame_threshold = 0.05;
+    // Sessions, repetitions, blocking, the participant's screens and variables
+    // (study/protocol_study_day.h).
+    StudyDaySettings day;
     std::string source;           // file path or "<text>"
     std::string text;             // the file's text, stored with every session
     std::uint64_t text_hash = 0;  // FNV-1a 64 of text: identifies the protocol version
 
     // The data trials of a session; for a staircase the most (a posterior-width stopping rule
-    // may end a scene's staircase sooner).
+    // may end a scene's staircase sooner). The constant procedure shows every condition
+    // day.repetitions times.
     std::size_t trials_per_session() const {
-        const std::size_t per_scene = procedure == Procedure::Staircase
-                                          ? static_cast<std::size_t>(staircase.trials_per_scene)
-                                          : mono_planes.size();
+        const std::size_t per_scene =
+            procedure == Procedure::Staircase
+                ? static_cast<std::size_t>(staircase.trials_per_scene)
+                : mono_planes.size() * static_cast<std::size_t>(day.repetitions);
         return scenes.size() * per_scene;
     }
 };

@@ -1,6 +1,7 @@
 #include "study/scene_file_store.h"
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -8,6 +9,12 @@ namespace monoplane::study {
 namespace {
 
 using sqlite::Statement;
+
+std::optional<NoteSource> parse_note_source(std::string_view name) {
+    for (NoteSource source : {NoteSource::Software, NoteSource::Window, NoteSource::Command})
+        if (note_source_name(source) == name) return source;
+    return std::nullopt;
+}
 
 Result<bool> validate_record(const SceneFileRecord& record, const Schedule& schedule) {
     const std::string where = "scene file record of '" + record.scene + "' (file " +
@@ -66,9 +73,13 @@ Result<bool> write_scene_files(const sqlite::Connection& db, std::int64_t sessio
 Result<bool> write_session_note(const sqlite::Connection& db, std::int64_t session_id,
                                 const SessionNote& note) {
     Result<Statement> insert = Statement::prepare(
-        db, "INSERT INTO session_notes (session_id, noted_utc, note) VALUES (?, ?, ?)");
+        db,
+        "INSERT INTO session_notes (session_id, noted_utc, note, source, runtime_time_ns, "
+        "trial_index) VALUES (?, ?, ?, ?, ?, ?)");
     if (!insert) return insert.error();
     insert.value().bind(1, session_id).bind(2, note.noted_utc).bind(3, note.text);
+    insert.value().bind(4, note_source_name(note.source)).bind(5, note.runtime_time_ns);
+    insert.value().bind(6, note.trial_index);
     return insert.value().run("adding a note to session " + std::to_string(session_id) +
                               " (the session must exist)");
 }
@@ -96,7 +107,9 @@ Result<std::vector<SceneFileRecord>> read_scene_files(const sqlite::Connection& 
 Result<std::vector<SessionNote>> read_session_notes(const sqlite::Connection& db,
                                                     std::int64_t session_id) {
     Result<Statement> stmt = Statement::prepare(
-        db, "SELECT noted_utc, note FROM session_notes WHERE session_id = ? ORDER BY id");
+        db,
+        "SELECT noted_utc, note, source, runtime_time_ns, trial_index FROM session_notes "
+        "WHERE session_id = ? ORDER BY id");
     if (!stmt) return stmt.error();
     stmt.value().bind(1, session_id);
     std::vector<SessionNote> notes;
@@ -104,7 +117,19 @@ Result<std::vector<SessionNote>> read_session_notes(const sqlite::Connection& db
         Result<bool> row = stmt.value().step("reading a session's notes");
         if (!row) return row.error();
         if (!*row) break;
-        notes.push_back({stmt->text(0), stmt->text(1)});
+        const Statement& s = stmt.value();
+        const std::optional<NoteSource> source = parse_note_source(s.text(2));
+        if (!source)
+            return Error{"study database '" + db.path() +
+                         "' holds a note from an unknown source '" + s.text(2) +
+                         "' (written by a newer monoplane?)"};
+        SessionNote note;
+        note.noted_utc = s.text(0);
+        note.text = s.text(1);
+        note.source = *source;
+        if (!s.is_null(3)) note.runtime_time_ns = s.int64(3);
+        if (!s.is_null(4)) note.trial_index = s.int32(4);
+        notes.push_back(std::move(note));
     }
     return notes;
 }

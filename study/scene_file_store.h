@@ -1,7 +1,8 @@
 // Private to the study store: the rows of the scene_files and session_notes tables (schema
-// version 3; docs/data.md). The evidence of which files a session's imported scenes were read
-// from is written in begin_session's transaction, so no session exists without it; notes are
-// appended later (a resume that accepted changed files) and never edited.
+// version 3, notes' source, session time and trial since version 7; docs/data.md). The evidence
+// of which files a session's imported scenes were read from is written in begin_session's
+// transaction, so no session exists without it; notes are appended later (by the software, the
+// experimenter's window or `study note`) and never edited.
 #pragma once
 
 #include <cstdint>

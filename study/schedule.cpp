@@ -4,6 +4,8 @@
 #include <cassert>
 #include <functional>
 #include <limits>
+#include <map>
+#include <utility>
 
 #include "study/random.h"
 
@@ -58,18 +60,43 @@ std::vector<std::string> block_order(const Protocol& protocol, std::uint64_t see
 
 using AppendTrial = std::function<void(ScheduledTrial)>;
 
-// Constant procedure: one block per scene, every distance once, in random or listed order.
+// The data trials of one constant block: every distance `repetitions` times, shuffled together
+// or listed repetition by repetition; a copy's repetition is its showing's 1-based rank.
+std::vector<ScheduledTrial> constant_conditions(const Protocol& protocol,
+                                                const std::vector<std::string>& scenes,
+                                                Rng& distance_rng) {
+    std::vector<ScheduledTrial> trials;
+    for (int repetition = 1; repetition <= protocol.day.repetitions; ++repetition) {
+        for (const std::string& scene : scenes) {
+            for (double m : protocol.mono_planes) {
+                ScheduledTrial trial;
+                trial.scene = scene;
+                trial.mono_plane = m;
+                trials.push_back(std::move(trial));
+            }
+        }
+    }
+    if (protocol.order == TrialOrder::Randomized) distance_rng.shuffle(trials);
+    std::map<std::pair<std::string, double>, int> shown;
+    for (ScheduledTrial& trial : trials)
+        trial.repetition = ++shown[{trial.scene, trial.mono_plane}];
+    return trials;
+}
+
+// Constant procedure: one block per scene (or one block of all scenes with blocking = "none"),
+// every distance `repetitions` times, in random or listed order.
 void append_constant_trials(const Protocol& protocol, const Schedule& schedule, Rng& labels,
                             const AppendTrial& append) {
     Rng distance_rng(schedule.seed, kDistanceOrder);
-    for (std::size_t block = 0; block < schedule.block_order.size(); ++block) {
-        std::vector<double> distances = protocol.mono_planes;
-        if (protocol.order == TrialOrder::Randomized) distance_rng.shuffle(distances);
-        for (double m : distances) {
-            ScheduledTrial trial;
+    std::vector<std::vector<std::string>> blocks;
+    if (protocol.day.blocking == Blocking::None) {
+        blocks.push_back(schedule.block_order);
+    } else {
+        for (const std::string& scene : schedule.block_order) blocks.push_back({scene});
+    }
+    for (std::size_t block = 0; block < blocks.size(); ++block) {
+        for (ScheduledTrial trial : constant_conditions(protocol, blocks[block], distance_rng)) {
             trial.block = static_cast<int>(block);
-            trial.scene = schedule.block_order[block];
-            trial.mono_plane = m;
             assign_labels(trial, protocol, labels);
             append(std::move(trial));
         }
@@ -106,11 +133,19 @@ int Schedule::practice_count() const {
         std::ranges::count_if(trials, [](const ScheduledTrial& t) { return t.practice; }));
 }
 
-Schedule make_schedule(const Protocol& protocol, std::uint64_t seed, int participant_index) {
+Schedule make_schedule(const Protocol& protocol, std::uint64_t seed, int participant_index,
+                       int session_number) {
+    assert(session_number >= 1);
     Schedule schedule;
     schedule.seed = seed;
     schedule.participant_index = participant_index;
+    schedule.session_number = session_number;
     schedule.block_order = block_order(protocol, seed, participant_index);
+    if (!schedule.block_order.empty()) {
+        const auto shift = static_cast<std::ptrdiff_t>(
+            static_cast<std::size_t>(session_number - 1) % schedule.block_order.size());
+        std::ranges::rotate(schedule.block_order, schedule.block_order.begin() + shift);
+    }
 
     const auto append = [&schedule](ScheduledTrial trial) {
         trial.index = static_cast<int>(schedule.trials.size());

@@ -28,23 +28,36 @@ struct ScheduledTrial {
     // A staircase's slot (procedure = "staircase", data trials only): its scene's staircase
     // chooses mono_plane when the trial starts, or skips the slot once it has stopped.
     bool adaptive = false;
+    // 1-based: which showing of its scene x distance condition this is (protocol
+    // `repetitions`); 1 for practice and staircase trials.
+    int repetition = 1;
 };
 
 struct Schedule {
     std::uint64_t seed = 0;
-    int participant_index = 0;             // 0-based, selects the Latin square row
+    // 0-based: the participant's number in the whole study (`--participant-number`; by default
+    // the participant's index in the database), which selects the Latin square row.
+    int participant_index = 0;
+    int session_number = 1;                // 1-based: the participant's session
     std::vector<std::string> block_order;  // scenes in block order
     std::vector<ScheduledTrial> trials;    // practice trials, then the data trials
 
     int practice_count() const;
 };
 
-// Deterministic: the same protocol, seed and participant index give the same schedule. With the
+// Deterministic: the same protocol, seed, participant number and session number give the same
+// schedule. The constant procedure shows each scene x distance protocol.day.repetitions times:
+// with blocking = "scene" within the scene's block, the copies shuffled together (order =
+// "randomized") or listed distance by distance, repetition after repetition ("fixed"); with
+// blocking = "none" every data trial in one block (block 0), all shuffled or listed. A
+// participant's session s shows the Latin-square (or random, or fixed) block order rotated left by
+// s - 1 places, so over a participant's sessions each scene comes first in turn. With the
 // staircase procedure the data trials come in staircase.trials_per_scene rounds of one slot per
 // scene: the first round in the counterbalanced block order (so first_scene balances the first
 // scene seen), each later round shuffled with the seed (order = "randomized") or in block order
 // too ("fixed"). A slot's block is its scene's position in the block order.
-Schedule make_schedule(const Protocol& protocol, std::uint64_t seed, int participant_index);
+Schedule make_schedule(const Protocol& protocol, std::uint64_t seed, int participant_index,
+                       int session_number = 1);
 
 // Row `row` of a balanced Latin square of order n (Williams design: n rows for even n, 2n for
 // odd n), as a permutation of 0..n-1. Over consecutive rows every item is first equally often and

@@ -41,4 +41,24 @@ Result<bool> MemorySessionLog::record_stimulus(std::int64_t, const ScheduledTria
     return true;
 }
 
+Result<bool> MemorySessionLog::add_note(std::int64_t, const SessionNote& note) {
+    if (note.text.find_first_not_of(" \t\r\n") == std::string::npos) {
+        return Error{"a note must not be empty"};
+    }
+    notes_.push_back(note);
+    return true;
+}
+
+std::string_view note_source_name(NoteSource source) {
+    switch (source) {
+        case NoteSource::Software:
+            return "software";
+        case NoteSource::Window:
+            return "window";
+        case NoteSource::Command:
+            return "command";
+    }
+    return "invalid";
+}
+
 }  // namespace monoplane::study

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/result.h"
+#include "study/session_note.h"
 #include "study/trial_events.h"
 #include "study/trial_state_machine.h"
 
@@ -32,6 +33,8 @@ class SessionLog {
     // the trial at the same m. Refuses a trial that is not adaptive or not planned, a second
     // choice for one trial and an m that is not a finite positive number.
     virtual Result<bool> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) = 0;
+    // A note for whoever reviews the session (study_store.h SessionNote), durable on return.
+    virtual Result<bool> add_note(std::int64_t session_id, const SessionNote& note) = 0;
 };
 
 // One session's log in memory. Refuses a second outcome for a trial, as the database does.
@@ -44,8 +47,10 @@ class MemorySessionLog final : public SessionLog {
     Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
                                int answer) override;
     Result<bool> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) override;
+    Result<bool> add_note(std::int64_t session_id, const SessionNote& note) override;
 
     const std::vector<TrialEvent>& events() const { return events_; }
+    const std::vector<SessionNote>& notes() const { return notes_; }
     // The adaptive trials started, with their mono planes, by trial index.
     const std::map<int, ScheduledTrial>& adaptive_trials() const { return adaptive_trials_; }
     const std::map<int, TrialOutcome>& outcomes() const { return outcomes_; }  // by trial index
@@ -54,6 +59,7 @@ class MemorySessionLog final : public SessionLog {
 
   private:
     std::vector<TrialEvent> events_;
+    std::vector<SessionNote> notes_;
     std::map<int, TrialOutcome> outcomes_;
     std::map<int, int> answers_;
     std::map<int, ScheduledTrial> adaptive_trials_;

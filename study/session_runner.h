@@ -2,10 +2,11 @@
 // simulated observer at its controls through ObserverInput, exactly as `--headset simulated`
 // drives it) on a virtual display that presents a frame every 1/frame_rate_hz seconds of virtual
 // time, as fast as the machine goes. So the refusal, switch and confirmation rules, the neutral
-// screen and the questionnaire exist once (LiveSession and TrialStateMachine), and the crash
-// tests of the headless path exercise the path participants use. Every event and outcome is
-// written before the next frame is presented; a resumed session restarts at the first undecided
-// trial.
+// screen, the protocol's screens (instructions, ready, breaks with their countdown, end: the
+// observer reads and waits on the virtual clock too) and the questionnaire exist once
+// (LiveSession and TrialStateMachine), and the crash tests of the headless path exercise the
+// path participants use. Every event and outcome is written before the next frame is presented;
+// a resumed session restarts at the screen where it stood or the first undecided trial.
 #pragma once
 
 #include <cstdint>
@@ -34,9 +35,9 @@ struct RunOptions {
     std::function<double(const ScheduledTrial&)> trial_error_px;
 };
 
-// Runs the stored session from its first undecided trial through the questionnaire; returns the
-// final status (Completed). The observer answers for the participant. Errors: a failed write,
-// or a session that does not finish within a day of virtual time.
+// Runs the stored session from where it stood through the questionnaire (and the end screen);
+// returns the final status (Completed). The observer answers for the participant. Errors: a failed
+// write, or a session that does not finish within a day of virtual time.
 Result<SessionStatus> run_session(StudyStore& store, std::int64_t session_id,
                                   const Protocol& protocol, Observer& observer,
                                   const RunOptions& options);

@@ -162,8 +162,92 @@ ALTER TABLE frames ADD COLUMN pipelines_created INTEGER CHECK (pipelines_created
 ALTER TABLE frames ADD COLUMN driver_compiles INTEGER CHECK (driver_compiles >= 0);
 )sql";
 
-constexpr std::array<std::string_view, 6> kMigrations = {kVersion1, kVersion2, kVersion3,
-                                                         kVersion4, kVersion5, kVersion6};
+// Version 7 (issue 30): a study day. A participant may come back for further sessions, each with
+// its number; the participant's study-wide number (which picks the Latin-square row, so sites
+// and lab PCs can share one rotation) and variables are kept with the participant; a constant
+// session shows each condition `repetitions` times; experimenter notes say who wrote them and
+// when in the session; the participant's screens (instructions, ready, breaks, end) are events
+// and frames of their own. Rows written before version 7 read as: participant number = the
+// participant's index, session 1, repetition 1, notes from the software.
+// SQLite cannot change a CHECK constraint or drop a NOT NULL, so events and frames are rebuilt:
+// a new table, the rows copied, the old one dropped and the new one renamed, its index recreated;
+// all in the migration's transaction, so a failure leaves the version-6 file as it was.
+constexpr std::string_view kVersion7 = R"sql(
+ALTER TABLE participants ADD COLUMN participant_number INTEGER NOT NULL DEFAULT 0
+    CHECK (participant_number >= 0);
+UPDATE participants SET participant_number = participant_index;
+CREATE UNIQUE INDEX participants_by_number ON participants(participant_number);
+CREATE TABLE participant_variables (
+    participant_id INTEGER NOT NULL REFERENCES participants(id),
+    name           TEXT NOT NULL
+                   CHECK (length(name) BETWEEN 1 AND 32 AND name GLOB '[a-z]*'
+                          AND name NOT GLOB '*[^a-z0-9_]*'),
+    type           TEXT NOT NULL CHECK (type IN ('integer', 'number', 'choice', 'text')),
+    value          TEXT NOT NULL,
+    PRIMARY KEY (participant_id, name)
+);
+ALTER TABLE sessions ADD COLUMN session_number INTEGER NOT NULL DEFAULT 1
+    CHECK (session_number >= 1);
+CREATE UNIQUE INDEX sessions_by_participant ON sessions(participant_id, session_number);
+ALTER TABLE trials ADD COLUMN repetition INTEGER NOT NULL DEFAULT 1 CHECK (repetition >= 1);
+ALTER TABLE session_notes ADD COLUMN source TEXT NOT NULL DEFAULT 'software'
+    CHECK (source IN ('software', 'window', 'command'));
+ALTER TABLE session_notes ADD COLUMN runtime_time_ns INTEGER CHECK (runtime_time_ns >= 0);
+ALTER TABLE session_notes ADD COLUMN trial_index INTEGER CHECK (trial_index >= 0);
+
+CREATE TABLE events_v7 (
+    id          INTEGER PRIMARY KEY,
+    session_id  INTEGER NOT NULL REFERENCES sessions(id),
+    trial_index INTEGER,
+    kind        TEXT NOT NULL
+                CHECK (kind IN ('shown', 'switched', 'confirmed', 'refused', 'paused', 'resumed',
+                                'aborted', 'instructions_shown', 'instructions_confirmed',
+                                'ready_shown', 'ready_confirmed', 'break_started', 'break_ended',
+                                'end_shown')),
+    label       INTEGER NOT NULL CHECK (label IN (0, 1, 2)),
+    time_ns     INTEGER NOT NULL,
+    frame       INTEGER NOT NULL CHECK (frame >= -1),
+    page        INTEGER CHECK (page >= 0),
+    FOREIGN KEY (session_id, trial_index) REFERENCES trials(session_id, trial_index),
+    -- A screen is no trial; a trial's event always names its trial.
+    CHECK ((trial_index IS NULL) = (kind IN ('instructions_shown', 'instructions_confirmed',
+                                             'ready_shown', 'ready_confirmed', 'break_started',
+                                             'break_ended', 'end_shown'))),
+    CHECK ((page IS NOT NULL) = (kind IN ('instructions_shown', 'instructions_confirmed')))
+);
+INSERT INTO events_v7 (id, session_id, trial_index, kind, label, time_ns, frame)
+    SELECT id, session_id, trial_index, kind, label, time_ns, frame FROM events;
+DROP TABLE events;
+ALTER TABLE events_v7 RENAME TO events;
+CREATE INDEX events_by_session ON events(session_id, id);
+
+CREATE TABLE frames_v7 (
+    session_id        INTEGER NOT NULL REFERENCES sessions(id),
+    frame             INTEGER NOT NULL CHECK (frame >= 0),
+    trial_index       INTEGER CHECK (trial_index >= 0),
+    shown             TEXT NOT NULL
+                      CHECK (shown IN ('label1', 'label2', 'neutral', 'paused', 'questionnaire',
+                                       'finished', 'instructions', 'ready', 'break', 'end')),
+    display_time_ns   INTEGER NOT NULL,
+    cpu_ms            REAL NOT NULL CHECK (cpu_ms >= 0),
+    gpu_ms            REAL CHECK (gpu_ms >= 0),
+    missed            INTEGER NOT NULL CHECK (missed IN (0, 1)),
+    head_x            REAL, head_y REAL, head_z REAL,
+    head_qw           REAL, head_qx REAL, head_qy REAL, head_qz REAL,
+    mono_plane        REAL CHECK (mono_plane > 0),
+    pipelines_created INTEGER CHECK (pipelines_created >= 0),
+    driver_compiles   INTEGER CHECK (driver_compiles >= 0),
+    PRIMARY KEY (session_id, frame)
+);
+INSERT INTO frames_v7 SELECT session_id, frame, trial_index, shown, display_time_ns, cpu_ms,
+    gpu_ms, missed, head_x, head_y, head_z, head_qw, head_qx, head_qy, head_qz, mono_plane,
+    pipelines_created, driver_compiles FROM frames;
+DROP TABLE frames;
+ALTER TABLE frames_v7 RENAME TO frames;
+)sql";
+
+constexpr std::array<std::string_view, 7> kMigrations = {kVersion1, kVersion2, kVersion3, kVersion4,
+                                                         kVersion5, kVersion6, kVersion7};
 
 }  // namespace
 

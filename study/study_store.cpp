@@ -4,12 +4,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 #include <ctime>
+#include <set>
 #include <system_error>
 
 #include "study/frame_queue.h"
@@ -28,18 +30,6 @@ using sqlite::Transaction;
 // The database's names for the enums. Stored in files: never change one (docs/data.md).
 constexpr std::array<std::string_view, 4> kStatusNames = {"running", "paused", "completed",
                                                           "aborted"};
-constexpr std::array<std::string_view, 7> kEventKindNames = {
-    "shown", "switched", "confirmed", "refused", "paused", "resumed", "aborted"};
-
-std::string_view event_kind_db_name(EventKind kind) {
-    return kEventKindNames.at(static_cast<std::size_t>(kind));
-}
-
-std::optional<EventKind> parse_event_kind(std::string_view name) {
-    for (std::size_t i = 0; i < kEventKindNames.size(); ++i)
-        if (kEventKindNames[i] == name) return static_cast<EventKind>(i);
-    return std::nullopt;
-}
 
 std::optional<SessionStatus> parse_status(std::string_view name) {
     for (std::size_t i = 0; i < kStatusNames.size(); ++i)
@@ -82,6 +72,40 @@ bool valid_participant_code(std::string_view code) {
     return true;
 }
 
+// Participant variable names as protocols declare them (protocol_study_day.h): they become
+// export columns var_<name>.
+bool valid_variable_name(std::string_view name) {
+    if (name.empty() || name.size() > 32 || name[0] < 'a' || name[0] > 'z') return false;
+    return std::ranges::all_of(
+        name, [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_'; });
+}
+
+// Refuses values check_variables could not have returned, before anything is written.
+Result<bool> validate_variables(const std::vector<VariableValue>& values) {
+    std::set<std::string> seen;
+    for (const VariableValue& v : values) {
+        if (!valid_variable_name(v.name))
+            return Error{"participant variable name '" + v.name +
+                         "' is not a letter a-z followed by up to 31 of a-z, 0-9 and '_'"};
+        if (!seen.insert(v.name).second)
+            return Error{"participant variable '" + v.name + "' is given twice"};
+    }
+    return true;
+}
+
+std::optional<VariableType> parse_variable_type(std::string_view name) {
+    for (VariableType type :
+         {VariableType::Integer, VariableType::Number, VariableType::Choice, VariableType::Text})
+        if (variable_type_name(type) == name) return type;
+    return std::nullopt;
+}
+
+// Characters as the person typing them counts them: UTF-8 code points, not bytes.
+std::size_t code_points(std::string_view text) {
+    return static_cast<std::size_t>(std::ranges::count_if(
+        text, [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+
 Result<std::int64_t> query_int(const Connection& db, std::string_view sql, std::string_view what) {
     Result<Statement> stmt = Statement::prepare(db, sql);
     if (!stmt) return stmt.error();
@@ -94,7 +118,8 @@ Result<std::int64_t> query_int(const Connection& db, std::string_view sql, std::
 Result<bool> validate_schedule(const Schedule& schedule) {
     if (schedule.trials.empty()) return Error{"the schedule has no trials"};
     if (schedule.participant_index < 0)
-        return Error{"the schedule's participant index is negative"};
+        return Error{"the schedule's participant number is negative"};
+    if (schedule.session_number < 1) return Error{"the schedule's session number is below 1"};
     for (const std::string& scene : schedule.block_order)
         if (scene.empty() || scene.find(',') != std::string::npos)
             return Error{"scene name '" + scene + "' in the block order is empty or has a comma"};
@@ -113,6 +138,7 @@ Result<bool> validate_schedule(const Schedule& schedule) {
             return Error{where + "mono plane is not finite"};
         if (t.label1_alternative != 0 && t.label1_alternative != 1)
             return Error{where + "label1_alternative must be 0 or 1"};
+        if (t.repetition < 1) return Error{where + "repetition is below 1"};
     }
     return true;
 }
@@ -181,6 +207,7 @@ std::string_view session_status_name(SessionStatus status) {
 }
 
 struct StudyStore::Impl {
+    std::filesystem::path file;  // as the caller named it (session holds lie beside it)
     Connection db;
     FrameQueue frames;  // the frame log's rows not yet written
 
@@ -283,6 +310,7 @@ Result<std::unique_ptr<StudyStore>> StudyStore::open(const std::filesystem::path
     if (!created) return created.error();
 
     auto impl = std::make_unique<Impl>();
+    impl->file = path;
     Result<bool> opened = [&]() -> Result<bool> {
         sqlite3* raw = nullptr;
         // No SQLITE_OPEN_CREATE: the file exists (with mode 0600) by now. FULLMUTEX: the
@@ -336,123 +364,280 @@ Result<std::unique_ptr<StudyStore>> StudyStore::open(const std::filesystem::path
     return std::unique_ptr<StudyStore>(new StudyStore(std::move(impl)));
 }
 
+namespace {
+
+// What the database knows of a participant, with the row id the session rows refer to.
+struct StoredParticipant {
+    std::int64_t id = 0;
+    ParticipantRecord record;
+};
+
+Result<std::vector<VariableValue>> read_variables(const Connection& db,
+                                                  std::int64_t participant_id) {
+    // By rowid: in the order begin_session wrote them, the protocol's declaration order.
+    Result<Statement> stmt = Statement::prepare(
+        db,
+        "SELECT name, type, value FROM participant_variables WHERE participant_id = ? "
+        "ORDER BY rowid");
+    if (!stmt) return stmt.error();
+    stmt.value().bind(1, participant_id);
+    std::vector<VariableValue> values;
+    for (;;) {
+        Result<bool> row = stmt.value().step("reading participant variables");
+        if (!row) return row.error();
+        if (!*row) break;
+        const std::optional<VariableType> type = parse_variable_type(stmt->text(1));
+        if (!type)
+            return Error{"study database '" + db.path() + "' holds an unknown variable type '" +
+                         stmt->text(1) + "' (written by a newer monoplane?)"};
+        values.push_back(
+            VariableValue{.name = stmt->text(0), .type = *type, .value = stmt->text(2)});
+    }
+    return values;
+}
+
+Result<bool> write_variables(const Connection& db, std::int64_t participant_id,
+                             const std::vector<VariableValue>& values) {
+    Result<Statement> insert =
+        Statement::prepare(db,
+                           "INSERT INTO participant_variables (participant_id, name, type, value) "
+                           "VALUES (?, ?, ?, ?)");
+    if (!insert) return insert.error();
+    for (const VariableValue& v : values) {
+        insert.value().reset();
+        insert.value()
+            .bind(1, participant_id)
+            .bind(2, v.name)
+            .bind(3, variable_type_name(v.type))
+            .bind(4, v.value);
+        if (Result<bool> ok = insert.value().run("storing participant variable '" + v.name + "'");
+            !ok)
+            return ok;
+    }
+    return true;
+}
+
+Result<std::optional<StoredParticipant>> find_participant(const Connection& db,
+                                                          const std::string& code) {
+    Result<Statement> stmt = Statement::prepare(
+        db,
+        "SELECT p.id, p.participant_index, p.participant_number, s.session_number, s.id "
+        "FROM participants p LEFT JOIN sessions s ON s.participant_id = p.id "
+        "WHERE p.code = ? ORDER BY s.session_number");
+    if (!stmt) return stmt.error();
+    stmt.value().bind(1, code);
+    std::optional<StoredParticipant> found;
+    for (;;) {
+        Result<bool> row = stmt.value().step("looking up participant '" + code + "'");
+        if (!row) return row.error();
+        if (!*row) break;
+        if (!found) {
+            found.emplace();
+            found->id = stmt->int64(0);
+            found->record.code = code;
+            found->record.participant_index = stmt->int32(1);
+            found->record.participant_number = stmt->int32(2);
+        }
+        if (!stmt->is_null(4)) found->record.sessions.emplace_back(stmt->int32(3), stmt->int64(4));
+    }
+    if (!found) return found;
+    Result<std::vector<VariableValue>> variables = read_variables(db, found->id);
+    if (!variables) return variables.error();
+    found->record.variables = std::move(variables).value();
+    return found;
+}
+
+std::string numbered(int session_number) {
+    return "session " + std::to_string(session_number);
+}
+
+// A known participant's next session: its number follows theirs, their variables and Latin-square
+// row stay what their first session recorded.
+Result<bool> check_returning(const Connection& db, const ParticipantRecord& p,
+                             const SessionInfo& info, const Schedule& schedule) {
+    const std::string who = "participant '" + p.code + "'";
+    const int next = p.next_session_number();
+    if (info.session_number < next)
+        return Error{who + " already has " + numbered(info.session_number) + " in '" + db.path() +
+                     "'; use `monoplane study resume --db " + db.path() + " --participant " +
+                     p.code + " --session " + std::to_string(info.session_number) +
+                     "` to continue it, or begin their next session, " + numbered(next) + "."};
+    if (info.session_number > next)
+        return Error{who + " has " + std::to_string(next - 1) + " session(s) in '" + db.path() +
+                     "'; their next is " + numbered(next) + ", not " +
+                     numbered(info.session_number) + " (sessions are numbered without gaps)."};
+    if (!info.variables.empty() && info.variables != p.variables)
+        return Error{who + "'s variables were recorded at their first session in '" + db.path() +
+                     "' and do not change; give none, or the same values, for " +
+                     numbered(info.session_number) + "."};
+    if (schedule.participant_index != p.participant_number)
+        return Error{"the schedule was made for participant number " +
+                     std::to_string(schedule.participant_index + 1) + " but " + who + " in '" +
+                     db.path() + "' is participant number " +
+                     std::to_string(p.participant_number + 1) +
+                     " since their first session; make the schedule again."};
+    return true;
+}
+
+// A new participant: their first session, and a study-wide number no one else in the file has.
+Result<bool> check_new(const Connection& db, const SessionInfo& info, const Schedule& schedule) {
+    const std::string who = "participant '" + info.participant_code + "'";
+    if (info.session_number != 1)
+        return Error{who + " has no session in '" + db.path() + "' yet; their first is " +
+                     numbered(1) + ", not " + numbered(info.session_number) + "."};
+    // The schedule's Latin-square row is the number recorded: any other would misstate the
+    // counterbalancing. 0 in info is the default (not given).
+    if (info.participant_number != 0 && info.participant_number != schedule.participant_index)
+        return Error{"the schedule was made for participant number " +
+                     std::to_string(schedule.participant_index + 1) + " but " + who +
+                     " is to be participant number " + std::to_string(info.participant_number + 1) +
+                     "; make the schedule again."};
+    Result<Statement> taken =
+        Statement::prepare(db, "SELECT code FROM participants WHERE participant_number = ?");
+    if (!taken) return taken.error();
+    taken.value().bind(1, schedule.participant_index);
+    Result<bool> found = taken.value().step("looking up participant numbers");
+    if (!found) return found.error();
+    if (*found)
+        return Error{"participant number " + std::to_string(schedule.participant_index + 1) +
+                     " is taken by participant '" + taken->text(0) + "' in '" + db.path() +
+                     "'; give " + who + " a free one (--participant-number N)."};
+    return true;
+}
+
+// The participant row a session belongs to: the known one, or a new one with its number and
+// variables. Inside begin_session's transaction.
+Result<std::int64_t> admit_participant(const Connection& db, const SessionInfo& info,
+                                       const Schedule& schedule) {
+    Result<std::optional<StoredParticipant>> known = find_participant(db, info.participant_code);
+    if (!known) return known.error();
+    if (*known) {
+        if (Result<bool> ok = check_returning(db, (*known)->record, info, schedule); !ok)
+            return ok.error();
+        return (*known)->id;
+    }
+    if (Result<bool> ok = check_new(db, info, schedule); !ok) return ok.error();
+    // The index is the participant's order in this file (unique there); the number is theirs in
+    // the whole study.
+    Result<std::int64_t> index =
+        query_int(db, "SELECT count(*) FROM participants", "counting participants");
+    if (!index) return index.error();
+    Result<Statement> insert = Statement::prepare(
+        db,
+        "INSERT INTO participants (code, participant_index, participant_number, created_utc) "
+        "VALUES (?, ?, ?, ?)");
+    if (!insert) return insert.error();
+    insert.value()
+        .bind(1, info.participant_code)
+        .bind(2, *index)
+        .bind(3, schedule.participant_index)
+        .bind(4, utc_now_iso8601());
+    if (Result<bool> ok = insert.value().run("adding participant '" + info.participant_code + "'");
+        !ok)
+        return ok.error();
+    const std::int64_t id = sqlite3_last_insert_rowid(db.get());
+    if (Result<bool> ok = write_variables(db, id, info.variables); !ok) return ok.error();
+    return id;
+}
+
+Result<std::int64_t> insert_session(const Connection& db, std::int64_t participant_id,
+                                    const SessionInfo& info, const Schedule& schedule) {
+    Result<Statement> session = Statement::prepare(
+        db,
+        "INSERT INTO sessions (participant_id, protocol_name, protocol_hash, protocol_text, "
+        "seed, block_order, software_version, hmd, runtime, device, observer, started_utc, "
+        "status, render_anti_aliasing, render_ssao, render_detail, procedure, session_number) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    if (!session) return session.error();
+    Statement& s = session.value();
+    s.bind(1, participant_id).bind(2, info.protocol_name).bind(3, hash_text(info.protocol_hash));
+    s.bind(4, info.protocol_text).bind(5, std::to_string(schedule.seed));
+    s.bind(6, join_scenes(schedule.block_order)).bind(7, info.software_version);
+    s.bind(8, info.hmd).bind(9, info.runtime).bind(10, info.device).bind(11, info.observer);
+    s.bind(12, info.started_utc.empty() ? utc_now_iso8601() : info.started_utc);
+    s.bind(13, session_status_name(info.status));
+    s.bind(14, info.render.anti_aliasing).bind(15, info.render.ssao);
+    if (info.render.detail.empty())
+        s.bind_null(16);
+    else
+        s.bind(16, info.render.detail);
+    s.bind(17, procedure_name(schedule_procedure(schedule))).bind(18, info.session_number);
+    if (Result<bool> ok = s.run("adding " + numbered(info.session_number) + " of participant '" +
+                                info.participant_code + "'");
+        !ok)
+        return ok.error();
+    return sqlite3_last_insert_rowid(db.get());
+}
+
+Result<bool> insert_trials(const Connection& db, std::int64_t session_id,
+                           const Schedule& schedule) {
+    Result<Statement> trial = Statement::prepare(
+        db,
+        "INSERT INTO trials (session_id, trial_index, practice, block, scene, mono_plane, "
+        "label1_alternative, label1_mode, label2_mode, repetition) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+    if (!trial) return trial.error();
+    for (const ScheduledTrial& t : schedule.trials) {
+        if (t.adaptive) continue;  // a plan until it starts (write_planned_trials)
+        Statement& s = trial.value();
+        s.reset();
+        s.bind(1, session_id).bind(2, t.index).bind(3, t.practice ? 1 : 0).bind(4, t.block);
+        s.bind(5, t.scene).bind(6, t.mono_plane).bind(7, t.label1_alternative);
+        s.bind(8, render_mode_name(t.label1_mode)).bind(9, render_mode_name(t.label2_mode));
+        s.bind(10, t.repetition);
+        if (Result<bool> ok = s.run("storing the schedule"); !ok) return ok;
+    }
+    return true;
+}
+
+}  // namespace
+
 Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Schedule& schedule) {
     const Connection& db = impl_->db;
     if (!valid_participant_code(info.participant_code))
         return Error{"participant code '" + info.participant_code +
                      "' is invalid: use 1 to 64 letters, digits, '_' or '-' — a pseudonym such "
                      "as P07, never a name."};
+    if (info.session_number < 1)
+        return Error{"session number " + std::to_string(info.session_number) +
+                     " for participant '" + info.participant_code +
+                     "': sessions are numbered from 1"};
+    if (info.session_number != schedule.session_number)
+        return Error{"the schedule was made for " + numbered(schedule.session_number) +
+                     " but participant '" + info.participant_code + "' is to begin " +
+                     numbered(info.session_number) + "; make the schedule again."};
     if (Result<bool> valid = validate_schedule(schedule); !valid)
         return Error{"cannot store the schedule: " + valid.error().message};
     if (Result<bool> valid = validate_scene_files(info.scene_files, schedule); !valid)
         return Error{"cannot store the scene files: " + valid.error().message};
+    if (Result<bool> valid = validate_variables(info.variables); !valid)
+        return Error{"cannot store the participant's variables: " + valid.error().message};
 
     Result<Transaction> tx = Transaction::begin(db, "starting a session");
     if (!tx) return tx.error();
-
-    Result<Statement> existing = Statement::prepare(
-        db,
-        "SELECT s.id FROM sessions s JOIN participants p ON p.id = s.participant_id "
-        "WHERE p.code = ? ORDER BY s.id LIMIT 1");
-    if (!existing) return existing.error();
-    existing.value().bind(1, info.participant_code);
-    Result<bool> found = existing.value().step("looking up the participant");
-    if (!found) return found.error();
-    if (*found) {
-        const std::string id = std::to_string(existing->int64(0));
-        return Error{"participant '" + info.participant_code + "' already has session " + id +
-                     " in '" + db.path() + "'; use `monoplane study resume --db " + db.path() +
-                     " --session " + id + "` to continue it, or choose a new code."};
-    }
-
-    // The Latin square row is the participant's position in this database; a schedule made for
-    // another row (another session began meanwhile) would be stored with the wrong balance.
-    Result<std::int64_t> index =
-        query_int(db, "SELECT count(*) FROM participants", "counting participants");
-    if (!index) return index.error();
-    if (*index != schedule.participant_index)
-        return Error{"the schedule was made for participant index " +
-                     std::to_string(schedule.participant_index) + " but the next participant in '" +
-                     db.path() + "' has index " + std::to_string(*index) +
-                     " (did another session begin meanwhile?); make the schedule again."};
-
-    const std::string now = utc_now_iso8601();
-    Result<Statement> participant = Statement::prepare(
-        db, "INSERT INTO participants (code, participant_index, created_utc) VALUES (?, ?, ?)");
-    if (!participant) return participant.error();
-    participant.value().bind(1, info.participant_code).bind(2, *index).bind(3, now);
-    if (Result<bool> ok = participant.value().run("adding the participant"); !ok) return ok.error();
-    const std::int64_t participant_id = sqlite3_last_insert_rowid(db.get());
-
-    Result<Statement> session = Statement::prepare(
-        db,
-        "INSERT INTO sessions (participant_id, protocol_name, protocol_hash, protocol_text, "
-        "seed, block_order, software_version, hmd, runtime, device, observer, started_utc, "
-        "status, render_anti_aliasing, render_ssao, render_detail, procedure) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    if (!session) return session.error();
-    session.value()
-        .bind(1, participant_id)
-        .bind(2, info.protocol_name)
-        .bind(3, hash_text(info.protocol_hash))
-        .bind(4, info.protocol_text)
-        .bind(5, std::to_string(schedule.seed))
-        .bind(6, join_scenes(schedule.block_order))
-        .bind(7, info.software_version)
-        .bind(8, info.hmd)
-        .bind(9, info.runtime)
-        .bind(10, info.device)
-        .bind(11, info.observer)
-        .bind(12, info.started_utc.empty() ? now : info.started_utc)
-        .bind(13, session_status_name(info.status))
-        .bind(14, info.render.anti_aliasing)
-        .bind(15, info.render.ssao);
-    if (info.render.detail.empty()) {
-        session.value().bind_null(16);
-    } else {
-        session.value().bind(16, info.render.detail);
-    }
-    session.value().bind(17, procedure_name(schedule_procedure(schedule)));
-    if (Result<bool> ok = session.value().run("adding the session"); !ok) return ok.error();
-    const std::int64_t session_id = sqlite3_last_insert_rowid(db.get());
-
-    Result<Statement> trial = Statement::prepare(
-        db,
-        "INSERT INTO trials (session_id, trial_index, practice, block, scene, mono_plane, "
-        "label1_alternative, label1_mode, label2_mode) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    if (!trial) return trial.error();
-    for (const ScheduledTrial& t : schedule.trials) {
-        if (t.adaptive) continue;  // a plan until it starts (write_planned_trials)
-        trial.value()
-            .bind(1, session_id)
-            .bind(2, t.index)
-            .bind(3, t.practice ? 1 : 0)
-            .bind(4, t.block)
-            .bind(5, t.scene)
-            .bind(6, t.mono_plane)
-            .bind(7, t.label1_alternative)
-            .bind(8, render_mode_name(t.label1_mode))
-            .bind(9, render_mode_name(t.label2_mode));
-        if (Result<bool> ok = trial.value().run("storing the schedule"); !ok) return ok.error();
-        trial.value().reset();
-    }
-    if (Result<bool> ok = write_planned_trials(db, session_id, schedule); !ok) return ok.error();
-    if (Result<bool> ok = write_scene_files(db, session_id, info.scene_files); !ok)
+    Result<std::int64_t> participant_id = admit_participant(db, info, schedule);
+    if (!participant_id) return participant_id.error();
+    Result<std::int64_t> session_id = insert_session(db, *participant_id, info, schedule);
+    if (!session_id) return session_id.error();
+    if (Result<bool> ok = insert_trials(db, *session_id, schedule); !ok) return ok.error();
+    if (Result<bool> ok = write_planned_trials(db, *session_id, schedule); !ok) return ok.error();
+    if (Result<bool> ok = write_scene_files(db, *session_id, info.scene_files); !ok)
         return ok.error();
     if (Result<bool> ok = tx.value().commit("starting a session"); !ok) return ok.error();
-    return session_id;
+    return *session_id;
 }
 
 namespace {
 
-// The trial columns in the order read_trial() expects; the last says whether the row is a
-// started slot of a staircase (planned_trial_store.h).
+// The trial columns in the order read_trial() expects; the 17th says whether the row is a
+// started slot of a staircase (planned_trial_store.h), the 18th is the repetition.
 constexpr std::string_view kTrialColumns =
     "t.trial_index, t.practice, t.block, t.scene, t.mono_plane, t.label1_alternative, "
     "t.label1_mode, t.label2_mode, t.decided, t.choice, t.chosen_mode, t.valid, t.switches, "
     "t.time_label1_ns, t.time_label2_ns, t.decision_time_ns, EXISTS (SELECT 1 FROM "
-    "planned_trials pt WHERE pt.session_id = t.session_id AND pt.trial_index = t.trial_index)";
-constexpr int kTrialColumnCount = 17;
+    "planned_trials pt WHERE pt.session_id = t.session_id AND pt.trial_index = t.trial_index), "
+    "t.repetition";
+constexpr int kTrialColumnCount = 18;
 
 Result<RenderMode> read_mode(const Statement& stmt, int column, const std::string& file) {
     const std::string name = stmt.text(column);
@@ -480,6 +665,7 @@ Result<bool> read_trial(const Statement& stmt, const std::string& file, Schedule
     trial.label1_mode = *label1;
     trial.label2_mode = *label2;
     trial.adaptive = stmt.int64(16) != 0;
+    trial.repetition = stmt.int32(17);
     decided = stmt.int64(8) != 0;
     outcome = TrialOutcome{};
     if (!decided) return true;
@@ -501,8 +687,9 @@ Result<Schedule> StudyStore::load_schedule(std::int64_t session_id) const {
     const Connection& db = impl_->db;
     Result<Statement> head =
         Statement::prepare(db,
-                           "SELECT s.seed, p.participant_index, s.block_order FROM sessions s "
-                           "JOIN participants p ON p.id = s.participant_id WHERE s.id = ?");
+                           "SELECT s.seed, p.participant_number, s.block_order, s.session_number "
+                           "FROM sessions s JOIN participants p ON p.id = s.participant_id "
+                           "WHERE s.id = ?");
     if (!head) return head.error();
     head.value().bind(1, session_id);
     Result<bool> found = head.value().step("loading a schedule");
@@ -514,8 +701,9 @@ Result<Schedule> StudyStore::load_schedule(std::int64_t session_id) const {
     if (!seed)
         return Error{"study database '" + db.path() + "' holds a bad seed '" + head->text(0) + "'"};
     schedule.seed = *seed;
-    schedule.participant_index = head->int32(1);
+    schedule.participant_index = head->int32(1);  // the number that picked the Latin-square row
     schedule.block_order = split_scenes(head->text(2));
+    schedule.session_number = head->int32(3);
 
     // The trials started so far and the staircases' slots not started yet.
     Result<Statement> rows =
@@ -563,8 +751,8 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
         "SELECT s.id, p.code, p.participant_index, s.protocol_name, s.protocol_hash, "
         "s.protocol_text, s.seed, s.software_version, s.hmd, s.runtime, s.device, s.observer, "
         "s.started_utc, s.status, s.render_anti_aliasing, s.render_ssao, s.render_detail, "
-        "s.procedure FROM sessions s JOIN participants p ON p.id = s.participant_id "
-        "WHERE s.id = ?");
+        "s.procedure, p.participant_number, s.session_number, s.ended_utc, p.id "
+        "FROM sessions s JOIN participants p ON p.id = s.participant_id WHERE s.id = ?");
     if (!stmt) return stmt.error();
     stmt.value().bind(1, session_id);
     Result<bool> found = stmt.value().step("reading a session");
@@ -599,6 +787,12 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
     if (!procedure)
         return Error{"study database '" + db.path() + "': " + procedure.error().message};
     info.procedure = *procedure;
+    info.participant_number = stmt->int32(18);
+    info.session_number = stmt->int32(19);
+    info.ended_utc = stmt->is_null(20) ? "" : stmt->text(20);
+    Result<std::vector<VariableValue>> variables = read_variables(db, stmt->int64(21));
+    if (!variables) return variables.error();
+    info.variables = std::move(variables).value();
     Result<std::vector<SceneFileRecord>> files = read_scene_files(db, session_id);
     if (!files) return files.error();
     info.scene_files = std::move(files).value();
@@ -652,13 +846,41 @@ Result<int> StudyStore::participant_count() const {
     return static_cast<int>(*count);
 }
 
-Result<bool> StudyStore::append_event(std::int64_t session_id, const TrialEvent& event) {
+namespace {
+
+bool is_instruction_event(EventKind kind) {
+    return kind == EventKind::InstructionsShown || kind == EventKind::InstructionsConfirmed;
+}
+
+// Refuses an event the events table's CHECKs would refuse, with words a developer can act on.
+Result<bool> validate_event(const TrialEvent& event) {
     const auto kind = static_cast<std::size_t>(event.kind);
-    if (kind >= kEventKindNames.size()) return Error{"unknown event kind " + std::to_string(kind)};
+    if (kind > static_cast<std::size_t>(EventKind::EndShown))
+        return Error{"unknown event kind " + std::to_string(kind)};
+    const std::string name(event_kind_name(event.kind));
     if (event.label < 0 || event.label > 2)
         return Error{"event label " + std::to_string(event.label) + " is not 0, 1 or 2"};
     if (event.frame < -1)
         return Error{"event frame " + std::to_string(event.frame) + " is below -1"};
+    if (is_screen_event(event.kind) && event.trial_index != -1)
+        return Error{"a '" + name + "' event belongs to a screen, not to trial " +
+                     std::to_string(event.trial_index) + ": its trial index is -1"};
+    if (!is_screen_event(event.kind) && event.trial_index < 0)
+        return Error{"a '" + name + "' event needs its trial (index " +
+                     std::to_string(event.trial_index) + " given)"};
+    if (is_instruction_event(event.kind) && event.page < 0)
+        return Error{"a '" + name + "' event needs its instruction page (0-based; " +
+                     std::to_string(event.page) + " given)"};
+    if (!is_instruction_event(event.kind) && event.page != -1)
+        return Error{"a '" + name + "' event has no instruction page (-1), not page " +
+                     std::to_string(event.page)};
+    return true;
+}
+
+}  // namespace
+
+Result<bool> StudyStore::append_event(std::int64_t session_id, const TrialEvent& event) {
+    if (Result<bool> ok = validate_event(event); !ok) return ok;
     // One transaction (with the queued frames); with synchronous = FULL it is on disk when this
     // returns.
     Result<Transaction> tx = Transaction::begin(impl_->db, "appending an event");
@@ -666,21 +888,28 @@ Result<bool> StudyStore::append_event(std::int64_t session_id, const TrialEvent&
     if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
     Result<Statement> stmt = Statement::prepare(
         impl_->db,
-        "INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame) "
-        "VALUES (?, ?, ?, ?, ?, ?)");
+        "INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame, page) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?)");
     if (!stmt) return stmt.error();
-    stmt.value()
-        .bind(1, session_id)
-        .bind(2, event.trial_index)
-        .bind(3, event_kind_db_name(event.kind))
-        .bind(4, event.label)
-        .bind(5, event.time_ns)
-        .bind(6, event.frame);
-    const std::string what = "appending a '" + std::string(event_kind_db_name(event.kind)) +
-                             "' event for trial " + std::to_string(event.trial_index) +
-                             " of session " + std::to_string(session_id) +
-                             " (the session and trial must exist)";
-    if (Result<bool> ok = stmt.value().run(what); !ok) return ok;
+    const bool screen = is_screen_event(event.kind);
+    Statement& s = stmt.value();
+    s.bind(1, session_id);
+    if (screen)
+        s.bind_null(2);  // a screen is no trial
+    else
+        s.bind(2, event.trial_index);
+    s.bind(3, event_kind_name(event.kind)).bind(4, event.label).bind(5, event.time_ns);
+    s.bind(6, event.frame);
+    if (is_instruction_event(event.kind))
+        s.bind(7, event.page);
+    else
+        s.bind_null(7);
+    const std::string what =
+        "appending a '" + std::string(event_kind_name(event.kind)) + "' event " +
+        (screen ? std::string("(a screen)") : "for trial " + std::to_string(event.trial_index)) +
+        " of session " + std::to_string(session_id) + " (the session" +
+        (screen ? "" : " and trial") + " must exist)";
+    if (Result<bool> ok = s.run(what); !ok) return ok;
     return impl_->commit_written(tx.value(), what);
 }
 
@@ -800,15 +1029,111 @@ Result<bool> StudyStore::record_stimulus(std::int64_t session_id, const Schedule
     return impl_->commit_written(tx.value(), "recording a staircase's choice");
 }
 
-Result<bool> StudyStore::add_session_note(std::int64_t session_id, const std::string& text) {
-    if (text.empty()) return Error{"a session note must say something"};
+Result<bool> StudyStore::add_note(std::int64_t session_id, const SessionNote& note) {
+    const std::string where =
+        "note for session " + std::to_string(session_id) + " in '" + impl_->db.path() + "'";
+    if (note.text.find_first_not_of(" \t\r\n") == std::string::npos)
+        return Error{where + " is empty: a note must say something"};
+    if (const std::size_t length = code_points(note.text); length > 10'000)
+        return Error{where + " has " + std::to_string(length) +
+                     " characters; at most 10,000 are kept: shorten it or split it in two"};
+    if (note.runtime_time_ns && *note.runtime_time_ns < 0)
+        return Error{where + ": the session time " + std::to_string(*note.runtime_time_ns) +
+                     " ns is negative"};
+    if (note.trial_index && *note.trial_index < 0)
+        return Error{where + ": trial " + std::to_string(*note.trial_index) + " is negative"};
+    SessionNote stamped = note;
+    if (stamped.noted_utc.empty()) stamped.noted_utc = utc_now_iso8601();
+    // Durable at once, with the frames queued so far: the note is as safe as a decision.
     Result<Transaction> tx = Transaction::begin(impl_->db, "adding a session note");
     if (!tx) return tx.error();
     if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok;
-    if (Result<bool> ok = write_session_note(impl_->db, session_id, {utc_now_iso8601(), text}); !ok)
-        return ok;
+    if (Result<bool> ok = write_session_note(impl_->db, session_id, stamped); !ok) return ok;
     if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
     return impl_->commit_written(tx.value(), "adding a session note");
+}
+
+Result<bool> StudyStore::add_session_note(std::int64_t session_id, const std::string& text) {
+    SessionNote note;
+    note.text = text;
+    note.source = NoteSource::Software;
+    return add_note(session_id, note);
+}
+
+const std::filesystem::path& StudyStore::path() const {
+    return impl_->file;
+}
+
+Result<std::optional<ParticipantRecord>> StudyStore::participant(const std::string& code) const {
+    Result<std::optional<StoredParticipant>> found = find_participant(impl_->db, code);
+    if (!found) return found.error();
+    if (!*found) return std::optional<ParticipantRecord>();
+    return std::optional<ParticipantRecord>(std::move((*found)->record));
+}
+
+Result<std::optional<std::int64_t>> StudyStore::find_session(const std::string& code,
+                                                             int session_number) const {
+    Result<Statement> stmt = Statement::prepare(
+        impl_->db,
+        "SELECT s.id FROM sessions s JOIN participants p ON p.id = s.participant_id "
+        "WHERE p.code = ? AND s.session_number = ?");
+    if (!stmt) return stmt.error();
+    stmt.value().bind(1, code).bind(2, session_number);
+    Result<bool> row = stmt.value().step("looking up session " + std::to_string(session_number) +
+                                         " of participant '" + code + "'");
+    if (!row) return row.error();
+    if (!*row) return std::optional<std::int64_t>();
+    return std::optional<std::int64_t>(stmt->int64(0));
+}
+
+namespace {
+
+// Per session: data trials decided, and data trials planned (the trials rows that are not
+// practice, plus a staircase's slots not started yet: its most).
+constexpr std::string_view kRosterQuery =
+    "SELECT p.code, p.participant_number, s.session_number, s.id, s.status, "
+    "(SELECT count(*) FROM trials t WHERE t.session_id = s.id AND t.practice = 0 AND "
+    "t.decided = 1), "
+    "(SELECT count(*) FROM trials t WHERE t.session_id = s.id AND t.practice = 0) + "
+    "(SELECT count(*) FROM planned_trials pt WHERE pt.session_id = s.id AND NOT EXISTS "
+    "(SELECT 1 FROM trials t WHERE t.session_id = pt.session_id AND "
+    "t.trial_index = pt.trial_index)), "
+    "s.started_utc, s.ended_utc, s.device, s.runtime, s.protocol_hash, s.protocol_name "
+    "FROM sessions s JOIN participants p ON p.id = s.participant_id "
+    "ORDER BY p.code, s.session_number";
+
+}  // namespace
+
+Result<std::vector<RosterRow>> StudyStore::roster() const {
+    const Connection& db = impl_->db;
+    Result<Statement> stmt = Statement::prepare(db, kRosterQuery);
+    if (!stmt) return stmt.error();
+    std::vector<RosterRow> rows;
+    for (;;) {
+        Result<bool> row = stmt.value().step("reading the roster");
+        if (!row) return row.error();
+        if (!*row) break;
+        const Statement& s = stmt.value();
+        const std::optional<SessionStatus> status = parse_status(s.text(4));
+        const std::optional<std::uint64_t> hash = parse_u64(s.text(11), 16);
+        if (!status || !hash)
+            return Error{"study database '" + db.path() +
+                         "' holds a bad status or hash in session " + std::to_string(s.int64(3))};
+        rows.push_back(RosterRow{.participant_code = s.text(0),
+                                 .participant_number = s.int32(1),
+                                 .session_number = s.int32(2),
+                                 .session_id = s.int64(3),
+                                 .status = *status,
+                                 .trials_decided = s.int32(5),
+                                 .trials_planned = s.int32(6),
+                                 .started_utc = s.text(7),
+                                 .ended_utc = s.is_null(8) ? "" : s.text(8),
+                                 .device = s.text(9),
+                                 .runtime = s.text(10),
+                                 .protocol_hash = *hash,
+                                 .protocol_name = s.text(12)});
+    }
+    return rows;
 }
 
 Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> session_id) const {
@@ -817,7 +1142,8 @@ Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> 
         if (Result<bool> ok = impl_->require_session(*session_id); !ok) return ok.error();
     Result<Statement> stmt = Statement::prepare(
         db, "SELECT " + std::string(kTrialColumns) +
-                ", t.session_id, p.code FROM trials t JOIN sessions s ON s.id = t.session_id "
+                ", t.session_id, p.code, s.session_number FROM trials t "
+                "JOIN sessions s ON s.id = t.session_id "
                 "JOIN participants p ON p.id = s.participant_id "
                 "WHERE ?1 IS NULL OR t.session_id = ?1 ORDER BY t.session_id, t.trial_index");
     if (!stmt) return stmt.error();
@@ -837,6 +1163,7 @@ Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> 
             return ok.error();
         record.session_id = stmt->int64(kTrialColumnCount);
         record.participant_code = stmt->text(kTrialColumnCount + 1);
+        record.session_number = stmt->int32(kTrialColumnCount + 2);
         records.push_back(std::move(record));
     }
     return records;
@@ -845,9 +1172,10 @@ Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> 
 Result<std::vector<TrialEvent>> StudyStore::events(std::int64_t session_id) const {
     const Connection& db = impl_->db;
     if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok.error();
-    Result<Statement> stmt = Statement::prepare(db,
-                                                "SELECT kind, trial_index, label, time_ns, frame "
-                                                "FROM events WHERE session_id = ? ORDER BY id");
+    Result<Statement> stmt = Statement::prepare(
+        db,
+        "SELECT kind, trial_index, label, time_ns, frame, page FROM events WHERE session_id = ? "
+        "ORDER BY id");
     if (!stmt) return stmt.error();
     stmt.value().bind(1, session_id);
     std::vector<TrialEvent> events;
@@ -859,8 +1187,13 @@ Result<std::vector<TrialEvent>> StudyStore::events(std::int64_t session_id) cons
         if (!kind)
             return Error{"study database '" + db.path() + "' holds an unknown event kind '" +
                          stmt->text(0) + "'"};
-        events.push_back(
-            TrialEvent{*kind, stmt->int32(1), stmt->int32(2), stmt->int64(3), stmt->int64(4)});
+        // NULL: a screen's event (no trial), an event that is not on an instruction page.
+        events.push_back(TrialEvent{.kind = *kind,
+                                    .trial_index = stmt->is_null(1) ? -1 : stmt->int32(1),
+                                    .label = stmt->int32(2),
+                                    .time_ns = stmt->int64(3),
+                                    .frame = stmt->int64(4),
+                                    .page = stmt->is_null(5) ? -1 : stmt->int32(5)});
     }
     return events;
 }

@@ -10,14 +10,17 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/result.h"
 #include "study/frame_record.h"
+#include "study/participant_variables.h"
 #include "study/protocol.h"
 #include "study/scene_files.h"
 #include "study/schedule.h"
 #include "study/session_log.h"
+#include "study/session_note.h"
 #include "study/trial_events.h"
 #include "study/trial_state_machine.h"
 
@@ -25,17 +28,19 @@ namespace monoplane::study {
 
 // Something the software recorded about a session for whoever reviews its data, e.g. that a
 // resume went ahead with changed scene files (`study resume --accept-changed-scenes`).
-struct SessionNote {
-    std::string noted_utc;  // ISO 8601 UTC
-    std::string text;
-
-    bool operator==(const SessionNote&) const = default;
-};
-
 struct SessionInfo {
     std::int64_t id = 0;
     std::string participant_code;
-    int participant_index = 0;  // order of the participant's first session: Latin square row
+    int participant_index = 0;  // 0-based order of the participant's first session in this file
+    // 0-based: the participant's number in the whole study, which picks the Latin square row
+    // (`--participant-number`); by default participant_index. Fixed at the first session: a
+    // later session's begin_session takes the stored one. Before schema 7: participant_index.
+    int participant_number = 0;
+    int session_number = 1;  // 1-based: the participant's session (`--session N`)
+    // The participant's variables (protocol [[variables]]), in declaration order: begin_session
+    // stores them with a new participant; a later session passes none (or the same values).
+    std::vector<VariableValue> variables;
+    std::string ended_utc;  // read back; empty while the session has not ended
     std::string protocol_name;
     std::uint64_t protocol_hash = 0;
     std::string protocol_text;
@@ -65,7 +70,8 @@ struct SessionInfo {
 struct TrialRecord {
     std::int64_t session_id = 0;
     std::string participant_code;
-    ScheduledTrial trial;
+    int session_number = 1;  // the participant's session, 1-based
+    ScheduledTrial trial;    // trial.repetition: which showing of its condition
     bool decided = false;
     TrialOutcome outcome;
 };
@@ -75,6 +81,34 @@ struct QuestionnaireAnswer {
     int item = 0;
     std::string text;
     int answer = 0;
+};
+
+// One line of the roster (`study list`): a session and where it stands.
+struct RosterRow {
+    std::string participant_code;
+    int participant_number = 0;
+    int session_number = 1;
+    std::int64_t session_id = 0;
+    SessionStatus status = SessionStatus::Running;
+    int trials_decided = 0;  // data trials decided
+    int trials_planned = 0;  // data trials in the schedule (a staircase's: its most)
+    std::string started_utc;
+    std::string ended_utc;  // empty while not ended
+    std::string device;
+    std::string runtime;
+    std::uint64_t protocol_hash = 0;
+    std::string protocol_name;
+};
+
+// The participant as the database knows them (for --session's default, the launcher's form and
+// `study note`).
+struct ParticipantRecord {
+    std::string code;
+    int participant_index = 0;
+    int participant_number = 0;
+    std::vector<VariableValue> variables;
+    std::vector<std::pair<int, std::int64_t>> sessions;  // (session number, session id), in order
+    int next_session_number() const { return static_cast<int>(sessions.size()) + 1; }
 };
 
 struct StoreOptions {
@@ -96,9 +130,18 @@ class StudyStore final : public SessionLog {
                                                     const StoreOptions& options);
     ~StudyStore();
 
-    static constexpr int kSchemaVersion = 6;
+    static constexpr int kSchemaVersion = 7;
 
-    // Starts a session: refuses a participant code that already has a session (use resume).
+    // The file this store was opened from (session holds lie beside it).
+    const std::filesystem::path& path() const;
+
+    // Starts a session: info.session_number must be the participant's next (1 for a new code)
+    // and the schedule's: one that exists is refused (use resume), one that skips ahead too. A
+    // new participant is stored with the participant number the schedule was made for (its
+    // Latin-square row; info.participant_number must be the same, or 0 for "the schedule's"),
+    // refused when another participant of this file has it, and with info.variables; a known
+    // one keeps theirs (the schedule must be made for their number; info.variables must be
+    // empty or equal).
     // Stores the protocol text and hash, the seed, the whole schedule and the scene files'
     // digests (info.scene_files, checked by validate_scene_files: each imported scene of the
     // schedule needs its record) in one transaction, before the first trial. A staircase's
@@ -112,8 +155,15 @@ class StudyStore final : public SessionLog {
     Result<SessionInfo> session(std::int64_t session_id) const;
     // The latest session that is not completed (for `study resume` without --session).
     Result<std::optional<std::int64_t>> latest_unfinished_session() const;
-    // The number of sessions so far: the next participant's Latin square row.
+    // The number of participants so far: the next participant's index (and default number).
     Result<int> participant_count() const;
+    // The participant with this code, or none.
+    Result<std::optional<ParticipantRecord>> participant(const std::string& code) const;
+    // The id of the participant's session `session_number`, or none.
+    Result<std::optional<std::int64_t>> find_session(const std::string& code,
+                                                     int session_number) const;
+    // Every session, by participant code and session number (`study list`).
+    Result<std::vector<RosterRow>> roster() const;
 
     // The frame log: rows are queued in memory and written in the transaction of the next
     // durable write below (or of flush_frames), so every committed event has every frame
@@ -137,8 +187,11 @@ class StudyStore final : public SessionLog {
                                int answer) override;
     // The started adaptive trial becomes a row of the trials table with its m.
     Result<bool> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) override;
-    // Appends a note to a session (stamped with the current UTC time), durable when it returns.
-    // Refuses an empty note and an unknown session.
+    // Appends a note to a session (stamped with the current UTC time unless note.noted_utc is
+    // set), durable when it returns. Refuses an empty or blank note, one over 10,000 characters
+    // and an unknown session.
+    Result<bool> add_note(std::int64_t session_id, const SessionNote& note);
+    // A note from the software (NoteSource::Software, no session time).
     Result<bool> add_session_note(std::int64_t session_id, const std::string& text);
 
     // The trials shown or being shown (a staircase's slots once started), by session and index.

@@ -44,7 +44,7 @@ Error TrialStateMachine::fail(const char* request, const char* why) const {
 
 TrialEvent TrialStateMachine::event(EventKind kind, int label, std::int64_t time_ns,
                                     std::int64_t frame) const {
-    return TrialEvent{kind, trial_.index, label, time_ns, frame};
+    return TrialEvent{kind, trial_.index, label, time_ns, frame, -1};
 }
 
 void TrialStateMachine::close_dwell(std::int64_t time_ns) {

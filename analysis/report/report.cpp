@@ -139,6 +139,77 @@ std::string frame_timing_html(const FrameTimingSummary& f) {
     return h + t.html();
 }
 
+// Data and exclusions: what each source contributed, the exclusions, the participants (with
+// their variables), the session notes and the frame log.
+std::string data_section_html(const AnalysisResults& r) {
+    std::string h;
+    h += "<h2 id=\"data\">Data and exclusions</h2>\n";
+    {
+        Table t;
+        t.header = {"source",   "sessions",    "participants", "trials",
+                    "practice", "data trials", "analysed",     "questionnaire answers"};
+        t.numeric = {false, true, true, true, true, true, true, true};
+        for (const SourceCounts& c : r.sources) {
+            t.rows.push_back({"<code>" + xml_escaped(c.source) + "</code>",
+                              std::to_string(c.sessions), std::to_string(c.participants),
+                              std::to_string(c.trials), std::to_string(c.practice),
+                              std::to_string(c.data_trials), std::to_string(c.analysed),
+                              std::to_string(c.answers)});
+        }
+        h += t.html();
+        h += "<p class=\"note\">Sessions stay apart by source (two databases may both hold a "
+             "session 1). " +
+             codes_note_html(r.day) + "</p>\n";
+    }
+    {
+        const Exclusions& e = r.exclusions;
+        Table t;
+        t.header = {"", "trials"};
+        t.numeric = {false, true};
+        t.rows = {{"all trials merged", std::to_string(r.trials)},
+                  {"excluded: practice", std::to_string(e.practice)},
+                  {"excluded: undecided (session ended before the decision)",
+                   std::to_string(e.undecided)},
+                  {"excluded: invalid (not both alternatives viewed)", std::to_string(e.invalid)},
+                  {"<b>analysed</b>", "<b>" + std::to_string(e.kept) + "</b>"}};
+        h += t.html();
+        h += "<p class=\"note\">Each trial is counted once, under the first reason that applies "
+             "in the order practice, undecided, invalid. papers/000 excluded 48 of 1410 "
+             "decisions as invalid.</p>\n";
+    }
+    h += participants_html(r.day);
+    h += notes_html(r.day);
+    h += frame_timing_html(r.frame_timing);
+    return h;
+}
+
+// Order effects: whether the Latin square's rows are evenly filled, then the rates by first
+// scene.
+std::string order_section_html(const AnalysisResults& r) {
+    const std::string test = xml_escaped(r.test_mode);
+    std::string h;
+    h += "<h2 id=\"order\">Order effects: by first scene</h2>\n";
+    h += counterbalancing_html(r.day);
+    h += "<h3>Rates by first scene</h3>\n";
+    h += "<p>Decisions for " + test +
+         " in all scenes, grouped by the scene a session began with (papers/000: 40&nbsp;% with "
+         "SPHERES first, 37&nbsp;% with LANDSCAPE, 29&nbsp;% with BEAMS).</p>\n";
+    {
+        Table t;
+        t.header = {"first scene", "sessions",         test + " chosen",           "n",
+                    "rate",        "95&nbsp;% Wilson", "binomial p (vs 50&nbsp;%)"};
+        t.numeric = {false, true, true, true, true, true, true};
+        for (const FirstSceneRate& f : r.by_first_scene) {
+            t.rows.push_back({scene_name(f.rate.scene), std::to_string(f.sessions),
+                              std::to_string(f.rate.test_chosen), std::to_string(f.rate.n),
+                              percent(f.rate.rate), interval_percent(f.rate.wilson),
+                              p_value(f.rate.binomial_p)});
+        }
+        h += t.html();
+    }
+    return h;
+}
+
 // A scene name as part of a file name under figures/: scene names may be glTF files' paths
 // ("models/room.glb"), whose '/' would name a folder. Letters, digits, '-', '_' and '.' stay.
 std::string file_stem_of(const std::string& scene) {
@@ -236,6 +307,7 @@ AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
     r.decision_times = decision_times_by_scene(kept);
     r.switches = switches_by_scene(kept);
     r.questionnaire = questionnaire_summaries(data.answers);
+    r.day = study_day(data);
     return r;
 }
 
@@ -301,41 +373,7 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
          "<li><a href=\"#times\">Decision times and switches</a></li>"
          "<li><a href=\"#questionnaire\">Questionnaire</a></li></ul></nav>\n";
 
-    // Data.
-    h += "<h2 id=\"data\">Data and exclusions</h2>\n";
-    {
-        Table t;
-        t.header = {"source",   "sessions",    "participants", "trials",
-                    "practice", "data trials", "analysed",     "questionnaire answers"};
-        t.numeric = {false, true, true, true, true, true, true, true};
-        for (const SourceCounts& c : r.sources) {
-            t.rows.push_back({"<code>" + xml_escaped(c.source) + "</code>",
-                              std::to_string(c.sessions), std::to_string(c.participants),
-                              std::to_string(c.trials), std::to_string(c.practice),
-                              std::to_string(c.data_trials), std::to_string(c.analysed),
-                              std::to_string(c.answers)});
-        }
-        h += t.html();
-        h += "<p class=\"note\">Sessions stay apart by source (two databases may both hold a "
-             "session 1); a participant code is one person across sources.</p>\n";
-    }
-    {
-        const Exclusions& e = r.exclusions;
-        Table t;
-        t.header = {"", "trials"};
-        t.numeric = {false, true};
-        t.rows = {{"all trials merged", std::to_string(r.trials)},
-                  {"excluded: practice", std::to_string(e.practice)},
-                  {"excluded: undecided (session ended before the decision)",
-                   std::to_string(e.undecided)},
-                  {"excluded: invalid (not both alternatives viewed)", std::to_string(e.invalid)},
-                  {"<b>analysed</b>", "<b>" + std::to_string(e.kept) + "</b>"}};
-        h += t.html();
-        h += "<p class=\"note\">Each trial is counted once, under the first reason that applies "
-             "in the order practice, undecided, invalid. papers/000 excluded 48 of 1410 "
-             "decisions as invalid.</p>\n";
-    }
-    h += frame_timing_html(r.frame_timing);
+    h += data_section_html(r);
 
     // Choices.
     h += "<h2 id=\"choices\">Choices</h2>\n";
@@ -395,24 +433,7 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
     h += regression_section_html(r);
     h += psychometric_section_html(r, figures);
 
-    // Order.
-    h += "<h2 id=\"order\">Order effects: by first scene</h2>\n";
-    h += "<p>Decisions for " + test +
-         " in all scenes, grouped by the scene a session began with (papers/000: 40&nbsp;% with "
-         "SPHERES first, 37&nbsp;% with LANDSCAPE, 29&nbsp;% with BEAMS).</p>\n";
-    {
-        Table t;
-        t.header = {"first scene", "sessions",         test + " chosen",           "n",
-                    "rate",        "95&nbsp;% Wilson", "binomial p (vs 50&nbsp;%)"};
-        t.numeric = {false, true, true, true, true, true, true};
-        for (const FirstSceneRate& f : r.by_first_scene) {
-            t.rows.push_back({scene_name(f.rate.scene), std::to_string(f.sessions),
-                              std::to_string(f.rate.test_chosen), std::to_string(f.rate.n),
-                              percent(f.rate.rate), interval_percent(f.rate.wilson),
-                              p_value(f.rate.binomial_p)});
-        }
-        h += t.html();
-    }
+    h += order_section_html(r);
 
     // Times and switches.
     h += "<h2 id=\"times\">Decision times and switches</h2>\n";
@@ -596,6 +617,7 @@ std::string summary_json(const AnalysisResults& r) {
 
     logistic_json(json, r);
     psychometric_json(json, r);
+    study_day_json(json, r.day);
 
     groups_json(json, r.decision_times, "decision_time_s");
     groups_json(json, r.switches, "switches");

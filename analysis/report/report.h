@@ -17,6 +17,7 @@
 #include "analysis/frame_timing.h"
 #include "analysis/logistic_regression.h"
 #include "analysis/psychometric_fits.h"
+#include "analysis/report/study_day_section.h"
 #include "analysis/summaries.h"
 #include "common/result.h"
 
@@ -78,6 +79,8 @@ struct AnalysisResults {
     std::vector<GroupSummary> switches;         // per scene
     std::vector<ItemSummary> questionnaire;
     FrameTimingSummary frame_timing;  // headset sessions' frame logs
+    // Participants with their sessions and variables, notes, counterbalancing.
+    StudyDay day;
 };
 
 // Runs every statistic. Never fails: a test that cannot be computed on these data (too few

@@ -19,6 +19,14 @@ std::string shown_name(const study::LiveScreen& screen) {
         case study::ScreenKind::Finished:
         case study::ScreenKind::Aborted:
             return "finished";
+        case study::ScreenKind::Instructions:
+            return "instructions";
+        case study::ScreenKind::Ready:
+            return "ready";
+        case study::ScreenKind::Break:
+            return "break";
+        case study::ScreenKind::End:
+            return "end";
     }
     return "neutral";
 }
@@ -86,18 +94,19 @@ std::string HeadsetFrameLog::build_summary() const {
         << " pipelines created after the first frame; ";
     if (!compiles_seen_.measurable) {
         out << "the driver's shader compiles cannot be counted on this device\n";
-        return out.str();
+    } else {
+        out << steady_compiles_ << " driver shader compiles in " << steady_compile_frames_ << " of "
+            << steady_frames_ << " frames of a trial's scene that showed what the "
+            << kSettlingFrames << " frames before showed";
+        if (steady_compiles_ > 0) {
+            out.precision(3);
+            out << " (" << steady_compile_seconds_
+                << " s): the driver compiled shader variants while a screen was showing, and "
+                   "those frames stalled";
+        }
+        out << "\n";
     }
-    out << steady_compiles_ << " driver shader compiles in " << steady_compile_frames_ << " of "
-        << steady_frames_ << " frames of a trial's scene that showed what the " << kSettlingFrames
-        << " frames before showed";
-    if (steady_compiles_ > 0) {
-        out.precision(3);
-        out << " (" << steady_compile_seconds_
-            << " s): the driver compiled shader variants while a screen was showing, and those "
-               "frames stalled";
-    }
-    out << "\n";
+    // Whatever the device lets us count: the memory is the process's own.
     const std::optional<std::uint64_t> now = resident_bytes();
     if (resident_after_warmup_ && now) {
         const double mib = 1024.0 * 1024.0;

@@ -27,7 +27,7 @@ class ModeRenderer;
 namespace monoplane::app {
 
 // What a frame showed, as the log names it: label1 | label2 | paused | neutral | questionnaire |
-// finished.
+// finished, or one of the protocol's pages: instructions | ready | break | end.
 std::string shown_name(const study::LiveScreen& screen);
 
 class HeadsetFrameLog {

@@ -18,28 +18,6 @@
 namespace monoplane::app {
 namespace {
 
-std::string order_name(study::TrialOrder order) {
-    switch (order) {
-        case study::TrialOrder::Randomized:
-            return "randomized";
-        case study::TrialOrder::Fixed:
-            return "fixed";
-    }
-    return "?";
-}
-
-std::string first_scene_name(study::FirstSceneBalance balance) {
-    switch (balance) {
-        case study::FirstSceneBalance::LatinSquare:
-            return "latin-square";
-        case study::FirstSceneBalance::Random:
-            return "random";
-        case study::FirstSceneBalance::Fixed:
-            return "fixed";
-    }
-    return "?";
-}
-
 // Shortest round-trip text, as the protocol file would write it: "1.6", "39.5", "8".
 std::string number(double value) {
     char buffer[32];
@@ -55,7 +33,11 @@ std::string hex(std::uint64_t value) {
 
 // The procedure's line: constant, or the staircase rule with its trials and stopping rule.
 std::string procedure_summary(const study::Protocol& p) {
-    if (p.procedure == study::Procedure::Constant) return "constant (every scene x distance once)";
+    if (p.procedure == study::Procedure::Constant) {
+        return p.day.repetitions == 1 ? "constant (every scene x distance once)"
+                                      : "constant (every scene x distance " +
+                                            std::to_string(p.day.repetitions) + " times)";
+    }
     const study::StaircaseSettings& s = p.staircase;
     std::string text = "staircase, " + std::string(study::staircase_rule_name(s.rule)) +
                        ", up to " + std::to_string(s.trials_per_scene) + " trials per scene";
@@ -64,6 +46,30 @@ std::string procedure_summary(const study::Protocol& p) {
                 " after " + std::to_string(s.min_trials_per_scene);
     }
     return text;
+}
+
+// The study day: sessions, blocking, the participant's screens and variables.
+void print_study_day(const study::Protocol& p) {
+    const study::StudyDaySettings& d = p.day;
+    std::cout << "  sessions:      " << d.sessions << " per participant"
+              << (d.sessions > 1 ? " (the scene order rotates across them)" : "") << ", blocking "
+              << study::blocking_name(d.blocking) << "\n";
+    std::cout << "  screens:       " << d.instructions.size() << " instruction page(s)"
+              << (d.ready ? ", a ready screen" : "") << (d.end ? ", an end screen" : "")
+              << "; text " << number(d.text_height_deg) << " degrees high\n";
+    if (d.breaks) {
+        std::cout << "  breaks:        ";
+        if (d.breaks->every_trials > 0)
+            std::cout << "every " << d.breaks->every_trials << " data trials";
+        if (d.breaks->every_trials > 0 && d.breaks->between_blocks) std::cout << " and ";
+        if (d.breaks->between_blocks) std::cout << "between scene blocks";
+        std::cout << ", at least " << number(d.breaks->min_s) << " s\n";
+    }
+    for (const study::ParticipantVariable& v : d.variables) {
+        std::cout << "  variable:      " << v.name << " (" << study::variable_type_name(v.type)
+                  << (v.required ? ", required" : "") << ")"
+                  << (v.help.empty() ? "" : ": " + v.help) << "\n";
+    }
 }
 
 void print_summary(const study::Protocol& p) {
@@ -82,10 +88,13 @@ void print_summary(const study::Protocol& p) {
               << p.trials_per_session() << " per session (" << p.scenes.size() << " scenes x "
               << (p.procedure == study::Procedure::Staircase
                       ? std::to_string(p.staircase.trials_per_scene) + " trials"
-                      : std::to_string(p.mono_planes.size()) + " distances")
+                      : std::to_string(p.mono_planes.size()) + " distances" +
+                            (p.day.repetitions > 1
+                                 ? " x " + std::to_string(p.day.repetitions) + " repetitions"
+                                 : std::string()))
               << "), plus " << p.practice_trials << " practice\n"
-              << "  order:         " << order_name(p.order) << ", first scene "
-              << first_scene_name(p.first_scene)
+              << "  order:         " << study::trial_order_name(p.order) << ", first scene "
+              << study::first_scene_name(p.first_scene)
               << (p.require_both_viewed ? ", both alternatives must be viewed"
                                         : ", confirming without viewing both is allowed")
               << "\n"
@@ -96,6 +105,7 @@ void print_summary(const study::Protocol& p) {
               << p.render.ssao << ", detail " << p.render.detail << "\n"
               << "  frame log:     trials flagged above "
               << number(100.0 * p.missed_frame_threshold) << " % missed frames\n";
+    print_study_day(p);
 }
 
 // What each imported scene holds and every file it was read from, digests as `sha256sum`

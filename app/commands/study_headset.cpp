@@ -13,8 +13,10 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/commands/headset_frame_log.h"
+#include "app/commands/screen_pages.h"
 #include "app/commands/study_renderers.h"
 #include "app/commands/validation_report.h"
+#include "app/commands/window_bridge.h"
 #include "app/headset/eye_compositor.h"
 #include "app/headset/eye_depth_writer.h"
 #include "app/headset/frame_times.h"
@@ -125,22 +127,6 @@ modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const Lo
     return inputs;
 }
 
-window::Phase window_phase(const study::LiveScreen& screen) {
-    switch (screen.kind) {
-        case ScreenKind::Neutral:
-            return window::Phase::Neutral;
-        case ScreenKind::Trial:
-            return screen.paused ? window::Phase::Paused : window::Phase::Trial;
-        case ScreenKind::Questionnaire:
-            return window::Phase::Questionnaire;
-        case ScreenKind::Finished:
-            return window::Phase::Finished;
-        case ScreenKind::Aborted:
-            return window::Phase::Aborted;
-    }
-    return window::Phase::Starting;
-}
-
 std::vector<std::string> questionnaire_lines(const study::Protocol& protocol, int question,
                                              int selection) {
     const study::Questionnaire& q = protocol.questionnaire;
@@ -220,6 +206,7 @@ class HeadsetLoop {
           compositor_(ctx),
           compositor_frames_(ctx),
           frame_log_(store, session_id),
+          pages_(headset::TextPanelOptions{protocol.day.text_height_deg}),
           window_answers_(protocol.questionnaire.items.size(), 0) {
         // A resumed session's frames continue its numbering after every frame an earlier run
         // logged or an event names: the frame log's rows (primary key session, frame) and the
@@ -246,7 +233,7 @@ class HeadsetLoop {
     void run() {
         for (;;) {
             if (!headset_.poll_events().value_or_throw()) break;
-            if (live_->finished()) request_exit();
+            if (live_->finished() && end_screen_seen()) request_exit();
             if (!headset_.running()) {
                 // Waiting for the runtime (READY, or EXITING after the end): nothing to render.
                 if (experimenter_) experimenter_->frame({});
@@ -259,6 +246,15 @@ class HeadsetLoop {
     }
 
     bool finished() const { return live_->finished(); }
+
+    // The protocol's end screen stays up for --end-s of display time (or until the experimenter
+    // closes the window), so the participant reads it; an aborted session or one without an end
+    // screen ends at once.
+    bool end_screen_seen() const {
+        if (live_->screen().kind != ScreenKind::End) return true;
+        return end_shown_ns_ >= 0 &&
+               last_frame_ns_ - end_shown_ns_ >= static_cast<std::int64_t>(options_.end_s * 1e9);
+    }
 
   private:
     using Clock = std::chrono::steady_clock;
@@ -277,6 +273,8 @@ class HeadsetLoop {
         frame.index += frame_base_;  // the session's frame number, continued over resumes
         const std::int64_t now = frame.display_time_ns;
         if (first_frame_ns_ < 0) first_frame_ns_ = now;
+        last_frame_ns_ = now;
+        if (end_shown_ns_ < 0 && live_->screen().kind == ScreenKind::End) end_shown_ns_ = now;
         // The head relative to the seat: what the frame log records for every frame (the
         // participant's own motion, whatever the screen), and what a trial's views start from.
         std::optional<rig::Pose> tracked;
@@ -357,6 +355,10 @@ class HeadsetLoop {
                 if (c.item >= 0 && c.item < static_cast<int>(window_answers_.size()))
                     window_answers_[static_cast<std::size_t>(c.item)] = c.value;
                 break;
+            case Kind::Note:
+                note_status_ = note_outcome(live_->note(c.text, study::NoteSource::Window), c.text,
+                                            live_->progress().trial_number);
+                break;
             case Kind::SubmitAnswers:
                 for (std::size_t i = 0; i < window_answers_.size(); ++i) {
                     if (live_->screen().kind != ScreenKind::Questionnaire) break;
@@ -390,7 +392,8 @@ class HeadsetLoop {
         Rendered rendered;
         rendered.shown = true;
         modes::FrameInputs inputs;
-        const std::vector<headset::EyeCompositor::Overlay> overlays = screen_overlays(screen);
+        const std::vector<headset::EyeCompositor::Overlay> overlays =
+            screen_overlays(screen, frame);
         if (screen.kind == ScreenKind::Trial && !screen.paused && frame.views_valid) {
             const study::ScheduledTrial& trial = *screen.trial;
             rendered.renderer = &renderers_.renderer(trial.scene, screen.mode);
@@ -456,8 +459,13 @@ class HeadsetLoop {
                               compositor_.overlay_rects(overlays, tangents, extent_));
     }
 
-    // The label in a trial, the pause panel, or the questionnaire item with its selection.
-    std::vector<headset::EyeCompositor::Overlay> screen_overlays(const study::LiveScreen& screen) {
+    // The label in a trial, the pause panel, the questionnaire item with its selection, or a page.
+    std::vector<headset::EyeCompositor::Overlay> screen_overlays(const study::LiveScreen& screen,
+                                                                 const headset::HeadsetFrame& f) {
+        if (is_page_screen(screen.kind)) {
+            return {pages_.overlay(screen, compositor_, {f.views[0].tangents, f.views[1].tangents},
+                                   extent_)};
+        }
         if (screen.kind == ScreenKind::Trial && screen.paused) {
             return {{"paused", kPanelPlacement}};
         }
@@ -493,11 +501,12 @@ class HeadsetLoop {
             save_screenshot();
         }
         charge(headset::FrameStep::kWindow);
-        if (experimenter_->close_requested() && !live_->finished()) {
+        if (!experimenter_->close_requested()) return;
+        if (!live_->finished()) {
             std::cerr << "the experimenter window was closed: ending the session (resume it "
                          "with `monoplane study resume`)\n";
-            request_exit();
         }
+        request_exit();  // after the session: the end screen needs to stay no longer
     }
 
     window::ExperimenterView window_view(const headset::HeadsetFrame& frame,
@@ -536,6 +545,8 @@ class HeadsetLoop {
         view.frame_index = static_cast<std::uint64_t>(frame.index);
         view.frame_ms =
             std::chrono::duration<double, std::milli>(Clock::now() - frame_start_).count();
+        mirror_page(screen, view);
+        view.note_status = note_status_;
         view.status_line =
             std::string("session ") + std::string(headset::session_phase_name(headset_.phase()));
         return view;
@@ -596,18 +607,22 @@ class HeadsetLoop {
     std::unique_ptr<study::LiveSession> live_;
     std::optional<study::ObserverInput> observer_input_;
     HeadsetFrameLog frame_log_;
+    PagePanels pages_;  // the protocol's pages of text (instructions, breaks...)
     headset::FrameTimes times_;
     Clock::time_point frame_start_;
     Clock::time_point step_start_;
     SeatAnchor anchor_;
     std::int64_t first_frame_ns_ = -1;
-    std::int64_t frame_base_ = 0;  // the runtime's frame n is the session's frame_base_ + n
+    std::int64_t last_frame_ns_ = -1;
+    std::int64_t end_shown_ns_ = -1;  // the first frame that showed the end screen
+    std::int64_t frame_base_ = 0;     // the runtime's frame n is the session's frame_base_ + n
     int last_reported_trial_ = -1;
     bool exit_requested_ = false;
     // The experimenter window's state.
     std::deque<std::string> log_tail_;
     std::vector<window::Command> window_commands_;
     std::vector<int> window_answers_;
+    std::string note_status_;  // the last note's outcome, for the note field
     bool unblinded_ = false;
     bool screenshot_saved_ = false;
 };

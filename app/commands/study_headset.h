@@ -27,6 +27,7 @@ struct HeadsetStudyOptions {
     std::string detail;                  // scene detail; empty: the protocol's [render] detail
     double resolution_scale = 1.0;       // of the runtime's recommended eye size
     double neutral_s = 1.0;              // neutral screen between trials
+    double end_s = 10.0;                 // the protocol's end screen stays up this long
     bool trace = false;                  // each durable write on stdout
     std::string screenshot;              // PNG of the experimenter window (tests, docs)...
     std::int64_t screenshot_frame = -1;  // ...after this frame; -1: when the session ends

@@ -39,7 +39,9 @@ class EyeCompositor {
     explicit EyeCompositor(const vk_core::Context& ctx);
     ~EyeCompositor();
 
-    // Makes (once per distinct key) an overlay texture from an image; uploads and waits.
+    // Makes (once per distinct key) an overlay texture from an image; uploads and waits. A key set
+    // again gets the new image: the upload waits for everything submitted to the queue before it,
+    // so the frames that drew the old image are done when it goes (a countdown reuses one key).
     void set_overlay(const std::string& key, const modes::RgbaImage& image);
     bool has_overlay(const std::string& key) const;
 

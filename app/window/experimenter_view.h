@@ -9,7 +9,21 @@
 
 namespace monoplane::window {
 
-enum class Phase { Starting, Trial, Neutral, Paused, Questionnaire, Finished, Aborted };
+// Instructions, Ready, Break and End: the protocol's pages of text in the headset (End: the
+// session is completed and the participant reads its last page).
+enum class Phase {
+    Starting,
+    Trial,
+    Neutral,
+    Paused,
+    Questionnaire,
+    Finished,
+    Aborted,
+    Instructions,
+    Ready,
+    Break,
+    End
+};
 
 struct ExperimenterView {
     std::string participant, protocol, headset, hmd, device;
@@ -29,6 +43,14 @@ struct ExperimenterView {
     std::vector<std::string> questionnaire_items;
     int scale_points = 7;
     std::vector<int> answers;  // per item, 0 = not yet answered (Questionnaire phase)
+    // Instructions, Ready, Break, End: the page the participant reads, as the headset shows it.
+    std::string page_text;
+    int page = 0;        // Instructions: the page shown, 0-based
+    int page_count = 0;  // Instructions: how many pages
+    // Break: the countdown as the headset shows it ("0:23"); empty once confirm continues.
+    std::string break_countdown;
+    // The outcome of the last note typed ("note stored at trial 12", or why it was not).
+    std::string note_status;
     std::string status_line;
     std::uint64_t frame_index = 0;
     double frame_ms = 0.0;
@@ -36,11 +58,22 @@ struct ExperimenterView {
 
 // One request of the experimenter (or of the keyboard in a desktop dry run). Answer carries
 // `item` (0-based) and `value` (1..scale_points); Unblind carries value 1 (show the modes) or 0
-// (hide them again).
+// (hide them again); Note carries the note's `text`, to be stored at once.
 struct Command {
-    enum class Kind { Switch, Confirm, Pause, Resume, Abort, Unblind, Answer, SubmitAnswers } kind;
+    enum class Kind {
+        Switch,
+        Confirm,
+        Pause,
+        Resume,
+        Abort,
+        Unblind,
+        Answer,
+        SubmitAnswers,
+        Note
+    } kind;
     int item = 0;
     int value = 0;
+    std::string text;
 };
 
 }  // namespace monoplane::window

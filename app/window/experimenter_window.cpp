@@ -372,7 +372,10 @@ std::vector<Command> ExperimenterWindow::frame(const ExperimenterView& view) {
     Impl& s = *impl_;
     glfwPollEvents();
     std::vector<Command> commands;
+    // Keys typed into the note field are text, not the participant's buttons.
+    const bool typing = ImGui::GetIO().WantTextInput;
     for (const int key : s.pressed_keys) {
+        if (typing) break;
         if (auto command = command_for_key(key, view.phase)) commands.push_back(*command);
     }
     s.pressed_keys.clear();

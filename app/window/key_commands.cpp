@@ -8,11 +8,17 @@ std::optional<Command> command_for_key(int glfw_key, Phase phase) {
     switch (glfw_key) {
         case GLFW_KEY_SPACE:
         case GLFW_KEY_TAB:
-            if (phase == Phase::Trial) return Command{Command::Kind::Switch};
+            // On an instruction page, switch goes back a page.
+            if (phase == Phase::Trial || phase == Phase::Instructions) {
+                return Command{Command::Kind::Switch};
+            }
             return std::nullopt;
         case GLFW_KEY_ENTER:
         case GLFW_KEY_KP_ENTER:
-            if (phase == Phase::Trial) return Command{Command::Kind::Confirm};
+            if (phase == Phase::Trial || phase == Phase::Instructions || phase == Phase::Ready ||
+                phase == Phase::Break) {
+                return Command{Command::Kind::Confirm};
+            }
             return std::nullopt;
         case GLFW_KEY_P:
             if (phase == Phase::Trial || phase == Phase::Neutral) {

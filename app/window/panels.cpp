@@ -81,7 +81,8 @@ void draw_trial_state(const ExperimenterView& view, std::vector<Command>& comman
 
 void draw_controls(const ExperimenterView& view, std::vector<Command>& commands) {
     heading("Controls");
-    const bool over = view.phase == Phase::Finished || view.phase == Phase::Aborted;
+    const bool over =
+        view.phase == Phase::Finished || view.phase == Phase::Aborted || view.phase == Phase::End;
     if (view.phase == Phase::Paused) {
         if (ImGui::Button("Resume", ImVec2(110, 0))) commands.push_back({Command::Kind::Resume});
     } else {
@@ -110,7 +111,7 @@ void draw_controls(const ExperimenterView& view, std::vector<Command>& commands)
         }
         ImGui::EndPopup();
     }
-    ImGui::TextDisabled("Keys: Space/Tab switch, Enter confirm, P pause/resume");
+    ImGui::TextDisabled("Keys: Space/Tab switch (a page back), Enter confirm, P pause/resume");
 }
 
 void draw_questionnaire(const ExperimenterView& view, std::vector<Command>& commands) {
@@ -138,6 +139,34 @@ void draw_questionnaire(const ExperimenterView& view, std::vector<Command>& comm
     if (!complete) {
         ImGui::SameLine();
         ImGui::TextDisabled("(answer every item)");
+    }
+}
+
+// The page the participant reads, as the headset shows it (scrolls when long).
+void draw_page(const ExperimenterView& view) {
+    heading("Participant's screen");
+    ImGui::TextWrapped("%s", page_heading(view).c_str());
+    const float lines = ImGui::GetTextLineHeightWithSpacing() * 8.0f;
+    ImGui::BeginChild("page text", ImVec2(0.0f, lines), true);
+    ImGui::TextWrapped("%s", view.page_text.c_str());
+    ImGui::EndChild();
+}
+
+// A note on the session: Enter sends it (stored at once, with the time and the trial) and clears
+// the field; the outcome comes back in the view.
+void draw_note(const ExperimenterView& view, PanelState& state, std::vector<Command>& commands) {
+    heading("Notes");
+    ImGui::PushItemWidth(-ImGui::CalcTextSize("Note").x - ImGui::GetStyle().ItemInnerSpacing.x);
+    if (ImGui::InputText("Note", state.note.data(), state.note.size(),
+                         ImGuiInputTextFlags_EnterReturnsTrue)) {
+        commands.push_back(Command{Command::Kind::Note, 0, 0, std::string(state.note.data())});
+        state.note.fill('\0');
+    }
+    ImGui::PopItemWidth();
+    if (view.note_status.empty()) {
+        ImGui::TextDisabled("Enter stores the note with the time and the trial");
+    } else {
+        ImGui::TextWrapped("%s", view.note_status.c_str());
     }
 }
 
@@ -172,8 +201,10 @@ std::vector<Command> draw_panels(const ExperimenterView& view, const MirrorImage
     if (ImGui::Begin("Study", nullptr, kPanelFlags)) {
         draw_session(view);
         draw_progress(view);
+        if (shows_page(view.phase)) draw_page(view);
         draw_trial_state(view, commands);
         draw_controls(view, commands);
+        draw_note(view, state, commands);
         if (view.phase == Phase::Questionnaire) draw_questionnaire(view, commands);
         if (view.phase == Phase::Aborted) ImGui::TextColored(kAlarm, "Session aborted");
         ImGui::Spacing();

@@ -3,6 +3,7 @@
 
 #include <imgui.h>
 
+#include <array>
 #include <vector>
 
 #include "app/window/experimenter_view.h"
@@ -23,6 +24,7 @@ struct MirrorImage {
 struct PanelState {
     FitRect mirror_rect;  // where the mirror was drawn last, in window pixels
     std::size_t log_lines_seen = 0;
+    std::array<char, 1024> note{};  // the note being typed (sent and cleared on Enter)
 };
 
 // Draws every panel for `view`; returns the commands the experimenter gave with them.

@@ -22,6 +22,14 @@ const char* phase_name(Phase phase) {
             return "finished";
         case Phase::Aborted:
             return "aborted";
+        case Phase::Instructions:
+            return "instructions";
+        case Phase::Ready:
+            return "ready screen";
+        case Phase::Break:
+            return "break";
+        case Phase::End:
+            return "end screen";
     }
     return "unknown";
 }
@@ -37,7 +45,8 @@ std::string progress_text(const ExperimenterView& view) {
 float progress_fraction(const ExperimenterView& view) {
     if (view.trial_count <= 0) return 0.0f;
     // The current trial is not finished yet, except once the session is over.
-    const bool over = view.phase == Phase::Questionnaire || view.phase == Phase::Finished;
+    const bool over = view.phase == Phase::Questionnaire || view.phase == Phase::Finished ||
+                      view.phase == Phase::End;
     const int done = over ? view.trial_count : std::max(0, view.trial_number - 1);
     return std::clamp(static_cast<float>(done) / static_cast<float>(view.trial_count), 0.0f, 1.0f);
 }
@@ -83,6 +92,42 @@ bool questionnaire_complete(const ExperimenterView& view) {
     if (view.answers.size() != view.questionnaire_items.size()) return false;
     return std::all_of(view.answers.begin(), view.answers.end(),
                        [&](int answer) { return answer >= 1 && answer <= view.scale_points; });
+}
+
+bool shows_page(Phase phase) {
+    return phase == Phase::Instructions || phase == Phase::Ready || phase == Phase::Break ||
+           phase == Phase::End;
+}
+
+std::string page_heading(const ExperimenterView& view) {
+    switch (view.phase) {
+        case Phase::Instructions:
+            return "Instructions, page " + std::to_string(view.page + 1) + " of " +
+                   std::to_string(view.page_count) + " (CONFIRM: next, SWITCH: back)";
+        case Phase::Ready:
+            return "Ready screen: waiting for CONFIRM to begin the data trials";
+        case Phase::Break:
+            if (!view.break_countdown.empty()) {
+                return "Break: " + view.break_countdown + " until CONFIRM continues";
+            }
+            return "Break over: waiting for CONFIRM to continue";
+        case Phase::End:
+            return "End screen: the session is complete";
+        default:
+            return "";
+    }
+}
+
+std::string note_stored_text(int trial_number) {
+    if (trial_number <= 0) return "note stored before the first trial";
+    return "note stored at trial " + std::to_string(trial_number);
+}
+
+std::string note_refused_text(const std::string& error, const std::string& note) {
+    std::string text = "note not stored: " + error;
+    // What was typed stays visible, to copy or type again: the field was cleared.
+    if (!note.empty()) text += " (the note: \"" + note + "\")";
+    return text;
 }
 
 }  // namespace monoplane::window

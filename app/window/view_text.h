@@ -27,4 +27,16 @@ std::vector<std::string> trial_state_lines(const ExperimenterView& view);
 // Whether every questionnaire item has an answer in 1..scale_points (Submit is offered only then).
 bool questionnaire_complete(const ExperimenterView& view);
 
+// Whether the participant reads one of the protocol's pages (instructions, ready, break, end).
+bool shows_page(Phase phase);
+
+// The line above the mirrored page: which page, and what the participant is asked to do
+// ("Instructions, page 2 of 3 ...", "Break: 0:23 until CONFIRM continues"); empty off the pages.
+std::string page_heading(const ExperimenterView& view);
+
+// What the note field reports after Enter: "note stored at trial 12" (the trial on screen or the
+// last one shown; "before the first trial" before it), or why it was not stored, with the text.
+std::string note_stored_text(int trial_number);
+std::string note_refused_text(const std::string& error, const std::string& note);
+
 }  // namespace monoplane::window

@@ -89,8 +89,8 @@ execute_process(COMMAND ${MONOPLANE} analyze --db ${OUT}/missing.sqlite --out ${
 if(rc EQUAL 0 OR NOT log MATCHES "missing.sqlite" OR EXISTS ${OUT}/missing.sqlite)
   message(FATAL_ERROR "a missing database must fail naming it, and not be created (${rc}): ${log}")
 endif()
-execute_process(COMMAND ${MONOPLANE} study export --db ${OUT}/empty.sqlite --format csv
-                        --out ${OUT}/empty.csv RESULT_VARIABLE rc ERROR_VARIABLE log)
+# An empty file is an empty SQLite database: the store gives it its tables and no sessions.
+file(WRITE ${OUT}/empty.sqlite "")
 execute_process(COMMAND ${MONOPLANE} analyze --db ${OUT}/empty.sqlite --out ${OUT}/none
                 RESULT_VARIABLE rc ERROR_VARIABLE log)
 if(rc EQUAL 0 OR NOT log MATCHES "no sessions")
@@ -106,6 +106,109 @@ execute_process(COMMAND ${MONOPLANE} analyze --db ${a} --db ${a} --out ${OUT}/no
                 RESULT_VARIABLE rc ERROR_VARIABLE log)
 if(rc EQUAL 0 OR NOT log MATCHES "twice")
   message(FATAL_ERROR "a database given twice must be refused (${rc}): ${log}")
+endif()
+
+# Two sites that both code their participants c1, c2, c3 (six people): never merged silently.
+set(x ${OUT}/site-x.sqlite)
+set(y ${OUT}/site-y.sqlite)
+foreach(site site-x site-y)
+  foreach(participant c1 c2 c3)
+    math(EXPR seed "${seed} + 1")
+    set(number_option "")
+    if(site STREQUAL site-y)  # site y numbers its participants after site x's: 4, 5, 6
+      string(SUBSTRING ${participant} 1 1 index)
+      math(EXPR number "${index} + 3")
+      set(number_option --participant-number ${number})
+    endif()
+    run_ok("study run ${site} ${participant}" ${MONOPLANE} study run --protocol ${protocol}
+           --participant ${participant} --db ${OUT}/${site}.sqlite --headset none --observer default
+           --seed ${seed} ${number_option})
+  endforeach()
+endforeach()
+run_ok("study note" ${MONOPLANE} study note --db ${x} --participant c1
+       "<script>alert('x')</script> & \"quoted\"")
+execute_process(COMMAND ${MONOPLANE} analyze --db ${x} --db ${y} --out ${OUT}/shared
+                RESULT_VARIABLE rc ERROR_VARIABLE log)
+if(rc EQUAL 0 OR NOT log MATCHES "c1, c2 and c3 in [^\n]*site-x.sqlite and [^\n]*site-y.sqlite"
+   OR NOT log MATCHES "--codes same-person" OR NOT log MATCHES "--codes per-database"
+   OR EXISTS ${OUT}/shared)
+  message(FATAL_ERROR "a code in two databases must be refused, naming the codes, the files and "
+                      "both --codes, with nothing written (${rc}): ${log}")
+endif()
+run_ok("analyze --codes per-database" ${MONOPLANE} analyze --db ${x} --db ${y} --out
+       ${OUT}/per-database --codes per-database)
+file(READ ${OUT}/per-database/summary.json json)
+string(JSON participants GET "${json}" participants)
+string(JSON first GET "${json}" participant_details 0 participant)
+string(JSON last GET "${json}" participant_details 5 participant)
+string(JSON rule GET "${json}" participant_codes rule)
+string(JSON balanced GET "${json}" counterbalancing balanced)
+string(JSON rows LENGTH "${json}" counterbalancing rows)
+string(JSON row1 GET "${json}" counterbalancing rows 1)
+if(NOT participants EQUAL 6 OR NOT first STREQUAL "site-x/c1" OR NOT last STREQUAL "site-y/c3"
+   OR NOT rule STREQUAL "per-database" OR NOT balanced OR NOT rows EQUAL 6 OR NOT row1 EQUAL 1)
+  message(FATAL_ERROR "--codes per-database: ${participants} participants (6), ${first} "
+                      "(site-x/c1) .. ${last} (site-y/c3), rule ${rule}, balanced ${balanced} "
+                      "over ${rows} rows (6), row 1: ${row1} (1)")
+endif()
+file(READ ${OUT}/per-database/report.html html)
+if(NOT html MATCHES "site-y/c2" OR html MATCHES "<script"
+   OR NOT html MATCHES "&lt;script&gt;alert\\(&apos;x&apos;\\)&lt;/script&gt; &amp; &quot;quoted&quot;")
+  message(FATAL_ERROR "report.html must list the prefixed codes and the note, escaped")
+endif()
+run_ok("analyze --codes same-person" ${MONOPLANE} analyze --db ${x} --db ${y} --out
+       ${OUT}/same-person --codes same-person)
+file(READ ${OUT}/same-person/summary.json json)
+string(JSON participants GET "${json}" participants)
+string(JSON sessions GET "${json}" sessions)
+string(JSON first GET "${json}" participant_details 0 participant)
+string(JSON first_sessions LENGTH "${json}" participant_details 0 sources)
+if(NOT participants EQUAL 3 OR NOT sessions EQUAL 6 OR NOT first STREQUAL "c1"
+   OR NOT first_sessions EQUAL 2)
+  message(FATAL_ERROR "--codes same-person: ${participants} participants (3), ${sessions} "
+                      "sessions (6), ${first} (c1) from ${first_sessions} files (2)")
+endif()
+# Without --participant-number each site starts at the first row: unbalanced, and said so.
+set(z ${OUT}/site-z.sqlite)
+foreach(participant d1 d2 d3)
+  math(EXPR seed "${seed} + 1")
+  run_ok("study run z ${participant}" ${MONOPLANE} study run --protocol ${protocol}
+         --participant ${participant} --db ${z} --headset none --observer default --seed ${seed})
+endforeach()
+run_ok("analyze x z" ${MONOPLANE} analyze --db ${x} --db ${z} --out ${OUT}/unbalanced)
+file(READ ${OUT}/unbalanced/summary.json json)
+string(JSON balanced GET "${json}" counterbalancing balanced)
+string(JSON row1 GET "${json}" counterbalancing rows 1)
+if(balanced OR NOT row1 EQUAL 2 OR NOT stderr MATCHES "warning: the Latin-square rows")
+  message(FATAL_ERROR "two databases each from row 1: balanced ${balanced}, row 1: ${row1} (2), "
+                      "log ${stderr}")
+endif()
+file(READ ${OUT}/unbalanced/report.html html)
+if(NOT html MATCHES "differ by more than one")
+  message(FATAL_ERROR "report.html must warn that the Latin-square rows are unbalanced")
+endif()
+
+# A participant variable typed as a formula survives the export's guard and comes back as typed
+# through `analyze --csv`; two sessions of two repetitions give 4 trials per distance and scene.
+file(WRITE ${OUT}/day.toml "name = \"day\"\nscenes = [\"beams\", \"spheres\"]\n"
+     "mono_planes = [3, 8]\nalternatives = [\"stereo\", \"hybrid\"]\npractice_trials = 1\nsessions = 2\nrepetitions = 2\n"
+     "[[variables]]\nname = \"remark\"\ntype = \"text\"\n")
+set(day ${OUT}/day.sqlite)
+run_ok("study run day 1" ${MONOPLANE} study run --protocol ${OUT}/day.toml --participant e1
+       --db ${day} --headset none --observer default --seed 71 "--var=remark==1+2 <b>")
+run_ok("study run day 2" ${MONOPLANE} study run --protocol ${OUT}/day.toml --participant e1
+       --db ${day} --headset none --observer default --seed 72)
+run_ok("study export day" ${MONOPLANE} study export --db ${day} --format csv --out ${OUT}/day.csv)
+run_ok("analyze --csv day" ${MONOPLANE} analyze --csv ${OUT}/day.csv --out ${OUT}/day)
+file(READ ${OUT}/day/summary.json json)
+string(JSON remark GET "${json}" participant_details 0 variables remark)
+string(JSON sessions LENGTH "${json}" participant_details 0 sessions)
+string(JSON fit_participant GET "${json}" psychometric 1 participant)
+string(JSON level_trials GET "${json}" psychometric 1 levels 0 trials)
+if(NOT remark STREQUAL "=1+2 <b>" OR NOT sessions EQUAL 2 OR NOT fit_participant STREQUAL "e1"
+   OR NOT level_trials EQUAL 4)
+  message(FATAL_ERROR "analyze --csv: remark '${remark}' ('=1+2 <b>'), ${sessions} sessions (2), "
+                      "${fit_participant}'s fit with ${level_trials} trials per distance (4)")
 endif()
 
 # Power: the chance observer with 4 participants, then the default observer with the full

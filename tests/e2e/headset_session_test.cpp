@@ -410,11 +410,16 @@ TEST_F(HeadsetSessionTest, ALongSessionKeepsResidentMemoryBounded) {
     const fs::path script = dir_ / "long.toml";
     std::ofstream(script) << "hmd = \"vive\"\ndisplay_rate_hz = 30\nhead_motion = \"seated\"\n"
                              "exit_after_s = 100\n";
+    // The demo design without its instruction page: no one confirms a page here.
+    const fs::path protocol = dir_ / "long-protocol.toml";
+    std::ofstream(protocol) << "name = \"long\"\nscenes = [\"beams\", \"landscape\", "
+                               "\"spheres\"]\nmono_planes = [3, 8]\n"
+                               "alternatives = [\"stereo\", \"hybrid\"]\n";
     std::string output;
     // No one answers (--observer none and no scripted presses): the first trial shows until the
     // runtime asks monoplane to exit, which leaves the session resumable.
-    run(std::string(MONOPLANE_EXE) + " study run --protocol " + source_dir() +
-            "/protocols/demo.toml --participant LONG --db " + (dir_ / "long.sqlite").string() +
+    run(std::string(MONOPLANE_EXE) + " study run --protocol " + protocol.string() +
+            " --participant LONG --db " + (dir_ / "long.sqlite").string() +
             " --headset simulated --observer none --sim-script " + script.string() +
             " --window off --detail test --resolution-scale 0.05 --seed 5",
         &output);

@@ -194,7 +194,7 @@ execute_process(COMMAND ${MONOPLANE} study run --protocol ${SOURCE}/protocols/de
 if(rc EQUAL 0 OR NOT log MATCHES "resume")
   message(FATAL_ERROR "a duplicate participant must be refused, pointing to resume (${rc}): ${log}")
 endif()
-execute_process(COMMAND ${MONOPLANE} study resume --db ${db} --session 1
+execute_process(COMMAND ${MONOPLANE} study resume --db ${db} --session-id 1
                 RESULT_VARIABLE rc ERROR_VARIABLE log)
 if(rc EQUAL 0 OR NOT log MATCHES "completed")
   message(FATAL_ERROR "resuming a completed session must be refused (${rc}): ${log}")

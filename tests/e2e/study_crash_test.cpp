@@ -29,108 +29,10 @@
 #include <vector>
 
 #include "study/study_store.h"
+#include "tests/e2e/child_process.h"
 
 namespace monoplane {
 namespace {
-
-std::string source_dir() {
-    const char* dir = std::getenv("MONOPLANE_SOURCE_DIR");
-    return dir ? dir : ".";
-}
-
-// Starts `args` with stdout on a pipe; returns the pid and the pipe's read end. tmpdir: the
-// child's TMPDIR, where the simulated headset writes its runtime script (a killed child leaves
-// it behind), and where its stderr goes (stderr.log); empty: inherited, and stderr discarded.
-std::pair<pid_t, int> spawn(const std::vector<std::string>& args, const std::string& tmpdir = {}) {
-    int fds[2];
-    if (pipe(fds) != 0) return {-1, -1};
-    const pid_t pid = fork();
-    if (pid == 0) {
-        dup2(fds[1], STDOUT_FILENO);
-        const std::string log = tmpdir.empty() ? "/dev/null" : tmpdir + "/stderr.log";
-        const int err = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        dup2(err, STDERR_FILENO);
-        close(fds[0]);
-        close(fds[1]);
-        if (!tmpdir.empty()) setenv("TMPDIR", tmpdir.c_str(), 1);
-        std::vector<char*> argv;
-        for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        execv(argv[0], argv.data());
-        _exit(127);
-    }
-    close(fds[1]);
-    return {pid, fds[0]};
-}
-
-std::string read_all(int fd) {
-    std::string text;
-    char buffer[4096];
-    ssize_t n = 0;
-    while ((n = read(fd, buffer, sizeof buffer)) > 0)
-        text.append(buffer, static_cast<std::size_t>(n));
-    close(fd);
-    return text;
-}
-
-// Runs `args` to its end; returns its exit status and, in *output, what it printed (on stdout,
-// then on stderr where tmpdir holds it).
-int run_to_end(const std::vector<std::string>& args, std::string* output = nullptr,
-               const std::string& tmpdir = {}) {
-    auto [pid, fd] = spawn(args, tmpdir);
-    std::string text = read_all(fd);
-    if (!tmpdir.empty()) {
-        std::ifstream err(tmpdir + "/stderr.log");
-        text += std::string(std::istreambuf_iterator<char>(err), {});
-    }
-    if (output) *output = text;
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-struct KilledRun {
-    std::string output;    // everything the child printed, up to its death
-    bool killed = false;   // it died of the SIGKILL (not: it ended first)
-    bool stalled = false;  // it printed nothing for a minute
-};
-
-// Runs `args` and SIGKILLs it as soon as it has printed its k-th "committed" line (the write is
-// durable then; the child is somewhere in its next frames). What it printed before dying is read
-// to the end: every committed line there is a write that must survive.
-KilledRun run_and_kill_after(const std::vector<std::string>& args, int k,
-                             const std::string& tmpdir) {
-    KilledRun run;
-    auto [pid, fd] = spawn(args, tmpdir);
-    if (pid <= 0) return run;
-    int committed = 0;
-    std::size_t scanned = 0;
-    bool sent = false;
-    char buffer[4096];
-    for (;;) {
-        pollfd p{fd, POLLIN, 0};
-        if (poll(&p, 1, 60000) <= 0) {
-            run.stalled = true;
-            break;
-        }
-        const ssize_t n = read(fd, buffer, sizeof buffer);
-        if (n <= 0) break;  // the child has ended (or died)
-        run.output.append(buffer, static_cast<std::size_t>(n));
-        for (std::size_t end; !sent && (end = run.output.find('\n', scanned)) != std::string::npos;
-             scanned = end + 1) {
-            if (run.output.compare(scanned, 10, "committed ") == 0 && ++committed == k) {
-                kill(pid, SIGKILL);
-                sent = true;
-            }
-        }
-    }
-    if (!sent) kill(pid, SIGKILL);  // stalled: do not leave it behind
-    int status = 0;
-    waitpid(pid, &status, 0);
-    run.output += read_all(fd);
-    run.killed = WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL && sent;
-    return run;
-}
 
 // What a child reported as committed, from its --trace lines:
 // "committed trial 3 switched label 2 t 123 frame 11", "committed trial 3 outcome choice 2",
@@ -561,6 +463,132 @@ TEST(StudyCrash, KilledHeadsetSessionsKeepEveryCommittedWriteAndFrameAndResume) 
               << " committed writes, " << session_ms << " ms); killed after:";
     for (const auto& [what, count] : killed_after) std::cout << " " << what << " " << count;
     std::cout << "\n";
+    if (!::testing::Test::HasFailure()) fs::remove_all(dir);
+}
+
+// Issue 30, item 7: sessions killed on the participant's screens and right after an
+// experimenter's note resume where they stood, and lose nothing. The protocol has two instruction
+// pages, a ready screen, a break every two data trials and an end screen; the note comes from
+// `study note` in another process while the session runs, as an experimenter types it.
+constexpr const char* kScreensProtocol = R"(name = "screens"
+scenes = ["beams", "landscape", "spheres"]
+mono_planes = [3, 8]
+alternatives = ["stereo", "hybrid"]
+practice_trials = 1
+[[instructions]]
+text = "First page."
+[[instructions]]
+text = "Second page."
+[ready]
+text = "Ready."
+[breaks]
+every_trials = 2
+min_s = 3
+[end]
+text = "Thank you."
+)";
+
+struct ScreenCount {
+    std::map<std::pair<std::string, int>, int> shown;  // (kind, page) -> events
+};
+
+ScreenCount count_screens(const std::vector<study::TrialEvent>& events) {
+    ScreenCount c;
+    for (const study::TrialEvent& e : events) {
+        if (study::is_screen_event(e.kind))
+            ++c.shown[{std::string(study::event_kind_name(e.kind)), e.page}];
+    }
+    return c;
+}
+
+// Runs the screens protocol's session into `db` and SIGKILLs it right after the committed write
+// whose line starts with `when` (with `note`: as soon as its first break has started, a note is
+// added from another process, and the session is killed right after the note is stored); then
+// resumes it to its end. What the killed run reported as committed is returned in *committed.
+void kill_on_screen_and_resume(const std::string& protocol, const std::string& db,
+                               const std::string& when, const std::string& note,
+                               const std::string& tmpdir, Committed* committed) {
+    const std::string exe = MONOPLANE_EXE;
+    auto [pid, fd] =
+        spawn({exe, "study", "run", "--protocol", protocol, "--db", db, "--participant", "P1",
+               "--headset", "none", "--seed", "7", "--pace-ms", "20", "--trace"},
+              tmpdir);
+    ASSERT_GT(pid, 0);
+    std::string output;
+    char buffer[4096];
+    while (output.find("committed " + when) == std::string::npos) {
+        const ssize_t n = read(fd, buffer, sizeof buffer);
+        if (n <= 0) break;
+        output.append(buffer, static_cast<std::size_t>(n));
+    }
+    if (!note.empty()) {
+        ASSERT_EQ(run_to_end({exe, "study", "note", "--db", db, "--participant", "P1", "--", note}),
+                  0);
+    }
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    output += read_all(fd);
+    ASSERT_NE(output.find("committed " + when), std::string::npos) << output;
+    ASSERT_TRUE(WIFSIGNALED(status)) << "the session ended before the kill";
+    *committed = parse_committed(output);
+    std::string resumed;
+    ASSERT_EQ(
+        run_to_end({exe, "study", "resume", "--db", db, "--participant", "P1"}, &resumed, tmpdir),
+        0)
+        << resumed;
+}
+
+TEST(StudyCrash, KilledOnScreensAndAfterANoteResumeWhereTheyStood) {
+    namespace fs = std::filesystem;
+    const fs::path dir =
+        fs::temp_directory_path() / ("monoplane_crash_screens_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string protocol = (dir / "screens.toml").string();
+    std::ofstream(protocol) << kScreensProtocol;
+    const std::string note = "-participant stood up, =strap adjusted";
+    const std::vector<std::pair<std::string, std::string>> kills = {
+        {"instructions", "screen instructions_confirmed page 0"},
+        {"break", "screen break_started"},
+        {"note", "screen break_started"},
+    };
+    for (const auto& [name, when] : kills) {
+        SCOPED_TRACE(name);
+        const std::string db = (dir / (name + ".sqlite")).string();
+        Committed committed;
+        kill_on_screen_and_resume(protocol, db, when, name == "note" ? note : "", dir.string(),
+                                  &committed);
+        if (::testing::Test::HasFatalFailure()) return;
+        EXPECT_EQ(integrity_check(db), "ok");
+        auto store = study::StudyStore::open(db).value_or_throw();
+        const study::SessionInfo info = store->session(1).value_or_throw();
+        EXPECT_EQ(info.status, study::SessionStatus::Completed);
+        const auto events = store->events(1).value_or_throw();
+        expect_events_kept(committed.events, events);
+        const auto trials = store->trials(1).value_or_throw();
+        expect_outcomes_kept(committed.outcomes, trials, 1);
+        for (const study::TrialRecord& r : trials) EXPECT_TRUE(r.decided) << r.trial.index;
+        const ScreenCount screens = count_screens(events);
+        const auto count = [&](const std::string& kind, int page) {
+            const auto it = screens.shown.find({kind, page});
+            return it == screens.shown.end() ? 0 : it->second;
+        };
+        // Each page read once, though the kill came in the middle of them.
+        EXPECT_EQ(count("instructions_confirmed", 0), 1);
+        EXPECT_EQ(count("instructions_confirmed", 1), 1);
+        EXPECT_EQ(count("instructions_shown", 0), 1);
+        EXPECT_EQ(count("ready_confirmed", -1), 1);
+        // 6 data trials, a break after the 2nd and the 4th: each started and ended once.
+        EXPECT_EQ(count("break_started", -1), 2);
+        EXPECT_EQ(count("break_ended", -1), 2);
+        EXPECT_EQ(count("end_shown", -1), 1);
+        if (name == "note") {
+            ASSERT_EQ(info.notes.size(), 1u);
+            EXPECT_EQ(info.notes[0].text, note);
+            EXPECT_EQ(info.notes[0].source, study::NoteSource::Command);
+        }
+    }
     if (!::testing::Test::HasFailure()) fs::remove_all(dir);
 }
 

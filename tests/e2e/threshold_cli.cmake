@@ -37,8 +37,8 @@ set(run_stderr "${stderr}")
 run_ok("study export" ${MONOPLANE} study export --db ${db} --format csv --out ${OUT}/t.csv)
 file(STRINGS ${OUT}/t.csv lines)
 list(GET lines 0 header)
-if(NOT header MATCHES ",procedure,staircase_threshold_m,staircase_lower_m,staircase_upper_m$")
-  message(FATAL_ERROR "the export must end with procedure and the staircase columns: ${header}")
+if(NOT header MATCHES ",procedure,staircase_threshold_m,staircase_lower_m,staircase_upper_m,")
+  message(FATAL_ERROR "the export must carry procedure and the staircase columns: ${header}")
 endif()
 # The session's end names each scene's estimate (replayed from the stored decisions).
 foreach(scene beams landscape spheres)
@@ -49,15 +49,17 @@ endforeach()
 list(REMOVE_AT lines 0)
 set(data 0)
 foreach(line IN LISTS lines)
-  if(NOT line MATCHES ",staircase,[^,]+,[^,]+,[^,]+$")
+  if(NOT line MATCHES ",staircase,[^,]+,[^,]+,[^,]+,")
     message(FATAL_ERROR "a trial of a staircase session without procedure staircase: ${line}")
   endif()
   string(REPLACE "," ";" fields "${line}")
   list(GET fields 5 m)
   list(GET fields 14 practice)
-  list(GET fields -3 estimate)  # from the end: the quoted observer holds commas
-  list(GET fields -2 lower)
-  list(GET fields -1 upper)
+  # From the end (the quoted observer holds commas), before session_id, repetition and
+  # participant_number.
+  list(GET fields -6 estimate)
+  list(GET fields -5 lower)
+  list(GET fields -4 upper)
   # Data trials carry QUEST+'s estimate inside its interval and the distances' range; practice
   # trials none.
   if(practice STREQUAL "TRUE" AND NOT estimate STREQUAL "NA")

@@ -5,8 +5,9 @@
 
 Builds a study database with the real CLI (protocols/demo.toml, simulated observer): session 1
 runs to the end, session 2 is killed after its third decision, so the export holds practice
-trials, data trials and undecided trials (NA outcomes). Exports it as CSV and JSON, copies the
-database as study.db, and runs one snippet of docs/data.md in that folder:
+trials, data trials and undecided trials (NA outcomes). Exports it as CSV and JSON (and a note
+as notes-csv), checks that the trials and notes CSV columns are the ones docs/data.md's tables
+list, in order, and runs one snippet of docs/data.md in that folder (the database as study.db):
 
   pandas     the ```python block under "### pandas", with Debian's /usr/bin/python3 (the
              python3-pandas package is for it, not for a pyenv python3 on PATH);
@@ -98,6 +99,66 @@ def make_study(monoplane, protocol, folder):
              os.path.join(folder, "trials.csv")], "study export --format csv")
     run_cli([monoplane, "study", "export", "--db", db, "--format", "json", "--out",
              os.path.join(folder, "trials.json")], "study export --format json")
+    run_cli([monoplane, "study", "note", "--db", db, "--participant", "P01", "checked"],
+            "study note")
+    run_cli([monoplane, "study", "export", "--db", db, "--format", "notes-csv", "--out",
+             os.path.join(folder, "notes.csv")], "study export --format notes-csv")
+
+
+def documented_columns(docs_path, heading, first_column):
+    """The backquoted names in the first cell of the table under `heading` that starts with a
+    row for `first_column`, in order."""
+    with open(docs_path, encoding="utf-8") as f:
+        lines = f.read().split("\n")
+    inside, names = False, []
+    for line in lines:
+        if line.startswith("#"):
+            if names:
+                break
+            inside = line.strip() == heading
+        elif inside and line.startswith("| `"):
+            name = line.split("`")[1]
+            if not names and name != first_column:
+                continue
+            names.append(name)
+        elif inside and names and not line.startswith("|"):
+            break
+    return names
+
+
+def csv_header(path):
+    with open(path, newline="", encoding="utf-8") as f:
+        return next(csv.reader(f))
+
+
+def check_documented_columns(docs, folder):
+    """The columns the trials and notes exports write are docs/data.md's tables, in order."""
+    trials = csv_header(os.path.join(folder, "trials.csv"))
+    documented = documented_columns(docs, "## Export", "participant")
+    want = [c for c in trials if not c.startswith("var_")] + ["var_<name>"]
+    if documented != want:
+        fail("trials.csv has the columns %s; docs/data.md's table under '## Export' lists %s"
+             % (want, documented))
+    notes = csv_header(os.path.join(folder, "notes.csv"))
+    if notes_columns(docs) != notes:
+        fail("notes.csv has the columns %s; docs/data.md's notes table lists %s"
+             % (notes, notes_columns(docs)))
+
+
+def notes_columns(docs_path):
+    """The columns of the notes table (the table right after the '**Notes**' paragraph)."""
+    with open(docs_path, encoding="utf-8") as f:
+        text = f.read()
+    start = text.find("**Notes**")
+    if start < 0:
+        fail("docs/data.md has no '**Notes**' paragraph")
+    names = []
+    for line in text[start:].split("\n"):
+        if line.startswith("| `"):
+            names.append(line.split("`")[1])
+        elif names:
+            break
+    return names
 
 
 def expected_values(folder):
@@ -288,6 +349,7 @@ def main():
         make_study(os.path.abspath(args.monoplane),
                    os.path.join(args.source, "protocols", "demo.toml"), folder)
         want = expected_values(folder)
+        check_documented_columns(docs, folder)
         parts[args.part](docs, folder, want)
     finally:
         shutil.rmtree(folder, ignore_errors=True)

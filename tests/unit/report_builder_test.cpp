@@ -218,6 +218,102 @@ TEST(ReportBuilder, SummaryJsonHasTheValues) {
     EXPECT_FALSE(contains(json, "nan"));
 }
 
+// make_dataset() with what a study day adds: each participant's session (P1 with a second one),
+// variables and notes whose text would be markup if it were not escaped; participant numbers that
+// fill the 2-row Latin square of its two scenes unevenly (4 and 1).
+Dataset study_day_dataset() {
+    Dataset d = make_dataset();
+    const std::string hostile = "<script>alert('x')</script> & \"quoted\"";
+    for (int p = 1; p <= 5; ++p) {
+        SessionRow s;
+        s.source = p < 4 ? "site-a.sqlite" : "site-b.csv";
+        s.session_id = p < 4 ? p : p - 3;
+        s.participant = "P" + std::to_string(p);
+        s.participant_number = p == 5 ? 1 : 0;
+        s.first_scene_order = "latin-square";
+        s.scenes = 2;
+        s.latin_square_rows = 2;
+        s.variables = {{"age", std::to_string(20 + p)}};
+        if (p == 1) s.variables.emplace_back("remark", hostile);
+        d.sessions.push_back(s);
+    }
+    d.sessions[0].notes.push_back({"2026-03-01T10:00:00Z", 3, "window", hostile});
+    SessionRow second = d.sessions[0];
+    second.session_id = 7;
+    second.session_number = 2;
+    second.participant_number = 1;  // a later session does not move P1's row
+    second.notes = {{"2026-03-02T09:00:00Z", std::nullopt, "command", "headset\nadjusted"}};
+    d.sessions.push_back(second);
+    return d;
+}
+
+TEST(ReportBuilder, StudyDayParticipantsNotesAndCounterbalancing) {
+    const AnalysisResults r = analyse_quickly(study_day_dataset());
+    const std::string html = report_html(r, report_figures(r));
+    // Escaped wherever the text appears: in the variables table and in the notes.
+    EXPECT_FALSE(contains(html, "<script"));
+    EXPECT_TRUE(contains(html,
+                         "<td>&lt;script&gt;alert(&apos;x&apos;)&lt;/script&gt; &amp; "
+                         "&quot;quoted&quot;</td>"))
+        << html;
+    std::size_t escaped = 0;
+    for (std::size_t at = html.find("&lt;script&gt;"); at != std::string::npos;
+         at = html.find("&lt;script&gt;", at + 1))
+        ++escaped;
+    EXPECT_EQ(escaped, 2u);  // the variable and the note
+    // The participants table: P1's sessions 1 and 2, participant number and row from 1.
+    EXPECT_TRUE(contains(html, "<th><code>age</code></th><th><code>remark</code></th>"));
+    EXPECT_TRUE(contains(html, "<td>P1</td><td class=\"num\">1, 2</td>")) << html;
+    EXPECT_TRUE(contains(html,
+                         "<td>P5</td><td class=\"num\">1</td><td><code>site-b.csv</code>"
+                         "</td><td class=\"num\">2</td><td class=\"num\">2</td>"));
+    // Notes: time, trial, who; a note's line break kept.
+    EXPECT_TRUE(contains(html,
+                         "<td>2026-03-01T10:00:00Z</td><td class=\"num\">3</td>"
+                         "<td>window</td>"));
+    EXPECT_TRUE(contains(html, "headset<br>adjusted"));
+    // Counterbalancing: rows 1 and 2 with 4 and 1 participants, and the warning.
+    EXPECT_TRUE(contains(html, "id=\"counterbalancing\""));
+    EXPECT_TRUE(contains(html, "<td class=\"num\">1</td><td class=\"num\">4</td>"));
+    EXPECT_TRUE(contains(html, "differ by more than one"));
+
+    const std::string json = summary_json(r);
+    const auto at = json.find("\"counterbalancing\": {");
+    ASSERT_NE(at, std::string::npos) << json;
+    const std::string block = json.substr(at, json.find("\"applicable\"", at) - at);
+    EXPECT_TRUE(contains(block, "\"rows\": {\n      \"1\": 4,\n      \"2\": 1\n    }")) << block;
+    EXPECT_TRUE(contains(block, "\"balanced\": false")) << block;
+    EXPECT_TRUE(contains(json, "\"rule\": \"refuse\""));
+    EXPECT_TRUE(contains(json, "\"remark\": \"<script>alert('x')</script> & \\\"quoted\\\"\""))
+        << json;  // JSON keeps the text as typed
+    EXPECT_TRUE(contains(json, "\"written_by\": \"command\""));
+    EXPECT_TRUE(contains(json, "\"text\": \"headset\\nadjusted\""));
+}
+
+TEST(ReportBuilder, CounterbalancingWhenBalancedAndWhenNotApplicable) {
+    Dataset d = study_day_dataset();
+    d.sessions[4].participant_number = 1;
+    d.sessions[3].participant_number = 1;  // rows 3 and 2
+    AnalysisResults r = analyse_quickly(d);
+    EXPECT_TRUE(r.day.counterbalancing.balanced);
+    std::string html = report_html(r, report_figures(r));
+    EXPECT_FALSE(contains(html, "differ by more than one"));
+    EXPECT_TRUE(contains(summary_json(r), "\"balanced\": true"));
+
+    for (SessionRow& s : d.sessions) s.first_scene_order = "random";
+    r = analyse_quickly(d);
+    html = report_html(r, report_figures(r));
+    EXPECT_TRUE(contains(html, "Not applicable: the protocol orders the scenes at random"));
+    const std::string json = summary_json(r);
+    EXPECT_TRUE(contains(json, "\"balanced\": null"));
+    EXPECT_TRUE(contains(json, "\"applicable\": false"));
+
+    r = analyse_quickly(make_dataset());  // no session information: no participants table
+    html = report_html(r, report_figures(r));
+    EXPECT_FALSE(contains(html, "id=\"participants\""));
+    EXPECT_TRUE(contains(html, "No session has notes."));
+}
+
 TEST(ReportBuilder, RegressionNotEstimableStillGivesAReport) {
     Dataset d = make_dataset();
     std::vector<TrialRow> one;

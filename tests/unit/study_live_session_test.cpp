@@ -21,6 +21,8 @@
 #include "study/observer_input.h"
 #include "study/protocol.h"
 #include "study/schedule.h"
+#include "study/session_log.h"
+#include "study/session_screens.h"
 #include "study/study_store.h"
 
 namespace monoplane::study {
@@ -701,6 +703,648 @@ TEST_F(LiveSessionTest, ResumedSessionWithAllTrialsDecidedGoesToTheQuestionnaire
     EXPECT_EQ(s->screen().kind, ScreenKind::Questionnaire);
     EXPECT_EQ(s->screen().question, 0);
     EXPECT_EQ(s->screen().selection, 3);
+}
+
+// --- The protocol's screens: instructions, ready, breaks, end ----------------------------------
+
+// 2 scenes x 3 distances in the listed order, no practice: data trials 0-2 in block 0 (beams),
+// 3-5 in block 1 (spheres).
+Protocol six_trial_protocol() {
+    const std::string text = R"(name = "screens"
+scenes = ["beams", "spheres"]
+mono_planes = [3, 8, 16]
+alternatives = ["stereo", "hybrid"]
+order = "fixed"
+first_scene = "fixed"
+practice_trials = 0
+)";
+    Result<Protocol> p = parse_protocol(text, "screens.toml");
+    EXPECT_TRUE(p.ok()) << (p.ok() ? "" : p.error().message);
+    return p.ok() ? std::move(p).value() : Protocol{};
+}
+
+BreakSettings break_settings(int every_trials, bool between_blocks, double min_s) {
+    BreakSettings b;
+    b.every_trials = every_trials;
+    b.between_blocks = between_blocks;
+    b.min_s = min_s;
+    b.text = "Take a short break.";
+    return b;
+}
+
+void expect_screen_event(const TrialEvent& e, EventKind kind, int page, std::int64_t time_ns,
+                         std::int64_t frame) {
+    EXPECT_EQ(e.kind, kind) << event_kind_name(e.kind);
+    EXPECT_EQ(e.trial_index, -1) << event_kind_name(e.kind);
+    EXPECT_EQ(e.label, 0) << event_kind_name(e.kind);
+    EXPECT_EQ(e.page, page) << event_kind_name(e.kind);
+    EXPECT_EQ(e.time_ns, time_ns) << event_kind_name(e.kind);
+    EXPECT_EQ(e.frame, frame) << event_kind_name(e.kind);
+}
+
+// Sessions in memory (MemorySessionLog, as `simulate` runs them): the events are exactly what
+// the session logged, with nothing read back.
+class ScreenSessionTest : public LiveSessionTest {
+  protected:
+    std::unique_ptr<LiveSession> begin_in_memory(const Protocol& protocol, std::int64_t neutral_ns,
+                                                 int first_trial = 0,
+                                                 const std::vector<TrialRecord>& history = {},
+                                                 const std::vector<TrialEvent>& events = {}) {
+        schedule_ = make_schedule(protocol, 7, 0);
+        LiveOptions options;
+        options.neutral_ns = neutral_ns;
+        options.on_committed = [this](const std::string& line) { committed_.push_back(line); };
+        Result<std::unique_ptr<LiveSession>> s =
+            LiveSession::begin(log_, 1, protocol, options, schedule_, first_trial, history, events);
+        EXPECT_TRUE(s.ok()) << s.error().message;
+        return s.ok() ? std::move(s).value() : nullptr;
+    }
+
+    // A participant who confirms each screen at the frame after it shows and decides each trial
+    // in three frames (label 1 shows, switch, confirm label 2), until the session ends.
+    static std::int64_t play(LiveSession& s, std::int64_t frame) {
+        for (const std::int64_t last = frame + 100'000; !s.finished() && frame < last; ++frame) {
+            const LiveScreen screen = s.screen();
+            const LiveProgress p = s.progress();
+            if (screen.kind == ScreenKind::Trial && p.visible_label == 1 && p.switches == 0) {
+                request(s, LiveInput::Switch, frame);
+            } else if (screen.kind == ScreenKind::Trial && p.visible_label == 2) {
+                request(s, LiveInput::Confirm, frame);
+            } else if (screen.kind != ScreenKind::Trial && screen.kind != ScreenKind::Neutral) {
+                request(s, LiveInput::Confirm, frame);
+            }
+            present(s, frame);
+        }
+        EXPECT_TRUE(s.finished());
+        return frame;
+    }
+
+    // The trials a break came before, from the log: each break_started's next trial event.
+    std::vector<int> breaks_before() const {
+        std::vector<int> before;
+        bool in_break = false;
+        for (const TrialEvent& e : log_.events()) {
+            if (e.kind == EventKind::BreakStarted) in_break = true;
+            if (in_break && !is_screen_event(e.kind)) {
+                before.push_back(e.trial_index);
+                in_break = false;
+            }
+        }
+        return before;
+    }
+
+    static TrialRecord decided(const ScheduledTrial& trial) {
+        TrialRecord r;
+        r.trial = trial;
+        r.decided = true;
+        r.outcome.choice = 1;
+        r.outcome.chosen_mode = trial.label1_mode;
+        return r;
+    }
+
+    MemorySessionLog log_;
+};
+
+// Three pages, back once, then the practice trial, the ready screen and the first data trial:
+// each page's appearance is logged with the frame that showed it, each confirmation with its
+// time.
+TEST_F(ScreenSessionTest, InstructionsWithBackThenPracticeThenReady) {
+    Protocol protocol = make_protocol(true, 5, 0, 1);
+    protocol.day.instructions = {{"Page one"}, {"Page two"}, {"Page three"}};
+    protocol.day.ready = ScreenPage{"Practice is over. Press CONFIRM to begin."};
+    auto s = begin_in_memory(protocol, 100 * kMs);
+    ASSERT_TRUE(s);
+    LiveScreen screen = s->screen();
+    ASSERT_EQ(screen.kind, ScreenKind::Instructions);
+    EXPECT_EQ(screen.page, 0);
+    EXPECT_EQ(screen.page_count, 3);
+    ASSERT_NE(screen.text, nullptr);
+    EXPECT_EQ(*screen.text, "Page one");
+    EXPECT_EQ(screen.trial, nullptr);
+    EXPECT_FALSE(s->finished());
+    // Not yet on screen: a confirmation would answer a page nobody saw.
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 0),
+              "confirm ignored on the instructions screen: not visible yet");
+    EXPECT_EQ(request(*s, LiveInput::Pause, 0), "pause ignored on the instructions screen");
+    present(*s, 0);
+    for (std::int64_t n = 1; n <= 4; ++n) present(*s, n);
+    EXPECT_EQ(request(*s, LiveInput::Switch, 5), "switch ignored on the instructions screen");
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 5), "instructions page 2");
+    EXPECT_EQ(*s->screen().text, "Page two");
+    EXPECT_EQ(s->screen().page, 1);
+    present(*s, 5);
+    EXPECT_EQ(request(*s, LiveInput::Switch, 8), "instructions page 1");  // back
+    EXPECT_EQ(*s->screen().text, "Page one");
+    present(*s, 8);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 10), "instructions page 2");
+    present(*s, 10);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 12), "instructions page 3");
+    present(*s, 12);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 14), "instructions read");
+    EXPECT_EQ(s->screen().kind, ScreenKind::Neutral);
+    EXPECT_EQ(s->screen().text, nullptr);
+    // The neutral screen runs 100 ms from the last confirmation: (n - 14) * P >= 100 ms at 24.
+    for (std::int64_t n = 14; n <= 23; ++n) {
+        present(*s, n);
+        EXPECT_EQ(s->screen().kind, ScreenKind::Neutral) << n;
+    }
+    present(*s, 24);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Trial);
+    EXPECT_TRUE(s->screen().trial->practice);
+    present(*s, 25);
+    request(*s, LiveInput::Switch, 28);
+    present(*s, 28);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 31), "trial 0 decided: label 2");
+    screen = s->screen();
+    ASSERT_EQ(screen.kind, ScreenKind::Ready);  // after practice, before the first data trial
+    EXPECT_EQ(*screen.text, "Practice is over. Press CONFIRM to begin.");
+    present(*s, 31);
+    EXPECT_EQ(request(*s, LiveInput::Switch, 33), "switch ignored on the ready screen");
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 35), "ready confirmed");
+    for (std::int64_t n = 35; n <= 44; ++n) present(*s, n);
+    EXPECT_EQ(s->screen().kind, ScreenKind::Neutral);
+    present(*s, 45);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Trial);
+    EXPECT_EQ(s->screen().trial->index, 1);
+    present(*s, 46);
+
+    const std::vector<TrialEvent>& e = log_.events();
+    ASSERT_EQ(e.size(), 15u);
+    expect_screen_event(e[0], EventKind::InstructionsShown, 0, at(0), 0);
+    expect_screen_event(e[1], EventKind::InstructionsConfirmed, 0, at(5), -1);
+    expect_screen_event(e[2], EventKind::InstructionsShown, 1, at(5), 5);
+    expect_screen_event(e[3], EventKind::InstructionsShown, 0, at(8), 8);
+    expect_screen_event(e[4], EventKind::InstructionsConfirmed, 0, at(10), -1);
+    expect_screen_event(e[5], EventKind::InstructionsShown, 1, at(10), 10);
+    expect_screen_event(e[6], EventKind::InstructionsConfirmed, 1, at(12), -1);
+    expect_screen_event(e[7], EventKind::InstructionsShown, 2, at(12), 12);
+    expect_screen_event(e[8], EventKind::InstructionsConfirmed, 2, at(14), -1);
+    expect_event(e[9], EventKind::Shown, 0, 1, at(25), 25);
+    expect_event(e[10], EventKind::Switched, 0, 2, at(28), 28);
+    expect_event(e[11], EventKind::Confirmed, 0, 2, at(31), -1);
+    expect_screen_event(e[12], EventKind::ReadyShown, -1, at(31), 31);
+    expect_screen_event(e[13], EventKind::ReadyConfirmed, -1, at(35), -1);
+    expect_event(e[14], EventKind::Shown, 1, 1, at(46), 46);
+    EXPECT_EQ(e[9].page, -1);
+    // Every screen event went through the log's committed lines.
+    EXPECT_EQ(committed_.front(), "screen instructions_shown page 0 t 0 frame 0");
+    EXPECT_NE(std::find(committed_.begin(), committed_.end(),
+                        "screen ready_confirmed page -1 t " + std::to_string(at(35)) + " frame -1"),
+              committed_.end());
+    EXPECT_EQ(log_.outcomes().size(), 1u);
+}
+
+// Without practice the ready screen follows the instructions directly.
+TEST_F(ScreenSessionTest, WithoutPracticeTheReadyScreenFollowsTheInstructions) {
+    Protocol protocol = make_protocol(true, 5, 0, 0);
+    protocol.day.instructions = {{"Only page"}};
+    protocol.day.ready = ScreenPage{"Ready?"};
+    auto s = begin_in_memory(protocol, 0);
+    ASSERT_TRUE(s);
+    present(*s, 0);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 3), "instructions read");
+    EXPECT_EQ(s->screen().kind, ScreenKind::Ready);
+    present(*s, 3);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 6), "ready confirmed");
+    present(*s, 6);  // neutral_ns 0: the first data trial starts
+    ASSERT_EQ(s->screen().kind, ScreenKind::Trial);
+    EXPECT_FALSE(s->screen().trial->practice);
+    present(*s, 7);
+    const std::vector<TrialEvent>& e = log_.events();
+    ASSERT_EQ(e.size(), 5u);
+    expect_screen_event(e[0], EventKind::InstructionsShown, 0, at(0), 0);
+    expect_screen_event(e[1], EventKind::InstructionsConfirmed, 0, at(3), -1);
+    expect_screen_event(e[2], EventKind::ReadyShown, -1, at(3), 3);
+    expect_screen_event(e[3], EventKind::ReadyConfirmed, -1, at(6), -1);
+    expect_event(e[4], EventKind::Shown, 0, 1, at(7), 7);
+}
+
+// Breaks by count (every 2 data trials: before trials 2 and 4), by block (before trial 3, the
+// first of block 1), both (once per gap); each shows with the frame of the decision before it.
+TEST_F(ScreenSessionTest, BreaksByCountAndByBlockFallBetweenTheRightTrials) {
+    struct Case {
+        int every_trials;
+        bool between_blocks;
+        std::vector<int> before;
+    };
+    const Case cases[] = {
+        {2, false, {2, 4}}, {0, true, {3}}, {2, true, {2, 3, 4}}, {3, true, {3}}, {6, false, {}}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE("every " + std::to_string(c.every_trials) + " blocks " +
+                     std::to_string(c.between_blocks));
+        log_ = MemorySessionLog{};
+        Protocol protocol = six_trial_protocol();
+        protocol.day.breaks = break_settings(c.every_trials, c.between_blocks, 0);
+        auto s = begin_in_memory(protocol, 0);
+        ASSERT_TRUE(s);
+        play(*s, 0);
+        EXPECT_EQ(log_.status(), SessionStatus::Completed);
+        EXPECT_EQ(log_.outcomes().size(), 6u);
+        EXPECT_EQ(breaks_before(), c.before);
+        EXPECT_EQ(planned_breaks(protocol.day, schedule_), c.before);
+        const std::vector<TrialEvent>& e = log_.events();
+        for (std::size_t i = 0; i < e.size(); ++i) {
+            if (e[i].kind != EventKind::BreakStarted) continue;
+            // Decided at frame n (confirmed at n's time); the break shows with frame n, is
+            // confirmed at n + 1 and the next trial's label 1 shows at n + 2.
+            ASSERT_GE(i, 1u);
+            ASSERT_LT(i + 2, e.size());
+            const std::int64_t n = e[i].frame;
+            EXPECT_EQ(e[i - 1].kind, EventKind::Confirmed);
+            EXPECT_EQ(e[i - 1].time_ns, at(n));
+            expect_screen_event(e[i], EventKind::BreakStarted, -1, at(n), n);
+            expect_screen_event(e[i + 1], EventKind::BreakEnded, -1, at(n + 1), -1);
+            expect_event(e[i + 2], EventKind::Shown, e[i + 2].trial_index, 1, at(n + 2), n + 2);
+        }
+    }
+}
+
+// The countdown runs on the presented frames' time from the frame that shows the break;
+// confirm is refused (and not logged) until it reads 0.
+TEST_F(ScreenSessionTest, BreakCountdownRefusesConfirmUntilItsMinimum) {
+    Protocol protocol = six_trial_protocol();
+    protocol.day.breaks = break_settings(2, false, 2.0);
+    auto s = begin_in_memory(protocol, 0);
+    ASSERT_TRUE(s);
+    std::int64_t n = decide_trial(*s, 0);
+    n = decide_trial(*s, n);  // the second decision's frame shows the break
+    const std::int64_t f = n - 1;
+    LiveScreen screen = s->screen();
+    ASSERT_EQ(screen.kind, ScreenKind::Break);
+    ASSERT_NE(screen.text, nullptr);
+    EXPECT_EQ(*screen.text, "Take a short break.");
+    EXPECT_EQ(screen.break_remaining_ns, 2'000'000'000);
+    expect_screen_event(log_.events().back(), EventKind::BreakStarted, -1, at(f), f);
+    const std::size_t logged = log_.events().size();
+
+    present(*s, f + 90);  // 90 periods: 999'999'990 ns
+    EXPECT_EQ(s->screen().break_remaining_ns, 1'000'000'010);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, f + 90),
+              "confirm ignored: the break lasts another 1.1 s");
+    EXPECT_EQ(request(*s, LiveInput::Switch, f + 90), "switch ignored on the break screen");
+    EXPECT_EQ(request(*s, LiveInput::Pause, f + 90), "pause ignored on the break screen");
+    present(*s, f + 180);
+    EXPECT_EQ(s->screen().break_remaining_ns, 20);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, f + 180),
+              "confirm ignored: the break lasts another 0.1 s");
+    EXPECT_EQ(log_.events().size(), logged);  // refusals are not events
+    present(*s, f + 181);
+    EXPECT_EQ(s->screen().break_remaining_ns, 0);
+    EXPECT_EQ(s->screen().kind, ScreenKind::Break);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, f + 181), "break ended");
+    EXPECT_EQ(s->screen().kind, ScreenKind::Neutral);
+    present(*s, f + 181);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Trial);
+    EXPECT_EQ(s->screen().trial->index, 2);
+    present(*s, f + 182);
+    const std::vector<TrialEvent>& e = log_.events();
+    ASSERT_EQ(e.size(), logged + 2);
+    expect_screen_event(e[logged], EventKind::BreakEnded, -1, at(f + 181), -1);
+    expect_event(e[logged + 1], EventKind::Shown, 2, 1, at(f + 182), f + 182);
+}
+
+// After the questionnaire the end screen: end_shown with its frame, then the session is
+// completed, and the screen stays up.
+TEST_F(ScreenSessionTest, EndScreenAfterTheQuestionnaireCompletesTheSession) {
+    Protocol protocol = make_protocol(true, 5, 1, 0);
+    protocol.day.end = ScreenPage{"Thank you. Please wait for the experimenter."};
+    auto s = begin_in_memory(protocol, 0);
+    ASSERT_TRUE(s);
+    std::int64_t n = 0;
+    for (int trial = 0; trial < 4; ++trial) n = decide_trial(*s, n);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Questionnaire);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, n), "answered item 1");
+    ASSERT_EQ(s->screen().kind, ScreenKind::End);
+    EXPECT_FALSE(s->finished());  // completed when it shows
+    EXPECT_EQ(log_.status(), SessionStatus::Running);
+    present(*s, n);
+    EXPECT_TRUE(s->finished());
+    EXPECT_EQ(log_.status(), SessionStatus::Completed);
+    const LiveScreen screen = s->screen();
+    EXPECT_EQ(screen.kind, ScreenKind::End);
+    ASSERT_NE(screen.text, nullptr);
+    EXPECT_EQ(*screen.text, "Thank you. Please wait for the experimenter.");
+    expect_screen_event(log_.events().back(), EventKind::EndShown, -1, at(n), n);
+    EXPECT_EQ(committed_.back(), "session completed");
+    const std::size_t logged = log_.events().size();
+    EXPECT_EQ(request(*s, LiveInput::Confirm, n + 1), "confirm ignored on the end screen");
+    EXPECT_EQ(request(*s, LiveInput::Abort, n + 1), "abort ignored on the end screen");
+    present(*s, n + 1);
+    EXPECT_EQ(log_.events().size(), logged);
+    EXPECT_EQ(log_.status(), SessionStatus::Completed);
+    EXPECT_EQ(s->screen().kind, ScreenKind::End);
+}
+
+TEST_F(ScreenSessionTest, EndScreenWithoutQuestionnaireFollowsTheLastTrial) {
+    Protocol protocol = make_protocol(true, 5, 0, 0);
+    protocol.day.end = ScreenPage{"Thank you."};
+    auto s = begin_in_memory(protocol, 0);
+    ASSERT_TRUE(s);
+    std::int64_t n = 0;
+    for (int trial = 0; trial < 4; ++trial) n = decide_trial(*s, n);
+    // The last decision's frame ended the neutral screen (neutral_ns 0): the end screen is
+    // drawn from the next frame on.
+    ASSERT_EQ(s->screen().kind, ScreenKind::End);
+    EXPECT_FALSE(s->finished());
+    present(*s, n);
+    EXPECT_TRUE(s->finished());
+    expect_screen_event(log_.events().back(), EventKind::EndShown, -1, at(n), n);
+    EXPECT_EQ(log_.status(), SessionStatus::Completed);
+}
+
+TEST_F(ScreenSessionTest, AbortWorksOnEveryScreen) {
+    Protocol protocol = six_trial_protocol();
+    protocol.day.instructions = {{"One"}, {"Two"}};
+    protocol.day.breaks = break_settings(1, false, 30);
+    {
+        auto s = begin_in_memory(protocol, 0);
+        ASSERT_TRUE(s);
+        present(*s, 0);
+        EXPECT_EQ(request(*s, LiveInput::Abort, 1), "session aborted");
+        EXPECT_TRUE(s->finished());
+        EXPECT_EQ(s->screen().kind, ScreenKind::Aborted);
+        EXPECT_EQ(log_.status(), SessionStatus::Aborted);
+        ASSERT_EQ(log_.events().size(), 1u);  // the first page's appearance only
+    }
+    log_ = MemorySessionLog{};
+    auto s = begin_in_memory(protocol, 0);
+    ASSERT_TRUE(s);
+    present(*s, 0);
+    request(*s, LiveInput::Confirm, 1);
+    present(*s, 1);
+    request(*s, LiveInput::Confirm, 2);
+    present(*s, 2);
+    std::int64_t n = decide_trial(*s, 3);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Break);
+    EXPECT_EQ(request(*s, LiveInput::Abort, n), "session aborted");
+    EXPECT_EQ(log_.status(), SessionStatus::Aborted);
+    EXPECT_EQ(log_.events().back().kind, EventKind::BreakStarted);  // no trial to abort
+    present(*s, n);
+    EXPECT_EQ(s->screen().kind, ScreenKind::Aborted);
+}
+
+// A resumed session interrupted on page 2 of 3 starts on page 2; the pages read before are not
+// shown again.
+TEST_F(ScreenSessionTest, ResumeMidInstructionsStartsAtTheFirstUnconfirmedPage) {
+    Protocol protocol = make_protocol(true, 5, 0, 1);
+    protocol.day.instructions = {{"One"}, {"Two"}, {"Three"}};
+    const std::vector<TrialEvent> before = {
+        {EventKind::InstructionsShown, -1, 0, 1'000 * kMs, 90, 0},
+        {EventKind::InstructionsConfirmed, -1, 0, 4'000 * kMs, -1, 0},
+        {EventKind::InstructionsShown, -1, 0, 4'000 * kMs, 360, 1},
+    };
+    auto s = begin_in_memory(protocol, 0, 0, {}, before);
+    ASSERT_TRUE(s);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Instructions);
+    EXPECT_EQ(s->screen().page, 1);
+    EXPECT_EQ(*s->screen().text, "Two");
+    present(*s, 0);
+    EXPECT_EQ(request(*s, LiveInput::Switch, 2), "instructions page 1");  // back still works
+    present(*s, 2);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 4), "instructions page 2");
+    present(*s, 4);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 6), "instructions page 3");
+    present(*s, 6);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 8), "instructions read");
+    const std::vector<TrialEvent>& e = log_.events();
+    ASSERT_EQ(e.size(), 7u);
+    expect_screen_event(e[0], EventKind::InstructionsShown, 1, at(0), 0);
+    expect_screen_event(e[1], EventKind::InstructionsShown, 0, at(2), 2);
+    expect_screen_event(e[2], EventKind::InstructionsConfirmed, 0, at(4), -1);
+    expect_screen_event(e[3], EventKind::InstructionsShown, 1, at(4), 4);
+    expect_screen_event(e[4], EventKind::InstructionsConfirmed, 1, at(6), -1);
+    expect_screen_event(e[5], EventKind::InstructionsShown, 2, at(6), 6);
+    expect_screen_event(e[6], EventKind::InstructionsConfirmed, 2, at(8), -1);
+    EXPECT_EQ(s->screen().kind, ScreenKind::Neutral);
+}
+
+// Read instructions and a confirmed ready screen are not shown again.
+TEST_F(ScreenSessionTest, ResumeAfterInstructionsAndReadyShowsNeither) {
+    Protocol protocol = make_protocol(true, 5, 0, 1);
+    protocol.day.instructions = {{"One"}};
+    protocol.day.ready = ScreenPage{"Ready?"};
+    std::vector<TrialEvent> before = {
+        {EventKind::InstructionsShown, -1, 0, 1'000 * kMs, 90, 0},
+        {EventKind::InstructionsConfirmed, -1, 0, 4'000 * kMs, -1, 0},
+    };
+    {
+        auto s = begin_in_memory(protocol, 0, 0, {}, before);
+        ASSERT_TRUE(s);
+        EXPECT_EQ(s->screen().kind, ScreenKind::Neutral);
+        present(*s, 0);
+        ASSERT_EQ(s->screen().kind, ScreenKind::Trial);
+        EXPECT_EQ(s->screen().trial->index, 0);  // the practice trial
+    }
+    // The practice trial decided, the ready screen shown but not confirmed: shown again.
+    before.push_back({EventKind::Shown, 0, 1, 5'000 * kMs, 450, -1});
+    before.push_back({EventKind::Confirmed, 0, 1, 6'000 * kMs, -1, -1});
+    before.push_back({EventKind::ReadyShown, -1, 0, 6'000 * kMs, 540, -1});
+    const std::vector<TrialRecord> history = {decided(make_schedule(protocol, 7, 0).trials[0])};
+    log_ = MemorySessionLog{};
+    {
+        auto s = begin_in_memory(protocol, 0, 1, history, before);
+        ASSERT_TRUE(s);
+        EXPECT_EQ(s->screen().kind, ScreenKind::Ready);
+        present(*s, 0);
+        expect_screen_event(log_.events().back(), EventKind::ReadyShown, -1, at(0), 0);
+    }
+    before.push_back({EventKind::ReadyConfirmed, -1, 0, 7'000 * kMs, -1, -1});
+    log_ = MemorySessionLog{};
+    auto s = begin_in_memory(protocol, 0, 1, history, before);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->screen().kind, ScreenKind::Neutral);
+    present(*s, 0);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Trial);
+    EXPECT_EQ(s->screen().trial->index, 1);
+}
+
+// Interrupted 12 s into a 30 s break (as far as the log tells: the latest time logged after
+// break_started): the break is shown again for 18 s, without a second break_started, and the
+// next trial follows.
+TEST_F(ScreenSessionTest, ResumeMidBreakShowsTheRestOfItsMinimum) {
+    Protocol protocol = six_trial_protocol();
+    protocol.day.breaks = break_settings(2, false, 30);
+    const Schedule schedule = make_schedule(protocol, 7, 0);
+    const std::vector<TrialRecord> history = {decided(schedule.trials[0]),
+                                              decided(schedule.trials[1])};
+    const std::int64_t started = 50'000 * kMs + kPeriod;
+    std::vector<TrialEvent> before = {
+        {EventKind::Shown, 0, 1, 10'000 * kMs, 900, -1},
+        {EventKind::Confirmed, 0, 1, 20'000 * kMs, -1, -1},
+        {EventKind::Shown, 1, 1, 40'000 * kMs, 3600, -1},
+        {EventKind::Confirmed, 1, 1, 50'000 * kMs, -1, -1},
+        {EventKind::BreakStarted, -1, 0, started, 4501, -1},
+        {EventKind::Paused, -1, 0, started + 12'000 * kMs, -1, -1},
+    };
+    auto s = begin_in_memory(protocol, 0, 2, history, before);
+    ASSERT_TRUE(s);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Break);
+    EXPECT_EQ(s->screen().break_remaining_ns, 18'000 * kMs);
+    EXPECT_EQ(s->progress().trial_number, 2);
+    present(*s, 0);  // the countdown restarts with the frame that shows it again
+    EXPECT_TRUE(log_.events().empty());
+    present(*s, 1620);  // 1620 periods: 17'999'999'820 ns
+    EXPECT_EQ(s->screen().break_remaining_ns, 180);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 1620),
+              "confirm ignored: the break lasts another 0.1 s");
+    present(*s, 1621);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 1621), "break ended");
+    present(*s, 1621);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Trial);
+    EXPECT_EQ(s->screen().trial->index, 2);
+    present(*s, 1622);
+    ASSERT_EQ(log_.events().size(), 2u);
+    expect_screen_event(log_.events()[0], EventKind::BreakEnded, -1, at(1621), -1);
+    expect_event(log_.events()[1], EventKind::Shown, 2, 1, at(1622), 1622);
+
+    // Nothing logged after its start (a kill during the break): all of its minimum again.
+    before.pop_back();
+    log_ = MemorySessionLog{};
+    s = begin_in_memory(protocol, 0, 2, history, before);
+    ASSERT_TRUE(s);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Break);
+    EXPECT_EQ(s->screen().break_remaining_ns, 30'000 * kMs);
+
+    // Decided, then killed before the break showed: the break comes, counted once.
+    before.pop_back();
+    log_ = MemorySessionLog{};
+    s = begin_in_memory(protocol, 0, 2, history, before);
+    ASSERT_TRUE(s);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Break);
+    EXPECT_EQ(s->screen().break_remaining_ns, 30'000 * kMs);
+    present(*s, 0);
+    ASSERT_EQ(log_.events().size(), 1u);
+    expect_screen_event(log_.events()[0], EventKind::BreakStarted, -1, at(0), 0);
+}
+
+// An ended break is not repeated, nor one whose next trial had started.
+TEST_F(ScreenSessionTest, ResumeAfterABreakDoesNotRepeatIt) {
+    Protocol protocol = six_trial_protocol();
+    protocol.day.breaks = break_settings(2, false, 30);
+    const Schedule schedule = make_schedule(protocol, 7, 0);
+    const std::vector<TrialRecord> history = {decided(schedule.trials[0]),
+                                              decided(schedule.trials[1])};
+    std::vector<TrialEvent> before = {
+        {EventKind::Shown, 0, 1, 10'000 * kMs, 900, -1},
+        {EventKind::Confirmed, 0, 1, 20'000 * kMs, -1, -1},
+        {EventKind::Shown, 1, 1, 40'000 * kMs, 3600, -1},
+        {EventKind::Confirmed, 1, 1, 50'000 * kMs, -1, -1},
+        {EventKind::BreakStarted, -1, 0, 50'000 * kMs, 4500, -1},
+        {EventKind::BreakEnded, -1, 0, 85'000 * kMs, -1, -1},
+    };
+    auto s = begin_in_memory(protocol, 0, 2, history, before);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->screen().kind, ScreenKind::Neutral);
+    present(*s, 0);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Trial);
+    EXPECT_EQ(s->screen().trial->index, 2);
+
+    before.push_back({EventKind::Shown, 2, 1, 86'000 * kMs, 7740, -1});
+    log_ = MemorySessionLog{};
+    s = begin_in_memory(protocol, 0, 2, history, before);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->screen().kind, ScreenKind::Neutral);
+    // And the next break still comes after trial 3, two data trials later.
+    play(*s, 0);
+    EXPECT_EQ(breaks_before(), (std::vector<int>{4}));
+}
+
+// The experimenter's note: the session's latest time and the trial on screen or last shown.
+TEST_F(ScreenSessionTest, NotesCarryTheSessionTimeAndTheTrial) {
+    Protocol protocol = make_protocol(true, 5, 0, 1);
+    protocol.day.instructions = {{"One"}};
+    auto s = begin_in_memory(protocol, 0);
+    ASSERT_TRUE(s);
+    ASSERT_TRUE(s->note("before anything").ok());
+    present(*s, 3);
+    ASSERT_TRUE(s->note("reading the instructions").ok());
+    request(*s, LiveInput::Confirm, 5);
+    present(*s, 5);  // the practice trial starts; label 1 shows at 6
+    present(*s, 6);
+    present(*s, 7);
+    ASSERT_TRUE(s->note("participant adjusted the headset", NoteSource::Window).ok());
+    request(*s, LiveInput::Switch, 8);
+    present(*s, 8);
+    request(*s, LiveInput::Confirm, 9);  // decided; the neutral screen
+    ASSERT_TRUE(s->note("after the decision", NoteSource::Command).ok());
+    const Result<bool> blank = s->note(" \t\n");
+    ASSERT_FALSE(blank.ok());
+    EXPECT_NE(blank.error().message.find("empty"), std::string::npos);
+
+    const std::vector<SessionNote>& notes = log_.notes();
+    ASSERT_EQ(notes.size(), 4u);
+    EXPECT_EQ(notes[0].text, "before anything");
+    EXPECT_EQ(notes[0].source, NoteSource::Window);
+    EXPECT_FALSE(notes[0].runtime_time_ns.has_value());
+    EXPECT_FALSE(notes[0].trial_index.has_value());
+    EXPECT_EQ(notes[1].runtime_time_ns, at(3));
+    EXPECT_FALSE(notes[1].trial_index.has_value());  // none before the first trial
+    EXPECT_EQ(notes[2].text, "participant adjusted the headset");
+    EXPECT_EQ(notes[2].runtime_time_ns, at(7));
+    EXPECT_EQ(notes[2].trial_index, 0);
+    EXPECT_TRUE(notes[2].noted_utc.empty());  // the log stamps it
+    EXPECT_EQ(notes[3].source, NoteSource::Command);
+    EXPECT_EQ(notes[3].runtime_time_ns, at(9));
+    EXPECT_EQ(notes[3].trial_index, 0);  // the last one shown
+    EXPECT_EQ(committed_.back(), "note command trial 0 t " + std::to_string(at(9)));
+    EXPECT_NE(std::find(committed_.begin(), committed_.end(), "note window t -1"),
+              committed_.end());
+}
+
+// A resumed session's notes name its last trial before a new one shows.
+TEST_F(ScreenSessionTest, ANoteAfterAResumeNamesTheLastTrialShown) {
+    const Protocol protocol = make_protocol(true, 5, 0, 1);
+    const Schedule schedule = make_schedule(protocol, 7, 0);
+    const std::vector<TrialEvent> before = {
+        {EventKind::Shown, 0, 1, 10'000 * kMs, 900, -1},
+        {EventKind::Confirmed, 0, 1, 20'000 * kMs, -1, -1},
+        {EventKind::Shown, 1, 1, 40'000 * kMs, 3600, -1},
+    };
+    auto s = begin_in_memory(protocol, 100 * kMs, 1, {decided(schedule.trials[0])}, before);
+    ASSERT_TRUE(s);
+    present(*s, 0);
+    ASSERT_TRUE(s->note("resumed").ok());
+    ASSERT_EQ(log_.notes().size(), 1u);
+    EXPECT_EQ(log_.notes()[0].trial_index, 1);
+    EXPECT_EQ(log_.notes()[0].runtime_time_ns, at(0));
+}
+
+// The database path: a session killed on page 2 of its instructions resumes there through
+// LiveSession::open, from the events the store holds.
+TEST_F(LiveSessionTest, ResumeFromTheStoreContinuesTheInstructions) {
+    Protocol protocol = make_protocol(true, 5, 0, 1);
+    protocol.day.instructions = {{"One"}, {"Two"}};
+    const std::int64_t id = begin(protocol);
+    {
+        auto s = open(id, protocol, 0);
+        ASSERT_TRUE(s);
+        present(*s, 0);
+        EXPECT_EQ(request(*s, LiveInput::Confirm, 2), "instructions page 2");
+        present(*s, 2);
+        ASSERT_TRUE(s->note("the participant asked a question").ok());
+    }
+    {
+        const std::vector<TrialEvent> e = events(id);
+        ASSERT_EQ(e.size(), 3u);
+        expect_screen_event(e[0], EventKind::InstructionsShown, 0, at(0), 0);
+        expect_screen_event(e[1], EventKind::InstructionsConfirmed, 0, at(2), -1);
+        expect_screen_event(e[2], EventKind::InstructionsShown, 1, at(2), 2);
+    }
+    auto s = open(id, protocol, 0);
+    ASSERT_TRUE(s);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Instructions);
+    EXPECT_EQ(s->screen().page, 1);
+    present(*s, 100);
+    EXPECT_EQ(request(*s, LiveInput::Confirm, 102), "instructions read");
+    const std::vector<TrialEvent> e = events(id);
+    ASSERT_EQ(e.size(), 5u);
+    expect_screen_event(e[3], EventKind::InstructionsShown, 1, at(100), 100);
+    expect_screen_event(e[4], EventKind::InstructionsConfirmed, 1, at(102), -1);
+    // Read: a second resume shows no instruction page.
+    s.reset();
+    s = open(id, protocol, 0);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->screen().kind, ScreenKind::Neutral);
 }
 
 // --- The simulated observer at the controls ----------------------------------------------------

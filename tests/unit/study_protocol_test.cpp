@@ -94,6 +94,13 @@ alternatives = ["stereo-multiview", "hybrid-farfield"]
     EXPECT_TRUE(p->questionnaire.items.empty());
     EXPECT_EQ(p->questionnaire.scale_points, 7);
     EXPECT_EQ(p->trials_per_session(), 1u);
+    // No study-day keys: one session of one repetition, no screens, no variables.
+    EXPECT_EQ(p->day.sessions, 1);
+    EXPECT_EQ(p->day.repetitions, 1);
+    EXPECT_EQ(p->day.blocking, Blocking::Scene);
+    EXPECT_EQ(p->day.text_height_deg, 1.0);
+    EXPECT_FALSE(p->day.has_screens());
+    EXPECT_TRUE(p->day.variables.empty());
 }
 
 TEST(StudyProtocol, OtherChoicesAreRead) {
@@ -136,6 +143,14 @@ TEST(StudyProtocol, Fink2019FileHasThePapersDesign) {
     // papers/000 Sect. 4.5: the study was rendered with TAA.
     EXPECT_EQ(p->render.anti_aliasing, "taa");
     EXPECT_EQ(p->render.ssao, "off");
+    // Sect. 6.1's introduction, a rest between the scene blocks, and no variable that a session
+    // without --var would lack.
+    EXPECT_EQ(p->day.instructions.size(), 3u);
+    EXPECT_TRUE(p->day.ready && p->day.end);
+    ASSERT_TRUE(p->day.breaks);
+    EXPECT_EQ(p->day.breaks, (BreakSettings{0, true, 30.0, p->day.breaks->text}));
+    EXPECT_EQ(p->day.sessions, 1);
+    EXPECT_TRUE(std::ranges::none_of(p->day.variables, &ParticipantVariable::required));
 }
 
 TEST(StudyProtocol, RenderTableIsReadAndDefaultsToNoAntiAliasing) {
@@ -173,10 +188,10 @@ TEST(StudyProtocol, AutoTableConfiguresHybridAuto) {
     EXPECT_EQ(p->alternatives[1], RenderMode::HybridAuto);
     EXPECT_EQ(p->auto_plane, (AutoPlaneSettings{4.5, "disparity", 0.5, 11.1}));
     // Without the table: the defaults (6 arcmin, each eye's error, 0.25 arcmin steps, no time).
-    const Result<Protocol> defaults = parse_protocol(
-        mutated("alternatives = [\"stereo\", \"hybrid\"]",
-                "alternatives = [\"stereo\", \"hybrid-auto\"]"),
-        "test.toml");
+    const Result<Protocol> defaults =
+        parse_protocol(mutated("alternatives = [\"stereo\", \"hybrid\"]",
+                               "alternatives = [\"stereo\", \"hybrid-auto\"]"),
+                       "test.toml");
     ASSERT_TRUE(defaults.ok()) << defaults.error().message;
     EXPECT_EQ(defaults->auto_plane, AutoPlaneSettings{});
 }
@@ -193,6 +208,9 @@ TEST(StudyProtocol, DemoFileIsShort) {
     EXPECT_EQ(p->alternatives[1], RenderMode::Hybrid);
     EXPECT_EQ(p->practice_trials, 1);
     EXPECT_EQ(p->questionnaire.items.size(), 2u);
+    EXPECT_EQ(p->day.instructions.size(), 1u);  // the main job's demo shows one page
+    EXPECT_FALSE(p->day.breaks);
+    EXPECT_TRUE(p->day.variables.empty());
 }
 
 TEST(StudyProtocol, LoadKeepsPathAndText) {
@@ -591,6 +609,28 @@ const MalformedCase kMalformedCases[] = {
      "Viewing was comfortable\"]\n",
      "Viewing was comfortable\"]\n\n[auto]\nbudget = 5\n",
      {"test.toml:17:", "'auto.budget'", "error_budget_arcmin"}},
+    // A study day (study_day_protocol_test.cpp has every case; these show the root's key list
+    // knows the new keys and the tables sit where the others do).
+    {"no repetitions",
+     "far = 1000\n",
+     "far = 1000\nrepetitions = 0\n",
+     {"test.toml:11:", "'repetitions'", "outside the allowed range 1..50"}},
+    {"misspelt sessions",
+     "far = 1000\n",
+     "far = 1000\nsesions = 2\n",
+     {"test.toml:11:1: key 'sesions': unknown key (did you mean 'sessions'?)"}},
+    {"misspelt breaks table",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[brakes]\nevery_trials = 5\n",
+     {"test.toml:16:2: key 'brakes': unknown key (did you mean 'breaks'?)"}},
+    {"a break of an hour",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[breaks]\nevery_trials = 5\nmin_s = 3600\n",
+     {"test.toml:18:", "'breaks.min_s'", "a break longer than 30 minutes is not a break"}},
+    {"a required variable without a type",
+     "Viewing was comfortable\"]\n",
+     "Viewing was comfortable\"]\n\n[[variables]]\nname = \"age\"\nrequired = true\n",
+     {"test.toml:16:1: key 'variables.type': required key is missing"}},
 };
 
 // Scenes that name glTF files (docs/scenes.md, "glTF scenes in a study"): a protocol file and its

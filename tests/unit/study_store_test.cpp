@@ -177,10 +177,11 @@ TEST_F(StudyStoreTest, UsesWalAndRecordsTheSchemaVersion) {
     RawDb raw(db_);
     EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
     EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
-    EXPECT_EQ(StudyStore::kSchemaVersion, 6);
+    EXPECT_EQ(StudyStore::kSchemaVersion, 7);
     EXPECT_EQ(raw.integer("PRAGMA application_id"), 0x4D505354);
-    // Version 2 added frames, version 3 scene_files and session_notes, version 5 planned_trials.
-    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 9);
+    // Version 2 added frames, version 3 scene_files and session_notes, version 5 planned_trials,
+    // version 7 participant_variables.
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 10);
 }
 
 TEST_F(StudyStoreTest, FilesAreReadableByTheOwnerOnly) {
@@ -189,7 +190,7 @@ TEST_F(StudyStoreTest, FilesAreReadableByTheOwnerOnly) {
     ::umask(old_mask);
     ASSERT_TRUE(store);
     begin(*store, "P01");
-    ASSERT_TRUE(store->append_event(1, TrialEvent{EventKind::Shown, 0, 1, 10, 0}).ok());
+    ASSERT_TRUE(store->append_event(1, TrialEvent{EventKind::Shown, 0, 1, 10, 0, -1}).ok());
     EXPECT_EQ(file_mode(db_), 0600u);
     ASSERT_TRUE(fs::exists(db_.string() + "-wal"));
     EXPECT_EQ(file_mode(db_.string() + "-wal"), 0600u);
@@ -229,9 +230,13 @@ TEST_F(StudyStoreTest, AcceptsPseudonymsOnly) {
 
 TEST_F(StudyStoreTest, RefusesAScheduleMadeForAnotherLatinSquareRow) {
     auto store = open_store();
-    const Result<std::int64_t> id = store->begin_session(make_info("P01"), make_test_schedule(3));
+    SessionInfo info = make_info("P01");
+    info.participant_number = 2;  // the participant is number 3, the schedule made for number 4
+    const Result<std::int64_t> id = store->begin_session(info, make_test_schedule(3));
     ASSERT_FALSE(id.ok());
-    EXPECT_TRUE(contains(id.error().message, "participant index 3")) << id.error().message;
+    EXPECT_TRUE(contains(id.error().message, "made for participant number 4"))
+        << id.error().message;
+    EXPECT_TRUE(contains(id.error().message, "participant number 3")) << id.error().message;
     EXPECT_EQ(*store->participant_count(), 0);  // nothing half-written
     RawDb raw(db_);
     EXPECT_EQ(raw.integer("SELECT count(*) FROM sessions"), 0);
@@ -280,14 +285,14 @@ TEST_F(StudyStoreTest, RefusesABadSchedule) {
 TEST_F(StudyStoreTest, EventsAndOutcomesRoundTripExactly) {
     std::int64_t id = 0;
     const std::vector<TrialEvent> events = {
-        {EventKind::Shown, 2, 1, 1'000'000'123, 60},
-        {EventKind::Switched, 2, 2, 2'500'000'000, 150},
-        {EventKind::Refused, 2, 0, 2'600'000'000, -1},
-        {EventKind::Paused, 2, 0, 3'000'000'000, -1},
-        {EventKind::Resumed, 2, 0, 4'000'000'000, -1},
-        {EventKind::Switched, 2, 1, 4'100'000'001, 250},
-        {EventKind::Confirmed, 2, 1, 9'223'372'036'854'775'807, 9'000'000'000},
-        {EventKind::Aborted, 3, 0, 12, -1},
+        {EventKind::Shown, 2, 1, 1'000'000'123, 60, -1},
+        {EventKind::Switched, 2, 2, 2'500'000'000, 150, -1},
+        {EventKind::Refused, 2, 0, 2'600'000'000, -1, -1},
+        {EventKind::Paused, 2, 0, 3'000'000'000, -1, -1},
+        {EventKind::Resumed, 2, 0, 4'000'000'000, -1, -1},
+        {EventKind::Switched, 2, 1, 4'100'000'001, 250, -1},
+        {EventKind::Confirmed, 2, 1, 9'223'372'036'854'775'807, 9'000'000'000, -1},
+        {EventKind::Aborted, 3, 0, 12, -1, -1},
     };
     TrialOutcome outcome;
     outcome.choice = 1;
@@ -317,6 +322,7 @@ TEST_F(StudyStoreTest, EventsAndOutcomesRoundTripExactly) {
         EXPECT_EQ((*loaded)[i].label, events[i].label) << i;
         EXPECT_EQ((*loaded)[i].time_ns, events[i].time_ns) << i;
         EXPECT_EQ((*loaded)[i].frame, events[i].frame) << i;
+        EXPECT_EQ((*loaded)[i].page, -1) << i;
     }
     const Result<std::vector<TrialRecord>> trials = store->trials(id);
     ASSERT_TRUE(trials.ok()) << trials.error().message;
@@ -342,11 +348,11 @@ TEST_F(StudyStoreTest, EventsAndOutcomesRoundTripExactly) {
 TEST_F(StudyStoreTest, RefusesEventsAndOutcomesForUnknownTrialsOrBadValues) {
     auto store = open_store();
     const std::int64_t id = begin(*store, "P01");
-    Result<bool> bad = store->append_event(id, TrialEvent{EventKind::Shown, 99, 1, 5, 0});
+    Result<bool> bad = store->append_event(id, TrialEvent{EventKind::Shown, 99, 1, 5, 0, -1});
     ASSERT_FALSE(bad.ok());
     EXPECT_TRUE(contains(bad.error().message, "trial 99 of session 1")) << bad.error().message;
-    EXPECT_FALSE(store->append_event(id + 1, TrialEvent{EventKind::Shown, 0, 1, 5, 0}).ok());
-    EXPECT_FALSE(store->append_event(id, TrialEvent{EventKind::Shown, 0, 3, 5, 0}).ok());
+    EXPECT_FALSE(store->append_event(id + 1, TrialEvent{EventKind::Shown, 0, 1, 5, 0, -1}).ok());
+    EXPECT_FALSE(store->append_event(id, TrialEvent{EventKind::Shown, 0, 3, 5, 0, -1}).ok());
     EXPECT_TRUE(store->events(id)->empty());
 
     TrialOutcome outcome;
@@ -427,15 +433,18 @@ TEST_F(StudyStoreTest, RefusesANewerSchemaWithoutTouchingIt) {
     { ASSERT_TRUE(open_store()); }
     {
         RawDb raw(db_);
-        ASSERT_EQ(raw.exec("PRAGMA user_version = 7"), SQLITE_OK);
+        ASSERT_EQ(
+            raw.exec("PRAGMA user_version = " + std::to_string(StudyStore::kSchemaVersion + 1)),
+            SQLITE_OK);
     }
     const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
     ASSERT_FALSE(store.ok());
     const std::string& message = store.error().message;
-    EXPECT_TRUE(contains(message, "schema version 7, newer than this build")) << message;
+    EXPECT_TRUE(contains(message, "schema version 8, newer than this build of monoplane knows (7)"))
+        << message;
     EXPECT_TRUE(contains(message, db_.string())) << message;
     RawDb raw(db_);
-    EXPECT_EQ(raw.integer("PRAGMA user_version"), 7);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 8);
     EXPECT_TRUE(fs::exists(db_));
 }
 
@@ -448,7 +457,7 @@ TEST_F(StudyStoreTest, ALockedDatabaseIsAClearErrorNamingTheFile) {
         RawDb other(db_);
         ASSERT_EQ(other.exec("BEGIN EXCLUSIVE"), SQLITE_OK);  // in WAL: holds the write lock
         const Result<bool> blocked =
-            store->append_event(id, TrialEvent{EventKind::Shown, 0, 1, 5, 0});
+            store->append_event(id, TrialEvent{EventKind::Shown, 0, 1, 5, 0, -1});
         ASSERT_FALSE(blocked.ok());
         EXPECT_TRUE(contains(blocked.error().message, "'" + db_.string() + "' is locked"))
             << blocked.error().message;
@@ -460,7 +469,7 @@ TEST_F(StudyStoreTest, ALockedDatabaseIsAClearErrorNamingTheFile) {
         EXPECT_EQ(*store->participant_count(), 1);
         ASSERT_EQ(other.exec("ROLLBACK"), SQLITE_OK);
     }
-    ASSERT_TRUE(store->append_event(id, TrialEvent{EventKind::Shown, 0, 1, 5, 0}).ok());
+    ASSERT_TRUE(store->append_event(id, TrialEvent{EventKind::Shown, 0, 1, 5, 0, -1}).ok());
     EXPECT_EQ(store->events(id)->size(), 1u);
     EXPECT_EQ(*store->participant_count(), 1);
 }
@@ -541,7 +550,8 @@ TEST_F(StudyStoreTest, AFullDiskFailsTheWriteAndKeepsEarlierData) {
         ASSERT_TRUE(store);
         for (; written < 100000; ++written) {
             const Result<bool> ok = store->append_event(
-                id, TrialEvent{EventKind::Switched, 2, 1 + written % 2, 1000 + written, written});
+                id,
+                TrialEvent{EventKind::Switched, 2, 1 + written % 2, 1000 + written, written, -1});
             if (!ok) {
                 message = ok.error().message;
                 break;
@@ -572,7 +582,7 @@ TEST_F(StudyStoreTest, AFullDiskFailsTheWriteAndKeepsEarlierData) {
     RawDb raw(db_);
     EXPECT_EQ(raw.integer("SELECT count(*) FROM trials"), 8);
     EXPECT_EQ(raw.text("PRAGMA integrity_check"), "ok");
-    ASSERT_TRUE(store->append_event(id, TrialEvent{EventKind::Confirmed, 2, 1, 5, 7}).ok());
+    ASSERT_TRUE(store->append_event(id, TrialEvent{EventKind::Confirmed, 2, 1, 5, 7, -1}).ok());
 }
 
 }  // namespace
@@ -601,7 +611,7 @@ TEST_F(StudyStoreTest, TheFrameLogBecomesDurableWithTheNextEvent) {
     RawDb raw(db_);
     // Queued rows wait in memory: nothing on disk yet.
     EXPECT_EQ(raw.integer("SELECT count(*) FROM frames"), 0);
-    const Result<bool> shown = store->append_event(id, {EventKind::Shown, 0, 1, 1'050, 3});
+    const Result<bool> shown = store->append_event(id, {EventKind::Shown, 0, 1, 1'050, 3, -1});
     ASSERT_TRUE(shown.ok()) << shown.error().message;
     // The event's transaction carried them.
     EXPECT_EQ(raw.integer("SELECT count(*) FROM frames"), 2);
@@ -639,7 +649,7 @@ TEST_F(StudyStoreTest, TheFrameLogBecomesDurableWithTheNextEvent) {
     FrameRecord bad = make_frame(5, 0);
     bad.shown = "sideways";
     store->queue_frame(id, bad);
-    EXPECT_FALSE(store->append_event(id, {EventKind::Switched, 0, 2, 1'060, 5}).ok());
+    EXPECT_FALSE(store->append_event(id, {EventKind::Switched, 0, 2, 1'060, 5, -1}).ok());
     EXPECT_EQ(raw.integer("SELECT count(*) FROM events WHERE kind = 'switched'"), 0);
 }
 
@@ -681,7 +691,7 @@ TEST_F(StudyStoreTest, AResumedRunsFramesContinueAfterEveryNumberUsed) {
     auto store = open_store();
     const std::int64_t id = begin(*store, "P01");
     EXPECT_EQ(*store->next_frame_number(id), 0);
-    ASSERT_TRUE(store->append_event(id, {EventKind::Shown, 0, 1, 1'050, 9}).ok());
+    ASSERT_TRUE(store->append_event(id, {EventKind::Shown, 0, 1, 1'050, 9, -1}).ok());
     EXPECT_EQ(*store->next_frame_number(id), 10);  // an event names frame 9
     store->queue_frame(id, make_frame(12, 0));
     ASSERT_TRUE(store->flush_frames().ok());

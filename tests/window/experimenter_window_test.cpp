@@ -14,6 +14,7 @@
 #include <set>
 
 #include "app/window/experimenter_window.h"
+#include "app/window/view_text.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/image.h"
 
@@ -243,17 +244,28 @@ TEST_F(ExperimenterWindowTest, FollowsAResizeAndDrawsEveryPhase) {
     view.questionnaire_items = {"I noticed differences between the two versions",
                                 "The two versions looked the same"};
     view.answers = {5, 0};
-    for (const Phase phase : {Phase::Starting, Phase::Trial, Phase::Neutral, Phase::Paused,
-                              Phase::Questionnaire, Phase::Finished, Phase::Aborted}) {
+    // The protocol's pages: mirrored with their text (a long one scrolls in its box).
+    view.page_text =
+        "You will see two versions of each scene.\n\nPress SWITCH to change "
+        "between them, then CONFIRM to choose the one that looked more natural.";
+    for (int i = 0; i < 5; ++i) view.page_text += "\nThere are no right or wrong answers.";
+    view.page = 1;
+    view.page_count = 3;
+    view.break_countdown = "0:23";
+    view.note_status = "note stored at trial 5";
+    for (const Phase phase : {Phase::Starting, Phase::Instructions, Phase::Trial, Phase::Neutral,
+                              Phase::Paused, Phase::Ready, Phase::Break, Phase::Questionnaire,
+                              Phase::Finished, Phase::End, Phase::Aborted}) {
         view.phase = phase;
         view.unblinded = phase == Phase::Paused;
         for (int i = 0; i < 3; ++i) {
             mirror(source);
             EXPECT_TRUE(window_->frame(view).empty());
         }
-        if (phase != Phase::Questionnaire) continue;
+        if (phase != Phase::Questionnaire && phase != Phase::Instructions) continue;
         EXPECT_EQ(window_->extent(), vk::Extent2D(900, 620));
-        const fs::path png_path = test_out() / "experimenter-window-questionnaire.png";
+        const fs::path png_path =
+            test_out() / (std::string("experimenter-window-") + phase_name(phase) + ".png");
         const auto saved = window_->save_screenshot(png_path);
         ASSERT_TRUE(saved) << saved.error().message;
         const Png png = load_png(png_path);

@@ -1,0 +1,140 @@
+// `monoplane study export|list|note`: what a study has, for the experimenter and the analysis.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "app/commands/study_options.h"
+#include "common/json_writer.h"
+#include "study/export.h"
+#include "study/output_file.h"
+#include "study/roster.h"
+#include "study/study_store.h"
+
+namespace monoplane::app {
+namespace {
+
+std::string hash_hex(std::uint64_t hash) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(hash));
+    return buffer;
+}
+
+std::string or_dash(const std::string& text) {
+    return text.empty() ? "-" : text;
+}
+
+void print_roster_table(const std::vector<study::RosterEntry>& entries, bool several) {
+    std::printf("%-12s %4s %7s %4s  %-11s %-16s %-20s %-20s %-14s %-10s %s\n", "participant", "no.",
+                "session", "id", "trials", "protocol", "started", "ended", "device", "runtime",
+                "status");
+    for (const study::RosterEntry& e : entries) {
+        const study::RosterRow& r = e.row;
+        const std::string trials =
+            std::to_string(r.trials_decided) + "/" + std::to_string(r.trials_planned);
+        std::printf("%-12s %4d %7d %4lld  %-11s %-16s %-20s %-20s %-14s %-10s %s%s\n",
+                    r.participant_code.c_str(), r.participant_number + 1, r.session_number,
+                    static_cast<long long>(r.session_id), trials.c_str(),
+                    (r.protocol_name + " " + hash_hex(r.protocol_hash).substr(0, 6)).c_str(),
+                    or_dash(r.started_utc).c_str(), or_dash(r.ended_utc).c_str(),
+                    or_dash(r.device).c_str(), or_dash(r.runtime).c_str(), e.state().c_str(),
+                    several ? ("  " + e.database.string()).c_str() : "");
+    }
+}
+
+void write_roster_json(const std::vector<study::RosterEntry>& entries) {
+    JsonWriter json(JsonFormat{.indented = true});
+    json.begin_object().begin_array("sessions");
+    for (const study::RosterEntry& e : entries) {
+        const study::RosterRow& r = e.row;
+        json.begin_object()
+            .value("database", e.database.string())
+            .value("participant", r.participant_code)
+            .value("participant_number", r.participant_number + 1)
+            .value("session", r.session_number)
+            .value("session_id", r.session_id)
+            .value("status", std::string(study::session_status_name(r.status)))
+            .value("state", e.state())
+            .value("trials_decided", r.trials_decided)
+            .value("trials_planned", r.trials_planned)
+            .value("started_utc", r.started_utc);
+        if (r.ended_utc.empty())
+            json.null("ended_utc");
+        else
+            json.value("ended_utc", r.ended_utc);
+        json.value("device", r.device)
+            .value("runtime", r.runtime)
+            .value("protocol", r.protocol_name)
+            .value("protocol_hash", "fnv1a64:" + hash_hex(r.protocol_hash));
+        if (e.holder) {
+            json.begin_object("held_by")
+                .value("pid", static_cast<std::int64_t>(e.holder->pid))
+                .value("host", e.holder->host)
+                .value("since_utc", e.holder->since_utc)
+                .end_object();
+        } else {
+            json.null("held_by");
+        }
+        json.end_object();
+    }
+    json.end_array().end_object();
+    std::cout << json.str();
+}
+
+}  // namespace
+
+void export_study(const StudyOptions& o) {
+    const study::ExportFormat format = study::parse_export_format(o.format).value_or_throw();
+    // Before the database is opened (which would create a missing one): a refused --out changes
+    // nothing, and a study database is never overwritten by its own export.
+    study::check_output(o.out, study::export_output_kind(format), {o.db}, o.force).value_or_throw();
+    if (!std::filesystem::is_regular_file(o.db))
+        throw UserError("no study database '" + o.db + "'");
+    auto store = study::StudyStore::open(o.db).value_or_throw();
+    // Written to a temporary file and renamed: a failed export leaves no truncated file.
+    study::export_trials(*store, format, std::filesystem::path(o.out), o.force).value_or_throw();
+    std::cerr << "wrote " << o.out << "\n";
+}
+
+void list_study(const StudyOptions& o) {
+    std::vector<std::filesystem::path> databases(o.dbs.begin(), o.dbs.end());
+    const auto entries = study::read_roster(databases).value_or_throw();
+    if (o.json) {
+        write_roster_json(entries);
+        return;
+    }
+    if (entries.empty()) {
+        std::cout << "no sessions yet\n";
+        return;
+    }
+    print_roster_table(entries, databases.size() > 1);
+}
+
+void note_study(const StudyOptions& o) {
+    auto store = study::StudyStore::open(o.db).value_or_throw();
+    std::int64_t session_id = 0;
+    if (o.session_id) {
+        session_id = *o.session_id;
+        store->session(session_id).value_or_throw();  // an unknown id is an error naming it
+    } else {
+        if (o.participant.empty())
+            throw UserError(
+                "say which session the note is for: --participant CODE [--session N] "
+                "or --session-id ID");
+        const auto record = store->participant(o.participant).value_or_throw();
+        if (!record) throw UserError(o.db + ": no participant " + o.participant);
+        const int number = o.session_number.value_or(record->next_session_number() - 1);
+        const auto id = store->find_session(o.participant, number).value_or_throw();
+        if (!id) {
+            throw UserError(o.db + ": participant " + o.participant + " has no session " +
+                            std::to_string(number));
+        }
+        session_id = *id;
+    }
+    study::SessionNote note;
+    note.text = o.note;
+    note.source = study::NoteSource::Command;
+    store->add_note(session_id, note).value_or_throw();
+    std::cerr << "note stored for session " << session_id << "\n";
+}
+
+}  // namespace monoplane::app

@@ -1,0 +1,285 @@
+#include "study/output_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <optional>
+#include <streambuf>
+#include <system_error>
+
+namespace monoplane::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What SQLite writes first: a database file's header, and a write-ahead log's magic numbers
+// (big-endian 0x377f0682 or 0x377f0683). Either is a file a study cannot do without.
+constexpr std::string_view kSqliteHeader{"SQLite format 3\0", 16};
+
+bool is_sqlite_head(std::string_view head) {
+    if (head.starts_with(kSqliteHeader)) return true;
+    return head.size() >= 4 && head.substr(0, 3) == std::string_view("\x37\x7f\x06", 3) &&
+           (head[3] == '\x82' || head[3] == '\x83');
+}
+
+// Files SQLite and the session holds keep beside a database: replacing one damages the study.
+constexpr std::array<std::string_view, 4> kDatabaseCompanions = {"-wal", "-shm", "-journal",
+                                                                 "-holds"};
+
+std::string quoted(const fs::path& path) {
+    return "'" + path.string() + "'";
+}
+
+// The same file, by any spelling: existing files by device and inode (hard and symbolic links,
+// relative paths), a file not there yet by its absolute path with links resolved.
+bool same_file(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec) && !ec;
+    const fs::path ca = fs::weakly_canonical(fs::absolute(a, ec), ec);
+    if (ec) return false;
+    const fs::path cb = fs::weakly_canonical(fs::absolute(b, ec), ec);
+    return !ec && ca == cb;
+}
+
+// The reason `out` may never be written, whatever --force says, when it is one of the inputs
+// or one of an input database's companion files.
+std::optional<std::string> input_conflict(const fs::path& out,
+                                          const std::vector<fs::path>& inputs) {
+    for (const fs::path& input : inputs) {
+        if (same_file(out, input)) {
+            const std::string what =
+                std::string(is_sqlite_file(input) ? "the database" : "a file") +
+                " this command reads: writing there would destroy it";
+            if (out.lexically_normal() == input.lexically_normal())
+                return quoted(out) + " is " + what;
+            return quoted(out) + " is the same file as " + quoted(input) + ", " + what;
+        }
+        for (std::string_view suffix : kDatabaseCompanions) {
+            const fs::path companion = input.string() + std::string(suffix);
+            if (same_file(out, companion)) {
+                return quoted(out) + " belongs to the database " + quoted(input) +
+                       " (SQLite or a running session keeps it beside the database): writing "
+                       "there would damage the study";
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+// Up to kOutputHeadBytes from the start of a file.
+Result<std::string> read_head(const fs::path& path) {
+    errno = 0;
+    std::ifstream in(path, std::ios::binary);
+    std::string head(kOutputHeadBytes, '\0');
+    if (in) in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    if (!in && !in.eof()) {
+        const int err = errno;
+        return Error{"cannot read " + quoted(path) + " to tell whether it may be replaced" +
+                     (err != 0 ? std::string(": ") + std::strerror(err) : std::string()) +
+                     "; choose another --out. Nothing was written."};
+    }
+    head.resize(static_cast<std::size_t>(in.gcount()));
+    return head;
+}
+
+// The start of a file's first line, printable, for a message that shows what the file is.
+std::string first_line(std::string_view head) {
+    std::string line(head.substr(0, head.find_first_of("\r\n")));
+    for (char& c : line)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+    if (line.size() > 60) line = line.substr(0, 57) + "...";
+    return line.empty() ? "an empty first line" : "'" + line + "'";
+}
+
+// The folder `out` goes into must exist: the output is written there and renamed.
+Result<bool> check_folder(const fs::path& out) {
+    const fs::path folder = out.parent_path().empty() ? fs::path(".") : out.parent_path();
+    std::error_code ec;
+    const fs::file_status status = fs::status(folder, ec);
+    if (!fs::exists(status)) {
+        return Error{"the folder " + quoted(folder) + " for the output " + quoted(out) +
+                     " does not exist; create it first or choose another --out. Nothing was "
+                     "written."};
+    }
+    if (!fs::is_directory(status)) {
+        return Error{quoted(folder) + " in the output path " + quoted(out) +
+                     " is not a folder; choose another --out. Nothing was written."};
+    }
+    return true;
+}
+
+// `out` exists: what it is decides whether it may be replaced.
+Result<bool> check_existing(const fs::path& out, const OutputKind& kind, bool force) {
+    std::error_code ec;
+    if (!fs::is_regular_file(out, ec)) {
+        return Error{quoted(out) + " exists and is " +
+                     (fs::is_directory(out, ec) ? "a folder" : "not a regular file") +
+                     "; --out must name a file. Nothing was written."};
+    }
+    Result<std::string> head = read_head(out);
+    if (!head) return head.error();
+    if (is_sqlite_head(*head)) {
+        return Error{quoted(out) +
+                     " is an SQLite database (perhaps a study's): refusing to replace it, also "
+                     "with --force; choose another --out. Nothing was written."};
+    }
+    if (kind.is_earlier_output && kind.is_earlier_output(*head)) return true;
+    if (force) return true;
+    return Error{quoted(out) + " exists and is not an earlier " + kind.name + ": it begins with " +
+                 first_line(*head) +
+                 ". Give --force to replace it, or choose another --out. Nothing was written."};
+}
+
+}  // namespace
+
+bool is_sqlite_file(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string head(kSqliteHeader.size(), '\0');
+    if (!in.read(head.data(), static_cast<std::streamsize>(head.size()))) return false;
+    return is_sqlite_head(head);
+}
+
+Result<bool> check_output(const fs::path& out, const OutputKind& kind,
+                          const std::vector<fs::path>& inputs, bool force) {
+    if (out.empty()) return Error{"the output file name (--out) is empty"};
+    if (std::optional<std::string> conflict = input_conflict(out, inputs)) {
+        return Error{*conflict +
+                     "; choose another --out (--force never allows this). Nothing was "
+                     "written."};
+    }
+    std::error_code ec;
+    const fs::file_status status = fs::status(out, ec);  // through a symbolic link
+    if (fs::exists(status)) return check_existing(out, kind, force);
+    // A new file (or a symbolic link to nothing, which the output replaces).
+    return check_folder(out);
+}
+
+namespace {
+
+// An output stream's buffer over a file descriptor, so the file can be flushed to disk (fsync)
+// before it is renamed into place. Remembers the first write error for the message.
+class DescriptorBuffer final : public std::streambuf {
+  public:
+    explicit DescriptorBuffer(int fd) : fd_(fd) { setp(buffer_.data(), buffer_.data() + size()); }
+    int error() const { return error_; }
+
+  protected:
+    int_type overflow(int_type ch) override {
+        if (!drain()) return traits_type::eof();
+        if (!traits_type::eq_int_type(ch, traits_type::eof())) {
+            *pptr() = traits_type::to_char_type(ch);
+            pbump(1);
+        }
+        return traits_type::not_eof(ch);
+    }
+    int sync() override { return drain() ? 0 : -1; }
+
+  private:
+    static constexpr std::ptrdiff_t size() { return 1 << 16; }
+    bool drain() {
+        for (const char* p = pbase(); p < pptr();) {
+            const ssize_t n = ::write(fd_, p, static_cast<std::size_t>(pptr() - p));
+            if (n < 0 && errno == EINTR) continue;
+            if (n < 0) {
+                error_ = errno;
+                return false;
+            }
+            p += n;
+        }
+        setp(buffer_.data(), buffer_.data() + size());
+        return true;
+    }
+    std::array<char, 1 << 16> buffer_{};
+    int fd_;
+    int error_ = 0;
+};
+
+// A new, empty file beside `target` that no other writer uses: its name starts with '.' and
+// carries the process id and a counter, and O_EXCL refuses one that exists.
+Result<std::pair<int, fs::path>> create_temporary(const fs::path& target) {
+    static std::atomic<unsigned> counter{0};
+    const fs::path folder = target.parent_path();
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const fs::path name =
+            folder / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()) +
+                      "-" + std::to_string(counter.fetch_add(1)));
+        const int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) return std::pair{fd, name};
+        if (errno != EEXIST) {
+            return Error{"cannot create a file in " +
+                         quoted(folder.empty() ? fs::path(".") : folder) + " to write " +
+                         quoted(target) + ": " + std::strerror(errno) +
+                         "; check that the folder exists and is writable."};
+        }
+    }
+    return Error{"cannot find a free temporary file name beside " + quoted(target)};
+}
+
+// Writes through `write`, then flushes to disk; the error says what failed.
+Result<bool> fill(int fd, const fs::path& target,
+                  const std::function<Result<bool>(std::ostream&)>& write) {
+    DescriptorBuffer buffer(fd);
+    std::ostream stream(&buffer);
+    if (Result<bool> written = write(stream); !written) return written;
+    stream.flush();
+    if (!stream.good() || buffer.error() != 0) {
+        const int err = buffer.error();
+        return Error{"writing " + quoted(target) + " failed" +
+                     (err != 0 ? std::string(": ") + std::strerror(err) : std::string()) +
+                     "; it was left as it was."};
+    }
+    if (::fsync(fd) != 0) {
+        return Error{"writing " + quoted(target) + " to disk failed: " + std::strerror(errno) +
+                     "; it was left as it was."};
+    }
+    return true;
+}
+
+// After the rename, the folder's entry is made durable too; a failure there loses nothing that
+// was on disk before, so it is not an error.
+void sync_folder(const fs::path& folder) {
+    const int fd =
+        ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return;
+    ::fsync(fd);
+    ::close(fd);
+}
+
+}  // namespace
+
+Result<bool> write_file_atomically(const fs::path& out,
+                                   const std::function<Result<bool>(std::ostream&)>& write) {
+    std::error_code ec;
+    // Through a symbolic link to an existing file: replace that file, keep the link.
+    const fs::path target = fs::is_symlink(fs::symlink_status(out, ec)) && fs::exists(out, ec)
+                                ? fs::canonical(out, ec)
+                                : out;
+    Result<std::pair<int, fs::path>> temporary = create_temporary(target);
+    if (!temporary) return temporary.error();
+    const auto [fd, temporary_path] = *temporary;
+    struct stat existing {};
+    if (::stat(target.c_str(), &existing) == 0) ::fchmod(fd, existing.st_mode & 07777);
+    Result<bool> filled = fill(fd, target, write);
+    if (::close(fd) != 0 && filled) {
+        filled = Error{"writing " + quoted(target) + " failed: " + std::strerror(errno)};
+    }
+    if (filled && std::rename(temporary_path.c_str(), target.c_str()) != 0) {
+        filled = Error{"cannot move the new file into place at " + quoted(target) + ": " +
+                       std::strerror(errno) + "; it was left as it was."};
+    }
+    if (!filled) {
+        ::unlink(temporary_path.c_str());
+        return filled;
+    }
+    sync_folder(target.parent_path());
+    return true;
+}
+
+}  // namespace monoplane::study

@@ -1,0 +1,59 @@
+// Writing a command's output file without destroying what a lab already has (docs/data.md,
+// "Where an export may go"). A command checks its --out before it opens anything, then writes
+// the file beside its final place and renames it there when complete:
+//
+//   check_output(out, export_output_kind(format), {database}, force).value_or_throw();
+//   ... open the database, collect ...
+//   write_file_atomically(out, [&](std::ostream& s) { ...; return Result<bool>(true); });
+//
+// check_output refuses, with nothing changed:
+// - always (--force does not help): an output that is one of the command's inputs (the same
+//   file by any path: relative, through a symbolic link, a hard link) or an input database's
+//   -wal, -shm, -journal or -holds file; any SQLite database or write-ahead log (told by its
+//   header bytes, whatever its name); a folder or anything that is not a regular file;
+// - unless `force`: any other existing file that is not an earlier output of the same kind (a
+//   protocol, notes, another format's export), told by its first bytes;
+// and says so when the folder the output goes into does not exist.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/result.h"
+
+namespace monoplane::study {
+
+// What a command writes, and how an earlier file of its own is told from anything else.
+struct OutputKind {
+    std::string name;  // for messages: "export of --format csv"
+    // True when `head`, the first bytes of an existing file (up to kOutputHeadBytes), is what an
+    // earlier run of this kind of output wrote: only such a file is replaced without --force.
+    std::function<bool(std::string_view head)> is_earlier_output;
+};
+
+inline constexpr std::size_t kOutputHeadBytes = 4096;
+
+// May `out` be written? `inputs`: the files the command reads (its databases), each compared
+// with `out` as the same file. Errors name the file, say why and whether --force would help;
+// true when writing may go ahead. Reads only: never creates, truncates or touches a file.
+Result<bool> check_output(const std::filesystem::path& out, const OutputKind& kind,
+                          const std::vector<std::filesystem::path>& inputs, bool force);
+
+// True when the file begins as an SQLite database or its write-ahead log does; false for
+// anything else, a missing file included.
+bool is_sqlite_file(const std::filesystem::path& path);
+
+// Writes `out` by calling `write` on a new file beside it (same folder, so the rename cannot
+// cross file systems), flushes it to disk, and renames it over `out`: a reader sees the old
+// file or the whole new one, never a part, and a failure (a full disk, `write`'s own error)
+// leaves `out` as it was and no temporary file behind. A new file gets the usual permissions
+// (0666 less the umask); a replaced one keeps its mode. When `out` is a symbolic link, the file
+// it points to is replaced and the link stays.
+Result<bool> write_file_atomically(const std::filesystem::path& out,
+                                   const std::function<Result<bool>(std::ostream&)>& write);
+
+}  // namespace monoplane::study

@@ -1,0 +1,563 @@
+// Reading the study-day keys (protocol_study_day_parse.h). The limits are generous for any real
+// study and tight enough that a typo (sessions = 200, min_s = 3000) is caught before a
+// participant sits in the headset.
+#include "study/protocol_study_day_parse.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace monoplane::study {
+namespace {
+
+constexpr std::array<std::string_view, 1> kPageKeys = {"text"};
+constexpr std::array<std::string_view, 4> kBreakKeys = {"every_trials", "between_blocks", "min_s",
+                                                        "text"};
+constexpr std::array<std::string_view, 7> kVariableKeys = {"name",    "type",     "min", "max",
+                                                           "choices", "required", "help"};
+constexpr std::array<std::string_view, 2> kBlockings = {"scene", "none"};
+constexpr std::array<std::string_view, 4> kVariableTypes = {"integer", "number", "choice", "text"};
+
+std::string in_quotes(std::string_view text) {
+    return "'" + std::string(text) + "'";
+}
+
+bool is_blank(std::string_view text) {
+    return std::ranges::all_of(text, [](char c) { return c == ' ' || c == '\t' || c == '\n'; });
+}
+
+// One of `names`, or nothing after a problem that lists them and suggests the closest.
+std::optional<std::string_view> read_one_of(const toml::node& node, std::string_view key,
+                                            std::span<const std::string_view> names,
+                                            TomlProblems& problems) {
+    const auto* text = node.as_string();
+    if (text == nullptr) {
+        report_wrong_type(node, key, "a string, one of " + join(names), problems);
+        return std::nullopt;
+    }
+    const auto found = std::ranges::find(names, text->get());
+    if (found != names.end()) return *found;
+    std::string message = toml_key_prefix(key) + "unknown value " + in_quotes(text->get()) +
+                          " (allowed: " + join(names) + ")";
+    const std::string_view closest = closest_match(text->get(), names);
+    if (!closest.empty()) message += "; did you mean " + in_quotes(closest) + "?";
+    problems.add(node.source(), message);
+    return std::nullopt;
+}
+
+std::optional<bool> read_flag(const toml::node& node, std::string_view key,
+                              TomlProblems& problems) {
+    if (const auto* flag = node.as_boolean()) return flag->get();
+    report_wrong_type(node, key, "a boolean (true or false)", problems);
+    return std::nullopt;
+}
+
+// The table at `key` of the root, or nullptr (absent, or reported as the wrong type).
+const toml::table* find_table(const TomlScope& root, std::string_view key,
+                              std::string_view expected, TomlProblems& problems) {
+    const toml::node* node = root.table.get(key);
+    if (node == nullptr) return nullptr;
+    const toml::table* table = node->as_table();
+    if (table == nullptr) report_wrong_type(*node, key, expected, problems);
+    return table;
+}
+
+// The non-ASCII characters the headset's text panel draws as an ASCII look-alike (typographic
+// quotes, dashes, ellipsis, no-break and thin spaces, the multiplication sign; the list of
+// ascii_for in app/headset/text_panel.cpp); its font has printable ASCII only, and any other
+// character would reach the participant as '?'.
+constexpr std::array<char32_t, 22> kLookAlikes = {
+    0x2018, 0x2019, 0x201A, 0x201B, 0x2032, 0x201C, 0x201D, 0x201E, 0x2033, 0x00AB, 0x00BB,
+    0x2010, 0x2011, 0x2012, 0x2013, 0x2014, 0x2212, 0x2026, 0x00A0, 0x2009, 0x202F, 0x00D7};
+
+// The UTF-8 sequence at text[i]: its code point and length (0: not a valid sequence).
+std::pair<char32_t, std::size_t> decode_utf8(std::string_view text, std::size_t i) {
+    const auto lead = static_cast<unsigned char>(text[i]);
+    if (lead < 0x80) return {lead, 1};
+    const std::size_t size = (lead >> 5) == 0x6    ? 2
+                             : (lead >> 4) == 0xe  ? 3
+                             : (lead >> 3) == 0x1e ? 4
+                                                   : 0;
+    if (size == 0 || i + size > text.size()) return {0, 0};
+    char32_t code = lead & (0x7f >> size);
+    for (std::size_t k = 1; k < size; ++k) {
+        const auto next = static_cast<unsigned char>(text[i + k]);
+        if ((next & 0xc0) != 0x80) return {0, 0};
+        code = (code << 6) | (next & 0x3f);
+    }
+    return {code, size};
+}
+
+bool shown_in_headset(char32_t code) {
+    return (code >= 0x20 && code <= 0x7e) || code == '\n' || code == '\t' ||
+           std::ranges::find(kLookAlikes, code) != kLookAlikes.end();
+}
+
+// The problem with a screen's text, or nothing: blank, too long, or a character that the
+// headset cannot show (named with its position and the text before it, to find it).
+std::optional<std::string> screen_text_problem(std::string_view text) {
+    if (is_blank(text)) return "is empty; a screen needs text to read";
+    std::size_t characters = 0;
+    for (std::size_t i = 0; i < text.size(); ++characters) {
+        const auto [code, size] = decode_utf8(text, i);
+        if (size == 0 || !shown_in_headset(code)) {
+            std::size_t from = i > 12 ? i - 12 : 0;
+            while (from > 0 && (static_cast<unsigned char>(text[from]) & 0xc0) == 0x80) --from;
+            const std::string what = size == 0 || code < 0x20 || code == 0x7f
+                                         ? "a control character"
+                                         : in_quotes(text.substr(i, size));
+            return "character " + std::to_string(characters + 1) + " (" + what + ", after " +
+                   in_quotes(text.substr(from, i - from)) +
+                   ") cannot be shown in the headset: its font draws ASCII only (typographic "
+                   "quotes, dashes and ellipses become their ASCII look-alikes); rephrase it in "
+                   "ASCII";
+        }
+        i += size;
+    }
+    if (characters > kMaxPageCharacters) {
+        return "has " + std::to_string(characters) + " characters; a page holds at most " +
+               std::to_string(kMaxPageCharacters) + " (split it into pages)";
+    }
+    return std::nullopt;
+}
+
+// Text for the headset. Line breaks are kept; long lines are wrapped when shown.
+std::optional<std::string> read_screen_text(const toml::node& node, std::string_view key,
+                                            TomlProblems& problems) {
+    const auto* value = node.as_string();
+    if (value == nullptr) {
+        report_wrong_type(node, key, "a string, the text shown to the participant", problems);
+        return std::nullopt;
+    }
+    if (std::optional<std::string> problem = screen_text_problem(value->get())) {
+        problems.add(node.source(), toml_key_prefix(key) + *problem);
+        return std::nullopt;
+    }
+    return value->get();
+}
+
+// A table with one key, text: [ready], [end] and each [[instructions]] page.
+std::optional<ScreenPage> read_page(const toml::table& table, std::string_view name,
+                                    TomlProblems& problems) {
+    const TomlScope scope{table, std::string(name)};
+    report_unknown_keys(scope, kPageKeys, problems);
+    const toml::node* node = find_required(scope, "text", "a string, the page's text", problems);
+    if (node == nullptr) return std::nullopt;
+    std::optional<std::string> text = read_screen_text(*node, scope.qualified("text"), problems);
+    if (!text) return std::nullopt;
+    return ScreenPage{std::move(*text)};
+}
+
+void read_instructions(const TomlScope& root, StudyDaySettings& day, TomlProblems& problems) {
+    const toml::node* node = root.table.get("instructions");
+    if (node == nullptr) return;
+    constexpr std::string_view kExpected = "an array of tables ([[instructions]], each with text)";
+    const toml::array* pages = node->as_array();
+    if (pages == nullptr) {
+        report_wrong_type(*node, "instructions", kExpected, problems);
+        return;
+    }
+    if (pages->size() > kMaxInstructionPages) {
+        problems.add(node->source(), toml_key_prefix("instructions") + "has " +
+                                         std::to_string(pages->size()) + " pages; at most " +
+                                         std::to_string(kMaxInstructionPages));
+        return;
+    }
+    for (std::size_t i = 0; i < pages->size(); ++i) {
+        const toml::node& element = (*pages)[i];
+        if (const toml::table* table = element.as_table()) {
+            if (auto page = read_page(*table, "instructions", problems)) {
+                day.instructions.push_back(std::move(*page));
+            }
+        } else {
+            problems.add(element.source(), toml_key_prefix("instructions") + "page " +
+                                               std::to_string(i + 1) +
+                                               " must be a table ([[instructions]] with text), "
+                                               "but is " +
+                                               std::string(toml_type_phrase(element.type())));
+        }
+    }
+}
+
+void read_single_page(const TomlScope& root, std::string_view key, std::optional<ScreenPage>& page,
+                      TomlProblems& problems) {
+    const std::string expected = "a table ([" + std::string(key) + "] with text)";
+    if (const toml::table* table = find_table(root, key, expected, problems)) {
+        page = read_page(*table, key, problems);
+    }
+}
+
+void read_counts(const TomlScope& root, Procedure procedure, StudyDaySettings& day,
+                 TomlProblems& problems) {
+    if (const toml::node* node = root.table.get("sessions")) {
+        if (auto n = read_integer_in(*node, "sessions", 1, kMaxSessions, problems)) {
+            day.sessions = static_cast<int>(*n);
+        }
+    }
+    if (const toml::node* node = root.table.get("repetitions")) {
+        if (auto n = read_integer_in(*node, "repetitions", 1, kMaxRepetitions, problems)) {
+            if (procedure == Procedure::Staircase && *n != 1) {
+                problems.add(node->source(), toml_key_prefix("repetitions") +
+                                                 "staircases choose their own trials (each "
+                                                 "scene's up to staircase.trials_per_scene); "
+                                                 "repetitions applies to procedure = 'constant'");
+            } else {
+                day.repetitions = static_cast<int>(*n);
+            }
+        }
+    }
+}
+
+void read_layout(const TomlScope& root, Procedure procedure, StudyDaySettings& day,
+                 TomlProblems& problems) {
+    if (const toml::node* node = root.table.get("blocking")) {
+        if (auto name = read_one_of(*node, "blocking", kBlockings, problems)) {
+            if (procedure == Procedure::Staircase) {
+                problems.add(node->source(), toml_key_prefix("blocking") +
+                                                 "staircases interleave their scenes' trials in "
+                                                 "rounds; blocking applies to procedure = "
+                                                 "'constant'");
+            } else {
+                day.blocking = *name == "none" ? Blocking::None : Blocking::Scene;
+            }
+        }
+    }
+    if (const toml::node* node = root.table.get("text_height_deg")) {
+        const std::string range =
+            "from " + format_number(kMinTextHeightDeg) + " to " + format_number(kMaxTextHeightDeg);
+        const std::optional<double> height = read_number(
+            *node, "text_height_deg", "a number of degrees of visual angle, " + range, problems);
+        if (!height) return;
+        if (!(*height >= kMinTextHeightDeg && *height <= kMaxTextHeightDeg)) {
+            problems.add(node->source(), toml_key_prefix("text_height_deg") +
+                                             format_number(*height) + " degrees is outside " +
+                                             range + " (1 degree reads well in a headset)");
+        } else {
+            day.text_height_deg = *height;
+        }
+    }
+}
+
+void read_break_duration(const toml::table& table, BreakSettings& breaks, TomlProblems& problems) {
+    const toml::node* node = table.get("min_s");
+    if (node == nullptr) return;
+    const std::optional<double> seconds =
+        read_number(*node, "breaks.min_s", "a number of seconds, 0 to 1800", problems);
+    if (!seconds) return;
+    if (!(*seconds >= 0.0)) {
+        problems.add(node->source(), toml_key_prefix("breaks.min_s") + format_number(*seconds) +
+                                         " is not a number of seconds >= 0");
+    } else if (*seconds > kMaxBreakSeconds) {
+        problems.add(node->source(), toml_key_prefix("breaks.min_s") + format_number(*seconds) +
+                                         " s: a break longer than 30 minutes is not a break "
+                                         "(at most 1800; end the session instead)");
+    } else {
+        breaks.min_s = *seconds;
+    }
+}
+
+// The triggers, after the blocking they depend on has been read; false when one was reported.
+bool read_break_triggers(const toml::table& table, Procedure procedure, Blocking blocking,
+                         BreakSettings& breaks, TomlProblems& problems) {
+    bool clean = true;
+    if (const toml::node* node = table.get("every_trials")) {
+        const auto n =
+            read_integer_in(*node, "breaks.every_trials", 0, kMaxBreakInterval, problems);
+        if (n) breaks.every_trials = static_cast<int>(*n);
+        clean = n.has_value();
+    }
+    const toml::node* node = table.get("between_blocks");
+    if (node == nullptr) return clean;
+    const std::optional<bool> flag = read_flag(*node, "breaks.between_blocks", problems);
+    if (!flag) return false;
+    if (*flag && procedure == Procedure::Staircase) {
+        problems.add(node->source(), toml_key_prefix("breaks.between_blocks") +
+                                         "a staircase session has no scene blocks (its scenes' "
+                                         "trials interleave); use every_trials");
+        return false;
+    }
+    if (*flag && blocking == Blocking::None) {
+        problems.add(node->source(), toml_key_prefix("breaks.between_blocks") +
+                                         "blocking = 'none' puts every trial in one block, so "
+                                         "there is no break between blocks; use every_trials "
+                                         "or blocking = 'scene'");
+        return false;
+    }
+    breaks.between_blocks = *flag;
+    return clean;
+}
+
+void read_breaks(const TomlScope& root, Procedure procedure, StudyDaySettings& day,
+                 TomlProblems& problems) {
+    const toml::table* table = find_table(
+        root, "breaks", "a table ([breaks] with every_trials and/or between_blocks)", problems);
+    if (table == nullptr) return;
+    const TomlScope scope{*table, "breaks"};
+    report_unknown_keys(scope, kBreakKeys, problems);
+    BreakSettings breaks;
+    const bool triggers_read =
+        read_break_triggers(*table, procedure, day.blocking, breaks, problems);
+    read_break_duration(*table, breaks, problems);
+    if (const toml::node* node = table->get("text")) {
+        if (auto text = read_screen_text(*node, "breaks.text", problems)) breaks.text = *text;
+    }
+    // Only when the triggers read cleanly: a wrong one was reported already.
+    if (triggers_read && !breaks.enabled()) {
+        problems.add(table->source(), toml_key_prefix("breaks") +
+                                          "shows no break: give every_trials = N (N > 0) or "
+                                          "between_blocks = true, or remove [breaks]");
+    }
+    day.breaks = std::move(breaks);
+}
+
+// "'age'", or "this variable" when its name was wrong (and reported).
+std::string variable_label(const ParticipantVariable& variable) {
+    return variable.name.empty() ? "this variable" : in_quotes(variable.name);
+}
+
+bool is_variable_name(std::string_view name) {
+    return !name.empty() && name.size() <= kMaxVariableName && name[0] >= 'a' && name[0] <= 'z' &&
+           std::ranges::all_of(name, [](char c) {
+               return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+           });
+}
+
+// Names become export columns (var_<name>) and --var NAME=VALUE arguments: lower case, unique.
+void read_variable_name(const TomlScope& scope, const std::vector<ParticipantVariable>& earlier,
+                        ParticipantVariable& variable, TomlProblems& problems) {
+    const toml::node* node = find_required(scope, "name", "a name, e.g. \"age\"", problems);
+    if (node == nullptr) return;
+    const auto* name = node->as_string();
+    if (name == nullptr) {
+        report_wrong_type(*node, "variables.name", "a string, e.g. \"age\"", problems);
+    } else if (!is_variable_name(name->get())) {
+        problems.add(node->source(), toml_key_prefix("variables.name") + in_quotes(name->get()) +
+                                         " is not a variable name: a lower-case letter, then "
+                                         "lower-case letters, digits or '_', at most " +
+                                         std::to_string(kMaxVariableName) + " characters");
+    } else if (std::ranges::find(earlier, name->get(), &ParticipantVariable::name) !=
+               earlier.end()) {
+        problems.add(node->source(), toml_key_prefix("variables.name") + "variable " +
+                                         in_quotes(name->get()) +
+                                         " is declared twice; each name is one export column "
+                                         "(var_" +
+                                         name->get() + ")");
+    } else {
+        variable.name = name->get();
+    }
+}
+
+std::optional<VariableType> read_variable_type(const TomlScope& scope, TomlProblems& problems) {
+    const toml::node* node =
+        find_required(scope, "type", "one of " + join(kVariableTypes), problems);
+    if (node == nullptr) return std::nullopt;
+    const auto name = read_one_of(*node, "variables.type", kVariableTypes, problems);
+    if (!name) return std::nullopt;
+    constexpr std::array<VariableType, 4> kTypes = {VariableType::Integer, VariableType::Number,
+                                                    VariableType::Choice, VariableType::Text};
+    return kTypes[static_cast<std::size_t>(std::ranges::find(kVariableTypes, *name) -
+                                           kVariableTypes.begin())];
+}
+
+// One end of an integer or number variable's range; integers only for an integer variable.
+std::optional<double> read_bound(const toml::node& node, std::string_view key, VariableType type,
+                                 TomlProblems& problems) {
+    if (type == VariableType::Integer) {
+        const auto* integer = node.as_integer();
+        if (integer == nullptr) {
+            report_wrong_type(node, key, "an integer (the variable is an integer)", problems);
+            return std::nullopt;
+        }
+        return static_cast<double>(integer->get());
+    }
+    const std::optional<double> value = read_number(node, key, "a number", problems);
+    if (value && !std::isfinite(*value)) {
+        problems.add(node.source(), toml_key_prefix(key) + "must be a finite number");
+        return std::nullopt;
+    }
+    return value;
+}
+
+void read_variable_range(const toml::table& table, ParticipantVariable& variable,
+                         TomlProblems& problems) {
+    const bool numeric =
+        variable.type == VariableType::Integer || variable.type == VariableType::Number;
+    for (auto [key, field] : {std::pair{"min", &ParticipantVariable::min},
+                              std::pair{"max", &ParticipantVariable::max}}) {
+        const toml::node* node = table.get(key);
+        if (node == nullptr) continue;
+        const std::string qualified = "variables." + std::string(key);
+        if (!numeric) {
+            problems.add(node->source(), toml_key_prefix(qualified) +
+                                             "applies to integer and number variables, but " +
+                                             variable_label(variable) + " is of type " +
+                                             in_quotes(variable_type_name(variable.type)));
+            continue;
+        }
+        variable.*field = read_bound(*node, qualified, variable.type, problems);
+    }
+    if (variable.min && variable.max && *variable.min > *variable.max) {
+        problems.add(table.get("max")->source(),
+                     toml_key_prefix("variables.max") + format_number(*variable.max) +
+                         " is below min = " + format_number(*variable.min));
+    }
+}
+
+// A choice is typed as --var NAME=CHOICE: printable, not blank, each once.
+bool accept_choice(const std::string& choice, const toml::node& element,
+                   const std::vector<std::string>& earlier, TomlProblems& problems) {
+    const std::string prefix = toml_key_prefix("variables.choices");
+    const bool control = std::ranges::any_of(
+        choice, [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+    std::string problem;
+    if (is_blank(choice)) {
+        problem = "a choice is empty";
+    } else if (control) {
+        problem = "choice " + in_quotes(choice) + " has a control character";
+    } else if (std::ranges::find(earlier, choice) != earlier.end()) {
+        problem = "duplicate choice " + in_quotes(choice) + "; list each once";
+    }
+    if (!problem.empty()) problems.add(element.source(), prefix + problem);
+    return problem.empty();
+}
+
+void read_variable_choices(const toml::table& table, ParticipantVariable& variable,
+                           TomlProblems& problems) {
+    const toml::node* node = table.get("choices");
+    if (variable.type != VariableType::Choice) {
+        if (node != nullptr) {
+            problems.add(node->source(), toml_key_prefix("variables.choices") +
+                                             "applies to choice variables, but " +
+                                             variable_label(variable) + " is of type " +
+                                             in_quotes(variable_type_name(variable.type)));
+        }
+        return;
+    }
+    const TomlScope scope{table, "variables"};
+    constexpr std::string_view kExpected = "an array of strings, e.g. [\"normal\", \"corrected\"]";
+    if (node == nullptr) node = find_required(scope, "choices", kExpected, problems);
+    if (node == nullptr) return;
+    const toml::array* array = node->as_array();
+    if (array == nullptr || array->empty()) {
+        if (array == nullptr)
+            report_wrong_type(*node, "variables.choices", kExpected, problems);
+        else
+            problems.add(node->source(), toml_key_prefix("variables.choices") + "is empty");
+        return;
+    }
+    for (std::size_t i = 0; i < array->size(); ++i) {
+        const toml::node& element = (*array)[i];
+        const auto* choice = element.as_string();
+        if (choice == nullptr) {
+            report_wrong_type(element, "variables.choices element " + std::to_string(i + 1),
+                              "a string", problems);
+        } else if (accept_choice(choice->get(), element, variable.choices, problems)) {
+            variable.choices.push_back(choice->get());
+        }
+    }
+}
+
+void read_variable_help(const toml::table& table, ParticipantVariable& variable,
+                        TomlProblems& problems) {
+    if (const toml::node* node = table.get("required")) {
+        if (auto flag = read_flag(*node, "variables.required", problems)) variable.required = *flag;
+    }
+    const toml::node* node = table.get("help");
+    if (node == nullptr) return;
+    const auto* help = node->as_string();
+    if (help == nullptr) {
+        report_wrong_type(*node, "variables.help", "a string, one line", problems);
+        return;
+    }
+    const bool control = std::ranges::any_of(
+        help->get(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+    if (control || help->get().size() > kMaxVariableHelp) {
+        problems.add(node->source(), toml_key_prefix("variables.help") +
+                                         "must be one line of at most " +
+                                         std::to_string(kMaxVariableHelp) +
+                                         " characters (it is shown in forms and messages)");
+        return;
+    }
+    variable.help = help->get();
+}
+
+// One [[variables]] table; nothing when it has a problem.
+std::optional<ParticipantVariable> read_variable(const toml::table& table,
+                                                 const std::vector<ParticipantVariable>& earlier,
+                                                 TomlProblems& problems) {
+    const TomlScope scope{table, "variables"};
+    report_unknown_keys(scope, kVariableKeys, problems);
+    ParticipantVariable variable;
+    read_variable_name(scope, earlier, variable, problems);
+    const std::optional<VariableType> type = read_variable_type(scope, problems);
+    read_variable_help(table, variable, problems);
+    if (!type) return std::nullopt;  // the range and choices depend on it
+    variable.type = *type;
+    read_variable_range(table, variable, problems);
+    read_variable_choices(table, variable, problems);
+    if (variable.name.empty()) return std::nullopt;
+    return variable;
+}
+
+void read_variables(const TomlScope& root, StudyDaySettings& day, TomlProblems& problems) {
+    const toml::node* node = root.table.get("variables");
+    if (node == nullptr) return;
+    constexpr std::string_view kExpected =
+        "an array of tables ([[variables]], each with name and type)";
+    const toml::array* array = node->as_array();
+    if (array == nullptr) {
+        report_wrong_type(*node, "variables", kExpected, problems);
+        return;
+    }
+    if (array->size() > kMaxVariables) {
+        problems.add(node->source(), toml_key_prefix("variables") + "declares " +
+                                         std::to_string(array->size()) + " variables; at most " +
+                                         std::to_string(kMaxVariables));
+        return;
+    }
+    for (std::size_t i = 0; i < array->size(); ++i) {
+        const toml::node& element = (*array)[i];
+        const toml::table* table = element.as_table();
+        if (table == nullptr) {
+            problems.add(element.source(), toml_key_prefix("variables") + "element " +
+                                               std::to_string(i + 1) +
+                                               " must be a table ([[variables]] with name and "
+                                               "type), but is " +
+                                               std::string(toml_type_phrase(element.type())));
+        } else if (auto variable = read_variable(*table, day.variables, problems)) {
+            day.variables.push_back(std::move(*variable));
+        }
+    }
+}
+
+}  // namespace
+
+void read_study_day(const TomlScope& root, Procedure procedure, StudyDaySettings& day,
+                    TomlProblems& problems) {
+    read_counts(root, procedure, day, problems);
+    read_layout(root, procedure, day, problems);  // blocking before [breaks]: they depend on it
+    read_instructions(root, day, problems);
+    read_single_page(root, "ready", day.ready, problems);
+    read_breaks(root, procedure, day, problems);
+    read_single_page(root, "end", day.end, problems);
+    read_variables(root, day, problems);
+}
+
+void check_break_interval(const TomlScope& root, const StudyDaySettings& day,
+                          std::size_t data_trials, TomlProblems& problems) {
+    if (!day.breaks || day.breaks->every_trials <= 0 || data_trials == 0) return;
+    const auto every = static_cast<std::size_t>(day.breaks->every_trials);
+    if (every < data_trials) return;
+    const toml::node* node = root.table.at_path("breaks.every_trials").node();
+    if (node == nullptr) return;
+    problems.add(node->source(), toml_key_prefix("breaks.every_trials") + std::to_string(every) +
+                                     ", but a session has " + std::to_string(data_trials) +
+                                     " data trials, so this break would never be shown; use a "
+                                     "smaller number");
+}
+
+}  // namespace monoplane::study

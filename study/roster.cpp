@@ -1,0 +1,42 @@
+#include "study/roster.h"
+
+#include <algorithm>
+
+namespace monoplane::study {
+
+std::string RosterEntry::state() const {
+    if (holder) return "running (" + holder->describe() + ")";
+    if (row.status == SessionStatus::Running || row.status == SessionStatus::Paused)
+        return "interrupted";
+    return std::string(session_status_name(row.status));
+}
+
+Result<std::vector<RosterEntry>> read_roster(const std::vector<std::filesystem::path>& databases) {
+    std::vector<RosterEntry> entries;
+    for (const std::filesystem::path& database : databases) {
+        if (!std::filesystem::is_regular_file(database))
+            return Error{"no study database '" + database.string() + "'"};
+        Result<std::unique_ptr<StudyStore>> store = StudyStore::open(database);
+        if (!store) return store.error();
+        Result<std::vector<RosterRow>> roster = store.value()->roster();
+        if (!roster) return roster.error();
+        std::vector<RosterRow> rows = std::move(roster).value();
+        std::ranges::sort(rows, {}, [](const RosterRow& r) {
+            return std::pair(r.participant_code, r.session_number);
+        });
+        for (RosterRow& row : rows) {
+            RosterEntry entry{database, std::move(row), std::nullopt};
+            if (entry.row.status == SessionStatus::Running ||
+                entry.row.status == SessionStatus::Paused) {
+                Result<std::optional<SessionHolder>> holder =
+                    SessionHold::holder(database, entry.row.session_id);
+                if (!holder) return holder.error();
+                entry.holder = *holder;
+            }
+            entries.push_back(std::move(entry));
+        }
+    }
+    return entries;
+}
+
+}  // namespace monoplane::study

@@ -1,0 +1,174 @@
+#include "study/session_start.h"
+
+#include <algorithm>
+#include <map>
+
+namespace monoplane::study {
+namespace {
+
+// What the database already knows about the participant and their study-wide numbers.
+struct Known {
+    std::optional<ParticipantRecord> participant;
+    int participant_count = 0;
+    std::map<int, std::string> code_by_number;  // participant numbers in use
+};
+
+Result<Known> look_up(const StudyStore* store, const std::string& code) {
+    Known known;
+    if (store == nullptr) return known;
+    Result<std::optional<ParticipantRecord>> participant = store->participant(code);
+    if (!participant) return participant.error();
+    known.participant = *participant;
+    Result<int> count = store->participant_count();
+    if (!count) return count.error();
+    known.participant_count = *count;
+    Result<std::vector<RosterRow>> roster = store->roster();
+    if (!roster) return roster.error();
+    for (const RosterRow& row : *roster)
+        known.code_by_number.emplace(row.participant_number, row.participant_code);
+    return known;
+}
+
+std::string participant_text(const std::string& code) {
+    return "participant " + code;
+}
+
+void check_session_number(const SessionRequest& r, const Protocol& protocol, const Known& known,
+                          int& number, std::vector<std::string>& problems) {
+    const int next = known.participant ? known.participant->next_session_number() : 1;
+    number = r.session_number.value_or(next);
+    const std::string who = participant_text(r.participant_code);
+    if (number < 1) {
+        problems.push_back("--session " + std::to_string(number) +
+                           ": sessions are numbered from 1");
+    } else if (number < next) {
+        problems.push_back("--session " + std::to_string(number) + ": " + who +
+                           " already has session " + std::to_string(number) +
+                           "; to continue it: study resume --participant " + r.participant_code +
+                           " --session " + std::to_string(number));
+    } else if (number > next) {
+        problems.push_back("--session " + std::to_string(number) + ": " + who + " has " +
+                           std::to_string(next - 1) + " session(s); the next is session " +
+                           std::to_string(next));
+    } else if (number > protocol.day.sessions) {
+        problems.push_back(who + " already has " + std::to_string(number - 1) +
+                           " session(s), and protocol '" + protocol.name +
+                           "' has sessions = " + std::to_string(protocol.day.sessions) +
+                           " per participant; to continue an interrupted one: study resume "
+                           "--participant " +
+                           r.participant_code);
+    }
+}
+
+// The 0-based number that picks the Latin-square row.
+void check_participant_number(const SessionRequest& r, const Known& known, int& number,
+                              std::vector<std::string>& problems) {
+    if (known.participant) {
+        number = known.participant->participant_number;
+        if (r.participant_number && *r.participant_number - 1 != number) {
+            problems.push_back("--participant-number " + std::to_string(*r.participant_number) +
+                               ": " + participant_text(r.participant_code) +
+                               " is participant number " + std::to_string(number + 1) +
+                               " since their first session");
+        }
+        return;
+    }
+    number = r.participant_number ? *r.participant_number - 1 : known.participant_count;
+    if (r.participant_number && *r.participant_number < 1) {
+        problems.push_back("--participant-number " + std::to_string(*r.participant_number) +
+                           ": participants are numbered from 1");
+        return;
+    }
+    if (const auto taken = known.code_by_number.find(number); taken != known.code_by_number.end()) {
+        problems.push_back("participant number " + std::to_string(number + 1) +
+                           " is taken by participant " + taken->second +
+                           " in this database; give --participant-number N with a free number");
+    }
+}
+
+// A returning participant's variables are theirs: given again, they must not differ.
+void check_returning_variables(const SessionRequest& r, const Protocol& protocol,
+                               const ParticipantRecord& participant,
+                               std::vector<VariableValue>& values,
+                               std::vector<std::string>& problems) {
+    values = participant.variables;
+    for (const std::string& assignment : r.variables) {
+        const auto eq = assignment.find('=');
+        const std::string name = assignment.substr(0, eq);
+        const auto declared =
+            std::ranges::find(protocol.day.variables, name, &ParticipantVariable::name);
+        const auto recorded = std::ranges::find(participant.variables, name, &VariableValue::name);
+        if (eq == std::string::npos || declared == protocol.day.variables.end()) {
+            // The recorded values stand for the required ones: only the name is in question.
+            std::vector<ParticipantVariable> optional = protocol.day.variables;
+            for (ParticipantVariable& v : optional) v.required = false;
+            Result<std::vector<VariableValue>> one = check_variables(optional, {assignment});
+            if (!one) problems.push_back(one.error().message);
+            continue;
+        }
+        Result<std::string> value = check_variable_value(*declared, assignment.substr(eq + 1));
+        if (!value) {
+            problems.push_back(value.error().message);
+        } else if (recorded == participant.variables.end() || recorded->value != *value) {
+            problems.push_back("--var " + assignment + ": " + participant_text(r.participant_code) +
+                               " has " + name + " = " +
+                               (recorded == participant.variables.end() ? std::string("no value")
+                                                                        : recorded->value) +
+                               " recorded at their first session; variables do not change");
+        }
+    }
+}
+
+std::string joined(const std::vector<std::string>& problems) {
+    std::string text;
+    for (const std::string& p : problems) text += (text.empty() ? "" : "\n") + p;
+    return text;
+}
+
+}  // namespace
+
+Result<bool> check_participant_code(const std::string& code) {
+    const bool ok = !code.empty() && code.size() <= 64 && std::ranges::all_of(code, [](char c) {
+        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+               c == '_' || c == '-';
+    });
+    if (ok) return true;
+    return Error{"participant code '" + code +
+                 "': use 1 to 64 letters, digits, '_' or '-' (a pseudonym, never a name)"};
+}
+
+Result<SessionStart> plan_session(const StudyStore* store, const Protocol& protocol,
+                                  const SessionRequest& r) {
+    if (Result<bool> ok = check_participant_code(r.participant_code); !ok) return ok.error();
+    Result<Known> known = look_up(store, r.participant_code);
+    if (!known) return known.error();
+    std::vector<std::string> problems;
+    SessionStart start;
+    start.new_participant = !known->participant;
+    SessionInfo& info = start.info;
+    check_session_number(r, protocol, *known, info.session_number, problems);
+    check_participant_number(r, *known, info.participant_number, problems);
+    if (known->participant) {
+        check_returning_variables(r, protocol, *known->participant, info.variables, problems);
+        info.participant_index = known->participant->participant_index;
+    } else {
+        Result<std::vector<VariableValue>> values =
+            check_variables(protocol.day.variables, r.variables);
+        if (!values)
+            problems.push_back(values.error().message);
+        else
+            info.variables = *values;
+        info.participant_index = known->participant_count;
+    }
+    if (!problems.empty()) return Error{joined(problems)};
+    info.participant_code = r.participant_code;
+    info.protocol_name = protocol.name;
+    info.protocol_hash = protocol.text_hash;
+    info.protocol_text = protocol.text;
+    info.seed = r.seed;
+    info.render = protocol.render;
+    start.schedule = make_schedule(protocol, r.seed, info.participant_number, info.session_number);
+    return start;
+}
+
+}  // namespace monoplane::study
