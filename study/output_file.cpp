@@ -62,8 +62,15 @@ std::optional<std::string> input_conflict(const fs::path& out,
             return quoted(out) + " is the same file as " + quoted(input) + ", " + what;
         }
         for (std::string_view suffix : kDatabaseCompanions) {
+            // Beside the path as given and beside the link's target: SQLite and the session
+            // holds use the real file. Compared by path too, for a companion not there yet.
+            std::error_code error;
             const fs::path companion = input.string() + std::string(suffix);
-            if (same_file(out, companion)) {
+            const fs::path real_companion =
+                fs::weakly_canonical(input, error).string() + std::string(suffix);
+            const fs::path real_out = fs::weakly_canonical(out, error);
+            if (same_file(out, companion) || same_file(out, real_companion) ||
+                real_out == fs::weakly_canonical(companion, error) || real_out == real_companion) {
                 return quoted(out) + " belongs to the database " + quoted(input) +
                        " (SQLite or a running session keeps it beside the database): writing "
                        "there would damage the study";

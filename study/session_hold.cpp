@@ -23,7 +23,11 @@ constexpr std::int64_t kLineBytes = 128;
 constexpr std::int64_t kMaxSessionId = std::int64_t{1} << 40;
 
 std::string lock_file(const std::filesystem::path& database) {
-    return database.string() + "-holds";
+    // The file as it really is: a symbolic link or another spelling of the database's path must
+    // find the same holds (SQLite writes to the link's target).
+    std::error_code error;
+    const std::filesystem::path real = std::filesystem::weakly_canonical(database, error);
+    return (error ? database : real).string() + "-holds";
 }
 
 std::string utc_now_iso8601() {

@@ -51,6 +51,29 @@ std::vector<int> planned_breaks(const StudyDaySettings& day, const Schedule& sch
     return breaks;
 }
 
+namespace {
+
+// How long the frame log shows a break lasted in the run that started it: the frames from
+// break_started's on, in order, up to the first that belongs to another run (its time goes back,
+// or jumps by more than a second: a resumed run's clock has another origin, and its frames are
+// numbered on). A later run's share of the break is not counted: the break is never cut short.
+std::int64_t frames_elapsed(const std::vector<FrameRecord>& frames, std::int64_t first_frame,
+                            std::int64_t started_ns) {
+    constexpr std::int64_t kRunGapNs = 1'000'000'000;
+    std::vector<const FrameRecord*> run;
+    for (const FrameRecord& f : frames)
+        if (f.frame >= first_frame) run.push_back(&f);
+    std::ranges::sort(run, {}, &FrameRecord::frame);
+    std::int64_t previous_ns = started_ns;
+    for (const FrameRecord* f : run) {
+        if (f->display_time_ns < previous_ns || f->display_time_ns - previous_ns > kRunGapNs) break;
+        previous_ns = f->display_time_ns;
+    }
+    return previous_ns - started_ns;
+}
+
+}  // namespace
+
 ScreenResume resume_screens(const std::vector<TrialEvent>& events, int instruction_pages,
                             const std::vector<FrameRecord>& frames) {
     ScreenResume resume;
@@ -92,11 +115,8 @@ ScreenResume resume_screens(const std::vector<TrialEvent>& events, int instructi
         }
     }
     if (resume.break_open && break_started_frame >= 0) {
-        for (const FrameRecord& f : frames) {
-            if (f.frame < break_started_frame) continue;
-            resume.break_elapsed_ns =
-                std::max(resume.break_elapsed_ns, f.display_time_ns - break_started_ns);
-        }
+        resume.break_elapsed_ns = std::max(
+            resume.break_elapsed_ns, frames_elapsed(frames, break_started_frame, break_started_ns));
     }
     // The last page confirmed means the instructions were read (a page before it may have been
     // left by going back); otherwise they restart at the first page not confirmed.

@@ -11,11 +11,13 @@ struct Known {
     std::optional<ParticipantRecord> participant;
     int participant_count = 0;
     std::map<int, std::string> code_by_number;  // participant numbers in use
+    std::string database = "DATABASE";          // for the commands the messages suggest
 };
 
 Result<Known> look_up(const StudyStore* store, const std::string& code) {
     Known known;
     if (store == nullptr) return known;
+    known.database = store->path().string();
     Result<std::optional<ParticipantRecord>> participant = store->participant(code);
     if (!participant) return participant.error();
     known.participant = *participant;
@@ -42,10 +44,10 @@ void check_session_number(const SessionRequest& r, const Protocol& protocol, con
         problems.push_back("--session " + std::to_string(number) +
                            ": sessions are numbered from 1");
     } else if (number < next) {
-        problems.push_back("--session " + std::to_string(number) + ": " + who +
-                           " already has session " + std::to_string(number) +
-                           "; to continue it: study resume --participant " + r.participant_code +
-                           " --session " + std::to_string(number));
+        problems.push_back(
+            "--session " + std::to_string(number) + ": " + who + " already has session " +
+            std::to_string(number) + "; to continue it: study resume --db " + known.database +
+            " --participant " + r.participant_code + " --session " + std::to_string(number));
     } else if (number > next) {
         problems.push_back("--session " + std::to_string(number) + ": " + who + " has " +
                            std::to_string(next - 1) + " session(s); the next is session " +
@@ -54,9 +56,9 @@ void check_session_number(const SessionRequest& r, const Protocol& protocol, con
         problems.push_back(who + " already has " + std::to_string(number - 1) +
                            " session(s), and protocol '" + protocol.name +
                            "' has sessions = " + std::to_string(protocol.day.sessions) +
-                           " per participant; to continue an interrupted one: study resume "
-                           "--participant " +
-                           r.participant_code);
+                           " per participant (study list --db " + known.database +
+                           " shows whether one was interrupted: study resume --db " +
+                           known.database + " --participant " + r.participant_code + ")");
     }
 }
 

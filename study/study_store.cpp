@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <ctime>
+#include <functional>
 #include <set>
 #include <system_error>
 
@@ -592,7 +593,9 @@ Result<bool> insert_trials(const Connection& db, std::int64_t session_id,
 
 }  // namespace
 
-Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Schedule& schedule) {
+Result<std::int64_t> StudyStore::begin_session(
+    const SessionInfo& info, const Schedule& schedule,
+    const std::function<Result<bool>(std::int64_t)>& before_commit) {
     const Connection& db = impl_->db;
     if (!valid_participant_code(info.participant_code))
         return Error{"participant code '" + info.participant_code +
@@ -623,6 +626,8 @@ Result<std::int64_t> StudyStore::begin_session(const SessionInfo& info, const Sc
     if (Result<bool> ok = write_planned_trials(db, *session_id, schedule); !ok) return ok.error();
     if (Result<bool> ok = write_scene_files(db, *session_id, info.scene_files); !ok)
         return ok.error();
+    if (before_commit)
+        if (Result<bool> ok = before_commit(*session_id); !ok) return ok.error();
     if (Result<bool> ok = tx.value().commit("starting a session"); !ok) return ok.error();
     return *session_id;
 }

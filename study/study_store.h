@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -146,7 +147,12 @@ class StudyStore final : public SessionLog {
     // digests (info.scene_files, checked by validate_scene_files: each imported scene of the
     // schedule needs its record) in one transaction, before the first trial. A staircase's
     // adaptive trials are stored as plans without a mono plane (record_stimulus adds it).
-    Result<std::int64_t> begin_session(const SessionInfo& info, const Schedule& schedule);
+    // before_commit (optional): called with the new session's id inside the transaction, before
+    // it commits; its error rolls the session back. `study run` takes the session's hold there,
+    // so no other process can see the session running without a holder.
+    Result<std::int64_t> begin_session(
+        const SessionInfo& info, const Schedule& schedule,
+        const std::function<Result<bool>(std::int64_t)>& before_commit = {});
 
     // The schedule stored for a session (adaptive trials not started yet with a NaN mono
     // plane), and where to continue: the first undecided trial or unstarted slot.

@@ -233,7 +233,8 @@ class HeadsetLoop {
     void run() {
         for (;;) {
             if (!headset_.poll_events().value_or_throw()) break;
-            if (live_->finished() && end_screen_seen()) request_exit();
+            // A runtime that stops showing frames ends the end screen's hold too.
+            if (live_->finished() && (end_screen_seen() || !headset_.running())) request_exit();
             if (!headset_.running()) {
                 // Waiting for the runtime (READY, or EXITING after the end): nothing to render.
                 if (experimenter_) experimenter_->frame({});

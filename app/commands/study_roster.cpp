@@ -113,13 +113,17 @@ void note_study(const StudyOptions& o) {
     auto store = study::StudyStore::open(o.db).value_or_throw();
     std::int64_t session_id = 0;
     if (o.session_id) {
+        if (!o.participant.empty() || o.session_number)
+            throw UserError(
+                "--session-id names a session alone: leave out --participant and "
+                "--session");
         session_id = *o.session_id;
         store->session(session_id).value_or_throw();  // an unknown id is an error naming it
     } else {
         if (o.participant.empty())
             throw UserError(
-                "say which session the note is for: --participant CODE [--session N] "
-                "or --session-id ID");
+                "say which session the note is for: --participant CODE [--session N] (N: "
+                "that participant's session number) or --session-id ID (study list shows both)");
         const auto record = store->participant(o.participant).value_or_throw();
         if (!record) throw UserError(o.db + ": no participant " + o.participant);
         const int number = o.session_number.value_or(record->next_session_number() - 1);

@@ -169,8 +169,18 @@ void run_study(const StudyOptions& o, const GlobalOptions& global) {
     const auto begin = [&](const std::string& runtime, const std::string& device) {
         info.runtime = runtime;
         info.device = device;
-        const std::int64_t id = store->begin_session(info, schedule).value_or_throw();
-        hold.emplace(study::SessionHold::acquire(o.db, id).value_or_throw());
+        // Held before it commits: no other process ever sees it running without its holder.
+        const std::int64_t id =
+            store
+                ->begin_session(info, schedule,
+                                [&](std::int64_t new_id) -> Result<bool> {
+                                    Result<study::SessionHold> taken =
+                                        study::SessionHold::acquire(o.db, new_id);
+                                    if (!taken) return taken.error();
+                                    hold.emplace(std::move(taken).value());
+                                    return true;
+                                })
+                .value_or_throw();
         std::cerr << "session " << id << ": " << session_title(info) << " (participant number "
                   << info.participant_number + 1 << "), protocol " << protocol.name << ", seed "
                   << info.seed << ", " << schedule.trials.size() << " trials\n";
@@ -243,6 +253,11 @@ void resume_study(const StudyOptions& o, const GlobalOptions& global) {
     // A session another process is running is never taken over: its participant is in the
     // headset. The hold is the operating system's, so a dead process's session resumes at once.
     study::SessionHold hold = study::SessionHold::acquire(o.db, session_id).value_or_throw();
+    // The holder may have finished it between the check above and the hold.
+    if (store->session(session_id).value_or_throw().status == study::SessionStatus::Completed) {
+        throw UserError("session " + std::to_string(session_id) + " (" + session_title(info) +
+                        ") was completed just now by the process that ran it");
+    }
     check_scene_files_before_resume(*store, info, o.accept_changed_scenes);
     // The protocol as it was when the session began, not the file as it is now; its scene files
     // where the session recorded them.

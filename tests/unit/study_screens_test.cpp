@@ -192,9 +192,23 @@ TEST(SessionScreens, ResumeMidBreakCountsTheFramesLoggedDuringIt) {
     BreakSettings b = breaks(2, false);
     b.min_s = 30;
     EXPECT_EQ(break_remaining_ns(b, r.break_elapsed_ns), 30 * kS - 269 * kS / 90);
-    // Frames before the break (the trial's) do not count; nor do frames after a break ended.
+    // Frames before the break (the trial's) do not count.
     const ScreenResume none = resume_screens(events, 0, {frames.begin(), frames.begin() + 100});
     EXPECT_EQ(none.break_elapsed_ns, 0);
+    // A resumed run that was killed again during the same break logged its frames on with
+    // another clock (simxr starts at 10 s): they are not counted, the first run's 3 s are.
+    std::vector<FrameRecord> twice = frames;
+    for (std::int64_t f = 4770; f < 4770 + 90; ++f) {
+        FrameRecord r;
+        r.frame = f;
+        r.display_time_ns = 10 * kS + (f - 4770) * kS / 90;
+        twice.push_back(r);
+    }
+    EXPECT_EQ(resume_screens(events, 0, twice).break_elapsed_ns, 269 * kS / 90);
+    // A real runtime's clock runs on through the downtime: a jump of minutes is another run too.
+    for (FrameRecord& r : twice)
+        if (r.frame >= 4770) r.display_time_ns += 200 * kS;
+    EXPECT_EQ(resume_screens(events, 0, twice).break_elapsed_ns, 269 * kS / 90);
 }
 
 TEST(SessionScreens, ResumeMidBreakTellsHowLongItLasted) {
