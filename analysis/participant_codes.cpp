@@ -111,6 +111,40 @@ std::string_view shared_codes_name(SharedCodes rule) {
     return "refuse";
 }
 
+namespace {
+
+// One person's sessions from several files must fit together: sessions numbered apart, one
+// participant number (it picked their Latin-square row), one set of variables. Otherwise the
+// files hold different people under one code, or one session twice; says which, else "".
+std::string same_person_conflicts(const Dataset& data, const std::vector<std::string>& shared) {
+    std::string problems;
+    for (const std::string& code : shared) {
+        std::map<int, std::string> session_source;
+        const SessionRow* first = nullptr;
+        for (const SessionRow& s : data.sessions) {
+            if (s.participant != code) continue;
+            const auto [at, fresh] = session_source.emplace(s.session_number, s.source);
+            std::string problem;
+            if (!fresh && at->second != s.source) {
+                problem = "session " + std::to_string(s.session_number) + " in both " + at->second +
+                          " and " + s.source;
+            } else if (first && first->participant_number != s.participant_number) {
+                problem = "participant number " + std::to_string(first->participant_number + 1) +
+                          " in " + first->source + " but " +
+                          std::to_string(s.participant_number + 1) + " in " + s.source;
+            } else if (first && !s.variables.empty() && !first->variables.empty() &&
+                       first->variables != s.variables) {
+                problem = "different variables in " + first->source + " and " + s.source;
+            }
+            if (!problem.empty()) problems += "\n  " + code + ": " + problem;
+            if (!first) first = &s;
+        }
+    }
+    return problems;
+}
+
+}  // namespace
+
 Result<bool> join_participant_codes(Dataset& data, SharedCodes rule) {
     const std::map<std::string, std::vector<std::string>> by_code = sources_by_code(data);
     std::map<std::vector<std::string>, std::vector<std::string>> groups;  // sources -> codes
@@ -121,6 +155,15 @@ Result<bool> join_participant_codes(Dataset& data, SharedCodes rule) {
         groups[sources].push_back(code);
     }
     if (rule == SharedCodes::Refuse && !groups.empty()) return Error{refusal(groups)};
+    if (rule == SharedCodes::SamePerson) {
+        const std::string conflicts = same_person_conflicts(data, shared);
+        if (!conflicts.empty()) {
+            return Error{
+                "--codes same-person: these codes do not look like one person each:" + conflicts +
+                "\nIf each file's codes are its own, use --codes per-database; if a "
+                "session was exported twice, give that file once."};
+        }
+    }
     if (rule == SharedCodes::PerDatabase) {
         std::vector<std::string> sources = data.sources;
         for (const auto& [code, holders] : by_code)

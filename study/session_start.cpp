@@ -48,6 +48,15 @@ void check_session_number(const SessionRequest& r, const Protocol& protocol, con
             "--session " + std::to_string(number) + ": " + who + " already has session " +
             std::to_string(number) + "; to continue it: study resume --db " + known.database +
             " --participant " + r.participant_code + " --session " + std::to_string(number));
+    } else if (number > next && !known.participant) {
+        // Their earlier sessions ran on another PC: the row they were given there goes on.
+        if (!r.participant_number) {
+            problems.push_back("--session " + std::to_string(number) + ": " + who +
+                               " has no session in " + known.database +
+                               " yet; to continue sessions run on another PC, also give "
+                               "--participant-number (their number there), so their scene order "
+                               "goes on");
+        }
     } else if (number > next) {
         problems.push_back("--session " + std::to_string(number) + ": " + who + " has " +
                            std::to_string(next - 1) + " session(s); the next is session " +

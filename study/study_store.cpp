@@ -480,12 +480,11 @@ Result<bool> check_returning(const Connection& db, const ParticipantRecord& p,
     return true;
 }
 
-// A new participant: their first session, and a study-wide number no one else in the file has.
+// A new participant: a study-wide number no one else in the file has. Their first session here
+// is usually session 1; a later number continues a participant whose earlier sessions ran on
+// another PC (`study run --session N`, with the participant number they have there).
 Result<bool> check_new(const Connection& db, const SessionInfo& info, const Schedule& schedule) {
     const std::string who = "participant '" + info.participant_code + "'";
-    if (info.session_number != 1)
-        return Error{who + " has no session in '" + db.path() + "' yet; their first is " +
-                     numbered(1) + ", not " + numbered(info.session_number) + "."};
     // The schedule's Latin-square row is the number recorded: any other would misstate the
     // counterbalancing. 0 in info is the default (not given).
     if (info.participant_number != 0 && info.participant_number != schedule.participant_index)

@@ -156,17 +156,38 @@ if(NOT html MATCHES "site-y/c2" OR html MATCHES "<script"
    OR NOT html MATCHES "&lt;script&gt;alert\\(&apos;x&apos;\\)&lt;/script&gt; &amp; &quot;quoted&quot;")
   message(FATAL_ERROR "report.html must list the prefixed codes and the note, escaped")
 endif()
-run_ok("analyze --codes same-person" ${MONOPLANE} analyze --db ${x} --db ${y} --out
+# Two sites' c1 are two people: --codes same-person is refused, naming the clash.
+execute_process(COMMAND ${MONOPLANE} analyze --db ${x} --db ${y} --out ${OUT}/not-same
+                        --codes same-person RESULT_VARIABLE rc ERROR_VARIABLE log)
+if(rc EQUAL 0 OR NOT log MATCHES "c1: session 1 in both" OR EXISTS ${OUT}/not-same)
+  message(FATAL_ERROR "--codes same-person over two people must be refused (${rc}): ${log}")
+endif()
+# One person on two lab PCs: session 1 on the first, session 2 on the second with their number.
+set(pc1 ${OUT}/pc-1.sqlite)
+set(pc2 ${OUT}/pc-2.sqlite)
+file(READ ${protocol} demo_text)
+file(WRITE ${OUT}/two-sessions.toml "sessions = 2\n${demo_text}")
+foreach(participant c1 c2)
+  string(SUBSTRING ${participant} 1 1 number)
+  math(EXPR seed "${seed} + 1")
+  run_ok("study run pc-1 ${participant}" ${MONOPLANE} study run --protocol ${OUT}/two-sessions.toml
+         --participant ${participant} --db ${pc1} --headset none --observer default --seed ${seed})
+  math(EXPR seed "${seed} + 1")
+  run_ok("study run pc-2 ${participant}" ${MONOPLANE} study run --protocol ${OUT}/two-sessions.toml
+         --participant ${participant} --db ${pc2} --headset none --observer default --seed ${seed}
+         --session 2 --participant-number ${number})
+endforeach()
+run_ok("analyze --codes same-person" ${MONOPLANE} analyze --db ${pc1} --db ${pc2} --out
        ${OUT}/same-person --codes same-person)
 file(READ ${OUT}/same-person/summary.json json)
 string(JSON participants GET "${json}" participants)
 string(JSON sessions GET "${json}" sessions)
 string(JSON first GET "${json}" participant_details 0 participant)
 string(JSON first_sessions LENGTH "${json}" participant_details 0 sources)
-if(NOT participants EQUAL 3 OR NOT sessions EQUAL 6 OR NOT first STREQUAL "c1"
+if(NOT participants EQUAL 2 OR NOT sessions EQUAL 4 OR NOT first STREQUAL "c1"
    OR NOT first_sessions EQUAL 2)
-  message(FATAL_ERROR "--codes same-person: ${participants} participants (3), ${sessions} "
-                      "sessions (6), ${first} (c1) from ${first_sessions} files (2)")
+  message(FATAL_ERROR "--codes same-person: ${participants} participants (2), ${sessions} "
+                      "sessions (4), ${first} (c1) from ${first_sessions} files (2)")
 endif()
 # Without --participant-number each site starts at the first row: unbalanced, and said so.
 set(z ${OUT}/site-z.sqlite)

@@ -212,6 +212,31 @@ TEST_F(StudyDayCli, NotesTheRosterAndResumeBySessionNumber) {
     EXPECT_NE(out.find("no unfinished session"), std::string::npos) << out;
 }
 
+// A participant's second session on another lab PC: that database does not know them, so the
+// session number and the number they were given on the first PC come from the experimenter; the
+// scene order goes on as if both sessions were in one database.
+TEST_F(StudyDayCli, ASecondSessionOnAnotherPcContinuesTheParticipantsSceneOrder) {
+    std::string out;
+    ASSERT_EQ(run(path("pc1.sqlite"), "P1",
+                  {"--var", "age=30", "--participant-number", "2", "--seed", "5"}, &out),
+              0)
+        << out;
+    EXPECT_NE(run(path("pc2.sqlite"), "P1", {"--var", "age=30", "--session", "2"}, &out), 0);
+    EXPECT_NE(out.find("--participant-number"), std::string::npos) << out;
+    EXPECT_FALSE(fs::exists(path("pc2.sqlite")));
+    ASSERT_EQ(run(path("pc2.sqlite"), "P1",
+                  {"--var", "age=30", "--session", "2", "--participant-number", "2", "--seed", "6"},
+                  &out),
+              0)
+        << out;
+    auto store = open(path("pc2.sqlite"));
+    const auto id = store->find_session("P1", 2).value_or_throw();
+    ASSERT_TRUE(id);
+    // Row 1 (landscape, spheres, beams) rotated by one place, as in one database.
+    EXPECT_EQ(store->load_schedule(*id).value_or_throw().block_order,
+              (std::vector<std::string>{"spheres", "beams", "landscape"}));
+}
+
 // Waits until the child has printed `count` committed lines; false if it ended first.
 bool wait_for_commits(int fd, int count, std::string& output) {
     char buffer[4096];

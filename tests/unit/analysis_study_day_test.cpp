@@ -100,8 +100,39 @@ TEST(ParticipantCodes, DistinctCodesNeedNoRule) {
     EXPECT_TRUE(d.shared_codes.empty());
 }
 
-TEST(ParticipantCodes, SamePersonKeepsTheCodesAsOneParticipant) {
+// One participant's two sessions, run on two lab PCs: session 2 on the second PC with the number
+// the participant has had since their first session.
+Dataset two_pcs() {
     Dataset d = two_sites();
+    for (SessionRow& s : d.sessions) {
+        if (s.source != d.sources[1]) continue;
+        s.session_number = 2;
+        s.participant_number = s.participant == "a1" ? 0 : 1;
+    }
+    return d;
+}
+
+TEST(ParticipantCodes, SamePersonRefusesFilesThatCannotBeOnePerson) {
+    Dataset d = two_sites();  // a1 and a2 have a session 1 at each site, other numbers
+    const Result<bool> joined = join_participant_codes(d, SharedCodes::SamePerson);
+    ASSERT_FALSE(joined.ok());
+    const std::string& message = joined.error().message;
+    EXPECT_TRUE(
+        contains(message, "a1: session 1 in both data/site-a.sqlite and other/site-b.sqlite"))
+        << message;
+    EXPECT_TRUE(contains(message, "--codes per-database")) << message;
+    Dataset numbers = two_pcs();
+    numbers.sessions[2].participant_number = 5;  // a1 at the second PC
+    const Result<bool> renumbered = join_participant_codes(numbers, SharedCodes::SamePerson);
+    ASSERT_FALSE(renumbered.ok());
+    EXPECT_TRUE(contains(renumbered.error().message,
+                         "a1: participant number 1 in data/site-a.sqlite but 6 in "
+                         "other/site-b.sqlite"))
+        << renumbered.error().message;
+}
+
+TEST(ParticipantCodes, SamePersonKeepsTheCodesAsOneParticipant) {
+    Dataset d = two_pcs();
     const Result<bool> joined = join_participant_codes(d, SharedCodes::SamePerson);
     ASSERT_TRUE(joined.ok()) << joined.error().message;
     EXPECT_EQ(d.codes, SharedCodes::SamePerson);
