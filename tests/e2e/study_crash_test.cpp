@@ -592,5 +592,90 @@ TEST(StudyCrash, KilledOnScreensAndAfterANoteResumeWhereTheyStood) {
     if (!::testing::Test::HasFailure()) fs::remove_all(dir);
 }
 
+// On the simulated headset a break killed midway resumes for what is left of its minimum: no event
+// is logged during a break, but the frame log is (flushed every 30 frames), and the resumed run's
+// break lasts min_s minus the break time those frames show. The runtime's virtual clock starts
+// again at 10 s in the resumed run, so the two runs' times are compared within each run.
+TEST(StudyCrash, AHeadsetBreakKilledMidwayResumesForWhatIsLeftOfIt) {
+    namespace fs = std::filesystem;
+    const std::string exe = MONOPLANE_EXE;
+    const fs::path dir =
+        fs::temp_directory_path() / ("monoplane_crash_break_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string protocol = (dir / "break.toml").string();
+    std::ofstream(protocol) << "name = \"break\"\nscenes = [\"beams\"]\nmono_planes = [3, 8]\n"
+                               "alternatives = [\"stereo\", \"hybrid\"]\npractice_trials = 0\n"
+                               "[breaks]\nevery_trials = 1\nmin_s = 1800\n";
+    const std::string db = (dir / "break.sqlite").string();
+    const std::vector<std::string> headset = {
+        "--headset",   "simulated",  "--window",   "off",      "--resolution-scale",
+        "0.05",        "--sim-rate", "1",          "--detail", "test",
+        "--neutral-s", "0.2",        "--observer", "default",  "--trace"};
+    std::vector<std::string> run = {exe, "study",         "run", "--protocol", protocol, "--db",
+                                    db,  "--participant", "P1",  "--seed",     "3"};
+    run.insert(run.end(), headset.begin(), headset.end());
+    auto [pid, fd] = spawn(run, dir.string());
+    ASSERT_GT(pid, 0);
+    std::string output;
+    char buffer[4096];
+    while (output.find("committed screen break_started") == std::string::npos) {
+        const ssize_t n = read(fd, buffer, sizeof buffer);
+        if (n <= 0) break;
+        output.append(buffer, static_cast<std::size_t>(n));
+    }
+    ASSERT_NE(output.find("committed screen break_started"), std::string::npos) << output;
+    // Wait until the frame log holds a minute of the break (60 frames at 1 Hz), then kill.
+    std::int64_t logged_ns = 0;
+    study::TrialEvent started;
+    for (int tries = 0; tries < 600 && logged_ns < 60'000'000'000; ++tries) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        auto store = study::StudyStore::open(db).value_or_throw();
+        for (const study::TrialEvent& e : store->events(1).value_or_throw())
+            if (e.kind == study::EventKind::BreakStarted) started = e;
+        for (const study::FrameRecord& f : store->frames(1).value_or_throw())
+            if (f.frame >= started.frame)
+                logged_ns = std::max(logged_ns, f.display_time_ns - started.time_ns);
+    }
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    read_all(fd);
+    ASSERT_GE(logged_ns, 60'000'000'000);
+    auto store = study::StudyStore::open(db).value_or_throw();
+    // What the killed run logged of the break, as the resume will count it.
+    for (const study::FrameRecord& f : store->frames(1).value_or_throw())
+        if (f.frame >= started.frame)
+            logged_ns = std::max(logged_ns, f.display_time_ns - started.time_ns);
+    const std::int64_t resumed_from = store->next_frame_number(1).value_or_throw();
+    store.reset();
+    std::vector<std::string> resume = {exe, "study", "resume", "--db", db, "--participant", "P1"};
+    resume.insert(resume.end(), headset.begin(), headset.end());
+    std::string resumed;
+    ASSERT_EQ(run_to_end(resume, &resumed, dir.string()), 0) << resumed;
+    store = study::StudyStore::open(db).value_or_throw();
+    std::int64_t first_resumed_ns = -1;
+    for (const study::FrameRecord& f : store->frames(1).value_or_throw())
+        if (f.frame >= resumed_from && first_resumed_ns < 0) first_resumed_ns = f.display_time_ns;
+    std::int64_t ended_ns = -1;
+    int starts = 0;
+    for (const study::TrialEvent& e : store->events(1).value_or_throw()) {
+        if (e.kind == study::EventKind::BreakStarted) ++starts;
+        if (e.kind == study::EventKind::BreakEnded && ended_ns < 0) ended_ns = e.time_ns;
+    }
+    ASSERT_GE(first_resumed_ns, 0);
+    ASSERT_GE(ended_ns, 0);
+    EXPECT_EQ(starts, 1);  // one break, counted once
+    // The observer confirms as soon as the countdown allows: the resumed run's share of the break
+    // is the minimum less what was logged before the kill, to within two frames at 1 Hz.
+    const double resumed_s = static_cast<double>(ended_ns - first_resumed_ns) / 1e9;
+    const double left_s = 1800.0 - static_cast<double>(logged_ns) / 1e9;
+    EXPECT_NEAR(resumed_s, left_s, 2.0) << "logged " << logged_ns / 1e9 << " s of the break";
+    std::cout << "the killed run logged " << static_cast<double>(logged_ns) / 1e9
+              << " s of the break, the resumed run showed it for " << resumed_s << " s more\n";
+    EXPECT_EQ(store->session(1).value_or_throw().status, study::SessionStatus::Completed);
+    if (!::testing::Test::HasFailure()) fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace monoplane
