@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
     add_analyze_command(root, global);
     add_simulate_command(root, global);
     add_simulate_threshold_command(root, global);
+    add_lab_command(root, global);
     try {
         root.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -5,24 +5,18 @@
 // among them the psychometric functions per participant and scene (issue 21). A study day (issue
 // 30): several sessions per participant, repetitions, participant variables and notes in the
 // report, the Latin square's rows counted over all inputs, and participant codes that several
-// inputs hold joined only as `--codes` says.
+// inputs hold joined only as `--codes` says. The work is run_analysis() (analysis_run.h), which
+// the launcher calls too; this file parses the options and prints.
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <memory>
-#include <set>
-#include <string_view>
-#include <system_error>
-#include <utility>
+#include <string>
+#include <vector>
 
 #include "analysis/dataset.h"
 #include "analysis/report/report.h"
+#include "app/commands/analysis_run.h"
 #include "app/commands/commands.h"
-#include "app/commands/output_directory.h"
-#include "app/commands/study_rows.h"
-#include "charts/png/svg_to_png.h"
-#include "study/export.h"
-#include "study/schedule.h"
 
 namespace monoplane::app {
 namespace {
@@ -36,106 +30,10 @@ struct AnalyzeOptions {
     std::string codes;  // --codes: "" (refuse shared codes), same-person or per-database
 };
 
-// A session as the analysis sees it: who, which of their sessions, the Latin-square row selector
-// and how the protocol it ran orders scenes, the variables and the notes.
-analysis::SessionRow session_row(const study::SessionInfo& info, const std::string& source) {
-    analysis::SessionRow s;
-    s.source = source;
-    s.session_id = info.id;
-    s.participant = info.participant_code;
-    s.session_number = info.session_number;
-    s.participant_number = info.participant_number;
-    s.protocol = info.protocol_name;
-    s.started_utc = info.started_utc;
-    Result<study::Protocol> protocol =
-        study::parse_protocol(info.protocol_text, "session " + std::to_string(info.id));
-    if (protocol) {
-        s.first_scene_order = study::first_scene_name(protocol->first_scene);
-        s.scenes = static_cast<int>(protocol->scenes.size());
-        if (protocol->first_scene == study::FirstSceneBalance::LatinSquare && s.scenes > 0)
-            s.latin_square_rows = study::balanced_latin_square_rows(s.scenes);
-    }
-    for (const study::VariableValue& v : info.variables) s.variables.emplace_back(v.name, v.value);
-    for (const study::SessionNote& note : info.notes) {
-        s.notes.push_back({note.noted_utc, note.trial_index,
-                           std::string(study::note_source_name(note.source)), note.text});
-    }
-    return s;
-}
-
-// read_study_database() gives the trial rows; the sessions' own fields (session numbers,
-// repetitions, participant numbers, variables, notes) come from the same database's export.
-analysis::Dataset read_database(const std::string& db) {
-    analysis::Dataset dataset = read_study_database(db).value_or_throw();
-    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(db);
-    if (!store) throw UserError("--db " + db + ": " + store.error().message);
-    Result<study::ExportData> data = study::collect_export(*store.value());
-    if (!data) throw UserError("--db " + db + ": " + data.error().message);
-    std::map<std::pair<std::int64_t, int>, const study::TrialRecord*> records;
-    for (const study::TrialRecord& record : data->trials)
-        records[{record.session_id, record.trial.index}] = &record;
-    for (analysis::TrialRow& row : dataset.trials) {
-        const auto found = records.find({row.session_id, row.trial_index});
-        if (found == records.end()) continue;
-        row.session_number = found->second->session_number;
-        row.repetition = found->second->trial.repetition;
-    }
-    for (const auto& [id, info] : data->sessions) dataset.sessions.push_back(session_row(info, db));
-    return dataset;
-}
-
-// A CSV export does not record the protocol's first_scene: its sessions are taken to use the
-// default Latin square, over the scenes their data trials show.
-void add_latin_square_rows(analysis::Dataset& dataset) {
-    for (analysis::SessionRow& s : dataset.sessions)
-        if (s.latin_square_rows == 0 && s.first_scene_order.empty() && s.scenes > 0)
-            s.latin_square_rows = study::balanced_latin_square_rows(s.scenes);
-}
-
 analysis::SharedCodes shared_codes_rule(const std::string& codes) {
     if (codes == "same-person") return analysis::SharedCodes::SamePerson;
     if (codes == "per-database") return analysis::SharedCodes::PerDatabase;
     return analysis::SharedCodes::Refuse;
-}
-
-// The same file named twice would count its sessions twice.
-void check_distinct(const AnalyzeOptions& o) {
-    std::set<std::filesystem::path> seen;
-    for (const auto* list : {&o.dbs, &o.csvs}) {
-        for (const std::string& file : *list) {
-            std::error_code ec;
-            std::filesystem::path key = std::filesystem::weakly_canonical(file, ec);
-            if (ec) key = file;
-            if (!seen.insert(key).second) {
-                throw UserError(file + " is given twice: its sessions would be counted twice");
-            }
-        }
-    }
-}
-
-analysis::Dataset read_inputs(const AnalyzeOptions& o) {
-    analysis::Dataset merged;
-    for (const std::string& db : o.dbs) {
-        analysis::Dataset one = read_database(db);
-        std::cerr << "read " << db << ": " << one.trials.size() << " trials, " << one.answers.size()
-                  << " questionnaire answers\n";
-        analysis::merge(merged, std::move(one));
-    }
-    for (const std::string& csv : o.csvs) {
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(csv, ec))
-            throw UserError("--csv " + csv + ": no such file");
-        Result<analysis::Dataset> one = analysis::read_export_csv(csv);
-        if (!one) throw UserError("--csv " + csv + ": " + one.error().message);
-        if (one->trials.empty()) throw UserError("--csv " + csv + ": the export holds no trials");
-        std::cerr << "read " << csv << ": " << one->trials.size() << " trials\n";
-        add_latin_square_rows(one.value());
-        analysis::merge(merged, std::move(one).value());
-    }
-    analysis::derive_session_fields(merged.trials);
-    Result<bool> joined = analysis::join_participant_codes(merged, shared_codes_rule(o.codes));
-    if (!joined) throw UserError(joined.error().message);
-    return merged;
 }
 
 // The Latin square's rows on stderr, with a warning when they are unevenly filled (the case of
@@ -155,28 +53,16 @@ void print_counterbalancing(const analysis::Counterbalancing& c) {
 }
 
 void run_analyze(const AnalyzeOptions& o) {
-    if (o.dbs.empty() && o.csvs.empty()) {
-        throw UserError(
-            "analyze: no input; give at least one --db FILE (study database) or "
-            "--csv FILE (`monoplane study export --format csv`)");
-    }
-    check_distinct(o);
-    // Inputs first: a refusal (a shared code, a bad file) leaves no output directory behind.
-    const analysis::Dataset data = read_inputs(o);
-    const std::filesystem::path out = prepare_output_directory("--out", o.out);
-
-    analysis::report::ReportOptions options;
-    options.logistic.log2_distance = o.log2_distance;
-    options.logistic.scene_terms = !o.no_scene_terms;
-    const analysis::report::AnalysisResults results = analysis::report::analyse(data, options);
-    const std::vector<analysis::report::Figure> figures = analysis::report::report_figures(results);
-    const analysis::report::WrittenReport written =
-        analysis::report::write_report(results, figures, out).value_or_throw();
-    for (const analysis::report::Figure& figure : figures) {
-        // Twice the SVG's size: sharp on slides and in print.
-        charts::write_svg_as_png(figure.svg, out / "figures" / (figure.name + ".png"), 2.0)
-            .value_or_throw();
-    }
+    AnalyzeRequest request;
+    request.dbs.assign(o.dbs.begin(), o.dbs.end());
+    request.csvs.assign(o.csvs.begin(), o.csvs.end());
+    request.out = o.out;
+    request.log2_distance = o.log2_distance;
+    request.no_scene_terms = o.no_scene_terms;
+    request.codes = shared_codes_rule(o.codes);
+    request.on_read = [](const std::string& line) { std::cerr << line << "\n"; };
+    const AnalysisWritten written = run_analysis(request).value_or_throw();
+    const analysis::report::AnalysisResults& results = written.results;
 
     const analysis::Exclusions& e = results.exclusions;
     std::cerr << "merged " << results.sources.size() << " source(s): " << results.sessions
@@ -204,7 +90,7 @@ void run_analyze(const AnalyzeOptions& o) {
                   << " fits estimable (per scene the group's and each participant's)\n";
     }
     print_counterbalancing(results.day.counterbalancing);
-    std::cout << "report: " << std::filesystem::absolute(written.html).string() << "\n";
+    std::cout << "report: " << written.html.string() << "\n";
 }
 
 }  // namespace

@@ -16,5 +16,6 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global);
 void add_analyze_command(CLI::App& root, const GlobalOptions& global);
 void add_simulate_command(CLI::App& root, const GlobalOptions& global);
 void add_simulate_threshold_command(CLI::App& root, const GlobalOptions& global);
+void add_lab_command(CLI::App& root, const GlobalOptions& global);
 
 }  // namespace monoplane::app

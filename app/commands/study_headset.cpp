@@ -1,12 +1,10 @@
 #include "app/commands/study_headset.h"
 
-#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <deque>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <thread>
 
@@ -28,10 +26,6 @@
 #include "renderer/vk/frame_ring.h"
 #include "study/live_session.h"
 #include "study/observer_input.h"
-
-#ifndef MONOPLANE_SIMXR_MANIFEST
-#error "MONOPLANE_SIMXR_MANIFEST must name the simulated runtime's manifest"
-#endif
 
 namespace monoplane::app {
 namespace {
@@ -148,41 +142,6 @@ bool has_display() {
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     return (x11 && *x11) || (wayland && *wayland);
 }
-
-}  // namespace
-
-std::optional<fs::path> select_simulated_runtime(const HeadsetStudyOptions& options) {
-    // The simulated runtime, whatever runtime the machine has active: a dry run must never
-    // reach a real headset.
-    setenv("XR_RUNTIME_JSON", MONOPLANE_SIMXR_MANIFEST, 1);
-    if (!options.sim_script.empty()) {
-        if (!fs::exists(options.sim_script)) {
-            throw UserError("--sim-script " + options.sim_script + ": no such file");
-        }
-        setenv("SIMXR_SCRIPT", fs::absolute(options.sim_script).c_str(), 1);
-        return std::nullopt;
-    }
-    // A built-in profile name stays a name; a file is made absolute, as the script's relative
-    // paths are read against the script's folder.
-    std::string hmd = options.hmd;
-    if (fs::exists(hmd) && fs::is_regular_file(hmd)) hmd = fs::absolute(hmd).string();
-    const fs::path script =
-        fs::temp_directory_path() / ("monoplane-simxr-" + std::to_string(getpid()) + ".toml");
-    std::ofstream out(script);
-    out << "# written by monoplane study run --headset simulated\n";
-    out << "hmd = \"" << hmd << "\"\n";
-    out << "display_rate_hz = " << options.sim_rate_hz << "\n";
-    out << "head_motion = \"" << options.sim_head_motion << "\"\n";
-    if (!options.dump_frames.empty()) {
-        fs::create_directories(options.dump_frames);
-        out << "dump_dir = \"" << fs::absolute(options.dump_frames).string() << "\"\n";
-    }
-    if (!out) throw UserError("cannot write the simulated runtime's script " + script.string());
-    setenv("SIMXR_SCRIPT", script.c_str(), 1);
-    return script;
-}
-
-namespace {
 
 // One headset session's frame loop, its state in one place: the runtime and device it renders
 // with, the session engine (LiveSession) and its inputs, the per-frame log and timing, and the

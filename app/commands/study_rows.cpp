@@ -80,6 +80,23 @@ analysis::TrialRow trial_row(const study::TrialRecord& record, const study::Sess
     return row;
 }
 
+std::map<int, TrialFrameCounts> trial_frame_counts(const std::vector<study::FrameRecord>& frames) {
+    std::map<int, TrialFrameCounts> counts;
+    for (const study::FrameRecord& f : frames) {
+        if (!f.trial_index || (f.shown != "label1" && f.shown != "label2")) continue;
+        TrialFrameCounts& trial = counts[*f.trial_index];
+        ++trial.shown;
+        trial.missed += f.missed ? 1 : 0;
+    }
+    return counts;
+}
+
+double missed_frame_threshold(const study::SessionInfo& session) {
+    Result<study::Protocol> protocol =
+        study::parse_protocol(session.protocol_text, "session " + std::to_string(session.id));
+    return protocol ? protocol->missed_frame_threshold : study::Protocol{}.missed_frame_threshold;
+}
+
 Result<analysis::Dataset> read_study_database(const std::filesystem::path& path) {
     std::error_code ec;
     // StudyStore::open creates a missing database; an analysis must not.
@@ -101,8 +118,8 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path)
     std::map<std::int64_t, std::string> reference;
     std::map<std::int64_t, int> scale_points;
     std::map<std::int64_t, double> missed_threshold;
-    // Per (session, trial): frames shown and missed, from the frame log (headset sessions).
-    std::map<std::pair<std::int64_t, int>, std::pair<int, int>> frame_counts;
+    // Per session and trial: frames shown and missed, from the frame log (headset sessions).
+    std::map<std::int64_t, std::map<int, TrialFrameCounts>> frame_counts;
     for (const auto& [id, session] : data->sessions) {
         // The protocol as the session ran it: its first alternative is the reference.
         Result<study::Protocol> protocol =
@@ -110,15 +127,10 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path)
         reference[id] = protocol ? std::string(study::render_mode_name(protocol->alternatives[0]))
                                  : std::string();
         scale_points[id] = protocol ? protocol->questionnaire.scale_points : 7;
-        missed_threshold[id] = protocol ? protocol->missed_frame_threshold : 0.05;
+        missed_threshold[id] = missed_frame_threshold(session);
         Result<std::vector<study::FrameRecord>> frames = store.value()->frames(id);
         if (!frames) return Error{"--db " + path.string() + ": " + frames.error().message};
-        for (const study::FrameRecord& f : *frames) {
-            if (!f.trial_index || (f.shown != "label1" && f.shown != "label2")) continue;
-            auto& [shown, missed] = frame_counts[{id, *f.trial_index}];
-            ++shown;
-            missed += f.missed ? 1 : 0;
-        }
+        frame_counts[id] = trial_frame_counts(*frames);
         Result<std::vector<study::QuestionnaireAnswer>> answers = store.value()->answers(id);
         if (!answers) return Error{"--db " + path.string() + ": " + answers.error().message};
         for (const study::QuestionnaireAnswer& a : *answers) {
@@ -132,10 +144,10 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path)
         analysis::TrialRow row =
             trial_row(record, session->second, source, reference[record.session_id]);
         row.missed_frame_threshold = missed_threshold[record.session_id];
-        if (const auto counts = frame_counts.find({record.session_id, record.trial.index});
-            counts != frame_counts.end()) {
-            row.frames_shown = counts->second.first;
-            row.frames_missed = counts->second.second;
+        const std::map<int, TrialFrameCounts>& counts = frame_counts[record.session_id];
+        if (const auto found = counts.find(record.trial.index); found != counts.end()) {
+            row.frames_shown = found->second.shown;
+            row.frames_missed = found->second.missed;
         }
         dataset.trials.push_back(std::move(row));
     }

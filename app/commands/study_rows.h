@@ -5,7 +5,9 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "analysis/dataset.h"
 #include "common/result.h"
@@ -28,6 +30,22 @@ std::function<double(const study::ScheduledTrial&)> trial_error_model(
 // derive_session_fields().
 analysis::TrialRow trial_row(const study::TrialRecord& record, const study::SessionInfo& session,
                              const std::string& source, const std::string& reference_mode);
+
+// What a trial's frame log holds for its frame timing (analysis/frame_timing.h): the frames it
+// showed (label1 or label2 on screen; screens between trials are not the trial's) and how many of
+// them missed their display slot.
+struct TrialFrameCounts {
+    int shown = 0;
+    int missed = 0;
+};
+
+// A session's frame log counted per trial index, as `analyze` counts it. Any time.
+std::map<int, TrialFrameCounts> trial_frame_counts(const std::vector<study::FrameRecord>& frames);
+
+// The threshold above which a trial's missed-frame share is flagged: the protocol's
+// missed_frame_threshold as the session ran it, or the protocol default when its stored text no
+// longer parses. Any time.
+double missed_frame_threshold(const study::SessionInfo& session);
 
 // Every trial and questionnaire answer of a study database, labelled with `path` as their
 // source, with derive_session_fields() applied. Opens the database for reading only in effect

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "app/commands/commands.h"
+#include "app/commands/session_summary.h"
 #include "app/commands/study_headset.h"
 #include "app/commands/study_options.h"
 #include "app/commands/study_rows.h"
@@ -82,6 +83,12 @@ void print_staircase_estimates(const study::StudyStore& store, std::int64_t sess
     }
 }
 
+// The session's summary (session_summary.h) on stderr: the same lines the launcher shows.
+void print_summary(const study::StudyStore& store, std::int64_t session_id) {
+    const SessionSummary summary = summarize_session(store, session_id).value_or_throw();
+    for (const std::string& line : session_summary_lines(summary)) std::cerr << line << "\n";
+}
+
 void run_on_headset(
     const StudyOptions& o, const GlobalOptions& global, study::StudyStore& store,
     const study::Protocol& protocol, ImportedStudyScenes imported, study::Observer* observer,
@@ -99,8 +106,12 @@ void run_on_headset(
     const study::SessionStatus status =
         run_headset_session(options, global, store, protocol, std::move(imported), observer,
                             error_model(hmd, protocol), begin_and_note);
-    std::cerr << "session " << study::session_status_name(status) << "\n";
-    if (session_id && protocol.procedure == study::Procedure::Staircase) {
+    if (!session_id) {
+        std::cerr << "session " << study::session_status_name(status) << "\n";
+        return;
+    }
+    print_summary(store, *session_id);
+    if (protocol.procedure == study::Procedure::Staircase) {
         print_staircase_estimates(store, *session_id, protocol,
                                   store.trials(*session_id).value_or_throw());
     }
@@ -108,14 +119,11 @@ void run_on_headset(
 
 void finish(study::StudyStore& store, std::int64_t session_id, const study::Protocol& protocol,
             study::Observer& observer, const study::RunOptions& options) {
-    const auto status =
-        study::run_session(store, session_id, protocol, observer, options).value_or_throw();
-    const auto trials = store.trials(session_id).value_or_throw();
-    int decided = 0;
-    for (const auto& t : trials) decided += t.decided ? 1 : 0;
-    std::cerr << "session " << session_id << " " << study::session_status_name(status) << ": "
-              << decided << " of " << trials.size() << " trials decided\n";
-    print_staircase_estimates(store, session_id, protocol, trials);
+    // The summary reads the status the runner stored.
+    study::run_session(store, session_id, protocol, observer, options).value_or_throw();
+    print_summary(store, session_id);
+    print_staircase_estimates(store, session_id, protocol,
+                              store.trials(session_id).value_or_throw());
 }
 
 // The participant, session number, variables, seed and schedule, all checked before anything

@@ -188,6 +188,8 @@ struct OpenXrHeadset::Impl {
     Result<bool> create_instance(const std::vector<const char*>& extensions);
     // The XR_KHR_vulkan_enable2 functions, from the instance.
     Result<bool> load_vulkan_functions();
+    // The primary stereo configuration's two views (recommended and maximum image sizes).
+    Result<std::array<XrViewConfigurationView, 2>> view_configuration() const;
     Result<bool> create_actions();
     Result<bool> create_swapchains(const vk_core::Context& ctx, double scale, vk::Extent2D& extent,
                                    vk::Format& format, vk::Format& depth_format);
@@ -447,20 +449,37 @@ Result<bool> OpenXrHeadset::Impl::create_swapchain(Swapchain& swapchain,
                      reinterpret_cast<XrSwapchainImageBaseHeader*>(swapchain.images.data())));
 }
 
-Result<bool> OpenXrHeadset::Impl::create_swapchains(const vk_core::Context& ctx, double scale,
-                                                    vk::Extent2D& extent, vk::Format& format,
-                                                    vk::Format& depth_format) {
+Result<std::array<XrViewConfigurationView, 2>> OpenXrHeadset::Impl::view_configuration() const {
     std::uint32_t count = 0;
     Result<bool> ok =
         check("xrEnumerateViewConfigurationViews",
               xrEnumerateViewConfigurationViews(
                   instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 0, &count, nullptr));
-    if (!ok) return ok;
+    if (!ok) return ok.error();
     if (count != 2) return Error{"the headset does not have two views"};
     std::array<XrViewConfigurationView, 2> config{};
     for (auto& c : config) c.type = XR_TYPE_VIEW_CONFIGURATION_VIEW;
-    xrEnumerateViewConfigurationViews(instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO,
-                                      2, &count, config.data());
+    ok = check(
+        "xrEnumerateViewConfigurationViews",
+        xrEnumerateViewConfigurationViews(
+            instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 2, &count, config.data()));
+    if (!ok) return ok.error();
+    return config;
+}
+
+Result<vk::Extent2D> OpenXrHeadset::recommended_eye_extent() const {
+    Result<std::array<XrViewConfigurationView, 2>> views = impl_->view_configuration();
+    if (!views) return views.error();
+    return vk::Extent2D((*views)[0].recommendedImageRectWidth,
+                        (*views)[0].recommendedImageRectHeight);
+}
+
+Result<bool> OpenXrHeadset::Impl::create_swapchains(const vk_core::Context& ctx, double scale,
+                                                    vk::Extent2D& extent, vk::Format& format,
+                                                    vk::Format& depth_format) {
+    Result<std::array<XrViewConfigurationView, 2>> views = view_configuration();
+    if (!views) return views.error();
+    const std::array<XrViewConfigurationView, 2>& config = *views;
     const auto scaled = [scale](std::uint32_t size, std::uint32_t max) {
         const auto s = static_cast<std::uint32_t>(std::lround(size * scale));
         return std::clamp<std::uint32_t>(s, 16, max);
@@ -469,8 +488,9 @@ Result<bool> OpenXrHeadset::Impl::create_swapchains(const vk_core::Context& ctx,
         vk::Extent2D(scaled(config[0].recommendedImageRectWidth, config[0].maxImageRectWidth),
                      scaled(config[0].recommendedImageRectHeight, config[0].maxImageRectHeight));
 
-    ok = check("xrEnumerateSwapchainFormats",
-               xrEnumerateSwapchainFormats(session, 0, &count, nullptr));
+    std::uint32_t count = 0;
+    Result<bool> ok = check("xrEnumerateSwapchainFormats",
+                            xrEnumerateSwapchainFormats(session, 0, &count, nullptr));
     if (!ok) return ok;
     std::vector<std::int64_t> formats(count);
     xrEnumerateSwapchainFormats(session, count, &count, formats.data());
@@ -731,6 +751,28 @@ Result<bool> OpenXrHeadset::end_frame(const HeadsetFrame& frame,
     end.layerCount = submit ? 1 : 0;
     end.layers = submit ? layers : nullptr;
     return x.check("xrEndFrame", xrEndFrame(x.session, &end));
+}
+
+Result<std::string> OpenXrHeadset::interaction_profile() const {
+    const Impl& x = *impl_;
+    if (x.session == XR_NULL_HANDLE) return Error{"no OpenXR session: nothing is bound yet"};
+    for (const char* hand : {"/user/hand/left", "/user/hand/right"}) {
+        XrPath path = XR_NULL_PATH;
+        Result<bool> ok = x.check("xrStringToPath", xrStringToPath(x.instance, hand, &path));
+        if (!ok) return ok.error();
+        XrInteractionProfileState state{XR_TYPE_INTERACTION_PROFILE_STATE};
+        ok = x.check("xrGetCurrentInteractionProfile",
+                     xrGetCurrentInteractionProfile(x.session, path, &state));
+        if (!ok) return ok.error();
+        if (state.interactionProfile == XR_NULL_PATH) continue;
+        char text[XR_MAX_PATH_LENGTH] = {};
+        std::uint32_t length = 0;
+        ok = x.check("xrPathToString", xrPathToString(x.instance, state.interactionProfile,
+                                                      sizeof text, &length, text));
+        if (!ok) return ok.error();
+        return std::string(text);
+    }
+    return std::string();
 }
 
 Result<bool> OpenXrHeadset::request_exit() {

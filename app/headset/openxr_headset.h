@@ -85,6 +85,11 @@ class OpenXrHeadset {
     // What the OpenXR validation layer reported (nothing unless created with validation).
     const vk_core::ValidationMessages& validation_messages() const;
 
+    // The runtime's recommended size of each eye's image (xrEnumerateViewConfigurationViews,
+    // primary stereo): known from the system alone, so it may be called any time after create(),
+    // with or without a session (the launcher shows it before any Vulkan device exists).
+    Result<vk::Extent2D> recommended_eye_extent() const;
+
     // Hooks for vk_core::Context::create: the runtime creates the instance and device and names
     // the physical device (after its graphics requirements are queried, as the spec demands).
     vk_core::ContextCreationHooks vulkan_hooks();
@@ -121,6 +126,11 @@ class OpenXrHeadset {
     // (XR_KHR_composition_layer_depth), else none does.
     Result<bool> end_frame(const HeadsetFrame& frame,
                            const std::optional<DepthEncoding>& depth = std::nullopt);
+    // The interaction profile the runtime bound to the participant's hands
+    // (xrGetCurrentInteractionProfile, left hand first), or "" while none is: runtimes bind one
+    // in an xrSyncActions of the running session. Only between create_session and
+    // destroy_session.
+    Result<std::string> interaction_profile() const;
     // Asks the runtime to end the session (it answers with STOPPING).
     Result<bool> request_exit();
     // Destroys the swapchains and the session; call before the Vulkan device is destroyed.

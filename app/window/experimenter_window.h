@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/window/desktop_window.h"
 #include "app/window/experimenter_view.h"
 #include "app/window/key_commands.h"
 #include "app/window/mirror_texture.h"
@@ -28,12 +29,7 @@ struct WindowOptions {
     std::string title = "monoplane: experimenter";
 };
 
-// Instance extensions the Context must be created with so that the window can present on its
-// device. May be called at any time; fails with a message a user can act on when there is no
-// display (GLFW cannot initialise) or no Vulkan window-system support.
-Result<std::vector<std::string>> required_instance_extensions();
-// Device extensions likewise: VK_KHR_swapchain.
-std::vector<std::string> required_device_extensions();
+// required_instance_extensions() and required_device_extensions(): desktop_window.h.
 
 class ExperimenterWindow {
   public:

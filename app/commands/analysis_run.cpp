@@ -1,0 +1,177 @@
+#include "app/commands/analysis_run.h"
+
+#include <map>
+#include <memory>
+#include <set>
+#include <system_error>
+#include <utility>
+
+#include "app/commands/output_directory.h"
+#include "app/commands/study_rows.h"
+#include "charts/png/svg_to_png.h"
+#include "study/export.h"
+#include "study/schedule.h"
+
+namespace monoplane::app {
+namespace {
+
+// A session as the analysis sees it: who, which of their sessions, the Latin-square row selector
+// and how the protocol it ran orders scenes, the variables and the notes.
+analysis::SessionRow session_row(const study::SessionInfo& info, const std::string& source) {
+    analysis::SessionRow s;
+    s.source = source;
+    s.session_id = info.id;
+    s.participant = info.participant_code;
+    s.session_number = info.session_number;
+    s.participant_number = info.participant_number;
+    s.protocol = info.protocol_name;
+    s.started_utc = info.started_utc;
+    Result<study::Protocol> protocol =
+        study::parse_protocol(info.protocol_text, "session " + std::to_string(info.id));
+    if (protocol) {
+        s.first_scene_order = study::first_scene_name(protocol->first_scene);
+        s.scenes = static_cast<int>(protocol->scenes.size());
+        if (protocol->first_scene == study::FirstSceneBalance::LatinSquare && s.scenes > 0)
+            s.latin_square_rows = study::balanced_latin_square_rows(s.scenes);
+    }
+    for (const study::VariableValue& v : info.variables) s.variables.emplace_back(v.name, v.value);
+    for (const study::SessionNote& note : info.notes) {
+        s.notes.push_back({note.noted_utc, note.trial_index,
+                           std::string(study::note_source_name(note.source)), note.text});
+    }
+    return s;
+}
+
+// read_study_database() gives the trial rows; the sessions' own fields (session numbers,
+// repetitions, participant numbers, variables, notes) come from the same database's export.
+Result<analysis::Dataset> read_database(const std::filesystem::path& path) {
+    const std::string db = path.string();
+    Result<analysis::Dataset> read = read_study_database(path);
+    if (!read) return read.error();
+    analysis::Dataset dataset = std::move(read).value();
+    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(path);
+    if (!store) return Error{"--db " + db + ": " + store.error().message};
+    Result<study::ExportData> data = study::collect_export(*store.value());
+    if (!data) return Error{"--db " + db + ": " + data.error().message};
+    std::map<std::pair<std::int64_t, int>, const study::TrialRecord*> records;
+    for (const study::TrialRecord& record : data->trials)
+        records[{record.session_id, record.trial.index}] = &record;
+    for (analysis::TrialRow& row : dataset.trials) {
+        const auto found = records.find({row.session_id, row.trial_index});
+        if (found == records.end()) continue;
+        row.session_number = found->second->session_number;
+        row.repetition = found->second->trial.repetition;
+    }
+    for (const auto& [id, info] : data->sessions) dataset.sessions.push_back(session_row(info, db));
+    return dataset;
+}
+
+// A CSV export does not record the protocol's first_scene: its sessions are taken to use the
+// default Latin square, over the scenes their data trials show.
+void add_latin_square_rows(analysis::Dataset& dataset) {
+    for (analysis::SessionRow& s : dataset.sessions)
+        if (s.latin_square_rows == 0 && s.first_scene_order.empty() && s.scenes > 0)
+            s.latin_square_rows = study::balanced_latin_square_rows(s.scenes);
+}
+
+// The same file named twice would count its sessions twice.
+Result<bool> check_distinct(const AnalyzeRequest& r) {
+    std::set<std::filesystem::path> seen;
+    for (const auto* list : {&r.dbs, &r.csvs}) {
+        for (const std::filesystem::path& file : *list) {
+            std::error_code ec;
+            std::filesystem::path key = std::filesystem::weakly_canonical(file, ec);
+            if (ec) key = file;
+            if (!seen.insert(key).second)
+                return Error{file.string() +
+                             " is given twice: its sessions would be counted twice"};
+        }
+    }
+    return true;
+}
+
+Result<analysis::Dataset> read_csv(const std::filesystem::path& path) {
+    const std::string csv = path.string();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        return Error{"--csv " + csv + ": no such file"};
+    Result<analysis::Dataset> one = analysis::read_export_csv(path);
+    if (!one) return Error{"--csv " + csv + ": " + one.error().message};
+    if (one->trials.empty()) return Error{"--csv " + csv + ": the export holds no trials"};
+    add_latin_square_rows(one.value());
+    return one;
+}
+
+void tell(const AnalyzeRequest& r, const std::string& line) {
+    if (r.on_read) r.on_read(line);
+}
+
+Result<analysis::Dataset> read_inputs(const AnalyzeRequest& r) {
+    analysis::Dataset merged;
+    for (const std::filesystem::path& db : r.dbs) {
+        Result<analysis::Dataset> one = read_database(db);
+        if (!one) return one.error();
+        tell(r, "read " + db.string() + ": " + std::to_string(one->trials.size()) + " trials, " +
+                    std::to_string(one->answers.size()) + " questionnaire answers");
+        analysis::merge(merged, std::move(one).value());
+    }
+    for (const std::filesystem::path& csv : r.csvs) {
+        Result<analysis::Dataset> one = read_csv(csv);
+        if (!one) return one.error();
+        tell(r, "read " + csv.string() + ": " + std::to_string(one->trials.size()) + " trials");
+        analysis::merge(merged, std::move(one).value());
+    }
+    analysis::derive_session_fields(merged.trials);
+    Result<bool> joined = analysis::join_participant_codes(merged, r.codes);
+    if (!joined) return joined.error();
+    return merged;
+}
+
+// prepare_output_directory() reports by UserError, as the commands want; here it is a Result.
+Result<std::filesystem::path> output_directory(const std::filesystem::path& out) {
+    try {
+        return prepare_output_directory("--out", out.string());
+    } catch (const UserError& e) {
+        return Error{e.what()};
+    }
+}
+
+}  // namespace
+
+Result<AnalysisWritten> run_analysis(const AnalyzeRequest& request) {
+    if (request.dbs.empty() && request.csvs.empty()) {
+        return Error{
+            "analyze: no input; give at least one --db FILE (study database) or "
+            "--csv FILE (`monoplane study export --format csv`)"};
+    }
+    if (Result<bool> ok = check_distinct(request); !ok) return ok.error();
+    // Inputs first: a refusal (a shared code, a bad file) leaves no output directory behind.
+    Result<analysis::Dataset> data = read_inputs(request);
+    if (!data) return data.error();
+    Result<std::filesystem::path> out = output_directory(request.out);
+    if (!out) return out.error();
+
+    analysis::report::ReportOptions options;
+    options.logistic.log2_distance = request.log2_distance;
+    options.logistic.scene_terms = !request.no_scene_terms;
+    AnalysisWritten done;
+    done.out = *out;
+    done.results = analysis::report::analyse(*data, options);
+    const std::vector<analysis::report::Figure> figures =
+        analysis::report::report_figures(done.results);
+    Result<analysis::report::WrittenReport> written =
+        analysis::report::write_report(done.results, figures, *out);
+    if (!written) return written.error();
+    done.written = std::move(written).value();
+    for (const analysis::report::Figure& figure : figures) {
+        // Twice the SVG's size: sharp on slides and in print.
+        const std::filesystem::path png = *out / "figures" / (figure.name + ".png");
+        if (Result<bool> ok = charts::write_svg_as_png(figure.svg, png, 2.0); !ok)
+            return ok.error();
+        done.pngs.push_back(png);
+    }
+    done.html = std::filesystem::absolute(done.written.html);
+    return done;
+}
+
+}  // namespace monoplane::app

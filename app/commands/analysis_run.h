@@ -1,0 +1,45 @@
+// The work of `monoplane analyze` as a function, so that the command and the launcher write the
+// same report from the same inputs: read and merge study databases and CSV exports, join
+// participant codes as asked, analyse, and write report.html, summary.json, the CSV tables and
+// the figures as SVG and PNG into one directory (docs/analysis.md).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "analysis/dataset.h"
+#include "analysis/report/report.h"
+#include "common/result.h"
+
+namespace monoplane::app {
+
+struct AnalyzeRequest {
+    std::vector<std::filesystem::path> dbs;   // study databases (`--db`)
+    std::vector<std::filesystem::path> csvs;  // CSV exports (`--csv`)
+    std::filesystem::path out;                // output directory, created if needed (`--out`)
+    bool log2_distance = false;               // `--log2-distance`
+    bool no_scene_terms = false;              // `--no-scene-terms`
+    analysis::SharedCodes codes = analysis::SharedCodes::Refuse;  // `--codes`
+    // Told each input as it is read ("read FILE: N trials, ..."); may be empty.
+    std::function<void(const std::string&)> on_read;
+};
+
+struct AnalysisWritten {
+    analysis::report::AnalysisResults results;
+    std::filesystem::path out;                // the output directory
+    std::filesystem::path html;               // report.html in it, absolute
+    analysis::report::WrittenReport written;  // every file write_report wrote
+    std::vector<std::filesystem::path> pngs;  // the figures as PNG (figures/NAME.png)
+};
+
+// Runs the analysis of `request` and writes its files. May be called at any time, also while a
+// session writes to one of the databases (it reads what is committed). Inputs are read and
+// checked before anything is written, so a refusal leaves no output directory behind. Errors
+// (no input, a file given twice, a missing or unreadable file, a participant code several inputs
+// hold without `codes` saying what it means, an unwritable output directory) name the option
+// and the file.
+Result<AnalysisWritten> run_analysis(const AnalyzeRequest& request);
+
+}  // namespace monoplane::app

@@ -1,0 +1,182 @@
+// `monoplane lab`: the experimenter's launcher window (docs/lab.md). It leads through a session
+// (database, protocol, participant, headset, Start) and, after it, shows the summary with Export
+// and Analyse. Every rule is the commands' own: the window draws lab::LauncherModel, a session is
+// run_study / resume_study (as `study run` / `study resume`), Export is `study export`'s
+// check_output + export_trials, Analyse is run_analysis (as `analyze`).
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/commands/analysis_run.h"
+#include "app/commands/commands.h"
+#include "app/commands/session_summary.h"
+#include "app/commands/study_options.h"
+#include "app/lab/launcher_model.h"
+#include "app/lab/launcher_window.h"
+#include "app/window/desktop_window.h"
+#include "study/export.h"
+#include "study/output_file.h"
+#include "study/study_store.h"
+
+namespace monoplane::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct LabOptions {
+    std::string db;
+    std::string protocols;
+    std::string state_file;
+    std::string screenshot_dir;
+    HeadsetStudyOptions headset;  // the sessions' headset options (dry runs and tests shorten)
+};
+
+// <source>/protocols of the tree this executable was built from, when it is there (a build
+// beside its sources); else ./protocols.
+std::string default_protocols_folder() {
+    const fs::path beside_source = fs::path(MONOPLANE_SOURCE_DIR) / "protocols";
+    std::error_code ec;
+    if (fs::is_directory(beside_source, ec)) return beside_source.string();
+    return "protocols";
+}
+
+// `study export --format csv --out <db stem>.csv` beside the database: the command's checks and
+// writer, so the launcher writes the same file and refuses the same way.
+Result<fs::path> export_beside(const fs::path& db) {
+    const fs::path out = db.parent_path() / (db.stem().string() + ".csv");
+    const study::ExportFormat format = study::ExportFormat::Csv;
+    if (Result<bool> ok = study::check_output(out, study::export_output_kind(format), {db}, false);
+        !ok)
+        return ok.error();
+    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(db);
+    if (!store) return store.error();
+    if (Result<bool> ok = study::export_trials(**store, format, out, false); !ok) return ok.error();
+    return out;
+}
+
+// `analyze --db DB --out <db stem>-analysis/`.
+Result<fs::path> analyse_beside(const fs::path& db) {
+    AnalyzeRequest request;
+    request.dbs = {db};
+    request.out = db.parent_path() / (db.stem().string() + "-analysis");
+    Result<AnalysisWritten> written = run_analysis(request);
+    if (!written) return written.error();
+    return written->html;
+}
+
+StudyOptions study_options(const lab::LaunchRequest& r, const LabOptions& lab) {
+    StudyOptions o;
+    o.protocol = r.protocol;
+    o.db = r.db;
+    o.participant = r.participant;
+    o.session_number = r.session_number;
+    o.participant_number = r.participant_number;
+    o.variables = r.variables;
+    o.seed = r.seed;
+    o.session_id = r.session_id;
+    o.accept_changed_scenes = r.accept_changed_scenes;
+    o.headset = r.headset;
+    o.observer = r.observer;
+    o.headset_options = lab.headset;  // window "auto", as the command
+    return o;
+}
+
+// Runs the session as `study run|resume` would; returns its error message, empty when it
+// finished. Never throws: the launcher comes back whatever happened.
+std::string run_session(const lab::LaunchRequest& request, const LabOptions& lab,
+                        const GlobalOptions& global) {
+    const StudyOptions o = study_options(request, lab);
+    try {
+        if (request.command == lab::LaunchRequest::Command::Run)
+            run_study(o, global);
+        else
+            resume_study(o, global);
+        return {};
+    } catch (const UserError& e) {
+        return e.what();
+    } catch (const vk::SystemError& e) {
+        return std::string("Vulkan error: ") + e.what();
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+}
+
+// The summary's lines (summarize_session), or why there are none.
+std::vector<std::string> summary_lines(const lab::LauncherModel& model) {
+    if (!model.summary() || model.summary()->session_id == 0) return {};
+    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(model.database());
+    if (!store) return {store.error().message};
+    Result<SessionSummary> summary = summarize_session(**store, model.summary()->session_id);
+    if (!summary) return {summary.error().message};
+    return session_summary_lines(*summary);
+}
+
+// One opening of the launcher window, on a Context of its own that goes with it (the session
+// creates its own, with the headset's requirements).
+lab::LauncherExit open_launcher(lab::LauncherModel& model, lab::LauncherUi& ui,
+                                const GlobalOptions& global) {
+    vk_core::ContextOptions options = global.context_options();
+    options.instance_extensions = window::required_instance_extensions().value_or_throw();
+    options.device_extensions = window::required_device_extensions();
+    auto ctx = vk_core::Context::create(options).value_or_throw();
+    lab::LauncherActions actions;
+    actions.export_data = [&model] { return export_beside(model.database()); };
+    actions.analyse = [&model] { return analyse_beside(model.database()); };
+    auto window = lab::LauncherWindow::create(*ctx, model, ui, actions).value_or_throw();
+    return window->run();
+}
+
+void run_lab(const LabOptions& o, const GlobalOptions& global) {
+    lab::LauncherModel model(lab::LauncherSettings{o.db, o.protocols});
+    lab::LauncherUi ui;
+    ui.state_file = o.state_file;
+    ui.screenshot_dir = o.screenshot_dir;
+    ui.database_text = o.db;
+    for (;;) {
+        const lab::LauncherExit exit = open_launcher(model, ui, global);
+        if (!exit.launch) return;
+        const std::string error = run_session(*exit.launch, o, global);
+        if (!error.empty()) std::cerr << "monoplane lab: the session stopped: " << error << "\n";
+        if (Result<bool> ended = model.session_ended(error); !ended)
+            ui.action_message = ended.error().message;
+        ui.summary_lines = summary_lines(model);
+    }
+}
+
+}  // namespace
+
+void add_lab_command(CLI::App& root, const GlobalOptions& global) {
+    auto o = std::make_shared<LabOptions>();
+    o->protocols = default_protocols_folder();
+    CLI::App* cmd = root.add_subcommand(
+        "lab",
+        "The experimenter's launcher window: database, protocol, participant, headset, "
+        "session, summary, export and analysis (docs/lab.md)");
+    cmd->add_option("--db", o->db, "Study database to open (created if missing)");
+    cmd->add_option("--protocols", o->protocols, "Folder of protocol files")->capture_default_str();
+    cmd->add_option("--state-file", o->state_file,
+                    "Keep the launcher's state (JSON) in this file (tests, scripted checks)");
+    cmd->add_option("--screenshot-dir", o->screenshot_dir,
+                    "Save a PNG of each step shown into this folder (NN-<step>.png)");
+    HeadsetStudyOptions& h = o->headset;
+    cmd->add_option("--detail", h.detail, "Sessions: scene detail instead of the protocol's");
+    cmd->add_option("--resolution-scale", h.resolution_scale,
+                    "Sessions: eye size relative to the runtime's recommendation")
+        ->capture_default_str()
+        ->check(CLI::Range(0.05, 2.0));
+    cmd->add_option("--neutral-s", h.neutral_s, "Sessions: neutral screen between trials, seconds")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 60.0));
+    cmd->add_option("--end-s", h.end_s, "Sessions: how long the end screen stays, seconds")
+        ->capture_default_str()
+        ->check(CLI::Range(0.0, 600.0));
+    cmd->add_option("--sim-rate", h.sim_rate_hz,
+                    "Sessions on the simulated headset: its display rate in Hz (virtual clock)")
+        ->capture_default_str()
+        ->check(CLI::Range(1.0, 1000.0));
+    cmd->callback([o, &global] { run_lab(*o, global); });
+}
+
+}  // namespace monoplane::app

@@ -1,0 +1,249 @@
+// The model of `monoplane lab`, the experimenter's launcher: what each step shows and whether the
+// session may start, without any window toolkit, so the window only draws it and forwards input,
+// and tests drive it directly.
+//
+// Every rule comes from the code the commands call, never from a copy here: protocols are judged
+// by study::load_protocol (as `protocol check` does), participant codes by
+// study::check_participant_code, each variable field by study::check_variable_value, the whole
+// request by study::plan_session (as `study run` does), the roster by study::read_roster and a
+// session's hold by study::SessionHold. Start produces the options `study run` takes
+// (LaunchRequest), so a session started here is the command's session.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "common/result.h"
+#include "study/protocol.h"
+#include "study/roster.h"
+#include "study/session_start.h"
+#include "study/study_store.h"
+
+namespace monoplane::lab {
+
+// The launcher's steps, in the order the day goes through them.
+enum class LauncherStep { Database, Protocol, Participant, Headset, Session, Summary };
+
+// "database", "protocol", "participant", "headset", "session", "summary": state_json's names.
+std::string_view step_name(LauncherStep step);
+
+// One *.toml file of the protocols folder with the verdict `protocol check` gives its text.
+struct ProtocolChoice {
+    std::filesystem::path path;
+    std::string file;     // the file name, as listed
+    bool valid = false;   // study::load_protocol accepted it
+    std::string name;     // the protocol's name when valid
+    std::string message;  // load_protocol's problems, one per line, "FILE:LINE:COL: ..."
+};
+
+// The *.toml files of `folder`, sorted by file name, each loaded with study::load_protocol.
+// Imported glTF scenes are not loaded here (run_study loads and digests them at Start, as the
+// command does): a protocol naming a broken glTF file lists as valid. Errors: a folder that
+// does not exist or cannot be read. Any time; reads every file.
+Result<std::vector<ProtocolChoice>> list_protocols(const std::filesystem::path& folder);
+
+// A roster line with what the launcher may offer for it.
+struct RosterLine {
+    study::RosterEntry entry;
+    std::string state;  // entry.state(): "completed", "interrupted", "running (process ...)"
+    // `study resume` would continue it now: not completed, not held by a running process,
+    // and its scene files as recorded.
+    bool resume_offered = false;
+    // Only the scene files stand in the way: `study resume --accept-changed-scenes` would go on.
+    bool scene_files_changed = false;
+    // Why Resume is not offered for a session that is not completed (held, changed scene files);
+    // empty otherwise.
+    std::string resume_refusal;
+};
+
+// The roster of `database` (study::read_roster) with each unfinished session's resume verdict.
+// Errors: the store's, naming the file. Any time, also while sessions run; reads the recorded
+// scene files of every unfinished session.
+Result<std::vector<RosterLine>> read_launcher_roster(const std::filesystem::path& database);
+
+// A form field of one declared participant variable.
+struct VariableField {
+    study::ParticipantVariable declaration;
+    std::string text;       // as typed (or as recorded for a returning participant)
+    std::string message;    // study::check_variable_value's problem with the text; empty if none
+    bool recorded = false;  // a returning participant's: read-only, variables do not change
+};
+
+// What the headset step found (filled in by the window, which probes OpenXR); shown as is.
+struct HeadsetReport {
+    bool runtime_available = false;
+    std::string runtime;              // the OpenXR runtime's name
+    std::string system;               // the headset's system name
+    int width = 0, height = 0;        // recommended eye image size, pixels
+    double refresh_hz = 0.0;          // 0: not reported
+    std::optional<double> ipd_m;      // the IPD the runtime reports
+    std::string interaction_profile;  // once bound
+    std::string message;              // e.g. "no OpenXR runtime"; empty when available
+};
+
+// What Start (or Resume) hands to `study run` (or `study resume`): the fields of the commands'
+// StudyOptions (app/commands/study_options.h) of the same names, nothing else set.
+struct LaunchRequest {
+    enum class Command { Run, Resume };
+    Command command = Command::Run;
+    std::string protocol;     // run: the protocol file
+    std::string db;           // the study database
+    std::string participant;  // run: the participant code
+    std::optional<int> session_number;
+    std::optional<int> participant_number;
+    std::vector<std::string> variables;  // run: "NAME=VALUE", as --var takes them
+    std::optional<std::uint64_t> seed;   // none: drawn by run_study and recorded, as the command
+    std::optional<std::int64_t> session_id;  // resume: the database's session id
+    bool accept_changed_scenes = false;      // resume only
+    std::string headset = "simulated";       // none, simulated or openxr
+    std::string observer;                    // "": the command's default for the headset
+
+    // The same request as a command line after `monoplane` ("study", "run", "--protocol", ...):
+    // shown to the experimenter so the session can be repeated from a shell. Any time.
+    std::vector<std::string> arguments() const;
+};
+
+// A finished (or stopped) session, for the summary step.
+struct SessionOutcome {
+    std::int64_t session_id = 0;
+    std::string participant;
+    int session_number = 0;
+    std::string state;  // as the roster says it
+    int trials_decided = 0;
+    int trials_planned = 0;
+    std::string started_utc, ended_utc;
+    std::string error;  // what run_study reported when it stopped with an error; empty if none
+};
+
+struct LauncherSettings {
+    std::filesystem::path db;         // --db FILE; empty: chosen in the window
+    std::filesystem::path protocols;  // --protocols DIR
+};
+
+class LauncherModel {
+  public:
+    // Lists the protocols folder and opens (creating) the database when the settings name them;
+    // a failure of either is kept as that step's message. Any time.
+    explicit LauncherModel(LauncherSettings settings);
+    ~LauncherModel();
+    LauncherModel(LauncherModel&&) noexcept;
+    LauncherModel& operator=(LauncherModel&&) noexcept;
+
+    LauncherStep step() const { return step_; }
+    // Moves to an earlier step, or to the next one when this one is done (database open,
+    // protocol chosen, participant code valid). Session and Summary come from start() and
+    // session_ended() only, and no step is left while a session runs. Any time.
+    Result<bool> go_to(LauncherStep step);
+
+    // Database step. Opens `path` with study::StudyStore::open; a missing file is created only
+    // when `create` (the window's "Create"). Reads the roster. Any time but during a session.
+    Result<bool> open_database(const std::filesystem::path& path, bool create);
+    bool database_open() const { return store_ != nullptr; }
+    const std::filesystem::path& database() const { return db_; }
+    const std::string& database_message() const { return db_message_; }
+    // Reads the roster again (after a session, or when another PC may have written). Any time
+    // with a database open; the error is also kept as the database step's message.
+    Result<bool> refresh_roster();
+    const std::vector<RosterLine>& roster() const { return roster_; }
+
+    // Protocol step. Lists `folder` again (list_protocols). Any time but during a session.
+    Result<bool> scan_protocols(const std::filesystem::path& folder);
+    const std::vector<ProtocolChoice>& protocols() const { return protocols_; }
+    const std::string& protocols_message() const { return protocols_message_; }
+    // Chooses one listed file; it is loaded again, so an edit since the listing counts. Refused:
+    // a file not listed, or one that is not valid (its problems; no protocol is chosen then).
+    // Rebuilds the variables form.
+    // Any time but during a session.
+    Result<bool> select_protocol(const std::filesystem::path& path);
+    const study::Protocol* protocol() const { return protocol_ ? &*protocol_ : nullptr; }
+    const std::filesystem::path& protocol_path() const { return protocol_path_; }
+    const std::filesystem::path& protocols_folder() const { return protocols_dir_; }
+
+    // Participant step: each call validates at once (the window calls them per keystroke).
+    void set_participant_code(const std::string& code);
+    const std::string& participant_code() const { return code_; }
+    const std::string& code_message() const { return code_message_; }
+    // The participant as the database knows them; none for a new (or invalid) code.
+    const std::optional<study::ParticipantRecord>& participant() const { return participant_; }
+    // The session the participant would start: their next, unless set_session_number says.
+    int next_session_number() const;
+    std::optional<int> session_number() const { return session_number_; }
+    std::optional<int> participant_number() const { return participant_number_; }
+    void set_session_number(std::optional<int> number);
+    void set_participant_number(std::optional<int> number);
+    // Sets a form field's text; refused for an undeclared name or a recorded field.
+    Result<bool> set_variable(const std::string& name, const std::string& text);
+    const std::vector<VariableField>& variables() const { return fields_; }
+
+    // Headset step. `headset`: none, simulated or openxr. `observer`: "" (the command's
+    // default), none, or a simulated observer study::make_observer accepts.
+    Result<bool> set_headset(const std::string& headset);
+    Result<bool> set_observer(const std::string& observer);
+    void set_headset_report(HeadsetReport report) { headset_report_ = std::move(report); }
+    const std::string& headset() const { return headset_; }
+    const std::string& observer() const { return observer_; }
+    const HeadsetReport& headset_report() const { return headset_report_; }
+    // A fixed seed (tests, a repeated session); none: drawn and recorded, as the command does.
+    void set_seed(std::optional<std::uint64_t> seed);
+
+    // Whether study::plan_session accepts the request as it stands (with a database open and a
+    // protocol chosen); otherwise the message says why, one problem per line.
+    bool start_enabled() const { return start_message_.empty(); }
+    const std::string& start_message() const { return start_message_; }
+    // The request as it stands, whether or not Start is enabled. Any time.
+    LaunchRequest request() const;
+    // Start: the request for run_study, and the Session step. Refused with start_message()
+    // while Start is disabled. Any time before a session runs.
+    Result<LaunchRequest> start();
+    // Resume of a roster session (by database session id): the request for resume_study, and
+    // the Session step. Refused when the roster does not offer it (its refusal), unless only
+    // scene files changed and `accept_changed_scenes`. Any time before a session runs.
+    Result<LaunchRequest> resume(std::int64_t session_id, bool accept_changed_scenes);
+    // The window's session has returned (`error`: run_study's message if it threw): reads the
+    // session's summary and the roster again, and moves to Summary. Only in the Session step.
+    Result<bool> session_ended(const std::string& error);
+    const std::optional<SessionOutcome>& summary() const { return summary_; }
+
+    // Everything a step shows, as one JSON object (keys: step, database, protocols, protocol,
+    // participant, variables, headset, start, roster, summary): the window's state dump, which
+    // end-to-end tests read. Any time.
+    std::string state_json() const;
+
+  private:
+    void revalidate();
+    void rebuild_fields();
+    Result<bool> step_done(LauncherStep step) const;
+
+    LauncherStep step_ = LauncherStep::Database;
+    std::filesystem::path db_;
+    std::unique_ptr<study::StudyStore> store_;
+    std::string db_message_;
+    std::vector<RosterLine> roster_;
+    std::filesystem::path protocols_dir_;
+    std::vector<ProtocolChoice> protocols_;
+    std::string protocols_message_;
+    std::filesystem::path protocol_path_;
+    std::optional<study::Protocol> protocol_;
+    std::string code_;
+    std::string code_message_;
+    std::optional<study::ParticipantRecord> participant_;
+    std::optional<int> session_number_;
+    std::optional<int> participant_number_;
+    std::vector<VariableField> fields_;
+    std::string headset_ = "simulated";
+    std::string observer_;
+    HeadsetReport headset_report_;
+    std::optional<std::uint64_t> seed_;
+    std::string start_message_;
+    std::optional<LaunchRequest> launched_;
+    int launched_session_number_ = 0;  // the participant's session Start planned
+    std::optional<SessionOutcome> summary_;
+};
+
+}  // namespace monoplane::lab

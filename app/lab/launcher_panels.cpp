@@ -1,0 +1,447 @@
+#include "app/lab/launcher_panels.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_internal.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+namespace monoplane::lab {
+namespace {
+
+const ImVec4 kError(1.0f, 0.45f, 0.4f, 1.0f);
+const ImVec4 kGood(0.5f, 0.9f, 0.5f, 1.0f);
+const ImVec4 kDim(0.65f, 0.65f, 0.7f, 1.0f);
+
+void error_text(const std::string& message) {
+    if (message.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, kError);
+    ImGui::TextWrapped("%s", message.c_str());
+    ImGui::PopStyleColor();
+}
+
+void dim_text(const std::string& text) {
+    if (text.empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, kDim);
+    ImGui::TextWrapped("%s", text.c_str());  // a command line can be longer than the window
+    ImGui::PopStyleColor();
+}
+
+// The steps a person goes through, in the bar at the top (Session is the session's own window).
+constexpr std::array kShownSteps{LauncherStep::Database, LauncherStep::Protocol,
+                                 LauncherStep::Participant, LauncherStep::Headset,
+                                 LauncherStep::Summary};
+
+const char* step_title(LauncherStep step) {
+    switch (step) {
+        case LauncherStep::Database:
+            return "1 Database";
+        case LauncherStep::Protocol:
+            return "2 Protocol";
+        case LauncherStep::Participant:
+            return "3 Participant";
+        case LauncherStep::Headset:
+            return "4 Headset and Start";
+        case LauncherStep::Session:
+            return "Session running";
+        case LauncherStep::Summary:
+            return "5 Summary";
+    }
+    return "";
+}
+
+std::string joined(const std::vector<std::string>& words) {
+    std::string line;
+    for (const std::string& word : words) {
+        if (!line.empty()) line += ' ';
+        const bool quote = word.find_first_of(" \t'\"") != std::string::npos;
+        line += quote ? "'" + word + "'" : word;
+    }
+    return line;
+}
+
+}  // namespace
+
+bool LauncherPanels::note(const Result<bool>& result) {
+    ui_.action_message = result ? std::string() : result.error().message;
+    return static_cast<bool>(result);
+}
+
+void LauncherPanels::key(const window::KeyPress& press) {
+    if ((press.mods & GLFW_MOD_CONTROL) == 0) return;
+    switch (press.key) {
+        case GLFW_KEY_RIGHT:
+            next_step();
+            break;
+        case GLFW_KEY_LEFT:
+            if (model_.step() > LauncherStep::Database && model_.step() != LauncherStep::Summary)
+                go_to(static_cast<LauncherStep>(static_cast<int>(model_.step()) - 1));
+            else if (model_.step() == LauncherStep::Summary)
+                go_to(LauncherStep::Participant);
+            break;
+        case GLFW_KEY_ENTER:
+        case GLFW_KEY_KP_ENTER:
+            start();
+            break;
+        case GLFW_KEY_E:
+            if (model_.step() == LauncherStep::Summary) export_data();
+            break;
+        case GLFW_KEY_R:
+            if (model_.step() == LauncherStep::Summary) analyse();
+            break;
+        case GLFW_KEY_Q:
+            quit_ = true;
+            break;
+        default:
+            break;
+    }
+}
+
+void LauncherPanels::go_to(LauncherStep step) {
+    note(model_.go_to(step));
+}
+
+void LauncherPanels::next_step() {
+    switch (model_.step()) {
+        case LauncherStep::Database:
+            go_to(LauncherStep::Protocol);
+            break;
+        case LauncherStep::Protocol:
+            go_to(LauncherStep::Participant);
+            break;
+        case LauncherStep::Participant:
+            go_to(LauncherStep::Headset);
+            break;
+        case LauncherStep::Headset:
+            start();
+            break;
+        case LauncherStep::Summary:
+            go_to(LauncherStep::Participant);
+            break;
+        case LauncherStep::Session:
+            break;
+    }
+}
+
+void LauncherPanels::start() {
+    Result<LaunchRequest> request = model_.start();
+    if (!request) {
+        ui_.action_message = request.error().message;
+        return;
+    }
+    ui_.action_message.clear();
+    ui_.export_message.clear();
+    ui_.analysis_message.clear();
+    launch_ = std::move(request).value();
+}
+
+void LauncherPanels::export_data() {
+    if (!actions_.export_data) return;
+    Result<std::filesystem::path> written = actions_.export_data();
+    ui_.export_message = written ? "exported to " + written->string() : written.error().message;
+}
+
+void LauncherPanels::analyse() {
+    if (!actions_.analyse) return;
+    Result<std::filesystem::path> written = actions_.analyse();
+    ui_.analysis_message =
+        written ? "report written: " + written->string() : written.error().message;
+}
+
+void LauncherPanels::focus_on_entry() {
+    if (focused_step_ == model_.step()) return;
+    focused_step_ = model_.step();
+    ImGui::SetKeyboardFocusHere();
+}
+
+void LauncherPanels::focus_item_on_entry() {
+    if (focused_step_ == model_.step()) return;
+    focused_step_ = model_.step();
+    // Dear ImGui 1.86 focuses only text fields by SetKeyboardFocusHere; a button takes the
+    // keyboard navigation's focus directly.
+    ImGui::SetFocusID(ImGui::GetItemID(), ImGui::GetCurrentWindow());
+    ImGui::GetCurrentContext()->NavDisableHighlight = false;
+}
+
+void LauncherPanels::draw() {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(viewport->WorkPos);
+    ImGui::SetNextWindowSize(viewport->WorkSize);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    ImGui::Begin("monoplane lab", nullptr, flags);
+    draw_steps();
+    ImGui::Separator();
+    switch (model_.step()) {
+        case LauncherStep::Database:
+            draw_database();
+            break;
+        case LauncherStep::Protocol:
+            draw_protocol();
+            break;
+        case LauncherStep::Participant:
+            draw_participant();
+            break;
+        case LauncherStep::Headset:
+            draw_headset();
+            break;
+        case LauncherStep::Session:
+            ImGui::TextUnformatted("The session is running.");
+            break;
+        case LauncherStep::Summary:
+            draw_summary();
+            break;
+    }
+    ImGui::Spacing();
+    ImGui::Separator();
+    draw_roster();
+    draw_footer();
+    ImGui::End();
+}
+
+void LauncherPanels::draw_steps() {
+    for (const LauncherStep step : kShownSteps) {
+        if (step != kShownSteps.front()) ImGui::SameLine(0.0f, 24.0f);
+        if (step == model_.step())
+            ImGui::TextColored(kGood, "[%s]", step_title(step));
+        else
+            ImGui::TextColored(kDim, " %s ", step_title(step));
+    }
+}
+
+void LauncherPanels::draw_database() {
+    ImGui::TextUnformatted(
+        "Study database (a .sqlite file; every session of the study goes in it)");
+    if (ui_.database_text.empty()) ui_.database_text = model_.database().string();
+    focus_on_entry();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.7f);
+    const bool enter =
+        ImGui::InputText("##database", &ui_.database_text, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    const bool open = ImGui::Button("Open") || enter;
+    ImGui::SameLine();
+    const bool create = ImGui::Button("Create");
+    if (open || create) {
+        if (note(model_.open_database(ui_.database_text, create))) go_to(LauncherStep::Protocol);
+    }
+    if (model_.database_open())
+        ImGui::TextColored(kGood, "open: %s", model_.database().string().c_str());
+    error_text(model_.database_message());
+    dim_text("Enter opens an existing file; Create starts a new one.");
+}
+
+void LauncherPanels::choose_protocol(const std::filesystem::path& path) {
+    if (note(model_.select_protocol(path))) go_to(LauncherStep::Participant);
+}
+
+void LauncherPanels::draw_protocol() {
+    ImGui::Text("Protocols in %s", model_.protocols_folder().string().c_str());
+    error_text(model_.protocols_message());
+    ImGui::TextUnformatted("File name (Enter chooses it):");
+    ImGui::SameLine();
+    focus_on_entry();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    // Enter leaves the field: a refused name is focused again, selected, to be typed over.
+    const ImGuiInputTextFlags flags =
+        ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll;
+    if (ImGui::InputText("##protocol", &ui_.protocol_text, flags)) {
+        ImGui::SetKeyboardFocusHere(-1);
+        const auto& list = model_.protocols();
+        const auto found = std::find_if(list.begin(), list.end(), [&](const ProtocolChoice& c) {
+            return c.file == ui_.protocol_text || c.name == ui_.protocol_text;
+        });
+        if (found == list.end())
+            ui_.action_message = "no protocol '" + ui_.protocol_text + "' in the folder";
+        else
+            choose_protocol(found->path);
+    }
+    for (const ProtocolChoice& choice : model_.protocols()) {
+        const bool chosen = model_.protocol() != nullptr && model_.protocol_path() == choice.path;
+        const std::string label =
+            choice.file + (choice.valid ? "   (" + choice.name + ", ok)" : "   (has errors)");
+        ImGui::PushStyleColor(ImGuiCol_Text,
+                              choice.valid ? ImGui::GetStyleColorVec4(ImGuiCol_Text) : kError);
+        if (ImGui::Selectable(label.c_str(), chosen)) choose_protocol(choice.path);
+        ImGui::PopStyleColor();
+        // Errors in place, with file and line, as `protocol check` prints them.
+        if (!choice.valid) {
+            ImGui::Indent();
+            error_text(choice.message);
+            ImGui::Unindent();
+        }
+    }
+}
+
+void LauncherPanels::draw_participant() {
+    ImGui::TextUnformatted("Participant code:");
+    ImGui::SameLine();
+    focus_on_entry();
+    std::string code = model_.participant_code();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14.0f);
+    const bool enter = ImGui::InputText("##code", &code, ImGuiInputTextFlags_EnterReturnsTrue);
+    if (code != model_.participant_code()) model_.set_participant_code(code);
+    if (enter) next_step();
+    error_text(model_.code_message());
+    if (const auto& known = model_.participant()) {
+        std::string sessions;
+        for (const auto& [number, id] : known->sessions)
+            sessions += (sessions.empty() ? "" : ", ") + std::to_string(number);
+        ImGui::Text("Returning participant (number %d); earlier sessions: %s",
+                    known->participant_number + 1, sessions.c_str());
+    } else if (!code.empty() && model_.code_message().empty()) {
+        ImGui::TextUnformatted("New participant.");
+    }
+    ImGui::Text("This will be session %d.", model_.next_session_number());
+    if (!model_.variables().empty()) {
+        ImGui::Spacing();
+        ImGui::TextUnformatted("Participant variables (* required):");
+        for (const VariableField& field : model_.variables()) draw_variable(field);
+    }
+    if (ImGui::Button("Next (Ctrl+Right)")) next_step();
+}
+
+void LauncherPanels::draw_variable(const VariableField& field) {
+    const study::ParticipantVariable& v = field.declaration;
+    ImGui::PushID(v.name.c_str());
+    ImGui::BeginDisabled(field.recorded);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14.0f);
+    const std::string label = v.name + (v.required ? " *" : "");
+    std::string text = field.text;
+    if (v.type == study::VariableType::Choice) {
+        if (ImGui::BeginCombo(label.c_str(), text.empty() ? "(choose)" : text.c_str())) {
+            for (const std::string& choice : v.choices) {
+                if (ImGui::Selectable(choice.c_str(), choice == text)) text = choice;
+            }
+            ImGui::EndCombo();
+        }
+    } else {
+        ImGuiInputTextFlags flags = 0;
+        if (v.type == study::VariableType::Integer) flags = ImGuiInputTextFlags_CharsDecimal;
+        if (v.type == study::VariableType::Number) flags = ImGuiInputTextFlags_CharsScientific;
+        ImGui::InputText(label.c_str(), &text, flags);
+    }
+    ImGui::EndDisabled();
+    if (text != field.text) note(model_.set_variable(v.name, text));
+    if (field.recorded) {
+        ImGui::SameLine();
+        dim_text("(recorded with the participant)");
+    }
+    dim_text(v.help);
+    error_text(field.message);
+    ImGui::PopID();
+}
+
+void LauncherPanels::draw_headset() {
+    ImGui::TextUnformatted("Headset:");
+    for (const char* headset : {"simulated", "openxr", "none"}) {
+        ImGui::SameLine();
+        if (ImGui::RadioButton(headset, model_.headset() == headset))
+            note(model_.set_headset(headset));
+    }
+    const HeadsetReport& report = model_.headset_report();
+    if (model_.headset() == "openxr") {
+        if (report.runtime_available) {
+            ImGui::Text("%s, %s: %d x %d per eye", report.runtime.c_str(), report.system.c_str(),
+                        report.width, report.height);
+        } else {
+            dim_text(report.message.empty() ? "the OpenXR runtime is opened at Start"
+                                            : report.message);
+        }
+        ImGui::TextUnformatted("Answers: the participant, with the controller.");
+    } else {
+        ImGui::Text("Answers: the simulated observer (%s).",
+                    model_.observer().empty() ? "default" : model_.observer().c_str());
+    }
+    draw_start();
+}
+
+void LauncherPanels::draw_start() {
+    ImGui::Spacing();
+    ImGui::BeginDisabled(!model_.start_enabled());
+    if (ImGui::Button("Start (Ctrl+Enter)")) start();
+    ImGui::EndDisabled();
+    focus_item_on_entry();  // no text here: Space on the focused Start begins
+    error_text(model_.start_message());
+    if (model_.start_enabled()) dim_text("monoplane " + joined(model_.request().arguments()));
+}
+
+void LauncherPanels::draw_summary() {
+    if (const auto& outcome = model_.summary()) {
+        if (ui_.summary_lines.empty())  // summarize_session's first line says the same
+            ImGui::Text("Session %lld: participant %s, session %d, %s",
+                        static_cast<long long>(outcome->session_id), outcome->participant.c_str(),
+                        outcome->session_number, outcome->state.c_str());
+        error_text(outcome->error);
+    }
+    for (const std::string& line : ui_.summary_lines) ImGui::TextUnformatted(line.c_str());
+    ImGui::Spacing();
+    if (ImGui::Button("Export (Ctrl+E)")) export_data();
+    focus_item_on_entry();
+    ImGui::SameLine();
+    if (ImGui::Button("Analyse (Ctrl+R)")) analyse();
+    ImGui::SameLine();
+    if (ImGui::Button("Next participant")) go_to(LauncherStep::Participant);
+    if (!ui_.export_message.empty()) ImGui::TextWrapped("%s", ui_.export_message.c_str());
+    if (!ui_.analysis_message.empty()) ImGui::TextWrapped("%s", ui_.analysis_message.c_str());
+}
+
+void LauncherPanels::draw_roster() {
+    if (!model_.database_open()) return;
+    ImGui::Text("Sessions in %s", model_.database().filename().string().c_str());
+    if (model_.roster().empty()) {
+        dim_text("no sessions yet");
+        return;
+    }
+    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+    if (!ImGui::BeginTable("roster", 5, flags)) return;
+    for (const char* heading : {"participant", "session", "state", "trials", ""})
+        ImGui::TableSetupColumn(heading);
+    ImGui::TableHeadersRow();
+    for (const RosterLine& line : model_.roster()) {
+        const study::RosterRow& row = line.entry.row;
+        ImGui::PushID(static_cast<int>(row.session_id));
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row.participant_code.c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%d", row.session_number);
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(line.state.c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%d / %d", row.trials_decided, row.trials_planned);
+        ImGui::TableNextColumn();
+        if (line.state != "completed") {
+            ImGui::BeginDisabled(!line.resume_offered);
+            if (ImGui::Button("Resume")) {
+                Result<LaunchRequest> request = model_.resume(row.session_id, false);
+                if (request)
+                    launch_ = std::move(request).value();
+                else
+                    ui_.action_message = request.error().message;
+            }
+            ImGui::EndDisabled();
+            if (!line.resume_refusal.empty()) {
+                ImGui::SameLine();
+                ImGui::TextColored(kError, "%s", line.resume_refusal.c_str());
+            }
+        }
+        ImGui::PopID();
+    }
+    ImGui::EndTable();
+}
+
+void LauncherPanels::draw_footer() {
+    ImGui::Spacing();
+    ImGui::Separator();
+    error_text(ui_.action_message);
+    dim_text(
+        "Keys: Tab / arrows move, Space or Enter acts, Ctrl+Right next step, Ctrl+Left back, "
+        "Ctrl+Enter Start, Ctrl+Q quit");
+}
+
+}  // namespace monoplane::lab

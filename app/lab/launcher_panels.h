@@ -1,0 +1,64 @@
+// The launcher window's contents (Dear ImGui calls): one panel per step of the model, the roster
+// and the keyboard shortcuts. Separate from the window (launcher_window.cpp) so that the drawing
+// reads as the model's steps, and the window as its frame loop.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "app/lab/launcher_model.h"
+#include "app/lab/launcher_window.h"
+#include "app/window/desktop_window.h"
+
+namespace monoplane::lab {
+
+class LauncherPanels {
+  public:
+    LauncherPanels(LauncherModel& model, LauncherUi& ui, LauncherActions actions)
+        : model_(model), ui_(ui), actions_(std::move(actions)) {}
+
+    // A key press of the frame about to be drawn: the shortcuts (Ctrl+Right next step, Ctrl+Left
+    // back, Ctrl+Enter Start, Ctrl+E Export, Ctrl+R Analyse, Ctrl+Q quit). Between
+    // DesktopWindow::poll_events() and new_frame().
+    void key(const window::KeyPress& press);
+    // Draws the whole window for the model as it stands, acting on what was clicked. Between
+    // DesktopWindow::new_frame() and end_frame().
+    void draw();
+
+    // Start or Resume was chosen: the request (the model is in its Session step). Once.
+    std::optional<LaunchRequest> take_launch() { return std::exchange(launch_, std::nullopt); }
+    bool quit_requested() const { return quit_; }
+
+  private:
+    void draw_steps();
+    void draw_database();
+    void draw_protocol();
+    void draw_participant();
+    void draw_variable(const VariableField& field);
+    void draw_headset();
+    void draw_start();
+    void draw_summary();
+    void draw_roster();
+    void draw_footer();
+    // Focuses the next item when the step was just entered.
+    void focus_on_entry();
+    // Focuses the item just drawn (a button) when the step was just entered.
+    void focus_item_on_entry();
+    void next_step();
+    void go_to(LauncherStep step);
+    void choose_protocol(const std::filesystem::path& path);
+    void start();
+    void export_data();
+    void analyse();
+    // Keeps a refusal for the footer; true when `result` succeeded.
+    bool note(const Result<bool>& result);
+
+    LauncherModel& model_;
+    LauncherUi& ui_;
+    LauncherActions actions_;
+    std::optional<LaunchRequest> launch_;
+    bool quit_ = false;
+    std::optional<LauncherStep> focused_step_;  // the step whose entry focus was set
+};
+
+}  // namespace monoplane::lab

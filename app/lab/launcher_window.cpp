@@ -1,0 +1,139 @@
+#include "app/lab/launcher_window.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_internal.h>
+#include <imgui_stdlib.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <system_error>
+#include <thread>
+
+#include "app/lab/launcher_panels.h"
+
+namespace monoplane::lab {
+
+namespace fs = std::filesystem;
+
+Result<bool> write_file_atomically(const fs::path& file, const std::string& text) {
+    const fs::path temporary = fs::path(file).concat(".tmp");
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out << text;
+        if (!out.flush()) return Error{"cannot write '" + temporary.string() + "'"};
+    }
+    std::error_code ec;
+    fs::rename(temporary, file, ec);
+    if (ec) return Error{"cannot replace '" + file.string() + "': " + ec.message()};
+    return true;
+}
+
+struct LauncherWindow::Impl {
+    Impl(LauncherModel& m, LauncherUi& u, LauncherActions a)
+        : model(m), ui(u), panels(m, u, std::move(a)) {}
+
+    LauncherModel& model;
+    LauncherUi& ui;
+    LauncherPanels panels;
+    std::unique_ptr<window::DesktopWindow> desktop;
+    std::optional<LauncherStep> shown_step;  // the step of the last frame
+    int frames_in_step = 0;
+    bool screenshot_taken = false;
+
+    void frame();
+    void after_frame();
+    void write_state();
+    void save_screenshot(const std::string& name);
+};
+
+void LauncherWindow::Impl::frame() {
+    desktop->poll_events();
+    for (const window::KeyPress& press : desktop->take_key_presses()) panels.key(press);
+    desktop->new_frame();
+    panels.draw();
+    desktop->end_frame();
+    after_frame();
+}
+
+void LauncherWindow::Impl::after_frame() {
+    write_state();
+    if (shown_step != model.step()) {
+        shown_step = model.step();
+        frames_in_step = 0;
+        screenshot_taken = false;
+        return;
+    }
+    // A few frames after a step change the new step is laid out and focused as it stays: that
+    // frame is the step's screenshot.
+    if (++frames_in_step == 3 && !screenshot_taken) {
+        screenshot_taken = true;
+        save_screenshot(std::string(step_name(model.step())));
+    }
+}
+
+void LauncherWindow::Impl::write_state() {
+    if (ui.state_file.empty()) return;
+    std::string state = model.state_json();
+    if (state == ui.last_state) return;
+    if (Result<bool> written = write_file_atomically(ui.state_file, state); !written) {
+        std::fprintf(stderr, "monoplane lab: %s\n", written.error().message.c_str());
+    }
+    ui.last_state = std::move(state);
+}
+
+// NN-<name>.png, numbered across the window's openings.
+void LauncherWindow::Impl::save_screenshot(const std::string& name) {
+    if (ui.screenshot_dir.empty()) return;
+    std::error_code ec;
+    fs::create_directories(ui.screenshot_dir, ec);
+    char number[16];
+    std::snprintf(number, sizeof number, "%02d-", ++ui.screenshots);
+    const fs::path png = ui.screenshot_dir / (std::string(number) + name + ".png");
+    if (Result<bool> saved = desktop->save_screenshot(png); !saved) {
+        std::fprintf(stderr, "monoplane lab: no screenshot: %s\n", saved.error().message.c_str());
+    }
+}
+
+LauncherWindow::LauncherWindow(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+LauncherWindow::~LauncherWindow() = default;
+
+Result<std::unique_ptr<LauncherWindow>> LauncherWindow::create(const vk_core::Context& ctx,
+                                                               LauncherModel& model, LauncherUi& ui,
+                                                               LauncherActions actions) {
+    window::DesktopWindowOptions options;
+    options.title = "monoplane lab";
+    options.what = "launcher window";
+    // 16 pixels stay legible on a 1280 x 800 display; a dense monitor multiplies them.
+    options.font_pixels = 16.0f;
+    options.scale_with_monitor = true;
+    options.hold_taps = true;  // keyboard-only use includes scripted keys (xdotool, XTest)
+    auto desktop = window::DesktopWindow::create(ctx, options);
+    if (!desktop) return desktop.error();
+    auto impl = std::make_unique<Impl>(model, ui, std::move(actions));
+    impl->desktop = std::move(desktop).value();
+    // Arrow keys, Space and Enter reach every button, list entry and field.
+    ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+    return std::unique_ptr<LauncherWindow>(new LauncherWindow(std::move(impl)));
+}
+
+LauncherExit LauncherWindow::run() {
+    Impl& s = *impl_;
+    while (!s.desktop->close_requested() && !s.panels.quit_requested()) {
+        s.frame();
+        if (std::optional<LaunchRequest> launch = s.panels.take_launch()) {
+            // The Session step as the launcher shows it before it closes, and its state.
+            s.save_screenshot("session");
+            s.write_state();
+            return LauncherExit{std::move(launch)};
+        }
+        // The launcher waits for a person: 60 frames a second are plenty, and leave the CPU to
+        // whatever else runs on the lab PC.
+        std::this_thread::sleep_for(std::chrono::milliseconds(15));
+    }
+    return LauncherExit{};
+}
+
+}  // namespace monoplane::lab
