@@ -3,7 +3,9 @@
 // and Analyse. Every rule is the commands' own: the window draws lab::LauncherModel, a session is
 // run_study / resume_study (as `study run` / `study resume`), Export is `study export`'s
 // check_output + export_trials, Analyse is run_analysis (as `analyze`).
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -11,6 +13,7 @@
 
 #include "app/commands/analysis_run.h"
 #include "app/commands/commands.h"
+#include "app/commands/headset_check.h"
 #include "app/commands/session_summary.h"
 #include "app/commands/study_options.h"
 #include "app/lab/launcher_model.h"
@@ -31,6 +34,11 @@ struct LabOptions {
     std::string state_file;
     std::string screenshot_dir;
     HeadsetStudyOptions headset;  // the sessions' headset options (dry runs and tests shorten)
+    // The headset step's first choices (the window may change them) and a fixed seed: the same
+    // meaning as `study run --headset/--observer/--seed`, handed to the model, not kept here.
+    std::string initial_headset;
+    std::string initial_observer;
+    std::optional<std::uint64_t> seed;
 };
 
 // <source>/protocols of the tree this executable was built from, when it is there (a build
@@ -113,9 +121,71 @@ std::vector<std::string> summary_lines(const lab::LauncherModel& model) {
     return session_summary_lines(*summary);
 }
 
+// The headset step's probe: the runtime `study run --headset HEADSET` would use, with the lab's
+// simulated-headset options.
+Result<lab::HeadsetReport> probe_for_lab(const std::string& headset, const LabOptions& o,
+                                         const GlobalOptions& global) {
+    Result<headset::HeadsetProbe> probe =
+        probe_headset(headset == "simulated", o.headset, global.validation);
+    if (!probe) return probe.error();
+    lab::HeadsetReport r;
+    r.runtime_available = probe->runtime_available;
+    r.runtime = probe->runtime;
+    r.system = probe->system;
+    r.width = probe->width;
+    r.height = probe->height;
+    r.message = probe->message;
+    return r;
+}
+
+lab::HeadsetReport report_of(const HeadsetCheck& check) {
+    lab::HeadsetReport r;
+    r.runtime_available = true;
+    r.runtime = check.runtime;
+    r.system = check.system;
+    r.width = check.width;
+    r.height = check.height;
+    r.refresh_hz = check.refresh_hz;
+    r.ipd_m = check.ipd_m;
+    r.interaction_profile = check.interaction_profile;
+    r.check = check_end_name(check.end);
+    r.check_message = check.message;
+    r.check_frames = check.frames_shown;
+    return r;
+}
+
+// The headset check (run_headset_check), the launcher answering each turn. Never throws.
+Result<lab::HeadsetReport> check_for_lab(
+    const std::string& headset,
+    const std::function<lab::CheckAnswer(const lab::HeadsetCheckTurn&)>& turn, const LabOptions& o,
+    const GlobalOptions& global) {
+    HeadsetCheckOptions options;
+    options.headset = o.headset;
+    options.headset.headset = headset;
+    options.global = global;
+    options.on_turn = [&turn](const HeadsetCheckProgress& p) {
+        switch (turn({p.frames_shown, p.refresh_hz, p.ipd_m, p.interaction_profile})) {
+            case lab::CheckAnswer::Confirm:
+                return CheckRequest::Confirm;
+            case lab::CheckAnswer::Cancel:
+                return CheckRequest::Cancel;
+            case lab::CheckAnswer::Continue:
+                break;
+        }
+        return CheckRequest::Continue;
+    };
+    try {
+        Result<HeadsetCheck> check = run_headset_check(options);
+        if (!check) return check.error();
+        return report_of(*check);
+    } catch (const std::exception& e) {
+        return Error{std::string("the headset check stopped: ") + e.what()};
+    }
+}
+
 // One opening of the launcher window, on a Context of its own that goes with it (the session
 // creates its own, with the headset's requirements).
-lab::LauncherExit open_launcher(lab::LauncherModel& model, lab::LauncherUi& ui,
+lab::LauncherExit open_launcher(lab::LauncherModel& model, lab::LauncherUi& ui, const LabOptions& o,
                                 const GlobalOptions& global) {
     vk_core::ContextOptions options = global.context_options();
     options.instance_extensions = window::required_instance_extensions().value_or_throw();
@@ -124,18 +194,31 @@ lab::LauncherExit open_launcher(lab::LauncherModel& model, lab::LauncherUi& ui,
     lab::LauncherActions actions;
     actions.export_data = [&model] { return export_beside(model.database()); };
     actions.analyse = [&model] { return analyse_beside(model.database()); };
+    actions.probe_headset = [&o, &global](const std::string& headset) {
+        return probe_for_lab(headset, o, global);
+    };
+    actions.check_headset = [&o, &global](const std::string& headset, const auto& turn) {
+        return check_for_lab(headset, turn, o, global);
+    };
     auto window = lab::LauncherWindow::create(*ctx, model, ui, actions).value_or_throw();
     return window->run();
 }
 
 void run_lab(const LabOptions& o, const GlobalOptions& global) {
     lab::LauncherModel model(lab::LauncherSettings{o.db, o.protocols});
+    if (!o.initial_headset.empty())
+        if (Result<bool> ok = model.set_headset(o.initial_headset); !ok)
+            throw UserError("--headset: " + ok.error().message);
+    if (!o.initial_observer.empty())
+        if (Result<bool> ok = model.set_observer(o.initial_observer); !ok)
+            throw UserError("--observer: " + ok.error().message);
+    model.set_seed(o.seed);
     lab::LauncherUi ui;
     ui.state_file = o.state_file;
     ui.screenshot_dir = o.screenshot_dir;
     ui.database_text = o.db;
     for (;;) {
-        const lab::LauncherExit exit = open_launcher(model, ui, global);
+        const lab::LauncherExit exit = open_launcher(model, ui, o, global);
         if (!exit.launch) return;
         const std::string error = run_session(*exit.launch, o, global);
         if (!error.empty()) std::cerr << "monoplane lab: the session stopped: " << error << "\n";
@@ -160,6 +243,14 @@ void add_lab_command(CLI::App& root, const GlobalOptions& global) {
                     "Keep the launcher's state (JSON) in this file (tests, scripted checks)");
     cmd->add_option("--screenshot-dir", o->screenshot_dir,
                     "Save a PNG of each step shown into this folder (NN-<step>.png)");
+    cmd->add_option("--headset", o->initial_headset,
+                    "The headset step's first choice: none, simulated (default) or openxr")
+        ->check(CLI::IsMember({"none", "simulated", "openxr"}));
+    cmd->add_option("--observer", o->initial_observer,
+                    "Who answers: none or a simulated observer, as `study run --observer`");
+    cmd->add_option("--seed", o->seed,
+                    "Sessions started here use this seed (as `study run --seed`); default: drawn "
+                    "and recorded");
     HeadsetStudyOptions& h = o->headset;
     cmd->add_option("--detail", h.detail, "Sessions: scene detail instead of the protocol's");
     cmd->add_option("--resolution-scale", h.resolution_scale,
@@ -172,6 +263,8 @@ void add_lab_command(CLI::App& root, const GlobalOptions& global) {
     cmd->add_option("--end-s", h.end_s, "Sessions: how long the end screen stays, seconds")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 600.0));
+    cmd->add_option("--sim-script", h.sim_script,
+                    "The simulated headset's simxr script (sessions and the headset check)");
     cmd->add_option("--sim-rate", h.sim_rate_hz,
                     "Sessions on the simulated headset: its display rate in Hz (virtual clock)")
         ->capture_default_str()

@@ -85,6 +85,12 @@ struct HeadsetReport {
     std::optional<double> ipd_m;      // the IPD the runtime reports
     std::string interaction_profile;  // once bound
     std::string message;              // e.g. "no OpenXR runtime"; empty when available
+    // The last headset check: how it ended ("" none yet, "confirmed", "cancelled", "timed out",
+    // "runtime ended the session", "runtime lost", "failed": it could not run), what it said,
+    // and the frames it showed the participant.
+    std::string check;
+    std::string check_message;
+    std::int64_t check_frames = 0;
 };
 
 // What Start (or Resume) hands to `study run` (or `study resume`): the fields of the commands'

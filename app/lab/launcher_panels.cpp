@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <string>
+#include <utility>
 
 namespace monoplane::lab {
 namespace {
@@ -86,6 +88,9 @@ void LauncherPanels::key(const window::KeyPress& press) {
         case GLFW_KEY_ENTER:
         case GLFW_KEY_KP_ENTER:
             start();
+            break;
+        case GLFW_KEY_H:
+            request_check();
             break;
         case GLFW_KEY_E:
             if (model_.step() == LauncherStep::Summary) export_data();
@@ -175,6 +180,7 @@ void LauncherPanels::draw() {
                                    ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::Begin("monoplane lab", nullptr, flags);
+    if (model_.step() != LauncherStep::Headset) probed_choice_.reset();  // probe on entry
     draw_steps();
     ImGui::Separator();
     switch (model_.step()) {
@@ -336,28 +342,169 @@ void LauncherPanels::draw_variable(const VariableField& field) {
     ImGui::PopID();
 }
 
+void LauncherPanels::probe_if_needed() {
+    if (probed_choice_ == model_.headset()) return;
+    probed_choice_ = model_.headset();
+    const HeadsetReport before = model_.headset_report();
+    if (model_.headset() == "none") {
+        model_.set_headset_report(HeadsetReport{});
+        return;
+    }
+    if (!actions_.probe_headset) return;
+    Result<HeadsetReport> probed = actions_.probe_headset(model_.headset());
+    HeadsetReport report;
+    if (probed) {
+        report = std::move(probed).value();
+    } else {
+        report.message = probed.error().message;
+    }
+    // What the last check measured stays while the same headset is shown again.
+    if (report.runtime_available && before.runtime == report.runtime &&
+        before.system == report.system && !before.check.empty()) {
+        report.refresh_hz = before.refresh_hz;
+        report.ipd_m = before.ipd_m;
+        report.interaction_profile = before.interaction_profile;
+        report.check = before.check;
+        report.check_message = before.check_message;
+        report.check_frames = before.check_frames;
+    }
+    model_.set_headset_report(std::move(report));
+}
+
+void LauncherPanels::request_check() {
+    if (model_.step() != LauncherStep::Headset) {
+        ui_.action_message = "the headset check is in the Headset step";
+        return;
+    }
+    if (!actions_.check_headset || model_.headset() == "none") {
+        ui_.action_message = "choose the simulated or the OpenXR headset to check it";
+        return;
+    }
+    if (!model_.headset_report().runtime_available) {
+        ui_.action_message = "no headset to check: " + model_.headset_report().message;
+        return;
+    }
+    ui_.action_message.clear();
+    check_requested_ = true;
+}
+
 void LauncherPanels::draw_headset() {
+    probe_if_needed();
     ImGui::TextUnformatted("Headset:");
     for (const char* headset : {"simulated", "openxr", "none"}) {
         ImGui::SameLine();
-        if (ImGui::RadioButton(headset, model_.headset() == headset))
+        if (ImGui::RadioButton(headset, model_.headset() == headset)) {
             note(model_.set_headset(headset));
-    }
-    const HeadsetReport& report = model_.headset_report();
-    if (model_.headset() == "openxr") {
-        if (report.runtime_available) {
-            ImGui::Text("%s, %s: %d x %d per eye", report.runtime.c_str(), report.system.c_str(),
-                        report.width, report.height);
-        } else {
-            dim_text(report.message.empty() ? "the OpenXR runtime is opened at Start"
-                                            : report.message);
+            probe_if_needed();
         }
+    }
+    draw_headset_report();
+    if (model_.headset() == "openxr") {
         ImGui::TextUnformatted("Answers: the participant, with the controller.");
     } else {
         ImGui::Text("Answers: the simulated observer (%s).",
                     model_.observer().empty() ? "default" : model_.observer().c_str());
     }
     draw_start();
+}
+
+void LauncherPanels::draw_headset_report() {
+    const HeadsetReport& report = model_.headset_report();
+    if (model_.headset() == "none") {
+        dim_text("No headset: the session runs in the window.");
+        return;
+    }
+    if (!report.runtime_available) {
+        error_text(report.message.empty() ? "no OpenXR runtime" : report.message);
+        if (model_.headset() != "simulated" && ImGui::Button("Use the simulated headset")) {
+            note(model_.set_headset("simulated"));
+            probe_if_needed();
+        }
+        return;
+    }
+    ImGui::Text("Runtime: %s", report.runtime.c_str());
+    ImGui::Text("Headset: %s, %d x %d pixels per eye (recommended)", report.system.c_str(),
+                report.width, report.height);
+    if (report.refresh_hz > 0.0) ImGui::Text("Refresh rate: %.1f Hz", report.refresh_hz);
+    if (report.ipd_m) ImGui::Text("IPD: %.1f mm", *report.ipd_m * 1000.0);
+    if (!report.interaction_profile.empty())
+        ImGui::Text("Controllers: %s", report.interaction_profile.c_str());
+    if (ImGui::Button("Check the headset (Ctrl+H)")) request_check();
+    ImGui::SameLine();
+    dim_text("shows the participant a calibration screen until CONFIRM");
+    draw_check_result();
+}
+
+void LauncherPanels::draw_check_result() {
+    const HeadsetReport& report = model_.headset_report();
+    if (report.check.empty()) return;
+    if (report.check == "confirmed") {
+        ImGui::TextColored(kGood, "Headset check: confirmed after %lld frames",
+                           static_cast<long long>(report.check_frames));
+        dim_text(report.check_message);
+    } else {
+        error_text("Headset check " + report.check + ": " + report.check_message);
+    }
+}
+
+void LauncherPanels::run_check(const std::function<CheckAnswer(const HeadsetCheckTurn&)>& turn) {
+    if (!actions_.check_headset) return;
+    check_focused_ = false;
+    check_answer_ = CheckAnswer::Continue;
+    HeadsetReport report = model_.headset_report();
+    Result<HeadsetReport> checked = actions_.check_headset(model_.headset(), turn);
+    if (checked) {
+        report = std::move(checked).value();
+    } else {
+        // It could not run (no Vulkan device, the runtime refused a session): the probe's
+        // report stays, with why.
+        report.check = "failed";
+        report.check_message = checked.error().message;
+        report.check_frames = 0;
+    }
+    model_.set_headset_report(std::move(report));
+}
+
+void LauncherPanels::check_key(const window::KeyPress& press) {
+    const bool ctrl = (press.mods & GLFW_MOD_CONTROL) != 0;
+    if (press.key == GLFW_KEY_ESCAPE) check_answer_ = CheckAnswer::Cancel;
+    if (ctrl && press.key == GLFW_KEY_F) check_answer_ = CheckAnswer::Confirm;
+    if (ctrl && press.key == GLFW_KEY_Q) {
+        check_answer_ = CheckAnswer::Cancel;
+        quit_ = true;
+    }
+}
+
+CheckAnswer LauncherPanels::draw_check(const HeadsetCheckTurn& turn) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(viewport->WorkPos);
+    ImGui::SetNextWindowSize(viewport->WorkSize);
+    ImGui::Begin("monoplane lab", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+    draw_steps();
+    ImGui::Separator();
+    ImGui::TextUnformatted("Checking the headset: the participant sees a grid and a cross.");
+    ImGui::TextWrapped(
+        "Ask them to adjust the headset until the text is sharp and the grid square, then to "
+        "press CONFIRM on the controller (or press Fits here).");
+    char ipd[32] = "-";
+    if (turn.ipd_m) std::snprintf(ipd, sizeof ipd, "%.1f", *turn.ipd_m * 1000.0);
+    ImGui::Text(
+        "Showing the check in the headset: frames %lld, IPD %s mm, refresh %.1f Hz, "
+        "profile %s",
+        static_cast<long long>(turn.frames_shown), ipd, turn.refresh_hz,
+        turn.interaction_profile.empty() ? "none yet" : turn.interaction_profile.c_str());
+    if (ImGui::Button("Fits (Ctrl+F)")) check_answer_ = CheckAnswer::Confirm;
+    if (!check_focused_) {
+        check_focused_ = true;
+        ImGui::SetFocusID(ImGui::GetItemID(), ImGui::GetCurrentWindow());
+        ImGui::GetCurrentContext()->NavDisableHighlight = false;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel (Esc)")) check_answer_ = CheckAnswer::Cancel;
+    ImGui::End();
+    return std::exchange(check_answer_, CheckAnswer::Continue);
 }
 
 void LauncherPanels::draw_start() {
@@ -441,7 +588,7 @@ void LauncherPanels::draw_footer() {
     error_text(ui_.action_message);
     dim_text(
         "Keys: Tab / arrows move, Space or Enter acts, Ctrl+Right next step, Ctrl+Left back, "
-        "Ctrl+Enter Start, Ctrl+Q quit");
+        "Ctrl+H check the headset, Ctrl+Enter Start, Ctrl+Q quit");
 }
 
 }  // namespace monoplane::lab

@@ -3,8 +3,10 @@
 // reads as the model's steps, and the window as its frame loop.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "app/lab/launcher_model.h"
 #include "app/lab/launcher_window.h"
@@ -18,7 +20,8 @@ class LauncherPanels {
         : model_(model), ui_(ui), actions_(std::move(actions)) {}
 
     // A key press of the frame about to be drawn: the shortcuts (Ctrl+Right next step, Ctrl+Left
-    // back, Ctrl+Enter Start, Ctrl+E Export, Ctrl+R Analyse, Ctrl+Q quit). Between
+    // back, Ctrl+Enter Start, Ctrl+H check the headset, Ctrl+E Export, Ctrl+R Analyse, Ctrl+Q
+    // quit). Between
     // DesktopWindow::poll_events() and new_frame().
     void key(const window::KeyPress& press);
     // Draws the whole window for the model as it stands, acting on what was clicked. Between
@@ -29,6 +32,24 @@ class LauncherPanels {
     std::optional<LaunchRequest> take_launch() { return std::exchange(launch_, std::nullopt); }
     bool quit_requested() const { return quit_; }
 
+    // "Check the headset" (or Ctrl+H) was chosen in the Headset step: the window runs the check
+    // (run_check) after this frame. Once.
+    bool take_check_request() { return std::exchange(check_requested_, false); }
+    // Runs the headset check through the app (LauncherActions::check_headset), `turn` drawing
+    // each of its frames (check_key, draw_check), and puts its outcome in the model's headset
+    // report. Between frames, never inside one.
+    void run_check(const std::function<CheckAnswer(const HeadsetCheckTurn&)>& turn);
+    // A key press while the check runs: Ctrl+F the headset fits, Escape cancels, Ctrl+Q cancels
+    // and quits.
+    void check_key(const window::KeyPress& press);
+    // Draws the whole window while the check runs (the check's panel with Fits and Cancel);
+    // returns what the experimenter asked. Between new_frame() and end_frame().
+    CheckAnswer draw_check(const HeadsetCheckTurn& turn);
+    // The window was closed while the check runs: it is cancelled.
+    void cancel_check() { check_answer_ = CheckAnswer::Cancel; }
+    // The experimenter's answer since the last turn, for a turn without a frame drawn. Once.
+    CheckAnswer take_check_answer() { return std::exchange(check_answer_, CheckAnswer::Continue); }
+
   private:
     void draw_steps();
     void draw_database();
@@ -36,6 +57,11 @@ class LauncherPanels {
     void draw_participant();
     void draw_variable(const VariableField& field);
     void draw_headset();
+    void draw_headset_report();
+    void draw_check_result();
+    // Probes the chosen headset when the step is entered or the choice changed.
+    void probe_if_needed();
+    void request_check();
     void draw_start();
     void draw_summary();
     void draw_roster();
@@ -59,6 +85,10 @@ class LauncherPanels {
     std::optional<LaunchRequest> launch_;
     bool quit_ = false;
     std::optional<LauncherStep> focused_step_;  // the step whose entry focus was set
+    std::optional<std::string> probed_choice_;  // the headset probed since the step was entered
+    bool check_requested_ = false;
+    bool check_focused_ = false;                        // Fits has the keyboard focus
+    CheckAnswer check_answer_ = CheckAnswer::Continue;  // the experimenter's, for the next turn
 };
 
 }  // namespace monoplane::lab

@@ -104,7 +104,12 @@ void write_headset(JsonWriter& w, const LauncherModel& m) {
         w.value("ipd_m", *h.ipd_m);
     else
         w.null("ipd_m");
-    w.value("interaction_profile", h.interaction_profile).value("message", h.message).end_object();
+    w.value("interaction_profile", h.interaction_profile)
+        .value("message", h.message)
+        .value("check", h.check)
+        .value("check_message", h.check_message)
+        .value("check_frames", h.check_frames)
+        .end_object();
 }
 
 void write_start(JsonWriter& w, const LauncherModel& m) {

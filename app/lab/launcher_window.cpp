@@ -42,8 +42,14 @@ struct LauncherWindow::Impl {
     std::optional<LauncherStep> shown_step;  // the step of the last frame
     int frames_in_step = 0;
     bool screenshot_taken = false;
+    std::chrono::steady_clock::time_point last_check_frame;
+    int check_frames_drawn = 0;
 
     void frame();
+    // One turn of the headset check: input, and a frame of the check's panel at most every
+    // 15 ms (the check's loop may turn faster than the launcher needs to draw).
+    CheckAnswer check_turn(const HeadsetCheckTurn& turn);
+    void run_check();
     void after_frame();
     void write_state();
     void save_screenshot(const std::string& name);
@@ -56,6 +62,30 @@ void LauncherWindow::Impl::frame() {
     panels.draw();
     desktop->end_frame();
     after_frame();
+}
+
+CheckAnswer LauncherWindow::Impl::check_turn(const HeadsetCheckTurn& turn) {
+    desktop->poll_events();
+    for (const window::KeyPress& press : desktop->take_key_presses()) panels.check_key(press);
+    if (desktop->close_requested()) panels.cancel_check();
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_check_frame < std::chrono::milliseconds(15)) return panels.take_check_answer();
+    last_check_frame = now;
+    desktop->new_frame();
+    const CheckAnswer answer = panels.draw_check(turn);
+    desktop->end_frame();
+    // The check as the experimenter sees it, once it shows the runtime's measurements.
+    if (++check_frames_drawn == 10) save_screenshot("headset-check");
+    return answer;
+}
+
+// The check runs its own OpenXR session and Vulkan device beside the window's Context, and the
+// window goes on drawing (as the experimenter window does beside a session's headset).
+void LauncherWindow::Impl::run_check() {
+    check_frames_drawn = 0;
+    last_check_frame = {};
+    panels.run_check([this](const HeadsetCheckTurn& turn) { return check_turn(turn); });
+    write_state();
 }
 
 void LauncherWindow::Impl::after_frame() {
@@ -129,6 +159,7 @@ LauncherExit LauncherWindow::run() {
             s.write_state();
             return LauncherExit{std::move(launch)};
         }
+        if (s.panels.take_check_request()) s.run_check();
         // The launcher waits for a person: 60 frames a second are plenty, and leave the CPU to
         // whatever else runs on the lab PC.
         std::this_thread::sleep_for(std::chrono::milliseconds(15));

@@ -6,6 +6,7 @@
 // LauncherUi.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -20,8 +21,31 @@
 
 namespace monoplane::lab {
 
+// The headset check while it runs, as the window shows it (app::HeadsetCheckProgress's fields).
+struct HeadsetCheckTurn {
+    std::int64_t frames_shown = 0;
+    double refresh_hz = 0.0;
+    std::optional<double> ipd_m;
+    std::string interaction_profile;
+};
+
+// What the experimenter asks after each turn of the check (app::CheckRequest).
+enum class CheckAnswer { Continue, Confirm, Cancel };
+
 // What the launcher asks of the app that it cannot do itself (the same code as the commands).
 struct LauncherActions {
+    // The headset step: probes the runtime `study run --headset HEADSET` would use ("simulated"
+    // or "openxr"; app::probe_headset with the lab's simulated-headset options). No runtime is
+    // a report with runtime_available false and its message, not an error. Unset: not probed.
+    std::function<Result<HeadsetReport>(const std::string& headset)> probe_headset;
+    // The headset check on that runtime (app::run_headset_check): blocks until it ends, calling
+    // `turn` on the calling thread every frame (the window draws itself and answers). Returns
+    // the runtime's report with refresh rate, IPD and interaction profile, and check,
+    // check_message and check_frames saying how it ended. Unset: no check offered.
+    std::function<Result<HeadsetReport>(
+        const std::string& headset,
+        const std::function<CheckAnswer(const HeadsetCheckTurn&)>& turn)>
+        check_headset;
     // `study export` of the open database; returns the file written.
     std::function<Result<std::filesystem::path>()> export_data;
     // `analyze` of the open database; returns the report written.

@@ -427,5 +427,44 @@ TEST_F(LauncherModelTest, TheStateDumpNamesWhatEachStepShows) {
     EXPECT_TRUE(j["summary"].is_null());
 }
 
+// The headset step's report (the window probes and checks; the model shows it as is), including
+// how the last headset check ended.
+TEST_F(LauncherModelTest, StateJsonShowsTheHeadsetReportAndTheCheck) {
+    LauncherModel m(LauncherSettings{});
+    HeadsetReport report;
+    report.runtime_available = true;
+    report.runtime = "monoplane simxr 0.1.0";
+    report.system = "monoplane simxr: HTC Vive";
+    report.width = 1080;
+    report.height = 1200;
+    report.refresh_hz = 72.0;
+    report.ipd_m = 0.064;
+    report.interaction_profile = "/interaction_profiles/htc/vive_controller";
+    report.check = "runtime lost";
+    report.check_message = "the runtime lost the session";
+    report.check_frames = 14;
+    m.set_headset_report(report);
+    const nlohmann::json h = nlohmann::json::parse(m.state_json())["headset"];
+    EXPECT_EQ(h["runtime_available"], true);
+    EXPECT_EQ(h["runtime"], "monoplane simxr 0.1.0");
+    EXPECT_EQ(h["system"], "monoplane simxr: HTC Vive");
+    EXPECT_EQ(h["width"], 1080);
+    EXPECT_EQ(h["height"], 1200);
+    EXPECT_DOUBLE_EQ(h["refresh_hz"].get<double>(), 72.0);
+    EXPECT_DOUBLE_EQ(h["ipd_m"].get<double>(), 0.064);
+    EXPECT_EQ(h["interaction_profile"], "/interaction_profiles/htc/vive_controller");
+    EXPECT_EQ(h["message"], "");
+    EXPECT_EQ(h["check"], "runtime lost");
+    EXPECT_EQ(h["check_message"], "the runtime lost the session");
+    EXPECT_EQ(h["check_frames"], 14);
+
+    m.set_headset_report(HeadsetReport{});  // no runtime probed, no check yet
+    const nlohmann::json none = nlohmann::json::parse(m.state_json())["headset"];
+    EXPECT_EQ(none["runtime_available"], false);
+    EXPECT_TRUE(none["ipd_m"].is_null());
+    EXPECT_EQ(none["check"], "");
+    EXPECT_EQ(none["check_frames"], 0);
+}
+
 }  // namespace
 }  // namespace monoplane::lab
