@@ -13,6 +13,7 @@
 
 #include "app/commands/analysis_run.h"
 #include "app/commands/commands.h"
+#include "app/commands/validation_report.h"
 #include "app/commands/headset_check.h"
 #include "app/commands/session_summary.h"
 #include "app/commands/study_options.h"
@@ -201,7 +202,12 @@ lab::LauncherExit open_launcher(lab::LauncherModel& model, lab::LauncherUi& ui, 
         return check_for_lab(headset, turn, o, global);
     };
     auto window = lab::LauncherWindow::create(*ctx, model, ui, actions).value_or_throw();
-    return window->run();
+    const lab::LauncherExit exit = window->run();
+    window.reset();
+    // With --validation, any message of the launcher's own device fails the command, as a
+    // session's do.
+    fail_on_validation_messages(*ctx, global);
+    return exit;
 }
 
 void run_lab(const LabOptions& o, const GlobalOptions& global) {

@@ -95,7 +95,9 @@ bool wait_for(const std::function<bool()>& done, int seconds) {
 class Lab {
   public:
     Lab(const fs::path& dir, const std::vector<std::string>& extra) : dir_(dir) {
+        // The validation layer on, as in every test: any message fails the launcher.
         std::vector<std::string> args = {MONOPLANE_EXE,
+                                         "--validation",
                                          "lab",
                                          "--db",
                                          (dir / "lab.sqlite").string(),
