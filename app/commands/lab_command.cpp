@@ -13,10 +13,10 @@
 
 #include "app/commands/analysis_run.h"
 #include "app/commands/commands.h"
-#include "app/commands/validation_report.h"
 #include "app/commands/headset_check.h"
 #include "app/commands/session_summary.h"
 #include "app/commands/study_options.h"
+#include "app/commands/validation_report.h"
 #include "app/lab/launcher_model.h"
 #include "app/lab/launcher_window.h"
 #include "app/window/desktop_window.h"
