@@ -192,6 +192,12 @@ class LauncherModel {
     Result<bool> set_headset(const std::string& headset);
     Result<bool> set_observer(const std::string& observer);
     void set_headset_report(HeadsetReport report) { headset_report_ = std::move(report); }
+    // How the window draws (its monitor's content scale and the font size that gives), for the
+    // state dump: the window sets it when it opens. Any time.
+    void set_window_scale(double content_scale, double font_pixels) {
+        content_scale_ = content_scale;
+        font_pixels_ = font_pixels;
+    }
     const std::string& headset() const { return headset_; }
     const std::string& observer() const { return observer_; }
     const HeadsetReport& headset_report() const { return headset_report_; }
@@ -245,6 +251,8 @@ class LauncherModel {
     std::string headset_ = "simulated";
     std::string observer_;
     HeadsetReport headset_report_;
+    double content_scale_ = 0.0;  // 0: no window has opened
+    double font_pixels_ = 0.0;
     std::optional<std::uint64_t> seed_;
     std::string start_message_;
     std::optional<LaunchRequest> launched_;

@@ -178,6 +178,10 @@ std::string LauncherModel::state_json() const {
     write_start(w, *this);
     write_roster(w, *this);
     write_summary(w, *this);
+    w.begin_object("window")
+        .value("content_scale", content_scale_)
+        .value("font_pixels", font_pixels_)
+        .end_object();
     w.end_object();
     return w.str();
 }

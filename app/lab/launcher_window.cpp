@@ -1,5 +1,7 @@
 #include "app/lab/launcher_window.h"
 
+#include <algorithm>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -144,6 +146,9 @@ Result<std::unique_ptr<LauncherWindow>> LauncherWindow::create(const vk_core::Co
     if (!desktop) return desktop.error();
     auto impl = std::make_unique<Impl>(model, ui, std::move(actions));
     impl->desktop = std::move(desktop).value();
+    // As DesktopWindow scales it: never below 16 pixels, more on a dense monitor.
+    const float scale = std::max(1.0f, impl->desktop->content_scale());
+    model.set_window_scale(impl->desktop->content_scale(), options.font_pixels * scale);
     // Arrow keys, Space and Enter reach every button, list entry and field.
     ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
     return std::unique_ptr<LauncherWindow>(new LauncherWindow(std::move(impl)));

@@ -34,6 +34,7 @@
 #include "study/roster.h"
 
 // Last: Xlib defines macros (None, Bool, Status) that other headers use as names.
+#include <X11/Xatom.h>
 #include <X11/Xlib.h>
 #undef None
 #undef Bool
@@ -371,6 +372,33 @@ TEST_F(LabWindowTest, DayFromProtocolToExport) {
         EXPECT_TRUE(shot_steps.count(step)) << "no screenshot of " << step;
         EXPECT_TRUE(lab.steps_seen().count(step)) << "the state file never named " << step;
     }
+}
+
+// A dense monitor: with the X server's resources saying 192 dpi (Xft.dpi, which GLFW reads as a
+// content scale of 2, as desktops set it for HiDPI screens) the launcher draws its 16-pixel text at
+// 32 pixels, and says so in its state.
+TEST_F(LabWindowTest, TextScalesWithTheMonitorsContentScale) {
+    Display* display = XOpenDisplay(nullptr);
+    ASSERT_NE(display, nullptr);
+    const Atom resources = XInternAtom(display, "RESOURCE_MANAGER", False);
+    const std::string dense = "Xft.dpi:\t192\n";
+    XChangeProperty(display, DefaultRootWindow(display), resources, XA_STRING, 8, PropModeReplace,
+                    reinterpret_cast<const unsigned char*>(dense.data()),
+                    static_cast<int>(dense.size()));
+    XSync(display, False);
+    const fs::path dir = prepare({});
+    {
+        Lab lab(dir, {});
+        EXPECT_TRUE(lab.wait_step("protocol")) << lab.log();
+        EXPECT_TRUE(wait_for([&] { return lab.state()["window"]["font_pixels"] == 32.0; }, 30))
+            << lab.state().dump(1);
+        EXPECT_EQ(lab.state()["window"]["content_scale"], 2.0);
+        EXPECT_TRUE(lab.focus()) << lab.log();
+        xdo("key ctrl+q");
+        EXPECT_EQ(lab.wait_exit(60), 0) << lab.log();
+    }
+    XDeleteProperty(display, DefaultRootWindow(display), resources);
+    XCloseDisplay(display);
 }
 
 TEST_F(LabWindowTest, BadInputKeepsStartDisabled) {
