@@ -8,7 +8,7 @@ packages=(
   libvulkan-dev glslc mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   libglm-dev libstb-dev libcli11-dev libtomlplusplus-dev libboost-math-dev
   libgtest-dev libgmock-dev libbenchmark-dev libsqlite3-dev libssl-dev
-  libopenxr-dev libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation libglfw3-dev libimgui-dev xvfb xauth xdotool
+  libopenxr-dev libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation libglfw3-dev libimgui-dev libx11-dev xvfb xauth xdotool
   librsvg2-dev fonts-dejavu-core
   libtinygltf-dev nlohmann-json3-dev libmeshoptimizer-dev assimp-testmodels
   python3 python3-pandas r-base-core r-cran-jsonlite r-cran-dbi r-cran-rsqlite
