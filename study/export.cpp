@@ -34,14 +34,6 @@ Cell boolean(bool value) {
     return {Cell::Type::Bool, {}, value};
 }
 
-// "fnv1a64:" + 16 hex digits. The prefix keeps it text in pandas and R: a bare hash of digits
-// only would be read as a number (and R reads "0x..." as one too), losing leading zeros.
-std::string hash_text(std::uint64_t hash) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "fnv1a64:%016llx", static_cast<unsigned long long>(hash));
-    return buffer;
-}
-
 Cell optional_number(const std::optional<double>& value) {
     return value ? number(number_text(*value)) : na();
 }
@@ -209,6 +201,12 @@ bool is_json_export(std::string_view head) {
 }
 
 }  // namespace
+
+std::string hash_text(std::uint64_t hash) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "fnv1a64:%016llx", static_cast<unsigned long long>(hash));
+    return buffer;
+}
 
 std::string_view export_format_name(ExportFormat format) {
     switch (format) {

@@ -107,6 +107,10 @@ std::string json_string(std::string_view value);
 // Integer nanoseconds as exact decimal seconds, '.' as the point regardless of locale:
 // 1500000000 -> "1.5", 0 -> "0.0", 1 -> "0.000000001".
 std::string seconds_text(std::int64_t ns);
+// A protocol hash as the export and `study list` write it: "fnv1a64:" + 16 hex digits. The
+// prefix keeps it text in pandas and R: a bare hash of digits would be read as a number (and R
+// reads "0x..." as one too), losing leading zeros.
+std::string hash_text(std::uint64_t hash);
 // The shortest text that reads back as the same double, '.' as the point ("8", "39.5", "1.6").
 std::string number_text(double value);
 

@@ -8,6 +8,7 @@
 
 #include "app/commands/global_options.h"
 #include "app/commands/study_headset.h"
+#include "study/study_store.h"
 
 namespace monoplane::app {
 
@@ -34,6 +35,13 @@ struct StudyOptions {
     std::string note;    // note: the text
     HeadsetStudyOptions headset_options;
 };
+
+// Choosing a session on the command line (resume, note): --session-id alone, or --participant
+// with the participant's --session number. Each throws UserError naming the database.
+void check_session_id_alone(const StudyOptions& o);
+study::ParticipantRecord participant_record(const study::StudyStore& store, const StudyOptions& o);
+std::int64_t participant_session_id(const study::ParticipantRecord& record, const StudyOptions& o,
+                                    int session_number);
 
 // The subcommands' work (study_session.cpp, study_roster.cpp). Each throws UserError with a
 // message for the experimenter when it cannot go on.

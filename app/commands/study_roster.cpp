@@ -13,12 +13,6 @@
 namespace monoplane::app {
 namespace {
 
-std::string hash_hex(std::uint64_t hash) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(hash));
-    return buffer;
-}
-
 std::string or_dash(const std::string& text) {
     return text.empty() ? "-" : text;
 }
@@ -31,13 +25,14 @@ void print_roster_table(const std::vector<study::RosterEntry>& entries, bool sev
         const study::RosterRow& r = e.row;
         const std::string trials =
             std::to_string(r.trials_decided) + "/" + std::to_string(r.trials_planned);
-        std::printf("%-12s %4d %7d %4lld  %-11s %-16s %-20s %-20s %-14s %-10s %s%s\n",
-                    r.participant_code.c_str(), r.participant_number + 1, r.session_number,
-                    static_cast<long long>(r.session_id), trials.c_str(),
-                    (r.protocol_name + " " + hash_hex(r.protocol_hash).substr(0, 6)).c_str(),
-                    or_dash(r.started_utc).c_str(), or_dash(r.ended_utc).c_str(),
-                    or_dash(r.device).c_str(), or_dash(r.runtime).c_str(), e.state().c_str(),
-                    several ? ("  " + e.database.string()).c_str() : "");
+        std::printf(
+            "%-12s %4d %7d %4lld  %-11s %-16s %-20s %-20s %-14s %-10s %s%s\n",
+            r.participant_code.c_str(), r.participant_number + 1, r.session_number,
+            static_cast<long long>(r.session_id), trials.c_str(),
+            (r.protocol_name + " " + study::hash_text(r.protocol_hash).substr(8, 6)).c_str(),
+            or_dash(r.started_utc).c_str(), or_dash(r.ended_utc).c_str(), or_dash(r.device).c_str(),
+            or_dash(r.runtime).c_str(), e.state().c_str(),
+            several ? ("  " + e.database.string()).c_str() : "");
     }
 }
 
@@ -64,7 +59,7 @@ void write_roster_json(const std::vector<study::RosterEntry>& entries) {
         json.value("device", r.device)
             .value("runtime", r.runtime)
             .value("protocol", r.protocol_name)
-            .value("protocol_hash", "fnv1a64:" + hash_hex(r.protocol_hash));
+            .value("protocol_hash", study::hash_text(r.protocol_hash));
         if (e.holder) {
             json.begin_object("held_by")
                 .value("pid", static_cast<std::int64_t>(e.holder->pid))
@@ -81,6 +76,27 @@ void write_roster_json(const std::vector<study::RosterEntry>& entries) {
 }
 
 }  // namespace
+
+void check_session_id_alone(const StudyOptions& o) {
+    if (!o.participant.empty() || o.session_number)
+        throw UserError(
+            "--session-id names a session alone: leave out --participant and --session");
+}
+
+study::ParticipantRecord participant_record(const study::StudyStore& store, const StudyOptions& o) {
+    std::optional<study::ParticipantRecord> record =
+        store.participant(o.participant).value_or_throw();
+    if (!record) throw UserError(o.db + ": no participant " + o.participant);
+    return std::move(*record);
+}
+
+std::int64_t participant_session_id(const study::ParticipantRecord& record, const StudyOptions& o,
+                                    int session_number) {
+    for (const auto& [number, id] : record.sessions)
+        if (number == session_number) return id;
+    throw UserError(o.db + ": participant " + o.participant + " has no session " +
+                    std::to_string(session_number));
+}
 
 void export_study(const StudyOptions& o) {
     const study::ExportFormat format = study::parse_export_format(o.format).value_or_throw();
@@ -113,10 +129,7 @@ void note_study(const StudyOptions& o) {
     auto store = study::StudyStore::open(o.db).value_or_throw();
     std::int64_t session_id = 0;
     if (o.session_id) {
-        if (!o.participant.empty() || o.session_number)
-            throw UserError(
-                "--session-id names a session alone: leave out --participant and "
-                "--session");
+        check_session_id_alone(o);
         session_id = *o.session_id;
         store->session(session_id).value_or_throw();  // an unknown id is an error naming it
     } else {
@@ -124,15 +137,9 @@ void note_study(const StudyOptions& o) {
             throw UserError(
                 "say which session the note is for: --participant CODE [--session N] (N: "
                 "that participant's session number) or --session-id ID (study list shows both)");
-        const auto record = store->participant(o.participant).value_or_throw();
-        if (!record) throw UserError(o.db + ": no participant " + o.participant);
-        const int number = o.session_number.value_or(record->next_session_number() - 1);
-        const auto id = store->find_session(o.participant, number).value_or_throw();
-        if (!id) {
-            throw UserError(o.db + ": participant " + o.participant + " has no session " +
-                            std::to_string(number));
-        }
-        session_id = *id;
+        const study::ParticipantRecord record = participant_record(*store, o);
+        session_id = participant_session_id(
+            record, o, o.session_number.value_or(record.next_session_number() - 1));
     }
     study::SessionNote note;
     note.text = o.note;

@@ -211,10 +211,7 @@ namespace {
 // unfinished session.
 std::int64_t session_to_resume(const StudyOptions& o, const study::StudyStore& store) {
     if (o.session_id) {
-        if (!o.participant.empty() || o.session_number)
-            throw UserError(
-                "--session-id names a session alone: leave out --participant and "
-                "--session");
+        check_session_id_alone(o);
         return *o.session_id;
     }
     if (o.session_number && o.participant.empty()) {
@@ -224,17 +221,9 @@ std::int64_t session_to_resume(const StudyOptions& o, const study::StudyStore& s
             "--session-id ID (study list shows both)");
     }
     if (!o.participant.empty()) {
-        const auto record = store.participant(o.participant).value_or_throw();
-        if (!record) throw UserError(o.db + ": no participant " + o.participant);
-        if (o.session_number) {
-            const auto id = store.find_session(o.participant, *o.session_number).value_or_throw();
-            if (!id) {
-                throw UserError(o.db + ": participant " + o.participant + " has no session " +
-                                std::to_string(*o.session_number));
-            }
-            return *id;
-        }
-        for (auto it = record->sessions.rbegin(); it != record->sessions.rend(); ++it) {
+        const study::ParticipantRecord record = participant_record(store, o);
+        if (o.session_number) return participant_session_id(record, o, *o.session_number);
+        for (auto it = record.sessions.rbegin(); it != record.sessions.rend(); ++it) {
             if (store.session(it->second).value_or_throw().status !=
                 study::SessionStatus::Completed)
                 return it->second;
