@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "common/result.h"
-#include "renderer/rig/rig.h"
-#include "renderer/rig/tangents.h"
+#include "rig/rig.h"
+#include "rig/tangents.h"
 
 namespace monoplane::hmd {
 

@@ -151,7 +151,7 @@ std::optional<double> read_tangent(const TomlScope& eye, const TangentRule& rule
     return tangent;
 }
 
-// The bound on cant_deg: the rig's (renderer/rig/rig.h kMaxCant), in degrees.
+// The bound on cant_deg: the rig's (rig/rig.h kMaxCant), in degrees.
 constexpr double kMaxCantDegrees = 45.0;
 
 // cant_deg: the eye's yaw about the head's +y axis in degrees, positive turning it left

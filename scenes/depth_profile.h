@@ -10,8 +10,8 @@
 
 #include <glm/ext/vector_double3.hpp>
 
-#include "renderer/rig/pose.h"
-#include "renderer/rig/tangents.h"
+#include "rig/pose.h"
+#include "rig/tangents.h"
 #include "scenes/scene.h"
 
 namespace monoplane::scenes {

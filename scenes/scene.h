@@ -11,7 +11,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "renderer/rig/pose.h"
+#include "rig/pose.h"
 
 namespace monoplane::scenes {
 

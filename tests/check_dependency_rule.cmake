@@ -1,4 +1,5 @@
-# Fails if a Vulkan-free folder includes Vulkan, the GPU side of the renderer, or the app;
+# The foundation (rig/) depends on nothing of the project but common/; scenes/ and hmd/ build on it,
+# never on the renderer. Fails if a Vulkan-free folder includes Vulkan, the GPU side of the renderer, or the app;
 # study/ and analysis/ may not include renderer headers at all; analysis/ reads plain rows and
 # knows nothing of the study library (the app converts the database into rows).
 set(violations "")
@@ -14,9 +15,11 @@ function(check folder pattern)
   set(violations ${violations} PARENT_SCOPE)
 endfunction()
 set(gpu "vulkan/|GLFW/|openxr/|renderer/vk/|renderer/passes/|renderer/modes/|renderer/profile/|app/")
-check(renderer/rig "${gpu}|scenes/|hmd/|study/|analysis/")
-check(scenes "${gpu}|study/|analysis/|hmd/")
-check(hmd "${gpu}|scenes/|study/|analysis/")
+check(rig "${gpu}|renderer/|scenes/|hmd/|study/|analysis/")
+check(scenes "${gpu}|renderer/|study/|analysis/|hmd/")
+check(hmd "${gpu}|renderer/|scenes/|study/|analysis/")
+# simxr, a runtime any OpenXR application loads, knows the rig and the profiles, not monoplane.
+check(simxr "renderer/|app/|GLFW/|scenes/|study/|analysis/")
 check(renderer/plan "${gpu}|scenes/|hmd/|study/|analysis/")
 check(renderer/quality "${gpu}|scenes/|hmd/|study/|analysis/")
 check(charts "${gpu}|renderer/|scenes/|hmd/|study/|analysis/")

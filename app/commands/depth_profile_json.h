@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "common/json_writer.h"
-#include "renderer/rig/pose.h"
-#include "renderer/rig/tangents.h"
+#include "rig/pose.h"
+#include "rig/tangents.h"
 #include "scenes/scene.h"
 
 namespace monoplane::app {

@@ -16,7 +16,7 @@
 #include "app/headset/openxr_headset.h"
 #include "renderer/profile/driver_compiles.h"
 #include "renderer/profile/frame_stats.h"
-#include "renderer/rig/pose.h"
+#include "rig/pose.h"
 #include "study/live_session.h"
 #include "study/study_store.h"
 

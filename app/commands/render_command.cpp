@@ -25,7 +25,7 @@
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/plan/frame_plan_json.h"
-#include "renderer/rig/pose_path.h"
+#include "rig/pose_path.h"
 #include "renderer/vk/context.h"
 #include "scenes/generate.h"
 

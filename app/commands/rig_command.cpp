@@ -22,8 +22,8 @@
 #include "charts/svg_writer.h"
 #include "common/json_writer.h"
 #include "hmd/profile.h"
-#include "renderer/rig/angular_error.h"
-#include "renderer/rig/rig.h"
+#include "rig/angular_error.h"
+#include "rig/rig.h"
 
 namespace monoplane::app {
 namespace {

@@ -1,12 +1,12 @@
 // `monoplane rig --error-budget-arcmin A [--disparity] [--budget-depth Z]`: the nearest mono
-// plane whose error in visual angle stays within A arcminutes (issue 20, renderer/rig/
+// plane whose error in visual angle stays within A arcminutes (issue 20, rig/
 // error_budget.h), as a readable line or JSON.
 #pragma once
 
 #include <ostream>
 
 #include "hmd/profile.h"
-#include "renderer/rig/error_budget.h"
+#include "rig/error_budget.h"
 
 namespace monoplane::app {
 

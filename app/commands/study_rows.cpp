@@ -5,8 +5,8 @@
 #include <memory>
 #include <system_error>
 
-#include "renderer/rig/error_budget.h"
-#include "renderer/rig/rig.h"
+#include "rig/error_budget.h"
+#include "rig/rig.h"
 #include "study/export.h"
 #include "study/render_mode.h"
 

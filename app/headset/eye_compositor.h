@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "renderer/modes/view_setup.h"
-#include "renderer/rig/tangents.h"
+#include "rig/tangents.h"
 #include "renderer/vk/image.h"
 
 namespace monoplane::headset {

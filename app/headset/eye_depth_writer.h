@@ -14,7 +14,7 @@
 
 #include "app/headset/eye_compositor.h"
 #include "renderer/modes/mode_renderer.h"
-#include "renderer/rig/tangents.h"
+#include "rig/tangents.h"
 #include "renderer/vk/descriptor_set.h"
 
 namespace monoplane::headset {

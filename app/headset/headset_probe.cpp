@@ -7,7 +7,7 @@
 namespace monoplane::headset {
 namespace {
 
-// The launcher offers the simulated runtime (app/headset/simxr) whenever the real one fails.
+// The launcher offers the simulated runtime (simxr) whenever the real one fails.
 constexpr const char* kSimulatedOffered =
     " The simulated headset is available instead: choose 'simulated' for a dry run.";
 

@@ -7,7 +7,7 @@
 // The session life cycle follows the specification: READY -> xrBeginSession, STOPPING ->
 // xrEndSession, EXITING or LOSS_PENDING -> the session is over (the study stays resumable).
 // Works with any conformant runtime: SteamVR, Monado, Meta's, and monoplane's own simulated one
-// (app/headset/simxr, chosen through XR_RUNTIME_JSON).
+// (simxr, chosen through XR_RUNTIME_JSON).
 #pragma once
 
 #include <array>
@@ -18,8 +18,8 @@
 #include <vector>
 
 #include "common/result.h"
-#include "renderer/rig/pose.h"
-#include "renderer/rig/tangents.h"
+#include "rig/pose.h"
+#include "rig/tangents.h"
 #include "renderer/vk/context.h"
 
 namespace monoplane::headset {

@@ -15,7 +15,7 @@
 
 #include "app/headset/eye_compositor.h"
 #include "app/headset/overlay_text.h"
-#include "renderer/rig/tangents.h"
+#include "rig/tangents.h"
 
 namespace monoplane::headset {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "renderer/rig/projection.h"
+#include "rig/projection.h"
 
 namespace monoplane::modes {
 

@@ -10,7 +10,7 @@
 #include <glm/ext/matrix_double4x4.hpp>
 #include <glm/ext/vector_int2.hpp>
 
-#include "renderer/rig/tangents.h"
+#include "rig/tangents.h"
 
 namespace monoplane::modes {
 

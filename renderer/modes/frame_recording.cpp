@@ -4,7 +4,7 @@
 
 #include "renderer/modes/mode_renderer_internals.h"
 #include "renderer/passes/culling/cull_constants.h"
-#include "renderer/rig/temporal_jitter.h"
+#include "rig/temporal_jitter.h"
 
 namespace monoplane::modes {
 namespace {

@@ -31,7 +31,7 @@
 #include "renderer/plan/render_choices.h"
 #include "renderer/plan/variant_chooser.h"
 #include "renderer/profile/frame_profiler.h"
-#include "renderer/rig/rig.h"
+#include "rig/rig.h"
 #include "renderer/vk/frame_ring.h"
 #include "renderer/vk/frame_uploads.h"
 

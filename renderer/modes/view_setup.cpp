@@ -2,7 +2,7 @@
 
 #include <glm/ext/matrix_transform.hpp>
 
-#include "renderer/rig/projection.h"
+#include "rig/projection.h"
 
 namespace monoplane::modes {
 

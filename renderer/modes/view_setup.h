@@ -8,9 +8,9 @@
 
 #include <glm/ext/matrix_double4x4.hpp>
 
-#include "renderer/rig/pose.h"
-#include "renderer/rig/rig.h"
-#include "renderer/rig/tangents.h"
+#include "rig/pose.h"
+#include "rig/rig.h"
+#include "rig/tangents.h"
 
 namespace monoplane::modes {
 

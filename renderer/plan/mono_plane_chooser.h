@@ -33,7 +33,7 @@
 
 #include "common/result.h"
 #include "renderer/plan/depth_histogram.h"
-#include "renderer/rig/error_budget.h"
+#include "rig/error_budget.h"
 
 namespace monoplane::modes {
 

@@ -7,7 +7,7 @@
 
 #include <glm/ext/matrix_double4x4.hpp>
 
-#include "renderer/rig/pose.h"
+#include "rig/pose.h"
 #include "scenes/scene.h"
 
 namespace monoplane::scenes::gltf {

@@ -1,12 +1,12 @@
-// Fuzz target: simxr scripts (app/headset/simxr/script.h), the TOML that drives the simulated
+// Fuzz target: simxr scripts (simxr/script.h), the TOML that drives the simulated
 // OpenXR runtime, and the timeline functions that turn its seconds into nanoseconds.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 
-#include "app/headset/simxr/interaction_profiles.h"
-#include "app/headset/simxr/script.h"
+#include "simxr/interaction_profiles.h"
+#include "simxr/script.h"
 #include "hmd/profile.h"
 #include "tests/fuzz/fuzz_runner.h"
 #include "tests/fuzz/mutator.h"

@@ -13,8 +13,8 @@
 
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
-#include "renderer/rig/angular_error.h"
-#include "renderer/rig/pose_path.h"
+#include "rig/angular_error.h"
+#include "rig/pose_path.h"
 #include "scenes/generate.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/gpu/hybrid_test_scenes.h"

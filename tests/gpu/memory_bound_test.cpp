@@ -10,7 +10,7 @@
 #include "common/resident_memory.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
-#include "renderer/rig/pose_path.h"
+#include "rig/pose_path.h"
 #include "scenes/generate.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/gpu/profile_inputs.h"

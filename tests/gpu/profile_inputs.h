@@ -3,7 +3,7 @@
 
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
-#include "renderer/rig/pose.h"
+#include "rig/pose.h"
 
 namespace monoplane::testing {
 

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "renderer/modes/mode_renderer.h"
-#include "renderer/rig/projection.h"
+#include "rig/projection.h"
 #include "tests/gpu/gpu_test.h"
 
 namespace monoplane {

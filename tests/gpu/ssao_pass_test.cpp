@@ -23,7 +23,7 @@
 #include "renderer/passes/forward/forward_pass.h"
 #include "renderer/passes/shared/view_constants.h"
 #include "renderer/passes/ssao/ssao_pass.h"
-#include "renderer/rig/projection.h"
+#include "rig/projection.h"
 #include "tests/gpu/gpu_test.h"
 
 namespace monoplane {

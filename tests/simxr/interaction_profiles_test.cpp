@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app/headset/simxr/interaction_profiles.h"
+#include "simxr/interaction_profiles.h"
 
 namespace monoplane::simxr {
 namespace {

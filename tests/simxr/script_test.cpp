@@ -8,7 +8,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "app/headset/simxr/script.h"
+#include "simxr/script.h"
 
 namespace monoplane::simxr {
 namespace {

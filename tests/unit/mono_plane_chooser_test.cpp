@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "renderer/plan/mono_plane_chooser.h"
-#include "renderer/rig/angular_error.h"
+#include "rig/angular_error.h"
 
 namespace monoplane::modes {
 namespace {

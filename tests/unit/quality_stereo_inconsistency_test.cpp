@@ -28,8 +28,8 @@
 
 #include "renderer/quality/colormap.h"
 #include "renderer/quality/stereo_inconsistency.h"
-#include "renderer/rig/pose.h"
-#include "renderer/rig/projection.h"
+#include "rig/pose.h"
+#include "rig/projection.h"
 
 namespace monoplane::quality {
 namespace {

@@ -1,4 +1,4 @@
-// The rig's error in visual angle and the error budget (renderer/rig/angular_error.h,
+// The rig's error in visual angle and the error budget (rig/angular_error.h,
 // error_budget.h; issue 20 item 1). The expectations are derived here from the geometry of
 // Fig. 2 alone: C at s = max(d / (2 (-l_L)), d / (2 r_R)) behind the eyes (eq. 1), a point seen
 // through C's central projection onto the plane z = -m, and brute-force maxima over dense
@@ -9,9 +9,9 @@
 #include <cmath>
 #include <limits>
 
-#include "renderer/rig/angular_error.h"
-#include "renderer/rig/error_budget.h"
-#include "renderer/rig/rig.h"
+#include "rig/angular_error.h"
+#include "rig/error_budget.h"
+#include "rig/rig.h"
 
 namespace monoplane::rig {
 namespace {

@@ -1,7 +1,7 @@
 // The rig with canted displays (docs/hybrid.md, "Canted displays"): eyes turned by a yaw about the
 // head's +y. Every expected value is derived here from a pinhole model of each camera written
-// independently of renderer/rig/rig.cpp: a point's tangents in a camera turned by yaw a are
-// those of R_y(-a) (p - position), and pixels follow from the tangents (renderer/rig/tangents.h).
+// independently of rig/rig.cpp: a point's tangents in a camera turned by yaw a are
+// those of R_y(-a) (p - position), and pixels follow from the tangents (rig/tangents.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +11,7 @@
 
 #include <glm/ext/matrix_double4x4.hpp>
 
-#include "renderer/rig/rig.h"
+#include "rig/rig.h"
 
 namespace monoplane::rig {
 namespace {

@@ -1,4 +1,4 @@
-// The eye projection checked against the tangent definition of a frustum (renderer/rig/tangents.h),
+// The eye projection checked against the tangent definition of a frustum (rig/tangents.h),
 // computed here by hand rather than through the matrix code.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 
 #include <glm/ext/matrix_double4x4.hpp>
 
-#include "renderer/rig/pose.h"
-#include "renderer/rig/projection.h"
+#include "rig/pose.h"
+#include "rig/projection.h"
 
 namespace monoplane::rig {
 namespace {

@@ -15,7 +15,7 @@
 #include <glm/ext/vector_float2.hpp>
 #include <glm/ext/vector_float4.hpp>
 
-#include "renderer/rig/rig.h"
+#include "rig/rig.h"
 
 namespace monoplane::rig {
 namespace {

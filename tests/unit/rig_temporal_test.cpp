@@ -1,5 +1,5 @@
-// TAA's camera math (renderer/rig/temporal_jitter.h, eq. 9 in rig.h) and scripted head motion
-// (renderer/rig/pose_path.h), against values derived here from the geometry.
+// TAA's camera math (rig/temporal_jitter.h, eq. 9 in rig.h) and scripted head motion
+// (rig/pose_path.h), against values derived here from the geometry.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,10 +7,10 @@
 
 #include <glm/ext/matrix_double4x4.hpp>
 
-#include "renderer/rig/pose_path.h"
-#include "renderer/rig/projection.h"
-#include "renderer/rig/rig.h"
-#include "renderer/rig/temporal_jitter.h"
+#include "rig/pose_path.h"
+#include "rig/projection.h"
+#include "rig/rig.h"
+#include "rig/temporal_jitter.h"
 
 namespace monoplane::rig {
 namespace {

@@ -1,4 +1,4 @@
-// The camera rig (renderer/rig/rig.h) against values derived by hand here, independently of the
+// The camera rig (rig/rig.h) against values derived by hand here, independently of the
 // rig's code: the HTC Vive calibration of Fink et al. 2019 (papers/000 Sect. 4.2), eq. 1-8 and
 // the Fig. 2 error. docs/rig.md explains the geometry.
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 
 #include <glm/ext/matrix_double4x4.hpp>
 
-#include "renderer/rig/rig.h"
+#include "rig/rig.h"
 
 namespace monoplane::rig {
 namespace {

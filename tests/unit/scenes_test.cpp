@@ -13,7 +13,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
-#include "renderer/rig/pose.h"
+#include "rig/pose.h"
 #include "scenes/beams.h"
 #include "scenes/chunk_builder.h"
 #include "scenes/generate.h"

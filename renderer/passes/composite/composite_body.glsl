@@ -37,7 +37,7 @@ void main() {
     vec4 c = vec4(0.0, 0.0, 0.0, 1.0);
     if (mapping == kMapProjective) {
         // The pixel's point on the mono plane: eye NDC with depth 0, the eye's far plane, which
-        // is the mono plane (for a canted eye an oblique one: renderer/rig/rig.h).
+        // is the mono plane (for a canted eye an oblique one: rig/rig.h).
         c = eye_to_mono * vec4(eye_ndc, 0.0, 1.0);
         vec2 uv = (c.xy / c.w * 0.5 + 0.5) * uv_limits.xy;
         // Keep the bilinear footprint inside C's viewport when it is a sub-range of the image.
