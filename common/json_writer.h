@@ -1,12 +1,15 @@
-// A minimal JSON writer: objects, arrays, strings and numbers, with correct escaping and no NaN
-// (JSON has none, so a non-finite number is written null). Shared by the CLI's --json output (one
-// line) and the analysis report's summary.json (indented, every digit kept).
+// The project's one JSON writer: objects, arrays, strings and numbers, with correct escaping and
+// no NaN (JSON has none, so a non-finite number is written null). Shared by the CLI's --json
+// output (one line), the analysis report's summary.json (indented, every digit kept) and the
+// study export (one trial per line).
 // Numbers are formatted with std::to_chars, so the text is the same on every platform and locale.
 // Output keys written with it are part of the public interface.
 #pragma once
 
+#include <cassert>
 #include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -28,12 +31,79 @@ inline std::string json_number_text(double value, int significant_digits = 0) {
     return std::string(buffer, result.ptr);
 }
 
+// True for text that is a number as JSON writes one (-?int[.frac][e[+-]exp]), which CSV readers
+// take as a number too: no "+1", ".5", "5.", "007", "inf".
+inline bool is_json_number(std::string_view text) {
+    std::size_t at = text.starts_with('-') ? 1 : 0;
+    const auto digits = [&] {
+        const std::size_t from = at;
+        while (at < text.size() && text[at] >= '0' && text[at] <= '9') ++at;
+        return at - from;
+    };
+    const std::size_t whole = digits();
+    if (whole == 0 || (whole > 1 && text[at - whole] == '0')) return false;
+    if (at < text.size() && text[at] == '.' && (++at, digits() == 0)) return false;
+    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+        ++at;
+        if (at < text.size() && (text[at] == '+' || text[at] == '-')) ++at;
+        if (digits() == 0) return false;
+    }
+    return at == text.size();
+}
+
+// Appends `text` as a JSON string literal, quotes included: '"' and '\\' escaped, \n, \r and
+// \t as such, the other control characters as \u00xx; everything else, UTF-8 included, as it
+// is. The one escaping rule of every JSON the project writes. Not nlohmann's dump(): it throws
+// on invalid UTF-8, which a file path or a typed note may hold, and would write \b and \f
+// differently from the outputs already written.
+inline void append_json_quoted(std::string& out, std::string_view text) {
+    out += '"';
+    for (char c : text) {
+        switch (c) {
+            case '"':
+                out += "\\\"";
+                break;
+            case '\\':
+                out += "\\\\";
+                break;
+            case '\n':
+                out += "\\n";
+                break;
+            case '\r':
+                out += "\\r";
+                break;
+            case '\t':
+                out += "\\t";
+                break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
+                    out += buf;
+                } else {
+                    out += c;
+                }
+        }
+    }
+    out += '"';
+}
+
+inline std::string json_quoted(std::string_view text) {
+    std::string out;
+    append_json_quoted(out, text);
+    return out;
+}
+
 struct JsonFormat {
     // One key per line, indented by two spaces per level, with a newline after the document;
     // otherwise the whole document on one line with no spaces.
     bool indented = false;
     // Of a double's digits; 0: as many as it takes to read back the same double.
     int significant_digits = 10;
+    // With indented: the members of only the outermost `line_levels` levels start lines of
+    // their own (0: every level's); deeper members follow on the same line after ", ", keys
+    // after ": ". An array of records with 1 reads one record per line.
+    int line_levels = 0;
 };
 
 class JsonWriter {
@@ -47,7 +117,7 @@ class JsonWriter {
 
     JsonWriter& value(std::string_view key, std::string_view text) {
         prefix(key);
-        quoted(text);
+        append_json_quoted(out_, text);
         return *this;
     }
     JsonWriter& value(std::string_view key, const char* text) {
@@ -89,7 +159,24 @@ class JsonWriter {
         return *this;
     }
 
+    // A number its caller has already formatted as JSON writes one (is_json_number), for digits a
+    // double would not keep: exact decimal seconds of integer nanoseconds, stored text.
+    JsonWriter& formatted_number(std::string_view key, std::string_view json_number) {
+        assert(is_json_number(json_number));
+        prefix(key);
+        out_ += json_number;
+        return *this;
+    }
+
     const std::string& str() const { return out_; }
+
+    // The text written since the last take (all of it, the first time), removed from the writer,
+    // which goes on where it was: a long document is streamed as it is written.
+    std::string take() {
+        std::string text = std::move(out_);
+        out_.clear();
+        return text;
+    }
 
   private:
     JsonWriter& open(std::string_view key, char bracket) {
@@ -100,8 +187,9 @@ class JsonWriter {
     }
     JsonWriter& close(char bracket) {
         const bool empty = first_.back();
+        const bool members_on_lines = on_lines();
         first_.pop_back();
-        if (format_.indented && !empty) new_line();
+        if (members_on_lines && !empty) new_line();
         out_ += bracket;
         if (format_.indented && first_.empty()) out_ += '\n';
         return *this;
@@ -110,49 +198,26 @@ class JsonWriter {
         out_ += '\n';
         out_.append(2 * first_.size(), ' ');
     }
+    // Whether the members of the innermost open level start lines of their own.
+    bool on_lines() const {
+        return format_.indented && (format_.line_levels <= 0 ||
+                                    first_.size() <= static_cast<std::size_t>(format_.line_levels));
+    }
     void prefix(std::string_view key) {
         if (!first_.empty()) {
-            if (!first_.back()) out_ += ',';
+            const bool first = first_.back();
+            if (!first) out_ += ',';
             first_.back() = false;
-            if (format_.indented) new_line();
+            if (on_lines())
+                new_line();
+            else if (format_.indented && !first)
+                out_ += ' ';
         }
         if (!key.empty()) {
-            quoted(key);
+            append_json_quoted(out_, key);
             out_ += format_.indented ? ": " : ":";
         }
     }
-    void quoted(std::string_view text) {
-        out_ += '"';
-        for (char c : text) {
-            switch (c) {
-                case '"':
-                    out_ += "\\\"";
-                    break;
-                case '\\':
-                    out_ += "\\\\";
-                    break;
-                case '\n':
-                    out_ += "\\n";
-                    break;
-                case '\r':
-                    out_ += "\\r";
-                    break;
-                case '\t':
-                    out_ += "\\t";
-                    break;
-                default:
-                    if (static_cast<unsigned char>(c) < 0x20) {
-                        char buf[8];
-                        std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
-                        out_ += buf;
-                    } else {
-                        out_ += c;
-                    }
-            }
-        }
-        out_ += '"';
-    }
-
     JsonFormat format_;
     std::string out_;
     std::vector<bool> first_;

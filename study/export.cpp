@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <set>
 
+#include "common/json_writer.h"
 #include "study/staircase_estimates.h"
 
 namespace monoplane::study {
@@ -36,26 +37,6 @@ Cell boolean(bool value) {
 
 Cell optional_number(const std::optional<double>& value) {
     return value ? number(number_text(*value)) : na();
-}
-
-// True for text that is a number as JSON writes one (-?int[.frac][e[+-]exp]), which CSV readers
-// take as a number too.
-bool is_json_number(std::string_view text) {
-    std::size_t at = text.starts_with('-') ? 1 : 0;
-    const auto digits = [&] {
-        const std::size_t from = at;
-        while (at < text.size() && text[at] >= '0' && text[at] <= '9') ++at;
-        return at - from;
-    };
-    const std::size_t whole = digits();
-    if (whole == 0 || (whole > 1 && text[at - whole] == '0')) return false;
-    if (at < text.size() && text[at] == '.' && (++at, digits() == 0)) return false;
-    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
-        ++at;
-        if (at < text.size() && (text[at] == '+' || text[at] == '-')) ++at;
-        if (digits() == 0) return false;
-    }
-    return at == text.size();
 }
 
 // A variable's value: integer and number variables as numbers (their stored text is canonical;
@@ -405,38 +386,6 @@ std::string csv_text_original(std::string_view cell) {
     return std::string(cell);
 }
 
-std::string json_string(std::string_view value) {
-    std::string out = "\"";
-    for (char c : value) {
-        switch (c) {
-            case '"':
-                out += "\\\"";
-                break;
-            case '\\':
-                out += "\\\\";
-                break;
-            case '\n':
-                out += "\\n";
-                break;
-            case '\r':
-                out += "\\r";
-                break;
-            case '\t':
-                out += "\\t";
-                break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char escape[8];
-                    std::snprintf(escape, sizeof escape, "\\u%04x", static_cast<unsigned>(c));
-                    out += escape;
-                } else {
-                    out += c;  // UTF-8 passes through unchanged
-                }
-        }
-    }
-    return out + '"';
-}
-
 std::string seconds_text(std::int64_t ns) {
     // Integer arithmetic, not a double: the export shows exactly the stored nanoseconds.
     const bool negative = ns < 0;
@@ -518,81 +467,91 @@ void write_notes_csv(const ExportData& data, std::ostream& out) {
 
 namespace {
 
-std::string json_value(const Cell& cell) {
+// The export's layout: one trial per line, ", " and ": " within it (docs/data.md shows it).
+constexpr JsonFormat kExportJson{.indented = true, .line_levels = 1};
+
+void write_cell(JsonWriter& json, std::string_view key, const Cell& cell) {
     switch (cell.type) {
         case Cell::Type::Na:
-            return "null";
+            json.null(key);
+            return;
         case Cell::Type::Text:
-            return json_string(cell.text);
+            json.value(key, cell.text);
+            return;
         case Cell::Type::Number:
-            return cell.text;
+            json.formatted_number(key, cell.text);
+            return;
         case Cell::Type::Bool:
-            return cell.flag ? "true" : "false";
+            json.value(key, cell.flag);
+            return;
     }
-    return "null";
 }
 
 // The files `scene` was read from when the session began: none for a built-in scene.
-std::string json_scene_files(const SessionInfo& session, const std::string& scene) {
-    std::string files;
+void write_scene_files(JsonWriter& json, const SessionInfo& session, const std::string& scene) {
+    json.begin_array("scene_files");
     for (const SceneFileRecord& file : session.scene_files) {
         if (file.scene != scene) continue;
-        files += std::string(files.empty() ? "" : ", ") +
-                 "{\"file_index\": " + std::to_string(file.file_index) +
-                 ", \"path\": " + json_string(file.path.string()) +
-                 ", \"size_bytes\": " + std::to_string(file.digest.size_bytes) +
-                 ", \"sha256\": " + json_string(file.digest.sha256) + "}";
+        json.begin_object()
+            .value("file_index", file.file_index)
+            .value("path", file.path.string())
+            .value("size_bytes", file.digest.size_bytes)
+            .value("sha256", file.digest.sha256)
+            .end_object();
     }
-    return "[" + files + "]";
+    json.end_array();
 }
 
 // The session's notes with every field, their text exactly as typed (JSON needs no guard
 // against spreadsheet formulas).
-std::string json_notes(const SessionInfo& session) {
-    const auto optional = [](const auto& value) {
-        return value ? std::to_string(*value) : std::string("null");
-    };
-    std::string notes;
+void write_notes(JsonWriter& json, const SessionInfo& session) {
+    json.begin_array("session_notes");
     for (const SessionNote& note : session.notes) {
-        notes += std::string(notes.empty() ? "" : ", ") +
-                 "{\"noted_utc\": " + json_string(note.noted_utc) +
-                 ", \"note\": " + json_string(note.text) +
-                 ", \"source\": " + json_string(note_source_name(note.source)) +
-                 ", \"runtime_time_ns\": " + optional(note.runtime_time_ns) +
-                 ", \"trial\": " + optional(note.trial_index) + "}";
+        json.begin_object()
+            .value("noted_utc", note.noted_utc)
+            .value("note", note.text)
+            .value("source", note_source_name(note.source));
+        if (note.runtime_time_ns)
+            json.value("runtime_time_ns", *note.runtime_time_ns);
+        else
+            json.null("runtime_time_ns");
+        if (note.trial_index)
+            json.value("trial", *note.trial_index);
+        else
+            json.null("trial");
+        json.end_object();
     }
-    return "[" + notes + "]";
+    json.end_array();
 }
 
-// One trial's object: the export's columns (`keys`, JSON strings already), then two keys CSV
-// has no room for, the trial's scene files and its session's notes.
-std::string json_object(const std::vector<std::string>& keys, const std::vector<Cell>& cells,
-                        const SessionInfo& session, const std::string& scene) {
-    std::string object = "{";
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-        object += (i > 0 ? ", " : "") + keys[i] + ": " + json_value(cells[i]);
-    }
-    return object + ", \"scene_files\": " + json_scene_files(session, scene) +
-           ", \"session_notes\": " + json_notes(session) + "}";
+// One trial's object: the export's columns (`keys`), then two keys CSV has no room for, the
+// trial's scene files and its session's notes.
+void write_object(JsonWriter& json, const std::vector<std::string>& keys,
+                  const std::vector<Cell>& cells, const SessionInfo& session,
+                  const std::string& scene) {
+    json.begin_object();
+    for (std::size_t i = 0; i < cells.size(); ++i) write_cell(json, keys[i], cells[i]);
+    write_scene_files(json, session, scene);
+    write_notes(json, session);
+    json.end_object();
 }
 
 }  // namespace
 
 void write_json(const ExportData& data, std::ostream& out) {
-    std::vector<std::string> keys;
-    for (std::string_view column : export_columns()) keys.push_back(json_string(column));
-    for (const std::string& column : variable_columns(data)) keys.push_back(json_string(column));
+    std::vector<std::string> keys(export_columns().begin(), export_columns().end());
+    for (const std::string& column : variable_columns(data)) keys.push_back(column);
     const std::vector<std::string> variables = variable_names(data);
-    out << '[';
-    bool first = true;
+    JsonWriter json(kExportJson);
+    json.begin_array();
     for (const TrialRecord& record : data.trials) {
         const SessionInfo& session = data.sessions.at(record.session_id);
-        out << (first ? "\n  " : ",\n  ")
-            << json_object(keys, row(record, session, staircase_estimate(data, record), variables),
-                           session, record.trial.scene);
-        first = false;
+        write_object(json, keys, row(record, session, staircase_estimate(data, record), variables),
+                     session, record.trial.scene);
+        out << json.take();  // a trial at a time: the export need not fit in memory twice
     }
-    out << (first ? "]\n" : "\n]\n");
+    json.end_array();
+    out << json.take();
 }
 
 Result<bool> export_trials(const StudyStore& store, ExportFormat format, std::ostream& out) {

@@ -102,8 +102,6 @@ std::string csv_text(std::string_view value);
 // apostrophe removed where apostrophes are followed by one of those characters, as docs/data.md
 // shows for R and pandas.
 std::string csv_text_original(std::string_view cell);
-// A JSON string literal with quotes, escaping '"', '\\' and control characters.
-std::string json_string(std::string_view value);
 // Integer nanoseconds as exact decimal seconds, '.' as the point regardless of locale:
 // 1500000000 -> "1.5", 0 -> "0.0", 1 -> "0.000000001".
 std::string seconds_text(std::int64_t ns);

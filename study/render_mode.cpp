@@ -7,23 +7,14 @@
 namespace monoplane::study {
 namespace {
 
-struct NamedMode {
-    RenderMode mode;
-    std::string_view name;
-};
-
-constexpr std::array<NamedMode, 6> kNamedModes = {{
-    {RenderMode::Stereo, "stereo"},
-    {RenderMode::StereoMultiview, "stereo-multiview"},
-    {RenderMode::StereoGs, "stereo-gs"},
-    {RenderMode::Hybrid, "hybrid"},
-    {RenderMode::HybridFarfield, "hybrid-farfield"},
-    {RenderMode::HybridAuto, "hybrid-auto"},
-}};
-
-constexpr std::array<RenderMode, 6> kAllModes = {
-    RenderMode::Stereo, RenderMode::StereoMultiview, RenderMode::StereoGs,
-    RenderMode::Hybrid, RenderMode::HybridFarfield,  RenderMode::HybridAuto};
+// Every named mode is a study mode, in the table's order.
+constexpr std::array<RenderMode, 6> kAllModes = [] {
+    static_assert(kRenderModeNames.size() == 6, "a new named mode needs its RenderMode");
+    std::array<RenderMode, 6> modes{};
+    std::size_t i = 0;
+    for (const auto& [named, text] : kRenderModeNames) modes[i++] = static_cast<RenderMode>(named);
+    return modes;
+}();
 
 }  // namespace
 
@@ -32,20 +23,17 @@ std::span<const RenderMode> all_render_modes() {
 }
 
 std::string_view render_mode_name(RenderMode mode) {
-    for (const NamedMode& named : kNamedModes) {
-        if (named.mode == mode) return named.name;
-    }
-    assert(false && "RenderMode value outside the enum");
-    return "invalid";
+    const std::string_view name =
+        find_name(kRenderModeNames, static_cast<NamedRenderMode>(mode), "invalid");
+    assert(name != "invalid" && "RenderMode value outside the enum");
+    return name;
 }
 
 Result<RenderMode> parse_render_mode(std::string_view name) {
-    std::string valid;
-    for (const NamedMode& named : kNamedModes) {
-        if (named.name == name) return named.mode;
-        valid += (valid.empty() ? "" : ", ") + std::string(named.name);
-    }
-    return Error{"unknown render mode '" + std::string(name) + "' (valid: " + valid + ")"};
+    if (const auto named = parse_name(kRenderModeNames, name))
+        return static_cast<RenderMode>(*named);
+    return Error{"unknown render mode '" + std::string(name) +
+                 "' (valid: " + joined_names(kRenderModeNames) + ")"};
 }
 
 }  // namespace monoplane::study

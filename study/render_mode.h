@@ -5,19 +5,26 @@
 #include <span>
 #include <string_view>
 
+#include "common/render_mode_names.h"
 #include "common/result.h"
 
 namespace monoplane::study {
 
+// Each value is the named mode's (common/render_mode_names.h), whose table holds the names.
 enum class RenderMode {
-    Stereo,           // "stereo": the reference, the full scene once per eye
-    StereoMultiview,  // "stereo-multiview": both eyes in one pass (VK_KHR_multiview)
-    StereoGs,         // "stereo-gs": both eyes in one pass via a geometry shader
-    Hybrid,           // "hybrid": Fink et al. 2019, stereo up to the mono plane, mono beyond
-    HybridFarfield,   // "hybrid-farfield": the engine-style far-field variant (papers/003)
+    // "stereo": the reference, the full scene once per eye
+    Stereo = static_cast<int>(NamedRenderMode::Stereo),
+    // "stereo-multiview": both eyes in one pass (VK_KHR_multiview)
+    StereoMultiview = static_cast<int>(NamedRenderMode::StereoMultiview),
+    // "stereo-gs": both eyes in one pass via a geometry shader
+    StereoGs = static_cast<int>(NamedRenderMode::StereoGs),
+    // "hybrid": Fink et al. 2019, stereo up to the mono plane, mono beyond
+    Hybrid = static_cast<int>(NamedRenderMode::Hybrid),
+    // "hybrid-farfield": the engine-style far-field variant (papers/003)
+    HybridFarfield = static_cast<int>(NamedRenderMode::HybridFarfield),
     // "hybrid-auto": hybrid whose renderer chooses m every frame within the protocol's [auto]
     // budget, never nearer than the trial's distance (issue 20; study/protocol_auto.h)
-    HybridAuto,
+    HybridAuto = static_cast<int>(NamedRenderMode::HybridAuto),
 };
 
 // Every mode, in the order of the enum: for help texts and exhaustive tests.

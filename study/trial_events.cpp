@@ -1,47 +1,44 @@
 #include "study/trial_events.h"
 
+#include <cstddef>
+
+#include "common/name_table.h"
+
 namespace monoplane::study {
 
-// These names are stored in databases and exports: never change one.
+namespace {
+
+// These names are stored in databases and exports: never change one. The events table's CHECK
+// (study/store_schema.cpp) lists them too, as the schema was created; a new kind needs a
+// migration there.
+constexpr NameTable<EventKind> kEventKindNames = {
+    {EventKind::Shown, "shown"},
+    {EventKind::Switched, "switched"},
+    {EventKind::Confirmed, "confirmed"},
+    {EventKind::Refused, "refused"},
+    {EventKind::Paused, "paused"},
+    {EventKind::Resumed, "resumed"},
+    {EventKind::Aborted, "aborted"},
+    {EventKind::InstructionsShown, "instructions_shown"},
+    {EventKind::InstructionsConfirmed, "instructions_confirmed"},
+    {EventKind::ReadyShown, "ready_shown"},
+    {EventKind::ReadyConfirmed, "ready_confirmed"},
+    {EventKind::BreakStarted, "break_started"},
+    {EventKind::BreakEnded, "break_ended"},
+    {EventKind::EndShown, "end_shown"},
+};
+static_assert(kEventKindNames.size() == static_cast<std::size_t>(EventKind::EndShown) + 1,
+              "every EventKind needs its stored name");
+
+}  // namespace
+
 std::string_view event_kind_name(EventKind kind) {
-    switch (kind) {
-        case EventKind::Shown:
-            return "shown";
-        case EventKind::Switched:
-            return "switched";
-        case EventKind::Confirmed:
-            return "confirmed";
-        case EventKind::Refused:
-            return "refused";
-        case EventKind::Paused:
-            return "paused";
-        case EventKind::Resumed:
-            return "resumed";
-        case EventKind::Aborted:
-            return "aborted";
-        case EventKind::InstructionsShown:
-            return "instructions_shown";
-        case EventKind::InstructionsConfirmed:
-            return "instructions_confirmed";
-        case EventKind::ReadyShown:
-            return "ready_shown";
-        case EventKind::ReadyConfirmed:
-            return "ready_confirmed";
-        case EventKind::BreakStarted:
-            return "break_started";
-        case EventKind::BreakEnded:
-            return "break_ended";
-        case EventKind::EndShown:
-            return "end_shown";
-    }
-    return "unknown";  // only for a value outside the enum, which is a programming error
+    // "unknown" only for a value outside the enum, which is a programming error.
+    return find_name(kEventKindNames, kind, "unknown");
 }
 
 std::optional<EventKind> parse_event_kind(std::string_view name) {
-    for (int k = 0; k <= static_cast<int>(EventKind::EndShown); ++k) {
-        if (event_kind_name(static_cast<EventKind>(k)) == name) return static_cast<EventKind>(k);
-    }
-    return std::nullopt;
+    return parse_name(kEventKindNames, name);
 }
 
 bool is_screen_event(EventKind kind) {

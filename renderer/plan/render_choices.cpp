@@ -6,17 +6,24 @@ namespace monoplane::modes {
 
 namespace {
 
-// Each enum's CLI names, for parse_* and *_name alike.
-constexpr NameTable<Mode> kModeNames = {{Mode::kStereo, "stereo"},
-                                        {Mode::kHybrid, "hybrid"},
-                                        {Mode::kHybridFarfield, "hybrid-farfield"}};
+// The named render modes (common/render_mode_names.h) as the renderer draws them: stereo's three
+// names are its stereo passes; the hybrid modes draw their near region in two passes by default.
+struct ModeOfName {
+    NamedRenderMode named;
+    RenderModeChoice choice;
+};
+constexpr ModeOfName kModesOfNames[] = {
+    {NamedRenderMode::Stereo, {Mode::kStereo, StereoPass::kTwoPasses}},
+    {NamedRenderMode::StereoMultiview, {Mode::kStereo, StereoPass::kMultiview}},
+    {NamedRenderMode::StereoGs, {Mode::kStereo, StereoPass::kGeometryShader}},
+    {NamedRenderMode::Hybrid, {Mode::kHybrid, StereoPass::kTwoPasses}},
+    {NamedRenderMode::HybridFarfield, {Mode::kHybridFarfield, StereoPass::kTwoPasses}},
+};
+
+// The choices' own names, for parse_* and *_name alike.
 constexpr NameTable<StereoPass> kStereoPassNames = {{StereoPass::kTwoPasses, "two"},
                                                     {StereoPass::kMultiview, "multiview"},
                                                     {StereoPass::kGeometryShader, "gs"}};
-// The stereo mode's name with each stereo pass.
-constexpr NameTable<StereoPass> kStereoModeNames = {{StereoPass::kTwoPasses, "stereo"},
-                                                    {StereoPass::kMultiview, "stereo-multiview"},
-                                                    {StereoPass::kGeometryShader, "stereo-gs"}};
 constexpr NameTable<DebugView> kDebugViewNames = {{DebugView::kNone, "none"},
                                                   {DebugView::kTintMono, "tint-mono"},
                                                   {DebugView::kStereoOnly, "stereo-only"},
@@ -27,20 +34,18 @@ constexpr NameTable<MonoCulling> kMonoCullingNames = {
     {MonoCulling::kDiscard, "discard"},
     {MonoCulling::kOcclusionCull, "occlusion-cull"},
     {MonoCulling::kAuto, "auto"}};
-constexpr NameTable<AntiAliasing> kAntiAliasingNames = {{AntiAliasing::kNone, "none"},
-                                                        {AntiAliasing::kTaa, "taa"},
-                                                        {AntiAliasing::kMsaa2, "msaa2"},
-                                                        {AntiAliasing::kMsaa4, "msaa4"},
-                                                        {AntiAliasing::kMsaa8, "msaa8"}};
 
 }  // namespace
 
 std::optional<Mode> parse_mode(const std::string& name) {
-    return parse_name(kModeNames, name);
+    // A mode's name is its render mode's with two passes: "stereo-gs" names no Mode.
+    const auto choice = parse_render_mode(name);
+    if (!choice || choice->stereo_pass != StereoPass::kTwoPasses) return std::nullopt;
+    return choice->mode;
 }
 
 std::string mode_name(Mode mode) {
-    return name_of(kModeNames, mode);
+    return render_mode_name({mode, StereoPass::kTwoPasses});
 }
 
 std::optional<StereoPass> parse_stereo_pass(const std::string& name) {
@@ -52,16 +57,23 @@ std::string stereo_pass_name(StereoPass pass) {
 }
 
 std::optional<RenderModeChoice> parse_render_mode(const std::string& name) {
-    if (const auto pass = parse_name(kStereoModeNames, name)) {
-        return RenderModeChoice{Mode::kStereo, *pass};
+    const auto named = parse_name(kRenderModeNames, name);
+    if (!named) return std::nullopt;
+    for (const ModeOfName& entry : kModesOfNames) {
+        if (entry.named == *named) return entry.choice;
     }
-    if (const auto mode = parse_mode(name)) return RenderModeChoice{*mode, StereoPass::kTwoPasses};
-    return std::nullopt;
+    return std::nullopt;  // hybrid-auto: the study's, no renderer mode of its own
 }
 
 std::string render_mode_name(const RenderModeChoice& choice) {
-    if (choice.mode != Mode::kStereo) return mode_name(choice.mode);
-    return name_of(kStereoModeNames, choice.stereo_pass);
+    // A hybrid mode's stereo pass is not part of its name.
+    const StereoPass pass =
+        choice.mode == Mode::kStereo ? choice.stereo_pass : StereoPass::kTwoPasses;
+    for (const ModeOfName& entry : kModesOfNames) {
+        if (entry.choice.mode == choice.mode && entry.choice.stereo_pass == pass)
+            return name_of(kRenderModeNames, entry.named);
+    }
+    return "?";
 }
 
 std::optional<DebugView> parse_debug_view(const std::string& name) {
@@ -77,11 +89,13 @@ std::string mono_culling_name(MonoCulling culling) {
 }
 
 std::optional<AntiAliasing> parse_anti_aliasing(const std::string& name) {
-    return parse_name(kAntiAliasingNames, name);
+    const auto named = parse_name(kAntiAliasingNames, name);
+    if (!named) return std::nullopt;
+    return static_cast<AntiAliasing>(*named);  // the same values (render_choices.h)
 }
 
 std::string anti_aliasing_name(AntiAliasing aa) {
-    return name_of(kAntiAliasingNames, aa);
+    return name_of(kAntiAliasingNames, static_cast<NamedAntiAliasing>(aa));
 }
 
 }  // namespace monoplane::modes

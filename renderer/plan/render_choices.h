@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "common/render_mode_names.h"
+
 namespace monoplane::modes {
 
 enum class Mode { kStereo, kHybrid, kHybridFarfield };
@@ -24,6 +26,7 @@ struct RenderModeChoice {
     Mode mode = Mode::kStereo;
     StereoPass stereo_pass = StereoPass::kTwoPasses;
 };
+// The names are common/render_mode_names.h's; "hybrid-auto" (the study's) is no choice here.
 std::optional<RenderModeChoice> parse_render_mode(const std::string& name);
 // "stereo", "stereo-multiview", "stereo-gs", "hybrid", "hybrid-farfield" (the hybrid modes'
 // stereo pass is not part of their name).
@@ -51,7 +54,14 @@ std::string mono_culling_name(MonoCulling culling);
 // Anti-aliasing (papers/000 Sect. 4.5). TAA works in every mode; MSAA only in stereo, because
 // resolving before the composite leaves C's samples out and resolving after it would need every
 // sample mapped (docs/hybrid.md, "MSAA: stereo only, and why").
-enum class AntiAliasing { kNone, kTaa, kMsaa2, kMsaa4, kMsaa8 };
+// The values are the named ones' (common/render_mode_names.h), whose table holds the names.
+enum class AntiAliasing {
+    kNone = static_cast<int>(NamedAntiAliasing::None),
+    kTaa = static_cast<int>(NamedAntiAliasing::Taa),
+    kMsaa2 = static_cast<int>(NamedAntiAliasing::Msaa2),
+    kMsaa4 = static_cast<int>(NamedAntiAliasing::Msaa4),
+    kMsaa8 = static_cast<int>(NamedAntiAliasing::Msaa8),
+};
 std::optional<AntiAliasing> parse_anti_aliasing(const std::string& name);  // "none", "taa", "msaa4"
 std::string anti_aliasing_name(AntiAliasing aa);
 

@@ -296,5 +296,65 @@ TEST(LinearAlgebra, InvertsAPositiveDefiniteMatrixAndRefusesASingularOne) {
     EXPECT_FALSE(inverse_positive_definite(singular).has_value());
 }
 
+TEST(LinearAlgebra, MultipliesRectangularMatrices) {
+    Matrix a(2, 3);
+    Matrix b(3, 2);
+    for (std::size_t i = 0; i < 2; ++i)
+        for (std::size_t k = 0; k < 3; ++k) a(i, k) = static_cast<double>(1 + i * 3 + k);  // 1..6
+    for (std::size_t k = 0; k < 3; ++k)
+        for (std::size_t j = 0; j < 2; ++j) b(k, j) = static_cast<double>(7 + k * 2 + j);  // 7..12
+    const Matrix product = a * b;
+    ASSERT_EQ(product.rows(), 2u);
+    ASSERT_EQ(product.columns(), 2u);
+    EXPECT_EQ(product(0, 0), 58.0);
+    EXPECT_EQ(product(0, 1), 64.0);
+    EXPECT_EQ(product(1, 0), 139.0);
+    EXPECT_EQ(product(1, 1), 154.0);
+}
+
+// The inverse is exactly symmetric, and the singularity test is relative to the diagonal: the
+// same matrix in other units (columns scaled by 1e6) is as invertible.
+TEST(LinearAlgebra, TheInverseIsSymmetricAndUnitFree) {
+    const double values[3][3] = {{4, 2, 0.4}, {2, 5, 1}, {0.4, 1, 3}};
+    const double scale[3] = {1e6, 1, 1e-6};
+    Matrix a(3, 3);
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) a(i, j) = values[i][j] * scale[i] * scale[j];
+    const std::optional<Matrix> inverse = inverse_positive_definite(a);
+    ASSERT_TRUE(inverse.has_value());
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) EXPECT_EQ((*inverse)(i, j), (*inverse)(j, i));
+    // [[4, 2], [2, 5]]^-1 = [[5, -2], [-2, 4]] / 16, here without the third row and column.
+    Matrix two(2, 2);
+    two(0, 0) = 4;
+    two(0, 1) = two(1, 0) = 2;
+    two(1, 1) = 5;
+    const std::optional<Matrix> two_inverse = inverse_positive_definite(two);
+    ASSERT_TRUE(two_inverse.has_value());
+    EXPECT_NEAR((*two_inverse)(0, 0), 5.0 / 16.0, 1e-15);
+    EXPECT_NEAR((*two_inverse)(0, 1), -2.0 / 16.0, 1e-15);
+    EXPECT_NEAR((*two_inverse)(1, 1), 4.0 / 16.0, 1e-15);
+}
+
+// Refused: not positive definite (a negative diagonal, an indefinite matrix), singular to
+// working precision (a pivot below 1e-10 of its diagonal entry), not a number.
+TEST(LinearAlgebra, RefusesWhatIsNotSafelyPositiveDefinite) {
+    const auto matrix = [](double a00, double a01, double a11) {
+        Matrix m(2, 2);
+        m(0, 0) = a00;
+        m(0, 1) = m(1, 0) = a01;
+        m(1, 1) = a11;
+        return m;
+    };
+    EXPECT_FALSE(inverse_positive_definite(matrix(-1, 0, 1)).has_value());
+    EXPECT_FALSE(inverse_positive_definite(matrix(1, 0, 0)).has_value());
+    EXPECT_FALSE(inverse_positive_definite(matrix(1, 2, 1)).has_value());  // eigenvalues 3, -1
+    // Pivot 1 - 1 / (1 + 1e-12) ~ 1e-12: singular to working precision; 1e-8 is not.
+    EXPECT_FALSE(inverse_positive_definite(matrix(1 + 1e-12, 1, 1)).has_value());
+    EXPECT_TRUE(inverse_positive_definite(matrix(1 + 1e-8, 1, 1)).has_value());
+    EXPECT_FALSE(inverse_positive_definite(matrix(std::nan(""), 0, 1)).has_value());
+    EXPECT_FALSE(inverse_positive_definite(matrix(1, std::nan(""), 1)).has_value());
+}
+
 }  // namespace
 }  // namespace monoplane::analysis

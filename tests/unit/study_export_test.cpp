@@ -237,12 +237,25 @@ TEST(StudyExport, CsvFieldsFollowRfc4180) {
     EXPECT_EQ(csv_field("caf\xc3\xa9"), "caf\xc3\xa9");  // UTF-8 unchanged
 }
 
+// Text is escaped by the project's JSON writer (common/json_writer.h): quotes, backslashes and
+// control characters escaped, UTF-8 as typed.
 TEST(StudyExport, JsonStringsAreEscaped) {
-    EXPECT_EQ(json_string("plain"), "\"plain\"");
-    EXPECT_EQ(json_string("a\"b\\c"), "\"a\\\"b\\\\c\"");
-    EXPECT_EQ(json_string("l1\nl2\tx\r"), "\"l1\\nl2\\tx\\r\"");
-    EXPECT_EQ(json_string(std::string("\x01", 1)), "\"\\u0001\"");
-    EXPECT_EQ(json_string("caf\xc3\xa9"), "\"caf\xc3\xa9\"");
+    ExportData data = known_data();
+    data.trials.resize(1);
+    data.trials[0].participant_code = "caf\xc3\xa9";
+    data.sessions.at(1).notes = {
+        {"2027-01-01T10:00:00Z", "say \"hi\" \\ l1\nl2\tx\r\x01", NoteSource::Window, 12, 0}};
+    std::ostringstream json;
+    write_json(data, json);
+    EXPECT_NE(json.str().find("[\n  {\"participant\": \"caf\xc3\xa9\", \"session\": 1, "),
+              std::string::npos)
+        << json.str();
+    EXPECT_NE(
+        json.str().find("\"session_notes\": [{\"noted_utc\": \"2027-01-01T10:00:00Z\", "
+                        "\"note\": \"say \\\"hi\\\" \\\\ l1\\nl2\\tx\\r\\u0001\", "
+                        "\"source\": \"window\", \"runtime_time_ns\": 12, \"trial\": 0}]}\n]\n"),
+        std::string::npos)
+        << json.str();
 }
 
 TEST(StudyExport, SecondsAreExactDecimals) {
