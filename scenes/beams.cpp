@@ -224,91 +224,139 @@ void add_trusses(BeamsLayout& layout, int count, std::uint64_t seed, std::vector
     }
 }
 
-// Free-standing scaffold towers: posts on a grid, ledgers and transoms at every level,
-// diagonal braces on the outer faces; sized with their distance so far ones stay visible.
-void add_towers(BeamsLayout& layout, int count, std::uint64_t seed,
-                std::vector<Obstacle> obstacles) {
-    const Palette colours = palette();
+// A free-standing scaffold tower: posts on a grid of cells_x x cells_z cells, turned by its yaw
+// about its centre, with `levels` storeys of ledgers and transoms.
+struct ScaffoldTower {
+    float distance = 0.0f;   // from the viewer, over the ground
+    glm::vec2 centre{0.0f};  // (x, z)
+    float cell = 0.0f;       // metres between posts
+    int cells_x = 1;
+    int cells_z = 1;
+    float radius = 0.0f;  // of the footprint, with a margin
+    float level_height = 0.0f;
+    int levels = 1;
+    float cos_yaw = 1.0f;
+    float sin_yaw = 0.0f;
+    float thickness = 0.0f;
+    std::uint32_t colour = 0;
+    std::uint32_t material = 0;
+
+    // Post (ix, iz) of the grid at height y.
+    glm::vec3 at(int ix, int iz, float y) const {
+        const float lx = (static_cast<float>(ix) - 0.5f * static_cast<float>(cells_x)) * cell;
+        const float lz = (static_cast<float>(iz) - 0.5f * static_cast<float>(cells_z)) * cell;
+        return glm::vec3(centre.x + cos_yaw * lx + sin_yaw * lz, y,
+                         centre.y - sin_yaw * lx + cos_yaw * lz);
+    }
+};
+
+// Where tower i of `count` might stand, and how big it is: stratified uniform in distance
+// (papers/000 Sect. 6: geometry uniformly distributed across space); the corridor and its rails
+// supply the near range. Sized with the distance so far towers stay visible.
+ScaffoldTower propose_tower(Random& random, int i, int count) {
+    ScaffoldTower tower;
+    const float u =
+        (static_cast<float>(i) + random.uniform(0.0f, 1.0f)) / static_cast<float>(count);
+    tower.distance = 4.0f + 256.0f * u;
+    const bool ahead = random.chance(0.85);
+    const float bearing = ahead ? random.uniform(-1.2f, 1.2f)
+                                : random.uniform(-static_cast<float>(std::numbers::pi),
+                                                 static_cast<float>(std::numbers::pi));
+    tower.centre = {tower.distance * std::sin(bearing), -tower.distance * std::cos(bearing)};
+    tower.cell = (1.5f + 0.03f * tower.distance) * random.uniform(0.8f, 1.2f);
+    tower.cells_x = random.uniform_int(1, 3);
+    tower.cells_z = random.uniform_int(1, 3);
+    tower.radius =
+        0.5f * tower.cell *
+            std::hypot(static_cast<float>(tower.cells_x), static_cast<float>(tower.cells_z)) +
+        0.5f;
+    return tower;
+}
+
+// A placed tower's storeys (below the trusses at its distance), orientation and paint.
+void style_tower(Random& random, const Palette& colours, ScaffoldTower& tower) {
     const std::uint32_t tower_colours[] = {colours.steel, colours.orange, colours.white,
                                            colours.yellow, colours.steel};
-    Random random(seed, kTowers);
-    for (int i = 0; i < count; ++i) {
-        for (int attempt = 0; attempt < 40; ++attempt) {
-            // Stratified uniform in distance (papers/000 Sect. 6: geometry uniformly
-            // distributed across space); the corridor and its rails supply the near range.
-            const float u =
-                (static_cast<float>(i) + random.uniform(0.0f, 1.0f)) / static_cast<float>(count);
-            const float distance = 4.0f + 256.0f * u;
-            const bool ahead = random.chance(0.85);
-            const float bearing = ahead ? random.uniform(-1.2f, 1.2f)
-                                        : random.uniform(-static_cast<float>(std::numbers::pi),
-                                                         static_cast<float>(std::numbers::pi));
-            const glm::vec2 centre{distance * std::sin(bearing), -distance * std::cos(bearing)};
-            const float cell = (1.5f + 0.03f * distance) * random.uniform(0.8f, 1.2f);
-            const int cells_x = random.uniform_int(1, 3);
-            const int cells_z = random.uniform_int(1, 3);
-            const float radius =
-                0.5f * cell * std::hypot(static_cast<float>(cells_x), static_cast<float>(cells_z)) +
-                0.5f;
-            if (inside_corridor(centre, radius) || overlaps(obstacles, centre, radius)) continue;
-            obstacles.push_back({centre, radius});
+    tower.level_height = tower.cell * random.uniform(0.7f, 1.0f);
+    const float ceiling = std::max(tower.level_height, truss_height(tower.distance) - 1.5f);
+    tower.levels = std::max(
+        1, std::min(random.uniform_int(1, 4), static_cast<int>(ceiling / tower.level_height)));
+    const float yaw = random.chance(0.5) ? 0.0f : random.uniform(0.0f, 1.5f);
+    tower.thickness =
+        std::clamp((0.07f + 0.0012f * tower.distance) * random.uniform(0.8f, 1.25f), 0.05f, 0.3f);
+    tower.colour = tower_colours[random.uniform_int(0, 4)];
+    tower.material = random.chance(0.25) ? kStriped : kPainted;
+    tower.cos_yaw = std::cos(yaw);
+    tower.sin_yaw = std::sin(yaw);
+}
 
-            const float level_height = cell * random.uniform(0.7f, 1.0f);
-            const float ceiling = std::max(level_height, truss_height(distance) - 1.5f);
-            const int levels = std::max(
-                1, std::min(random.uniform_int(1, 4), static_cast<int>(ceiling / level_height)));
-            const float yaw = random.chance(0.5) ? 0.0f : random.uniform(0.0f, 1.5f);
-            const float thickness =
-                std::clamp((0.07f + 0.0012f * distance) * random.uniform(0.8f, 1.25f), 0.05f, 0.3f);
-            const std::uint32_t colour = tower_colours[random.uniform_int(0, 4)];
-            const std::uint32_t material = random.chance(0.25) ? kStriped : kPainted;
-            const float c = std::cos(yaw);
-            const float s = std::sin(yaw);
-            const auto at = [&](int ix, int iz, float y) {
-                const float lx =
-                    (static_cast<float>(ix) - 0.5f * static_cast<float>(cells_x)) * cell;
-                const float lz =
-                    (static_cast<float>(iz) - 0.5f * static_cast<float>(cells_z)) * cell;
-                return glm::vec3(centre.x + c * lx + s * lz, y, centre.y - s * lx + c * lz);
-            };
-            const float top = static_cast<float>(levels) * level_height;
-            for (int ix = 0; ix <= cells_x; ++ix) {
-                for (int iz = 0; iz <= cells_z; ++iz) {
-                    layout.beams.push_back(make_beam(at(ix, iz, 0.0f),
-                                                     at(ix, iz, top + 0.3f * level_height),
-                                                     1.2f * thickness, colour, material));
+// The posts, from the ground to a little above the top storey.
+void add_tower_posts(BeamsLayout& layout, const ScaffoldTower& tower) {
+    const float top = static_cast<float>(tower.levels) * tower.level_height;
+    for (int ix = 0; ix <= tower.cells_x; ++ix) {
+        for (int iz = 0; iz <= tower.cells_z; ++iz) {
+            layout.beams.push_back(make_beam(tower.at(ix, iz, 0.0f),
+                                             tower.at(ix, iz, top + 0.3f * tower.level_height),
+                                             1.2f * tower.thickness, tower.colour, tower.material));
+        }
+    }
+}
+
+// Ledgers and transoms at every level between neighbouring posts, and on the outer faces a
+// diagonal brace down to the level below about every other bay.
+void add_tower_levels(BeamsLayout& layout, const ScaffoldTower& tower, Random& random) {
+    const float thickness = tower.thickness;
+    for (int level = 1; level <= tower.levels; ++level) {
+        const float y = static_cast<float>(level) * tower.level_height;
+        const float below = y - tower.level_height;
+        for (int ix = 0; ix <= tower.cells_x; ++ix) {
+            for (int iz = 0; iz <= tower.cells_z; ++iz) {
+                const bool outer_x = ix == 0 || ix == tower.cells_x;
+                const bool outer_z = iz == 0 || iz == tower.cells_z;
+                if (ix < tower.cells_x) {
+                    layout.beams.push_back(make_beam(tower.at(ix, iz, y), tower.at(ix + 1, iz, y),
+                                                     thickness, tower.colour, tower.material));
+                    if (outer_z && random.chance(0.5)) {
+                        const bool flip = random.chance(0.5);
+                        layout.beams.push_back(make_beam(tower.at(ix, iz, flip ? y : below),
+                                                         tower.at(ix + 1, iz, flip ? below : y),
+                                                         0.8f * thickness, tower.colour,
+                                                         tower.material));
+                    }
                 }
-            }
-            for (int level = 1; level <= levels; ++level) {
-                const float y = static_cast<float>(level) * level_height;
-                const float below = y - level_height;
-                for (int ix = 0; ix <= cells_x; ++ix) {
-                    for (int iz = 0; iz <= cells_z; ++iz) {
-                        const bool outer_x = ix == 0 || ix == cells_x;
-                        const bool outer_z = iz == 0 || iz == cells_z;
-                        if (ix < cells_x) {
-                            layout.beams.push_back(make_beam(at(ix, iz, y), at(ix + 1, iz, y),
-                                                             thickness, colour, material));
-                            if (outer_z && random.chance(0.5)) {
-                                const bool flip = random.chance(0.5);
-                                layout.beams.push_back(make_beam(
-                                    at(ix, iz, flip ? y : below), at(ix + 1, iz, flip ? below : y),
-                                    0.8f * thickness, colour, material));
-                            }
-                        }
-                        if (iz < cells_z) {
-                            layout.beams.push_back(make_beam(at(ix, iz, y), at(ix, iz + 1, y),
-                                                             thickness, colour, material));
-                            if (outer_x && random.chance(0.5)) {
-                                const bool flip = random.chance(0.5);
-                                layout.beams.push_back(make_beam(
-                                    at(ix, iz, flip ? y : below), at(ix, iz + 1, flip ? below : y),
-                                    0.8f * thickness, colour, material));
-                            }
-                        }
+                if (iz < tower.cells_z) {
+                    layout.beams.push_back(make_beam(tower.at(ix, iz, y), tower.at(ix, iz + 1, y),
+                                                     thickness, tower.colour, tower.material));
+                    if (outer_x && random.chance(0.5)) {
+                        const bool flip = random.chance(0.5);
+                        layout.beams.push_back(make_beam(tower.at(ix, iz, flip ? y : below),
+                                                         tower.at(ix, iz + 1, flip ? below : y),
+                                                         0.8f * thickness, tower.colour,
+                                                         tower.material));
                     }
                 }
             }
+        }
+    }
+}
+
+// Free-standing scaffold towers kept clear of the corridor, the obstacles and each other: each
+// tower tries up to 40 places.
+void add_towers(BeamsLayout& layout, int count, std::uint64_t seed,
+                std::vector<Obstacle> obstacles) {
+    const Palette colours = palette();
+    Random random(seed, kTowers);
+    for (int i = 0; i < count; ++i) {
+        for (int attempt = 0; attempt < 40; ++attempt) {
+            ScaffoldTower tower = propose_tower(random, i, count);
+            if (inside_corridor(tower.centre, tower.radius) ||
+                overlaps(obstacles, tower.centre, tower.radius)) {
+                continue;
+            }
+            obstacles.push_back({tower.centre, tower.radius});
+            style_tower(random, colours, tower);
+            add_tower_posts(layout, tower);
+            add_tower_levels(layout, tower, random);
             break;
         }
     }

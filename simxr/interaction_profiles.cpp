@@ -25,143 +25,141 @@ ComponentKind kind_of(std::string_view subpath) {
     return ComponentKind::scalar;
 }
 
-InteractionProfile make_profile(std::string_view vendor_and_name, std::string_view name,
-                                std::span<const std::string_view> user_paths,
-                                std::initializer_list<ComponentSpec> specs) {
-    InteractionProfile profile{
-        "/interaction_profiles/" + std::string(vendor_and_name), std::string(name), {}, {}};
-    for (std::string_view user : user_paths) profile.user_paths.emplace_back(user);
-    for (const ComponentSpec& spec : specs) {
-        for (std::string_view user : user_paths) {
-            if (!spec.only_on.empty() && spec.only_on != user) continue;
-            profile.components.push_back(
-                {std::string(user) + "/" + std::string(spec.subpath), kind_of(spec.subpath)});
+// The component lists of the OpenXR 1.0 spec, section 6.4, in its order (subsections 6.4.1 to
+// 6.4.9), relative to each of the profile's user paths. "system/click (may not be available for
+// application use)" is listed: a runtime must still accept a binding to it.
+
+constexpr ComponentSpec kSimpleController[] = {{"input/select/click"},
+                                               {"input/menu/click"},
+                                               {"input/grip/pose"},
+                                               {"input/aim/pose"},
+                                               {"output/haptic"}};
+
+constexpr ComponentSpec kDaydreamController[] = {
+    {"input/select/click"},   {"input/trackpad/x"}, {"input/trackpad/y"}, {"input/trackpad/click"},
+    {"input/trackpad/touch"}, {"input/grip/pose"},  {"input/aim/pose"}};
+
+constexpr ComponentSpec kViveController[] = {
+    {"input/system/click"},  {"input/squeeze/click"},  {"input/menu/click"},
+    {"input/trigger/click"}, {"input/trigger/value"},  {"input/trackpad/x"},
+    {"input/trackpad/y"},    {"input/trackpad/click"}, {"input/trackpad/touch"},
+    {"input/grip/pose"},     {"input/aim/pose"},       {"output/haptic"}};
+
+constexpr ComponentSpec kVivePro[] = {{"input/system/click"},
+                                      {"input/volume_up/click"},
+                                      {"input/volume_down/click"},
+                                      {"input/mute_mic/click"}};
+
+constexpr ComponentSpec kMixedRealityController[] = {
+    {"input/menu/click"},     {"input/squeeze/click"}, {"input/trigger/value"},
+    {"input/thumbstick/x"},   {"input/thumbstick/y"},  {"input/thumbstick/click"},
+    {"input/trackpad/x"},     {"input/trackpad/y"},    {"input/trackpad/click"},
+    {"input/trackpad/touch"}, {"input/grip/pose"},     {"input/aim/pose"},
+    {"output/haptic"}};
+
+constexpr ComponentSpec kXboxController[] = {{"input/menu/click"},
+                                             {"input/view/click"},
+                                             {"input/a/click"},
+                                             {"input/b/click"},
+                                             {"input/x/click"},
+                                             {"input/y/click"},
+                                             {"input/dpad_down/click"},
+                                             {"input/dpad_right/click"},
+                                             {"input/dpad_up/click"},
+                                             {"input/dpad_left/click"},
+                                             {"input/shoulder_left/click"},
+                                             {"input/shoulder_right/click"},
+                                             {"input/thumbstick_left/click"},
+                                             {"input/thumbstick_right/click"},
+                                             {"input/trigger_left/value"},
+                                             {"input/trigger_right/value"},
+                                             {"input/thumbstick_left/x"},
+                                             {"input/thumbstick_left/y"},
+                                             {"input/thumbstick_right/x"},
+                                             {"input/thumbstick_right/y"},
+                                             {"output/haptic_left"},
+                                             {"output/haptic_right"},
+                                             {"output/haptic_left_trigger"},
+                                             {"output/haptic_right_trigger"}};
+
+constexpr ComponentSpec kGoController[] = {
+    {"input/system/click"},   {"input/trigger/click"}, {"input/back/click"},
+    {"input/trackpad/x"},     {"input/trackpad/y"},    {"input/trackpad/click"},
+    {"input/trackpad/touch"}, {"input/grip/pose"},     {"input/aim/pose"}};
+
+constexpr ComponentSpec kTouchController[] = {{"input/x/click", kLeft},
+                                              {"input/x/touch", kLeft},
+                                              {"input/y/click", kLeft},
+                                              {"input/y/touch", kLeft},
+                                              {"input/menu/click", kLeft},
+                                              {"input/a/click", kRight},
+                                              {"input/a/touch", kRight},
+                                              {"input/b/click", kRight},
+                                              {"input/b/touch", kRight},
+                                              {"input/system/click", kRight},
+                                              {"input/squeeze/value"},
+                                              {"input/trigger/value"},
+                                              {"input/trigger/touch"},
+                                              {"input/thumbstick/x"},
+                                              {"input/thumbstick/y"},
+                                              {"input/thumbstick/click"},
+                                              {"input/thumbstick/touch"},
+                                              {"input/thumbrest/touch"},
+                                              {"input/grip/pose"},
+                                              {"input/aim/pose"},
+                                              {"output/haptic"}};
+
+constexpr ComponentSpec kIndexController[] = {
+    {"input/system/click"},   {"input/system/touch"},     {"input/a/click"},
+    {"input/a/touch"},        {"input/b/click"},          {"input/b/touch"},
+    {"input/squeeze/value"},  {"input/squeeze/force"},    {"input/trigger/click"},
+    {"input/trigger/value"},  {"input/trigger/touch"},    {"input/thumbstick/x"},
+    {"input/thumbstick/y"},   {"input/thumbstick/click"}, {"input/thumbstick/touch"},
+    {"input/trackpad/x"},     {"input/trackpad/y"},       {"input/trackpad/force"},
+    {"input/trackpad/touch"}, {"input/grip/pose"},        {"input/aim/pose"},
+    {"output/haptic"}};
+
+struct ProfileSpec {
+    std::string_view vendor_and_name;  // "khr/simple_controller", under /interaction_profiles/
+    std::string_view name;             // the spec's heading
+    std::span<const std::string_view> user_paths;
+    std::span<const ComponentSpec> components;
+};
+
+constexpr ProfileSpec kProfiles[] = {
+    {"khr/simple_controller", "Khronos Simple Controller", kHands, kSimpleController},
+    {"google/daydream_controller", "Google Daydream Controller", kHands, kDaydreamController},
+    {"htc/vive_controller", "HTC Vive Controller", kHands, kViveController},
+    {"htc/vive_pro", "HTC Vive Pro", kHead, kVivePro},
+    {"microsoft/motion_controller", "Microsoft Mixed Reality Motion Controller", kHands,
+     kMixedRealityController},
+    {"microsoft/xbox_controller", "Microsoft Xbox Controller", kGamepad, kXboxController},
+    {"oculus/go_controller", "Oculus Go Controller", kHands, kGoController},
+    {"oculus/touch_controller", "Oculus Touch Controller", kHands, kTouchController},
+    {"valve/index_controller", "Valve Index Controller", kHands, kIndexController},
+};
+
+// A profile's full component paths: every component under every user path it is valid for,
+// grouped by component in the spec's order.
+InteractionProfile make_profile(const ProfileSpec& spec) {
+    InteractionProfile profile{"/interaction_profiles/" + std::string(spec.vendor_and_name),
+                               std::string(spec.name),
+                               {},
+                               {}};
+    for (std::string_view user : spec.user_paths) profile.user_paths.emplace_back(user);
+    for (const ComponentSpec& component : spec.components) {
+        for (std::string_view user : spec.user_paths) {
+            if (!component.only_on.empty() && component.only_on != user) continue;
+            profile.components.push_back({std::string(user) + "/" + std::string(component.subpath),
+                                          kind_of(component.subpath)});
         }
     }
     return profile;
 }
 
-// The component lists of the OpenXR 1.0 spec, section 6.4, in its order (subsections 6.4.1 to
-// 6.4.9). "system/click (may not be available for application use)" is listed: a runtime must
-// still accept a binding to it.
 std::vector<InteractionProfile> build_profiles() {
     std::vector<InteractionProfile> profiles;
-    profiles.push_back(make_profile("khr/simple_controller", "Khronos Simple Controller", kHands,
-                                    {{"input/select/click"},
-                                     {"input/menu/click"},
-                                     {"input/grip/pose"},
-                                     {"input/aim/pose"},
-                                     {"output/haptic"}}));
-    profiles.push_back(make_profile("google/daydream_controller", "Google Daydream Controller",
-                                    kHands,
-                                    {{"input/select/click"},
-                                     {"input/trackpad/x"},
-                                     {"input/trackpad/y"},
-                                     {"input/trackpad/click"},
-                                     {"input/trackpad/touch"},
-                                     {"input/grip/pose"},
-                                     {"input/aim/pose"}}));
-    profiles.push_back(make_profile("htc/vive_controller", "HTC Vive Controller", kHands,
-                                    {{"input/system/click"},
-                                     {"input/squeeze/click"},
-                                     {"input/menu/click"},
-                                     {"input/trigger/click"},
-                                     {"input/trigger/value"},
-                                     {"input/trackpad/x"},
-                                     {"input/trackpad/y"},
-                                     {"input/trackpad/click"},
-                                     {"input/trackpad/touch"},
-                                     {"input/grip/pose"},
-                                     {"input/aim/pose"},
-                                     {"output/haptic"}}));
-    profiles.push_back(make_profile("htc/vive_pro", "HTC Vive Pro", kHead,
-                                    {{"input/system/click"},
-                                     {"input/volume_up/click"},
-                                     {"input/volume_down/click"},
-                                     {"input/mute_mic/click"}}));
-    profiles.push_back(make_profile("microsoft/motion_controller",
-                                    "Microsoft Mixed Reality Motion Controller", kHands,
-                                    {{"input/menu/click"},
-                                     {"input/squeeze/click"},
-                                     {"input/trigger/value"},
-                                     {"input/thumbstick/x"},
-                                     {"input/thumbstick/y"},
-                                     {"input/thumbstick/click"},
-                                     {"input/trackpad/x"},
-                                     {"input/trackpad/y"},
-                                     {"input/trackpad/click"},
-                                     {"input/trackpad/touch"},
-                                     {"input/grip/pose"},
-                                     {"input/aim/pose"},
-                                     {"output/haptic"}}));
-    profiles.push_back(make_profile("microsoft/xbox_controller", "Microsoft Xbox Controller",
-                                    kGamepad,
-                                    {{"input/menu/click"},
-                                     {"input/view/click"},
-                                     {"input/a/click"},
-                                     {"input/b/click"},
-                                     {"input/x/click"},
-                                     {"input/y/click"},
-                                     {"input/dpad_down/click"},
-                                     {"input/dpad_right/click"},
-                                     {"input/dpad_up/click"},
-                                     {"input/dpad_left/click"},
-                                     {"input/shoulder_left/click"},
-                                     {"input/shoulder_right/click"},
-                                     {"input/thumbstick_left/click"},
-                                     {"input/thumbstick_right/click"},
-                                     {"input/trigger_left/value"},
-                                     {"input/trigger_right/value"},
-                                     {"input/thumbstick_left/x"},
-                                     {"input/thumbstick_left/y"},
-                                     {"input/thumbstick_right/x"},
-                                     {"input/thumbstick_right/y"},
-                                     {"output/haptic_left"},
-                                     {"output/haptic_right"},
-                                     {"output/haptic_left_trigger"},
-                                     {"output/haptic_right_trigger"}}));
-    profiles.push_back(make_profile("oculus/go_controller", "Oculus Go Controller", kHands,
-                                    {{"input/system/click"},
-                                     {"input/trigger/click"},
-                                     {"input/back/click"},
-                                     {"input/trackpad/x"},
-                                     {"input/trackpad/y"},
-                                     {"input/trackpad/click"},
-                                     {"input/trackpad/touch"},
-                                     {"input/grip/pose"},
-                                     {"input/aim/pose"}}));
-    profiles.push_back(make_profile("oculus/touch_controller", "Oculus Touch Controller", kHands,
-                                    {{"input/x/click", kLeft},
-                                     {"input/x/touch", kLeft},
-                                     {"input/y/click", kLeft},
-                                     {"input/y/touch", kLeft},
-                                     {"input/menu/click", kLeft},
-                                     {"input/a/click", kRight},
-                                     {"input/a/touch", kRight},
-                                     {"input/b/click", kRight},
-                                     {"input/b/touch", kRight},
-                                     {"input/system/click", kRight},
-                                     {"input/squeeze/value"},
-                                     {"input/trigger/value"},
-                                     {"input/trigger/touch"},
-                                     {"input/thumbstick/x"},
-                                     {"input/thumbstick/y"},
-                                     {"input/thumbstick/click"},
-                                     {"input/thumbstick/touch"},
-                                     {"input/thumbrest/touch"},
-                                     {"input/grip/pose"},
-                                     {"input/aim/pose"},
-                                     {"output/haptic"}}));
-    profiles.push_back(make_profile(
-        "valve/index_controller", "Valve Index Controller", kHands,
-        {{"input/system/click"},   {"input/system/touch"},     {"input/a/click"},
-         {"input/a/touch"},        {"input/b/click"},          {"input/b/touch"},
-         {"input/squeeze/value"},  {"input/squeeze/force"},    {"input/trigger/click"},
-         {"input/trigger/value"},  {"input/trigger/touch"},    {"input/thumbstick/x"},
-         {"input/thumbstick/y"},   {"input/thumbstick/click"}, {"input/thumbstick/touch"},
-         {"input/trackpad/x"},     {"input/trackpad/y"},       {"input/trackpad/force"},
-         {"input/trackpad/touch"}, {"input/grip/pose"},        {"input/aim/pose"},
-         {"output/haptic"}}));
+    for (const ProfileSpec& spec : kProfiles) profiles.push_back(make_profile(spec));
     return profiles;
 }
 

@@ -222,14 +222,9 @@ std::string file_stem_of(const std::string& scene) {
     return stem;
 }
 
-}  // namespace
-
-AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
-    AnalysisResults r;
-    r.title = options.title;
-    r.logistic_options = options.logistic;
-
-    // Per source, in the order the sources were read (then any source only rows name).
+// What each source contributed, and the sessions and participants over all sources. Sources in
+// the order they were read, then any source only rows name.
+void count_sources(const Dataset& data, AnalysisResults& r) {
     std::vector<std::string> order = data.sources;
     for (const TrialRow& t : data.trials) {
         if (std::find(order.begin(), order.end(), t.source) == order.end()) {
@@ -262,10 +257,10 @@ AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
     r.sessions = static_cast<int>(all_sessions.size());
     r.participants = static_cast<int>(all_participants.size());
     r.trials = static_cast<int>(data.trials.size());
+}
 
-    const std::vector<TrialRow> kept = analysable_trials(data.trials, r.exclusions);
-    r.frame_timing = summarize_frame_timing(data.trials);
-    r.data_trials = r.trials - r.exclusions.practice;
+// Who was analysed, and the modes compared ("reference" and "test" when no trial names them).
+void describe_analysed_trials(const std::vector<TrialRow>& kept, AnalysisResults& r) {
     std::set<std::string> references, tests, analysed_participants;
     for (const TrialRow& t : kept) {
         analysed_participants.insert(t.participant);
@@ -277,7 +272,11 @@ AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
     r.test_mode = joined(tests);
     if (r.reference_mode.empty()) r.reference_mode = "reference";
     if (r.test_mode.empty()) r.test_mode = "test";
+}
 
+// The choice rates (overall, per scene, distance, both, and first scene with its sessions) and
+// the chi-square tests of distance against decision.
+void rates_and_chi_square(const std::vector<TrialRow>& kept, AnalysisResults& r) {
     r.overall = overall_rate(kept);
     r.by_scene = rates_by_scene(kept);
     r.by_distance = rates_by_distance(kept);
@@ -294,6 +293,21 @@ AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
     for (const ChoiceRate& scene : r.by_scene) {
         r.chi_square_by_scene.push_back(chi_square(kept, scene.scene));
     }
+}
+
+}  // namespace
+
+AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
+    AnalysisResults r;
+    r.title = options.title;
+    r.logistic_options = options.logistic;
+    count_sources(data, r);
+
+    const std::vector<TrialRow> kept = analysable_trials(data.trials, r.exclusions);
+    r.frame_timing = summarize_frame_timing(data.trials);
+    r.data_trials = r.trials - r.exclusions.practice;
+    describe_analysed_trials(kept, r);
+    rates_and_chi_square(kept, r);
 
     Result<LogisticFit> fit = fit_choice_model(kept, options.logistic);
     if (fit) {
@@ -339,19 +353,23 @@ std::vector<Figure> report_figures(const AnalysisResults& r) {
     return figures;
 }
 
-std::string report_html(const AnalysisResults& r, const std::vector<Figure>& figures) {
+namespace {
+
+// A figure of the report by name, with its caption; empty when there is no such figure.
+std::string figure_html(const std::vector<Figure>& figures, const std::string& name) {
+    for (const Figure& f : figures) {
+        if (f.name != name) continue;
+        return "<figure id=\"figure-" + xml_escaped(f.name) + "\">\n" + inline_svg(f.svg) +
+               "<figcaption>" + xml_escaped(f.caption) + " (also figures/" + xml_escaped(f.name) +
+               ".svg and .png)</figcaption>\n</figure>\n";
+    }
+    return std::string();
+}
+
+// The document's head, the title, what was compared, and the table of contents.
+std::string head_html(const AnalysisResults& r) {
     const std::string test = xml_escaped(r.test_mode);
     const std::string reference = xml_escaped(r.reference_mode);
-    auto figure = [&](const std::string& name) {
-        for (const Figure& f : figures) {
-            if (f.name != name) continue;
-            return "<figure id=\"figure-" + xml_escaped(f.name) + "\">\n" + inline_svg(f.svg) +
-                   "<figcaption>" + xml_escaped(f.caption) + " (also figures/" +
-                   xml_escaped(f.name) + ".svg and .png)</figcaption>\n</figure>\n";
-        }
-        return std::string();
-    };
-
     std::string h =
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
@@ -372,24 +390,24 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
          "<li><a href=\"#order\">Order effects</a></li>"
          "<li><a href=\"#times\">Decision times and switches</a></li>"
          "<li><a href=\"#questionnaire\">Questionnaire</a></li></ul></nav>\n";
+    return h;
+}
 
-    h += data_section_html(r);
-
-    // Choices.
-    h += "<h2 id=\"choices\">Choices</h2>\n";
-    {
-        const ChoiceRate& o = r.overall;
-        if (o.n > 0) {
-            h += "<p class=\"key\">Of " + std::to_string(o.n) + " valid decisions, " +
-                 std::to_string(o.test_chosen) + " (" + percent(o.rate, 2) + ", 95&nbsp;% Wilson " +
-                 interval_percent(o.wilson) + ") chose <b>" + test +
-                 "</b>; exact two-sided binomial test against 50&nbsp;%: " +
-                 p_statement(o.binomial_p) + ".</p>\n";
-        } else {
-            h += "<p class=\"warn\">No valid decisions to analyse.</p>\n";
-        }
+// Choices: the overall rate with its test, the figure, and the rates per scene and distance.
+std::string choices_section_html(const AnalysisResults& r, const std::vector<Figure>& figures) {
+    const std::string test = xml_escaped(r.test_mode);
+    std::string h = "<h2 id=\"choices\">Choices</h2>\n";
+    const ChoiceRate& o = r.overall;
+    if (o.n > 0) {
+        h += "<p class=\"key\">Of " + std::to_string(o.n) + " valid decisions, " +
+             std::to_string(o.test_chosen) + " (" + percent(o.rate, 2) + ", 95&nbsp;% Wilson " +
+             interval_percent(o.wilson) + ") chose <b>" + test +
+             "</b>; exact two-sided binomial test against 50&nbsp;%: " + p_statement(o.binomial_p) +
+             ".</p>\n";
+    } else {
+        h += "<p class=\"warn\">No valid decisions to analyse.</p>\n";
     }
-    h += figure("choices");
+    h += figure_html(figures, "choices");
     h += "<h3>Per scene</h3>\n" + rate_table(r.by_scene, true, false, r.test_mode).html();
     h += "<h3>Per distance (all scenes)</h3>\n" +
          rate_table(r.by_distance, false, true, r.test_mode).html();
@@ -398,74 +416,91 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
     h += "<p class=\"note\">Rates pool decisions across participants and are descriptive; the "
          "binomial tests treat each decision as independent. Wilson intervals have good coverage "
          "at small n; Clopper-Pearson intervals are exact and conservative.</p>\n";
+    return h;
+}
 
-    // Chi-square.
-    h += "<h2 id=\"chi-square\">Distance &times; decision (chi-square)</h2>\n";
+// The chi-square tests, all scenes pooled and then per scene, with the reason to distrust them.
+std::string chi_square_section_html(const AnalysisResults& r) {
+    const std::string test = xml_escaped(r.test_mode);
+    const std::string reference = xml_escaped(r.reference_mode);
+    std::string h = "<h2 id=\"chi-square\">Distance &times; decision (chi-square)</h2>\n";
     h += "<p>Pearson's chi-square test of independence of the mono-plane distance and the "
          "decision (" +
          test + " or " + reference +
          "), without continuity correction, with phi and Cram&eacute;r's V as effect sizes "
          "(papers/000 reports &phi; = 0.07, p &gt; 0.05).</p>\n";
-    {
-        Table t;
-        t.header = {"scenes", "n", "&chi;&sup2;", "df", "p", "&phi;", "Cram&eacute;r's V", "note"};
-        t.numeric = {false, true, true, true, true, true, true, false};
-        std::vector<const ChiSquareResult*> all{&r.chi_square};
-        for (const ChiSquareResult& c : r.chi_square_by_scene) all.push_back(&c);
-        for (const ChiSquareResult* c : all) {
-            if (c->test) {
-                const ChiSquareTest& x = *c->test;
-                t.rows.push_back({chi_row_label(*c), std::to_string(x.n), fixed(x.chi_square, 3),
-                                  std::to_string(x.df), p_value(x.p), fixed(x.phi, 3),
-                                  fixed(x.cramers_v, 3), ""});
-            } else {
-                t.rows.push_back({chi_row_label(*c), "&ndash;", "&ndash;", "&ndash;", "&ndash;",
-                                  "&ndash;", "&ndash;", "not computed: " + xml_escaped(c->error)});
-            }
+    Table t;
+    t.header = {"scenes", "n", "&chi;&sup2;", "df", "p", "&phi;", "Cram&eacute;r's V", "note"};
+    t.numeric = {false, true, true, true, true, true, true, false};
+    std::vector<const ChiSquareResult*> all{&r.chi_square};
+    for (const ChiSquareResult& c : r.chi_square_by_scene) all.push_back(&c);
+    for (const ChiSquareResult* c : all) {
+        if (c->test) {
+            const ChiSquareTest& x = *c->test;
+            t.rows.push_back({chi_row_label(*c), std::to_string(x.n), fixed(x.chi_square, 3),
+                              std::to_string(x.df), p_value(x.p), fixed(x.phi, 3),
+                              fixed(x.cramers_v, 3), ""});
+        } else {
+            t.rows.push_back({chi_row_label(*c), "&ndash;", "&ndash;", "&ndash;", "&ndash;",
+                              "&ndash;", "&ndash;", "not computed: " + xml_escaped(c->error)});
         }
-        h += t.html();
     }
+    h += t.html();
     h += "<p class=\"warn\">The chi-square test assumes independent decisions. Every participant "
          "decided at every distance and scene, so their decisions are repeated measures and "
          "correlated: the pooled test understates the uncertainty. It is reported because the "
          "paper reports it; the regression below is the valid test.</p>\n";
+    return h;
+}
 
+std::string times_section_html(const AnalysisResults& r, const std::vector<Figure>& figures) {
+    std::string h = "<h2 id=\"times\">Decision times and switches</h2>\n";
+    h += figure_html(figures, "decision_times");
+    h += "<h3>Decision time (seconds)</h3>\n" + summary_table(r.decision_times, 2).html();
+    h += figure_html(figures, "switches");
+    h += "<h3>Switches per trial</h3>\n" + summary_table(r.switches, 2).html();
+    return h;
+}
+
+// The questionnaire's items: their summaries and how often each answer was given.
+std::string questionnaire_section_html(const AnalysisResults& r) {
+    std::string h = "<h2 id=\"questionnaire\">Questionnaire</h2>\n";
+    if (r.questionnaire.empty()) {
+        return h +
+               "<p class=\"note\">No questionnaire answers (CSV exports hold none; databases "
+               "hold them when the protocol asks).</p>\n";
+    }
+    Table t;
+    t.header = {"item", "statement", "n", "mean", "SD", "median", "IQR", "answers 1..K"};
+    t.numeric = {true, false, true, true, true, true, true, false};
+    for (const ItemSummary& item : r.questionnaire) {
+        std::string counts;
+        for (std::size_t k = 0; k < item.counts.size(); ++k) {
+            if (k > 0) counts += " &middot; ";
+            counts += std::to_string(item.counts[k]);
+        }
+        const Summary& s = item.summary;
+        t.rows.push_back({std::to_string(item.item + 1), xml_escaped(item.text),
+                          std::to_string(s.n), fixed(s.mean, 2), fixed(s.sd, 2), fixed(s.median, 1),
+                          fixed(s.q1, 1) + "&ndash;" + fixed(s.q3, 1),
+                          counts + " <span class=\"note\">(1.." +
+                              std::to_string(item.scale_points) + ")</span>"});
+    }
+    return h + t.html();
+}
+
+}  // namespace
+
+std::string report_html(const AnalysisResults& r, const std::vector<Figure>& figures) {
+    std::string h = head_html(r);
+    h += data_section_html(r);
+    h += choices_section_html(r, figures);
+    h += chi_square_section_html(r);
     h += regression_section_html(r);
     h += psychometric_section_html(r, figures);
-
     h += order_section_html(r);
-
-    // Times and switches.
-    h += "<h2 id=\"times\">Decision times and switches</h2>\n";
-    h += figure("decision_times");
-    h += "<h3>Decision time (seconds)</h3>\n" + summary_table(r.decision_times, 2).html();
-    h += figure("switches");
-    h += "<h3>Switches per trial</h3>\n" + summary_table(r.switches, 2).html();
-
-    // Questionnaire.
-    h += "<h2 id=\"questionnaire\">Questionnaire</h2>\n";
-    if (r.questionnaire.empty()) {
-        h += "<p class=\"note\">No questionnaire answers (CSV exports hold none; databases hold "
-             "them when the protocol asks).</p>\n";
-    } else {
-        Table t;
-        t.header = {"item", "statement", "n", "mean", "SD", "median", "IQR", "answers 1..K"};
-        t.numeric = {true, false, true, true, true, true, true, false};
-        for (const ItemSummary& item : r.questionnaire) {
-            std::string counts;
-            for (std::size_t k = 0; k < item.counts.size(); ++k) {
-                if (k > 0) counts += " &middot; ";
-                counts += std::to_string(item.counts[k]);
-            }
-            const Summary& s = item.summary;
-            t.rows.push_back({std::to_string(item.item + 1), xml_escaped(item.text),
-                              std::to_string(s.n), fixed(s.mean, 2), fixed(s.sd, 2),
-                              fixed(s.median, 1), fixed(s.q1, 1) + "&ndash;" + fixed(s.q3, 1),
-                              counts + " <span class=\"note\">(1.." +
-                                  std::to_string(item.scale_points) + ")</span>"});
-        }
-        h += t.html();
-    }
+    h += times_section_html(r, figures);
+    h += questionnaire_section_html(r);
     h += "<p class=\"note\">Written by <code>monoplane analyze</code>; see docs/analysis.md.</p>\n";
     h += "</body>\n</html>\n";
     return h;
@@ -473,7 +508,6 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
 
 namespace {
 
-// An interval as [lower, upper].
 // The frame log's verdict per trial: how many data trials have one, and which missed more of
 // their display slots than the protocol allows (they stay in the analysis; the reader decides).
 void frame_timing_json(JsonWriter& json, const FrameTimingSummary& f) {
@@ -497,6 +531,7 @@ void frame_timing_json(JsonWriter& json, const FrameTimingSummary& f) {
     json.end_object();
 }
 
+// An interval as [lower, upper].
 void interval_json(JsonWriter& json, std::string_view key, const Interval& interval) {
     json.begin_array(key).value("", interval.lower).value("", interval.upper).end_array();
 }

@@ -1,5 +1,6 @@
 #include "app/bench/bench_results.h"
 
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -98,6 +99,82 @@ void write_turning(JsonWriter& j, const BenchRun& run) {
     optional_value(j, "turning_compile_share", run.turning_compile_share);
 }
 
+// An auto run's keys: the range of m it chose, and whether a fixed m beat it (mark_auto_frontier).
+void write_auto_plane(JsonWriter& j, const BenchRun& run) {
+    optional_value(j, "mono_plane_min", run.mono_plane_min);
+    optional_value(j, "mono_plane_max", run.mono_plane_max);
+    j.value("stereo_frames", run.stereo_frames);
+    if (run.on_fixed_m_frontier) j.value("on_fixed_m_frontier", *run.on_fixed_m_frontier);
+    j.begin_array("dominated_by");
+    for (const std::string& other : run.dominated_by) j.value(std::string_view(), other);
+    j.end_array();
+    j.begin_array("dominated_beyond_spread_by");
+    for (const std::string& other : run.dominated_beyond_spread_by) {
+        j.value(std::string_view(), other);
+    }
+    j.end_array();
+}
+
+template <typename Value>
+void write_map(JsonWriter& j, std::string_view key, const std::map<std::string, Value>& values) {
+    j.begin_object(key);
+    for (const auto& [name, value] : values) j.value(name, value);
+    j.end_object();
+}
+
+// Times per frame and per pass, and the pipeline statistics' counts per view.
+void write_times_and_counts(JsonWriter& j, const BenchRun& run) {
+    j.value("frame_ms_median", run.frame_ms_median).value("frame_ms_p90", run.frame_ms_p90);
+    j.value("frame_ms_p10", run.frame_ms_p10).value("cpu_ms_median", run.cpu_ms_median);
+    write_map(j, "passes", run.pass_ms_median);
+    write_map(j, "passes_p10", run.pass_ms_p10);
+    write_map(j, "passes_p90", run.pass_ms_p90);
+    j.value("primitives", run.primitives).value("fragments", run.fragments);
+    j.value("vertex_invocations", run.vertex_invocations);
+    j.value("geometry_invocations", run.geometry_invocations);
+    write_map(j, "view_primitives", run.view_primitives);
+    write_map(j, "view_fragments", run.view_fragments);
+    write_map(j, "view_fragments_per_pixel", run.view_fragments_per_pixel);
+    write_map(j, "draws", run.view_draws);
+}
+
+// Accuracy against the stereo reference, and the ratios to its time and counts.
+void write_comparison_with_stereo(JsonWriter& j, const BenchRun& run) {
+    optional_value(j, "ssim_vs_stereo", run.ssim_vs_stereo);
+    optional_value(j, "max_error_px", run.max_error_px);
+    optional_value(j, "max_error_arcmin", run.max_error_arcmin);
+    optional_value(j, "visible_error_arcmin", run.visible_error_arcmin);
+    optional_value(j, "drift_px", run.drift_px);
+    j.value("drift_patches", static_cast<std::uint64_t>(run.drift_patches));
+    optional_value(j, "time_ratio_vs_stereo", run.time_ratio);
+    optional_value(j, "stereo_frame_ms_median", run.stereo_frame_ms_median);
+    optional_value(j, "time_ratio_p25", run.time_ratio_p25);
+    optional_value(j, "time_ratio_p75", run.time_ratio_p75);
+    optional_value(j, "primitive_ratio_vs_stereo", run.primitive_ratio);
+    optional_value(j, "vertex_invocation_ratio_vs_stereo", run.vertex_invocation_ratio);
+}
+
+void write_run(JsonWriter& j, const BenchRun& run) {
+    j.begin_object();
+    j.value("scene", run.scene).value("mode", run.mode).value("variant", run.variant);
+    if (!run.variant_chosen.empty()) j.value("variant_chosen", run.variant_chosen);
+    j.value("stereo_pass", run.stereo_pass);
+    optional_value(j, "mono_plane", run.mono_plane);
+    j.value("mono_plane_is_far", run.mono_plane_is_far);
+    j.value("mono_plane_auto", run.mono_plane_auto);
+    if (run.mono_plane_auto) write_auto_plane(j, run);
+    write_times_and_counts(j, run);
+    modes::write_plan_json(j, run.plan);
+    write_comparison_with_stereo(j, run);
+    if (run.turning_frames > 0) write_turning(j, run);
+    if (run.max_channel_difference) {
+        j.value("max_channel_difference_vs_stereo", *run.max_channel_difference);
+    } else {
+        j.null("max_channel_difference_vs_stereo");
+    }
+    j.end_object();
+}
+
 }  // namespace
 
 std::string bench_json(const BenchReport& report) {
@@ -111,75 +188,7 @@ std::string bench_json(const BenchReport& report) {
     j.value("depth_prepass", report.depth_prepass);
     j.value("warmup_frames", report.warmup).value("frames", report.frames);
     j.begin_array("runs");
-    for (const BenchRun& run : report.runs) {
-        j.begin_object();
-        j.value("scene", run.scene).value("mode", run.mode).value("variant", run.variant);
-        if (!run.variant_chosen.empty()) j.value("variant_chosen", run.variant_chosen);
-        j.value("stereo_pass", run.stereo_pass);
-        optional_value(j, "mono_plane", run.mono_plane);
-        j.value("mono_plane_is_far", run.mono_plane_is_far);
-        j.value("mono_plane_auto", run.mono_plane_auto);
-        if (run.mono_plane_auto) {
-            optional_value(j, "mono_plane_min", run.mono_plane_min);
-            optional_value(j, "mono_plane_max", run.mono_plane_max);
-            j.value("stereo_frames", run.stereo_frames);
-            if (run.on_fixed_m_frontier) j.value("on_fixed_m_frontier", *run.on_fixed_m_frontier);
-            j.begin_array("dominated_by");
-            for (const std::string& other : run.dominated_by) j.value(std::string_view(), other);
-            j.end_array();
-            j.begin_array("dominated_beyond_spread_by");
-            for (const std::string& other : run.dominated_beyond_spread_by) {
-                j.value(std::string_view(), other);
-            }
-            j.end_array();
-        }
-        j.value("frame_ms_median", run.frame_ms_median).value("frame_ms_p90", run.frame_ms_p90);
-        j.value("frame_ms_p10", run.frame_ms_p10).value("cpu_ms_median", run.cpu_ms_median);
-        j.begin_object("passes");
-        for (const auto& [name, ms] : run.pass_ms_median) j.value(name, ms);
-        j.end_object();
-        j.begin_object("passes_p10");
-        for (const auto& [name, ms] : run.pass_ms_p10) j.value(name, ms);
-        j.end_object();
-        j.begin_object("passes_p90");
-        for (const auto& [name, ms] : run.pass_ms_p90) j.value(name, ms);
-        j.end_object();
-        j.value("primitives", run.primitives).value("fragments", run.fragments);
-        j.value("vertex_invocations", run.vertex_invocations);
-        j.value("geometry_invocations", run.geometry_invocations);
-        j.begin_object("view_primitives");
-        for (const auto& [view, n] : run.view_primitives) j.value(view, n);
-        j.end_object();
-        j.begin_object("view_fragments");
-        for (const auto& [view, n] : run.view_fragments) j.value(view, n);
-        j.end_object();
-        j.begin_object("view_fragments_per_pixel");
-        for (const auto& [view, n] : run.view_fragments_per_pixel) j.value(view, n);
-        j.end_object();
-        j.begin_object("draws");
-        for (const auto& [view, n] : run.view_draws) j.value(view, n);
-        j.end_object();
-        modes::write_plan_json(j, run.plan);
-        optional_value(j, "ssim_vs_stereo", run.ssim_vs_stereo);
-        optional_value(j, "max_error_px", run.max_error_px);
-        optional_value(j, "max_error_arcmin", run.max_error_arcmin);
-        optional_value(j, "visible_error_arcmin", run.visible_error_arcmin);
-        optional_value(j, "drift_px", run.drift_px);
-        j.value("drift_patches", static_cast<std::uint64_t>(run.drift_patches));
-        optional_value(j, "time_ratio_vs_stereo", run.time_ratio);
-        optional_value(j, "stereo_frame_ms_median", run.stereo_frame_ms_median);
-        optional_value(j, "time_ratio_p25", run.time_ratio_p25);
-        optional_value(j, "time_ratio_p75", run.time_ratio_p75);
-        optional_value(j, "primitive_ratio_vs_stereo", run.primitive_ratio);
-        optional_value(j, "vertex_invocation_ratio_vs_stereo", run.vertex_invocation_ratio);
-        if (run.turning_frames > 0) write_turning(j, run);
-        if (run.max_channel_difference) {
-            j.value("max_channel_difference_vs_stereo", *run.max_channel_difference);
-        } else {
-            j.null("max_channel_difference_vs_stereo");
-        }
-        j.end_object();
-    }
+    for (const BenchRun& run : report.runs) write_run(j, run);
     j.end_array();
     j.end_object();
     return j.str();

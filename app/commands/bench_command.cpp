@@ -32,9 +32,9 @@
 #include "renderer/quality/channel_difference.h"
 #include "renderer/quality/drift.h"
 #include "renderer/quality/ssim.h"
+#include "renderer/vk/context.h"
 #include "rig/angular_error.h"
 #include "rig/pose_path.h"
-#include "renderer/vk/context.h"
 #include "scenes/generate.h"
 #include "study/protocol.h"
 
@@ -423,14 +423,22 @@ BenchRun measure_auto(modes::ModeRenderer& renderer, modes::FrameInputs inputs,
     return run;
 }
 
-void run_bench(const BenchOptions& o, const GlobalOptions& global) {
+// The sweep the options ask for, checked before anything is loaded.
+struct BenchSweep {
     std::vector<SceneSource> scene_sources;
+    std::vector<modes::RenderModeChoice> mode_choices;
+    modes::StereoPass hybrid_stereo_pass = modes::StereoPass::kTwoPasses;  // --stereo-pass
+    std::vector<modes::MonoCulling> variants;                              // hybrid's
+    scenes::Detail detail{};
+};
+
+BenchSweep parse_sweep(const BenchOptions& o) {
+    BenchSweep sweep;
     for (const std::string& name : split_list(o.scenes)) {
         Result<SceneSource> source = parse_scene_source(name);
         if (!source) throw UserError("--scenes: '" + name + "': " + source.error().message);
-        scene_sources.push_back(std::move(source).value());
+        sweep.scene_sources.push_back(std::move(source).value());
     }
-    std::vector<modes::RenderModeChoice> mode_list;
     for (const std::string& name : split_list(o.modes)) {
         const auto mode = modes::parse_render_mode(name);
         if (!mode) {
@@ -438,76 +446,100 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
                             "' is not stereo, stereo-multiview, stereo-gs, hybrid or "
                             "hybrid-farfield");
         }
-        mode_list.push_back(*mode);
+        sweep.mode_choices.push_back(*mode);
     }
-    const modes::StereoPass hybrid_stereo_pass = parse_stereo_pass_flag(o.stereo_pass);
-    auto is_two_pass_stereo = [](const modes::RenderModeChoice& m) {
-        return m.mode == modes::Mode::kStereo && m.stereo_pass == modes::StereoPass::kTwoPasses;
-    };
-    std::vector<modes::MonoCulling> variants;
+    sweep.hybrid_stereo_pass = parse_stereo_pass_flag(o.stereo_pass);
     for (const std::string& name : split_list(o.variants)) {
         const auto variant = modes::parse_mono_culling(name);
         if (!variant) {
             throw UserError("--variants: '" + name +
                             "' is not no-opt, discard, occlusion-cull or auto");
         }
-        variants.push_back(*variant);
+        sweep.variants.push_back(*variant);
     }
     const auto detail = scenes::parse_detail(o.detail);
     if (!detail) throw UserError("--detail " + o.detail + ": use test, low, medium, high or ultra");
+    sweep.detail = *detail;
     if ((o.width > 0) != (o.height > 0)) throw UserError("--width and --height go together");
-    if (scene_sources.empty() || mode_list.empty()) throw UserError("nothing to measure");
+    if (sweep.scene_sources.empty() || sweep.mode_choices.empty())
+        throw UserError("nothing to measure");
+    return sweep;
+}
 
-    const std::filesystem::path out = prepare_output_directory("--out", o.out);
+// Two-pass stereo is every scene's reference, measured once before the other modes.
+bool is_two_pass_stereo(const modes::RenderModeChoice& m) {
+    return m.mode == modes::Mode::kStereo && m.stereo_pass == modes::StereoPass::kTwoPasses;
+}
 
-    const hmd::HmdProfile profile = hmd::load_hmd_profile(o.hmd).value_or_throw();
-    const vk::Extent2D extent(static_cast<std::uint32_t>(o.width > 0 ? o.width : profile.width),
-                              static_cast<std::uint32_t>(o.height > 0 ? o.height : profile.height));
-    modes::FrameInputs base;
+// What every run renders with: the headset, the image size, the mono planes and the renderers'
+// options.
+struct BenchSetup {
+    hmd::HmdProfile profile;
+    vk::Extent2D extent;
+    modes::FrameInputs base;  // every scene's inputs, less its viewpoint
+    std::vector<Plane> planes;
+    double nearest = 0.0;  // the nearest fixed plane: sizes C's render target once
+    modes::AutoMonoPlaneParams auto_params;
+    modes::RendererOptions renderer_options;
+};
+
+BenchSetup prepare_setup(const BenchOptions& o, const BenchSweep& sweep) {
+    BenchSetup setup;
+    setup.profile = hmd::load_hmd_profile(o.hmd).value_or_throw();
+    const hmd::HmdProfile& profile = setup.profile;
+    setup.extent =
+        vk::Extent2D(static_cast<std::uint32_t>(o.width > 0 ? o.width : profile.width),
+                     static_cast<std::uint32_t>(o.height > 0 ? o.height : profile.height));
+    modes::FrameInputs& base = setup.base;
     base.views.ipd = profile.ipd;
     base.views.left = profile.left;
     base.views.right = profile.right;
     base.views.cant = hmd::cant_radians(profile);
     base.grazing_angle = o.grazing_deg * std::numbers::pi / 180.0;
-    const std::vector<Plane> planes = parse_planes(o, base.views.far);
-    double nearest = base.views.far;
-    for (const Plane& p : planes) {
-        if (!p.automatic) nearest = std::min(nearest, p.metres);
+    setup.planes = parse_planes(o, base.views.far);
+    setup.nearest = base.views.far;
+    for (const Plane& p : setup.planes) {
+        if (!p.automatic) setup.nearest = std::min(setup.nearest, p.metres);
     }
-    const modes::AutoMonoPlaneParams auto_params = auto_mono_plane_params(o.auto_flags);
+    setup.auto_params = auto_mono_plane_params(o.auto_flags);
 
-    modes::RendererOptions renderer_options;
+    modes::RendererOptions& renderer_options = setup.renderer_options;
     apply_image_quality_flags(o.anti_aliasing, o.ssao, renderer_options);
     renderer_options.vertex_work = o.vertex_work;
     renderer_options.depth_prepass = o.depth_prepass;
     if (modes::msaa_samples(renderer_options.anti_aliasing) != vk::SampleCountFlagBits::e1 &&
-        std::any_of(mode_list.begin(), mode_list.end(), [](const modes::RenderModeChoice& m) {
-            return m.mode != modes::Mode::kStereo;
-        })) {
+        std::any_of(
+            sweep.mode_choices.begin(), sweep.mode_choices.end(),
+            [](const modes::RenderModeChoice& m) { return m.mode != modes::Mode::kStereo; })) {
         throw UserError(
             "--anti-aliasing " + o.anti_aliasing +
             " works in stereo mode only (docs/hybrid.md, \"MSAA: stereo only, and why\"): add "
             "--modes stereo, or use taa");
     }
-    auto ctx = vk_core::Context::create(global.context_options()).value_or_throw();
-    std::cerr << "device: " << ctx->device_info().name << "\n";
+    return setup;
+}
 
+// The runs the sweep makes, for the progress line: stereo's once per scene, hybrid's per plane
+// and variant, the far field's per plane.
+int count_runs(const BenchSweep& sweep, const std::vector<Plane>& planes) {
     int total = 0;
-    for (const modes::RenderModeChoice& choice : mode_list) {
+    for (const modes::RenderModeChoice& choice : sweep.mode_choices) {
         if (choice.mode == modes::Mode::kStereo) total += 1;
         if (choice.mode == modes::Mode::kHybrid)
-            total += static_cast<int>(planes.size() * variants.size());
+            total += static_cast<int>(planes.size() * sweep.variants.size());
         if (choice.mode == modes::Mode::kHybridFarfield) total += static_cast<int>(planes.size());
     }
-    total *= static_cast<int>(scene_sources.size());
-    Progress progress(total);
-    int done = 0;
+    return total * static_cast<int>(sweep.scene_sources.size());
+}
 
+// bench.json's header: the configuration every run shares.
+BenchReport empty_report(const BenchOptions& o, const std::string& device,
+                         const BenchSetup& setup) {
     BenchReport report;
-    report.device = ctx->device_info().name;
-    report.hmd = profile.name;
-    report.width = static_cast<int>(extent.width);
-    report.height = static_cast<int>(extent.height);
+    report.device = device;
+    report.hmd = setup.profile.name;
+    report.width = static_cast<int>(setup.extent.width);
+    report.height = static_cast<int>(setup.extent.height);
     report.detail = o.detail;
     report.view = o.view;
     report.seed = o.seed;
@@ -517,146 +549,246 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
     report.depth_prepass = o.depth_prepass;
     report.warmup = o.warmup;
     report.frames = o.frames;
+    return report;
+}
 
-    for (const SceneSource& source : scene_sources) {
-        progress.show(done, (source.builtin ? "generating " : "loading ") + source.label);
-        const scenes::Scene scene = load_scene(source, *detail, o.seed).value_or_throw();
-        const std::string scene_name = source.builtin ? source.label : scene.name;
-        const scenes::Viewpoint* viewpoint = scene.find_viewpoint(o.view);
-        if (!viewpoint)
-            throw UserError("--view " + o.view + ": " + scene_name + " has no such view");
-        modes::FrameInputs inputs = base;
-        inputs.views.head = viewpoint->head;
+// The sweep under way: what it renders with, the report its runs go into, and its progress.
+struct SweepState {
+    const BenchOptions& options;
+    const BenchSweep& sweep;
+    const BenchSetup& setup;
+    const vk_core::Context& ctx;
+    BenchReport& report;
+    Progress progress;
+    int done = 0;
 
-        // Stereo: the timing reference (its frames interleave with every other run's) and the
-        // images every hybrid run is compared with.
-        Reference reference;
-        modes::RendererOptions stereo_options = renderer_options;
-        stereo_options.read_back_depth = true;
-        stereo_options.stereo_pass = modes::StereoPass::kTwoPasses;
-        modes::ModeRenderer stereo(*ctx, scene, modes::Mode::kStereo, extent, stereo_options);
-        const modes::FrameInputs stereo_inputs = inputs;
-        {
-            const bool timed = std::any_of(mode_list.begin(), mode_list.end(), is_two_pass_stereo);
-            if (timed) {
-                progress.show(done, scene_name + " stereo");
-                BenchRun run = measure(stereo, inputs, o);
-                run.scene = scene_name;
-                run.mode = "stereo";
-                report.runs.push_back(std::move(run));
-                ++done;
-            }
-            // The reference frame: images for the accuracy, depth for the visible error.
-            stereo.set_read_back(true);
-            stereo.render_frame(inputs);
-            for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
-                reference.images[static_cast<int>(eye)] = stereo.eye_image(eye);
-                reference.depth[static_cast<int>(eye)] = stereo.eye_linear_depth(eye);
+    void show(const std::string& what) const { progress.show(done, what); }
+    void add(BenchRun run) {
+        report.runs.push_back(std::move(run));
+        ++done;
+    }
+};
+
+// A scene under measurement and its stereo reference: the renderer whose frames interleave with
+// every other run's (for the time ratios), and its images and depth (for the accuracy).
+struct SceneUnderTest {
+    const scenes::Scene& scene;
+    std::string name;
+    modes::ModeRenderer& stereo;
+    const modes::FrameInputs& stereo_inputs;
+    Reference reference;
+    double visible_depth = 0.0;  // farthest_visible_depth(reference)
+};
+
+// Stereo's own timed run (when --modes asks for two-pass stereo), then the reference frame:
+// images for the accuracy, depth for the visible error.
+Reference measure_stereo(SweepState& state, const std::string& scene_name,
+                         modes::ModeRenderer& stereo, const modes::FrameInputs& inputs) {
+    const std::vector<modes::RenderModeChoice>& mode_list = state.sweep.mode_choices;
+    if (std::any_of(mode_list.begin(), mode_list.end(), is_two_pass_stereo)) {
+        state.show(scene_name + " stereo");
+        BenchRun run = measure(stereo, inputs, state.options);
+        run.scene = scene_name;
+        run.mode = "stereo";
+        state.add(std::move(run));
+    }
+    Reference reference;
+    stereo.set_read_back(true);
+    stereo.render_frame(inputs);
+    for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
+        reference.images[static_cast<int>(eye)] = stereo.eye_image(eye);
+        reference.depth[static_cast<int>(eye)] = stereo.eye_linear_depth(eye);
+    }
+    return reference;
+}
+
+// Single-pass stereo: the same images as stereo in one pass (papers/001).
+void bench_single_pass_stereo(SweepState& state, const SceneUnderTest& scene,
+                              const modes::RenderModeChoice& choice,
+                              const modes::FrameInputs& inputs) {
+    modes::RendererOptions options = state.setup.renderer_options;
+    options.stereo_pass = choice.stereo_pass;
+    const std::string name = modes::render_mode_name(choice);
+    state.show(scene.name + " " + name);
+    modes::ModeRenderer renderer(state.ctx, scene.scene, choice.mode, state.setup.extent, options);
+    BenchRun run = measure(renderer, inputs, state.options, &scene.stereo, &scene.stereo_inputs);
+    run.scene = scene.name;
+    run.mode = name;
+    run.stereo_pass = modes::stereo_pass_name(options.stereo_pass);
+    if (state.options.accuracy) {
+        run.max_channel_difference = max_channel_difference(renderer, inputs, scene.reference);
+    }
+    state.add(std::move(run));
+}
+
+// A hybrid mode under measurement: its renderer for the fixed planes, the options it was made
+// with and the variants it is measured with.
+struct HybridMode {
+    modes::Mode mode;
+    modes::ModeRenderer& renderer;
+    const modes::RendererOptions& options;
+    std::string pass_name;  // of options.stereo_pass
+    std::vector<modes::MonoCulling> variants;
+};
+
+// m chosen by the renderer every frame: one renderer per variant, since the chooser keeps state
+// over the frames. papers/003's far field has another error model than the rig's: hybrid only.
+void bench_auto_plane(SweepState& state, const SceneUnderTest& scene, const HybridMode& hybrid,
+                      const modes::FrameInputs& inputs) {
+    if (hybrid.mode != modes::Mode::kHybrid) {
+        state.done += 1;
+        return;
+    }
+    const BenchSetup& setup = state.setup;
+    for (modes::MonoCulling variant : hybrid.variants) {
+        state.show(scene.name + " hybrid " + modes::mono_culling_name(variant) + " m=auto");
+        modes::RendererOptions auto_options = hybrid.options;
+        auto_options.auto_mono_plane = setup.auto_params;
+        modes::ModeRenderer automatic(state.ctx, scene.scene, hybrid.mode, setup.extent,
+                                      auto_options, setup.nearest);
+        AutoRunContext context{setup.profile, setup.extent, scene.visible_depth, scene.reference};
+        BenchRun run = measure_auto(automatic, inputs, variant, state.options, context,
+                                    scene.stereo, scene.stereo_inputs);
+        run.scene = scene.name;
+        run.stereo_pass = hybrid.pass_name;
+        state.add(std::move(run));
+    }
+}
+
+// The rig's largest error, in pixels and arcminutes, and the error at the farthest visible depth.
+void add_rig_errors(const modes::ModeRenderer& renderer, double visible_depth, BenchRun& run) {
+    if (!renderer.last_rig()) return;
+    const rig::Rig& rig = *renderer.last_rig();
+    run.max_error_px = rig.max_error_px;
+    run.max_error_arcmin = rig::max_angular_error(rig).eye_arcmin;
+    run.visible_error_arcmin = rig::angular_error_at_depth(rig, visible_depth).eye_arcmin;
+}
+
+// One fixed m, each variant in turn on the mode's renderer. The variants draw identical images
+// (tests/gpu/culling_test.cpp): the accuracy is measured once per mono plane.
+void bench_fixed_plane(SweepState& state, const SceneUnderTest& scene, const HybridMode& hybrid,
+                       const Plane& plane, modes::FrameInputs& inputs) {
+    const modes::Mode mode = hybrid.mode;
+    modes::ModeRenderer& renderer = hybrid.renderer;
+    inputs.mono_plane = plane.metres;
+    std::optional<Accuracy> accuracy;
+    for (modes::MonoCulling variant : hybrid.variants) {
+        inputs.mono_culling = variant;
+        std::ostringstream what;
+        what << scene.name << " " << modes::mode_name(mode)
+             << (mode == modes::Mode::kHybrid ? " " + modes::mono_culling_name(variant) : "")
+             << " m=" << (plane.far ? std::string("far") : plane_text(plane.metres));
+        state.show(what.str());
+        BenchRun run =
+            measure(renderer, inputs, state.options, &scene.stereo, &scene.stereo_inputs);
+        run.scene = scene.name;
+        run.mode = modes::mode_name(mode);
+        run.stereo_pass = hybrid.pass_name;
+        if (mode == modes::Mode::kHybrid) {
+            run.variant = modes::mono_culling_name(variant);
+            // auto: the variant its measurement settled on by the last frame.
+            if (variant == modes::MonoCulling::kAuto) {
+                run.variant_chosen = modes::mono_culling_name(renderer.last_variant());
             }
         }
-        const double visible_depth = farthest_visible_depth(reference);
+        run.mono_plane = plane.metres;
+        run.mono_plane_is_far = plane.far;
+        add_rig_errors(renderer, scene.visible_depth, run);
+        if (state.options.accuracy && !accuracy) {
+            accuracy = measure_accuracy(renderer, inputs, scene.reference);
+        }
+        if (accuracy) {
+            run.ssim_vs_stereo = accuracy->ssim;
+            run.drift_px = accuracy->drift_px;
+            run.drift_patches = accuracy->drift_patches;
+        }
+        state.add(std::move(run));
+    }
+}
 
-        for (const modes::RenderModeChoice& choice : mode_list) {
-            if (is_two_pass_stereo(choice)) continue;
-            const modes::Mode mode = choice.mode;
-            modes::RendererOptions options = renderer_options;
-            options.stereo_pass =
-                mode == modes::Mode::kStereo ? choice.stereo_pass : hybrid_stereo_pass;
-            const std::string pass_name = modes::stereo_pass_name(options.stereo_pass);
-            if (mode == modes::Mode::kStereo) {
-                // Single-pass stereo: the same images as stereo in one pass (papers/001).
-                const std::string name = modes::render_mode_name(choice);
-                progress.show(done, scene_name + " " + name);
-                modes::ModeRenderer renderer(*ctx, scene, mode, extent, options);
-                BenchRun run = measure(renderer, inputs, o, &stereo, &stereo_inputs);
-                run.scene = scene_name;
-                run.mode = name;
-                run.stereo_pass = pass_name;
-                if (o.accuracy) {
-                    run.max_channel_difference =
-                        max_channel_difference(renderer, inputs, reference);
-                }
-                report.runs.push_back(std::move(run));
-                ++done;
-                continue;
-            }
-            modes::ModeRenderer renderer(*ctx, scene, mode, extent, options, nearest);
-            const std::vector<modes::MonoCulling> mode_variants =
-                mode == modes::Mode::kHybrid ? variants : std::vector{modes::MonoCulling::kNoOpt};
-            for (const Plane& plane : planes) {
-                if (plane.automatic) {
-                    if (mode != modes::Mode::kHybrid) {
-                        // papers/003's far field has another error model than the rig's.
-                        done += 1;
-                        continue;
-                    }
-                    for (modes::MonoCulling variant : mode_variants) {
-                        progress.show(done, scene_name + " hybrid " +
-                                                modes::mono_culling_name(variant) + " m=auto");
-                        modes::RendererOptions auto_options = options;
-                        auto_options.auto_mono_plane = auto_params;
-                        modes::ModeRenderer automatic(*ctx, scene, mode, extent, auto_options,
-                                                      nearest);
-                        AutoRunContext context{profile, extent, visible_depth, reference};
-                        report.runs.push_back(measure_auto(automatic, inputs, variant, o, context,
-                                                           stereo, stereo_inputs));
-                        report.runs.back().scene = scene_name;
-                        report.runs.back().stereo_pass = pass_name;
-                        ++done;
-                    }
-                    continue;
-                }
-                inputs.mono_plane = plane.metres;
-                std::optional<Accuracy> accuracy;
-                for (modes::MonoCulling variant : mode_variants) {
-                    inputs.mono_culling = variant;
-                    std::ostringstream what;
-                    what << scene_name << " " << modes::mode_name(mode)
-                         << (mode == modes::Mode::kHybrid ? " " + modes::mono_culling_name(variant)
-                                                          : "")
-                         << " m=" << (plane.far ? std::string("far") : plane_text(plane.metres));
-                    progress.show(done, what.str());
-                    BenchRun run = measure(renderer, inputs, o, &stereo, &stereo_inputs);
-                    run.scene = scene_name;
-                    run.mode = modes::mode_name(mode);
-                    run.stereo_pass = pass_name;
-                    if (mode == modes::Mode::kHybrid) {
-                        run.variant = modes::mono_culling_name(variant);
-                        // auto: the variant its measurement settled on by the last frame.
-                        if (variant == modes::MonoCulling::kAuto) {
-                            run.variant_chosen = modes::mono_culling_name(renderer.last_variant());
-                        }
-                    }
-                    run.mono_plane = plane.metres;
-                    run.mono_plane_is_far = plane.far;
-                    if (renderer.last_rig()) {
-                        const rig::Rig& rig = *renderer.last_rig();
-                        run.max_error_px = rig.max_error_px;
-                        run.max_error_arcmin = rig::max_angular_error(rig).eye_arcmin;
-                        run.visible_error_arcmin =
-                            rig::angular_error_at_depth(rig, visible_depth).eye_arcmin;
-                    }
-                    // The variants draw identical images (tests/gpu/culling_test.cpp): measure
-                    // the accuracy once per mono plane.
-                    if (o.accuracy && !accuracy) {
-                        accuracy = measure_accuracy(renderer, inputs, reference);
-                    }
-                    if (accuracy) {
-                        run.ssim_vs_stereo = accuracy->ssim;
-                        run.drift_px = accuracy->drift_px;
-                        run.drift_patches = accuracy->drift_patches;
-                    }
-                    report.runs.push_back(std::move(run));
-                    ++done;
-                }
-            }
+// A hybrid mode at every mono plane of the sweep; hybrid with each variant, the far field with
+// frustum culling only. inputs keeps the last plane and variant measured.
+void bench_hybrid_mode(SweepState& state, const SceneUnderTest& scene, modes::Mode mode,
+                       modes::FrameInputs& inputs) {
+    const BenchSetup& setup = state.setup;
+    modes::RendererOptions options = setup.renderer_options;
+    options.stereo_pass = state.sweep.hybrid_stereo_pass;
+    modes::ModeRenderer renderer(state.ctx, scene.scene, mode, setup.extent, options,
+                                 setup.nearest);
+    const HybridMode hybrid{mode, renderer, options, modes::stereo_pass_name(options.stereo_pass),
+                            mode == modes::Mode::kHybrid ? state.sweep.variants
+                                                         : std::vector{modes::MonoCulling::kNoOpt}};
+    for (const Plane& plane : setup.planes) {
+        if (plane.automatic) {
+            bench_auto_plane(state, scene, hybrid, inputs);
+        } else {
+            bench_fixed_plane(state, scene, hybrid, plane, inputs);
         }
     }
-    progress.show(done, "done");
-    if (isatty(2)) std::cerr << "\n";
+}
 
-    add_ratios_to_stereo(report);
-    mark_auto_frontier(report);
+// Every mode of the sweep in one scene, against the scene's stereo reference.
+void bench_scene(SweepState& state, const SceneSource& source) {
+    const BenchOptions& o = state.options;
+    const BenchSetup& setup = state.setup;
+    state.show((source.builtin ? "generating " : "loading ") + source.label);
+    const scenes::Scene scene = load_scene(source, state.sweep.detail, o.seed).value_or_throw();
+    const std::string scene_name = source.builtin ? source.label : scene.name;
+    const scenes::Viewpoint* viewpoint = scene.find_viewpoint(o.view);
+    if (!viewpoint) throw UserError("--view " + o.view + ": " + scene_name + " has no such view");
+    modes::FrameInputs inputs = setup.base;
+    inputs.views.head = viewpoint->head;
+
+    modes::RendererOptions stereo_options = setup.renderer_options;
+    stereo_options.read_back_depth = true;
+    stereo_options.stereo_pass = modes::StereoPass::kTwoPasses;
+    modes::ModeRenderer stereo(state.ctx, scene, modes::Mode::kStereo, setup.extent,
+                               stereo_options);
+    const modes::FrameInputs stereo_inputs = inputs;
+    SceneUnderTest under_test{scene, scene_name, stereo, stereo_inputs,
+                              measure_stereo(state, scene_name, stereo, inputs)};
+    under_test.visible_depth = farthest_visible_depth(under_test.reference);
+
+    for (const modes::RenderModeChoice& choice : state.sweep.mode_choices) {
+        if (is_two_pass_stereo(choice)) continue;
+        if (choice.mode == modes::Mode::kStereo) {
+            bench_single_pass_stereo(state, under_test, choice, inputs);
+        } else {
+            bench_hybrid_mode(state, under_test, choice.mode, inputs);
+        }
+    }
+}
+
+// One line per run compared with stereo on stderr: its time and count ratios, accuracy and
+// error, and for auto runs whether a fixed m beat them.
+void print_run_summary(const BenchRun& run) {
+    std::cerr << "  " << std::left << std::setw(10) << run.scene << std::setw(16) << run.mode
+              << std::setw(15) << run.variant << " m " << std::setw(6)
+              << (!run.mono_plane         ? std::string("-")
+                  : run.mono_plane_auto   ? "auto~" + plane_text(*run.mono_plane)
+                  : run.mono_plane_is_far ? std::string("far")
+                                          : plane_text(*run.mono_plane))
+              << " time " << std::fixed << std::setprecision(2) << *run.time_ratio
+              << "x  primitives " << run.primitive_ratio.value_or(0.0) << "x  vertices "
+              << run.vertex_invocation_ratio.value_or(0.0) << "x";
+    if (run.max_channel_difference)
+        std::cerr << "  max difference " << *run.max_channel_difference << "/255";
+    if (run.ssim_vs_stereo) std::cerr << "  SSIM " << std::setprecision(4) << *run.ssim_vs_stereo;
+    if (run.visible_error_arcmin)
+        std::cerr << "  error " << std::setprecision(2) << *run.visible_error_arcmin << "'";
+    if (run.on_fixed_m_frontier) {
+        std::cerr << (*run.on_fixed_m_frontier ? "  on the fixed-m frontier"
+                                               : "  dominated by a fixed m");
+        if (!run.dominated_by.empty()) {
+            std::cerr << " (" << run.dominated_beyond_spread_by.size() << " of "
+                      << run.dominated_by.size() << " beyond the frame-to-frame spread)";
+        }
+    }
+    std::cerr << std::defaultfloat << "\n";
+}
+
+// bench.json, bench.csv and the figures, then the summary on stderr.
+void write_results(const BenchReport& report, const std::filesystem::path& out) {
     std::ofstream(out / "bench.json") << bench_json(report) << "\n";
     std::ofstream(out / "bench.csv") << bench_csv(report);
     const auto plots = write_bench_plots(report, out).value_or_throw();
@@ -664,31 +796,26 @@ void run_bench(const BenchOptions& o, const GlobalOptions& global) {
               << " figures\n";
     for (const BenchRun& run : report.runs) {
         if (!run.time_ratio || run.mode == "stereo") continue;
-        std::cerr << "  " << std::left << std::setw(10) << run.scene << std::setw(16) << run.mode
-                  << std::setw(15) << run.variant << " m " << std::setw(6)
-                  << (!run.mono_plane         ? std::string("-")
-                      : run.mono_plane_auto   ? "auto~" + plane_text(*run.mono_plane)
-                      : run.mono_plane_is_far ? std::string("far")
-                                              : plane_text(*run.mono_plane))
-                  << " time " << std::fixed << std::setprecision(2) << *run.time_ratio
-                  << "x  primitives " << run.primitive_ratio.value_or(0.0) << "x  vertices "
-                  << run.vertex_invocation_ratio.value_or(0.0) << "x";
-        if (run.max_channel_difference)
-            std::cerr << "  max difference " << *run.max_channel_difference << "/255";
-        if (run.ssim_vs_stereo)
-            std::cerr << "  SSIM " << std::setprecision(4) << *run.ssim_vs_stereo;
-        if (run.visible_error_arcmin)
-            std::cerr << "  error " << std::setprecision(2) << *run.visible_error_arcmin << "'";
-        if (run.on_fixed_m_frontier) {
-            std::cerr << (*run.on_fixed_m_frontier ? "  on the fixed-m frontier"
-                                                   : "  dominated by a fixed m");
-            if (!run.dominated_by.empty()) {
-                std::cerr << " (" << run.dominated_beyond_spread_by.size() << " of "
-                          << run.dominated_by.size() << " beyond the frame-to-frame spread)";
-            }
-        }
-        std::cerr << std::defaultfloat << "\n";
+        print_run_summary(run);
     }
+}
+
+void run_bench(const BenchOptions& o, const GlobalOptions& global) {
+    const BenchSweep sweep = parse_sweep(o);
+    const std::filesystem::path out = prepare_output_directory("--out", o.out);
+    const BenchSetup setup = prepare_setup(o, sweep);
+    auto ctx = vk_core::Context::create(global.context_options()).value_or_throw();
+    std::cerr << "device: " << ctx->device_info().name << "\n";
+
+    BenchReport report = empty_report(o, ctx->device_info().name, setup);
+    SweepState state{o, sweep, setup, *ctx, report, Progress(count_runs(sweep, setup.planes))};
+    for (const SceneSource& source : sweep.scene_sources) bench_scene(state, source);
+    state.show("done");
+    if (isatty(2)) std::cerr << "\n";
+
+    add_ratios_to_stereo(report);
+    mark_auto_frontier(report);
+    write_results(report, out);
     fail_on_validation_messages(*ctx, global);
 }
 

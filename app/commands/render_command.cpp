@@ -25,8 +25,8 @@
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/plan/frame_plan_json.h"
-#include "rig/pose_path.h"
 #include "renderer/vk/context.h"
+#include "rig/pose_path.h"
 #include "scenes/generate.h"
 
 namespace monoplane::app {
@@ -70,53 +70,58 @@ std::string joined(const std::vector<std::string>& names) {
     return text;
 }
 
-std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& choice,
-                         const hmd::HmdProfile& profile, const scenes::Scene& scene,
-                         const vk_core::Context& ctx, int width, int height, const FrameSummary& s,
-                         const std::optional<rig::Rig>& rig, const modes::RgbaImage* mono,
-                         const std::optional<StereoComparison>& comparison,
-                         const std::optional<quality::InconsistencyMap>& ao,
-                         const modes::FramePlan& plan, modes::MonoCulling last_variant,
-                         const std::filesystem::path& out,
-                         const std::function<void(JsonWriter&)>& depth_profile,
-                         const std::function<void(JsonWriter&)>& auto_mono_plane) {
-    JsonWriter j;
-    j.begin_object();
-    j.value("command", "render").value("scene", scene.name).value("mode", o.mode);
+// What stats.json reports besides the options: where and what was rendered, and the results.
+struct RenderResults {
+    const hmd::HmdProfile& profile;
+    const scenes::Scene& scene;
+    const vk_core::Context& ctx;
+    int width = 0;
+    int height = 0;
+    FrameSummary summary;                                // the measured frames
+    const modes::ModeRenderer& renderer;                 // its last frame's rig, plan and variant
+    const modes::RgbaImage* mono = nullptr;              // mono.png, if written
+    const std::optional<StereoComparison>& comparison;   // --compare-stereo
+    const std::optional<quality::InconsistencyMap>& ao;  // --ssao
+    std::filesystem::path out;
+};
+
+// The configuration rendered: the options as given, with what they resolved to.
+void write_configuration(JsonWriter& j, const RenderOptions& o,
+                         const modes::RenderModeChoice& choice, const RenderResults& r) {
+    j.value("command", "render").value("scene", r.scene.name).value("mode", o.mode);
     j.value("detail", o.detail).value("seed", static_cast<std::uint64_t>(o.seed));
-    j.value("view", o.view).value("hmd", profile.name).value("ipd", o.ipd.value_or(profile.ipd));
-    j.value("width", width).value("height", height);
+    j.value("view", o.view)
+        .value("hmd", r.profile.name)
+        .value("ipd", o.ipd.value_or(r.profile.ipd));
+    j.value("width", r.width).value("height", r.height);
     j.value("stereo_pass", modes::stereo_pass_name(choice.stereo_pass));
     if (choice.mode != modes::Mode::kStereo) j.value("debug_view", o.debug_view);
     if (choice.mode == modes::Mode::kHybrid) {
         j.value("variant", o.mono_culling);
-        j.value("variant_used", modes::mono_culling_name(last_variant));  // auto: resolved
+        // auto: the variant it resolved to
+        j.value("variant_used", modes::mono_culling_name(r.renderer.last_variant()));
     }
     j.value("anti_aliasing", o.anti_aliasing).value("ssao", o.ssao);
     j.value("pose_path", o.pose_path).value("fps", o.fps);
-    if (rig) {
-        j.value("mono_plane", rig->inputs.mono_plane).value("mono_skipped", rig->mono_skipped);
-        j.value("overlap", rig->overlap).value("max_error_px", rig->max_error_px);
-        j.value("max_error_px_2d", rig->max_error_px_2d);
-        j.begin_object("mono_camera");
-        j.value("offset_behind_eyes", rig->mono.offset_behind_eyes);
-        j.value("viewport_width", rig->mono.viewport_width);
-        j.value("viewport_height", rig->mono.viewport_height);
-        j.end_object();
-    }
-    j.value("device", ctx.device_info().name);
-    j.value("triangles", static_cast<std::uint64_t>(scene.triangle_count()));
-    j.value("chunks", static_cast<std::uint64_t>(scene.chunks.size()));
-    j.value("frames", s.frames).value("warmup_frames", o.warmup);
-    j.value("frame_ms_median", s.frame_ms_median).value("frame_ms_p90", s.frame_ms_p90);
-    j.value("cpu_ms_median", s.cpu_ms_median);
-    j.begin_object("passes");
-    for (const auto& [name, ms] : s.pass_ms_median) j.value(name, ms);
+}
+
+void write_rig(JsonWriter& j, const rig::Rig& rig) {
+    j.value("mono_plane", rig.inputs.mono_plane).value("mono_skipped", rig.mono_skipped);
+    j.value("overlap", rig.overlap).value("max_error_px", rig.max_error_px);
+    j.value("max_error_px_2d", rig.max_error_px_2d);
+    j.begin_object("mono_camera");
+    j.value("offset_behind_eyes", rig.mono.offset_behind_eyes);
+    j.value("viewport_width", rig.mono.viewport_width);
+    j.value("viewport_height", rig.mono.viewport_height);
     j.end_object();
+}
+
+// Each view's pipeline statistics, then the totals of scene primitives and of fragments.
+void write_view_statistics(JsonWriter& j, const std::vector<profile::ViewStatistics>& views) {
     std::uint64_t primitives = 0;
     std::uint64_t fragments = 0;
     j.begin_object("views");
-    for (const profile::ViewStatistics& v : s.views) {
+    for (const profile::ViewStatistics& v : views) {
         j.begin_object(v.view);
         j.value("input_primitives", v.input_primitives);
         j.value("clipping_invocations", v.clipping_invocations);
@@ -137,43 +142,73 @@ std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& 
     }
     j.end_object();
     j.value("primitives", primitives).value("fragments", fragments);
-    if (comparison) {
-        j.value("ssim_vs_stereo", comparison->ssim_mean());
-        j.value("max_channel_difference_vs_stereo", comparison->max_channel_difference());
-        j.begin_object("ssim");
-        for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
-            const EyeComparison& c = comparison->eyes[static_cast<int>(eye)];
-            j.begin_object(modes::eye_name(eye));
-            j.value("gaussian", c.ssim).value("local_w4", c.ssim_local_w4);
-            j.value("beyond_plane", c.ssim_beyond_plane);
-            j.value("pixels_beyond_plane", static_cast<std::uint64_t>(c.pixels_beyond_plane));
-            j.end_object();
-        }
+}
+
+void write_comparison(JsonWriter& j, const StereoComparison& comparison) {
+    j.value("ssim_vs_stereo", comparison.ssim_mean());
+    j.value("max_channel_difference_vs_stereo", comparison.max_channel_difference());
+    j.begin_object("ssim");
+    for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
+        const EyeComparison& c = comparison.eyes[static_cast<int>(eye)];
+        j.begin_object(modes::eye_name(eye));
+        j.value("gaussian", c.ssim).value("local_w4", c.ssim_local_w4);
+        j.value("beyond_plane", c.ssim_beyond_plane);
+        j.value("pixels_beyond_plane", static_cast<std::uint64_t>(c.pixels_beyond_plane));
         j.end_object();
     }
-    if (ao) {
-        // papers/002 Sect. 4.1 over the left eye's pixels.
-        j.begin_object("ao_inconsistency");
-        j.value("mean", ao->mean).value("max", ao->max);
-        j.value("compared_pixels", static_cast<std::uint64_t>(ao->compared));
-        j.value("one_eye_only_pixels", static_cast<std::uint64_t>(ao->one_eye_only));
-        j.value("normal_rejected_pixels", static_cast<std::uint64_t>(ao->normal_rejected));
-        j.value("sky_pixels", static_cast<std::uint64_t>(ao->sky));
-        j.end_object();
-    }
-    j.value("depth_prepass", o.depth_prepass);
-    if (depth_profile) depth_profile(j);
-    auto_mono_plane(j);
-    modes::write_plan_json(j, plan);  // the last frame's
+    j.end_object();
+}
+
+// papers/002 Sect. 4.1 over the left eye's pixels.
+void write_ao_inconsistency(JsonWriter& j, const quality::InconsistencyMap& ao) {
+    j.begin_object("ao_inconsistency");
+    j.value("mean", ao.mean).value("max", ao.max);
+    j.value("compared_pixels", static_cast<std::uint64_t>(ao.compared));
+    j.value("one_eye_only_pixels", static_cast<std::uint64_t>(ao.one_eye_only));
+    j.value("normal_rejected_pixels", static_cast<std::uint64_t>(ao.normal_rejected));
+    j.value("sky_pixels", static_cast<std::uint64_t>(ao.sky));
+    j.end_object();
+}
+
+void write_files(JsonWriter& j, const RenderResults& r) {
+    const std::filesystem::path& out = r.out;
     j.begin_object("files");
     j.value("left", (out / "left.png").string()).value("right", (out / "right.png").string());
-    if (mono) j.value("mono", (out / "mono.png").string());
-    if (ao) {
+    if (r.mono) j.value("mono", (out / "mono.png").string());
+    if (r.ao) {
         j.value("ao_left", (out / "ao_left.png").string());
         j.value("ao_right", (out / "ao_right.png").string());
         j.value("ao_inconsistency", (out / "ao_inconsistency.png").string());
     }
     j.end_object();
+}
+
+std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& choice,
+                         const RenderResults& r,
+                         const std::function<void(JsonWriter&)>& depth_profile,
+                         const std::function<void(JsonWriter&)>& auto_mono_plane) {
+    const FrameSummary& s = r.summary;
+    JsonWriter j;
+    j.begin_object();
+    write_configuration(j, o, choice, r);
+    if (r.renderer.last_rig()) write_rig(j, *r.renderer.last_rig());
+    j.value("device", r.ctx.device_info().name);
+    j.value("triangles", static_cast<std::uint64_t>(r.scene.triangle_count()));
+    j.value("chunks", static_cast<std::uint64_t>(r.scene.chunks.size()));
+    j.value("frames", s.frames).value("warmup_frames", o.warmup);
+    j.value("frame_ms_median", s.frame_ms_median).value("frame_ms_p90", s.frame_ms_p90);
+    j.value("cpu_ms_median", s.cpu_ms_median);
+    j.begin_object("passes");
+    for (const auto& [name, ms] : s.pass_ms_median) j.value(name, ms);
+    j.end_object();
+    write_view_statistics(j, s.views);
+    if (r.comparison) write_comparison(j, *r.comparison);
+    if (r.ao) write_ao_inconsistency(j, *r.ao);
+    j.value("depth_prepass", o.depth_prepass);
+    if (depth_profile) depth_profile(j);
+    auto_mono_plane(j);
+    modes::write_plan_json(j, r.renderer.last_plan());  // the last frame's
+    write_files(j, r);
     j.end_object();
     return j.str();
 }
@@ -194,7 +229,22 @@ void warn_if_beyond_far_plane(const scenes::Scene& scene, const scenes::Viewpoin
                  "scale it, or try --view bench-overview\n";
 }
 
-void run_render(const RenderOptions& o, const GlobalOptions& global) {
+// The options checked and parsed; nothing loaded yet.
+struct RenderSetup {
+    modes::RenderModeChoice choice;
+    std::optional<double> fixed_plane;  // --mono-plane in metres
+    bool auto_plane = false;            // --mono-plane auto
+    modes::MonoCulling mono_culling = modes::MonoCulling::kOcclusionCull;
+    modes::DebugView debug_view = modes::DebugView::kNone;
+    SceneSource scene_source;
+    scenes::Detail detail{};
+    rig::PosePath pose_path;
+    modes::RendererOptions renderer_options;  // completed once the scene is loaded
+    bool ssao = false;
+};
+
+// --mode with --stereo-pass, which may name the single-pass stereo a mode already implies.
+modes::RenderModeChoice parse_mode_flags(const RenderOptions& o) {
     auto choice = modes::parse_render_mode(o.mode);
     if (!choice) {
         throw UserError("--mode " + o.mode +
@@ -208,15 +258,20 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         }
         choice->stereo_pass = pass;
     }
-    const modes::Mode mode = choice->mode;
+    return *choice;
+}
+
+// --mono-plane (which the hybrid modes need and stereo cannot use as auto), --variant and
+// --debug-view.
+void parse_hybrid_flags(const RenderOptions& o, RenderSetup& setup) {
+    const modes::Mode mode = setup.choice.mode;
     if (mode != modes::Mode::kStereo && o.mono_plane.empty()) {
         throw UserError("--mode " + o.mode + " needs --mono-plane M (metres) or auto");
     }
-    const std::optional<double> fixed_plane =
-        o.mono_plane.empty() ? std::optional<double>()
-                             : parse_mono_plane_value("--mono-plane", o.mono_plane);
-    const bool auto_plane = !o.mono_plane.empty() && !fixed_plane;
-    if (auto_plane && mode == modes::Mode::kStereo) {
+    setup.fixed_plane = o.mono_plane.empty() ? std::optional<double>()
+                                             : parse_mono_plane_value("--mono-plane", o.mono_plane);
+    setup.auto_plane = !o.mono_plane.empty() && !setup.fixed_plane;
+    if (setup.auto_plane && mode == modes::Mode::kStereo) {
         throw UserError("--mono-plane auto needs a hybrid mode: stereo has no mono plane");
     }
     const auto mono_culling = modes::parse_mono_culling(o.mono_culling);
@@ -224,18 +279,26 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         throw UserError("--variant " + o.mono_culling +
                         " is not one of no-opt, discard, occlusion-cull, auto");
     }
+    setup.mono_culling = *mono_culling;
     const auto debug_view = modes::parse_debug_view(o.debug_view);
     if (!debug_view) {
         throw UserError("--debug-view " + o.debug_view +
                         ": use none, tint-mono, stereo-only, mono-only or routing");
     }
+    setup.debug_view = *debug_view;
+}
+
+// --scene, --detail, the image size, --ipd and the head motion.
+void parse_scene_and_viewer_flags(const RenderOptions& o, RenderSetup& setup) {
     Result<SceneSource> scene_source = parse_scene_source(o.scene);
     if (!scene_source) {
         throw UserError("--scene " + o.scene + ": " + scene_source.error().message);
     }
+    setup.scene_source = std::move(scene_source).value();
     const auto detail = scenes::parse_detail(o.detail);
     if (!detail)
         throw UserError("--detail " + o.detail + ": unknown; use test, low, medium, high or ultra");
+    setup.detail = *detail;
     if ((o.width > 0) != (o.height > 0)) throw UserError("--width and --height go together");
     if (o.ipd && !(*o.ipd >= 0.0 && *o.ipd <= 0.1))
         throw UserError("--ipd must be within [0, 0.1] m");
@@ -244,72 +307,89 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         throw UserError("--pose-path " + o.pose_path + ": use " +
                         joined(rig::builtin_pose_path_names()));
     }
+    setup.pose_path = *pose_path;
     if (!(o.fps > 0.0 && std::isfinite(o.fps))) throw UserError("--fps must be positive");
-    modes::RendererOptions renderer_options;
-    renderer_options.stereo_pass = choice->stereo_pass;
+}
+
+RenderSetup parse_render_flags(const RenderOptions& o) {
+    RenderSetup setup;
+    setup.choice = parse_mode_flags(o);
+    parse_hybrid_flags(o, setup);
+    parse_scene_and_viewer_flags(o, setup);
+    modes::RendererOptions& renderer_options = setup.renderer_options;
+    renderer_options.stereo_pass = setup.choice.stereo_pass;
     apply_image_quality_flags(o.anti_aliasing, o.ssao, renderer_options);
     // E(p) reprojects the eyes' AO through their depth.
-    const bool ssao = renderer_options.ssao.has_value();
-    renderer_options.read_back_ao = ssao;
-    renderer_options.read_back_depth = ssao || o.depth_profile;
+    setup.ssao = renderer_options.ssao.has_value();
+    renderer_options.read_back_ao = setup.ssao;
+    renderer_options.read_back_depth = setup.ssao || o.depth_profile;
     if (o.depth_profile && !o.json) throw UserError("--depth-profile needs --json");
+    return setup;
+}
 
-    const std::filesystem::path out = prepare_output_directory("--out", o.out);
-
-    const hmd::HmdProfile profile = hmd::load_hmd_profile(o.hmd).value_or_throw();
+hmd::HmdProfile load_profile(const RenderOptions& o) {
+    hmd::HmdProfile profile = hmd::load_hmd_profile(o.hmd).value_or_throw();
     if (o.depth_profile && (profile.cant_deg[0] != 0.0 || profile.cant_deg[1] != 0.0)) {
         // scenes/depth_profile.cpp measures a parallel eye's own depth, which for a canted eye
         // is not the distance in front of the eyes' plane that m is measured by.
         throw UserError("--depth-profile is not available for canted profiles (" + profile.name +
                         "): it measures depth along a parallel eye's axis");
     }
-    const int width = o.width > 0 ? o.width : profile.width;
-    const int height = o.height > 0 ? o.height : profile.height;
+    return profile;
+}
 
-    auto ctx = vk_core::Context::create(global.context_options()).value_or_throw();
-    std::cerr << "device: " << ctx->device_info().name << "\n";
-    if (scene_source->builtin) {
+scenes::Scene load_render_scene(const RenderOptions& o, const RenderSetup& setup) {
+    if (setup.scene_source.builtin) {
         std::cerr << "generating " << o.scene << " (detail " << o.detail << ", seed " << o.seed
                   << ")\n";
     } else {
         std::cerr << "loading " << o.scene << "\n";
     }
-    const scenes::Scene scene = load_scene(*scene_source, *detail, o.seed).value_or_throw();
+    return load_scene(setup.scene_source, setup.detail, o.seed).value_or_throw();
+}
+
+// --view among the scene's viewpoints; the error lists them.
+const scenes::Viewpoint& find_view(const RenderOptions& o, const scenes::Scene& scene) {
     const scenes::Viewpoint* viewpoint = scene.find_viewpoint(o.view);
     if (!viewpoint) {
         std::vector<std::string> names;
         for (const auto& v : scene.viewpoints) names.push_back(v.name);
         throw UserError("--view " + o.view + ": " + o.scene + " has the views " + joined(names));
     }
-    warn_if_beyond_far_plane(scene, *viewpoint, modes::StereoViewInputs{}.far);
+    return *viewpoint;
+}
 
-    renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
-    renderer_options.depth_prepass = o.depth_prepass;
-    if (auto_plane) renderer_options.auto_mono_plane = auto_mono_plane_params(o.auto_flags);
-    modes::ModeRenderer renderer(
-        *ctx, scene, mode,
-        vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
-        renderer_options);
+// The first frame's inputs; the frames move the head along the pose path from there.
+modes::FrameInputs first_frame_inputs(const RenderOptions& o, const RenderSetup& setup,
+                                      const hmd::HmdProfile& profile,
+                                      const scenes::Viewpoint& viewpoint) {
     modes::FrameInputs inputs;
-    inputs.views.head = viewpoint->head;
+    inputs.views.head = viewpoint.head;
     inputs.views.ipd = o.ipd.value_or(profile.ipd);
     inputs.views.left = profile.left;
     inputs.views.right = profile.right;
     inputs.views.cant = hmd::cant_radians(profile);
-    inputs.mono_plane = fixed_plane.value_or(inputs.views.far);  // auto: the renderer's
+    inputs.mono_plane = setup.fixed_plane.value_or(inputs.views.far);  // auto: the renderer's
     inputs.overlap_k = o.overlap_k;
     inputs.grazing_angle = o.grazing_deg * std::numbers::pi / 180.0;
     inputs.view_blend_band = o.blend_band;
-    inputs.debug = *debug_view;
-    inputs.mono_culling = *mono_culling;
+    inputs.debug = setup.debug_view;
+    inputs.mono_culling = setup.mono_culling;
+    return inputs;
+}
 
-    // Frames in flight: each frame is submitted without waiting for the last; only the last is
-    // read back (the PNGs), and the statistics arrive as the frames complete, in order.
+// Frames in flight: each frame is submitted without waiting for the last; only the last is read
+// back (the PNGs), and the statistics arrive as the frames complete, in order. Returns the
+// statistics of the frames after the warm-up.
+std::vector<profile::FrameStats> render_frames(const RenderOptions& o, const rig::PosePath& path,
+                                               const scenes::Viewpoint& viewpoint,
+                                               modes::ModeRenderer& renderer,
+                                               modes::FrameInputs& inputs) {
     std::vector<profile::FrameStats> completed;
     const int total = o.warmup + o.frames;
     for (int frame = 0; frame < total; ++frame) {
         // Frame n at n / fps along the path: TAA's jitter and history follow the frame index.
-        inputs.views.head = rig::pose_along(*pose_path, viewpoint->head, frame / o.fps);
+        inputs.views.head = rig::pose_along(path, viewpoint.head, frame / o.fps);
         inputs.frame_index = static_cast<std::uint64_t>(frame);
         renderer.set_read_back(frame == total - 1);
         renderer.submit_frame(inputs);
@@ -320,36 +400,28 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     }
     for (profile::FrameStats& stats : renderer.finish_frames())
         completed.push_back(std::move(stats));
-    const std::vector<profile::FrameStats> measured(
-        std::make_move_iterator(completed.begin() + o.warmup),
-        std::make_move_iterator(completed.end()));
+    std::vector<profile::FrameStats> measured(std::make_move_iterator(completed.begin() + o.warmup),
+                                              std::make_move_iterator(completed.end()));
     if (total > 1) std::cerr << "\n";
+    return measured;
+}
 
-    // Auto: the comparisons below look at the last frame, rendered with the chooser's m.
-    if (auto_plane && renderer.last_rig())
-        inputs.mono_plane = renderer.last_rig()->inputs.mono_plane;
+// left.png, right.png and, where the mode has one, mono.png; returns the mono image or nullptr.
+const modes::RgbaImage* write_images(const modes::ModeRenderer& renderer,
+                                     const std::filesystem::path& out) {
     write_png(out / "left.png", renderer.eye_image(modes::Eye::kLeft)).value_or_throw();
     write_png(out / "right.png", renderer.eye_image(modes::Eye::kRight)).value_or_throw();
     const modes::RgbaImage* mono = renderer.mono_image();
     if (mono) write_png(out / "mono.png", *mono).value_or_throw();
-    std::optional<quality::InconsistencyMap> ao;
-    if (ssao) {
-        ao = ao_inconsistency(renderer, inputs);
-        write_ao_pictures(renderer, *ao, out);
-        std::cerr << "AO inconsistency E (papers/002 Sect. 4.1): mean " << ao->mean << " over "
-                  << ao->compared << " pixels\n";
-    }
-    std::optional<StereoComparison> comparison;
-    if (o.compare_stereo &&
-        (mode != modes::Mode::kStereo || choice->stereo_pass != modes::StereoPass::kTwoPasses)) {
-        std::cerr << "rendering the stereo reference for SSIM\n";
-        comparison = compare_with_stereo(
-            *ctx, scene,
-            vk::Extent2D(static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)),
-            renderer_options, inputs, renderer, out);
-    }
-    // --depth-profile: the last frame's left eye against its own depth read-back (docs/scenes.md).
-    const auto depth_profile = [&](JsonWriter& j) {
+    return mono;
+}
+
+// --depth-profile: the last frame's left eye against its own depth read-back (docs/scenes.md).
+std::function<void(JsonWriter&)> depth_profile_section(const RenderOptions& o,
+                                                       const scenes::Scene& scene,
+                                                       const modes::FrameInputs& inputs,
+                                                       const modes::ModeRenderer& renderer) {
+    return [&o, &scene, &inputs, &renderer](JsonWriter& j) {
         if (!o.depth_profile) return;
         DepthProfileInputs in;
         in.scene = &scene;
@@ -361,13 +433,59 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         write_depth_profile_json(j, "depth_profile", in,
                                  renderer.eye_linear_depth(modes::Eye::kLeft));
     };
+}
+
+void run_render(const RenderOptions& o, const GlobalOptions& global) {
+    RenderSetup setup = parse_render_flags(o);
+    const std::filesystem::path out = prepare_output_directory("--out", o.out);
+    const hmd::HmdProfile profile = load_profile(o);
+    const int width = o.width > 0 ? o.width : profile.width;
+    const int height = o.height > 0 ? o.height : profile.height;
+    const vk::Extent2D extent(static_cast<std::uint32_t>(width),
+                              static_cast<std::uint32_t>(height));
+
+    auto ctx = vk_core::Context::create(global.context_options()).value_or_throw();
+    std::cerr << "device: " << ctx->device_info().name << "\n";
+    const scenes::Scene scene = load_render_scene(o, setup);
+    const scenes::Viewpoint& viewpoint = find_view(o, scene);
+    warn_if_beyond_far_plane(scene, viewpoint, modes::StereoViewInputs{}.far);
+
+    modes::RendererOptions& renderer_options = setup.renderer_options;
+    renderer_options.shadow.resolution = static_cast<std::uint32_t>(o.shadow_resolution);
+    renderer_options.depth_prepass = o.depth_prepass;
+    if (setup.auto_plane) renderer_options.auto_mono_plane = auto_mono_plane_params(o.auto_flags);
+    modes::ModeRenderer renderer(*ctx, scene, setup.choice.mode, extent, renderer_options);
+    modes::FrameInputs inputs = first_frame_inputs(o, setup, profile, viewpoint);
+    const std::vector<profile::FrameStats> measured =
+        render_frames(o, setup.pose_path, viewpoint, renderer, inputs);
+
+    // Auto: the comparisons below look at the last frame, rendered with the chooser's m.
+    if (setup.auto_plane && renderer.last_rig())
+        inputs.mono_plane = renderer.last_rig()->inputs.mono_plane;
+    const modes::RgbaImage* mono = write_images(renderer, out);
+    std::optional<quality::InconsistencyMap> ao;
+    if (setup.ssao) {
+        ao = ao_inconsistency(renderer, inputs);
+        write_ao_pictures(renderer, *ao, out);
+        std::cerr << "AO inconsistency E (papers/002 Sect. 4.1): mean " << ao->mean << " over "
+                  << ao->compared << " pixels\n";
+    }
+    std::optional<StereoComparison> comparison;
+    if (o.compare_stereo && (setup.choice.mode != modes::Mode::kStereo ||
+                             setup.choice.stereo_pass != modes::StereoPass::kTwoPasses)) {
+        std::cerr << "rendering the stereo reference for SSIM\n";
+        comparison =
+            compare_with_stereo(*ctx, scene, extent, renderer_options, inputs, renderer, out);
+    }
     const auto auto_json = [&](JsonWriter& j) {
-        if (auto_plane) write_auto_mono_plane_json(j, *renderer_options.auto_mono_plane, measured);
+        if (setup.auto_plane) {
+            write_auto_mono_plane_json(j, *renderer_options.auto_mono_plane, measured);
+        }
     };
-    const std::string json =
-        summary_json(o, *choice, profile, scene, *ctx, width, height, summarize(measured),
-                     renderer.last_rig(), mono, comparison, ao, renderer.last_plan(),
-                     renderer.last_variant(), out, depth_profile, auto_json);
+    const RenderResults results{profile,  scene, *ctx,       width, height, summarize(measured),
+                                renderer, mono,  comparison, ao,    out};
+    const std::string json = summary_json(
+        o, setup.choice, results, depth_profile_section(o, scene, inputs, renderer), auto_json);
     std::ofstream(out / "stats.json") << json << "\n";
     if (o.json) std::cout << json << "\n";
     std::cerr << "wrote " << (out / "left.png").string() << ", " << (out / "right.png").string()
@@ -378,87 +496,114 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
 
 }  // namespace
 
+namespace {
+
+// --mode and what the hybrid modes take: the mono plane, the overlap, the blend, the debug
+// views and the variant.
+void add_mode_flags(CLI::App& cmd, RenderOptions& options) {
+    cmd.add_option("--mode", options.mode,
+                   "stereo, stereo-multiview, stereo-gs, hybrid or hybrid-farfield")
+        ->capture_default_str();
+    cmd.add_option("--stereo-pass", options.stereo_pass,
+                   "How the eyes' forward passes are drawn (stereo, and hybrid's near region): "
+                   "two (one pass per eye), multiview (VK_KHR_multiview) or gs (geometry-shader "
+                   "duplication, papers/001); default two, or the mode's");
+    cmd.add_option("--mono-plane", options.mono_plane,
+                   "Mono-plane distance m in metres (hybrid modes), or auto: chosen every frame "
+                   "within --error-budget-arcmin (docs/hybrid.md, \"Choosing m\")");
+    add_auto_mono_plane_flags(cmd, options.auto_flags);
+    cmd.add_option("--k", options.overlap_k, "Overlap constant k of eq. 3: eps = k s m")
+        ->capture_default_str();
+    cmd.add_option("--grazing-deg", options.grazing_deg,
+                   "Overlap for surfaces down to this angle to the view rays (0: eps = k s m)")
+        ->capture_default_str();
+    cmd.add_option("--blend-band", options.blend_band,
+                   "Metres below m over which the eyes' view vectors blend into C's (0: off)")
+        ->capture_default_str();
+    cmd.add_option(
+           "--debug-view", options.debug_view,
+           "Debug view: none, tint-mono, stereo-only, mono-only (hybrid modes) or routing (chunks "
+           "coloured by the lists the GPU culling put them in: green eyes, blue C, "
+           "magenta both)")
+        ->capture_default_str();
+    cmd.add_option("--variant", options.mono_culling,
+                   "hybrid: how the merged depth pyramid of both eyes saves C's work (papers/000 "
+                   "Sect. 5.1): no-opt, discard (C's hidden fragments), occlusion-cull (also "
+                   "C's hidden chunks) or auto (measures the three on the frames rendered and "
+                   "uses the fastest; same image)")
+        ->capture_default_str();
+}
+
+// The headset, the image size and where in which scene it stands.
+void add_viewer_flags(CLI::App& cmd, RenderOptions& options) {
+    cmd.add_option("--hmd", options.hmd,
+                   "HMD profile: vive, vive-pro, symmetric-90, "
+                   "symmetric-110 or a TOML file")
+        ->capture_default_str();
+    cmd.add_option("--ipd", options.ipd,
+                   "Interpupillary distance in metres (default: the profile's)");
+    cmd.add_option("--width", options.width, "Per-eye width in pixels (default: the profile's)")
+        ->check(CLI::Range(16, 16384));
+    cmd.add_option("--height", options.height, "Per-eye height in pixels (default: the profile's)")
+        ->check(CLI::Range(16, 16384));
+    cmd.add_option("--view", options.view, "Viewpoint name of the scene")->capture_default_str();
+    cmd.add_option("--seed", options.seed, "Scene seed")->capture_default_str();
+    cmd.add_option("--detail", options.detail, "test, low, medium, high or ultra")
+        ->capture_default_str();
+}
+
+void add_frame_flags(CLI::App& cmd, RenderOptions& options) {
+    cmd.add_option("--frames", options.frames, "Frames to measure")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    cmd.add_option("--warmup", options.warmup, "Frames rendered before measuring")
+        ->check(CLI::Range(0, 100000))
+        ->capture_default_str();
+    cmd.add_option("--shadow-resolution", options.shadow_resolution, "Shadow map size in texels")
+        ->check(CLI::Range(256, 16384))
+        ->capture_default_str();
+}
+
+void add_output_flags(CLI::App& cmd, RenderOptions& options) {
+    cmd.add_option("--out", options.out, "Output directory")->required();
+    cmd.add_flag("--json", options.json, "Print the statistics as JSON on stdout");
+    cmd.add_flag("--depth-profile", options.depth_profile,
+                 "With --json: add \"depth_profile\", the fractions of the left eye's triangles "
+                 "and pixels nearer than each fink2019 mono plane (docs/scenes.md)");
+}
+
+// The passes every mode may add, and the head's motion over the frames.
+void add_rendering_flags(CLI::App& cmd, RenderOptions& options) {
+    cmd.add_flag("--depth-prepass", options.depth_prepass,
+                 "A depth-only pass before every forward pass (each visible pixel shaded once; "
+                 "off by default: on llvmpipe it costs more than it saves, docs/benchmarks.md)");
+    cmd.add_option("--anti-aliasing", options.anti_aliasing,
+                   "none, taa (every mode; give it frames to converge, e.g. --warmup 16) or "
+                   "msaa2|msaa4|msaa8 (stereo only)")
+        ->capture_default_str();
+    cmd.add_option("--ssao", options.ssao,
+                   "Ambient occlusion: off, per-eye (HBAO+ in each eye) or stereo (papers/002); "
+                   "writes ao_left.png, ao_right.png, ao_inconsistency.png and E's mean")
+        ->capture_default_str();
+    cmd.add_option("--pose-path", options.pose_path,
+                   "Head motion over the frames: static, sway, turn or walk")
+        ->capture_default_str();
+    cmd.add_option("--fps", options.fps, "Frame rate of the pose path (frame n at n / fps s)")
+        ->capture_default_str();
+}
+
+}  // namespace
+
 void add_render_command(CLI::App& root, const GlobalOptions& global) {
     auto options = std::make_shared<RenderOptions>();
     CLI::App* cmd = root.add_subcommand("render", "Render one scene in one mode to PNG files");
     cmd->add_option("--scene", options->scene, "beams, landscape or spheres")
         ->capture_default_str();
-    cmd->add_option("--mode", options->mode,
-                    "stereo, stereo-multiview, stereo-gs, hybrid or hybrid-farfield")
-        ->capture_default_str();
-    cmd->add_option("--stereo-pass", options->stereo_pass,
-                    "How the eyes' forward passes are drawn (stereo, and hybrid's near region): "
-                    "two (one pass per eye), multiview (VK_KHR_multiview) or gs (geometry-shader "
-                    "duplication, papers/001); default two, or the mode's");
-    cmd->add_option("--mono-plane", options->mono_plane,
-                    "Mono-plane distance m in metres (hybrid modes), or auto: chosen every frame "
-                    "within --error-budget-arcmin (docs/hybrid.md, \"Choosing m\")");
-    add_auto_mono_plane_flags(*cmd, options->auto_flags);
-    cmd->add_option("--k", options->overlap_k, "Overlap constant k of eq. 3: eps = k s m")
-        ->capture_default_str();
-    cmd->add_option("--grazing-deg", options->grazing_deg,
-                    "Overlap for surfaces down to this angle to the view rays (0: eps = k s m)")
-        ->capture_default_str();
-    cmd->add_option("--blend-band", options->blend_band,
-                    "Metres below m over which the eyes' view vectors blend into C's (0: off)")
-        ->capture_default_str();
-    cmd->add_option(
-           "--debug-view", options->debug_view,
-           "Debug view: none, tint-mono, stereo-only, mono-only (hybrid modes) or routing (chunks "
-           "coloured by the lists the GPU culling put them in: green eyes, blue C, "
-           "magenta both)")
-        ->capture_default_str();
-    cmd->add_option("--variant", options->mono_culling,
-                    "hybrid: how the merged depth pyramid of both eyes saves C's work (papers/000 "
-                    "Sect. 5.1): no-opt, discard (C's hidden fragments), occlusion-cull (also "
-                    "C's hidden chunks) or auto (measures the three on the frames rendered and "
-                    "uses the fastest; same image)")
-        ->capture_default_str();
-    cmd->add_option("--hmd", options->hmd,
-                    "HMD profile: vive, vive-pro, symmetric-90, "
-                    "symmetric-110 or a TOML file")
-        ->capture_default_str();
-    cmd->add_option("--ipd", options->ipd,
-                    "Interpupillary distance in metres (default: the profile's)");
-    cmd->add_option("--width", options->width, "Per-eye width in pixels (default: the profile's)")
-        ->check(CLI::Range(16, 16384));
-    cmd->add_option("--height", options->height,
-                    "Per-eye height in pixels (default: the profile's)")
-        ->check(CLI::Range(16, 16384));
-    cmd->add_option("--view", options->view, "Viewpoint name of the scene")->capture_default_str();
-    cmd->add_option("--seed", options->seed, "Scene seed")->capture_default_str();
-    cmd->add_option("--detail", options->detail, "test, low, medium, high or ultra")
-        ->capture_default_str();
-    cmd->add_option("--frames", options->frames, "Frames to measure")
-        ->check(CLI::Range(1, 100000))
-        ->capture_default_str();
-    cmd->add_option("--warmup", options->warmup, "Frames rendered before measuring")
-        ->check(CLI::Range(0, 100000))
-        ->capture_default_str();
-    cmd->add_option("--shadow-resolution", options->shadow_resolution, "Shadow map size in texels")
-        ->check(CLI::Range(256, 16384))
-        ->capture_default_str();
-    cmd->add_option("--out", options->out, "Output directory")->required();
-    cmd->add_flag("--json", options->json, "Print the statistics as JSON on stdout");
-    cmd->add_flag("--depth-profile", options->depth_profile,
-                  "With --json: add \"depth_profile\", the fractions of the left eye's triangles "
-                  "and pixels nearer than each fink2019 mono plane (docs/scenes.md)");
-    cmd->add_flag("--depth-prepass", options->depth_prepass,
-                  "A depth-only pass before every forward pass (each visible pixel shaded once; "
-                  "off by default: on llvmpipe it costs more than it saves, docs/benchmarks.md)");
-    cmd->add_option("--anti-aliasing", options->anti_aliasing,
-                    "none, taa (every mode; give it frames to converge, e.g. --warmup 16) or "
-                    "msaa2|msaa4|msaa8 (stereo only)")
-        ->capture_default_str();
-    cmd->add_option("--ssao", options->ssao,
-                    "Ambient occlusion: off, per-eye (HBAO+ in each eye) or stereo (papers/002); "
-                    "writes ao_left.png, ao_right.png, ao_inconsistency.png and E's mean")
-        ->capture_default_str();
-    cmd->add_option("--pose-path", options->pose_path,
-                    "Head motion over the frames: static, sway, turn or walk")
-        ->capture_default_str();
-    cmd->add_option("--fps", options->fps, "Frame rate of the pose path (frame n at n / fps s)")
-        ->capture_default_str();
+    add_mode_flags(*cmd, *options);
+    add_viewer_flags(*cmd, *options);
+    add_frame_flags(*cmd, *options);
+    add_output_flags(*cmd, *options);
+    add_rendering_flags(*cmd, *options);
     cmd->add_flag("--compare-stereo", options->compare_stereo,
                   "Hybrid and single-pass modes: also render two-pass stereo and write SSIM, the "
                   "largest channel difference and local-SSIM heat maps");

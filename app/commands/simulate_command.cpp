@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
 
@@ -85,11 +86,22 @@ std::vector<analysis::TrialRow> simulate_session(
     return rows;
 }
 
-void run_simulate(const SimulateOptions& o) {
+// What every simulated study shares, loaded and checked before the first one.
+struct Simulation {
+    study::Protocol protocol;
+    hmd::HmdProfile hmd;
+    std::filesystem::path out;
+    std::function<double(const study::ScheduledTrial&)> error_px;
+    std::vector<int> grid;  // the numbers of participants
+};
+
+Simulation prepare_simulation(const SimulateOptions& o) {
     if (o.participants < 1) throw UserError("--participants must be at least 1");
     if (o.runs < 1) throw UserError("--runs must be at least 1");
     if (!(o.alpha > 0.0 && o.alpha < 1.0)) throw UserError("--alpha must lie in (0, 1)");
-    const study::Protocol protocol = study::load_protocol(o.protocol).value_or_throw();
+    Simulation simulation;
+    simulation.protocol = study::load_protocol(o.protocol).value_or_throw();
+    const study::Protocol& protocol = simulation.protocol;
     if (protocol.alternatives[0] == protocol.alternatives[1]) {
         throw UserError(o.protocol + ": both alternatives are " + name(protocol.alternatives[0]) +
                         "; nothing to detect");
@@ -97,75 +109,116 @@ void run_simulate(const SimulateOptions& o) {
     // Fails early, with the list of observers, on an unknown name.
     if (o.observer == "none") throw UserError("--observer none: a simulation needs an observer");
     (void)study::make_observer(o.observer, o.seed).value_or_throw();
-    const hmd::HmdProfile hmd = hmd::load_hmd_profile(o.hmd).value_or_throw();
-    const std::filesystem::path out = prepare_output_directory("--out", o.out);
-    const auto error_px = trial_error_model(hmd, protocol);
+    simulation.hmd = hmd::load_hmd_profile(o.hmd).value_or_throw();
+    simulation.out = prepare_output_directory("--out", o.out);
+    simulation.error_px = trial_error_model(simulation.hmd, protocol);
+    simulation.grid = analysis::report::participant_grid(o.participants);
+    return simulation;
+}
 
-    const std::vector<int> grid = analysis::report::participant_grid(o.participants);
+// Per number of participants of the grid, how many studies detected the distance effect.
+struct Detections {
+    explicit Detections(std::size_t grid_size, bool log2_distance)
+        : detected(grid_size, 0),
+          detected_cr2(grid_size, 0),
+          not_estimable(grid_size, 0),
+          distance_term(log2_distance ? "log2_mono_plane_m" : "mono_plane_m") {}
+
+    std::vector<int> detected;      // CR1 z test
+    std::vector<int> detected_cr2;  // small-sample CR2 t test
+    std::vector<int> not_estimable;
+    std::string distance_term;  // as the fits name it
+    std::string last_error;     // the reason the last failed fit gave
+};
+
+// Run `run`'s participants in order, so that the first n of them are the study of n: their rows,
+// and where each participant's rows end.
+struct SimulatedParticipants {
+    std::vector<analysis::TrialRow> rows;
+    std::vector<std::size_t> end_of_participant;
+};
+
+SimulatedParticipants simulate_participants(const SimulateOptions& o, const Simulation& simulation,
+                                            int run) {
+    SimulatedParticipants result;
+    for (int p = 0; p < o.participants; ++p) {
+        std::vector<analysis::TrialRow> session = simulate_session(
+            simulation.protocol, o.observer, session_seed(o.seed, run, p), p, simulation.error_px);
+        result.rows.insert(result.rows.end(), std::make_move_iterator(session.begin()),
+                           std::make_move_iterator(session.end()));
+        result.end_of_participant.push_back(result.rows.size());
+    }
+    return result;
+}
+
+// Fits the regression to the study of each n of the grid (the first n participants) and counts
+// whether its distance term is significant.
+void count_detections(const SimulatedParticipants& participants, const std::vector<int>& grid,
+                      const analysis::LogisticOptions& options, double alpha,
+                      Detections& detections) {
+    for (std::size_t g = 0; g < grid.size(); ++g) {
+        const std::vector<analysis::TrialRow> study(
+            participants.rows.begin(),
+            participants.rows.begin() +
+                static_cast<std::ptrdiff_t>(participants.end_of_participant[grid[g] - 1]));
+        analysis::Exclusions excluded;
+        const std::vector<analysis::TrialRow> kept = analysis::analysable_trials(study, excluded);
+        const Result<analysis::LogisticFit> fit = analysis::fit_choice_model(kept, options);
+        if (!fit) {
+            ++detections.not_estimable[g];
+            detections.last_error = fit.error().message;
+            continue;
+        }
+        detections.distance_term = fit->distance_term;
+        for (const analysis::Coefficient& c : fit->coefficients) {
+            if (c.name != fit->distance_term) continue;
+            if (c.p < alpha) ++detections.detected[g];
+            if (c.p_cr2 < alpha) ++detections.detected_cr2[g];
+        }
+    }
+}
+
+Detections simulate_studies(const SimulateOptions& o, const Simulation& simulation) {
+    const std::vector<int>& grid = simulation.grid;
     analysis::LogisticOptions options;
     options.log2_distance = o.log2_distance;
-    std::vector<int> detected(grid.size(), 0);
-    std::vector<int> detected_cr2(grid.size(), 0);
-    std::vector<int> not_estimable(grid.size(), 0);
-    std::string distance_term = o.log2_distance ? "log2_mono_plane_m" : "mono_plane_m";
-    std::string last_error;
-
-    std::cerr << "simulate: " << protocol.name << ", observer " << o.observer << ", " << hmd.name
-              << ", n = ";
+    Detections detections(grid.size(), o.log2_distance);
+    std::cerr << "simulate: " << simulation.protocol.name << ", observer " << o.observer << ", "
+              << simulation.hmd.name << ", n = ";
     for (std::size_t i = 0; i < grid.size(); ++i) std::cerr << (i ? ", " : "") << grid[i];
     std::cerr << "; " << o.runs << " studies each, alpha " << o.alpha << ", seed " << o.seed
               << "\n";
     const int report_every = std::max(1, o.runs / 10);
     for (int run = 0; run < o.runs; ++run) {
-        // Participants in order, so that the first n of them are the study of n.
-        std::vector<analysis::TrialRow> rows;
-        std::vector<std::size_t> end_of_participant;
-        for (int p = 0; p < o.participants; ++p) {
-            std::vector<analysis::TrialRow> session =
-                simulate_session(protocol, o.observer, session_seed(o.seed, run, p), p, error_px);
-            rows.insert(rows.end(), std::make_move_iterator(session.begin()),
-                        std::make_move_iterator(session.end()));
-            end_of_participant.push_back(rows.size());
-        }
-        for (std::size_t g = 0; g < grid.size(); ++g) {
-            const std::vector<analysis::TrialRow> study(
-                rows.begin(),
-                rows.begin() + static_cast<std::ptrdiff_t>(end_of_participant[grid[g] - 1]));
-            analysis::Exclusions excluded;
-            const std::vector<analysis::TrialRow> kept =
-                analysis::analysable_trials(study, excluded);
-            const Result<analysis::LogisticFit> fit = analysis::fit_choice_model(kept, options);
-            if (!fit) {
-                ++not_estimable[g];
-                last_error = fit.error().message;
-                continue;
-            }
-            distance_term = fit->distance_term;
-            for (const analysis::Coefficient& c : fit->coefficients) {
-                if (c.name != fit->distance_term) continue;
-                if (c.p < o.alpha) ++detected[g];
-                if (c.p_cr2 < o.alpha) ++detected_cr2[g];
-            }
-        }
+        count_detections(simulate_participants(o, simulation, run), grid, options, o.alpha,
+                         detections);
         if ((run + 1) % report_every == 0 || run + 1 == o.runs) {
             std::cerr << "simulate: " << run + 1 << " of " << o.runs << " studies\n";
         }
     }
+    return detections;
+}
 
+// The power at each n, with the Wilson intervals, printed as it goes.
+analysis::report::PowerStudy power_study(const SimulateOptions& o, const Simulation& simulation,
+                                         const Detections& detections) {
     analysis::report::PowerStudy power;
-    power.protocol = protocol.name;
+    power.protocol = simulation.protocol.name;
     power.observer = o.observer;
-    power.hmd = hmd.name;
-    power.distance_term = distance_term;
+    power.hmd = simulation.hmd.name;
+    power.distance_term = detections.distance_term;
     power.alpha = o.alpha;
     power.seed = o.seed;
     power.runs = o.runs;
-    for (const study::ScheduledTrial& t : study::make_schedule(protocol, o.seed, 0).trials) {
+    for (const study::ScheduledTrial& t :
+         study::make_schedule(simulation.protocol, o.seed, 0).trials) {
         power.trials_per_participant += t.practice ? 0 : 1;
     }
+    const std::vector<int>& grid = simulation.grid;
     for (std::size_t g = 0; g < grid.size(); ++g) {
-        power.points.push_back(analysis::report::power_point(grid[g], o.runs, detected[g],
-                                                             not_estimable[g], detected_cr2[g]));
+        power.points.push_back(
+            analysis::report::power_point(grid[g], o.runs, detections.detected[g],
+                                          detections.not_estimable[g], detections.detected_cr2[g]));
         const auto& p = power.points.back();
         std::cerr << "n = " << p.participants << ": power " << charts::format_fixed(p.power, 3)
                   << " [" << charts::format_fixed(p.wilson.lower, 3) << ", "
@@ -176,10 +229,11 @@ void run_simulate(const SimulateOptions& o) {
                   << charts::format_fixed(p.wilson_cr2.upper, 3) << "] (" << p.detected_cr2
                   << " detected)\n";
     }
-    if (!last_error.empty()) {
-        std::cerr << "simulate: fits not estimable count as not detected; the last reason: "
-                  << last_error << "\n";
-    }
+    return power;
+}
+
+void write_power_files(const analysis::report::PowerStudy& power,
+                       const std::filesystem::path& out) {
     namespace report = analysis::report;
     report::write_text_file(out / "power.csv", report::power_csv(power)).value_or_throw();
     report::write_text_file(out / "power.json", report::power_json(power)).value_or_throw();
@@ -187,6 +241,17 @@ void run_simulate(const SimulateOptions& o) {
     report::write_text_file(out / "power.svg", svg).value_or_throw();
     charts::write_svg_as_png(svg, out / "power.png", 2.0).value_or_throw();
     std::cout << "power: " << std::filesystem::absolute(out / "power.csv").string() << "\n";
+}
+
+void run_simulate(const SimulateOptions& o) {
+    const Simulation simulation = prepare_simulation(o);
+    const Detections detections = simulate_studies(o, simulation);
+    const analysis::report::PowerStudy power = power_study(o, simulation, detections);
+    if (!detections.last_error.empty()) {
+        std::cerr << "simulate: fits not estimable count as not detected; the last reason: "
+                  << detections.last_error << "\n";
+    }
+    write_power_files(power, simulation.out);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include <glm/ext/matrix_double3x3.hpp>
@@ -262,54 +263,56 @@ double snap(double coordinate) {
     return std::abs(coordinate - centre) <= kSnapPx ? centre : coordinate;
 }
 
-}  // namespace
+// The left eye's pixels against the right eye's view of the same surface points.
+class EyeComparison {
+  public:
+    EyeComparison(const Eye& left, const Eye& right, const std::vector<glm::vec3>& left_normals,
+                  const std::vector<glm::vec3>& right_normals, const InconsistencyOptions& options)
+        : left_(left),
+          right_(right),
+          left_normals_(left_normals),
+          right_normals_(right_normals),
+          back_check_px_(options.back_check_px),
+          min_cosine_(std::cos(options.normal_threshold_deg * std::numbers::pi / 180.0)) {}
 
-Result<InconsistencyMap> stereo_inconsistency(const StereoAoView& left, const StereoAoView& right,
-                                              const StereoHead& head,
-                                              const InconsistencyOptions& options) {
-    for (const std::string& problem : {check_view(left, "left"), check_view(right, "right"),
-                                       check_head_and_options(head, options)}) {
-        if (!problem.empty()) return Error{problem};
+    // What left pixel (i, j) is; for a compared pixel, error is |AO left - AO right there|.
+    InconsistencyClass classify(std::uint32_t i, std::uint32_t j, double& error) const {
+        if (left_.sky(i, j)) return InconsistencyClass::sky;
+        const std::optional<glm::dvec2> q = seen_by_right(i, j);
+        if (!q) return InconsistencyClass::one_eye_only;
+        const glm::dvec3 normal(left_normals_[left_.index(i, j)]);
+        if (!is_finite(normal)) return InconsistencyClass::normal_rejected;
+        const std::optional<double> right_ao = right_ao_at(*q, normal);
+        if (!right_ao) return InconsistencyClass::normal_rejected;
+        error = std::abs(static_cast<double>(left_.ao(i, j)) - *right_ao);
+        return InconsistencyClass::compared;
     }
-    const Eye left_eye(left, head);
-    const Eye right_eye(right, head);
-    Result<std::vector<glm::vec3>> left_normals = view_normals(left_eye, "left");
-    if (!left_normals) return left_normals.error();
-    Result<std::vector<glm::vec3>> right_normals = view_normals(right_eye, "right");
-    if (!right_normals) return right_normals.error();
-    const double min_cosine = std::cos(options.normal_threshold_deg * std::numbers::pi / 180.0);
 
-    InconsistencyMap map;
-    map.width = left.width;
-    map.height = left.height;
-    const std::size_t pixels = std::size_t{left.width} * left.height;
-    map.error.assign(pixels, std::nanf(""));
-    map.classes.assign(pixels, InconsistencyClass::compared);
-    double sum = 0.0;
-
-    const auto classify = [&](std::uint32_t i, std::uint32_t j) -> InconsistencyClass {
-        const std::size_t k = left_eye.index(i, j);
-        if (left_eye.sky(i, j)) return InconsistencyClass::sky;
-
-        // Visibility: reverse reprojection with back-check.
-        const glm::dvec3 point = left_eye.world_point(i, j);
+  private:
+    // Visibility: reverse reprojection with back-check. Where the right eye sees left pixel
+    // (i, j)'s point, in its continuous pixel coordinates; nothing when the point lies outside
+    // its view or the right eye sees something else there.
+    std::optional<glm::dvec2> seen_by_right(std::uint32_t i, std::uint32_t j) const {
+        const glm::dvec3 point = left_.world_point(i, j);
         glm::dvec2 q;
-        if (!right_eye.project(point, q, true)) return InconsistencyClass::one_eye_only;
+        if (!right_.project(point, q, true)) return std::nullopt;
         const auto nearest = [](double coordinate, std::uint32_t size) {
             return static_cast<std::uint32_t>(
                 std::clamp(std::floor(coordinate + 0.5), 0.0, static_cast<double>(size - 1)));
         };
         const glm::dvec3 seen =
-            right_eye.world_point(nearest(q.x, right.width), nearest(q.y, right.height));
+            right_.world_point(nearest(q.x, right_.width()), nearest(q.y, right_.height()));
         glm::dvec2 back;
-        if (!is_finite(seen) || !left_eye.project(seen, back, false) ||
-            !(glm::length(back - glm::dvec2(i, j)) <= options.back_check_px)) {
-            return InconsistencyClass::one_eye_only;
+        if (!is_finite(seen) || !left_.project(seen, back, false) ||
+            !(glm::length(back - glm::dvec2(i, j)) <= back_check_px_)) {
+            return std::nullopt;
         }
+        return q;
+    }
 
-        // Normal check over the bilinear footprint, then the interpolation.
-        const glm::dvec3 normal((*left_normals)[k]);
-        if (!is_finite(normal)) return InconsistencyClass::normal_rejected;
+    // The right eye's AO interpolated bilinearly at q; nothing when a pixel of the footprint
+    // lies outside the image or faces more than the threshold away from `normal`.
+    std::optional<double> right_ao_at(const glm::dvec2& q, const glm::dvec3& normal) const {
         const double x = snap(q.x);
         const double y = snap(q.y);
         const double x0 = std::floor(x);
@@ -325,43 +328,82 @@ Result<InconsistencyMap> stereo_inconsistency(const StereoAoView& left, const St
                 if (wx == 0.0) continue;
                 const double xi = x0 + dx;
                 const double yi = y0 + dy;
-                if (xi < 0.0 || yi < 0.0 || xi >= right.width || yi >= right.height) {
-                    return InconsistencyClass::normal_rejected;
+                if (xi < 0.0 || yi < 0.0 || xi >= right_.width() || yi >= right_.height()) {
+                    return std::nullopt;
                 }
                 const auto ri = static_cast<std::uint32_t>(xi);
                 const auto rj = static_cast<std::uint32_t>(yi);
-                const glm::dvec3 other((*right_normals)[right_eye.index(ri, rj)]);
-                if (!is_finite(other) || !(glm::dot(normal, other) >= min_cosine)) {
-                    return InconsistencyClass::normal_rejected;
+                const glm::dvec3 other(right_normals_[right_.index(ri, rj)]);
+                if (!is_finite(other) || !(glm::dot(normal, other) >= min_cosine_)) {
+                    return std::nullopt;
                 }
-                interpolated += wx * wy * right_eye.ao(ri, rj);
+                interpolated += wx * wy * right_.ao(ri, rj);
             }
         }
-        const double error = std::abs(static_cast<double>(left_eye.ao(i, j)) - interpolated);
-        map.error[k] = static_cast<float>(error);
-        sum += error;
-        map.max = std::max(map.max, error);
-        return InconsistencyClass::compared;
-    };
+        return interpolated;
+    }
 
+    const Eye& left_;
+    const Eye& right_;
+    const std::vector<glm::vec3>& left_normals_;
+    const std::vector<glm::vec3>& right_normals_;
+    double back_check_px_;
+    double min_cosine_;
+};
+
+void count_class(InconsistencyClass kind, InconsistencyMap& map) {
+    switch (kind) {
+        case InconsistencyClass::compared:
+            ++map.compared;
+            break;
+        case InconsistencyClass::sky:
+            ++map.sky;
+            break;
+        case InconsistencyClass::one_eye_only:
+            ++map.one_eye_only;
+            break;
+        case InconsistencyClass::normal_rejected:
+            ++map.normal_rejected;
+            break;
+    }
+}
+
+}  // namespace
+
+Result<InconsistencyMap> stereo_inconsistency(const StereoAoView& left, const StereoAoView& right,
+                                              const StereoHead& head,
+                                              const InconsistencyOptions& options) {
+    for (const std::string& problem : {check_view(left, "left"), check_view(right, "right"),
+                                       check_head_and_options(head, options)}) {
+        if (!problem.empty()) return Error{problem};
+    }
+    const Eye left_eye(left, head);
+    const Eye right_eye(right, head);
+    Result<std::vector<glm::vec3>> left_normals = view_normals(left_eye, "left");
+    if (!left_normals) return left_normals.error();
+    Result<std::vector<glm::vec3>> right_normals = view_normals(right_eye, "right");
+    if (!right_normals) return right_normals.error();
+    const EyeComparison comparison(left_eye, right_eye, *left_normals, *right_normals, options);
+
+    InconsistencyMap map;
+    map.width = left.width;
+    map.height = left.height;
+    const std::size_t pixels = std::size_t{left.width} * left.height;
+    map.error.assign(pixels, std::nanf(""));
+    map.classes.assign(pixels, InconsistencyClass::compared);
+    double sum = 0.0;
     for (std::uint32_t j = 0; j < left.height; ++j) {
         for (std::uint32_t i = 0; i < left.width; ++i) {
-            const InconsistencyClass kind = classify(i, j);
-            map.classes[left_eye.index(i, j)] = kind;
-            switch (kind) {
-                case InconsistencyClass::compared:
-                    ++map.compared;
-                    break;
-                case InconsistencyClass::sky:
-                    ++map.sky;
-                    break;
-                case InconsistencyClass::one_eye_only:
-                    ++map.one_eye_only;
-                    break;
-                case InconsistencyClass::normal_rejected:
-                    ++map.normal_rejected;
-                    break;
+            const std::size_t k = left_eye.index(i, j);
+            double error = 0.0;
+            const InconsistencyClass kind = comparison.classify(i, j, error);
+            if (kind == InconsistencyClass::compared) {
+                map.error[k] = static_cast<float>(error);
+                sum += error;
+                map.max = std::max(map.max, error);
             }
+            map.classes[k] = kind;
+            count_class(kind, map);
         }
     }
     if (map.compared > 0) map.mean = sum / static_cast<double>(map.compared);

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <span>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -89,6 +90,236 @@ void add_back_faces(GeometryBatch& batch, ImportedGeometry& geometry) {
     batch.index_count = 2 * front_indices;
 }
 
+// What every step of one primitive's import reads: the primitive, the name messages give it,
+// and the bounds on what its accessors may hold.
+struct PrimitiveInput {
+    const tinygltf::Model& model;
+    const tinygltf::Primitive& primitive;
+    std::string where;             // describe_primitive()
+    std::size_t limit = 0;         // element_limit()
+    std::size_t vertex_count = 0;  // POSITION's: every other attribute must have as many
+
+    // A per-vertex attribute's elements, refused unless there is one per vertex.
+    Result<FloatElements> read_per_vertex(int accessor, const std::string& semantic,
+                                          std::span<const int> types, bool normalized) const {
+        Result<FloatElements> read = read_float_accessor(
+            model, accessor, {semantic + " of " + where, types, normalized, limit});
+        if (!read) return read.error();
+        if (read->count != vertex_count) {
+            return count_mismatch(semantic, where, read->count, vertex_count);
+        }
+        return read;
+    }
+};
+
+// The primitive's triangles as file vertex indices: its indices (or 0..n-1 without any) through
+// its mode.
+Result<TriangleList> read_triangles(const PrimitiveInput& in, int mode) {
+    std::vector<std::uint32_t> sequence;
+    if (in.primitive.indices >= 0) {
+        Result<std::vector<std::uint32_t>> indices = read_index_accessor(
+            in.model, in.primitive.indices, "indices of " + in.where, in.vertex_count, in.limit);
+        if (!indices) return indices.error();
+        sequence = std::move(indices).value();
+    } else {
+        sequence.resize(in.vertex_count);
+        std::iota(sequence.begin(), sequence.end(), 0u);
+    }
+    return triangulate(mode, sequence);
+}
+
+void reverse_winding(std::vector<std::uint32_t>& indices) {
+    for (std::size_t t = 0; t < indices.size(); t += 3) std::swap(indices[t + 1], indices[t + 2]);
+}
+
+// The normals of the batch's vertices. Per vertex of the file; or, for flat generated normals,
+// one vertex per triangle corner: origin[k] is then the file vertex behind output vertex k.
+struct VertexNormals {
+    std::vector<glm::vec3> normals;
+    bool flat = false;
+    std::vector<std::uint32_t> origin;  // flat only
+
+    std::size_t file_vertex(std::size_t k) const { return flat ? origin[k] : k; }
+};
+
+// Flat generated normals: the triangles' corners become vertices of their own, numbered in
+// order, each with its face's normal.
+VertexNormals flat_normals(const std::vector<glm::vec3>& positions,
+                           std::vector<std::uint32_t>& indices, GltfLoadReport& report) {
+    VertexNormals result;
+    result.flat = true;
+    result.origin = std::move(indices);
+    indices.resize(result.origin.size());
+    std::iota(indices.begin(), indices.end(), 0u);
+    const std::vector<std::uint32_t>& origin = result.origin;
+    result.normals.resize(origin.size());
+    for (std::size_t t = 0; t < origin.size(); t += 3) {
+        const glm::vec3 n =
+            face_normal(positions[origin[t]], positions[origin[t + 1]], positions[origin[t + 2]]);
+        result.normals[t] = result.normals[t + 1] = result.normals[t + 2] = n;
+    }
+    report.normals_generated += origin.size();
+    return result;
+}
+
+// The file's normals in the world. Normals transform by the inverse transpose; a singular
+// transform (a zero scale) flattens the primitive, whose normals then come from its (zero-area)
+// faces, as do zero normals in the file.
+Result<std::vector<glm::vec3>> file_normals(const PrimitiveInput& in, int accessor,
+                                            const glm::dmat3& linear,
+                                            const std::vector<glm::vec3>& positions,
+                                            const std::vector<std::uint32_t>& indices,
+                                            GltfLoadReport& report) {
+    Result<FloatElements> read = in.read_per_vertex(accessor, "NORMAL", kVec3, false);
+    if (!read) return read.error();
+    const bool invertible = std::fabs(glm::determinant(linear)) > 1e-300;
+    const glm::dmat3 normal_matrix = invertible ? glm::inverseTranspose(linear) : glm::dmat3(0.0);
+    std::vector<glm::vec3> normals(in.vertex_count);
+    std::vector<std::size_t> degenerate;
+    for (std::size_t i = 0; i < in.vertex_count; ++i) {
+        const float* n = &read->values[3 * i];
+        const glm::dvec3 transformed = normal_matrix * glm::dvec3(n[0], n[1], n[2]);
+        const double length = glm::length(transformed);
+        if (length > 1e-20 && std::isfinite(length)) {
+            normals[i] = glm::vec3(transformed / length);
+        } else {
+            degenerate.push_back(i);
+        }
+    }
+    if (!degenerate.empty()) {
+        const std::vector<glm::vec3> generated = smooth_normals(positions, indices);
+        for (const std::size_t i : degenerate) normals[i] = generated[i];
+        report.normals_generated += degenerate.size();
+    }
+    return normals;
+}
+
+// NORMAL when the primitive has it; otherwise generated as the options ask.
+Result<VertexNormals> vertex_normals(const PrimitiveInput& in, const GltfLoadOptions& options,
+                                     const glm::dmat3& linear,
+                                     const std::vector<glm::vec3>& positions,
+                                     std::vector<std::uint32_t>& indices, GltfLoadReport& report) {
+    const int accessor = attribute(in.primitive, "NORMAL");
+    if (accessor < 0 && options.generated_normals == GeneratedNormals::Flat) {
+        return flat_normals(positions, indices, report);
+    }
+    VertexNormals result;
+    if (accessor < 0) {
+        result.normals = smooth_normals(positions, indices);
+        report.normals_generated += in.vertex_count;
+        return result;
+    }
+    Result<std::vector<glm::vec3>> read =
+        file_normals(in, accessor, linear, positions, indices, report);
+    if (!read) return read.error();
+    result.normals = std::move(read).value();
+    return result;
+}
+
+// The base-colour texture (its index in the scene, or -1) and its coordinates.
+struct BaseColourTexture {
+    int scene_texture = -1;
+    FloatElements uv;
+};
+
+// A texture without its TEXCOORD_n is left off (and counted), not refused.
+Result<BaseColourTexture> read_base_colour_texture(const PrimitiveInput& in,
+                                                   const SurfaceLook& look, TextureSet& textures,
+                                                   GltfLoadReport& report) {
+    BaseColourTexture result;
+    if (look.texture < 0) return result;
+    const std::string semantic = "TEXCOORD_" + std::to_string(look.texcoord_set);
+    const int accessor = attribute(in.primitive, semantic);
+    if (accessor < 0) {
+        ++report.textures_without_texcoords;
+        return result;
+    }
+    Result<FloatElements> uv = in.read_per_vertex(accessor, semantic, kVec2, true);
+    if (!uv) return uv.error();
+    Result<int> texture = textures.use(look.texture);
+    if (!texture) return Error{in.where + ": " + texture.error().message};
+    result.scene_texture = *texture;
+    result.uv = std::move(uv).value();
+    return result;
+}
+
+// COLOR_0, or no elements without it.
+Result<FloatElements> read_vertex_colours(const PrimitiveInput& in) {
+    const int accessor = attribute(in.primitive, "COLOR_0");
+    if (accessor < 0) return FloatElements{};
+    return in.read_per_vertex(accessor, "COLOR_0", kColourTypes, true);
+}
+
+// Everything a batch's vertices are made from, per file vertex (normals: per output vertex).
+struct VertexAttributes {
+    std::vector<glm::vec3> positions;  // in the world
+    VertexNormals normals;
+    BaseColourTexture texture;
+    FloatElements colours;  // COLOR_0; empty without
+};
+
+// Appends the batch's vertices and their texture coordinates.
+void append_vertices(const VertexAttributes& attributes, const SurfaceLook& look,
+                     std::size_t output_count, ImportedGeometry& geometry) {
+    const FloatElements& colours = attributes.colours;
+    const BaseColourTexture& texture = attributes.texture;
+    geometry.vertices.reserve(geometry.vertices.size() + output_count);
+    geometry.texcoords.reserve(geometry.texcoords.size() + output_count);
+    for (std::size_t k = 0; k < output_count; ++k) {
+        const std::size_t from = attributes.normals.file_vertex(k);
+        // Linear, like COLOR_0; the renderer multiplies in the texture (forward_shading.glsl).
+        glm::vec4 colour = look.base_color;
+        if (!colours.values.empty()) {
+            const float* c = &colours.values[from * colours.components];
+            colour *= glm::vec4(c[0], c[1], c[2], colours.components == 4 ? c[3] : 1.0f);
+        }
+        glm::vec2 texcoord(0.0f);
+        if (texture.scene_texture >= 0) {
+            texcoord = {texture.uv.values[2 * from], texture.uv.values[2 * from + 1]};
+        }
+        Vertex vertex;
+        vertex.position = attributes.positions[from];
+        vertex.normal = attributes.normals.normals[k];
+        vertex.albedo_rgba8 = pack_rgba8(colour.r, colour.g, colour.b, colour.a);
+        vertex.material_packed = look.material_packed;
+        geometry.vertices.push_back(vertex);
+        geometry.texcoords.push_back(texcoord);
+    }
+}
+
+// Counter-clockwise about the vertex normals (scene.h), as ChunkBuilder::add_triangle has it:
+// where a file's normals contradict its winding, the normals decide, since the renderer culls by
+// winding and shades by normals and the two must agree.
+void orient_by_normals(const Vertex* vertices, std::vector<std::uint32_t>& indices) {
+    for (std::size_t t = 0; t < indices.size(); t += 3) {
+        const Vertex& a = vertices[indices[t]];
+        const Vertex& b = vertices[indices[t + 1]];
+        const Vertex& c = vertices[indices[t + 2]];
+        const glm::vec3 face = glm::cross(b.position - a.position, c.position - a.position);
+        if (glm::dot(face, a.normal + b.normal + c.normal) < 0.0f) {
+            std::swap(indices[t + 1], indices[t + 2]);
+        }
+    }
+}
+
+// The primitive as one batch of geometry, its back faces too when its material is double-sided.
+void append_batch(const VertexAttributes& attributes, const SurfaceLook& look,
+                  std::vector<std::uint32_t>& indices, ImportedGeometry& geometry) {
+    const std::size_t output_count =
+        attributes.normals.flat ? attributes.normals.origin.size() : attributes.positions.size();
+    GeometryBatch batch;
+    batch.first_vertex = geometry.vertices.size();
+    batch.vertex_count = static_cast<std::uint32_t>(output_count);  // <= element_limit()
+    batch.first_index = geometry.indices.size();
+    batch.index_count = indices.size();
+    batch.texture = attributes.texture.scene_texture;
+    append_vertices(attributes, look, output_count, geometry);
+    orient_by_normals(geometry.vertices.data() + batch.first_vertex, indices);
+    geometry.indices.insert(geometry.indices.end(), indices.begin(), indices.end());
+    if (look.double_sided) add_back_faces(batch, geometry);
+    geometry.batches.push_back(batch);
+}
+
 }  // namespace
 
 std::string describe_primitive(const tinygltf::Model& model, int mesh, int primitive) {
@@ -119,174 +350,46 @@ Result<bool> import_primitive(const PrimitiveSource& source, const GltfLoadOptio
         ++report.primitives_skipped_without_positions;
         return true;
     }
-    const std::size_t limit = element_limit(options);
+    PrimitiveInput in{model, primitive, where, element_limit(options)};
 
     Result<FloatElements> positions = read_float_accessor(
-        model, position_accessor, {"POSITION of " + where, kVec3, false, limit});
+        model, position_accessor, {"POSITION of " + where, kVec3, false, in.limit});
     if (!positions) return positions.error();
-    const std::size_t vertex_count = positions->count;
+    in.vertex_count = positions->count;
 
-    TriangleList list;
-    {
-        std::vector<std::uint32_t> sequence;
-        if (primitive.indices >= 0) {
-            Result<std::vector<std::uint32_t>> indices = read_index_accessor(
-                model, primitive.indices, "indices of " + where, vertex_count, limit);
-            if (!indices) return indices.error();
-            sequence = std::move(indices).value();
-        } else {
-            sequence.resize(vertex_count);
-            std::iota(sequence.begin(), sequence.end(), 0u);
-        }
-        list = triangulate(mode, sequence);
-    }
+    Result<TriangleList> triangles = read_triangles(in, mode);
+    if (!triangles) return triangles.error();
+    TriangleList list = std::move(triangles).value();
     report.indices_dropped_incomplete += list.dropped_incomplete;
     report.triangles_dropped_degenerate += list.dropped_degenerate;
     if (list.indices.empty()) return true;
 
-    Result<std::vector<glm::vec3>> world_positions = to_world(*positions, source.world, where);
-    if (!world_positions) return world_positions.error();
-    positions = FloatElements{};
+    VertexAttributes attributes;
+    {
+        Result<std::vector<glm::vec3>> world = to_world(*positions, source.world, where);
+        if (!world) return world.error();
+        attributes.positions = std::move(world).value();
+    }
+    positions = FloatElements{};  // the file's copy is no longer needed
 
     // A mirroring transform turns counter-clockwise triangles clockwise: turn them back.
     const glm::dmat3 linear(source.world);
-    const double determinant = glm::determinant(linear);
-    if (determinant < 0.0) {
-        for (std::size_t t = 0; t < list.indices.size(); t += 3) {
-            std::swap(list.indices[t + 1], list.indices[t + 2]);
-        }
-    }
+    if (glm::determinant(linear) < 0.0) reverse_winding(list.indices);
 
     Result<SurfaceLook> look = surface_look(model, primitive.material);
     if (!look) return Error{where + ": " + look.error().message};
+    Result<VertexNormals> normals =
+        vertex_normals(in, options, linear, attributes.positions, list.indices, report);
+    if (!normals) return normals.error();
+    attributes.normals = std::move(normals).value();
+    Result<BaseColourTexture> texture = read_base_colour_texture(in, *look, textures, report);
+    if (!texture) return texture.error();
+    attributes.texture = std::move(texture).value();
+    Result<FloatElements> colours = read_vertex_colours(in);
+    if (!colours) return colours.error();
+    attributes.colours = std::move(colours).value();
 
-    // Normals, per vertex of the file; or, for flat generated normals, one vertex per triangle
-    // corner: origin[k] is then the file vertex behind output vertex k.
-    const int normal_accessor = attribute(primitive, "NORMAL");
-    const bool flat = normal_accessor < 0 && options.generated_normals == GeneratedNormals::Flat;
-    std::vector<std::uint32_t> origin;
-    std::vector<glm::vec3> normals;
-    if (flat) {
-        origin = std::move(list.indices);
-        list.indices.resize(origin.size());
-        std::iota(list.indices.begin(), list.indices.end(), 0u);
-        normals.resize(origin.size());
-        for (std::size_t t = 0; t < origin.size(); t += 3) {
-            const glm::vec3 n =
-                face_normal((*world_positions)[origin[t]], (*world_positions)[origin[t + 1]],
-                            (*world_positions)[origin[t + 2]]);
-            normals[t] = normals[t + 1] = normals[t + 2] = n;
-        }
-        report.normals_generated += origin.size();
-    } else if (normal_accessor < 0) {
-        normals = smooth_normals(*world_positions, list.indices);
-        report.normals_generated += vertex_count;
-    } else {
-        Result<FloatElements> file_normals = read_float_accessor(
-            model, normal_accessor, {"NORMAL of " + where, kVec3, false, limit});
-        if (!file_normals) return file_normals.error();
-        if (file_normals->count != vertex_count) {
-            return count_mismatch("NORMAL", where, file_normals->count, vertex_count);
-        }
-        // Normals transform by the inverse transpose; a singular transform (a zero scale)
-        // flattens the primitive, whose normals then come from its (zero-area) faces.
-        const bool invertible = std::fabs(determinant) > 1e-300;
-        const glm::dmat3 normal_matrix =
-            invertible ? glm::inverseTranspose(linear) : glm::dmat3(0.0);
-        normals.resize(vertex_count);
-        std::vector<std::size_t> degenerate;
-        for (std::size_t i = 0; i < vertex_count; ++i) {
-            const float* n = &file_normals->values[3 * i];
-            const glm::dvec3 transformed = normal_matrix * glm::dvec3(n[0], n[1], n[2]);
-            const double length = glm::length(transformed);
-            if (length > 1e-20 && std::isfinite(length)) {
-                normals[i] = glm::vec3(transformed / length);
-            } else {
-                degenerate.push_back(i);
-            }
-        }
-        if (!degenerate.empty()) {  // zero normals in the file, or a singular transform
-            const std::vector<glm::vec3> generated = smooth_normals(*world_positions, list.indices);
-            for (const std::size_t i : degenerate) normals[i] = generated[i];
-            report.normals_generated += degenerate.size();
-        }
-    }
-
-    // The base-colour texture and its coordinates.
-    int scene_texture = -1;
-    FloatElements uv;
-    if (look->texture >= 0) {
-        const std::string semantic = "TEXCOORD_" + std::to_string(look->texcoord_set);
-        const int uv_accessor = attribute(primitive, semantic);
-        if (uv_accessor < 0) {
-            ++report.textures_without_texcoords;
-        } else {
-            Result<FloatElements> read = read_float_accessor(
-                model, uv_accessor, {semantic + " of " + where, kVec2, true, limit});
-            if (!read) return read.error();
-            if (read->count != vertex_count)
-                return count_mismatch(semantic, where, read->count, vertex_count);
-            Result<int> texture = textures.use(look->texture);
-            if (!texture) return Error{where + ": " + texture.error().message};
-            scene_texture = *texture;
-            uv = std::move(read).value();
-        }
-    }
-    FloatElements colours;
-    if (const int colour_accessor = attribute(primitive, "COLOR_0"); colour_accessor >= 0) {
-        Result<FloatElements> read = read_float_accessor(
-            model, colour_accessor, {"COLOR_0 of " + where, kColourTypes, true, limit});
-        if (!read) return read.error();
-        if (read->count != vertex_count)
-            return count_mismatch("COLOR_0", where, read->count, vertex_count);
-        colours = std::move(read).value();
-    }
-
-    const std::size_t output_count = flat ? origin.size() : vertex_count;
-    GeometryBatch batch;
-    batch.first_vertex = geometry.vertices.size();
-    batch.vertex_count = static_cast<std::uint32_t>(output_count);  // <= element_limit()
-    batch.first_index = geometry.indices.size();
-    batch.index_count = list.indices.size();
-    batch.texture = scene_texture;
-    geometry.vertices.reserve(geometry.vertices.size() + output_count);
-    geometry.texcoords.reserve(geometry.texcoords.size() + output_count);
-    for (std::size_t k = 0; k < output_count; ++k) {
-        const std::size_t from = flat ? origin[k] : k;
-        // Linear, like COLOR_0; the renderer multiplies in the texture (forward_shading.glsl).
-        glm::vec4 colour = look->base_color;
-        if (!colours.values.empty()) {
-            const float* c = &colours.values[from * colours.components];
-            colour *= glm::vec4(c[0], c[1], c[2], colours.components == 4 ? c[3] : 1.0f);
-        }
-        glm::vec2 texcoord(0.0f);
-        if (scene_texture >= 0) {
-            texcoord = {uv.values[2 * from], uv.values[2 * from + 1]};
-        }
-        Vertex vertex;
-        vertex.position = (*world_positions)[from];
-        vertex.normal = normals[k];
-        vertex.albedo_rgba8 = pack_rgba8(colour.r, colour.g, colour.b, colour.a);
-        vertex.material_packed = look->material_packed;
-        geometry.vertices.push_back(vertex);
-        geometry.texcoords.push_back(texcoord);
-    }
-    // Counter-clockwise about the vertex normals (scene.h), as ChunkBuilder::add_triangle has
-    // it: where a file's normals contradict its winding, the normals decide, since the renderer
-    // culls by winding and shades by normals and the two must agree.
-    const Vertex* batch_vertices = geometry.vertices.data() + batch.first_vertex;
-    for (std::size_t t = 0; t < list.indices.size(); t += 3) {
-        const Vertex& a = batch_vertices[list.indices[t]];
-        const Vertex& b = batch_vertices[list.indices[t + 1]];
-        const Vertex& c = batch_vertices[list.indices[t + 2]];
-        const glm::vec3 face = glm::cross(b.position - a.position, c.position - a.position);
-        if (glm::dot(face, a.normal + b.normal + c.normal) < 0.0f) {
-            std::swap(list.indices[t + 1], list.indices[t + 2]);
-        }
-    }
-    geometry.indices.insert(geometry.indices.end(), list.indices.begin(), list.indices.end());
-    if (look->double_sided) add_back_faces(batch, geometry);
-    geometry.batches.push_back(batch);
+    append_batch(attributes, *look, list.indices, geometry);
     return true;
 }
 
