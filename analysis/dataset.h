@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -134,14 +135,25 @@ std::string unguarded_cell(std::string text);
 // a code that several sources hold means.
 void merge(Dataset& into, Dataset from);
 
+// How join_participant_codes' messages name the rules and ask for one. The analysis' own words
+// name the rules ("same-person"); `analyze` names its option instead ("--codes same-person") and
+// says to run it again.
+struct SharedCodesNames {
+    std::function<std::string(SharedCodes rule)> rule;
+    std::string choose;  // the sentence before the list of the two ways on
+};
+// "same-person", "per-database"; "... choose one of:".
+const SharedCodesNames& analysis_codes_names();
+
 // Applies `rule` to the codes found in more than one source of `data` (trials, answers and
 // sessions alike): Refuse fails with a message that names the codes, their files and the two
-// ways on (`--codes same-person`, `--codes per-database`); SamePerson keeps the codes (one
+// ways on (SamePerson, PerDatabase, as `names` says them); SamePerson keeps the codes (one
 // person, one cluster); PerDatabase prefixes every code with its source's file stem and "/"
 // ("site-a.sqlite" -> "site-a/a1"), and fails when two sources share a stem. Records the rule
 // and the shared codes in data.codes and data.shared_codes.
-Result<bool> join_participant_codes(Dataset& data, SharedCodes rule);
-// "same-person" / "per-database" (as `--codes` takes them); "refuse" for the default.
+Result<void> join_participant_codes(Dataset& data, SharedCodes rule,
+                                    const SharedCodesNames& names = analysis_codes_names());
+// "same-person" / "per-database" (the values of `analyze --codes` too); "refuse" for the default.
 std::string_view shared_codes_name(SharedCodes rule);
 
 // Fills, per session (source, session_id): first_scene = scene of the session's data trial in

@@ -257,7 +257,7 @@ std::optional<Maximum> newton_raphson(const Design& d) {
 Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
                                      const LogisticOptions& options) {
     Result<Design> built = build_design(trials, options);
-    if (!built) return built.error();
+    MONOPLANE_TRY(built);
     const Design& d = *built;
     const std::size_t k = d.x.columns();
     const Error singular{
@@ -285,7 +285,7 @@ Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
         cr2_covariance({d.x, d.y, state.mu, d.cluster, d.clusters, *bread});
     for (std::size_t j = 0; j < k; ++j) {
         Result<Coefficient> c = coefficient(d.names[j], beta[j], cr1(j, j));
-        if (!c) return c.error();
+        MONOPLANE_TRY(c);
         add_small_sample_test(c.value(), cr2.covariance(j, j), cr2.satterthwaite_df[j]);
         fit.coefficients.push_back(std::move(c).value());
     }

@@ -47,7 +47,8 @@ std::string file_stem(const std::string& source) {
 }
 
 // Names the codes grouped by the files that share them, then the two ways on.
-std::string refusal(const std::map<std::vector<std::string>, std::vector<std::string>>& groups) {
+std::string refusal(const std::map<std::vector<std::string>, std::vector<std::string>>& groups,
+                    const SharedCodesNames& names) {
     constexpr std::size_t kCodesNamed = 10;
     std::string out = "participant codes found in more than one input:";
     for (const auto& [sources, codes] : groups) {
@@ -62,36 +63,40 @@ std::string refusal(const std::map<std::vector<std::string>, std::vector<std::st
     const std::string example =
         first != second ? first + "/" + codes.front() + ", " + second + "/" + codes.front()
                         : "the files need different names for that";
-    out +=
-        "\nanalyze does not merge participants from different files without being told who they "
-        "are; run it again with one of:"
-        "\n  --codes same-person   they are the same people (e.g. sessions run on two lab "
-        "PCs): each code's sessions from every file are analysed as one participant"
-        "\n  --codes per-database  each file's codes are its own (e.g. two sites): every code "
-        "is prefixed with its file's name (" +
-        example +
-        ")"
-        "\n(If one file is an export of another, give only one of them: their sessions would "
-        "count twice.)";
+    // The two ways on in a column: each rule's name, then what it means.
+    const std::string same = names.rule(SharedCodes::SamePerson);
+    const std::string own = names.rule(SharedCodes::PerDatabase);
+    const std::size_t width = std::max(same.size(), own.size()) + 2;
+    out += "\n" + names.choose + "\n  " + same + std::string(width - same.size(), ' ') +
+           "they are the same people (e.g. sessions run on two lab PCs): each code's sessions "
+           "from every file are analysed as one participant"
+           "\n  " +
+           own + std::string(width - own.size(), ' ') +
+           "each file's codes are its own (e.g. two sites): every code is prefixed with its "
+           "file's name (" +
+           example +
+           ")"
+           "\n(If one file is an export of another, give only one of them: their sessions would "
+           "count twice.)";
     return out;
 }
 
 // Every source with its stem, refusing two sources with one stem (their codes would collide).
-Result<std::map<std::string, std::string>> prefixes(const std::vector<std::string>& sources) {
+Result<std::map<std::string, std::string>> prefixes(const std::vector<std::string>& sources,
+                                                    const SharedCodesNames& names) {
+    const std::string rule = names.rule(SharedCodes::PerDatabase);
     std::map<std::string, std::string> prefix, source_of_stem;
     for (const std::string& source : sources) {
         const std::string stem = file_stem(source);
         if (stem.empty())
-            return Error{"--codes per-database: " + source +
+            return Error{rule + ": " + source +
                          " has no file name to prefix its "
                          "participant codes with"};
         const auto [seen, added] = source_of_stem.emplace(stem, source);
         if (!added && seen->second != source)
-            return Error{
-                "--codes per-database prefixes each participant code with its file's "
-                "name, but " +
-                seen->second + " and " + source + " are both called '" + stem +
-                "': rename one of them (e.g. site-a.sqlite, site-b.sqlite)"};
+            return Error{rule + " prefixes each participant code with its file's name, but " +
+                         seen->second + " and " + source + " are both called '" + stem +
+                         "': rename one of them (e.g. site-a.sqlite, site-b.sqlite)"};
         prefix[source] = stem + "/";
     }
     return prefix;
@@ -145,7 +150,16 @@ std::string same_person_conflicts(const Dataset& data, const std::vector<std::st
 
 }  // namespace
 
-Result<bool> join_participant_codes(Dataset& data, SharedCodes rule) {
+const SharedCodesNames& analysis_codes_names() {
+    static const SharedCodesNames names{
+        [](SharedCodes rule) { return std::string(shared_codes_name(rule)); },
+        "participants from different files are not merged without being told who they are; "
+        "choose one of:"};
+    return names;
+}
+
+Result<void> join_participant_codes(Dataset& data, SharedCodes rule,
+                                    const SharedCodesNames& names) {
     const std::map<std::string, std::vector<std::string>> by_code = sources_by_code(data);
     std::map<std::vector<std::string>, std::vector<std::string>> groups;  // sources -> codes
     std::vector<std::string> shared;
@@ -154,14 +168,15 @@ Result<bool> join_participant_codes(Dataset& data, SharedCodes rule) {
         shared.push_back(code);
         groups[sources].push_back(code);
     }
-    if (rule == SharedCodes::Refuse && !groups.empty()) return Error{refusal(groups)};
+    if (rule == SharedCodes::Refuse && !groups.empty()) return Error{refusal(groups, names)};
     if (rule == SharedCodes::SamePerson) {
         const std::string conflicts = same_person_conflicts(data, shared);
         if (!conflicts.empty()) {
-            return Error{
-                "--codes same-person: these codes do not look like one person each:" + conflicts +
-                "\nIf each file's codes are its own, use --codes per-database; if a "
-                "session was exported twice, give that file once."};
+            return Error{names.rule(SharedCodes::SamePerson) +
+                         ": these codes do not look like one person each:" + conflicts +
+                         "\nIf each file's codes are its own, use " +
+                         names.rule(SharedCodes::PerDatabase) +
+                         "; if a session was exported twice, give that file once."};
         }
     }
     if (rule == SharedCodes::PerDatabase) {
@@ -170,15 +185,15 @@ Result<bool> join_participant_codes(Dataset& data, SharedCodes rule) {
             for (const std::string& source : holders)
                 if (std::find(sources.begin(), sources.end(), source) == sources.end())
                     sources.push_back(source);
-        Result<std::map<std::string, std::string>> prefix = prefixes(sources);
-        if (!prefix) return prefix.error();
+        Result<std::map<std::string, std::string>> prefix = prefixes(sources, names);
+        MONOPLANE_TRY(prefix);
         for (TrialRow& t : data.trials) t.participant = prefix->at(t.source) + t.participant;
         for (AnswerRow& a : data.answers) a.participant = prefix->at(a.source) + a.participant;
         for (SessionRow& s : data.sessions) s.participant = prefix->at(s.source) + s.participant;
     }
     data.codes = rule;
     data.shared_codes = std::move(shared);
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::analysis

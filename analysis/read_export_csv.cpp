@@ -117,12 +117,16 @@ class Row {
 };
 
 // Assigns a Result's value or returns its error from the enclosing function.
-#define MONOPLANE_ASSIGN(target, expression)  \
-    do {                                      \
-        auto result_ = (expression);          \
-        if (!result_) return result_.error(); \
-        target = std::move(result_).value();  \
+#define MONOPLANE_ASSIGN(target, expression) \
+    do {                                     \
+        auto result_ = (expression);         \
+        MONOPLANE_TRY(result_);              \
+        target = std::move(result_).value(); \
     } while (false)
+
+// The command that writes the files read here: the messages about a file that is not one name
+// it, so that the user knows what to give instead.
+constexpr std::string_view kExportCommand = "monoplane study export --format csv";
 
 // How an export names its sessions (read_export_csv() in dataset.h says why there are three).
 enum class SessionLayout {
@@ -144,7 +148,7 @@ Result<int> small_integer(const Row& row, std::string_view column) {
 }
 
 // The trial's session (the id, NumberOnly's left for the caller) and repetition.
-Result<bool> session_fields(const Row& row, SessionLayout layout, TrialRow& t) {
+Result<void> session_fields(const Row& row, SessionLayout layout, TrialRow& t) {
     if (layout == SessionLayout::IdOnly) {
         MONOPLANE_ASSIGN(t.session_id, row.integer("session"));
     } else {
@@ -154,13 +158,13 @@ Result<bool> session_fields(const Row& row, SessionLayout layout, TrialRow& t) {
     }
     if (row.has("repetition") && !row.is_na("repetition"))
         MONOPLANE_ASSIGN(t.repetition, small_integer(row, "repetition"));
-    return true;
+    return Ok{};
 }
 
 Result<TrialRow> trial_row(const Row& row, SessionLayout layout) {
     TrialRow t;
     MONOPLANE_ASSIGN(t.participant, row.text("participant"));
-    if (Result<bool> session = session_fields(row, layout, t); !session) return session.error();
+    MONOPLANE_TRY(session_fields(row, layout, t));
     MONOPLANE_ASSIGN(t.trial_index, small_integer(row, "trial_index"));
     MONOPLANE_ASSIGN(t.practice, row.boolean("practice"));
     if (row.is_na("block")) {
@@ -215,11 +219,10 @@ Result<std::vector<CsvRecord>> read_records(const std::filesystem::path& path) {
     buffer << in.rdbuf();
     if (in.bad()) return Error{file + ": reading the file failed"};
     Result<std::vector<CsvRecord>> parsed = parse_csv(buffer.str(), file);
-    if (!parsed) return parsed.error();
+    MONOPLANE_TRY(parsed);
     if (parsed->empty())
-        return Error{file +
-                     ":1: the file is empty; expected the header of `monoplane study "
-                     "export --format csv`"};
+        return Error{file + ":1: the file is empty; expected the header of `" +
+                     std::string(kExportCommand) + "`"};
     return parsed;
 }
 
@@ -229,8 +232,8 @@ Result<Columns> header_columns(const std::string& file, const CsvRecord& header)
     for (std::string_view name : kRequired) {
         if (!columns.contains(name))
             return Error{file + ":" + std::to_string(header.line) + ": the header has no column '" +
-                         std::string(name) +
-                         "'; is this the CSV of `monoplane study export --format csv`?"};
+                         std::string(name) + "'; is this the CSV of `" +
+                         std::string(kExportCommand) + "`?"};
     }
     return columns;
 }
@@ -257,7 +260,7 @@ Result<std::vector<SessionRow>> sessions_of(const std::vector<TrialRow>& trials,
         auto found = index.find(key);
         if (found == index.end()) {
             Result<SessionRow> session = session_row(rows[i], t);
-            if (!session) return session.error();
+            MONOPLANE_TRY(session);
             found = index.emplace(key, sessions.size()).first;
             sessions.push_back(std::move(session).value());
             scenes.emplace_back();
@@ -274,10 +277,10 @@ Result<std::vector<SessionRow>> sessions_of(const std::vector<TrialRow>& trials,
 Result<Dataset> read_export_csv(const std::filesystem::path& path) {
     const std::string file = path.string();
     Result<std::vector<CsvRecord>> records = read_records(path);
-    if (!records) return records.error();
+    MONOPLANE_TRY(records);
     const CsvRecord& header = records->front();
     Result<Columns> columns = header_columns(file, header);
-    if (!columns) return columns.error();
+    MONOPLANE_TRY(columns);
     const SessionLayout layout = session_layout(*columns);
 
     Dataset dataset;
@@ -291,14 +294,14 @@ Result<Dataset> read_export_csv(const std::filesystem::path& path) {
                          std::to_string(header.fields.size())};
         rows.emplace_back(file, record, *columns);
         Result<TrialRow> row = trial_row(rows.back(), layout);
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         TrialRow& trial = row.value();
         trial.source = file;
         dataset.trials.push_back(std::move(trial));
     }
     if (layout == SessionLayout::NumberOnly) number_sessions(dataset.trials);
     Result<std::vector<SessionRow>> sessions = sessions_of(dataset.trials, rows);
-    if (!sessions) return sessions.error();
+    MONOPLANE_TRY(sessions);
     dataset.sessions = std::move(sessions).value();
     derive_session_fields(dataset.trials);
     return dataset;

@@ -4,12 +4,12 @@
 
 namespace monoplane::app {
 
-Result<bool> write_png(const std::filesystem::path& path, const modes::RgbaImage& image) {
+Result<void> write_png(const std::filesystem::path& path, const modes::RgbaImage& image) {
     const int ok =
         stbi_write_png(path.c_str(), static_cast<int>(image.width), static_cast<int>(image.height),
                        4, image.pixels.data(), static_cast<int>(image.width * 4));
     if (!ok) return Error{"could not write " + path.string()};
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::app

@@ -8,6 +8,6 @@
 
 namespace monoplane::app {
 
-Result<bool> write_png(const std::filesystem::path& path, const modes::RgbaImage& image);
+Result<void> write_png(const std::filesystem::path& path, const modes::RgbaImage& image);
 
 }  // namespace monoplane::app

@@ -220,7 +220,7 @@ void SvgWriter::points_attribute(const std::vector<Point>& points) {
     out_ += "\"";
 }
 
-Result<bool> write_svg_file(const std::filesystem::path& path, std::string_view svg) {
+Result<void> write_svg_file(const std::filesystem::path& path, std::string_view svg) {
     std::ofstream file(path, std::ios::binary | std::ios::trunc);
     if (!file) {
         return Error{"cannot open " + path.string() + " for writing (" + std::strerror(errno) +
@@ -232,7 +232,7 @@ Result<bool> write_svg_file(const std::filesystem::path& path, std::string_view 
         return Error{"cannot write " + path.string() + " (" + std::strerror(errno) +
                      "): is the disk full?"};
     }
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::charts

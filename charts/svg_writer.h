@@ -90,6 +90,6 @@ class SvgWriter {
 };
 
 // Writes `svg` to `path` (replacing it); the error says which file and why, for a user to act on.
-Result<bool> write_svg_file(const std::filesystem::path& path, std::string_view svg);
+Result<void> write_svg_file(const std::filesystem::path& path, std::string_view svg);
 
 }  // namespace monoplane::charts

@@ -61,7 +61,7 @@ Result<HmdProfile> load_hmd_profile(std::string_view name_or_path) {
                      "' is a directory; expected a TOML file or one of " + builtin_names_text()};
     }
     Result<std::string> text = read_text_file(path);
-    if (!text) return text.error();
+    MONOPLANE_TRY(text);
     return parse_hmd_profile(*text, name_or_path);
 }
 

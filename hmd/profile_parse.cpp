@@ -210,7 +210,7 @@ std::optional<EyeReading> read_eye(const TomlScope& root, std::string_view eye_n
 
 Result<HmdProfile> parse_hmd_profile(std::string_view toml_text, std::string_view source_name) {
     Result<toml::table> document = parse_toml(toml_text, source_name);
-    if (!document) return document.error();
+    MONOPLANE_TRY(document);
 
     // Every reader records its problems and goes on, so the user sees all of them at once.
     TomlProblems problems(source_name);

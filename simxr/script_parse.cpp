@@ -10,10 +10,10 @@
 
 #include <toml++/toml.h>
 
-#include "simxr/interaction_profiles.h"
-#include "simxr/script.h"
 #include "common/toml/toml_keys.h"
 #include "common/toml/toml_problems.h"
+#include "simxr/interaction_profiles.h"
+#include "simxr/script.h"
 
 namespace monoplane::simxr {
 namespace {
@@ -286,7 +286,7 @@ void read_inputs(const toml::table& root, TomlProblems& problems, Script& script
 Result<Script> default_script() {
     Script script;
     auto profile = hmd::load_hmd_profile(script.hmd_name);
-    if (!profile) return profile.error();
+    MONOPLANE_TRY(profile);
     script.hmd = std::move(profile).value();
     return script;
 }
@@ -300,9 +300,9 @@ std::int64_t Script::frame_period_ns() const {
 Result<Script> parse_script(std::string_view toml_text, const std::filesystem::path& source_path) {
     const std::string source = source_path.string();
     auto parsed = parse_toml(toml_text, source);
-    if (!parsed) return parsed.error();
+    MONOPLANE_TRY(parsed);
     auto defaults = default_script();
-    if (!defaults) return defaults.error();
+    MONOPLANE_TRY(defaults);
     Script script = std::move(defaults).value();
     script.source = source;
 

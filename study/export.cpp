@@ -216,17 +216,17 @@ Result<ExportFormat> parse_export_format(std::string_view name) {
 OutputKind export_output_kind(ExportFormat format) {
     switch (format) {
         case ExportFormat::Csv:
-            return {"export of --format csv", [](std::string_view head) {
+            return {"csv export", [](std::string_view head) {
                         return csv_header_starts_with(head, export_columns(), 5);
                     }};
         case ExportFormat::Json:
-            return {"export of --format json", is_json_export};
+            return {"json export", is_json_export};
         case ExportFormat::FramesCsv:
-            return {"export of --format frames-csv", [](std::string_view head) {
+            return {"frames-csv export", [](std::string_view head) {
                         return csv_header_starts_with(head, frame_export_columns(), 5);
                     }};
         case ExportFormat::NotesCsv:
-            return {"export of --format notes-csv", [](std::string_view head) {
+            return {"notes-csv export", [](std::string_view head) {
                         return csv_header_starts_with(head, notes_export_columns(), 7);
                     }};
     }
@@ -285,11 +285,11 @@ namespace {
 // trial started), for the notes export.
 Result<ExportData> collect_notes(const StudyStore& store) {
     Result<std::vector<RosterRow>> roster = store.roster();
-    if (!roster) return roster.error();
+    MONOPLANE_TRY(roster);
     ExportData data;
     for (const RosterRow& row : *roster) {
         Result<SessionInfo> info = store.session(row.session_id);
-        if (!info) return info.error();
+        MONOPLANE_TRY(info);
         data.sessions.emplace(row.session_id, std::move(info).value());
     }
     return data;
@@ -320,13 +320,13 @@ std::vector<std::string> declared_variables(const std::map<std::int64_t, Session
 Result<ExportData> collect_export(const StudyStore& store, ExportFormat format) {
     if (format == ExportFormat::NotesCsv) return collect_notes(store);
     Result<std::vector<TrialRecord>> trials = store.trials();
-    if (!trials) return trials.error();
+    MONOPLANE_TRY(trials);
     ExportData data;
     data.trials = std::move(trials).value();
     for (const TrialRecord& record : data.trials) {
         if (data.sessions.contains(record.session_id)) continue;
         Result<SessionInfo> info = store.session(record.session_id);
-        if (!info) return info.error();
+        MONOPLANE_TRY(info);
         data.sessions.emplace(record.session_id, std::move(info).value());
     }
     data.variable_names = declared_variables(data.sessions);
@@ -334,13 +334,13 @@ Result<ExportData> collect_export(const StudyStore& store, ExportFormat format) 
         if (info.procedure != Procedure::Staircase) continue;
         Result<std::map<int, ThresholdEstimate>> estimates =
             replay_staircase_estimates(info, data.trials);
-        if (!estimates) return estimates.error();
+        MONOPLANE_TRY(estimates);
         data.staircase_estimates.emplace(id, std::move(estimates).value());
     }
     if (format != ExportFormat::FramesCsv) return data;
     for (const auto& [id, info] : data.sessions) {
         Result<std::vector<FrameRecord>> frames = store.frames(id);
-        if (!frames) return frames.error();
+        MONOPLANE_TRY(frames);
         data.frames.emplace(id, std::move(frames).value());
     }
     return data;
@@ -554,28 +554,25 @@ void write_json(const ExportData& data, std::ostream& out) {
     out << json.take();
 }
 
-Result<bool> export_trials(const StudyStore& store, ExportFormat format, std::ostream& out) {
+Result<void> export_trials(const StudyStore& store, ExportFormat format, std::ostream& out) {
     Result<ExportData> data = collect_export(store, format);
-    if (!data) return data.error();
+    MONOPLANE_TRY(data);
     write_export(*data, format, out);
     out.flush();
     if (!out.good()) return Error{"writing the export to the output stream failed"};
-    return true;
+    return Ok{};
 }
 
-Result<bool> export_trials(const StudyStore& store, ExportFormat format,
+Result<void> export_trials(const StudyStore& store, ExportFormat format,
                            const std::filesystem::path& path, bool force) {
     // Checked before anything is read or written: a refusal changes nothing.
-    if (Result<bool> allowed =
-            check_output(path, export_output_kind(format), {store.path()}, force);
-        !allowed)
-        return allowed;
+    MONOPLANE_TRY(check_output(path, export_output_kind(format), {store.path()}, force));
     // Collected before the file is begun: a database error leaves no file behind at all.
     Result<ExportData> data = collect_export(store, format);
-    if (!data) return data.error();
-    return write_file_atomically(path, [&](std::ostream& out) -> Result<bool> {
+    MONOPLANE_TRY(data);
+    return write_file_atomically(path, [&](std::ostream& out) -> Result<void> {
         write_export(*data, format, out);
-        return true;
+        return Ok{};
     });
 }
 

@@ -70,7 +70,7 @@ const std::vector<std::string_view>& notes_export_columns();
 
 // How an earlier export of `format` is recognised, for check_output (study/output_file.h): a
 // CSV by the start of its header line, the JSON export by its shape (an array of objects whose
-// first key is "participant").
+// first key is "participant"). Named "<format> export" (e.g. "csv export").
 OutputKind export_output_kind(ExportFormat format);
 
 // Pure formatting of collected data.
@@ -82,11 +82,11 @@ void write_frames_csv(const ExportData& data, std::ostream& out);
 void write_notes_csv(const ExportData& data, std::ostream& out);
 
 // Collects and writes. The path form first checks `path` with check_output (the store's own
-// file is an input; `force` is --force), then writes a temporary file beside `path` and renames
+// file is an input), then writes a temporary file beside `path` and renames
 // it over `path` only when complete, so a failure never leaves a truncated export and a refusal
 // changes nothing.
-Result<bool> export_trials(const StudyStore& store, ExportFormat format, std::ostream& out);
-Result<bool> export_trials(const StudyStore& store, ExportFormat format,
+Result<void> export_trials(const StudyStore& store, ExportFormat format, std::ostream& out);
+Result<void> export_trials(const StudyStore& store, ExportFormat format,
                            const std::filesystem::path& path, bool force = false);
 
 // Building blocks, exposed for tests and other writers.

@@ -73,7 +73,7 @@ Result<FileDigest> digest_file(const std::filesystem::path& path) {
         return Error{"cannot open '" + path.string() + "': " + std::strerror(errno)};
     }
     Result<DigestContext> context = start_sha256();
-    if (!context) return context.error();
+    MONOPLANE_TRY(context);
     constexpr std::size_t kPiece = 64 << 10;  // large files never sit in memory whole
     std::vector<char> piece(kPiece);
     FileDigest digest;
@@ -87,7 +87,7 @@ Result<FileDigest> digest_file(const std::filesystem::path& path) {
     }
     if (file.bad()) return Error{"cannot read '" + path.string() + "'"};
     Result<std::string> text = finish_sha256(context->get());
-    if (!text) return text.error();
+    MONOPLANE_TRY(text);
     digest.sha256 = std::move(text).value();
     return digest;
 }

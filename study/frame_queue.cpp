@@ -20,15 +20,15 @@ void FrameQueue::clear() {
     gpu_.clear();
 }
 
-Result<bool> FrameQueue::write(const sqlite::Connection& db) const {
-    if (empty()) return true;
+Result<void> FrameQueue::write(const sqlite::Connection& db) const {
+    if (empty()) return Ok{};
     Result<Statement> insert = Statement::prepare(
         db,
         "INSERT OR REPLACE INTO frames (session_id, frame, trial_index, shown, display_time_ns, "
         "cpu_ms, gpu_ms, missed, head_x, head_y, head_z, head_qw, head_qx, head_qy, head_qz, "
         "pipelines_created, driver_compiles) "
         "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    if (!insert) return insert.error();
+    MONOPLANE_TRY(insert);
     for (const Row& row : rows_) {
         const FrameRecord& f = row.frame;
         Statement& s = insert.value();
@@ -42,13 +42,13 @@ Result<bool> FrameQueue::write(const sqlite::Connection& db) const {
         s.bind(16, f.pipelines_created).bind(17, f.driver_compiles);
         const std::string what = "logging frame " + std::to_string(f.frame) + " of session " +
                                  std::to_string(row.session_id);
-        if (Result<bool> ok = s.run(what); !ok) return ok;
+        MONOPLANE_TRY(s.run(what));
     }
     Result<Statement> update =
         Statement::prepare(db,
                            "UPDATE frames SET gpu_ms = ?, mono_plane = ? WHERE session_id = ? AND "
                            "frame = ?");
-    if (!update) return update.error();
+    MONOPLANE_TRY(update);
     for (const GpuTime& g : gpu_) {
         update.value().reset();
         update.value()
@@ -56,9 +56,9 @@ Result<bool> FrameQueue::write(const sqlite::Connection& db) const {
             .bind(2, g.mono_plane)
             .bind(3, g.session_id)
             .bind(4, g.frame);
-        if (Result<bool> ok = update.value().run("logging a frame's GPU time"); !ok) return ok;
+        MONOPLANE_TRY(update.value().run("logging a frame's GPU time"));
     }
-    return true;
+    return Ok{};
 }
 
 Result<std::int64_t> next_frame_number(const sqlite::Connection& db, std::int64_t session_id) {
@@ -66,10 +66,9 @@ Result<std::int64_t> next_frame_number(const sqlite::Connection& db, std::int64_
         db,
         "SELECT max(coalesce((SELECT max(frame) FROM frames WHERE session_id = ?1), -1), "
         "coalesce((SELECT max(frame) FROM events WHERE session_id = ?1), -1)) + 1");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
-    Result<bool> row = stmt.value().step("reading the session's last frame number");
-    if (!row) return row.error();
+    MONOPLANE_TRY(stmt.value().step("reading the session's last frame number"));
     return stmt.value().int64(0);
 }
 
@@ -82,12 +81,12 @@ Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,
         "driver_compiles FROM frames WHERE "
         "session_id = ? "
         "ORDER BY frame");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
     std::vector<FrameRecord> frames;
     for (;;) {
         Result<bool> row = stmt.value().step("reading the frame log");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) break;
         const Statement& s = stmt.value();
         FrameRecord f;

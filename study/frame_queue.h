@@ -24,7 +24,7 @@ class FrameQueue {
     // Writes every queued row, then the GPU times, inside the caller's open transaction (a row
     // written again replaces the old one). Keeps the queue: clear() it once the transaction has
     // committed, so a failed commit loses nothing.
-    Result<bool> write(const sqlite::Connection& db) const;
+    Result<void> write(const sqlite::Connection& db) const;
     void clear();
 
   private:

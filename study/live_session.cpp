@@ -49,18 +49,18 @@ Result<std::unique_ptr<LiveSession>> LiveSession::open(StudyStore& store, std::i
                                                        const Protocol& protocol,
                                                        const LiveOptions& options) {
     Result<Schedule> schedule = store.load_schedule(session_id);
-    if (!schedule) return schedule.error();
+    MONOPLANE_TRY(schedule);
     Result<int> first = store.first_undecided_trial(session_id);
-    if (!first) return first.error();
+    MONOPLANE_TRY(first);
     // Every decision so far: a staircase's slots skipped (stopped) may lie before decided ones.
     Result<std::vector<TrialRecord>> history = store.trials(session_id);
-    if (!history) return history.error();
+    MONOPLANE_TRY(history);
     // Where it stood among the protocol's screens is in the events alone.
     Result<std::vector<TrialEvent>> events = store.events(session_id);
-    if (!events) return events.error();
+    MONOPLANE_TRY(events);
     // A break's time also shows in the frame log of a headset session.
     Result<std::vector<FrameRecord>> frames = store.frames(session_id);
-    if (!frames) return frames.error();
+    MONOPLANE_TRY(frames);
     return begin(store, session_id, protocol, options, std::move(schedule).value(), *first,
                  *history, *events, *frames);
 }
@@ -69,8 +69,7 @@ Result<std::unique_ptr<LiveSession>> LiveSession::begin(
     SessionLog& log, std::int64_t session_id, const Protocol& protocol, const LiveOptions& options,
     Schedule schedule, int first_trial, const std::vector<TrialRecord>& history,
     const std::vector<TrialEvent>& events, const std::vector<FrameRecord>& frames) {
-    Result<bool> ok = log.set_status(session_id, SessionStatus::Running);
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(log.set_status(session_id, SessionStatus::Running));
     auto session = std::unique_ptr<LiveSession>(
         new LiveSession(log, session_id, protocol, options, std::move(schedule), first_trial));
     std::vector<const TrialRecord*> decided;
@@ -108,13 +107,12 @@ void LiveSession::committed(const std::string& what) const {
     if (options_.on_committed) options_.on_committed(what);
 }
 
-Result<bool> LiveSession::log(const std::vector<TrialEvent>& events) {
+Result<void> LiveSession::log(const std::vector<TrialEvent>& events) {
     for (const TrialEvent& e : events) {
-        Result<bool> ok = log_.append_event(session_id_, e);
-        if (!ok) return ok;
+        MONOPLANE_TRY(log_.append_event(session_id_, e));
         committed(describe(e));
     }
-    return true;
+    return Ok{};
 }
 
 LiveScreen LiveSession::screen() const {
@@ -171,9 +169,8 @@ bool LiveSession::finished() const {
            (kind_ == ScreenKind::End && screen_visible_);
 }
 
-Result<bool> LiveSession::finish(SessionStatus status) {
-    Result<bool> ok = log_.set_status(session_id_, status);
-    if (!ok) return ok;
+Result<void> LiveSession::finish(SessionStatus status) {
+    MONOPLANE_TRY(log_.set_status(session_id_, status));
     // A completed session's end screen stays up for the participant.
     if (status == SessionStatus::Aborted) {
         kind_ = ScreenKind::Aborted;
@@ -181,7 +178,7 @@ Result<bool> LiveSession::finish(SessionStatus status) {
         kind_ = ScreenKind::Finished;
     }
     committed("session " + std::string(session_status_name(status)));
-    return true;
+    return Ok{};
 }
 
 Result<bool> LiveSession::prepare_next_trial() {
@@ -193,8 +190,7 @@ Result<bool> LiveSession::prepare_next_trial() {
         if (!trial.adaptive || !std::isnan(trial.mono_plane)) return true;
         if (staircases_->finished(trial.scene)) continue;  // its staircase has stopped
         trial.mono_plane = staircases_->next_mono_plane(trial.scene);
-        Result<bool> ok = log_.record_stimulus(session_id_, trial);
-        if (!ok) return ok;
+        MONOPLANE_TRY(log_.record_stimulus(session_id_, trial));
         committed("trial " + std::to_string(trial.index) + " stimulus m " +
                   std::to_string(trial.mono_plane));
         return true;
@@ -202,9 +198,9 @@ Result<bool> LiveSession::prepare_next_trial() {
     return false;
 }
 
-Result<bool> LiveSession::start_next_trial(std::int64_t time_ns) {
+Result<void> LiveSession::start_next_trial(std::int64_t time_ns) {
     Result<bool> prepared = prepare_next_trial();
-    if (!prepared) return prepared;
+    MONOPLANE_TRY(prepared);
     if (!*prepared) {
         machine_.reset();
         if (protocol_.questionnaire.items.empty()) return complete();
@@ -212,7 +208,7 @@ Result<bool> LiveSession::start_next_trial(std::int64_t time_ns) {
         // The middle of the scale: no answer is suggested by the starting position.
         selection_ = (protocol_.questionnaire.scale_points + 1) / 2;
         committed("questionnaire");
-        return true;
+        return Ok{};
     }
     machine_.emplace(schedule_.trials[next_trial_], protocol_.require_both_viewed);
     ++next_trial_;
@@ -221,41 +217,40 @@ Result<bool> LiveSession::start_next_trial(std::int64_t time_ns) {
     trial_started_ns_ = -1;
     kind_ = ScreenKind::Trial;
     Result<std::vector<TrialEvent>> events = machine_->start(time_ns);
-    if (!events) return events.error();
+    MONOPLANE_TRY(events);
     return log(*events);
 }
 
-Result<bool> LiveSession::frame_presented(std::int64_t frame, std::int64_t time_ns) {
+Result<void> LiveSession::frame_presented(std::int64_t frame, std::int64_t time_ns) {
     latest_ns_ = std::max(latest_ns_, time_ns);
     if (on_page_screen()) return screen_presented(frame, time_ns);
     if (kind_ == ScreenKind::Neutral) {
         if (neutral_since_ns_ < 0) neutral_since_ns_ = time_ns;
         // The trial starts now and its label 1 is visible from the next frame on.
         if (time_ns - neutral_since_ns_ >= options_.neutral_ns) return start_next_trial(time_ns);
-        return true;
+        return Ok{};
     }
-    if (kind_ != ScreenKind::Trial) return true;
+    if (kind_ != ScreenKind::Trial) return Ok{};
     const std::vector<TrialEvent> events = machine_->frame_presented(frame, time_ns);
     if (trial_started_ns_ < 0 && machine_->visible_label() != 0) trial_started_ns_ = time_ns;
     return log(events);
 }
 
-Result<bool> LiveSession::record_answer(int item, int value) {
+Result<void> LiveSession::record_answer(int item, int value) {
     const Questionnaire& q = protocol_.questionnaire;
-    Result<bool> ok = log_.record_answer(session_id_, item, q.items[item], value);
-    if (!ok) return ok;
+    MONOPLANE_TRY(log_.record_answer(session_id_, item, q.items[item], value));
     answers_[item] = value;
     committed("answer " + std::to_string(item + 1) + ": " + std::to_string(value));
     for (int a : answers_) {
         if (a == 0) {
             selection_ = (q.scale_points + 1) / 2;
-            return true;
+            return Ok{};
         }
     }
     return complete();
 }
 
-Result<bool> LiveSession::answer(int item, int value) {
+Result<void> LiveSession::answer(int item, int value) {
     if (kind_ != ScreenKind::Questionnaire) {
         return Error{"the questionnaire is not being asked (screen: " +
                      std::string(screen_kind_name(kind_)) + ")"};
@@ -268,13 +263,13 @@ Result<bool> LiveSession::answer(int item, int value) {
     return record_answer(item, value);
 }
 
-Result<bool> LiveSession::complete() {
+Result<void> LiveSession::complete() {
     if (!protocol_.day.end) return finish(SessionStatus::Completed);
     show_screen(ScreenKind::End);  // completed when it shows (screen_presented)
-    return true;
+    return Ok{};
 }
 
-Result<bool> LiveSession::note(const std::string& text, NoteSource source) {
+Result<void> LiveSession::note(const std::string& text, NoteSource source) {
     if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
         return Error{"a note must not be empty"};
     }
@@ -283,25 +278,22 @@ Result<bool> LiveSession::note(const std::string& text, NoteSource source) {
     note.source = source;
     if (latest_ns_ >= 0) note.runtime_time_ns = latest_ns_;
     note.trial_index = last_trial_shown_;
-    Result<bool> ok = log_.add_note(session_id_, note);
-    if (!ok) return ok;
+    MONOPLANE_TRY(log_.add_note(session_id_, note));
     // The text stays out of the line: it may hold line breaks, and the line is parsed by tests.
     committed("note " + std::string(note_source_name(source)) +
               (last_trial_shown_ ? " trial " + std::to_string(*last_trial_shown_) : "") + " t " +
               std::to_string(latest_ns_));
-    return true;
+    return Ok{};
 }
 
 Result<std::string> LiveSession::abort_session(std::int64_t time_ns) {
     if (machine_ && kind_ == ScreenKind::Trial) {
         Result<std::vector<TrialEvent>> events = machine_->abort(time_ns);
         if (events) {
-            Result<bool> ok = log(*events);
-            if (!ok) return ok.error();
+            MONOPLANE_TRY(log(*events));
         }
     }
-    Result<bool> ok = finish(SessionStatus::Aborted);
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(finish(SessionStatus::Aborted));
     return std::string("session aborted");
 }
 
@@ -313,8 +305,7 @@ Result<std::string> LiveSession::questionnaire_request(LiveInput input) {
     }
     if (input == LiveInput::Confirm) {
         const int item = screen().question;
-        Result<bool> ok = record_answer(item, selection_);
-        if (!ok) return ok.error();
+        MONOPLANE_TRY(record_answer(item, selection_));
         return "answered item " + std::to_string(item + 1);
     }
     return std::string(live_input_name(input)) + " ignored during the questionnaire";
@@ -353,17 +344,14 @@ Result<std::string> LiveSession::trial_request(LiveInput input, std::int64_t tim
     if (!events) {
         // Refused or not applicable now: the refusal is part of the record, the rest is not.
         if (input == LiveInput::Confirm && machine_->last_refusal()) {
-            Result<bool> ok = log({*machine_->last_refusal()});
-            if (!ok) return ok.error();
+            MONOPLANE_TRY(log({*machine_->last_refusal()}));
         }
         return events.error().message;
     }
-    Result<bool> ok = log(*events);
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(log(*events));
     if (machine_->state() != TrialState::Decided) return std::string(live_input_name(input));
     const int index = machine_->trial().index;
-    ok = log_.record_outcome(session_id_, index, machine_->outcome());
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(log_.record_outcome(session_id_, index, machine_->outcome()));
     if (staircases_) staircases_->record(machine_->trial(), machine_->outcome());
     committed("trial " + std::to_string(index) + " outcome choice " +
               std::to_string(machine_->outcome().choice));

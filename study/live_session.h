@@ -121,32 +121,32 @@ class LiveSession {
     Result<std::string> request(LiveInput input, std::int64_t time_ns);
     // The experimenter's answer to questionnaire item `item` (1..scale), entered in the window:
     // recorded at once; the questionnaire moves past answered items.
-    Result<bool> answer(int item, int value);
+    Result<void> answer(int item, int value);
     // The experimenter's note, typed in the window: stored at once with the session's latest time
     // (of its latest presented frame or request; none before either) and the trial on screen or
     // the last one shown (none before the first). Refuses a blank note.
-    Result<bool> note(const std::string& text, NoteSource source = NoteSource::Window);
+    Result<void> note(const std::string& text, NoteSource source = NoteSource::Window);
     // Frame `frame` became visible at time_ns: pending changes take effect and are logged; the
     // neutral screen ends and the next trial starts when its time is up.
-    Result<bool> frame_presented(std::int64_t frame, std::int64_t time_ns);
+    Result<void> frame_presented(std::int64_t frame, std::int64_t time_ns);
 
   private:
     LiveSession(SessionLog& log, std::int64_t session_id, const Protocol& protocol,
                 const LiveOptions& options, Schedule schedule, int first_trial);
 
-    Result<bool> log(const std::vector<TrialEvent>& events);
+    Result<void> log(const std::vector<TrialEvent>& events);
     void committed(const std::string& what) const;
-    Result<bool> start_next_trial(std::int64_t time_ns);
+    Result<void> start_next_trial(std::int64_t time_ns);
     // Skips the slots of stopped staircases and has the next adaptive trial's m chosen and
     // recorded; false when no trial is left.
     Result<bool> prepare_next_trial();
-    Result<bool> record_answer(int item, int value);
+    Result<void> record_answer(int item, int value);
     Result<std::string> abort_session(std::int64_t time_ns);
     Result<std::string> questionnaire_request(LiveInput input);
     Result<std::string> trial_request(LiveInput input, std::int64_t time_ns);
     // The end screen when the protocol has one (completed when it shows), else completed now.
-    Result<bool> complete();
-    Result<bool> finish(SessionStatus status);
+    Result<void> complete();
+    Result<void> finish(SessionStatus status);
 
     // The protocol's screens (live_session_screens.cpp; the rules in study/session_screens.h).
     // Where a resumed (or new) session starts: a screen, or the neutral screen before a trial.
@@ -160,10 +160,10 @@ class LiveSession {
     // choosing an adaptive trial's m; none when no trial is left.
     std::optional<std::size_t> peek_next_trial() const;
     bool on_page_screen() const;
-    Result<bool> screen_presented(std::int64_t frame, std::int64_t time_ns);
+    Result<void> screen_presented(std::int64_t frame, std::int64_t time_ns);
     Result<std::string> screen_request(LiveInput input, std::int64_t time_ns);
     Result<std::string> confirm_screen(std::int64_t time_ns);
-    Result<bool> log_screen(EventKind kind, std::int64_t time_ns, std::int64_t frame);
+    Result<void> log_screen(EventKind kind, std::int64_t time_ns, std::int64_t frame);
 
     SessionLog& log_;
     std::int64_t session_id_;

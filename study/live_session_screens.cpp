@@ -108,7 +108,7 @@ void LiveSession::resume_screens(const std::vector<TrialEvent>& events,
     enter_next(-1);
 }
 
-Result<bool> LiveSession::log_screen(EventKind kind, std::int64_t time_ns, std::int64_t frame) {
+Result<void> LiveSession::log_screen(EventKind kind, std::int64_t time_ns, std::int64_t frame) {
     TrialEvent event;
     event.kind = kind;
     event.trial_index = -1;
@@ -120,13 +120,12 @@ Result<bool> LiveSession::log_screen(EventKind kind, std::int64_t time_ns, std::
     return log({event});
 }
 
-Result<bool> LiveSession::screen_presented(std::int64_t frame, std::int64_t time_ns) {
+Result<void> LiveSession::screen_presented(std::int64_t frame, std::int64_t time_ns) {
     if (!screen_visible_) {
         screen_visible_ = true;
         if (kind_ == ScreenKind::Break) break_visible_ns_ = time_ns;
         if (!break_resumed_) {
-            Result<bool> ok = log_screen(shown_event(kind_), time_ns, frame);
-            if (!ok) return ok;
+            MONOPLANE_TRY(log_screen(shown_event(kind_), time_ns, frame));
         }
         if (kind_ == ScreenKind::End) return finish(SessionStatus::Completed);
     }
@@ -135,7 +134,7 @@ Result<bool> LiveSession::screen_presented(std::int64_t frame, std::int64_t time
         break_remaining_ns_ =
             std::max<std::int64_t>(0, break_min_ns_ - (time_ns - break_visible_ns_));
     }
-    return true;
+    return Ok{};
 }
 
 Result<std::string> LiveSession::screen_request(LiveInput input, std::int64_t time_ns) {
@@ -161,8 +160,7 @@ Result<std::string> LiveSession::confirm_screen(std::int64_t time_ns) {
         }
         kind = EventKind::BreakEnded;
     }
-    Result<bool> ok = log_screen(kind, time_ns, -1);
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(log_screen(kind, time_ns, -1));
     const int pages = static_cast<int>(protocol_.day.instructions.size());
     if (kind_ == ScreenKind::Instructions) {
         screens_.instructions_page = std::max(screens_.instructions_page, page_ + 1);

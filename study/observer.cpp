@@ -153,7 +153,7 @@ std::vector<std::string> observer_names() {
 Result<std::unique_ptr<Observer>> make_observer(std::string_view name, std::uint64_t seed) {
     if (name.starts_with(kPsychometricPrefix)) {
         Result<PsychometricFunction> function = parse_psychometric_spec(name);
-        if (!function) return function.error();
+        MONOPLANE_TRY(function);
         return std::unique_ptr<Observer>(new PsychometricObserver(*function, seed));
     }
     if (name == "default") return std::unique_ptr<Observer>(new DefaultObserver(seed));

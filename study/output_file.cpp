@@ -48,8 +48,8 @@ bool same_file(const fs::path& a, const fs::path& b) {
     return !ec && ca == cb;
 }
 
-// The reason `out` may never be written, whatever --force says, when it is one of the inputs
-// or one of an input database's companion files.
+// The reason `out` may never be written, forced or not, when it is one of the inputs or one of
+// an input database's companion files.
 std::optional<std::string> input_conflict(const fs::path& out,
                                           const std::vector<fs::path>& inputs) {
     for (const fs::path& input : inputs) {
@@ -80,7 +80,7 @@ std::optional<std::string> input_conflict(const fs::path& out,
     return std::nullopt;
 }
 
-// Up to kOutputHeadBytes from the start of a file.
+// Up to kOutputHeadBytes from the start of a file; the error says why it cannot be read.
 Result<std::string> read_head(const fs::path& path) {
     errno = 0;
     std::ifstream in(path, std::ios::binary);
@@ -89,8 +89,7 @@ Result<std::string> read_head(const fs::path& path) {
     if (!in && !in.eof()) {
         const int err = errno;
         return Error{"cannot read " + quoted(path) + " to tell whether it may be replaced" +
-                     (err != 0 ? std::string(": ") + std::strerror(err) : std::string()) +
-                     "; choose another --out. Nothing was written."};
+                     (err != 0 ? std::string(": ") + std::strerror(err) : std::string())};
     }
     head.resize(static_cast<std::size_t>(in.gcount()));
     return head;
@@ -106,42 +105,45 @@ std::string first_line(std::string_view head) {
 }
 
 // The folder `out` goes into must exist: the output is written there and renamed.
-Result<bool> check_folder(const fs::path& out) {
+std::optional<OutputProblem> folder_problem(const fs::path& out) {
     const fs::path folder = out.parent_path().empty() ? fs::path(".") : out.parent_path();
     std::error_code ec;
     const fs::file_status status = fs::status(folder, ec);
     if (!fs::exists(status)) {
-        return Error{"the folder " + quoted(folder) + " for the output " + quoted(out) +
-                     " does not exist; create it first or choose another --out. Nothing was "
-                     "written."};
+        return OutputProblem{
+            OutputRefusal::NoFolder,
+            "the folder " + quoted(folder) + " for the output " + quoted(out) + " does not exist"};
     }
     if (!fs::is_directory(status)) {
-        return Error{quoted(folder) + " in the output path " + quoted(out) +
-                     " is not a folder; choose another --out. Nothing was written."};
+        return OutputProblem{
+            OutputRefusal::FolderIsNoFolder,
+            quoted(folder) + " in the output path " + quoted(out) + " is not a folder"};
     }
-    return true;
+    return std::nullopt;
 }
 
 // `out` exists: what it is decides whether it may be replaced.
-Result<bool> check_existing(const fs::path& out, const OutputKind& kind, bool force) {
+std::optional<OutputProblem> existing_problem(const fs::path& out, const OutputKind& kind,
+                                              bool force) {
     std::error_code ec;
     if (!fs::is_regular_file(out, ec)) {
-        return Error{quoted(out) + " exists and is " +
-                     (fs::is_directory(out, ec) ? "a folder" : "not a regular file") +
-                     "; --out must name a file. Nothing was written."};
+        return OutputProblem{OutputRefusal::NotAFile,
+                             quoted(out) + " exists and is " +
+                                 (fs::is_directory(out, ec) ? "a folder" : "not a regular file")};
     }
     Result<std::string> head = read_head(out);
-    if (!head) return head.error();
+    if (!head) return OutputProblem{OutputRefusal::Unreadable, head.error().message};
     if (is_sqlite_head(*head)) {
-        return Error{quoted(out) +
-                     " is an SQLite database (perhaps a study's): refusing to replace it, also "
-                     "with --force; choose another --out. Nothing was written."};
+        return OutputProblem{OutputRefusal::IsADatabase,
+                             quoted(out) +
+                                 " is an SQLite database (perhaps a study's): refusing to "
+                                 "replace it"};
     }
-    if (kind.is_earlier_output && kind.is_earlier_output(*head)) return true;
-    if (force) return true;
-    return Error{quoted(out) + " exists and is not an earlier " + kind.name + ": it begins with " +
-                 first_line(*head) +
-                 ". Give --force to replace it, or choose another --out. Nothing was written."};
+    if (kind.is_earlier_output && kind.is_earlier_output(*head)) return std::nullopt;
+    if (force) return std::nullopt;
+    return OutputProblem{OutputRefusal::NotAnEarlierOutput,
+                         quoted(out) + " exists and is not an earlier " + kind.name +
+                             ": it begins with " + first_line(*head)};
 }
 
 }  // namespace
@@ -153,19 +155,33 @@ bool is_sqlite_file(const fs::path& path) {
     return is_sqlite_head(head);
 }
 
-Result<bool> check_output(const fs::path& out, const OutputKind& kind,
-                          const std::vector<fs::path>& inputs, bool force) {
-    if (out.empty()) return Error{"the output file name (--out) is empty"};
-    if (std::optional<std::string> conflict = input_conflict(out, inputs)) {
-        return Error{*conflict +
-                     "; choose another --out (--force never allows this). Nothing was "
-                     "written."};
-    }
+std::optional<OutputProblem> output_problem(const fs::path& out, const OutputKind& kind,
+                                            const std::vector<fs::path>& inputs, bool force) {
+    if (out.empty()) return OutputProblem{OutputRefusal::NoName, "the output file name is empty"};
+    if (std::optional<std::string> conflict = input_conflict(out, inputs))
+        return OutputProblem{OutputRefusal::IsAnInput, *conflict};
     std::error_code ec;
     const fs::file_status status = fs::status(out, ec);  // through a symbolic link
-    if (fs::exists(status)) return check_existing(out, kind, force);
+    if (fs::exists(status)) return existing_problem(out, kind, force);
     // A new file (or a symbolic link to nothing, which the output replaces).
-    return check_folder(out);
+    return folder_problem(out);
+}
+
+Result<void> check_output(const fs::path& out, const OutputKind& kind,
+                          const std::vector<fs::path>& inputs, bool force) {
+    const std::optional<OutputProblem> problem = output_problem(out, kind, inputs, force);
+    if (!problem) return Ok{};
+    switch (problem->refusal) {
+        case OutputRefusal::NoName:
+            return Error{problem->what};
+        case OutputRefusal::IsAnInput:
+        case OutputRefusal::IsADatabase:
+            return Error{problem->what + ", even when forced. Nothing was written."};
+        case OutputRefusal::NotAnEarlierOutput:
+            return Error{problem->what + "; it is replaced only when forced. Nothing was written."};
+        default:
+            return Error{problem->what + ". Nothing was written."};
+    }
 }
 
 namespace {
@@ -230,11 +246,11 @@ Result<std::pair<int, fs::path>> create_temporary(const fs::path& target) {
 }
 
 // Writes through `write`, then flushes to disk; the error says what failed.
-Result<bool> fill(int fd, const fs::path& target,
-                  const std::function<Result<bool>(std::ostream&)>& write) {
+Result<void> fill(int fd, const fs::path& target,
+                  const std::function<Result<void>(std::ostream&)>& write) {
     DescriptorBuffer buffer(fd);
     std::ostream stream(&buffer);
-    if (Result<bool> written = write(stream); !written) return written;
+    MONOPLANE_TRY(write(stream));
     stream.flush();
     if (!stream.good() || buffer.error() != 0) {
         const int err = buffer.error();
@@ -246,7 +262,7 @@ Result<bool> fill(int fd, const fs::path& target,
         return Error{"writing " + quoted(target) + " to disk failed: " + std::strerror(errno) +
                      "; it was left as it was."};
     }
-    return true;
+    return Ok{};
 }
 
 // After the rename, the folder's entry is made durable too; a failure there loses nothing that
@@ -261,19 +277,19 @@ void sync_folder(const fs::path& folder) {
 
 }  // namespace
 
-Result<bool> write_file_atomically(const fs::path& out,
-                                   const std::function<Result<bool>(std::ostream&)>& write) {
+Result<void> write_file_atomically(const fs::path& out,
+                                   const std::function<Result<void>(std::ostream&)>& write) {
     std::error_code ec;
     // Through a symbolic link to an existing file: replace that file, keep the link.
     const fs::path target = fs::is_symlink(fs::symlink_status(out, ec)) && fs::exists(out, ec)
                                 ? fs::canonical(out, ec)
                                 : out;
     Result<std::pair<int, fs::path>> temporary = create_temporary(target);
-    if (!temporary) return temporary.error();
+    MONOPLANE_TRY(temporary);
     const auto [fd, temporary_path] = *temporary;
     struct stat existing {};
     if (::stat(target.c_str(), &existing) == 0) ::fchmod(fd, existing.st_mode & 07777);
-    Result<bool> filled = fill(fd, target, write);
+    Result<void> filled = fill(fd, target, write);
     if (::close(fd) != 0 && filled) {
         filled = Error{"writing " + quoted(target) + " failed: " + std::strerror(errno)};
     }
@@ -286,7 +302,7 @@ Result<bool> write_file_atomically(const fs::path& out,
         return filled;
     }
     sync_folder(target.parent_path());
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::study

@@ -1,23 +1,26 @@
 // Writing a command's output file without destroying what a lab already has (docs/data.md,
-// "Where an export may go"). A command checks its --out before it opens anything, then writes
+// "Where an export may go"). A command checks its output before it opens anything, then writes
 // the file beside its final place and renames it there when complete:
 //
 //   check_output(out, export_output_kind(format), {database}, force).value_or_throw();
 //   ... open the database, collect ...
-//   write_file_atomically(out, [&](std::ostream& s) { ...; return Result<bool>(true); });
+//   write_file_atomically(out, [&](std::ostream& s) -> Result<void> { ...; return Ok{}; });
 //
 // check_output refuses, with nothing changed:
-// - always (--force does not help): an output that is one of the command's inputs (the same
+// - always (`force` does not help): an output that is one of the command's inputs (the same
 //   file by any path: relative, through a symbolic link, a hard link) or an input database's
 //   -wal, -shm, -journal or -holds file; any SQLite database or write-ahead log (told by its
 //   header bytes, whatever its name); a folder or anything that is not a regular file;
 // - unless `force`: any other existing file that is not an earlier output of the same kind (a
 //   protocol, notes, another format's export), told by its first bytes;
-// and says so when the folder the output goes into does not exist.
+// and says so when the folder the output goes into does not exist. Its messages speak of the
+// output and of forcing; a command that names them otherwise (the CLI's --out and --force) asks
+// output_problem() and words the refusal itself.
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -29,18 +32,44 @@ namespace monoplane::study {
 
 // What a command writes, and how an earlier file of its own is told from anything else.
 struct OutputKind {
-    std::string name;  // for messages: "export of --format csv"
+    std::string name;  // for messages: "csv export"
     // True when `head`, the first bytes of an existing file (up to kOutputHeadBytes), is what an
-    // earlier run of this kind of output wrote: only such a file is replaced without --force.
+    // earlier run of this kind of output wrote: only such a file is replaced without `force`.
     std::function<bool(std::string_view head)> is_earlier_output;
 };
 
 inline constexpr std::size_t kOutputHeadBytes = 4096;
 
+// Why an output may not be written, so that a caller can say what to change in its own words.
+enum class OutputRefusal {
+    NoName,              // the output's name is empty
+    IsAnInput,           // one of the inputs, or a file beside an input database: never replaced
+    IsADatabase,         // an SQLite database or write-ahead log: never replaced
+    NotAFile,            // a folder, or something else that is not a regular file
+    Unreadable,          // it exists and cannot be read to tell what it is
+    NotAnEarlierOutput,  // another file: replaced only when forced
+    NoFolder,            // the folder it goes into does not exist
+    FolderIsNoFolder,    // what should be its folder is something else
+};
+
+struct OutputProblem {
+    OutputRefusal refusal;
+    // What is wrong, naming the file(s), without what to do about it: "'a.csv' exists and is a
+    // folder", "'a.csv' exists and is not an earlier csv export: it begins with 'x'".
+    std::string what;
+};
+
 // May `out` be written? `inputs`: the files the command reads (its databases), each compared
-// with `out` as the same file. Errors name the file, say why and whether --force would help;
-// true when writing may go ahead. Reads only: never creates, truncates or touches a file.
-Result<bool> check_output(const std::filesystem::path& out, const OutputKind& kind,
+// with `out` as the same file. None when writing may go ahead. Reads only: never creates,
+// truncates or touches a file.
+std::optional<OutputProblem> output_problem(const std::filesystem::path& out,
+                                            const OutputKind& kind,
+                                            const std::vector<std::filesystem::path>& inputs,
+                                            bool force);
+
+// output_problem() as an Error: its `what`, whether forcing would help, and that nothing was
+// written.
+Result<void> check_output(const std::filesystem::path& out, const OutputKind& kind,
                           const std::vector<std::filesystem::path>& inputs, bool force);
 
 // True when the file begins as an SQLite database or its write-ahead log does; false for
@@ -53,7 +82,7 @@ bool is_sqlite_file(const std::filesystem::path& path);
 // leaves `out` as it was and no temporary file behind. A new file gets the usual permissions
 // (0666 less the umask); a replaced one keeps its mode. When `out` is a symbolic link, the file
 // it points to is replaced and the link stays.
-Result<bool> write_file_atomically(const std::filesystem::path& out,
-                                   const std::function<Result<bool>(std::ostream&)>& write);
+Result<void> write_file_atomically(const std::filesystem::path& out,
+                                   const std::function<Result<void>(std::ostream&)>& write);
 
 }  // namespace monoplane::study

@@ -141,14 +141,14 @@ std::optional<std::string> value_problem(const ParticipantVariable& d, std::stri
 }
 
 std::string value_message(const ParticipantVariable& d, std::string_view value,
-                          const std::string& problem) {
-    const std::string prefix = "--var " + d.name + "=" + std::string(value) + ": ";
+                          const std::string& problem, const RequestNames& names) {
+    const std::string prefix = names.variable(d.name + "=" + std::string(value)) + ": ";
     if (d.type != VariableType::Choice) {
         return prefix + problem + "; " + d.name + " must be " + allowed_text(d);
     }
-    std::vector<std::string_view> names(d.choices.begin(), d.choices.end());
+    std::vector<std::string_view> choices(d.choices.begin(), d.choices.end());
     std::string message = prefix + "not " + allowed_text(d);
-    const std::string_view closest = closest_match(value, names);
+    const std::string_view closest = closest_match(value, choices);
     if (!closest.empty()) message += "; did you mean " + in_quotes(closest) + "?";
     return message;
 }
@@ -163,49 +163,52 @@ std::string declared_names(const std::vector<ParticipantVariable>& declarations)
 }
 
 std::string unknown_name_message(const std::vector<ParticipantVariable>& declarations,
-                                 const std::string& assignment, const std::string& name) {
+                                 const std::string& assignment, const std::string& name,
+                                 const RequestNames& request_names) {
     std::vector<std::string_view> names;
     for (const ParticipantVariable& d : declarations) names.push_back(d.name);
-    std::string message = "--var " + assignment + ": unknown variable " + in_quotes(name);
+    std::string message =
+        request_names.variable(assignment) + ": unknown variable " + in_quotes(name);
     const std::string_view closest = closest_match(name, names);
     if (!closest.empty()) return message + "; did you mean " + in_quotes(closest) + "?";
     return message + " (" + declared_names(declarations) + ")";
 }
 
-std::string missing_message(const ParticipantVariable& d) {
+std::string missing_message(const ParticipantVariable& d, const RequestNames& names) {
     return "variable " + in_quotes(d.name) + " is required" +
-           (d.help.empty() ? std::string() : " (" + d.help + ")") + ": give --var " + d.name +
-           "=VALUE, " + allowed_text(d);
+           (d.help.empty() ? std::string() : " (" + d.help + ")") + ": give " +
+           names.variable(d.name + "=VALUE") + ", " + allowed_text(d);
 }
 
 }  // namespace
 
 Result<std::vector<VariableValue>> check_variables(
     const std::vector<ParticipantVariable>& declarations,
-    const std::vector<std::string>& assignments) {
+    const std::vector<std::string>& assignments, const RequestNames& names) {
     std::vector<std::string> problems;
     std::vector<std::optional<std::string>> given(declarations.size());
     for (const std::string& assignment : assignments) {
         const std::size_t eq = assignment.find('=');
         if (eq == std::string::npos) {
-            problems.push_back("--var " + assignment + ": expected NAME=VALUE (" +
+            problems.push_back(names.variable(assignment) + ": expected NAME=VALUE (" +
                                declared_names(declarations) + ")");
             continue;
         }
         const std::string name = assignment.substr(0, eq);
         const auto declared = std::ranges::find(declarations, name, &ParticipantVariable::name);
         if (declared == declarations.end()) {
-            problems.push_back(unknown_name_message(declarations, assignment, name));
+            problems.push_back(unknown_name_message(declarations, assignment, name, names));
             continue;
         }
         std::optional<std::string>& slot =
             given[static_cast<std::size_t>(declared - declarations.begin())];
         if (slot) {
-            problems.push_back("--var " + assignment + ": variable " + in_quotes(name) +
+            problems.push_back(names.variable(assignment) + ": variable " + in_quotes(name) +
                                " is given twice; give each variable once");
             continue;
         }
-        Result<std::string> value = check_variable_value(*declared, assignment.substr(eq + 1));
+        Result<std::string> value =
+            check_variable_value(*declared, assignment.substr(eq + 1), names);
         if (!value) problems.push_back(value.error().message);
         slot = value ? *value : std::string();  // given, if wrongly: not "missing" as well
     }
@@ -215,7 +218,7 @@ Result<std::vector<VariableValue>> check_variables(
         if (given[i])
             values.push_back({d.name, d.type, *given[i]});
         else if (d.required)
-            problems.push_back(missing_message(d));
+            problems.push_back(missing_message(d, names));
     }
     if (problems.empty()) return values;
     std::string text;
@@ -224,10 +227,10 @@ Result<std::vector<VariableValue>> check_variables(
 }
 
 Result<std::string> check_variable_value(const ParticipantVariable& declaration,
-                                         std::string_view value) {
+                                         std::string_view value, const RequestNames& names) {
     std::string canonical;
     if (std::optional<std::string> problem = value_problem(declaration, value, canonical)) {
-        return Error{value_message(declaration, value, *problem)};
+        return Error{value_message(declaration, value, *problem, names)};
     }
     return canonical;
 }

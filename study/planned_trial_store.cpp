@@ -8,13 +8,13 @@ namespace monoplane::study {
 
 using sqlite::Statement;
 
-Result<bool> write_planned_trials(const sqlite::Connection& db, std::int64_t session_id,
+Result<void> write_planned_trials(const sqlite::Connection& db, std::int64_t session_id,
                                   const Schedule& schedule) {
     Result<Statement> plan = Statement::prepare(
         db,
         "INSERT INTO planned_trials (session_id, trial_index, block, scene, label1_alternative, "
         "label1_mode, label2_mode) VALUES (?, ?, ?, ?, ?, ?, ?)");
-    if (!plan) return plan.error();
+    MONOPLANE_TRY(plan);
     for (const ScheduledTrial& t : schedule.trials) {
         if (!t.adaptive) continue;
         plan.value()
@@ -25,15 +25,13 @@ Result<bool> write_planned_trials(const sqlite::Connection& db, std::int64_t ses
             .bind(5, t.label1_alternative)
             .bind(6, render_mode_name(t.label1_mode))
             .bind(7, render_mode_name(t.label2_mode));
-        if (Result<bool> ok = plan.value().run("storing the staircase's planned trials"); !ok) {
-            return ok;
-        }
+        MONOPLANE_TRY(plan.value().run("storing the staircase's planned trials"));
         plan.value().reset();
     }
-    return true;
+    return Ok{};
 }
 
-Result<bool> start_planned_trial(const sqlite::Connection& db, std::int64_t session_id,
+Result<void> start_planned_trial(const sqlite::Connection& db, std::int64_t session_id,
                                  int trial_index, double m) {
     const std::string name =
         "trial " + std::to_string(trial_index) + " of session " + std::to_string(session_id);
@@ -42,10 +40,10 @@ Result<bool> start_planned_trial(const sqlite::Connection& db, std::int64_t sess
     }
     Result<Statement> started =
         Statement::prepare(db, "SELECT 1 FROM trials WHERE session_id = ? AND trial_index = ?");
-    if (!started) return started.error();
+    MONOPLANE_TRY(started);
     started.value().bind(1, session_id).bind(2, trial_index);
     Result<bool> found = started.value().step("looking up " + name);
-    if (!found) return found.error();
+    MONOPLANE_TRY(found);
     if (*found) return Error{name + " has its mono plane already; a chosen m is never changed"};
     Result<Statement> copy = Statement::prepare(
         db,
@@ -53,13 +51,13 @@ Result<bool> start_planned_trial(const sqlite::Connection& db, std::int64_t sess
         "label1_alternative, label1_mode, label2_mode) SELECT session_id, trial_index, 0, block, "
         "scene, ?, label1_alternative, label1_mode, label2_mode FROM planned_trials "
         "WHERE session_id = ? AND trial_index = ?");
-    if (!copy) return copy.error();
+    MONOPLANE_TRY(copy);
     copy.value().bind(1, m).bind(2, session_id).bind(3, trial_index);
-    if (Result<bool> ok = copy.value().run("starting " + name); !ok) return ok;
+    MONOPLANE_TRY(copy.value().run("starting " + name));
     if (sqlite3_changes(db.get()) == 0) {
         return Error{name + " is not a staircase's planned trial in '" + db.path() + "'"};
     }
-    return true;
+    return Ok{};
 }
 
 Procedure schedule_procedure(const Schedule& schedule) {

@@ -16,13 +16,13 @@
 namespace monoplane::study {
 
 // The schedule's adaptive trials as plans, inside the caller's open transaction.
-Result<bool> write_planned_trials(const sqlite::Connection& db, std::int64_t session_id,
+Result<void> write_planned_trials(const sqlite::Connection& db, std::int64_t session_id,
                                   const Schedule& schedule);
 
 // The trial row of a started slot: its plan with mono plane m, inside the caller's open
 // transaction. Refuses a slot that is not planned, one that has started already, and an m that
 // is not a finite positive distance.
-Result<bool> start_planned_trial(const sqlite::Connection& db, std::int64_t session_id,
+Result<void> start_planned_trial(const sqlite::Connection& db, std::int64_t session_id,
                                  int trial_index, double m);
 
 // The slots of session ?1 not started yet, as the store's trial columns (study_store.cpp

@@ -507,7 +507,7 @@ Result<std::string> read_text_file(const std::filesystem::path& path) {
 Result<Protocol> parse(std::string_view toml_text, std::string_view source_name,
                        const std::filesystem::path* scene_directory) {
     Result<toml::table> document = parse_toml(toml_text, source_name);
-    if (!document) return document.error();
+    MONOPLANE_TRY(document);
 
     TomlProblems problems(source_name);
     Protocol protocol;
@@ -562,7 +562,7 @@ Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view sou
 
 Result<Protocol> load_protocol(const std::filesystem::path& path) {
     Result<std::string> text = read_text_file(path);
-    if (!text) return text.error();
+    MONOPLANE_TRY(text);
     return parse_protocol(*text, path.string(), path.parent_path());
 }
 

@@ -17,9 +17,9 @@ Result<std::vector<RosterEntry>> read_roster(const std::vector<std::filesystem::
         if (!std::filesystem::is_regular_file(database))
             return Error{"no study database '" + database.string() + "'"};
         Result<std::unique_ptr<StudyStore>> store = StudyStore::open(database);
-        if (!store) return store.error();
+        MONOPLANE_TRY(store);
         Result<std::vector<RosterRow>> roster = store.value()->roster();
-        if (!roster) return roster.error();
+        MONOPLANE_TRY(roster);
         std::vector<RosterRow> rows = std::move(roster).value();
         std::ranges::sort(rows, {}, [](const RosterRow& r) {
             return std::pair(r.participant_code, r.session_number);
@@ -30,7 +30,7 @@ Result<std::vector<RosterEntry>> read_roster(const std::vector<std::filesystem::
                 entry.row.status == SessionStatus::Paused) {
                 Result<std::optional<SessionHolder>> holder =
                     SessionHold::holder(database, entry.row.session_id);
-                if (!holder) return holder.error();
+                MONOPLANE_TRY(holder);
                 entry.holder = *holder;
             }
             entries.push_back(std::move(entry));

@@ -16,7 +16,7 @@ std::optional<NoteSource> parse_note_source(std::string_view name) {
     return std::nullopt;
 }
 
-Result<bool> validate_record(const SceneFileRecord& record, const Schedule& schedule) {
+Result<void> validate_record(const SceneFileRecord& record, const Schedule& schedule) {
     const std::string where = "scene file record of '" + record.scene + "' (file " +
                               std::to_string(record.file_index) + "): ";
     if (std::ranges::find(schedule.block_order, record.scene) == schedule.block_order.end())
@@ -29,16 +29,16 @@ Result<bool> validate_record(const SceneFileRecord& record, const Schedule& sche
     if (!is_sha256_hex(record.digest.sha256))
         return Error{where + "'" + record.digest.sha256 +
                      "' is not a SHA-256 digest in 64 lowercase hex digits"};
-    return true;
+    return Ok{};
 }
 
 }  // namespace
 
-Result<bool> validate_scene_files(const std::vector<SceneFileRecord>& records,
+Result<void> validate_scene_files(const std::vector<SceneFileRecord>& records,
                                   const Schedule& schedule) {
     std::set<std::pair<std::string, int>> seen;
     for (const SceneFileRecord& record : records) {
-        if (Result<bool> ok = validate_record(record, schedule); !ok) return ok;
+        MONOPLANE_TRY(validate_record(record, schedule));
         if (!seen.insert({record.scene, record.file_index}).second)
             return Error{"scene file record of '" + record.scene + "' (file " +
                          std::to_string(record.file_index) + ") is listed twice"};
@@ -49,34 +49,33 @@ Result<bool> validate_scene_files(const std::vector<SceneFileRecord>& records,
                          "' names a glTF file but no record of the file itself (file 0) was "
                          "given: a session with an imported scene keeps its digests"};
     }
-    return true;
+    return Ok{};
 }
 
-Result<bool> write_scene_files(const sqlite::Connection& db, std::int64_t session_id,
+Result<void> write_scene_files(const sqlite::Connection& db, std::int64_t session_id,
                                const std::vector<SceneFileRecord>& records) {
     Result<Statement> insert = Statement::prepare(
         db,
         "INSERT INTO scene_files (session_id, scene, file_index, path, size_bytes, sha256) "
         "VALUES (?, ?, ?, ?, ?, ?)");
-    if (!insert) return insert.error();
+    MONOPLANE_TRY(insert);
     for (const SceneFileRecord& r : records) {
         Statement& s = insert.value();
         s.reset();
         s.bind(1, session_id).bind(2, r.scene).bind(3, r.file_index).bind(4, r.path.string());
         s.bind(5, static_cast<std::int64_t>(r.digest.size_bytes)).bind(6, r.digest.sha256);
-        if (Result<bool> ok = s.run("recording the files of scene '" + r.scene + "'"); !ok)
-            return ok;
+        MONOPLANE_TRY(s.run("recording the files of scene '" + r.scene + "'"));
     }
-    return true;
+    return Ok{};
 }
 
-Result<bool> write_session_note(const sqlite::Connection& db, std::int64_t session_id,
+Result<void> write_session_note(const sqlite::Connection& db, std::int64_t session_id,
                                 const SessionNote& note) {
     Result<Statement> insert = Statement::prepare(
         db,
         "INSERT INTO session_notes (session_id, noted_utc, note, source, runtime_time_ns, "
         "trial_index) VALUES (?, ?, ?, ?, ?, ?)");
-    if (!insert) return insert.error();
+    MONOPLANE_TRY(insert);
     insert.value().bind(1, session_id).bind(2, note.noted_utc).bind(3, note.text);
     insert.value().bind(4, note_source_name(note.source)).bind(5, note.runtime_time_ns);
     insert.value().bind(6, note.trial_index);
@@ -90,12 +89,12 @@ Result<std::vector<SceneFileRecord>> read_scene_files(const sqlite::Connection& 
         Statement::prepare(db,
                            "SELECT scene, file_index, path, size_bytes, sha256 FROM scene_files "
                            "WHERE session_id = ? ORDER BY rowid");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
     std::vector<SceneFileRecord> records;
     for (;;) {
         Result<bool> row = stmt.value().step("reading a session's scene files");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) break;
         const Statement& s = stmt.value();
         records.push_back({s.text(0), s.int32(1), s.text(2),
@@ -110,12 +109,12 @@ Result<std::vector<SessionNote>> read_session_notes(const sqlite::Connection& db
         db,
         "SELECT noted_utc, note, source, runtime_time_ns, trial_index FROM session_notes "
         "WHERE session_id = ? ORDER BY id");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
     std::vector<SessionNote> notes;
     for (;;) {
         Result<bool> row = stmt.value().step("reading a session's notes");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) break;
         const Statement& s = stmt.value();
         const std::optional<NoteSource> source = parse_note_source(s.text(2));

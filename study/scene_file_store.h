@@ -21,13 +21,13 @@ namespace monoplane::study {
 // a record of a scene the schedule does not show, a scene that is no file name, a relative or
 // empty path, a digest not in sha256sum's form, a repeated (scene, file_index); and a scene of
 // the schedule that names a glTF file but has no record of its own file (file_index 0).
-Result<bool> validate_scene_files(const std::vector<SceneFileRecord>& records,
+Result<void> validate_scene_files(const std::vector<SceneFileRecord>& records,
                                   const Schedule& schedule);
 
 // Inside the caller's open transaction.
-Result<bool> write_scene_files(const sqlite::Connection& db, std::int64_t session_id,
+Result<void> write_scene_files(const sqlite::Connection& db, std::int64_t session_id,
                                const std::vector<SceneFileRecord>& records);
-Result<bool> write_session_note(const sqlite::Connection& db, std::int64_t session_id,
+Result<void> write_session_note(const sqlite::Connection& db, std::int64_t session_id,
                                 const SessionNote& note);
 
 // A session's records and notes, each in the order they were written.

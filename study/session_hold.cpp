@@ -101,14 +101,14 @@ Result<std::optional<SessionHolder>> query(int fd, const std::string& file,
     return std::optional<SessionHolder>(read_holder(fd, session_id));
 }
 
-Result<bool> check_id(std::int64_t session_id) {
+Result<void> check_id(std::int64_t session_id) {
     if (session_id < 1 || session_id >= kMaxSessionId)
         return Error{"session id " + std::to_string(session_id) + " cannot be held (1 to 2^40)"};
-    return true;
+    return Ok{};
 }
 
 // Locks the session's byte through `fd` and writes our line, or says who holds it.
-Result<bool> take(int fd, const std::filesystem::path& database, std::int64_t session_id) {
+Result<void> take(int fd, const std::filesystem::path& database, std::int64_t session_id) {
     const std::string file = lock_file(database);
     // A holder that lets go between our attempt and our query leaves nobody to name: try again.
     for (int attempt = 0; attempt < 3; ++attempt) {
@@ -122,11 +122,11 @@ Result<bool> take(int fd, const std::filesystem::path& database, std::int64_t se
             const ssize_t written =
                 ::pwrite(fd, line.data(), line.size(), static_cast<off_t>(session_id * kLineBytes));
             (void)written;
-            return true;
+            return Ok{};
         }
         if (errno != EAGAIN && errno != EACCES) return io_error("lock", file, errno);
         Result<std::optional<SessionHolder>> holder = query(fd, file, session_id);
-        if (!holder) return holder.error();
+        MONOPLANE_TRY(holder);
         if (*holder)
             return Error{"session " + std::to_string(session_id) + " of study database '" +
                          database.string() + "' is being run by " + (*holder)->describe() +
@@ -145,12 +145,12 @@ std::string SessionHolder::describe() const {
 
 Result<SessionHold> SessionHold::acquire(const std::filesystem::path& database,
                                          std::int64_t session_id) {
-    if (Result<bool> ok = check_id(session_id); !ok) return ok.error();
+    MONOPLANE_TRY(check_id(session_id));
     const std::string file = lock_file(database);
     // O_CLOEXEC: a program this process starts must not keep the hold alive after it ends.
     const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
     if (fd < 0) return io_error("open", file, errno);
-    Result<bool> taken = take(fd, database, session_id);
+    Result<void> taken = take(fd, database, session_id);
     if (!taken) {
         ::close(fd);  // not ours: the holder's line stays as it is
         return taken.error();
@@ -160,7 +160,7 @@ Result<SessionHold> SessionHold::acquire(const std::filesystem::path& database,
 
 Result<std::optional<SessionHolder>> SessionHold::holder(const std::filesystem::path& database,
                                                          std::int64_t session_id) {
-    if (Result<bool> ok = check_id(session_id); !ok) return ok.error();
+    MONOPLANE_TRY(check_id(session_id));
     const std::string file = lock_file(database);
     // Read-only and never created: asking who runs a session changes nothing on disk.
     const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);

@@ -4,32 +4,32 @@
 
 namespace monoplane::study {
 
-Result<bool> MemorySessionLog::append_event(std::int64_t, const TrialEvent& event) {
+Result<void> MemorySessionLog::append_event(std::int64_t, const TrialEvent& event) {
     events_.push_back(event);
-    return true;
+    return Ok{};
 }
 
-Result<bool> MemorySessionLog::record_outcome(std::int64_t, int trial_index,
+Result<void> MemorySessionLog::record_outcome(std::int64_t, int trial_index,
                                               const TrialOutcome& outcome) {
     if (!outcomes_.emplace(trial_index, outcome).second) {
         return Error{"trial " + std::to_string(trial_index) +
                      " is already decided; a recorded decision is never overwritten"};
     }
-    return true;
+    return Ok{};
 }
 
-Result<bool> MemorySessionLog::set_status(std::int64_t, SessionStatus status) {
+Result<void> MemorySessionLog::set_status(std::int64_t, SessionStatus status) {
     status_ = status;
-    return true;
+    return Ok{};
 }
 
-Result<bool> MemorySessionLog::record_answer(std::int64_t, int item, const std::string&,
+Result<void> MemorySessionLog::record_answer(std::int64_t, int item, const std::string&,
                                              int answer) {
     answers_[item] = answer;  // asked again: the latest answer counts, as in the database
-    return true;
+    return Ok{};
 }
 
-Result<bool> MemorySessionLog::record_stimulus(std::int64_t, const ScheduledTrial& trial) {
+Result<void> MemorySessionLog::record_stimulus(std::int64_t, const ScheduledTrial& trial) {
     const std::string name = "trial " + std::to_string(trial.index);
     if (!trial.adaptive) return Error{name + " is not a staircase's trial; its m is scheduled"};
     if (!(std::isfinite(trial.mono_plane) && trial.mono_plane > 0.0)) {
@@ -38,15 +38,15 @@ Result<bool> MemorySessionLog::record_stimulus(std::int64_t, const ScheduledTria
     if (!adaptive_trials_.emplace(trial.index, trial).second) {
         return Error{name + " has its mono plane already; a chosen m is never changed"};
     }
-    return true;
+    return Ok{};
 }
 
-Result<bool> MemorySessionLog::add_note(std::int64_t, const SessionNote& note) {
+Result<void> MemorySessionLog::add_note(std::int64_t, const SessionNote& note) {
     if (note.text.find_first_not_of(" \t\r\n") == std::string::npos) {
         return Error{"a note must not be empty"};
     }
     notes_.push_back(note);
-    return true;
+    return Ok{};
 }
 
 std::string_view note_source_name(NoteSource source) {

@@ -22,32 +22,32 @@ std::string_view session_status_name(SessionStatus status);
 class SessionLog {
   public:
     virtual ~SessionLog() = default;
-    virtual Result<bool> append_event(std::int64_t session_id, const TrialEvent& event) = 0;
-    virtual Result<bool> record_outcome(std::int64_t session_id, int trial_index,
+    virtual Result<void> append_event(std::int64_t session_id, const TrialEvent& event) = 0;
+    virtual Result<void> record_outcome(std::int64_t session_id, int trial_index,
                                         const TrialOutcome& outcome) = 0;
-    virtual Result<bool> set_status(std::int64_t session_id, SessionStatus status) = 0;
-    virtual Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
+    virtual Result<void> set_status(std::int64_t session_id, SessionStatus status) = 0;
+    virtual Result<void> record_answer(std::int64_t session_id, int item, const std::string& text,
                                        int answer) = 0;
     // A staircase chose an adaptive trial's mono plane as the trial starts (trial.adaptive and
     // trial.mono_plane set): written before the trial's first event, so a resumed session shows
     // the trial at the same m. Refuses a trial that is not adaptive or not planned, a second
     // choice for one trial and an m that is not a finite positive number.
-    virtual Result<bool> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) = 0;
+    virtual Result<void> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) = 0;
     // A note for whoever reviews the session (study_store.h SessionNote), durable on return.
-    virtual Result<bool> add_note(std::int64_t session_id, const SessionNote& note) = 0;
+    virtual Result<void> add_note(std::int64_t session_id, const SessionNote& note) = 0;
 };
 
 // One session's log in memory. Refuses a second outcome for a trial, as the database does.
 class MemorySessionLog final : public SessionLog {
   public:
-    Result<bool> append_event(std::int64_t session_id, const TrialEvent& event) override;
-    Result<bool> record_outcome(std::int64_t session_id, int trial_index,
+    Result<void> append_event(std::int64_t session_id, const TrialEvent& event) override;
+    Result<void> record_outcome(std::int64_t session_id, int trial_index,
                                 const TrialOutcome& outcome) override;
-    Result<bool> set_status(std::int64_t session_id, SessionStatus status) override;
-    Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
+    Result<void> set_status(std::int64_t session_id, SessionStatus status) override;
+    Result<void> record_answer(std::int64_t session_id, int item, const std::string& text,
                                int answer) override;
-    Result<bool> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) override;
-    Result<bool> add_note(std::int64_t session_id, const SessionNote& note) override;
+    Result<void> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) override;
+    Result<void> add_note(std::int64_t session_id, const SessionNote& note) override;
 
     const std::vector<TrialEvent>& events() const { return events_; }
     const std::vector<SessionNote>& notes() const { return notes_; }

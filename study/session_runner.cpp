@@ -28,7 +28,7 @@ LiveOptions live_options(const RunOptions& options) {
 
 // The virtual display: frame n is shown at n periods. Each frame, as on a headset: the observer
 // reacts to what is on screen, then the frame is presented and its changes logged.
-Result<bool> drive(LiveSession& session, ObserverInput& input, const RunOptions& options) {
+Result<void> drive(LiveSession& session, ObserverInput& input, const RunOptions& options) {
     if (!(options.frame_rate_hz > 0.0)) return Error{"the virtual display's rate must be positive"};
     const auto period = static_cast<std::int64_t>(std::llround(1e9 / options.frame_rate_hz));
     const auto last_frame = static_cast<std::int64_t>(kMaxVirtualSeconds * options.frame_rate_hz);
@@ -38,13 +38,11 @@ Result<bool> drive(LiveSession& session, ObserverInput& input, const RunOptions&
         }
         const std::int64_t now = frame * period;
         for (LiveInput request : input.poll(session.screen(), session.progress(), now)) {
-            Result<std::string> done = session.request(request, now);
-            if (!done) return done.error();
+            MONOPLANE_TRY(session.request(request, now));
         }
-        Result<bool> shown = session.frame_presented(frame, now);
-        if (!shown) return shown;
+        MONOPLANE_TRY(session.frame_presented(frame, now));
     }
-    return true;
+    return Ok{};
 }
 
 }  // namespace
@@ -54,19 +52,19 @@ Result<SessionStatus> run_session(StudyStore& store, std::int64_t session_id,
                                   const RunOptions& options) {
     Result<std::unique_ptr<LiveSession>> session =
         LiveSession::open(store, session_id, protocol, live_options(options));
-    if (!session) return session.error();
+    MONOPLANE_TRY(session);
     ObserverInput input(observer, protocol, options.trial_error_px);
-    if (Result<bool> ok = drive(*session.value(), input, options); !ok) return ok.error();
+    MONOPLANE_TRY(drive(*session.value(), input, options));
     Result<SessionInfo> info = store.session(session_id);
-    if (!info) return info.error();
+    MONOPLANE_TRY(info);
     return info->status;
 }
 
-Result<bool> run_simulated_session(SessionLog& log, const Protocol& protocol, Schedule schedule,
+Result<void> run_simulated_session(SessionLog& log, const Protocol& protocol, Schedule schedule,
                                    Observer& observer, const RunOptions& options) {
     Result<std::unique_ptr<LiveSession>> session =
         LiveSession::begin(log, 1, protocol, live_options(options), std::move(schedule), 0);
-    if (!session) return session.error();
+    MONOPLANE_TRY(session);
     ObserverInput input(observer, protocol, options.trial_error_px);
     return drive(*session.value(), input, options);
 }

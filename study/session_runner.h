@@ -44,7 +44,7 @@ Result<SessionStatus> run_session(StudyStore& store, std::int64_t session_id,
 
 // The same engine and observer over a schedule not in any database: the whole schedule into
 // `log` (a MemorySessionLog for `simulate`'s power analysis). Errors as run_session's.
-Result<bool> run_simulated_session(SessionLog& log, const Protocol& protocol, Schedule schedule,
+Result<void> run_simulated_session(SessionLog& log, const Protocol& protocol, Schedule schedule,
                                    Observer& observer, const RunOptions& options);
 
 }  // namespace monoplane::study

@@ -19,13 +19,13 @@ Result<Known> look_up(const StudyStore* store, const std::string& code) {
     if (store == nullptr) return known;
     known.database = store->path().string();
     Result<std::optional<ParticipantRecord>> participant = store->participant(code);
-    if (!participant) return participant.error();
+    MONOPLANE_TRY(participant);
     known.participant = *participant;
     Result<int> count = store->participant_count();
-    if (!count) return count.error();
+    MONOPLANE_TRY(count);
     known.participant_count = *count;
     Result<std::vector<RosterRow>> roster = store->roster();
-    if (!roster) return roster.error();
+    MONOPLANE_TRY(roster);
     for (const RosterRow& row : *roster)
         known.code_by_number.emplace(row.participant_number, row.participant_code);
     return known;
@@ -35,49 +35,56 @@ std::string participant_text(const std::string& code) {
     return "participant " + code;
 }
 
+// The command that continues a participant's (interrupted) session: the way on these messages
+// show, spelled as the user types it, whichever caller asked.
+std::string resume_command(const Known& known, const std::string& code,
+                           std::optional<int> session = std::nullopt) {
+    return "study resume --db " + known.database + " --participant " + code +
+           (session ? " --session " + std::to_string(*session) : std::string());
+}
+
 void check_session_number(const SessionRequest& r, const Protocol& protocol, const Known& known,
-                          int& number, std::vector<std::string>& problems) {
+                          const RequestNames& names, int& number,
+                          std::vector<std::string>& problems) {
     const int next = known.participant ? known.participant->next_session_number() : 1;
     number = r.session_number.value_or(next);
     const std::string who = participant_text(r.participant_code);
+    const std::string given = names.session(std::to_string(number));
     if (number < 1) {
-        problems.push_back("--session " + std::to_string(number) +
-                           ": sessions are numbered from 1");
+        problems.push_back(given + ": sessions are numbered from 1");
     } else if (number < next) {
         problems.push_back(
-            "--session " + std::to_string(number) + ": " + who + " already has session " +
-            std::to_string(number) + "; to continue it: study resume --db " + known.database +
-            " --participant " + r.participant_code + " --session " + std::to_string(number));
+            given + ": " + who + " already has session " + std::to_string(number) +
+            "; to continue it: " + resume_command(known, r.participant_code, number));
     } else if (number > next && !known.participant) {
         // Their earlier sessions ran on another PC: the row they were given there goes on.
         if (!r.participant_number) {
-            problems.push_back("--session " + std::to_string(number) + ": " + who +
-                               " has no session in " + known.database +
-                               " yet; to continue sessions run on another PC, also give "
-                               "--participant-number (their number there), so their scene order "
-                               "goes on");
+            problems.push_back(given + ": " + who + " has no session in " + known.database +
+                               " yet; to continue sessions run on another PC, also give " +
+                               names.participant_number("") +
+                               " (their number there), so their scene order goes on");
         }
     } else if (number > next) {
-        problems.push_back("--session " + std::to_string(number) + ": " + who + " has " +
-                           std::to_string(next - 1) + " session(s); the next is session " +
-                           std::to_string(next));
+        problems.push_back(given + ": " + who + " has " + std::to_string(next - 1) +
+                           " session(s); the next is session " + std::to_string(next));
     } else if (number > protocol.day.sessions) {
-        problems.push_back(who + " already has " + std::to_string(number - 1) +
-                           " session(s), and protocol '" + protocol.name +
-                           "' has sessions = " + std::to_string(protocol.day.sessions) +
-                           " per participant (study list --db " + known.database +
-                           " shows whether one was interrupted: study resume --db " +
-                           known.database + " --participant " + r.participant_code + ")");
+        problems.push_back(
+            who + " already has " + std::to_string(number - 1) + " session(s), and protocol '" +
+            protocol.name + "' has sessions = " + std::to_string(protocol.day.sessions) +
+            " per participant (study list --db " + known.database +
+            " shows whether one was interrupted: " + resume_command(known, r.participant_code) +
+            ")");
     }
 }
 
 // The 0-based number that picks the Latin-square row.
-void check_participant_number(const SessionRequest& r, const Known& known, int& number,
+void check_participant_number(const SessionRequest& r, const Known& known,
+                              const RequestNames& names, int& number,
                               std::vector<std::string>& problems) {
     if (known.participant) {
         number = known.participant->participant_number;
         if (r.participant_number && *r.participant_number - 1 != number) {
-            problems.push_back("--participant-number " + std::to_string(*r.participant_number) +
+            problems.push_back(names.participant_number(std::to_string(*r.participant_number)) +
                                ": " + participant_text(r.participant_code) +
                                " is participant number " + std::to_string(number + 1) +
                                " since their first session");
@@ -86,20 +93,21 @@ void check_participant_number(const SessionRequest& r, const Known& known, int& 
     }
     number = r.participant_number ? *r.participant_number - 1 : known.participant_count;
     if (r.participant_number && *r.participant_number < 1) {
-        problems.push_back("--participant-number " + std::to_string(*r.participant_number) +
+        problems.push_back(names.participant_number(std::to_string(*r.participant_number)) +
                            ": participants are numbered from 1");
         return;
     }
     if (const auto taken = known.code_by_number.find(number); taken != known.code_by_number.end()) {
         problems.push_back("participant number " + std::to_string(number + 1) +
                            " is taken by participant " + taken->second +
-                           " in this database; give --participant-number N with a free number");
+                           " in this database; give " + names.participant_number("N") +
+                           " with a free number");
     }
 }
 
 // A returning participant's variables are theirs: given again, they must not differ.
 void check_returning_variables(const SessionRequest& r, const Protocol& protocol,
-                               const ParticipantRecord& participant,
+                               const RequestNames& names, const ParticipantRecord& participant,
                                std::vector<VariableValue>& values,
                                std::vector<std::string>& problems) {
     values = participant.variables;
@@ -113,16 +121,17 @@ void check_returning_variables(const SessionRequest& r, const Protocol& protocol
             // The recorded values stand for the required ones: only the name is in question.
             std::vector<ParticipantVariable> optional = protocol.day.variables;
             for (ParticipantVariable& v : optional) v.required = false;
-            Result<std::vector<VariableValue>> one = check_variables(optional, {assignment});
+            Result<std::vector<VariableValue>> one = check_variables(optional, {assignment}, names);
             if (!one) problems.push_back(one.error().message);
             continue;
         }
-        Result<std::string> value = check_variable_value(*declared, assignment.substr(eq + 1));
+        Result<std::string> value =
+            check_variable_value(*declared, assignment.substr(eq + 1), names);
         if (!value) {
             problems.push_back(value.error().message);
         } else if (recorded == participant.variables.end() || recorded->value != *value) {
-            problems.push_back("--var " + assignment + ": " + participant_text(r.participant_code) +
-                               " has " + name + " = " +
+            problems.push_back(names.variable(assignment) + ": " +
+                               participant_text(r.participant_code) + " has " + name + " = " +
                                (recorded == participant.variables.end() ? std::string("no value")
                                                                         : recorded->value) +
                                " recorded at their first session; variables do not change");
@@ -138,33 +147,34 @@ std::string joined(const std::vector<std::string>& problems) {
 
 }  // namespace
 
-Result<bool> check_participant_code(const std::string& code) {
+Result<void> check_participant_code(const std::string& code) {
     const bool ok = !code.empty() && code.size() <= 64 && std::ranges::all_of(code, [](char c) {
         return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
                c == '_' || c == '-';
     });
-    if (ok) return true;
+    if (ok) return Ok{};
     return Error{"participant code '" + code +
                  "': use 1 to 64 letters, digits, '_' or '-' (a pseudonym, never a name)"};
 }
 
 Result<SessionStart> plan_session(const StudyStore* store, const Protocol& protocol,
-                                  const SessionRequest& r) {
-    if (Result<bool> ok = check_participant_code(r.participant_code); !ok) return ok.error();
+                                  const SessionRequest& r, const RequestNames& names) {
+    MONOPLANE_TRY(check_participant_code(r.participant_code));
     Result<Known> known = look_up(store, r.participant_code);
-    if (!known) return known.error();
+    MONOPLANE_TRY(known);
     std::vector<std::string> problems;
     SessionStart start;
     start.new_participant = !known->participant;
     SessionInfo& info = start.info;
-    check_session_number(r, protocol, *known, info.session_number, problems);
-    check_participant_number(r, *known, info.participant_number, problems);
+    check_session_number(r, protocol, *known, names, info.session_number, problems);
+    check_participant_number(r, *known, names, info.participant_number, problems);
     if (known->participant) {
-        check_returning_variables(r, protocol, *known->participant, info.variables, problems);
+        check_returning_variables(r, protocol, names, *known->participant, info.variables,
+                                  problems);
         info.participant_index = known->participant->participant_index;
     } else {
         Result<std::vector<VariableValue>> values =
-            check_variables(protocol.day.variables, r.variables);
+            check_variables(protocol.day.variables, r.variables, names);
         if (!values)
             problems.push_back(values.error().message);
         else

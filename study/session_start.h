@@ -11,6 +11,7 @@
 
 #include "common/result.h"
 #include "study/protocol.h"
+#include "study/request_names.h"
 #include "study/schedule.h"
 #include "study/study_store.h"
 
@@ -18,9 +19,9 @@ namespace monoplane::study {
 
 struct SessionRequest {
     std::string participant_code;
-    std::optional<int> session_number;      // --session N; default: the participant's next
-    std::optional<int> participant_number;  // --participant-number N (1-based, as people count)
-    std::vector<std::string> variables;     // --var NAME=VALUE, as given
+    std::optional<int> session_number;      // default: the participant's next
+    std::optional<int> participant_number;  // 1-based, as people count
+    std::vector<std::string> variables;     // NAME=VALUE, as given
     std::uint64_t seed = 0;
 };
 
@@ -38,11 +39,13 @@ struct SessionStart {
 // beyond the protocol's `sessions`; a participant number below 1, taken by another participant,
 // or different from the one a returning participant has; variables (check_variables: unknown,
 // out of range, not a choice, required but missing) for a new participant, and for a returning
-// one any value that differs from the recorded one. Writes nothing. Any time.
+// one any value that differs from the recorded one. The messages name the request's inputs as
+// `names` says them. Writes nothing. Any time.
 Result<SessionStart> plan_session(const StudyStore* store, const Protocol& protocol,
-                                  const SessionRequest& request);
+                                  const SessionRequest& request,
+                                  const RequestNames& names = study_request_names());
 
 // `[A-Za-z0-9_-]{1,64}`, the database's rule for codes; the message says what is wrong.
-Result<bool> check_participant_code(const std::string& code);
+Result<void> check_participant_code(const std::string& code);
 
 }  // namespace monoplane::study

@@ -25,12 +25,12 @@ std::vector<const TrialRecord*> decided_adaptive(const SessionInfo& session,
 // recorded in trial order, `after(trial, staircases)` called after each and `at_end(staircases)`
 // once after the last.
 template <class After, class AtEnd>
-Result<bool> replay(const SessionInfo& session, const std::vector<TrialRecord>& trials, After after,
+Result<void> replay(const SessionInfo& session, const std::vector<TrialRecord>& trials, After after,
                     AtEnd at_end) {
-    if (session.procedure != Procedure::Staircase) return true;
+    if (session.procedure != Procedure::Staircase) return Ok{};
     const std::string name = "session " + std::to_string(session.id) + "'s protocol";
     Result<Protocol> protocol = parse_protocol(session.protocol_text, name);
-    if (!protocol) return protocol.error();
+    MONOPLANE_TRY(protocol);
     if (protocol->procedure != Procedure::Staircase) {
         return Error{name + " is not a staircase protocol, but the session is a staircase's"};
     }
@@ -40,19 +40,18 @@ Result<bool> replay(const SessionInfo& session, const std::vector<TrialRecord>& 
         after(r->trial, staircases);
     }
     at_end(staircases);
-    return true;
+    return Ok{};
 }
 
 Result<std::map<int, ThresholdEstimate>> replay_staircase_estimates(
     const SessionInfo& session, const std::vector<TrialRecord>& trials) {
     std::map<int, ThresholdEstimate> estimates;
-    const Result<bool> replayed = replay(
+    MONOPLANE_TRY(replay(
         session, trials,
         [&](const ScheduledTrial& trial, const Staircases& staircases) {
             estimates[trial.index] = staircases.estimate(trial.scene);
         },
-        [](const Staircases&) {});
-    if (!replayed) return replayed.error();
+        [](const Staircases&) {}));
     return estimates;
 }
 
@@ -61,13 +60,12 @@ Result<std::map<std::string, ThresholdEstimate>> final_staircase_estimates(
     // Each scene's estimate once, after its last decision (QUEST+'s estimate marginalises the
     // whole posterior: not worth computing after every trial here).
     std::map<std::string, ThresholdEstimate> last;
-    const Result<bool> replayed = replay(
+    MONOPLANE_TRY(replay(
         session, trials,
         [&](const ScheduledTrial& trial, const Staircases&) { last[trial.scene] = {}; },
         [&](const Staircases& staircases) {
             for (auto& [scene, estimate] : last) estimate = staircases.estimate(scene);
-        });
-    if (!replayed) return replayed.error();
+        }));
     return last;
 }
 

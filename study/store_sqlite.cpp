@@ -24,11 +24,11 @@ Connection::~Connection() {
     if (db_ != nullptr) sqlite3_close_v2(db_);
 }
 
-Result<bool> Connection::exec(std::string_view sql) const {
+Result<void> Connection::exec(std::string_view sql) const {
     const std::string text(sql);
     const int rc = sqlite3_exec(db_, text.c_str(), nullptr, nullptr, nullptr);
     if (rc != SQLITE_OK) return error(rc, "running '" + text.substr(0, 60) + "'");
-    return true;
+    return Ok{};
 }
 
 Error Connection::error(int rc, std::string_view what) const {
@@ -111,10 +111,9 @@ Result<bool> Statement::step(std::string_view what) {
     return db_->error(rc, what);
 }
 
-Result<bool> Statement::run(std::string_view what) {
-    Result<bool> stepped = step(what);
-    if (!stepped) return stepped;
-    return true;
+Result<void> Statement::run(std::string_view what) {
+    MONOPLANE_TRY(step(what));
+    return Ok{};
 }
 
 void Statement::reset() {
@@ -140,7 +139,7 @@ std::string Statement::text(int column) const {
 }
 
 Result<Transaction> Transaction::begin(const Connection& db, std::string_view what) {
-    Result<bool> begun = db.exec("BEGIN IMMEDIATE");
+    Result<void> begun = db.exec("BEGIN IMMEDIATE");
     if (!begun) {
         // Rephrase: "running 'BEGIN IMMEDIATE'" is not what the user asked for.
         const int rc = sqlite3_errcode(db.get());
@@ -153,11 +152,11 @@ Transaction::~Transaction() {
     if (open_) sqlite3_exec(db_->get(), "ROLLBACK", nullptr, nullptr, nullptr);
 }
 
-Result<bool> Transaction::commit(std::string_view what) {
+Result<void> Transaction::commit(std::string_view what) {
     const int rc = sqlite3_exec(db_->get(), "COMMIT", nullptr, nullptr, nullptr);
     if (rc != SQLITE_OK) return db_->error(rc, what);  // the destructor rolls back
     open_ = false;
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::study::sqlite

@@ -31,7 +31,7 @@ class Connection {
     const std::string& path() const { return path_; }
 
     // Runs statements without results (DDL, PRAGMA, BEGIN/COMMIT).
-    Result<bool> exec(std::string_view sql) const;
+    Result<void> exec(std::string_view sql) const;
     // The error for the connection's last failed call, phrased for the user: `what` says what
     // the store was doing ("appending an event").
     Error error(int rc, std::string_view what) const;
@@ -68,7 +68,7 @@ class Statement {
     // True while a row is available, false when done; an error names the file and `what`.
     Result<bool> step(std::string_view what);
     // Steps a statement that returns no rows.
-    Result<bool> run(std::string_view what);
+    Result<void> run(std::string_view what);
     // Makes the statement ready to run again with new bindings.
     void reset();
 
@@ -96,7 +96,7 @@ class Transaction {
     Transaction& operator=(const Transaction&) = delete;
     Transaction& operator=(Transaction&&) = delete;
     ~Transaction();
-    Result<bool> commit(std::string_view what);
+    Result<void> commit(std::string_view what);
 
   private:
     explicit Transaction(const Connection* db) : db_(db), open_(true) {}

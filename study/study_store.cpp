@@ -82,7 +82,7 @@ bool valid_variable_name(std::string_view name) {
 }
 
 // Refuses values check_variables could not have returned, before anything is written.
-Result<bool> validate_variables(const std::vector<VariableValue>& values) {
+Result<void> validate_variables(const std::vector<VariableValue>& values) {
     std::set<std::string> seen;
     for (const VariableValue& v : values) {
         if (!valid_variable_name(v.name))
@@ -91,7 +91,7 @@ Result<bool> validate_variables(const std::vector<VariableValue>& values) {
         if (!seen.insert(v.name).second)
             return Error{"participant variable '" + v.name + "' is given twice"};
     }
-    return true;
+    return Ok{};
 }
 
 std::optional<VariableType> parse_variable_type(std::string_view name) {
@@ -109,14 +109,14 @@ std::size_t code_points(std::string_view text) {
 
 Result<std::int64_t> query_int(const Connection& db, std::string_view sql, std::string_view what) {
     Result<Statement> stmt = Statement::prepare(db, sql);
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     Result<bool> row = stmt.value().step(what);
-    if (!row) return row.error();
+    MONOPLANE_TRY(row);
     return *row ? stmt->int64(0) : 0;
 }
 
 // Refuses the schedule before anything is written: a bad one would be stored for good.
-Result<bool> validate_schedule(const Schedule& schedule) {
+Result<void> validate_schedule(const Schedule& schedule) {
     if (schedule.trials.empty()) return Error{"the schedule has no trials"};
     if (schedule.participant_index < 0)
         return Error{"the schedule's participant number is negative"};
@@ -141,7 +141,7 @@ Result<bool> validate_schedule(const Schedule& schedule) {
             return Error{where + "label1_alternative must be 0 or 1"};
         if (t.repetition < 1) return Error{where + "repetition is below 1"};
     }
-    return true;
+    return Ok{};
 }
 
 std::string join_scenes(const std::vector<std::string>& scenes) {
@@ -213,10 +213,10 @@ struct StudyStore::Impl {
     FrameQueue frames;  // the frame log's rows not yet written
 
     // Inside a durable write's open transaction: the queued frames go with it.
-    Result<bool> write_queued_frames() const { return frames.write(db); }
+    Result<void> write_queued_frames() const { return frames.write(db); }
     // Commits a durable write's transaction; the frames it carried leave the queue.
-    Result<bool> commit_written(Transaction& tx, std::string_view what) {
-        Result<bool> ok = tx.commit(what);
+    Result<void> commit_written(Transaction& tx, std::string_view what) {
+        Result<void> ok = tx.commit(what);
         if (ok) frames.clear();
         return ok;
     }
@@ -225,55 +225,52 @@ struct StudyStore::Impl {
         return Error{"no session " + std::to_string(id) + " in study database '" + db.path() + "'"};
     }
 
-    Result<bool> require_session(std::int64_t id) const {
+    Result<void> require_session(std::int64_t id) const {
         Result<Statement> stmt = Statement::prepare(db, "SELECT 1 FROM sessions WHERE id = ?");
-        if (!stmt) return stmt.error();
+        MONOPLANE_TRY(stmt);
         stmt.value().bind(1, id);
         Result<bool> row = stmt.value().step("looking up a session");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) return no_session(id);
-        return true;
+        return Ok{};
     }
 
     // Brings the schema to kSchemaVersion in one transaction, or refuses the file.
-    Result<bool> migrate() {
+    Result<void> migrate() {
         Result<std::int64_t> version =
             query_int(db, "PRAGMA user_version", "reading the schema version");
-        if (!version) return version.error();
+        MONOPLANE_TRY(version);
         if (*version > StudyStore::kSchemaVersion) return newer_schema(*version);
         if (*version == StudyStore::kSchemaVersion) return check_application_id();
 
         Result<Transaction> tx = Transaction::begin(db, "migrating the schema");
-        if (!tx) return tx.error();
+        MONOPLANE_TRY(tx);
         // Another process may have migrated between the read above and the lock.
         version = query_int(db, "PRAGMA user_version", "reading the schema version");
-        if (!version) return version.error();
+        MONOPLANE_TRY(version);
         if (*version > StudyStore::kSchemaVersion) return newer_schema(*version);
         if (*version == 0) {
             // A version-0 file with tables belongs to another program: do not write into it.
             Result<std::int64_t> objects =
                 query_int(db, "SELECT count(*) FROM sqlite_schema", "reading the schema");
-            if (!objects) return objects.error();
+            MONOPLANE_TRY(objects);
             if (*objects > 0)
                 return Error{
                     "'" + db.path() + "' is a SQLite database of another program (it has " +
                     std::to_string(*objects) +
                     " schema objects but no monoplane schema version); give a new file name."};
-            Result<bool> id =
-                db.exec("PRAGMA application_id = " + std::to_string(kStoreApplicationId));
-            if (!id) return id;
-        } else if (Result<bool> ours = check_application_id(); !ours) {
-            return ours;
+            MONOPLANE_TRY(
+                db.exec("PRAGMA application_id = " + std::to_string(kStoreApplicationId)));
+        } else {
+            MONOPLANE_TRY(check_application_id());
         }
         const auto steps = store_migrations();
         static_assert(StudyStore::kSchemaVersion >= 1);
         for (std::int64_t v = *version; v < StudyStore::kSchemaVersion; ++v) {
-            Result<bool> step = db.exec(steps[static_cast<std::size_t>(v)]);
-            if (!step) return step;
+            MONOPLANE_TRY(db.exec(steps[static_cast<std::size_t>(v)]));
         }
-        Result<bool> set =
-            db.exec("PRAGMA user_version = " + std::to_string(StudyStore::kSchemaVersion));
-        if (!set) return set;
+        MONOPLANE_TRY(
+            db.exec("PRAGMA user_version = " + std::to_string(StudyStore::kSchemaVersion)));
         return tx.value().commit("migrating the schema");
     }
 
@@ -284,15 +281,15 @@ struct StudyStore::Impl {
                      "); open it with a newer monoplane. It was not changed."};
     }
 
-    Result<bool> check_application_id() const {
+    Result<void> check_application_id() const {
         Result<std::int64_t> id =
             query_int(db, "PRAGMA application_id", "reading the application id");
-        if (!id) return id.error();
+        MONOPLANE_TRY(id);
         if (*id != kStoreApplicationId)
             return Error{"'" + db.path() +
                          "' is a SQLite database of another program (application_id " +
                          std::to_string(*id) + "); give a new file name."};
-        return true;
+        return Ok{};
     }
 };
 
@@ -308,11 +305,11 @@ Result<std::unique_ptr<StudyStore>> StudyStore::open(const std::filesystem::path
     const std::string file = path.string();
     if (file.empty()) return Error{"no study database file given"};
     Result<bool> created = create_private_file(file);
-    if (!created) return created.error();
+    MONOPLANE_TRY(created);
 
     auto impl = std::make_unique<Impl>();
     impl->file = path;
-    Result<bool> opened = [&]() -> Result<bool> {
+    Result<void> opened = [&]() -> Result<void> {
         sqlite3* raw = nullptr;
         // No SQLITE_OPEN_CREATE: the file exists (with mode 0600) by now. FULLMUTEX: the
         // experimenter window may read from another thread than the runner writes from.
@@ -329,30 +326,29 @@ Result<std::unique_ptr<StudyStore>> StudyStore::open(const std::filesystem::path
         // The first read tells a database from another file (SQLITE_NOTADB) and sees locks.
         Result<std::int64_t> version =
             query_int(impl->db, "PRAGMA user_version", "reading the schema version");
-        if (!version) return version.error();
+        MONOPLANE_TRY(version);
         if (*version > kSchemaVersion) return impl->newer_schema(*version);
 
         // WAL: readers (an export, the experimenter's view) never block the study's writes.
-        Result<bool> wal = [&]() -> Result<bool> {
+        Result<void> wal = [&]() -> Result<void> {
             Result<Statement> stmt = Statement::prepare(impl->db, "PRAGMA journal_mode = WAL");
-            if (!stmt) return stmt.error();
+            MONOPLANE_TRY(stmt);
             Result<bool> row = stmt.value().step("switching to WAL mode");
-            if (!row) return row.error();
+            MONOPLANE_TRY(row);
             if (!*row || stmt->text(0) != "wal")
                 return Error{"study database '" + file + "' could not be switched to WAL mode"};
-            return true;
+            return Ok{};
         }();  // the statement is finalized here: an open one would block the migration
-        if (!wal) return wal;
+        MONOPLANE_TRY(wal);
 
         // FULL: the WAL is synced at every commit, so an event is on disk when append_event
         // returns.
         for (std::string_view pragma : {"PRAGMA synchronous = FULL", "PRAGMA foreign_keys = ON"})
-            if (Result<bool> ok = impl->db.exec(pragma); !ok) return ok;
+            MONOPLANE_TRY(impl->db.exec(pragma));
         if (options.max_page_count > 0) {
-            Result<std::int64_t> pages = query_int(
+            MONOPLANE_TRY(query_int(
                 impl->db, "PRAGMA max_page_count = " + std::to_string(options.max_page_count),
-                "limiting the database size");
-            if (!pages) return pages.error();
+                "limiting the database size"));
         }
         return impl->migrate();
     }();
@@ -380,12 +376,12 @@ Result<std::vector<VariableValue>> read_variables(const Connection& db,
         db,
         "SELECT name, type, value FROM participant_variables WHERE participant_id = ? "
         "ORDER BY rowid");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, participant_id);
     std::vector<VariableValue> values;
     for (;;) {
         Result<bool> row = stmt.value().step("reading participant variables");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) break;
         const std::optional<VariableType> type = parse_variable_type(stmt->text(1));
         if (!type)
@@ -397,13 +393,13 @@ Result<std::vector<VariableValue>> read_variables(const Connection& db,
     return values;
 }
 
-Result<bool> write_variables(const Connection& db, std::int64_t participant_id,
+Result<void> write_variables(const Connection& db, std::int64_t participant_id,
                              const std::vector<VariableValue>& values) {
     Result<Statement> insert =
         Statement::prepare(db,
                            "INSERT INTO participant_variables (participant_id, name, type, value) "
                            "VALUES (?, ?, ?, ?)");
-    if (!insert) return insert.error();
+    MONOPLANE_TRY(insert);
     for (const VariableValue& v : values) {
         insert.value().reset();
         insert.value()
@@ -411,11 +407,9 @@ Result<bool> write_variables(const Connection& db, std::int64_t participant_id,
             .bind(2, v.name)
             .bind(3, variable_type_name(v.type))
             .bind(4, v.value);
-        if (Result<bool> ok = insert.value().run("storing participant variable '" + v.name + "'");
-            !ok)
-            return ok;
+        MONOPLANE_TRY(insert.value().run("storing participant variable '" + v.name + "'"));
     }
-    return true;
+    return Ok{};
 }
 
 Result<std::optional<StoredParticipant>> find_participant(const Connection& db,
@@ -425,12 +419,12 @@ Result<std::optional<StoredParticipant>> find_participant(const Connection& db,
         "SELECT p.id, p.participant_index, p.participant_number, s.session_number, s.id "
         "FROM participants p LEFT JOIN sessions s ON s.participant_id = p.id "
         "WHERE p.code = ? ORDER BY s.session_number");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, code);
     std::optional<StoredParticipant> found;
     for (;;) {
         Result<bool> row = stmt.value().step("looking up participant '" + code + "'");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) break;
         if (!found) {
             found.emplace();
@@ -443,7 +437,7 @@ Result<std::optional<StoredParticipant>> find_participant(const Connection& db,
     }
     if (!found) return found;
     Result<std::vector<VariableValue>> variables = read_variables(db, found->id);
-    if (!variables) return variables.error();
+    MONOPLANE_TRY(variables);
     found->record.variables = std::move(variables).value();
     return found;
 }
@@ -454,7 +448,7 @@ std::string numbered(int session_number) {
 
 // A known participant's next session: its number follows theirs, their variables and Latin-square
 // row stay what their first session recorded.
-Result<bool> check_returning(const Connection& db, const ParticipantRecord& p,
+Result<void> check_returning(const Connection& db, const ParticipantRecord& p,
                              const SessionInfo& info, const Schedule& schedule) {
     const std::string who = "participant '" + p.code + "'";
     const int next = p.next_session_number();
@@ -477,13 +471,13 @@ Result<bool> check_returning(const Connection& db, const ParticipantRecord& p,
                      db.path() + "' is participant number " +
                      std::to_string(p.participant_number + 1) +
                      " since their first session; make the schedule again."};
-    return true;
+    return Ok{};
 }
 
 // A new participant: a study-wide number no one else in the file has. Their first session here
 // is usually session 1; a later number continues a participant whose earlier sessions ran on
 // another PC (`study run --session N`, with the participant number they have there).
-Result<bool> check_new(const Connection& db, const SessionInfo& info, const Schedule& schedule) {
+Result<void> check_new(const Connection& db, const SessionInfo& info, const Schedule& schedule) {
     const std::string who = "participant '" + info.participant_code + "'";
     // The schedule's Latin-square row is the number recorded: any other would misstate the
     // counterbalancing. 0 in info is the default (not given).
@@ -494,15 +488,15 @@ Result<bool> check_new(const Connection& db, const SessionInfo& info, const Sche
                      "; make the schedule again."};
     Result<Statement> taken =
         Statement::prepare(db, "SELECT code FROM participants WHERE participant_number = ?");
-    if (!taken) return taken.error();
+    MONOPLANE_TRY(taken);
     taken.value().bind(1, schedule.participant_index);
     Result<bool> found = taken.value().step("looking up participant numbers");
-    if (!found) return found.error();
+    MONOPLANE_TRY(found);
     if (*found)
         return Error{"participant number " + std::to_string(schedule.participant_index + 1) +
                      " is taken by participant '" + taken->text(0) + "' in '" + db.path() +
-                     "'; give " + who + " a free one (--participant-number N)."};
-    return true;
+                     "'; give " + who + " a free one."};
+    return Ok{};
 }
 
 // The participant row a session belongs to: the known one, or a new one with its number and
@@ -510,33 +504,30 @@ Result<bool> check_new(const Connection& db, const SessionInfo& info, const Sche
 Result<std::int64_t> admit_participant(const Connection& db, const SessionInfo& info,
                                        const Schedule& schedule) {
     Result<std::optional<StoredParticipant>> known = find_participant(db, info.participant_code);
-    if (!known) return known.error();
+    MONOPLANE_TRY(known);
     if (*known) {
-        if (Result<bool> ok = check_returning(db, (*known)->record, info, schedule); !ok)
-            return ok.error();
+        MONOPLANE_TRY(check_returning(db, (*known)->record, info, schedule));
         return (*known)->id;
     }
-    if (Result<bool> ok = check_new(db, info, schedule); !ok) return ok.error();
+    MONOPLANE_TRY(check_new(db, info, schedule));
     // The index is the participant's order in this file (unique there); the number is theirs in
     // the whole study.
     Result<std::int64_t> index =
         query_int(db, "SELECT count(*) FROM participants", "counting participants");
-    if (!index) return index.error();
+    MONOPLANE_TRY(index);
     Result<Statement> insert = Statement::prepare(
         db,
         "INSERT INTO participants (code, participant_index, participant_number, created_utc) "
         "VALUES (?, ?, ?, ?)");
-    if (!insert) return insert.error();
+    MONOPLANE_TRY(insert);
     insert.value()
         .bind(1, info.participant_code)
         .bind(2, *index)
         .bind(3, schedule.participant_index)
         .bind(4, utc_now_iso8601());
-    if (Result<bool> ok = insert.value().run("adding participant '" + info.participant_code + "'");
-        !ok)
-        return ok.error();
+    MONOPLANE_TRY(insert.value().run("adding participant '" + info.participant_code + "'"));
     const std::int64_t id = sqlite3_last_insert_rowid(db.get());
-    if (Result<bool> ok = write_variables(db, id, info.variables); !ok) return ok.error();
+    MONOPLANE_TRY(write_variables(db, id, info.variables));
     return id;
 }
 
@@ -548,7 +539,7 @@ Result<std::int64_t> insert_session(const Connection& db, std::int64_t participa
         "seed, block_order, software_version, hmd, runtime, device, observer, started_utc, "
         "status, render_anti_aliasing, render_ssao, render_detail, procedure, session_number) "
         "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    if (!session) return session.error();
+    MONOPLANE_TRY(session);
     Statement& s = session.value();
     s.bind(1, participant_id).bind(2, info.protocol_name).bind(3, hash_text(info.protocol_hash));
     s.bind(4, info.protocol_text).bind(5, std::to_string(schedule.seed));
@@ -562,21 +553,19 @@ Result<std::int64_t> insert_session(const Connection& db, std::int64_t participa
     else
         s.bind(16, info.render.detail);
     s.bind(17, procedure_name(schedule_procedure(schedule))).bind(18, info.session_number);
-    if (Result<bool> ok = s.run("adding " + numbered(info.session_number) + " of participant '" +
-                                info.participant_code + "'");
-        !ok)
-        return ok.error();
+    MONOPLANE_TRY(s.run("adding " + numbered(info.session_number) + " of participant '" +
+                        info.participant_code + "'"));
     return sqlite3_last_insert_rowid(db.get());
 }
 
-Result<bool> insert_trials(const Connection& db, std::int64_t session_id,
+Result<void> insert_trials(const Connection& db, std::int64_t session_id,
                            const Schedule& schedule) {
     Result<Statement> trial = Statement::prepare(
         db,
         "INSERT INTO trials (session_id, trial_index, practice, block, scene, mono_plane, "
         "label1_alternative, label1_mode, label2_mode, repetition) "
         "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
-    if (!trial) return trial.error();
+    MONOPLANE_TRY(trial);
     for (const ScheduledTrial& t : schedule.trials) {
         if (t.adaptive) continue;  // a plan until it starts (write_planned_trials)
         Statement& s = trial.value();
@@ -585,16 +574,16 @@ Result<bool> insert_trials(const Connection& db, std::int64_t session_id,
         s.bind(5, t.scene).bind(6, t.mono_plane).bind(7, t.label1_alternative);
         s.bind(8, render_mode_name(t.label1_mode)).bind(9, render_mode_name(t.label2_mode));
         s.bind(10, t.repetition);
-        if (Result<bool> ok = s.run("storing the schedule"); !ok) return ok;
+        MONOPLANE_TRY(s.run("storing the schedule"));
     }
-    return true;
+    return Ok{};
 }
 
 }  // namespace
 
 Result<std::int64_t> StudyStore::begin_session(
     const SessionInfo& info, const Schedule& schedule,
-    const std::function<Result<bool>(std::int64_t)>& before_commit) {
+    const std::function<Result<void>(std::int64_t)>& before_commit) {
     const Connection& db = impl_->db;
     if (!valid_participant_code(info.participant_code))
         return Error{"participant code '" + info.participant_code +
@@ -608,26 +597,24 @@ Result<std::int64_t> StudyStore::begin_session(
         return Error{"the schedule was made for " + numbered(schedule.session_number) +
                      " but participant '" + info.participant_code + "' is to begin " +
                      numbered(info.session_number) + "; make the schedule again."};
-    if (Result<bool> valid = validate_schedule(schedule); !valid)
+    if (Result<void> valid = validate_schedule(schedule); !valid)
         return Error{"cannot store the schedule: " + valid.error().message};
-    if (Result<bool> valid = validate_scene_files(info.scene_files, schedule); !valid)
+    if (Result<void> valid = validate_scene_files(info.scene_files, schedule); !valid)
         return Error{"cannot store the scene files: " + valid.error().message};
-    if (Result<bool> valid = validate_variables(info.variables); !valid)
+    if (Result<void> valid = validate_variables(info.variables); !valid)
         return Error{"cannot store the participant's variables: " + valid.error().message};
 
     Result<Transaction> tx = Transaction::begin(db, "starting a session");
-    if (!tx) return tx.error();
+    MONOPLANE_TRY(tx);
     Result<std::int64_t> participant_id = admit_participant(db, info, schedule);
-    if (!participant_id) return participant_id.error();
+    MONOPLANE_TRY(participant_id);
     Result<std::int64_t> session_id = insert_session(db, *participant_id, info, schedule);
-    if (!session_id) return session_id.error();
-    if (Result<bool> ok = insert_trials(db, *session_id, schedule); !ok) return ok.error();
-    if (Result<bool> ok = write_planned_trials(db, *session_id, schedule); !ok) return ok.error();
-    if (Result<bool> ok = write_scene_files(db, *session_id, info.scene_files); !ok)
-        return ok.error();
-    if (before_commit)
-        if (Result<bool> ok = before_commit(*session_id); !ok) return ok.error();
-    if (Result<bool> ok = tx.value().commit("starting a session"); !ok) return ok.error();
+    MONOPLANE_TRY(session_id);
+    MONOPLANE_TRY(insert_trials(db, *session_id, schedule));
+    MONOPLANE_TRY(write_planned_trials(db, *session_id, schedule));
+    MONOPLANE_TRY(write_scene_files(db, *session_id, info.scene_files));
+    if (before_commit) MONOPLANE_TRY(before_commit(*session_id));
+    MONOPLANE_TRY(tx.value().commit("starting a session"));
     return *session_id;
 }
 
@@ -653,7 +640,7 @@ Result<RenderMode> read_mode(const Statement& stmt, int column, const std::strin
 }
 
 // Reads the kTrialColumns starting at column 0 into a trial and, when decided, its outcome.
-Result<bool> read_trial(const Statement& stmt, const std::string& file, ScheduledTrial& trial,
+Result<void> read_trial(const Statement& stmt, const std::string& file, ScheduledTrial& trial,
                         bool& decided, TrialOutcome& outcome) {
     trial.index = stmt.int32(0);
     trial.practice = stmt.int64(1) != 0;
@@ -663,26 +650,26 @@ Result<bool> read_trial(const Statement& stmt, const std::string& file, Schedule
     trial.mono_plane = stmt.is_null(4) ? std::nan("") : stmt.real(4);
     trial.label1_alternative = stmt.int32(5);
     Result<RenderMode> label1 = read_mode(stmt, 6, file);
-    if (!label1) return label1.error();
+    MONOPLANE_TRY(label1);
     Result<RenderMode> label2 = read_mode(stmt, 7, file);
-    if (!label2) return label2.error();
+    MONOPLANE_TRY(label2);
     trial.label1_mode = *label1;
     trial.label2_mode = *label2;
     trial.adaptive = stmt.int64(16) != 0;
     trial.repetition = stmt.int32(17);
     decided = stmt.int64(8) != 0;
     outcome = TrialOutcome{};
-    if (!decided) return true;
+    if (!decided) return Ok{};
     outcome.choice = stmt.int32(9);
     Result<RenderMode> chosen = read_mode(stmt, 10, file);
-    if (!chosen) return chosen.error();
+    MONOPLANE_TRY(chosen);
     outcome.chosen_mode = *chosen;
     outcome.valid = stmt.int64(11) != 0;
     outcome.switches = stmt.int32(12);
     outcome.time_on_label_ns[0] = stmt.int64(13);
     outcome.time_on_label_ns[1] = stmt.int64(14);
     outcome.decision_time_ns = stmt.int64(15);
-    return true;
+    return Ok{};
 }
 
 }  // namespace
@@ -694,10 +681,10 @@ Result<Schedule> StudyStore::load_schedule(std::int64_t session_id) const {
                            "SELECT s.seed, p.participant_number, s.block_order, s.session_number "
                            "FROM sessions s JOIN participants p ON p.id = s.participant_id "
                            "WHERE s.id = ?");
-    if (!head) return head.error();
+    MONOPLANE_TRY(head);
     head.value().bind(1, session_id);
     Result<bool> found = head.value().step("loading a schedule");
-    if (!found) return found.error();
+    MONOPLANE_TRY(found);
     if (!*found) return impl_->no_session(session_id);
 
     Schedule schedule;
@@ -714,24 +701,23 @@ Result<Schedule> StudyStore::load_schedule(std::int64_t session_id) const {
         Statement::prepare(db, "SELECT " + std::string(kTrialColumns) +
                                    " FROM trials t WHERE t.session_id = ?1 UNION ALL " +
                                    std::string(kUnstartedPlannedTrials) + " ORDER BY 1");
-    if (!rows) return rows.error();
+    MONOPLANE_TRY(rows);
     rows.value().bind(1, session_id);
     for (;;) {
         Result<bool> row = rows.value().step("loading a schedule");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) break;
         ScheduledTrial trial;
         bool decided = false;
         TrialOutcome outcome;
-        if (Result<bool> ok = read_trial(*rows, db.path(), trial, decided, outcome); !ok)
-            return ok.error();
+        MONOPLANE_TRY(read_trial(*rows, db.path(), trial, decided, outcome));
         schedule.trials.push_back(std::move(trial));
     }
     return schedule;
 }
 
 Result<int> StudyStore::first_undecided_trial(std::int64_t session_id) const {
-    if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok.error();
+    MONOPLANE_TRY(impl_->require_session(session_id));
     // All decided: the trial count, i.e. one past the last trial. Slots not started count as
     // undecided.
     Result<Statement> stmt = Statement::prepare(
@@ -741,10 +727,9 @@ Result<int> StudyStore::first_undecided_trial(std::int64_t session_id) const {
         "SELECT pt.trial_index, 0 FROM planned_trials pt WHERE pt.session_id = ?1 AND NOT EXISTS "
         "(SELECT 1 FROM trials t WHERE t.session_id = pt.session_id AND "
         "t.trial_index = pt.trial_index))");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
-    Result<bool> row = stmt.value().step("finding the first undecided trial");
-    if (!row) return row.error();
+    MONOPLANE_TRY(stmt.value().step("finding the first undecided trial"));
     return stmt->int32(0);
 }
 
@@ -757,10 +742,10 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
         "s.started_utc, s.status, s.render_anti_aliasing, s.render_ssao, s.render_detail, "
         "s.procedure, p.participant_number, s.session_number, s.ended_utc, p.id "
         "FROM sessions s JOIN participants p ON p.id = s.participant_id WHERE s.id = ?");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
     Result<bool> found = stmt.value().step("reading a session");
-    if (!found) return found.error();
+    MONOPLANE_TRY(found);
     if (!*found) return impl_->no_session(session_id);
 
     SessionInfo info;
@@ -795,13 +780,13 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
     info.session_number = stmt->int32(19);
     info.ended_utc = stmt->is_null(20) ? "" : stmt->text(20);
     Result<std::vector<VariableValue>> variables = read_variables(db, stmt->int64(21));
-    if (!variables) return variables.error();
+    MONOPLANE_TRY(variables);
     info.variables = std::move(variables).value();
     Result<std::vector<SceneFileRecord>> files = read_scene_files(db, session_id);
-    if (!files) return files.error();
+    MONOPLANE_TRY(files);
     info.scene_files = std::move(files).value();
     Result<std::vector<SessionNote>> notes = read_session_notes(db, session_id);
-    if (!notes) return notes.error();
+    MONOPLANE_TRY(notes);
     info.notes = std::move(notes).value();
     return info;
 }
@@ -815,11 +800,11 @@ void StudyStore::queue_frame_gpu_ms(std::int64_t session_id, std::int64_t frame,
     impl_->frames.add_gpu_ms(session_id, frame, gpu_ms, mono_plane);
 }
 
-Result<bool> StudyStore::flush_frames() {
-    if (impl_->frames.empty()) return true;
+Result<void> StudyStore::flush_frames() {
+    if (impl_->frames.empty()) return Ok{};
     Result<Transaction> tx = Transaction::begin(impl_->db, "writing the frame log");
-    if (!tx) return tx.error();
-    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    MONOPLANE_TRY(tx);
+    MONOPLANE_TRY(impl_->write_queued_frames());
     return impl_->commit_written(tx.value(), "writing the frame log");
 }
 
@@ -836,9 +821,9 @@ Result<std::optional<std::int64_t>> StudyStore::latest_unfinished_session() cons
     // unwell) and resume later; only a completed session is done.
     Result<Statement> stmt = Statement::prepare(
         impl_->db, "SELECT id FROM sessions WHERE status <> 'completed' ORDER BY id DESC LIMIT 1");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     Result<bool> row = stmt.value().step("finding an unfinished session");
-    if (!row) return row.error();
+    MONOPLANE_TRY(row);
     if (!*row) return std::optional<std::int64_t>();
     return std::optional<std::int64_t>(stmt->int64(0));
 }
@@ -846,7 +831,7 @@ Result<std::optional<std::int64_t>> StudyStore::latest_unfinished_session() cons
 Result<int> StudyStore::participant_count() const {
     Result<std::int64_t> count =
         query_int(impl_->db, "SELECT count(*) FROM participants", "counting participants");
-    if (!count) return count.error();
+    MONOPLANE_TRY(count);
     return static_cast<int>(*count);
 }
 
@@ -857,7 +842,7 @@ bool is_instruction_event(EventKind kind) {
 }
 
 // Refuses an event the events table's CHECKs would refuse, with words a developer can act on.
-Result<bool> validate_event(const TrialEvent& event) {
+Result<void> validate_event(const TrialEvent& event) {
     const auto kind = static_cast<std::size_t>(event.kind);
     if (kind > static_cast<std::size_t>(EventKind::EndShown))
         return Error{"unknown event kind " + std::to_string(kind)};
@@ -878,23 +863,23 @@ Result<bool> validate_event(const TrialEvent& event) {
     if (!is_instruction_event(event.kind) && event.page != -1)
         return Error{"a '" + name + "' event has no instruction page (-1), not page " +
                      std::to_string(event.page)};
-    return true;
+    return Ok{};
 }
 
 }  // namespace
 
-Result<bool> StudyStore::append_event(std::int64_t session_id, const TrialEvent& event) {
-    if (Result<bool> ok = validate_event(event); !ok) return ok;
+Result<void> StudyStore::append_event(std::int64_t session_id, const TrialEvent& event) {
+    MONOPLANE_TRY(validate_event(event));
     // One transaction (with the queued frames); with synchronous = FULL it is on disk when this
     // returns.
     Result<Transaction> tx = Transaction::begin(impl_->db, "appending an event");
-    if (!tx) return tx.error();
-    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    MONOPLANE_TRY(tx);
+    MONOPLANE_TRY(impl_->write_queued_frames());
     Result<Statement> stmt = Statement::prepare(
         impl_->db,
         "INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame, page) "
         "VALUES (?, ?, ?, ?, ?, ?, ?)");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     const bool screen = is_screen_event(event.kind);
     Statement& s = stmt.value();
     s.bind(1, session_id);
@@ -913,11 +898,11 @@ Result<bool> StudyStore::append_event(std::int64_t session_id, const TrialEvent&
         (screen ? std::string("(a screen)") : "for trial " + std::to_string(event.trial_index)) +
         " of session " + std::to_string(session_id) + " (the session" +
         (screen ? "" : " and trial") + " must exist)";
-    if (Result<bool> ok = s.run(what); !ok) return ok;
+    MONOPLANE_TRY(s.run(what));
     return impl_->commit_written(tx.value(), what);
 }
 
-Result<bool> StudyStore::record_outcome(std::int64_t session_id, int trial_index,
+Result<void> StudyStore::record_outcome(std::int64_t session_id, int trial_index,
                                         const TrialOutcome& outcome) {
     const Connection& db = impl_->db;
     const std::string trial_name =
@@ -930,14 +915,14 @@ Result<bool> StudyStore::record_outcome(std::int64_t session_id, int trial_index
         return Error{"outcome of " + trial_name + ": switches and times must not be negative"};
 
     Result<Transaction> tx = Transaction::begin(db, "recording the outcome of " + trial_name);
-    if (!tx) return tx.error();
+    MONOPLANE_TRY(tx);
     Result<Statement> trial = Statement::prepare(db,
                                                  "SELECT label1_mode, label2_mode, decided FROM "
                                                  "trials WHERE session_id = ? AND trial_index = ?");
-    if (!trial) return trial.error();
+    MONOPLANE_TRY(trial);
     trial.value().bind(1, session_id).bind(2, trial_index);
     Result<bool> found = trial.value().step("recording the outcome of " + trial_name);
-    if (!found) return found.error();
+    MONOPLANE_TRY(found);
     if (!*found) return Error{"no " + trial_name + " in study database '" + db.path() + "'"};
     // A decision is data: never overwritten, and consistent with the blind assignment.
     if (trial->int64(2) != 0)
@@ -953,7 +938,7 @@ Result<bool> StudyStore::record_outcome(std::int64_t session_id, int trial_index
         "UPDATE trials SET decided = 1, choice = ?, chosen_mode = ?, valid = ?, switches = ?, "
         "time_label1_ns = ?, time_label2_ns = ?, decision_time_ns = ?, decided_utc = ? "
         "WHERE session_id = ? AND trial_index = ?");
-    if (!update) return update.error();
+    MONOPLANE_TRY(update);
     update.value()
         .bind(1, outcome.choice)
         .bind(2, render_mode_name(outcome.chosen_mode))
@@ -965,75 +950,69 @@ Result<bool> StudyStore::record_outcome(std::int64_t session_id, int trial_index
         .bind(8, utc_now_iso8601())
         .bind(9, session_id)
         .bind(10, trial_index);
-    if (Result<bool> ok = update.value().run("recording the outcome of " + trial_name); !ok)
-        return ok;
-    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    MONOPLANE_TRY(update.value().run("recording the outcome of " + trial_name));
+    MONOPLANE_TRY(impl_->write_queued_frames());
     return impl_->commit_written(tx.value(), "recording the outcome of " + trial_name);
 }
 
-Result<bool> StudyStore::set_status(std::int64_t session_id, SessionStatus status) {
+Result<void> StudyStore::set_status(std::int64_t session_id, SessionStatus status) {
     const bool ended = status == SessionStatus::Completed || status == SessionStatus::Aborted;
     Result<Transaction> tx = Transaction::begin(impl_->db, "setting a session's status");
-    if (!tx) return tx.error();
-    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    MONOPLANE_TRY(tx);
+    MONOPLANE_TRY(impl_->write_queued_frames());
     Result<Statement> stmt =
         Statement::prepare(impl_->db, "UPDATE sessions SET status = ?, ended_utc = ? WHERE id = ?");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_status_name(status));
     if (ended)
         stmt.value().bind(2, utc_now_iso8601());
     else
         stmt.value().bind_null(2);  // resumed: no longer ended
     stmt.value().bind(3, session_id);
-    if (Result<bool> ok =
-            stmt.value().run("setting the status of session " + std::to_string(session_id));
-        !ok)
-        return ok;
+    MONOPLANE_TRY(stmt.value().run("setting the status of session " + std::to_string(session_id)));
     if (sqlite3_changes(impl_->db.get()) == 0) return impl_->no_session(session_id);
     return impl_->commit_written(tx.value(), "setting a session's status");
 }
 
-Result<bool> StudyStore::record_answer(std::int64_t session_id, int item, const std::string& text,
+Result<void> StudyStore::record_answer(std::int64_t session_id, int item, const std::string& text,
                                        int answer) {
     if (item < 0) return Error{"questionnaire item " + std::to_string(item) + " is negative"};
     if (answer < 1)
         return Error{"questionnaire answer " + std::to_string(answer) + " to item " +
                      std::to_string(item) + " is below 1 (Likert answers count from 1)"};
     Result<Transaction> tx = Transaction::begin(impl_->db, "recording a questionnaire answer");
-    if (!tx) return tx.error();
-    if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok;
+    MONOPLANE_TRY(tx);
+    MONOPLANE_TRY(impl_->require_session(session_id));
     // Asked again after a resume: the latest answer counts.
     Result<Statement> stmt = Statement::prepare(
         impl_->db,
         "INSERT INTO answers (session_id, item, text, answer, answered_utc) "
         "VALUES (?, ?, ?, ?, ?) ON CONFLICT (session_id, item) DO UPDATE SET "
         "text = excluded.text, answer = excluded.answer, answered_utc = excluded.answered_utc");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value()
         .bind(1, session_id)
         .bind(2, item)
         .bind(3, text)
         .bind(4, answer)
         .bind(5, utc_now_iso8601());
-    if (Result<bool> ok = stmt.value().run("recording a questionnaire answer"); !ok) return ok;
-    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    MONOPLANE_TRY(stmt.value().run("recording a questionnaire answer"));
+    MONOPLANE_TRY(impl_->write_queued_frames());
     return impl_->commit_written(tx.value(), "recording a questionnaire answer");
 }
 
-Result<bool> StudyStore::record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) {
+Result<void> StudyStore::record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) {
     if (!trial.adaptive)
         return Error{"trial " + std::to_string(trial.index) +
                      " is not a staircase's trial; its m is scheduled"};
     Result<Transaction> tx = Transaction::begin(impl_->db, "recording a staircase's choice");
-    if (!tx) return tx.error();
-    if (Result<bool> ok = start_planned_trial(impl_->db, session_id, trial.index, trial.mono_plane);
-        !ok)
-        return ok;
-    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    MONOPLANE_TRY(tx);
+    MONOPLANE_TRY(start_planned_trial(impl_->db, session_id, trial.index, trial.mono_plane));
+    MONOPLANE_TRY(impl_->write_queued_frames());
     return impl_->commit_written(tx.value(), "recording a staircase's choice");
 }
 
-Result<bool> StudyStore::add_note(std::int64_t session_id, const SessionNote& note) {
+Result<void> StudyStore::add_note(std::int64_t session_id, const SessionNote& note) {
     const std::string where =
         "note for session " + std::to_string(session_id) + " in '" + impl_->db.path() + "'";
     if (note.text.find_first_not_of(" \t\r\n") == std::string::npos)
@@ -1050,14 +1029,14 @@ Result<bool> StudyStore::add_note(std::int64_t session_id, const SessionNote& no
     if (stamped.noted_utc.empty()) stamped.noted_utc = utc_now_iso8601();
     // Durable at once, with the frames queued so far: the note is as safe as a decision.
     Result<Transaction> tx = Transaction::begin(impl_->db, "adding a session note");
-    if (!tx) return tx.error();
-    if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok;
-    if (Result<bool> ok = write_session_note(impl_->db, session_id, stamped); !ok) return ok;
-    if (Result<bool> ok = impl_->write_queued_frames(); !ok) return ok;
+    MONOPLANE_TRY(tx);
+    MONOPLANE_TRY(impl_->require_session(session_id));
+    MONOPLANE_TRY(write_session_note(impl_->db, session_id, stamped));
+    MONOPLANE_TRY(impl_->write_queued_frames());
     return impl_->commit_written(tx.value(), "adding a session note");
 }
 
-Result<bool> StudyStore::add_session_note(std::int64_t session_id, const std::string& text) {
+Result<void> StudyStore::add_session_note(std::int64_t session_id, const std::string& text) {
     SessionNote note;
     note.text = text;
     note.source = NoteSource::Software;
@@ -1070,7 +1049,7 @@ const std::filesystem::path& StudyStore::path() const {
 
 Result<std::optional<ParticipantRecord>> StudyStore::participant(const std::string& code) const {
     Result<std::optional<StoredParticipant>> found = find_participant(impl_->db, code);
-    if (!found) return found.error();
+    MONOPLANE_TRY(found);
     if (!*found) return std::optional<ParticipantRecord>();
     return std::optional<ParticipantRecord>(std::move((*found)->record));
 }
@@ -1081,11 +1060,11 @@ Result<std::optional<std::int64_t>> StudyStore::find_session(const std::string& 
         impl_->db,
         "SELECT s.id FROM sessions s JOIN participants p ON p.id = s.participant_id "
         "WHERE p.code = ? AND s.session_number = ?");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, code).bind(2, session_number);
     Result<bool> row = stmt.value().step("looking up session " + std::to_string(session_number) +
                                          " of participant '" + code + "'");
-    if (!row) return row.error();
+    MONOPLANE_TRY(row);
     if (!*row) return std::optional<std::int64_t>();
     return std::optional<std::int64_t>(stmt->int64(0));
 }
@@ -1111,11 +1090,11 @@ constexpr std::string_view kRosterQuery =
 Result<std::vector<RosterRow>> StudyStore::roster() const {
     const Connection& db = impl_->db;
     Result<Statement> stmt = Statement::prepare(db, kRosterQuery);
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     std::vector<RosterRow> rows;
     for (;;) {
         Result<bool> row = stmt.value().step("reading the roster");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) break;
         const Statement& s = stmt.value();
         const std::optional<SessionStatus> status = parse_status(s.text(4));
@@ -1142,15 +1121,14 @@ Result<std::vector<RosterRow>> StudyStore::roster() const {
 
 Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> session_id) const {
     const Connection& db = impl_->db;
-    if (session_id)
-        if (Result<bool> ok = impl_->require_session(*session_id); !ok) return ok.error();
+    if (session_id) MONOPLANE_TRY(impl_->require_session(*session_id));
     Result<Statement> stmt = Statement::prepare(
         db, "SELECT " + std::string(kTrialColumns) +
                 ", t.session_id, p.code, s.session_number FROM trials t "
                 "JOIN sessions s ON s.id = t.session_id "
                 "JOIN participants p ON p.id = s.participant_id "
                 "WHERE ?1 IS NULL OR t.session_id = ?1 ORDER BY t.session_id, t.trial_index");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     if (session_id)
         stmt.value().bind(1, *session_id);
     else
@@ -1158,13 +1136,10 @@ Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> 
     std::vector<TrialRecord> records;
     for (;;) {
         Result<bool> row = stmt.value().step("reading trials");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) break;
         TrialRecord record;
-        if (Result<bool> ok =
-                read_trial(*stmt, db.path(), record.trial, record.decided, record.outcome);
-            !ok)
-            return ok.error();
+        MONOPLANE_TRY(read_trial(*stmt, db.path(), record.trial, record.decided, record.outcome));
         record.session_id = stmt->int64(kTrialColumnCount);
         record.participant_code = stmt->text(kTrialColumnCount + 1);
         record.session_number = stmt->int32(kTrialColumnCount + 2);
@@ -1175,17 +1150,17 @@ Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> 
 
 Result<std::vector<TrialEvent>> StudyStore::events(std::int64_t session_id) const {
     const Connection& db = impl_->db;
-    if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok.error();
+    MONOPLANE_TRY(impl_->require_session(session_id));
     Result<Statement> stmt = Statement::prepare(
         db,
         "SELECT kind, trial_index, label, time_ns, frame, page FROM events WHERE session_id = ? "
         "ORDER BY id");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
     std::vector<TrialEvent> events;
     for (;;) {
         Result<bool> row = stmt.value().step("reading events");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) break;
         const std::optional<EventKind> kind = parse_event_kind(stmt->text(0));
         if (!kind)
@@ -1204,15 +1179,15 @@ Result<std::vector<TrialEvent>> StudyStore::events(std::int64_t session_id) cons
 
 Result<std::vector<QuestionnaireAnswer>> StudyStore::answers(std::int64_t session_id) const {
     const Connection& db = impl_->db;
-    if (Result<bool> ok = impl_->require_session(session_id); !ok) return ok.error();
+    MONOPLANE_TRY(impl_->require_session(session_id));
     Result<Statement> stmt = Statement::prepare(
         db, "SELECT item, text, answer FROM answers WHERE session_id = ? ORDER BY item");
-    if (!stmt) return stmt.error();
+    MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
     std::vector<QuestionnaireAnswer> answers;
     for (;;) {
         Result<bool> row = stmt.value().step("reading questionnaire answers");
-        if (!row) return row.error();
+        MONOPLANE_TRY(row);
         if (!*row) break;
         answers.push_back(QuestionnaireAnswer{stmt->int32(0), stmt->text(1), stmt->int32(2)});
     }

@@ -152,7 +152,7 @@ class StudyStore final : public SessionLog {
     // so no other process can see the session running without a holder.
     Result<std::int64_t> begin_session(
         const SessionInfo& info, const Schedule& schedule,
-        const std::function<Result<bool>(std::int64_t)>& before_commit = {});
+        const std::function<Result<void>(std::int64_t)>& before_commit = {});
 
     // The schedule stored for a session (adaptive trials not started yet with a NaN mono
     // plane), and where to continue: the first undecided trial or unstarted slot.
@@ -178,27 +178,27 @@ class StudyStore final : public SessionLog {
     void queue_frame(std::int64_t session_id, const FrameRecord& frame);
     void queue_frame_gpu_ms(std::int64_t session_id, std::int64_t frame, double gpu_ms,
                             std::optional<double> mono_plane = std::nullopt);
-    Result<bool> flush_frames();
+    Result<void> flush_frames();
     Result<std::vector<FrameRecord>> frames(std::int64_t session_id) const;
     // One past the highest frame number the session's frame log or events use (0 for none):
     // where a resumed run's frames continue, so no two runs share a number.
     Result<std::int64_t> next_frame_number(std::int64_t session_id) const;
 
     // Durable when it returns (one transaction each).
-    Result<bool> append_event(std::int64_t session_id, const TrialEvent& event) override;
-    Result<bool> record_outcome(std::int64_t session_id, int trial_index,
+    Result<void> append_event(std::int64_t session_id, const TrialEvent& event) override;
+    Result<void> record_outcome(std::int64_t session_id, int trial_index,
                                 const TrialOutcome& outcome) override;
-    Result<bool> set_status(std::int64_t session_id, SessionStatus status) override;
-    Result<bool> record_answer(std::int64_t session_id, int item, const std::string& text,
+    Result<void> set_status(std::int64_t session_id, SessionStatus status) override;
+    Result<void> record_answer(std::int64_t session_id, int item, const std::string& text,
                                int answer) override;
     // The started adaptive trial becomes a row of the trials table with its m.
-    Result<bool> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) override;
+    Result<void> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) override;
     // Appends a note to a session (stamped with the current UTC time unless note.noted_utc is
     // set), durable when it returns. Refuses an empty or blank note, one over 10,000 characters
     // and an unknown session.
-    Result<bool> add_note(std::int64_t session_id, const SessionNote& note);
+    Result<void> add_note(std::int64_t session_id, const SessionNote& note);
     // A note from the software (NoteSource::Software, no session time).
-    Result<bool> add_session_note(std::int64_t session_id, const std::string& text);
+    Result<void> add_session_note(std::int64_t session_id, const std::string& text);
 
     // The trials shown or being shown (a staircase's slots once started), by session and index.
     Result<std::vector<TrialRecord>> trials(std::optional<std::int64_t> session_id = {}) const;

@@ -706,13 +706,13 @@ std::string questionnaire_csv(const std::vector<ItemSummary>& items) {
     return out;
 }
 
-Result<bool> write_text_file(const std::filesystem::path& path, const std::string& text) {
+Result<void> write_text_file(const std::filesystem::path& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     if (!out) return Error{"cannot write '" + path.string() + "': cannot open it for writing"};
     out << text;
     out.close();
     if (!out) return Error{"cannot write '" + path.string() + "': write failed (disk full?)"};
-    return true;
+    return Ok{};
 }
 
 Result<WrittenReport> write_report(const AnalysisResults& r, const std::vector<Figure>& figures,
@@ -723,7 +723,7 @@ Result<WrittenReport> write_report(const AnalysisResults& r, const std::vector<F
     if (ec) return Error{"cannot create '" + (dir / "figures").string() + "': " + ec.message()};
     for (const Figure& f : figures) {
         const std::filesystem::path path = dir / "figures" / (f.name + ".svg");
-        if (Result<bool> ok = write_text_file(path, f.svg); !ok) return ok.error();
+        MONOPLANE_TRY(write_text_file(path, f.svg));
         written.figures.push_back(path);
     }
     const std::pair<const char*, std::string> tables[] = {
@@ -742,16 +742,14 @@ Result<WrittenReport> write_report(const AnalysisResults& r, const std::vector<F
     };
     for (const auto& [name, text] : tables) {
         const std::filesystem::path path = dir / name;
-        if (Result<bool> ok = write_text_file(path, text); !ok) return ok.error();
+        MONOPLANE_TRY(write_text_file(path, text));
         written.tables.push_back(path);
     }
     written.json = dir / "summary.json";
-    if (Result<bool> ok = write_text_file(written.json, summary_json(r)); !ok) return ok.error();
+    MONOPLANE_TRY(write_text_file(written.json, summary_json(r)));
     // Last: a report.html on disk means everything it refers to is there too.
     written.html = dir / "report.html";
-    if (Result<bool> ok = write_text_file(written.html, report_html(r, figures)); !ok) {
-        return ok.error();
-    }
+    MONOPLANE_TRY(write_text_file(written.html, report_html(r, figures)));
     return written;
 }
 

@@ -126,6 +126,6 @@ Result<WrittenReport> write_report(const AnalysisResults& results,
                                    const std::filesystem::path& dir);
 
 // Writes `text` to `path`, replacing it; the error names the file.
-Result<bool> write_text_file(const std::filesystem::path& path, const std::string& text);
+Result<void> write_text_file(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace monoplane::analysis::report

@@ -298,8 +298,7 @@ Result<std::vector<std::filesystem::path>> write_bench_plots(const BenchReport& 
             {scene + "_time_vs_visible_error.svg", time_vs_visible_error_chart(report, scene)},
         };
         for (const auto& [name, svg] : figures) {
-            const Result<bool> ok = charts::write_svg_file(out / name, svg);
-            if (!ok) return ok.error();
+            MONOPLANE_TRY(charts::write_svg_file(out / name, svg));
             written.push_back(out / name);
         }
     }

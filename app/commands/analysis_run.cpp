@@ -6,6 +6,7 @@
 #include <system_error>
 #include <utility>
 
+#include "app/commands/option_wording.h"
 #include "app/commands/output_directory.h"
 #include "app/commands/study_rows.h"
 #include "charts/png/svg_to_png.h"
@@ -47,7 +48,7 @@ analysis::SessionRow session_row(const study::SessionInfo& info, const std::stri
 Result<analysis::Dataset> read_database(const std::filesystem::path& path) {
     const std::string db = path.string();
     Result<analysis::Dataset> read = read_study_database(path);
-    if (!read) return read.error();
+    MONOPLANE_TRY(read);
     analysis::Dataset dataset = std::move(read).value();
     Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(path);
     if (!store) return Error{"--db " + db + ": " + store.error().message};
@@ -75,7 +76,7 @@ void add_latin_square_rows(analysis::Dataset& dataset) {
 }
 
 // The same file named twice would count its sessions twice.
-Result<bool> check_distinct(const AnalyzeRequest& r) {
+Result<void> check_distinct(const AnalyzeRequest& r) {
     std::set<std::filesystem::path> seen;
     for (const auto* list : {&r.dbs, &r.csvs}) {
         for (const std::filesystem::path& file : *list) {
@@ -87,7 +88,7 @@ Result<bool> check_distinct(const AnalyzeRequest& r) {
                              " is given twice: its sessions would be counted twice"};
         }
     }
-    return true;
+    return Ok{};
 }
 
 Result<analysis::Dataset> read_csv(const std::filesystem::path& path) {
@@ -110,20 +111,19 @@ Result<analysis::Dataset> read_inputs(const AnalyzeRequest& r) {
     analysis::Dataset merged;
     for (const std::filesystem::path& db : r.dbs) {
         Result<analysis::Dataset> one = read_database(db);
-        if (!one) return one.error();
+        MONOPLANE_TRY(one);
         tell(r, "read " + db.string() + ": " + std::to_string(one->trials.size()) + " trials, " +
                     std::to_string(one->answers.size()) + " questionnaire answers");
         analysis::merge(merged, std::move(one).value());
     }
     for (const std::filesystem::path& csv : r.csvs) {
         Result<analysis::Dataset> one = read_csv(csv);
-        if (!one) return one.error();
+        MONOPLANE_TRY(one);
         tell(r, "read " + csv.string() + ": " + std::to_string(one->trials.size()) + " trials");
         analysis::merge(merged, std::move(one).value());
     }
     analysis::derive_session_fields(merged.trials);
-    Result<bool> joined = analysis::join_participant_codes(merged, r.codes);
-    if (!joined) return joined.error();
+    MONOPLANE_TRY(analysis::join_participant_codes(merged, r.codes, codes_option_names()));
     return merged;
 }
 
@@ -144,12 +144,12 @@ Result<AnalysisWritten> run_analysis(const AnalyzeRequest& request) {
             "analyze: no input; give at least one --db FILE (study database) or "
             "--csv FILE (`monoplane study export --format csv`)"};
     }
-    if (Result<bool> ok = check_distinct(request); !ok) return ok.error();
+    MONOPLANE_TRY(check_distinct(request));
     // Inputs first: a refusal (a shared code, a bad file) leaves no output directory behind.
     Result<analysis::Dataset> data = read_inputs(request);
-    if (!data) return data.error();
+    MONOPLANE_TRY(data);
     Result<std::filesystem::path> out = output_directory(request.out);
-    if (!out) return out.error();
+    MONOPLANE_TRY(out);
 
     analysis::report::ReportOptions options;
     options.logistic.log2_distance = request.log2_distance;
@@ -161,13 +161,12 @@ Result<AnalysisWritten> run_analysis(const AnalyzeRequest& request) {
         analysis::report::report_figures(done.results);
     Result<analysis::report::WrittenReport> written =
         analysis::report::write_report(done.results, figures, *out);
-    if (!written) return written.error();
+    MONOPLANE_TRY(written);
     done.written = std::move(written).value();
     for (const analysis::report::Figure& figure : figures) {
         // Twice the SVG's size: sharp on slides and in print.
         const std::filesystem::path png = *out / "figures" / (figure.name + ".png");
-        if (Result<bool> ok = charts::write_svg_as_png(figure.svg, png, 2.0); !ok)
-            return ok.error();
+        MONOPLANE_TRY(charts::write_svg_as_png(figure.svg, png, 2.0));
         done.pngs.push_back(png);
     }
     done.html = std::filesystem::absolute(done.written.html);

@@ -92,8 +92,8 @@ class RuntimeChoice {
     std::optional<fs::path> script_;
 };
 
-Result<bool> check_headset_name(const std::string& headset) {
-    if (headset == "simulated" || headset == "openxr") return true;
+Result<void> check_headset_name(const std::string& headset) {
+    if (headset == "simulated" || headset == "openxr") return Ok{};
     return Error{"headset '" + headset + "': choose simulated or openxr"};
 }
 
@@ -165,7 +165,7 @@ class CheckLoop {
                 std::this_thread::sleep_for(std::chrono::milliseconds(5));
                 continue;
             }
-            if (const Result<bool> shown = frame(); !shown) {
+            if (const Result<void> shown = frame(); !shown) {
                 lost(shown.error().message);
                 break;
             }
@@ -232,26 +232,26 @@ class CheckLoop {
                 "check again; the simulated headset remains available");
     }
 
-    Result<bool> frame() {
+    Result<void> frame() {
         const Result<headset::HeadsetFrame> frame = headset_.begin_frame();
-        if (!frame) return frame.error();
+        MONOPLANE_TRY(frame);
         measure(*frame);
         const Result<std::vector<headset::ControlPress>> presses = headset_.sync_controls();
-        if (!presses) return presses.error();
+        MONOPLANE_TRY(presses);
         for (const headset::ControlPress& press : *presses) {
             if (press.control == headset::Control::Confirm) {
                 end(CheckEnd::Confirmed, "the participant pressed CONFIRM: the headset fits");
             }
         }
         const Result<std::string> profile = headset_.interaction_profile();
-        if (!profile) return profile.error();
+        MONOPLANE_TRY(profile);
         if (!profile->empty()) result_.interaction_profile = *profile;
         if (frame->should_render) {
-            if (const Result<bool> drawn = draw(*frame); !drawn) return drawn;
+            MONOPLANE_TRY(draw(*frame));
         }
-        if (const Result<bool> done = headset_.end_frame(*frame); !done) return done;
+        MONOPLANE_TRY(headset_.end_frame(*frame));
         if (frame->should_render && frame->views_valid) ++result_.frames_shown;
-        return true;
+        return Ok{};
     }
 
     // What only a running session tells: the display's rate and the eyes' distance.
@@ -267,11 +267,11 @@ class CheckLoop {
 
     // The calibration screen into both eyes' images (the compositor's grey with the overlays),
     // submitted without waiting, as a study's neutral screen is.
-    Result<bool> draw(const headset::HeadsetFrame& frame) {
+    Result<void> draw(const headset::HeadsetFrame& frame) {
         std::array<vk::Image, 2> targets;
         for (int e = 0; e < 2; ++e) {
             const Result<vk::Image> image = headset_.acquire_eye_image(e);
-            if (!image) return image.error();
+            MONOPLANE_TRY(image);
             targets[e] = *image;
         }
         const std::vector<headset::EyeCompositor::Overlay> overlays = {
@@ -282,7 +282,7 @@ class CheckLoop {
                                    frame.views[e].tangents, nullptr, overlays, {});
         }
         ring_.submit(slot);
-        return true;
+        return Ok{};
     }
 
     const HeadsetCheckOptions& options_;
@@ -322,12 +322,12 @@ Result<HeadsetCheck> check_on(headset::OpenXrHeadset& headset, const HeadsetChec
     vk_core::ContextOptions context_options = options.global.context_options();
     context_options.hooks = headset.vulkan_hooks();
     Result<std::unique_ptr<vk_core::Context>> created = vk_core::Context::create(context_options);
-    if (!created) return created.error();
+    MONOPLANE_TRY(created);
     const vk_core::Context& ctx = *created.value();
     HeadsetCheck result;
     {
         SessionGuard guard(headset, ctx);
-        if (Result<bool> session = headset.create_session(ctx, options.headset.resolution_scale);
+        if (Result<void> session = headset.create_session(ctx, options.headset.resolution_scale);
             !session) {
             return Error{"the headset check could not start a session: " + session.error().message};
         }
@@ -377,15 +377,13 @@ Result<headset::HeadsetProbe> probe_headset(bool simulated, const HeadsetStudyOp
 }
 
 Result<HeadsetCheck> run_headset_check(const HeadsetCheckOptions& options) {
-    if (Result<bool> known = check_headset_name(options.headset.headset); !known) {
-        return known.error();
-    }
+    MONOPLANE_TRY(check_headset_name(options.headset.headset));
     try {
         RuntimeChoice choice(options.headset);
         Result<std::unique_ptr<headset::OpenXrHeadset>> created =
             headset::OpenXrHeadset::create(options.global.validation, false);
         choice.instance_created();
-        if (!created) return created.error();
+        MONOPLANE_TRY(created);
         return check_on(*created.value(), options);
     } catch (const std::exception& e) {
         // A Vulkan failure (a lost device) or a bad simulated script: a message, not a crash.

@@ -2,7 +2,7 @@
 // (database, protocol, participant, headset, Start) and, after it, shows the summary with Export
 // and Analyse. Every rule is the commands' own: the window draws lab::LauncherModel, a session is
 // run_study / resume_study (as `study run` / `study resume`), Export is `study export`'s
-// check_output + export_trials, Analyse is run_analysis (as `analyze`).
+// check_output_option + export_trials, Analyse is run_analysis (as `analyze`).
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -14,6 +14,7 @@
 #include "app/commands/analysis_run.h"
 #include "app/commands/commands.h"
 #include "app/commands/headset_check.h"
+#include "app/commands/option_wording.h"
 #include "app/commands/session_summary.h"
 #include "app/commands/study_options.h"
 #include "app/commands/validation_report.h"
@@ -21,7 +22,6 @@
 #include "app/lab/launcher_window.h"
 #include "app/window/desktop_window.h"
 #include "study/export.h"
-#include "study/output_file.h"
 #include "study/study_store.h"
 
 namespace monoplane::app {
@@ -56,12 +56,10 @@ std::string default_protocols_folder() {
 Result<fs::path> export_beside(const fs::path& db) {
     const fs::path out = db.parent_path() / (db.stem().string() + ".csv");
     const study::ExportFormat format = study::ExportFormat::Csv;
-    if (Result<bool> ok = study::check_output(out, study::export_output_kind(format), {db}, false);
-        !ok)
-        return ok.error();
+    MONOPLANE_TRY(check_output_option(out, export_option_kind(format), {db}, false));
     Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(db);
-    if (!store) return store.error();
-    if (Result<bool> ok = study::export_trials(**store, format, out, false); !ok) return ok.error();
+    MONOPLANE_TRY(store);
+    MONOPLANE_TRY(study::export_trials(**store, format, out, false));
     return out;
 }
 
@@ -71,7 +69,7 @@ Result<fs::path> analyse_beside(const fs::path& db) {
     request.dbs = {db};
     request.out = db.parent_path() / (db.stem().string() + "-analysis");
     Result<AnalysisWritten> written = run_analysis(request);
-    if (!written) return written.error();
+    MONOPLANE_TRY(written);
     return written->html;
 }
 
@@ -128,7 +126,7 @@ Result<lab::HeadsetReport> probe_for_lab(const std::string& headset, const LabOp
                                          const GlobalOptions& global) {
     Result<headset::HeadsetProbe> probe =
         probe_headset(headset == "simulated", o.headset, global.validation);
-    if (!probe) return probe.error();
+    MONOPLANE_TRY(probe);
     lab::HeadsetReport r;
     r.runtime_available = probe->runtime_available;
     r.runtime = probe->runtime;
@@ -177,7 +175,7 @@ Result<lab::HeadsetReport> check_for_lab(
     };
     try {
         Result<HeadsetCheck> check = run_headset_check(options);
-        if (!check) return check.error();
+        MONOPLANE_TRY(check);
         return report_of(*check);
     } catch (const std::exception& e) {
         return Error{std::string("the headset check stopped: ") + e.what()};
@@ -211,12 +209,12 @@ lab::LauncherExit open_launcher(lab::LauncherModel& model, lab::LauncherUi& ui, 
 }
 
 void run_lab(const LabOptions& o, const GlobalOptions& global) {
-    lab::LauncherModel model(lab::LauncherSettings{o.db, o.protocols});
+    lab::LauncherModel model(lab::LauncherSettings{o.db, o.protocols, study_run_option_names()});
     if (!o.initial_headset.empty())
-        if (Result<bool> ok = model.set_headset(o.initial_headset); !ok)
+        if (Result<void> ok = model.set_headset(o.initial_headset); !ok)
             throw UserError("--headset: " + ok.error().message);
     if (!o.initial_observer.empty())
-        if (Result<bool> ok = model.set_observer(o.initial_observer); !ok)
+        if (Result<void> ok = model.set_observer(o.initial_observer); !ok)
             throw UserError("--observer: " + ok.error().message);
     model.set_seed(o.seed);
     lab::LauncherUi ui;
@@ -228,7 +226,7 @@ void run_lab(const LabOptions& o, const GlobalOptions& global) {
         if (!exit.launch) return;
         const std::string error = run_session(*exit.launch, o, global);
         if (!error.empty()) std::cerr << "monoplane lab: the session stopped: " << error << "\n";
-        if (Result<bool> ended = model.session_ended(error); !ended)
+        if (Result<void> ended = model.session_ended(error); !ended)
             ui.action_message = ended.error().message;
         ui.summary_lines = summary_lines(model);
     }

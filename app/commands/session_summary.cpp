@@ -33,7 +33,7 @@ Error store_error(const study::StudyStore& store, const Error& error) {
 // An ended session's wall-clock time; an unended one's logged clock from its first to its last
 // event or frame (the clock of events and frames is not UTC, so it cannot be set against
 // started_utc; across a resume the pause between runs is not counted).
-Result<bool> fill_duration(const study::StudyStore& store, const study::SessionInfo& info,
+Result<void> fill_duration(const study::StudyStore& store, const study::SessionInfo& info,
                            const std::vector<study::FrameRecord>& frames, SessionSummary& s) {
     if (!info.ended_utc.empty()) {
         const auto start = parse_utc(info.started_utc);
@@ -42,7 +42,7 @@ Result<bool> fill_duration(const study::StudyStore& store, const study::SessionI
             s.duration_basis = DurationBasis::Ended;
             s.duration_s = static_cast<double>(*end - *start);
         }
-        return true;
+        return Ok{};
     }
     Result<std::vector<study::TrialEvent>> events = store.events(info.id);
     if (!events) return store_error(store, events.error());
@@ -60,7 +60,7 @@ Result<bool> fill_duration(const study::StudyStore& store, const study::SessionI
         s.duration_basis = DurationBasis::LastLogged;
         s.duration_s = static_cast<double>(last - first) * 1e-9;
     }
-    return true;
+    return Ok{};
 }
 
 // The frame log's share of missed frames, and the data trials `analyze` would flag: the same
@@ -150,7 +150,7 @@ Result<SessionSummary> summarize_session(const study::StudyStore& store, std::in
         ++s.practice_planned;
         s.practice_decided += t.decided ? 1 : 0;
     }
-    if (Result<bool> ok = fill_duration(store, *info, *frames, s); !ok) return ok.error();
+    MONOPLANE_TRY(fill_duration(store, *info, *frames, s));
     fill_frame_timing(store, *info, *trials, *frames, s);
     s.notes = info->notes;
     return s;

@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/commands/option_wording.h"
 #include "app/commands/study_options.h"
 #include "common/json_writer.h"
 #include "study/export.h"
-#include "study/output_file.h"
 #include "study/roster.h"
 #include "study/study_store.h"
 
@@ -102,7 +102,7 @@ void export_study(const StudyOptions& o) {
     const study::ExportFormat format = study::parse_export_format(o.format).value_or_throw();
     // Before the database is opened (which would create a missing one): a refused --out changes
     // nothing, and a study database is never overwritten by its own export.
-    study::check_output(o.out, study::export_output_kind(format), {o.db}, o.force).value_or_throw();
+    check_output_option(o.out, export_option_kind(format), {o.db}, o.force).value_or_throw();
     if (!std::filesystem::is_regular_file(o.db))
         throw UserError("no study database '" + o.db + "'");
     auto store = study::StudyStore::open(o.db).value_or_throw();

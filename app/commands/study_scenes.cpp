@@ -18,7 +18,7 @@ Result<std::vector<study::SceneFileRecord>> digest_files_read(
         std::error_code ignored;
         const std::filesystem::path absolute = std::filesystem::absolute(file, ignored);
         Result<study::FileDigest> digest = study::digest_file(absolute);
-        if (!digest) return digest.error();
+        MONOPLANE_TRY(digest);
         records.push_back(
             {scene, static_cast<int>(records.size()), absolute.lexically_normal(), *digest});
     }
@@ -33,9 +33,9 @@ Result<ImportedStudyScene> load_one(const std::string& scene, const std::filesys
     // Detail and seed apply to procedural scenes only.
     Result<scenes::Scene> loaded =
         load_scene(source, scenes::Detail::Low, scenes::kDefaultSeed, &report);
-    if (!loaded) return loaded.error();
+    MONOPLANE_TRY(loaded);
     Result<std::vector<study::SceneFileRecord>> files = digest_files_read(scene, report.files_read);
-    if (!files) return files.error();
+    MONOPLANE_TRY(files);
     return ImportedStudyScene{std::move(loaded).value(), std::move(files).value()};
 }
 

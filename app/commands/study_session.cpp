@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "app/commands/commands.h"
+#include "app/commands/option_wording.h"
 #include "app/commands/session_summary.h"
 #include "app/commands/study_headset.h"
 #include "app/commands/study_options.h"
@@ -136,7 +137,7 @@ study::SessionStart plan(const StudyOptions& o, const study::Protocol& protocol,
     request.participant_number = o.participant_number;
     request.variables = o.variables;
     request.seed = o.seed ? *o.seed : std::random_device{}() * 0x100000001ull;
-    return study::plan_session(store, protocol, request).value_or_throw();
+    return study::plan_session(store, protocol, request, study_run_option_names()).value_or_throw();
 }
 
 std::string session_title(const study::SessionInfo& info) {
@@ -181,12 +182,12 @@ void run_study(const StudyOptions& o, const GlobalOptions& global) {
         const std::int64_t id =
             store
                 ->begin_session(info, schedule,
-                                [&](std::int64_t new_id) -> Result<bool> {
+                                [&](std::int64_t new_id) -> Result<void> {
                                     Result<study::SessionHold> taken =
                                         study::SessionHold::acquire(o.db, new_id);
-                                    if (!taken) return taken.error();
+                                    MONOPLANE_TRY(taken);
                                     hold.emplace(std::move(taken).value());
-                                    return true;
+                                    return Ok{};
                                 })
                 .value_or_throw();
         std::cerr << "session " << id << ": " << session_title(info) << " (participant number "

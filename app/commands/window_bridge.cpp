@@ -43,7 +43,7 @@ void mirror_page(const study::LiveScreen& screen, window::ExperimenterView& view
                                : std::string();
 }
 
-std::string note_outcome(const Result<bool>& stored, const std::string& text, int trial_number) {
+std::string note_outcome(const Result<void>& stored, const std::string& text, int trial_number) {
     if (stored.ok()) return window::note_stored_text(trial_number);
     return window::note_refused_text(stored.error().message, text);
 }

@@ -19,6 +19,6 @@ void mirror_page(const study::LiveScreen& screen, window::ExperimenterView& view
 
 // The note field's report of LiveSession::note's result for `text`, typed while trial
 // `trial_number` (1-based, 0: before the first) was on screen or the last shown.
-std::string note_outcome(const Result<bool>& stored, const std::string& text, int trial_number);
+std::string note_outcome(const Result<void>& stored, const std::string& text, int trial_number);
 
 }  // namespace monoplane::app

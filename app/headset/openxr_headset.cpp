@@ -180,20 +180,20 @@ struct OpenXrHeadset::Impl {
     PFN_xrGetVulkanGraphicsDevice2KHR get_vk_device = nullptr;
     PFN_xrCreateVulkanDeviceKHR create_vk_device = nullptr;
 
-    Result<bool> check(const char* call, XrResult result) const {
+    Result<void> check(const char* call, XrResult result) const {
         if (XR_FAILED(result)) return xr_error(instance, call, result);
-        return true;
+        return Ok{};
     }
     // xrCreateInstance with these extensions and the validation's layers, then its messenger.
-    Result<bool> create_instance(const std::vector<const char*>& extensions);
+    Result<void> create_instance(const std::vector<const char*>& extensions);
     // The XR_KHR_vulkan_enable2 functions, from the instance.
-    Result<bool> load_vulkan_functions();
+    Result<void> load_vulkan_functions();
     // The primary stereo configuration's two views (recommended and maximum image sizes).
     Result<std::array<XrViewConfigurationView, 2>> view_configuration() const;
-    Result<bool> create_actions();
-    Result<bool> create_swapchains(const vk_core::Context& ctx, double scale, vk::Extent2D& extent,
+    Result<void> create_actions();
+    Result<void> create_swapchains(const vk_core::Context& ctx, double scale, vk::Extent2D& extent,
                                    vk::Format& format, vk::Format& depth_format);
-    Result<bool> create_swapchain(Swapchain& swapchain, XrSwapchainUsageFlags usage,
+    Result<void> create_swapchain(Swapchain& swapchain, XrSwapchainUsageFlags usage,
                                   std::int64_t format, vk::Extent2D extent);
     Result<vk::Image> acquire(Swapchain& swapchain);
 };
@@ -225,7 +225,7 @@ Result<std::vector<XrExtensionProperties>> runtime_extensions() {
 
 }  // namespace
 
-Result<bool> OpenXrHeadset::Impl::create_instance(const std::vector<const char*>& extensions) {
+Result<void> OpenXrHeadset::Impl::create_instance(const std::vector<const char*>& extensions) {
     XrInstanceCreateInfo create{XR_TYPE_INSTANCE_CREATE_INFO};
     std::strncpy(create.applicationInfo.applicationName, "monoplane",
                  XR_MAX_APPLICATION_NAME_SIZE - 1);
@@ -242,15 +242,15 @@ Result<bool> OpenXrHeadset::Impl::create_instance(const std::vector<const char*>
         return Error{"the OpenXR runtime refused to create an instance (" +
                      result_text(XR_NULL_HANDLE, result) + ")"};
     }
-    if (Result<bool> attached = validation.attach(instance); !attached) {
+    if (Result<void> attached = validation.attach(instance); !attached) {
         xrDestroyInstance(instance);
         instance = XR_NULL_HANDLE;
         return attached.error();
     }
-    return true;
+    return Ok{};
 }
 
-Result<bool> OpenXrHeadset::Impl::load_vulkan_functions() {
+Result<void> OpenXrHeadset::Impl::load_vulkan_functions() {
     const auto load = [&](const char* name, auto& function) {
         return XR_SUCCEEDED(xrGetInstanceProcAddr(
             instance, name, reinterpret_cast<PFN_xrVoidFunction*>(&function)));
@@ -261,19 +261,19 @@ Result<bool> OpenXrHeadset::Impl::load_vulkan_functions() {
         !load("xrCreateVulkanDeviceKHR", create_vk_device)) {
         return Error{"the OpenXR runtime lacks the functions of XR_KHR_vulkan_enable2"};
     }
-    return true;
+    return Ok{};
 }
 
 Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bool layer_depth) {
     auto impl = std::make_unique<Impl>();
     Result<std::vector<XrExtensionProperties>> extensions = runtime_extensions();
-    if (!extensions) return extensions.error();
+    MONOPLANE_TRY(extensions);
     if (!offers(*extensions, XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME)) {
         return Error{"the active OpenXR runtime does not support Vulkan (" +
                      std::string(XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) + " is missing)"};
     }
     Result<XrValidation> planned = XrValidation::plan(validation);
-    if (!planned) return planned.error();
+    MONOPLANE_TRY(planned);
     impl->validation = std::move(planned.value());
     std::vector<const char*> enabled = {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME};
     // Optional: without it the layer goes without depth and the runtime reprojects as it can.
@@ -281,7 +281,7 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bo
         layer_depth && offers(*extensions, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
     if (impl->depth_extension) enabled.push_back(XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
     for (const char* name : impl->validation.extensions()) enabled.push_back(name);
-    if (Result<bool> created = impl->create_instance(enabled); !created) return created.error();
+    MONOPLANE_TRY(impl->create_instance(enabled));
 
     XrInstanceProperties properties{XR_TYPE_INSTANCE_PROPERTIES};
     xrGetInstanceProperties(impl->instance, &properties);
@@ -298,7 +298,7 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bo
     }
     XrSystemProperties system_properties{XR_TYPE_SYSTEM_PROPERTIES};
     xrGetSystemProperties(impl->instance, impl->system, &system_properties);
-    if (Result<bool> loaded = impl->load_vulkan_functions(); !loaded) return loaded.error();
+    MONOPLANE_TRY(impl->load_vulkan_functions());
 
     std::unique_ptr<OpenXrHeadset> headset(new OpenXrHeadset(std::move(impl)));
     headset->runtime_name_ = std::string(properties.runtimeName) + " " +
@@ -376,13 +376,11 @@ vk_core::ContextCreationHooks OpenXrHeadset::vulkan_hooks() {
     return hooks;
 }
 
-Result<bool> OpenXrHeadset::Impl::create_actions() {
+Result<void> OpenXrHeadset::Impl::create_actions() {
     XrActionSetCreateInfo set_info{XR_TYPE_ACTION_SET_CREATE_INFO};
     std::strcpy(set_info.actionSetName, "study");
     std::strcpy(set_info.localizedActionSetName, "Study");
-    Result<bool> ok =
-        check("xrCreateActionSet", xrCreateActionSet(instance, &set_info, &action_set));
-    if (!ok) return ok;
+    MONOPLANE_TRY(check("xrCreateActionSet", xrCreateActionSet(instance, &set_info, &action_set)));
     const std::array<std::pair<const char*, const char*>, 3> names = {
         {{"switch", "Switch between the two versions"},
          {"confirm", "Choose the version shown"},
@@ -392,22 +390,19 @@ Result<bool> OpenXrHeadset::Impl::create_actions() {
         info.actionType = XR_ACTION_TYPE_BOOLEAN_INPUT;
         std::strcpy(info.actionName, names[i].first);
         std::strcpy(info.localizedActionName, names[i].second);
-        ok = check("xrCreateAction", xrCreateAction(action_set, &info, &actions[i]));
-        if (!ok) return ok;
+        MONOPLANE_TRY(check("xrCreateAction", xrCreateAction(action_set, &info, &actions[i])));
     }
     for (const ProfileBindings& profile : controller_bindings()) {
         std::vector<XrActionSuggestedBinding> suggested;
         for (const ControlBinding& b : profile.bindings) {
             XrPath path = XR_NULL_PATH;
-            ok = check("xrStringToPath", xrStringToPath(instance, b.path, &path));
-            if (!ok) return ok;
+            MONOPLANE_TRY(check("xrStringToPath", xrStringToPath(instance, b.path, &path)));
             suggested.push_back({actions[static_cast<std::size_t>(b.control)], path});
         }
         XrInteractionProfileSuggestedBinding suggestion{
             XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
-        ok = check("xrStringToPath",
-                   xrStringToPath(instance, profile.profile, &suggestion.interactionProfile));
-        if (!ok) return ok;
+        MONOPLANE_TRY(check("xrStringToPath", xrStringToPath(instance, profile.profile,
+                                                             &suggestion.interactionProfile)));
         suggestion.countSuggestedBindings = static_cast<std::uint32_t>(suggested.size());
         suggestion.suggestedBindings = suggested.data();
         const XrResult result = xrSuggestInteractionProfileBindings(instance, &suggestion);
@@ -423,7 +418,7 @@ Result<bool> OpenXrHeadset::Impl::create_actions() {
     return check("xrAttachSessionActionSets", xrAttachSessionActionSets(session, &attach));
 }
 
-Result<bool> OpenXrHeadset::Impl::create_swapchain(Swapchain& swapchain,
+Result<void> OpenXrHeadset::Impl::create_swapchain(Swapchain& swapchain,
                                                    XrSwapchainUsageFlags usage, std::int64_t format,
                                                    vk::Extent2D extent) {
     XrSwapchainCreateInfo info{XR_TYPE_SWAPCHAIN_CREATE_INFO};
@@ -435,13 +430,10 @@ Result<bool> OpenXrHeadset::Impl::create_swapchain(Swapchain& swapchain,
     info.faceCount = 1;
     info.arraySize = 1;
     info.mipCount = 1;
-    Result<bool> ok =
-        check("xrCreateSwapchain", xrCreateSwapchain(session, &info, &swapchain.handle));
-    if (!ok) return ok;
+    MONOPLANE_TRY(check("xrCreateSwapchain", xrCreateSwapchain(session, &info, &swapchain.handle)));
     std::uint32_t count = 0;
-    ok = check("xrEnumerateSwapchainImages",
-               xrEnumerateSwapchainImages(swapchain.handle, 0, &count, nullptr));
-    if (!ok) return ok;
+    MONOPLANE_TRY(check("xrEnumerateSwapchainImages",
+                        xrEnumerateSwapchainImages(swapchain.handle, 0, &count, nullptr)));
     swapchain.images.assign(count, {XR_TYPE_SWAPCHAIN_IMAGE_VULKAN2_KHR});
     return check("xrEnumerateSwapchainImages",
                  xrEnumerateSwapchainImages(
@@ -451,34 +443,32 @@ Result<bool> OpenXrHeadset::Impl::create_swapchain(Swapchain& swapchain,
 
 Result<std::array<XrViewConfigurationView, 2>> OpenXrHeadset::Impl::view_configuration() const {
     std::uint32_t count = 0;
-    Result<bool> ok =
-        check("xrEnumerateViewConfigurationViews",
-              xrEnumerateViewConfigurationViews(
-                  instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 0, &count, nullptr));
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(check(
+        "xrEnumerateViewConfigurationViews",
+        xrEnumerateViewConfigurationViews(
+            instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 0, &count, nullptr)));
     if (count != 2) return Error{"the headset does not have two views"};
     std::array<XrViewConfigurationView, 2> config{};
     for (auto& c : config) c.type = XR_TYPE_VIEW_CONFIGURATION_VIEW;
-    ok = check(
-        "xrEnumerateViewConfigurationViews",
-        xrEnumerateViewConfigurationViews(
-            instance, system, XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO, 2, &count, config.data()));
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(check("xrEnumerateViewConfigurationViews",
+                        xrEnumerateViewConfigurationViews(instance, system,
+                                                          XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO,
+                                                          2, &count, config.data())));
     return config;
 }
 
 Result<vk::Extent2D> OpenXrHeadset::recommended_eye_extent() const {
     Result<std::array<XrViewConfigurationView, 2>> views = impl_->view_configuration();
-    if (!views) return views.error();
+    MONOPLANE_TRY(views);
     return vk::Extent2D((*views)[0].recommendedImageRectWidth,
                         (*views)[0].recommendedImageRectHeight);
 }
 
-Result<bool> OpenXrHeadset::Impl::create_swapchains(const vk_core::Context& ctx, double scale,
+Result<void> OpenXrHeadset::Impl::create_swapchains(const vk_core::Context& ctx, double scale,
                                                     vk::Extent2D& extent, vk::Format& format,
                                                     vk::Format& depth_format) {
     Result<std::array<XrViewConfigurationView, 2>> views = view_configuration();
-    if (!views) return views.error();
+    MONOPLANE_TRY(views);
     const std::array<XrViewConfigurationView, 2>& config = *views;
     const auto scaled = [scale](std::uint32_t size, std::uint32_t max) {
         const auto s = static_cast<std::uint32_t>(std::lround(size * scale));
@@ -489,9 +479,8 @@ Result<bool> OpenXrHeadset::Impl::create_swapchains(const vk_core::Context& ctx,
                      scaled(config[0].recommendedImageRectHeight, config[0].maxImageRectHeight));
 
     std::uint32_t count = 0;
-    Result<bool> ok = check("xrEnumerateSwapchainFormats",
-                            xrEnumerateSwapchainFormats(session, 0, &count, nullptr));
-    if (!ok) return ok;
+    MONOPLANE_TRY(check("xrEnumerateSwapchainFormats",
+                        xrEnumerateSwapchainFormats(session, 0, &count, nullptr)));
     std::vector<std::int64_t> formats(count);
     xrEnumerateSwapchainFormats(session, count, &count, formats.data());
     std::int64_t chosen = 0;
@@ -507,19 +496,18 @@ Result<bool> OpenXrHeadset::Impl::create_swapchains(const vk_core::Context& ctx,
 
     for (Swapchain& swapchain : swapchains) {
         // Transfer usage: the eyes are blitted in, the mirror is blitted out.
-        ok = create_swapchain(swapchain,
-                              XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT |
-                                  XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT |
-                                  XR_SWAPCHAIN_USAGE_TRANSFER_SRC_BIT,
-                              chosen, extent);
-        if (!ok) return ok;
+        MONOPLANE_TRY(create_swapchain(swapchain,
+                                       XR_SWAPCHAIN_USAGE_COLOR_ATTACHMENT_BIT |
+                                           XR_SWAPCHAIN_USAGE_TRANSFER_DST_BIT |
+                                           XR_SWAPCHAIN_USAGE_TRANSFER_SRC_BIT,
+                                       chosen, extent));
     }
 
     // The eyes' depth, the same size as their colour (XR_KHR_composition_layer_depth pairs a
     // view's depth sub-image with its colour one). The runtime lists colour and depth formats
     // together; the first of eye_depth_formats() it offers is taken.
     depth_format = vk::Format::eUndefined;
-    if (!depth_extension) return true;
+    if (!depth_extension) return Ok{};
     for (vk::Format wanted : eye_depth_formats()) {
         if (std::find(formats.begin(), formats.end(), static_cast<std::int64_t>(wanted)) !=
             formats.end()) {
@@ -530,18 +518,17 @@ Result<bool> OpenXrHeadset::Impl::create_swapchains(const vk_core::Context& ctx,
     if (depth_format == vk::Format::eUndefined) {
         std::cerr << "note: the OpenXR runtime offers no depth swapchain format monoplane writes; "
                      "the eyes' depth is not submitted\n";
-        return true;
+        return Ok{};
     }
     for (Swapchain& swapchain : depth_swapchains) {
         // Drawn as an attachment (eye_depth_writer.h) and nothing else.
-        ok = create_swapchain(swapchain, XR_SWAPCHAIN_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                              static_cast<std::int64_t>(depth_format), extent);
-        if (!ok) return ok;
+        MONOPLANE_TRY(create_swapchain(swapchain, XR_SWAPCHAIN_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                       static_cast<std::int64_t>(depth_format), extent));
     }
-    return true;
+    return Ok{};
 }
 
-Result<bool> OpenXrHeadset::create_session(const vk_core::Context& ctx, double resolution_scale) {
+Result<void> OpenXrHeadset::create_session(const vk_core::Context& ctx, double resolution_scale) {
     Impl& x = *impl_;
     XrGraphicsBindingVulkan2KHR binding{XR_TYPE_GRAPHICS_BINDING_VULKAN2_KHR};
     binding.instance = static_cast<VkInstance>(*ctx.instance());
@@ -552,8 +539,7 @@ Result<bool> OpenXrHeadset::create_session(const vk_core::Context& ctx, double r
     XrSessionCreateInfo info{XR_TYPE_SESSION_CREATE_INFO};
     info.next = &binding;
     info.systemId = x.system;
-    Result<bool> ok = x.check("xrCreateSession", xrCreateSession(x.instance, &info, &x.session));
-    if (!ok) return ok;
+    MONOPLANE_TRY(x.check("xrCreateSession", xrCreateSession(x.instance, &info, &x.session)));
     phase_ = SessionPhase::Idle;
 
     // LOCAL: the origin where the participant's head was when the session began, so the scene's
@@ -561,10 +547,9 @@ Result<bool> OpenXrHeadset::create_session(const vk_core::Context& ctx, double r
     XrReferenceSpaceCreateInfo space{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
     space.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_LOCAL;
     space.poseInReferenceSpace.orientation.w = 1.0f;
-    ok = x.check("xrCreateReferenceSpace", xrCreateReferenceSpace(x.session, &space, &x.local));
-    if (!ok) return ok;
-    ok = x.create_actions();
-    if (!ok) return ok;
+    MONOPLANE_TRY(
+        x.check("xrCreateReferenceSpace", xrCreateReferenceSpace(x.session, &space, &x.local)));
+    MONOPLANE_TRY(x.create_actions());
     return x.create_swapchains(ctx, resolution_scale, eye_extent_, swapchain_format_,
                                depth_format_);
 }
@@ -586,12 +571,10 @@ Result<bool> OpenXrHeadset::poll_events() {
         if (changed.state == XR_SESSION_STATE_READY) {
             XrSessionBeginInfo begin{XR_TYPE_SESSION_BEGIN_INFO};
             begin.primaryViewConfigurationType = XR_VIEW_CONFIGURATION_TYPE_PRIMARY_STEREO;
-            Result<bool> ok = x.check("xrBeginSession", xrBeginSession(x.session, &begin));
-            if (!ok) return ok;
+            MONOPLANE_TRY(x.check("xrBeginSession", xrBeginSession(x.session, &begin)));
             running_ = true;
         } else if (changed.state == XR_SESSION_STATE_STOPPING) {
-            Result<bool> ok = x.check("xrEndSession", xrEndSession(x.session));
-            if (!ok) return ok;
+            MONOPLANE_TRY(x.check("xrEndSession", xrEndSession(x.session)));
             running_ = false;
         } else if (changed.state == XR_SESSION_STATE_EXITING ||
                    changed.state == XR_SESSION_STATE_LOSS_PENDING) {
@@ -606,11 +589,9 @@ Result<HeadsetFrame> OpenXrHeadset::begin_frame() {
     Impl& x = *impl_;
     XrFrameWaitInfo wait{XR_TYPE_FRAME_WAIT_INFO};
     XrFrameState state{XR_TYPE_FRAME_STATE};
-    Result<bool> ok = x.check("xrWaitFrame", xrWaitFrame(x.session, &wait, &state));
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(x.check("xrWaitFrame", xrWaitFrame(x.session, &wait, &state)));
     XrFrameBeginInfo begin{XR_TYPE_FRAME_BEGIN_INFO};
-    ok = x.check("xrBeginFrame", xrBeginFrame(x.session, &begin));
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(x.check("xrBeginFrame", xrBeginFrame(x.session, &begin)));
 
     HeadsetFrame frame;
     frame.index = ++x.frame_index;
@@ -624,9 +605,8 @@ Result<HeadsetFrame> OpenXrHeadset::begin_frame() {
     XrViewState view_state{XR_TYPE_VIEW_STATE};
     std::uint32_t count = 0;
     for (auto& v : x.views) v = {XR_TYPE_VIEW};
-    ok = x.check("xrLocateViews",
-                 xrLocateViews(x.session, &locate, &view_state, 2, &count, x.views.data()));
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(x.check("xrLocateViews", xrLocateViews(x.session, &locate, &view_state, 2, &count,
+                                                         x.views.data())));
     const XrViewStateFlags needed =
         XR_VIEW_STATE_ORIENTATION_VALID_BIT | XR_VIEW_STATE_POSITION_VALID_BIT;
     frame.views_valid = count == 2 && (view_state.viewStateFlags & needed) == needed;
@@ -652,9 +632,8 @@ Result<std::vector<ControlPress>> OpenXrHeadset::sync_controls() {
         XrActionStateGetInfo get{XR_TYPE_ACTION_STATE_GET_INFO};
         get.action = x.actions[i];
         XrActionStateBoolean state{XR_TYPE_ACTION_STATE_BOOLEAN};
-        Result<bool> ok =
-            x.check("xrGetActionStateBoolean", xrGetActionStateBoolean(x.session, &get, &state));
-        if (!ok) return ok.error();
+        MONOPLANE_TRY(
+            x.check("xrGetActionStateBoolean", xrGetActionStateBoolean(x.session, &get, &state)));
         // A press is the moment the button goes down; holding it does not repeat.
         if (state.isActive && state.changedSinceLastSync && state.currentState) {
             presses.push_back({static_cast<Control>(i), state.lastChangeTime});
@@ -666,13 +645,11 @@ Result<std::vector<ControlPress>> OpenXrHeadset::sync_controls() {
 Result<vk::Image> OpenXrHeadset::Impl::acquire(Swapchain& swapchain) {
     std::uint32_t index = 0;
     XrSwapchainImageAcquireInfo acquire{XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
-    Result<bool> ok = check("xrAcquireSwapchainImage",
-                            xrAcquireSwapchainImage(swapchain.handle, &acquire, &index));
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(check("xrAcquireSwapchainImage",
+                        xrAcquireSwapchainImage(swapchain.handle, &acquire, &index)));
     XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
     wait.timeout = XR_INFINITE_DURATION;
-    ok = check("xrWaitSwapchainImage", xrWaitSwapchainImage(swapchain.handle, &wait));
-    if (!ok) return ok.error();
+    MONOPLANE_TRY(check("xrWaitSwapchainImage", xrWaitSwapchainImage(swapchain.handle, &wait)));
     swapchain.acquired = true;
     return vk::Image(swapchain.images[index].image);
 }
@@ -687,7 +664,7 @@ Result<vk::Image> OpenXrHeadset::acquire_eye_depth_image(int eye) {
     return impl_->acquire(swapchain);
 }
 
-Result<bool> OpenXrHeadset::end_frame(const HeadsetFrame& frame,
+Result<void> OpenXrHeadset::end_frame(const HeadsetFrame& frame,
                                       const std::optional<DepthEncoding>& depth) {
     Impl& x = *impl_;
     // Releases the acquired images of two swapchains; true if both were acquired.
@@ -699,17 +676,16 @@ Result<bool> OpenXrHeadset::end_frame(const HeadsetFrame& frame,
                 continue;
             }
             XrSwapchainImageReleaseInfo info{XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
-            Result<bool> ok = x.check("xrReleaseSwapchainImage",
-                                      xrReleaseSwapchainImage(swapchain.handle, &info));
-            if (!ok) return ok;
+            MONOPLANE_TRY(x.check("xrReleaseSwapchainImage",
+                                  xrReleaseSwapchainImage(swapchain.handle, &info)));
             swapchain.acquired = false;
         }
         return both;
     };
     Result<bool> rendered = release(x.swapchains);
-    if (!rendered) return rendered;
+    MONOPLANE_TRY(rendered);
     Result<bool> depth_written = release(x.depth_swapchains);
-    if (!depth_written) return depth_written;
+    MONOPLANE_TRY(depth_written);
     // XR_KHR_composition_layer_depth (XrCompositionLayerDepthInfoKHR): depth goes "to the next
     // chain for all XrCompositionLayerProjectionView structures in the given layer", here with
     // the colour's rectangle on the depth swapchain. minDepth and maxDepth are the window depths
@@ -758,26 +734,23 @@ Result<std::string> OpenXrHeadset::interaction_profile() const {
     if (x.session == XR_NULL_HANDLE) return Error{"no OpenXR session: nothing is bound yet"};
     for (const char* hand : {"/user/hand/left", "/user/hand/right"}) {
         XrPath path = XR_NULL_PATH;
-        Result<bool> ok = x.check("xrStringToPath", xrStringToPath(x.instance, hand, &path));
-        if (!ok) return ok.error();
+        MONOPLANE_TRY(x.check("xrStringToPath", xrStringToPath(x.instance, hand, &path)));
         XrInteractionProfileState state{XR_TYPE_INTERACTION_PROFILE_STATE};
-        ok = x.check("xrGetCurrentInteractionProfile",
-                     xrGetCurrentInteractionProfile(x.session, path, &state));
-        if (!ok) return ok.error();
+        MONOPLANE_TRY(x.check("xrGetCurrentInteractionProfile",
+                              xrGetCurrentInteractionProfile(x.session, path, &state)));
         if (state.interactionProfile == XR_NULL_PATH) continue;
         char text[XR_MAX_PATH_LENGTH] = {};
         std::uint32_t length = 0;
-        ok = x.check("xrPathToString", xrPathToString(x.instance, state.interactionProfile,
-                                                      sizeof text, &length, text));
-        if (!ok) return ok.error();
+        MONOPLANE_TRY(x.check("xrPathToString", xrPathToString(x.instance, state.interactionProfile,
+                                                               sizeof text, &length, text)));
         return std::string(text);
     }
     return std::string();
 }
 
-Result<bool> OpenXrHeadset::request_exit() {
+Result<void> OpenXrHeadset::request_exit() {
     Impl& x = *impl_;
-    if (!running_) return true;
+    if (!running_) return Ok{};
     return x.check("xrRequestExitSession", xrRequestExitSession(x.session));
 }
 

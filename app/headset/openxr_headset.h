@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "common/result.h"
+#include "renderer/vk/context.h"
 #include "rig/pose.h"
 #include "rig/tangents.h"
-#include "renderer/vk/context.h"
 
 namespace monoplane::headset {
 
@@ -97,7 +97,7 @@ class OpenXrHeadset {
     // Creates the session on the Context's device, the LOCAL space, the actions and one swapchain
     // per eye at the runtime's recommended size times resolution_scale; with the depth extension
     // enabled, one depth swapchain per eye of the same size too (depth_format()).
-    Result<bool> create_session(const vk_core::Context& ctx, double resolution_scale);
+    Result<void> create_session(const vk_core::Context& ctx, double resolution_scale);
     vk::Extent2D eye_extent() const { return eye_extent_; }
     vk::Format swapchain_format() const { return swapchain_format_; }
     // The eyes' depth swapchains' format (one of eye_depth_formats()), or eUndefined when no
@@ -124,7 +124,7 @@ class OpenXrHeadset {
     // rendered). The images' writes must have completed (the caller waited for its queue).
     // With `depth` and both eyes' depth images acquired, each view carries its depth
     // (XR_KHR_composition_layer_depth), else none does.
-    Result<bool> end_frame(const HeadsetFrame& frame,
+    Result<void> end_frame(const HeadsetFrame& frame,
                            const std::optional<DepthEncoding>& depth = std::nullopt);
     // The interaction profile the runtime bound to the participant's hands
     // (xrGetCurrentInteractionProfile, left hand first), or "" while none is: runtimes bind one
@@ -132,7 +132,7 @@ class OpenXrHeadset {
     // destroy_session.
     Result<std::string> interaction_profile() const;
     // Asks the runtime to end the session (it answers with STOPPING).
-    Result<bool> request_exit();
+    Result<void> request_exit();
     // Destroys the swapchains and the session; call before the Vulkan device is destroyed.
     void destroy_session();
 

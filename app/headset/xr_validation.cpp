@@ -84,8 +84,8 @@ Result<XrValidation> XrValidation::plan(bool requested) {
     return validation;
 }
 
-Result<bool> XrValidation::attach(XrInstance instance) {
-    if (!enabled()) return true;
+Result<void> XrValidation::attach(XrInstance instance) {
+    if (!enabled()) return Ok{};
     PFN_xrCreateDebugUtilsMessengerEXT create = nullptr;
     if (XR_FAILED(xrGetInstanceProcAddr(instance, "xrCreateDebugUtilsMessengerEXT",
                                         reinterpret_cast<PFN_xrVoidFunction*>(&create))) ||
@@ -122,7 +122,7 @@ Result<bool> XrValidation::attach(XrInstance instance) {
         name.objectName = "monoplane";
         set_name(instance, &name);
     }
-    return true;
+    return Ok{};
 }
 
 void XrValidation::detach() {

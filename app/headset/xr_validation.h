@@ -37,7 +37,7 @@ class XrValidation {
     // Creates the messenger on the instance made with layers() and extensions(). Any message at
     // warning severity or above is recorded. Call once, right after xrCreateInstance; the
     // messenger lives until detach() or the instance's destruction.
-    Result<bool> attach(XrInstance instance);
+    Result<void> attach(XrInstance instance);
     // Destroys the messenger; call before xrDestroyInstance. Safe to call twice.
     void detach();
 

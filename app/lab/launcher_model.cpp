@@ -29,22 +29,22 @@ ProtocolChoice judge_protocol(const fs::path& path) {
 
 // What `study resume` would say about an unfinished session that nobody holds: its scene files
 // are read again with the check resume makes (study::changed_scene_files).
-Result<bool> judge_resume(const study::StudyStore& store, RosterLine& line) {
+Result<void> judge_resume(const study::StudyStore& store, RosterLine& line) {
     const study::RosterRow& row = line.entry.row;
-    if (row.status == study::SessionStatus::Completed) return true;
+    if (row.status == study::SessionStatus::Completed) return Ok{};
     if (line.entry.holder) {
         line.resume_refusal = "session " + std::to_string(row.session_id) + " is being run by " +
                               line.entry.holder->describe() +
                               "; wait until it ends there, or stop that process and resume it";
-        return true;
+        return Ok{};
     }
     Result<study::SessionInfo> info = store.session(row.session_id);
-    if (!info) return info.error();
+    MONOPLANE_TRY(info);
     const std::vector<study::SceneFileChange> changes =
         study::changed_scene_files(info->scene_files);
     if (changes.empty()) {
         line.resume_offered = true;
-        return true;
+        return Ok{};
     }
     line.scene_files_changed = true;
     line.resume_refusal = "scene files changed since session " + std::to_string(row.session_id) +
@@ -54,14 +54,14 @@ Result<bool> judge_resume(const study::StudyStore& store, RosterLine& line) {
         line.resume_refusal += "\n  " + study::describe(change);
     line.resume_refusal +=
         "\nRestore the files, or resume with changed scenes (the session's notes will record it).";
-    return true;
+    return Ok{};
 }
 
 // The problem with a field's text, in check_variable_value's words; none while it is empty
 // (plan_session names a required one that is still missing).
-std::string field_message(const VariableField& field) {
+std::string field_message(const VariableField& field, const study::RequestNames& names) {
     if (field.text.empty()) return {};
-    Result<std::string> value = study::check_variable_value(field.declaration, field.text);
+    Result<std::string> value = study::check_variable_value(field.declaration, field.text, names);
     return value ? std::string() : value.error().message;
 }
 
@@ -109,15 +109,15 @@ Result<std::vector<ProtocolChoice>> list_protocols(const fs::path& folder) {
 
 Result<std::vector<RosterLine>> read_launcher_roster(const fs::path& database) {
     Result<std::vector<study::RosterEntry>> entries = study::read_roster({database});
-    if (!entries) return entries.error();
+    MONOPLANE_TRY(entries);
     Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(database);
-    if (!store) return store.error();
+    MONOPLANE_TRY(store);
     std::vector<RosterLine> lines;
     for (study::RosterEntry& entry : entries.value()) {
         RosterLine line;
         line.entry = std::move(entry);
         line.state = line.entry.state();
-        if (Result<bool> judged = judge_resume(**store, line); !judged) return judged.error();
+        MONOPLANE_TRY(judge_resume(**store, line));
         lines.push_back(std::move(line));
     }
     return lines;
@@ -145,7 +145,7 @@ std::vector<std::string> LaunchRequest::arguments() const {
     return a;
 }
 
-LauncherModel::LauncherModel(LauncherSettings settings) {
+LauncherModel::LauncherModel(LauncherSettings settings) : names_(std::move(settings.names)) {
     // Failures stay as the steps' messages: the window shows them where the choice is made.
     if (!settings.protocols.empty()) (void)scan_protocols(settings.protocols);
     if (!settings.db.empty() && open_database(settings.db, true)) step_ = LauncherStep::Protocol;
@@ -156,40 +156,40 @@ LauncherModel::~LauncherModel() = default;
 LauncherModel::LauncherModel(LauncherModel&&) noexcept = default;
 LauncherModel& LauncherModel::operator=(LauncherModel&&) noexcept = default;
 
-Result<bool> LauncherModel::step_done(LauncherStep step) const {
+Result<void> LauncherModel::step_done(LauncherStep step) const {
     switch (step) {
         case LauncherStep::Database:
-            if (store_) return true;
+            if (store_) return Ok{};
             return Error{"open or create a study database first" +
                          (db_message_.empty() ? std::string() : ": " + db_message_)};
         case LauncherStep::Protocol:
-            if (protocol_) return true;
+            if (protocol_) return Ok{};
             return Error{"choose a valid protocol first"};
         case LauncherStep::Participant:
-            if (!code_.empty() && code_message_.empty()) return true;
+            if (!code_.empty() && code_message_.empty()) return Ok{};
             return Error{code_.empty() ? "enter the participant code first" : code_message_};
         default:
-            return true;
+            return Ok{};
     }
 }
 
-Result<bool> LauncherModel::go_to(LauncherStep step) {
-    if (step == step_) return true;
+Result<void> LauncherModel::go_to(LauncherStep step) {
+    if (step == step_) return Ok{};
     if (step_ == LauncherStep::Session) return Error{running_message()};
     if (step == LauncherStep::Session || step == LauncherStep::Summary)
         return Error{"a session begins with Start (or Resume); its summary follows it"};
     if (step < step_) {
         step_ = step;
-        return true;
+        return Ok{};
     }
     for (int s = 0; s < static_cast<int>(step); ++s) {
-        if (Result<bool> done = step_done(static_cast<LauncherStep>(s)); !done) return done;
+        MONOPLANE_TRY(step_done(static_cast<LauncherStep>(s)));
     }
     step_ = step;
-    return true;
+    return Ok{};
 }
 
-Result<bool> LauncherModel::open_database(const fs::path& path, bool create) {
+Result<void> LauncherModel::open_database(const fs::path& path, bool create) {
     if (step_ == LauncherStep::Session) return Error{running_message()};
     std::error_code ec;
     Error problem;
@@ -206,7 +206,7 @@ Result<bool> LauncherModel::open_database(const fs::path& path, bool create) {
         db_message_.clear();
         (void)refresh_roster();       // its error becomes the database step's message
         set_participant_code(code_);  // a code known in one database may be new in another
-        return true;
+        return Ok{};
     }
     // A failed choice leaves no database open, so nothing starts in the wrong file.
     store_.reset();
@@ -217,7 +217,7 @@ Result<bool> LauncherModel::open_database(const fs::path& path, bool create) {
     return problem;
 }
 
-Result<bool> LauncherModel::refresh_roster() {
+Result<void> LauncherModel::refresh_roster() {
     if (!store_) return Error{"open or create a study database first"};
     Result<std::vector<RosterLine>> roster = read_launcher_roster(db_);
     if (!roster) {
@@ -225,20 +225,20 @@ Result<bool> LauncherModel::refresh_roster() {
         return roster.error();
     }
     roster_ = std::move(roster).value();
-    return true;
+    return Ok{};
 }
 
-Result<bool> LauncherModel::scan_protocols(const fs::path& folder) {
+Result<void> LauncherModel::scan_protocols(const fs::path& folder) {
     if (step_ == LauncherStep::Session) return Error{running_message()};
     protocols_dir_ = folder;
     Result<std::vector<ProtocolChoice>> choices = list_protocols(folder);
     protocols_ = choices ? std::move(choices).value() : std::vector<ProtocolChoice>{};
     protocols_message_ = choices ? std::string() : choices.error().message;
-    if (!choices) return choices.error();
-    return true;
+    MONOPLANE_TRY(choices);
+    return Ok{};
 }
 
-Result<bool> LauncherModel::select_protocol(const fs::path& path) {
+Result<void> LauncherModel::select_protocol(const fs::path& path) {
     if (step_ == LauncherStep::Session) return Error{running_message()};
     const auto listed = std::ranges::find(protocols_, path, &ProtocolChoice::path);
     if (listed == protocols_.end()) {
@@ -258,13 +258,13 @@ Result<bool> LauncherModel::select_protocol(const fs::path& path) {
     protocol_path_ = path;
     rebuild_fields();
     revalidate();
-    return true;
+    return Ok{};
 }
 
 void LauncherModel::set_participant_code(const std::string& code) {
     code_ = code;
     participant_.reset();
-    Result<bool> valid = study::check_participant_code(code);
+    Result<void> valid = study::check_participant_code(code);
     code_message_ = code.empty() || valid ? std::string() : valid.error().message;
     if (valid && store_) {
         Result<std::optional<study::ParticipantRecord>> record = store_->participant(code);
@@ -311,14 +311,14 @@ void LauncherModel::rebuild_fields() {
                        typed != fields_.end() && !typed->recorded) {
                 field.text = typed->text;
             }
-            field.message = field.recorded ? std::string() : field_message(field);
+            field.message = field.recorded ? std::string() : field_message(field, names_);
             fields.push_back(std::move(field));
         }
     }
     fields_ = std::move(fields);
 }
 
-Result<bool> LauncherModel::set_variable(const std::string& name, const std::string& text) {
+Result<void> LauncherModel::set_variable(const std::string& name, const std::string& text) {
     const auto field =
         std::ranges::find(fields_, name, [](const VariableField& f) { return f.declaration.name; });
     if (field == fields_.end()) {
@@ -329,28 +329,27 @@ Result<bool> LauncherModel::set_variable(const std::string& name, const std::str
                      " recorded at their first session; variables do not change"};
     }
     field->text = text;
-    field->message = field_message(*field);
+    field->message = field_message(*field, names_);
     revalidate();
-    return true;
+    return Ok{};
 }
 
-Result<bool> LauncherModel::set_headset(const std::string& headset) {
+Result<void> LauncherModel::set_headset(const std::string& headset) {
     if (headset != "none" && headset != "simulated" && headset != "openxr")
         return Error{"headset '" + headset + "': choose none, simulated or openxr"};
     headset_ = headset;
     revalidate();
-    return true;
+    return Ok{};
 }
 
 // The observer is made as run_study makes it, so a name it would refuse is refused here.
-Result<bool> LauncherModel::set_observer(const std::string& observer) {
+Result<void> LauncherModel::set_observer(const std::string& observer) {
     if (!observer.empty() && observer != "none") {
-        Result<std::unique_ptr<study::Observer>> made = study::make_observer(observer, 0);
-        if (!made) return made.error();
+        MONOPLANE_TRY(study::make_observer(observer, 0));
     }
     observer_ = observer;
     revalidate();
-    return true;
+    return Ok{};
 }
 
 void LauncherModel::set_seed(std::optional<std::uint64_t> seed) {
@@ -401,7 +400,7 @@ void LauncherModel::revalidate() {
         start_message_ = "enter the participant code";
     } else {
         Result<study::SessionStart> plan =
-            study::plan_session(store_.get(), *protocol_, session_request(request()));
+            study::plan_session(store_.get(), *protocol_, session_request(request()), names_);
         start_message_ = plan ? std::string() : plan.error().message;
     }
 }
@@ -411,8 +410,8 @@ Result<LaunchRequest> LauncherModel::start() {
     revalidate();  // another PC or process may have written since the last keystroke
     if (!start_enabled()) return Error{start_message_};
     Result<study::SessionStart> plan =
-        study::plan_session(store_.get(), *protocol_, session_request(request()));
-    if (!plan) return plan.error();
+        study::plan_session(store_.get(), *protocol_, session_request(request()), names_);
+    MONOPLANE_TRY(plan);
     launched_session_number_ = plan->info.session_number;
     launched_ = request();
     summary_.reset();
@@ -422,7 +421,7 @@ Result<LaunchRequest> LauncherModel::start() {
 
 Result<LaunchRequest> LauncherModel::resume(std::int64_t session_id, bool accept_changed_scenes) {
     if (step_ == LauncherStep::Session) return Error{running_message()};
-    if (Result<bool> fresh = refresh_roster(); !fresh) return fresh.error();
+    MONOPLANE_TRY(refresh_roster());
     const auto line = std::ranges::find(roster_, session_id,
                                         [](const RosterLine& l) { return l.entry.row.session_id; });
     if (line == roster_.end())
@@ -449,7 +448,7 @@ Result<LaunchRequest> LauncherModel::resume(std::int64_t session_id, bool accept
     return r;
 }
 
-Result<bool> LauncherModel::session_ended(const std::string& error) {
+Result<void> LauncherModel::session_ended(const std::string& error) {
     if (step_ != LauncherStep::Session || !launched_)
         return Error{"no session was started from the launcher"};
     SessionOutcome summary;
@@ -461,17 +460,17 @@ Result<bool> LauncherModel::session_ended(const std::string& error) {
     if (!id) {
         Result<std::optional<std::int64_t>> found =
             store_->find_session(launched_->participant, launched_session_number_);
-        if (!found) return found.error();
+        MONOPLANE_TRY(found);
         id = *found;
     }
-    Result<bool> fresh = refresh_roster();
+    Result<void> fresh = refresh_roster();
     step_ = LauncherStep::Summary;
     set_participant_code(code_);  // their sessions and next number have changed
     summary_ = summary;
-    if (!fresh) return fresh.error();
+    MONOPLANE_TRY(fresh);
     const auto line = std::ranges::find(roster_, id.value_or(0),
                                         [](const RosterLine& l) { return l.entry.row.session_id; });
-    if (line == roster_.end()) return true;  // refused before its first row was written
+    if (line == roster_.end()) return Ok{};  // refused before its first row was written
     const study::RosterRow& row = line->entry.row;
     summary_->session_id = row.session_id;
     summary_->participant = row.participant_code;
@@ -481,7 +480,7 @@ Result<bool> LauncherModel::session_ended(const std::string& error) {
     summary_->trials_planned = row.trials_planned;
     summary_->started_utc = row.started_utc;
     summary_->ended_utc = row.ended_utc;
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::lab

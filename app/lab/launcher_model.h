@@ -130,6 +130,9 @@ struct SessionOutcome {
 struct LauncherSettings {
     std::filesystem::path db;         // --db FILE; empty: chosen in the window
     std::filesystem::path protocols;  // --protocols DIR
+    // How the messages about the participant's request name its inputs: `monoplane lab` gives
+    // `study run`'s option names (--var age=17), which its users read there too.
+    study::RequestNames names = study::study_request_names();
 };
 
 class LauncherModel {
@@ -145,28 +148,28 @@ class LauncherModel {
     // Moves to an earlier step, or to the next one when this one is done (database open,
     // protocol chosen, participant code valid). Session and Summary come from start() and
     // session_ended() only, and no step is left while a session runs. Any time.
-    Result<bool> go_to(LauncherStep step);
+    Result<void> go_to(LauncherStep step);
 
     // Database step. Opens `path` with study::StudyStore::open; a missing file is created only
     // when `create` (the window's "Create"). Reads the roster. Any time but during a session.
-    Result<bool> open_database(const std::filesystem::path& path, bool create);
+    Result<void> open_database(const std::filesystem::path& path, bool create);
     bool database_open() const { return store_ != nullptr; }
     const std::filesystem::path& database() const { return db_; }
     const std::string& database_message() const { return db_message_; }
     // Reads the roster again (after a session, or when another PC may have written). Any time
     // with a database open; the error is also kept as the database step's message.
-    Result<bool> refresh_roster();
+    Result<void> refresh_roster();
     const std::vector<RosterLine>& roster() const { return roster_; }
 
     // Protocol step. Lists `folder` again (list_protocols). Any time but during a session.
-    Result<bool> scan_protocols(const std::filesystem::path& folder);
+    Result<void> scan_protocols(const std::filesystem::path& folder);
     const std::vector<ProtocolChoice>& protocols() const { return protocols_; }
     const std::string& protocols_message() const { return protocols_message_; }
     // Chooses one listed file; it is loaded again, so an edit since the listing counts. Refused:
     // a file not listed, or one that is not valid (its problems; no protocol is chosen then).
     // Rebuilds the variables form.
     // Any time but during a session.
-    Result<bool> select_protocol(const std::filesystem::path& path);
+    Result<void> select_protocol(const std::filesystem::path& path);
     const study::Protocol* protocol() const { return protocol_ ? &*protocol_ : nullptr; }
     const std::filesystem::path& protocol_path() const { return protocol_path_; }
     const std::filesystem::path& protocols_folder() const { return protocols_dir_; }
@@ -184,13 +187,13 @@ class LauncherModel {
     void set_session_number(std::optional<int> number);
     void set_participant_number(std::optional<int> number);
     // Sets a form field's text; refused for an undeclared name or a recorded field.
-    Result<bool> set_variable(const std::string& name, const std::string& text);
+    Result<void> set_variable(const std::string& name, const std::string& text);
     const std::vector<VariableField>& variables() const { return fields_; }
 
     // Headset step. `headset`: none, simulated or openxr. `observer`: "" (the command's
     // default), none, or a simulated observer study::make_observer accepts.
-    Result<bool> set_headset(const std::string& headset);
-    Result<bool> set_observer(const std::string& observer);
+    Result<void> set_headset(const std::string& headset);
+    Result<void> set_observer(const std::string& observer);
     void set_headset_report(HeadsetReport report) { headset_report_ = std::move(report); }
     // How the window draws (its monitor's content scale and the font size that gives), for the
     // state dump: the window sets it when it opens. Any time.
@@ -219,7 +222,7 @@ class LauncherModel {
     Result<LaunchRequest> resume(std::int64_t session_id, bool accept_changed_scenes);
     // The window's session has returned (`error`: run_study's message if it threw): reads the
     // session's summary and the roster again, and moves to Summary. Only in the Session step.
-    Result<bool> session_ended(const std::string& error);
+    Result<void> session_ended(const std::string& error);
     const std::optional<SessionOutcome>& summary() const { return summary_; }
 
     // Everything a step shows, as one JSON object (keys: step, database, protocols, protocol,
@@ -230,8 +233,9 @@ class LauncherModel {
   private:
     void revalidate();
     void rebuild_fields();
-    Result<bool> step_done(LauncherStep step) const;
+    Result<void> step_done(LauncherStep step) const;
 
+    study::RequestNames names_;  // LauncherSettings::names
     LauncherStep step_ = LauncherStep::Database;
     std::filesystem::path db_;
     std::unique_ptr<study::StudyStore> store_;

@@ -68,7 +68,7 @@ std::string joined(const std::vector<std::string>& words) {
 
 }  // namespace
 
-bool LauncherPanels::note(const Result<bool>& result) {
+bool LauncherPanels::note(const Result<void>& result) {
     ui_.action_message = result ? std::string() : result.error().message;
     return static_cast<bool>(result);
 }

@@ -77,7 +77,7 @@ class LauncherPanels {
     void export_data();
     void analyse();
     // Keeps a refusal for the footer; true when `result` succeeded.
-    bool note(const Result<bool>& result);
+    bool note(const Result<void>& result);
 
     LauncherModel& model_;
     LauncherUi& ui_;

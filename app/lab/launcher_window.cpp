@@ -20,7 +20,7 @@ namespace monoplane::lab {
 
 namespace fs = std::filesystem;
 
-Result<bool> write_file_atomically(const fs::path& file, const std::string& text) {
+Result<void> write_file_atomically(const fs::path& file, const std::string& text) {
     const fs::path temporary = fs::path(file).concat(".tmp");
     {
         std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
@@ -30,7 +30,7 @@ Result<bool> write_file_atomically(const fs::path& file, const std::string& text
     std::error_code ec;
     fs::rename(temporary, file, ec);
     if (ec) return Error{"cannot replace '" + file.string() + "': " + ec.message()};
-    return true;
+    return Ok{};
 }
 
 struct LauncherWindow::Impl {
@@ -110,7 +110,7 @@ void LauncherWindow::Impl::write_state() {
     if (ui.state_file.empty()) return;
     std::string state = model.state_json();
     if (state == ui.last_state) return;
-    if (Result<bool> written = write_file_atomically(ui.state_file, state); !written) {
+    if (Result<void> written = write_file_atomically(ui.state_file, state); !written) {
         std::fprintf(stderr, "monoplane lab: %s\n", written.error().message.c_str());
     }
     ui.last_state = std::move(state);
@@ -124,7 +124,7 @@ void LauncherWindow::Impl::save_screenshot(const std::string& name) {
     char number[16];
     std::snprintf(number, sizeof number, "%02d-", ++ui.screenshots);
     const fs::path png = ui.screenshot_dir / (std::string(number) + name + ".png");
-    if (Result<bool> saved = desktop->save_screenshot(png); !saved) {
+    if (Result<void> saved = desktop->save_screenshot(png); !saved) {
         std::fprintf(stderr, "monoplane lab: no screenshot: %s\n", saved.error().message.c_str());
     }
 }
@@ -143,7 +143,7 @@ Result<std::unique_ptr<LauncherWindow>> LauncherWindow::create(const vk_core::Co
     options.scale_with_monitor = true;
     options.hold_taps = true;  // keyboard-only use includes scripted keys (xdotool, XTest)
     auto desktop = window::DesktopWindow::create(ctx, options);
-    if (!desktop) return desktop.error();
+    MONOPLANE_TRY(desktop);
     auto impl = std::make_unique<Impl>(model, ui, std::move(actions));
     impl->desktop = std::move(desktop).value();
     // As DesktopWindow scales it: never below 16 pixels, more on a dense monitor.

@@ -73,7 +73,7 @@ struct LauncherExit {
 
 // Writes `text` to `file` through a temporary file and a rename, so that a reader never sees a
 // partial state. Any time.
-Result<bool> write_file_atomically(const std::filesystem::path& file, const std::string& text);
+Result<void> write_file_atomically(const std::filesystem::path& file, const std::string& text);
 
 class LauncherWindow {
   public:

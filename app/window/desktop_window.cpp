@@ -98,8 +98,8 @@ struct DesktopWindow::Impl {
     static void on_key_holding_taps(GLFWwindow* window, int key, int scancode, int action,
                                     int mods);
 
-    Result<bool> init(const DesktopWindowOptions& options);
-    Result<bool> init_surface();
+    Result<void> init(const DesktopWindowOptions& options);
+    Result<void> init_surface();
     void init_imgui();
     // Builds the swapchain for the current framebuffer size; false while minimised.
     bool ensure_swapchain();
@@ -148,7 +148,7 @@ DesktopWindow::Impl::~Impl() {
     window_exists = false;
 }
 
-Result<bool> DesktopWindow::Impl::init(const DesktopWindowOptions& window_options) {
+Result<void> DesktopWindow::Impl::init(const DesktopWindowOptions& window_options) {
     options = window_options;
     if (!ctx.has_device_extension(VK_KHR_SWAPCHAIN_EXTENSION_NAME)) {
         return Error{
@@ -167,8 +167,7 @@ Result<bool> DesktopWindow::Impl::init(const DesktopWindowOptions& window_option
     if (window == nullptr) {
         return Error{"cannot open the " + options.what + " (" + last_glfw_error() + ")"};
     }
-    Result<bool> surface_ready = init_surface();
-    if (!surface_ready) return surface_ready;
+    MONOPLANE_TRY(init_surface());
     // Dear ImGui's font set and the users' sets (the experimenter window's mirror).
     const vk::DescriptorPoolSize pool_size(vk::DescriptorType::eCombinedImageSampler, 4);
     descriptor_pool = vk::raii::DescriptorPool(
@@ -186,10 +185,10 @@ Result<bool> DesktopWindow::Impl::init(const DesktopWindowOptions& window_option
     image_available = vk::raii::Semaphore(ctx.device(), vk::SemaphoreCreateInfo());
     init_imgui();
     ensure_swapchain();
-    return true;
+    return Ok{};
 }
 
-Result<bool> DesktopWindow::Impl::init_surface() {
+Result<void> DesktopWindow::Impl::init_surface() {
     VkSurfaceKHR raw_surface = VK_NULL_HANDLE;
     if (glfwCreateWindowSurface(*ctx.instance(), window, nullptr, &raw_surface) != VK_SUCCESS) {
         return Error{"cannot create a Vulkan surface for the " + options.what + " (" +
@@ -208,7 +207,7 @@ Result<bool> DesktopWindow::Impl::init_surface() {
         capture_pass = make_ui_render_pass(ctx.device(), config.format.format,
                                            vk::ImageLayout::eTransferSrcOptimal);
     }
-    return true;
+    return Ok{};
 }
 
 void DesktopWindow::Impl::init_imgui() {
@@ -384,8 +383,7 @@ Result<std::unique_ptr<DesktopWindow>> DesktopWindow::create(const vk_core::Cont
     window_exists = true;
     auto impl = std::make_unique<Impl>(ctx);
     try {
-        Result<bool> ready = impl->init(options);
-        if (!ready) return ready.error();
+        MONOPLANE_TRY(impl->init(options));
     } catch (const vk::SystemError& e) {
         return Error{"cannot set up the " + options.what + ": " + e.what()};
     }
@@ -426,7 +424,7 @@ bool DesktopWindow::close_requested() const {
     return glfwWindowShouldClose(impl_->window) == GLFW_TRUE;
 }
 
-Result<bool> DesktopWindow::save_screenshot(const std::filesystem::path& png) {
+Result<void> DesktopWindow::save_screenshot(const std::filesystem::path& png) {
     Impl& s = *impl_;
     ImDrawData* draw_data = ImGui::GetDrawData();
     if (draw_data == nullptr || !draw_data->Valid) {

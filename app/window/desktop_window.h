@@ -69,7 +69,7 @@ class DesktopWindow {
     bool close_requested() const;
     // Writes what the window shows (the last frame's draw lists, drawn again) to a PNG file.
     // After end_frame(); fails while minimised or when the surface cannot be read back.
-    Result<bool> save_screenshot(const std::filesystem::path& png);
+    Result<void> save_screenshot(const std::filesystem::path& png);
     // The drawable size in pixels (0 x 0 while minimised). Any time.
     vk::Extent2D extent() const;
     // Asks the desktop for another window size; it takes effect within a few frames.

@@ -58,7 +58,7 @@ Result<std::unique_ptr<ExperimenterWindow>> ExperimenterWindow::create(const vk_
     desktop_options.title = options.title;
     desktop_options.what = "experimenter window";
     auto desktop = DesktopWindow::create(ctx, desktop_options);
-    if (!desktop) return desktop.error();
+    MONOPLANE_TRY(desktop);
     auto impl = std::make_unique<Impl>();
     impl->desktop = std::move(desktop).value();
     try {
@@ -105,7 +105,7 @@ bool ExperimenterWindow::close_requested() const {
     return impl_->desktop->close_requested();
 }
 
-Result<bool> ExperimenterWindow::save_screenshot(const std::filesystem::path& png) {
+Result<void> ExperimenterWindow::save_screenshot(const std::filesystem::path& png) {
     return impl_->desktop->save_screenshot(png);
 }
 

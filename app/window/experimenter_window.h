@@ -62,7 +62,7 @@ class ExperimenterWindow {
 
     // Writes what the window shows (the last frame's panels, drawn again) to a PNG file. May be
     // called after frame(); fails while minimised or when the surface cannot be read back.
-    Result<bool> save_screenshot(const std::filesystem::path& png);
+    Result<void> save_screenshot(const std::filesystem::path& png);
 
     // The window's drawable size in pixels (0 x 0 while minimised).
     vk::Extent2D extent() const;

@@ -10,7 +10,7 @@
 
 namespace monoplane::window {
 
-Result<bool> write_rgba_png(const std::filesystem::path& png, std::uint32_t width,
+Result<void> write_rgba_png(const std::filesystem::path& png, std::uint32_t width,
                             std::uint32_t height, const std::vector<std::uint8_t>& rgba) {
     assert(rgba.size() == std::size_t{width} * height * 4);
     if (png.has_parent_path()) {
@@ -27,7 +27,7 @@ Result<bool> write_rgba_png(const std::filesystem::path& png, std::uint32_t widt
         return Error{"cannot write the screenshot " + png.string() +
                      " (is the folder writable and the disk not full?)"};
     }
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::window

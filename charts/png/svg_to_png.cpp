@@ -72,7 +72,7 @@ Result<Surface> render(std::string_view svg, double scale) {
 
 Result<RgbaImage> rasterize_svg(std::string_view svg, double scale) {
     Result<Surface> surface = render(svg, scale);
-    if (!surface) return surface.error();
+    MONOPLANE_TRY(surface);
     cairo_surface_t* s = surface.value().get();
     RgbaImage image;
     image.width = cairo_image_surface_get_width(s);
@@ -99,7 +99,7 @@ Result<RgbaImage> rasterize_svg(std::string_view svg, double scale) {
     return image;
 }
 
-Result<bool> write_svg_as_png(std::string_view svg, const std::filesystem::path& path,
+Result<void> write_svg_as_png(std::string_view svg, const std::filesystem::path& path,
                               double scale) {
     Result<Surface> surface = render(svg, scale);
     if (!surface) return Error{path.string() + ": " + surface.error().message};
@@ -108,7 +108,7 @@ Result<bool> write_svg_as_png(std::string_view svg, const std::filesystem::path&
     if (status != CAIRO_STATUS_SUCCESS) {
         return Error{"cannot write '" + path.string() + "': " + cairo_status_to_string(status)};
     }
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::charts

@@ -25,7 +25,7 @@ struct RgbaImage {
 Result<RgbaImage> rasterize_svg(std::string_view svg, double scale = 1.0);
 
 // Rasterizes and writes a PNG to `path` (replacing it). The error names the file.
-Result<bool> write_svg_as_png(std::string_view svg, const std::filesystem::path& path,
+Result<void> write_svg_as_png(std::string_view svg, const std::filesystem::path& path,
                               double scale = 1.0);
 
 }  // namespace monoplane::charts

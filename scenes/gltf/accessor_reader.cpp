@@ -210,7 +210,7 @@ Result<const tinygltf::Accessor*> find_accessor(const tinygltf::Model& model, in
 
 // Applies an accessor's sparse substitution (glTF 2.0 section 3.6.2.3) to dense elements.
 template <class Decode>
-Result<bool> apply_sparse(const tinygltf::Accessor& accessor, const Check& check,
+Result<void> apply_sparse(const tinygltf::Accessor& accessor, const Check& check,
                           std::size_t element_bytes, Decode store) {
     const auto& sparse = accessor.sparse;
     if (sparse.count <= 0 || static_cast<std::size_t>(sparse.count) > accessor.count) {
@@ -232,11 +232,11 @@ Result<bool> apply_sparse(const tinygltf::Accessor& accessor, const Check& check
     Result<Elements> indices = check.locate(
         sparse.indices.bufferView, static_cast<std::uint64_t>(sparse.indices.byteOffset), count,
         component_bytes(index_type), false, "sparse indices: ");
-    if (!indices) return indices.error();
+    MONOPLANE_TRY(indices);
     Result<Elements> values =
         check.locate(sparse.values.bufferView, static_cast<std::uint64_t>(sparse.values.byteOffset),
                      count, element_bytes, false, "sparse values: ");
-    if (!values) return values.error();
+    MONOPLANE_TRY(values);
     std::int64_t previous = -1;
     for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t target =
@@ -249,7 +249,7 @@ Result<bool> apply_sparse(const tinygltf::Accessor& accessor, const Check& check
         previous = target;
         store(target, values->first + k * values->stride);
     }
-    return true;
+    return Ok{};
 }
 
 }  // namespace
@@ -258,7 +258,7 @@ Result<FloatElements> read_float_accessor(const tinygltf::Model& model, int inde
                                           const FloatRequest& request) {
     const Check check(model, index, request.what);
     Result<const tinygltf::Accessor*> found = find_accessor(model, index, check, request.max_count);
-    if (!found) return found.error();
+    MONOPLANE_TRY(found);
     const tinygltf::Accessor& accessor = **found;
 
     if (std::find(request.types.begin(), request.types.end(), accessor.type) ==
@@ -299,12 +299,12 @@ Result<FloatElements> read_float_accessor(const tinygltf::Model& model, int inde
     if (accessor.bufferView >= 0) {  // without one, the elements are zeros (glTF 3.6.2.1)
         Result<Elements> elements = check.locate(accessor.bufferView, accessor.byteOffset,
                                                  accessor.count, element_bytes, true, "");
-        if (!elements) return elements.error();
+        MONOPLANE_TRY(elements);
         for (std::size_t i = 0; i < result.count; ++i)
             store(i, elements->first + i * elements->stride);
     }
     if (accessor.sparse.isSparse) {
-        if (auto ok = apply_sparse(accessor, check, element_bytes, store); !ok) return ok.error();
+        MONOPLANE_TRY(apply_sparse(accessor, check, element_bytes, store));
     }
     for (std::size_t i = 0; i < result.values.size(); ++i) {
         if (!std::isfinite(result.values[i])) {
@@ -323,7 +323,7 @@ Result<std::vector<std::uint32_t>> read_index_accessor(const tinygltf::Model& mo
                                                        std::size_t max_count) {
     const Check check(model, index, what);
     Result<const tinygltf::Accessor*> found = find_accessor(model, index, check, max_count);
-    if (!found) return found.error();
+    MONOPLANE_TRY(found);
     const tinygltf::Accessor& accessor = **found;
     if (accessor.type != TINYGLTF_TYPE_SCALAR) {
         return check.fail("is " + type_name(accessor.type) + ", but indices must be SCALAR");
@@ -345,12 +345,12 @@ Result<std::vector<std::uint32_t>> read_index_accessor(const tinygltf::Model& mo
     if (accessor.bufferView >= 0) {
         Result<Elements> elements = check.locate(accessor.bufferView, accessor.byteOffset,
                                                  accessor.count, element_bytes, true, "");
-        if (!elements) return elements.error();
+        MONOPLANE_TRY(elements);
         for (std::size_t i = 0; i < indices.size(); ++i)
             store(i, elements->first + i * elements->stride);
     }
     if (accessor.sparse.isSparse) {
-        if (auto ok = apply_sparse(accessor, check, element_bytes, store); !ok) return ok.error();
+        MONOPLANE_TRY(apply_sparse(accessor, check, element_bytes, store));
     }
     for (std::size_t i = 0; i < indices.size(); ++i) {
         if (indices[i] >= vertex_count) {

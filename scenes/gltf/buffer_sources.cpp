@@ -53,7 +53,7 @@ std::string in_quotes(std::string_view text) {
     return "\"" + std::string(text) + "\"";
 }
 
-Result<bool> check_buffer(const json& buffer, std::size_t index,
+Result<void> check_buffer(const json& buffer, std::size_t index,
                           const std::filesystem::path& base_directory, bool is_glb,
                           std::size_t bin_size) {
     const std::string name = "buffer " + std::to_string(index);
@@ -69,7 +69,7 @@ Result<bool> check_buffer(const json& buffer, std::size_t index,
                          ", more than the .glb's BIN chunk (" + std::to_string(bin_size) +
                          " bytes)"};
         }
-        return true;
+        return Ok{};
     }
     const std::string uri = uri_member->get<std::string>();
     if (uri.rfind("data:", 0) == 0) {
@@ -84,7 +84,7 @@ Result<bool> check_buffer(const json& buffer, std::size_t index,
             return Error{name + "'s data: URI holds " + std::to_string(decoded) +
                          " bytes, but its byteLength is " + std::to_string(byte_length)};
         }
-        return true;
+        return Ok{};
     }
     const std::optional<std::string> relative = uri_to_relative_path(uri);
     if (!relative) {
@@ -106,7 +106,7 @@ Result<bool> check_buffer(const json& buffer, std::size_t index,
     }
     if (size > kMaxFileBytes)
         return Error{name + ": file " + in_quotes(*relative) + " is over 4 GiB"};
-    return true;
+    return Ok{};
 }
 
 }  // namespace
@@ -142,16 +142,14 @@ std::optional<std::string> uri_to_relative_path(std::string_view uri) {
     return path;
 }
 
-Result<bool> check_buffer_sources(const json& root, const std::filesystem::path& base_directory,
+Result<void> check_buffer_sources(const json& root, const std::filesystem::path& base_directory,
                                   bool is_glb, std::size_t bin_size) {
     const auto buffers = root.find("buffers");
-    if (buffers == root.end()) return true;
+    if (buffers == root.end()) return Ok{};
     for (std::size_t i = 0; i < buffers->size(); ++i) {
-        if (auto ok = check_buffer((*buffers)[i], i, base_directory, is_glb, bin_size); !ok) {
-            return ok;
-        }
+        MONOPLANE_TRY(check_buffer((*buffers)[i], i, base_directory, is_glb, bin_size));
     }
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::scenes::gltf

@@ -26,7 +26,7 @@ bool is_base64_data_uri(std::string_view uri);
 // Checks every buffer of a schema-checked document (check_json_schema()): a .glb's first buffer
 // may take the BIN chunk of bin_size bytes; data: URIs must decode to byteLength bytes; files
 // must exist in base_directory with byteLength bytes. The error names the buffer.
-Result<bool> check_buffer_sources(const nlohmann::json& root,
+Result<void> check_buffer_sources(const nlohmann::json& root,
                                   const std::filesystem::path& base_directory, bool is_glb,
                                   std::size_t bin_size);
 

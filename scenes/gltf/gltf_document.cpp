@@ -86,7 +86,7 @@ std::string without_exception_tag(const std::string& message) {
     return tag_end == std::string::npos ? message : message.substr(tag_end + 2);
 }
 
-Result<bool> check_json(std::string_view text, const std::filesystem::path& base_directory,
+Result<void> check_json(std::string_view text, const std::filesystem::path& base_directory,
                         bool glb, std::size_t bin_size) {
     nlohmann::json root;
     try {
@@ -96,8 +96,8 @@ Result<bool> check_json(std::string_view text, const std::filesystem::path& base
             std::string(glb ? "has a JSON chunk that is not valid JSON: " : "is not valid JSON: ") +
             without_exception_tag(error.what())};
     }
-    if (auto ok = check_supported(root); !ok) return ok;
-    if (auto ok = check_json_schema(root); !ok) return ok;
+    MONOPLANE_TRY(check_supported(root));
+    MONOPLANE_TRY(check_json_schema(root));
     return check_buffer_sources(root, base_directory, glb, bin_size);
 }
 
@@ -109,7 +109,7 @@ Result<GltfDocument> read_gltf_document(const std::filesystem::path& file) {
     std::vector<unsigned char> bytes;
     {
         Result<std::vector<unsigned char>> read = read_file_bytes(file);
-        if (!read) return read.error();
+        MONOPLANE_TRY(read);
         bytes = std::move(read).value();
     }
     if (bytes.empty()) return Error{"is empty"};
@@ -120,13 +120,11 @@ Result<GltfDocument> read_gltf_document(const std::filesystem::path& file) {
     std::size_t bin_size = 0;
     if (glb) {
         Result<GlbChunks> chunks = split_glb(all);
-        if (!chunks) return chunks.error();
+        MONOPLANE_TRY(chunks);
         json_text = chunks->json;
         bin_size = chunks->bin.size();
     }
-    if (auto ok = check_json(json_text, document.base_directory, glb, bin_size); !ok) {
-        return ok.error();
-    }
+    MONOPLANE_TRY(check_json(json_text, document.base_directory, glb, bin_size));
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&keep_encoded_image, nullptr);

@@ -69,8 +69,8 @@ bool is_ignorable_required_extension(std::string_view name) {
 
 }  // namespace
 
-Result<bool> check_supported(const json& root) {
-    if (!root.is_object()) return true;  // check_json_schema() says what is wrong
+Result<void> check_supported(const json& root) {
+    if (!root.is_object()) return Ok{};  // check_json_schema() says what is wrong
     const auto asset = root.find("asset");
     const json* version = nullptr;
     if (asset != root.end() && asset->is_object()) {
@@ -114,7 +114,7 @@ Result<bool> check_supported(const json& root) {
                          "), which this loader does not support"};
         }
     }
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::scenes::gltf

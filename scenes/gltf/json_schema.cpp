@@ -333,18 +333,18 @@ class SchemaCheck {
         }
     }
 
-    Result<bool> run() {
+    Result<void> run() {
         if (!root_.is_object())
             return Error{"the JSON document is " + type_of(root_) + ", not an object"};
-        if (auto ok = extensions(root_, ""); !ok) return ok;
+        MONOPLANE_TRY(extensions(root_, ""));
         const auto asset = root_.find("asset");
         if (asset == root_.end()) return Error{"asset is missing (every glTF file has one)"};
-        if (auto ok = object(*asset, kAsset, "asset"); !ok) return ok;
-        if (auto ok = index(root_, "scene", Target::Scenes, "scene"); !ok) return ok;
+        MONOPLANE_TRY(object(*asset, kAsset, "asset"));
+        MONOPLANE_TRY(index(root_, "scene", Target::Scenes, "scene"));
         for (const std::string_view list : {"extensionsUsed", "extensionsRequired"}) {
             const auto found = root_.find(list);
             if (found == root_.end()) continue;
-            if (auto ok = string_array(*found, std::string(list)); !ok) return ok;
+            MONOPLANE_TRY(string_array(*found, std::string(list)));
         }
         for (const Collection& collection : kCollections) {
             const auto found = root_.find(collection.name);
@@ -354,12 +354,10 @@ class SchemaCheck {
                 return Error{path + " must be an array, not " + type_of(*found)};
             }
             for (std::size_t i = 0; i < found->size(); ++i) {
-                if (auto ok = object((*found)[i], *collection.shape, element(path, i)); !ok) {
-                    return ok;
-                }
+                MONOPLANE_TRY(object((*found)[i], *collection.shape, element(path, i)));
             }
         }
-        return true;
+        return Ok{};
     }
 
   private:
@@ -383,9 +381,9 @@ class SchemaCheck {
     }
 
     // Extension objects may hold anything, but each extension's value is an object.
-    static Result<bool> extensions(const json& object, const std::string& path) {
+    static Result<void> extensions(const json& object, const std::string& path) {
         const auto found = object.find("extensions");
-        if (found == object.end()) return true;
+        if (found == object.end()) return Ok{};
         const std::string where = member(path, "extensions");
         if (!found->is_object()) return Error{where + " must be an object, not " + type_of(*found)};
         for (auto it = found->begin(); it != found->end(); ++it) {
@@ -393,10 +391,10 @@ class SchemaCheck {
                 return Error{member(where, it.key()) + " must be an object, not " + type_of(*it)};
             }
         }
-        return true;
+        return Ok{};
     }
 
-    Result<bool> integer(const json& value, const std::string& path, Target target,
+    Result<void> integer(const json& value, const std::string& path, Target target,
                          std::uint64_t minimum) const {
         if (!value.is_number_integer()) {
             return Error{path + " must be a non-negative integer, not " + type_of(value)};
@@ -413,51 +411,51 @@ class SchemaCheck {
             return Error{path + " is " + std::to_string(number) + ", but the file has " +
                          count_of(target, size_of(target))};
         }
-        return true;
+        return Ok{};
     }
 
-    Result<bool> index(const json& object, std::string_view name, Target target,
+    Result<void> index(const json& object, std::string_view name, Target target,
                        const std::string& path) const {
         const auto found = object.find(name);
-        if (found == object.end()) return true;
+        if (found == object.end()) return Ok{};
         return integer(*found, path, target, 0);
     }
 
-    static Result<bool> string_array(const json& value, const std::string& path) {
+    static Result<void> string_array(const json& value, const std::string& path) {
         if (!value.is_array()) return Error{path + " must be an array, not " + type_of(value)};
         for (std::size_t i = 0; i < value.size(); ++i) {
             if (!value[i].is_string()) {
                 return Error{element(path, i) + " must be a string, not " + type_of(value[i])};
             }
         }
-        return true;
+        return Ok{};
     }
 
-    Result<bool> index_map(const json& value, const std::string& path, Target target) const {
+    Result<void> index_map(const json& value, const std::string& path, Target target) const {
         if (!value.is_object()) return Error{path + " must be an object, not " + type_of(value)};
         for (auto it = value.begin(); it != value.end(); ++it) {
-            if (auto ok = integer(*it, member(path, it.key()), target, 0); !ok) return ok;
+            MONOPLANE_TRY(integer(*it, member(path, it.key()), target, 0));
         }
-        return true;
+        return Ok{};
     }
 
-    Result<bool> property(const json& value, const Property& p, const std::string& path) const {
+    Result<void> property(const json& value, const Property& p, const std::string& path) const {
         switch (p.kind) {
             case Kind::Integer:
                 return integer(value, path, p.target, p.minimum);
             case Kind::Number:
                 if (!value.is_number())
                     return Error{path + " must be a number, not " + type_of(value)};
-                return true;
+                return Ok{};
             case Kind::String:
                 if (!value.is_string())
                     return Error{path + " must be a string, not " + type_of(value)};
-                return true;
+                return Ok{};
             case Kind::Boolean:
                 if (!value.is_boolean()) {
                     return Error{path + " must be true or false, not " + type_of(value)};
                 }
-                return true;
+                return Ok{};
             case Kind::Object:
                 return object(value, *p.shape, path);
             case Kind::StringArray:
@@ -478,7 +476,7 @@ class SchemaCheck {
         for (std::size_t i = 0; i < value.size(); ++i) {
             const json& item = value[i];
             const std::string where = element(path, i);
-            Result<bool> ok = true;
+            Result<void> ok = Ok{};
             if (p.kind == Kind::NumberArray && !item.is_number()) {
                 ok = Error{where + " must be a number, not " + type_of(item)};
             } else if (p.kind == Kind::IndexArray) {
@@ -488,23 +486,23 @@ class SchemaCheck {
             } else if (p.kind == Kind::IndexMapArray) {
                 ok = index_map(item, where, p.target);
             }
-            if (!ok) return ok;
+            MONOPLANE_TRY(ok);
         }
-        return true;
+        return Ok{};
     }
 
-    Result<bool> object(const json& value, const Shape& shape, const std::string& path) const {
+    Result<void> object(const json& value, const Shape& shape, const std::string& path) const {
         if (!value.is_object()) return Error{path + " must be an object, not " + type_of(value)};
-        if (auto ok = extensions(value, path); !ok) return ok;
+        MONOPLANE_TRY(extensions(value, path));
         for (const Property& p : shape.properties) {
             const auto found = value.find(p.name);
             if (found == value.end()) {
                 if (p.required) return Error{member(path, p.name) + " is missing"};
                 continue;
             }
-            if (auto ok = property(*found, p, member(path, p.name)); !ok) return ok;
+            MONOPLANE_TRY(property(*found, p, member(path, p.name)));
         }
-        return true;
+        return Ok{};
     }
 
     const json& root_;
@@ -513,7 +511,7 @@ class SchemaCheck {
 
 }  // namespace
 
-Result<bool> check_json_schema(const json& root) {
+Result<void> check_json_schema(const json& root) {
     if (depth_of(root) > kMaxJsonDepth) {
         return Error{"the JSON nests deeper than " + std::to_string(kMaxJsonDepth) + " levels"};
     }

@@ -18,6 +18,6 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 // The first problem as a sentence without the file name, e.g. "materials[0].normalTexture.scale
 // must be a number, not a string", or "textures[0].source is 3, but the file has 1 image".
 // Checks every property the loader or tinygltf reads; unknown properties are left alone.
-Result<bool> check_json_schema(const nlohmann::json& root);
+Result<void> check_json_schema(const nlohmann::json& root);
 
 }  // namespace monoplane::scenes::gltf

@@ -36,7 +36,7 @@ std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) {
 // Refuses, before anything is expanded, a scene whose mesh instances together would exceed the
 // triangle limit (a small file can instance a big mesh many times), counting what the accessors
 // claim; the readers check the claims later.
-Result<bool> check_expanded_size(const tinygltf::Model& model,
+Result<void> check_expanded_size(const tinygltf::Model& model,
                                  const std::vector<NodeInstance>& meshes,
                                  const GltfLoadOptions& options, std::uint64_t max_triangles) {
     std::uint64_t triangles = 0;
@@ -85,7 +85,7 @@ Result<bool> check_expanded_size(const tinygltf::Model& model,
                      "triangle (" +
                      std::to_string(3 * max_triangles) + ")"};
     }
-    return true;
+    return Ok{};
 }
 
 // "1 primitive", "2 primitives"; "1 index", "2 indices".
@@ -162,17 +162,15 @@ Result<Scene> load(const std::filesystem::path& file, const GltfLoadOptions& opt
                    GltfLoadReport& report) {
     LoadProgress progress(file.filename().string(), options.progress);
     Result<GltfDocument> read = read_gltf_document(file);
-    if (!read) return read.error();
+    MONOPLANE_TRY(read);
     GltfDocument& document = read.value();
     const tinygltf::Model& model = document.model;
     report.files_read = document.files_read;
 
     Result<SceneInstances> instances = instantiate_scene(model);
-    if (!instances) return instances.error();
+    MONOPLANE_TRY(instances);
     const std::uint64_t max_triangles = std::min(options.max_triangles, kHardTriangleLimit);
-    if (auto ok = check_expanded_size(model, instances->meshes, options, max_triangles); !ok) {
-        return ok.error();
-    }
+    MONOPLANE_TRY(check_expanded_size(model, instances->meshes, options, max_triangles));
     GltfLoadOptions bounded = options;
     bounded.max_triangles = max_triangles;
 
@@ -185,9 +183,7 @@ Result<Scene> load(const std::filesystem::path& file, const GltfLoadOptions& opt
         for (std::size_t p = 0; p < primitives.size(); ++p) {
             const PrimitiveSource source{model, instance.index, static_cast<int>(p),
                                          instance.world};
-            if (auto ok = import_primitive(source, bounded, textures, report, geometry); !ok) {
-                return ok.error();
-            }
+            MONOPLANE_TRY(import_primitive(source, bounded, textures, report, geometry));
         }
         progress.meshes(i + 1, total, geometry.triangle_count());
     }

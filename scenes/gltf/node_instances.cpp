@@ -51,7 +51,7 @@ Result<std::vector<int>> parents_of(const tinygltf::Model& model) {
 
 // With at most one parent each, following parents from any node ends at a root or runs around a
 // cycle. Marks whole walks, so every node is walked over once.
-Result<bool> refuse_cycles(const tinygltf::Model& model, const std::vector<int>& parent) {
+Result<void> refuse_cycles(const tinygltf::Model& model, const std::vector<int>& parent) {
     enum : std::uint8_t { kUnknown, kOnThisWalk, kReachesRoot };
     std::vector<std::uint8_t> state(parent.size(), kUnknown);
     std::vector<int> walk;
@@ -79,7 +79,7 @@ Result<bool> refuse_cycles(const tinygltf::Model& model, const std::vector<int>&
         }
         for (const int w : walk) state[static_cast<std::size_t>(w)] = kReachesRoot;
     }
-    return true;
+    return Ok{};
 }
 
 }  // namespace
@@ -129,9 +129,9 @@ Result<glm::dmat4> local_transform(const tinygltf::Model& model, int node_index)
 
 Result<SceneInstances> instantiate_scene(const tinygltf::Model& model) {
     Result<std::vector<int>> parents = parents_of(model);
-    if (!parents) return parents.error();
+    MONOPLANE_TRY(parents);
     const std::vector<int>& parent = *parents;
-    if (auto ok = refuse_cycles(model, parent); !ok) return ok.error();
+    MONOPLANE_TRY(refuse_cycles(model, parent));
 
     SceneInstances instances;
     std::vector<int> roots;
@@ -171,7 +171,7 @@ Result<SceneInstances> instantiate_scene(const tinygltf::Model& model) {
         }
         visited[static_cast<std::size_t>(node)] = true;
         Result<glm::dmat4> local = local_transform(model, node);
-        if (!local) return local.error();
+        MONOPLANE_TRY(local);
         const glm::dmat4 world = parent_world * *local;
         if (!finite(world)) {
             return Error{node_name(model, node) + ": its world transform overflows"};

@@ -104,7 +104,7 @@ struct PrimitiveInput {
                                           std::span<const int> types, bool normalized) const {
         Result<FloatElements> read = read_float_accessor(
             model, accessor, {semantic + " of " + where, types, normalized, limit});
-        if (!read) return read.error();
+        MONOPLANE_TRY(read);
         if (read->count != vertex_count) {
             return count_mismatch(semantic, where, read->count, vertex_count);
         }
@@ -119,7 +119,7 @@ Result<TriangleList> read_triangles(const PrimitiveInput& in, int mode) {
     if (in.primitive.indices >= 0) {
         Result<std::vector<std::uint32_t>> indices = read_index_accessor(
             in.model, in.primitive.indices, "indices of " + in.where, in.vertex_count, in.limit);
-        if (!indices) return indices.error();
+        MONOPLANE_TRY(indices);
         sequence = std::move(indices).value();
     } else {
         sequence.resize(in.vertex_count);
@@ -171,7 +171,7 @@ Result<std::vector<glm::vec3>> file_normals(const PrimitiveInput& in, int access
                                             const std::vector<std::uint32_t>& indices,
                                             GltfLoadReport& report) {
     Result<FloatElements> read = in.read_per_vertex(accessor, "NORMAL", kVec3, false);
-    if (!read) return read.error();
+    MONOPLANE_TRY(read);
     const bool invertible = std::fabs(glm::determinant(linear)) > 1e-300;
     const glm::dmat3 normal_matrix = invertible ? glm::inverseTranspose(linear) : glm::dmat3(0.0);
     std::vector<glm::vec3> normals(in.vertex_count);
@@ -211,7 +211,7 @@ Result<VertexNormals> vertex_normals(const PrimitiveInput& in, const GltfLoadOpt
     }
     Result<std::vector<glm::vec3>> read =
         file_normals(in, accessor, linear, positions, indices, report);
-    if (!read) return read.error();
+    MONOPLANE_TRY(read);
     result.normals = std::move(read).value();
     return result;
 }
@@ -235,7 +235,7 @@ Result<BaseColourTexture> read_base_colour_texture(const PrimitiveInput& in,
         return result;
     }
     Result<FloatElements> uv = in.read_per_vertex(accessor, semantic, kVec2, true);
-    if (!uv) return uv.error();
+    MONOPLANE_TRY(uv);
     Result<int> texture = textures.use(look.texture);
     if (!texture) return Error{in.where + ": " + texture.error().message};
     result.scene_texture = *texture;
@@ -328,7 +328,7 @@ std::string describe_primitive(const tinygltf::Model& model, int mesh, int primi
            std::to_string(primitive);
 }
 
-Result<bool> import_primitive(const PrimitiveSource& source, const GltfLoadOptions& options,
+Result<void> import_primitive(const PrimitiveSource& source, const GltfLoadOptions& options,
                               TextureSet& textures, GltfLoadReport& report,
                               ImportedGeometry& geometry) {
     const tinygltf::Model& model = source.model;
@@ -343,31 +343,31 @@ Result<bool> import_primitive(const PrimitiveSource& source, const GltfLoadOptio
     }
     if (!is_triangle_mode(mode)) {
         ++report.primitives_skipped_points_or_lines;
-        return true;
+        return Ok{};
     }
     const int position_accessor = attribute(primitive, "POSITION");
     if (position_accessor < 0) {  // the specification says to skip such a primitive
         ++report.primitives_skipped_without_positions;
-        return true;
+        return Ok{};
     }
     PrimitiveInput in{model, primitive, where, element_limit(options)};
 
     Result<FloatElements> positions = read_float_accessor(
         model, position_accessor, {"POSITION of " + where, kVec3, false, in.limit});
-    if (!positions) return positions.error();
+    MONOPLANE_TRY(positions);
     in.vertex_count = positions->count;
 
     Result<TriangleList> triangles = read_triangles(in, mode);
-    if (!triangles) return triangles.error();
+    MONOPLANE_TRY(triangles);
     TriangleList list = std::move(triangles).value();
     report.indices_dropped_incomplete += list.dropped_incomplete;
     report.triangles_dropped_degenerate += list.dropped_degenerate;
-    if (list.indices.empty()) return true;
+    if (list.indices.empty()) return Ok{};
 
     VertexAttributes attributes;
     {
         Result<std::vector<glm::vec3>> world = to_world(*positions, source.world, where);
-        if (!world) return world.error();
+        MONOPLANE_TRY(world);
         attributes.positions = std::move(world).value();
     }
     positions = FloatElements{};  // the file's copy is no longer needed
@@ -380,17 +380,17 @@ Result<bool> import_primitive(const PrimitiveSource& source, const GltfLoadOptio
     if (!look) return Error{where + ": " + look.error().message};
     Result<VertexNormals> normals =
         vertex_normals(in, options, linear, attributes.positions, list.indices, report);
-    if (!normals) return normals.error();
+    MONOPLANE_TRY(normals);
     attributes.normals = std::move(normals).value();
     Result<BaseColourTexture> texture = read_base_colour_texture(in, *look, textures, report);
-    if (!texture) return texture.error();
+    MONOPLANE_TRY(texture);
     attributes.texture = std::move(texture).value();
     Result<FloatElements> colours = read_vertex_colours(in);
-    if (!colours) return colours.error();
+    MONOPLANE_TRY(colours);
     attributes.colours = std::move(colours).value();
 
     append_batch(attributes, *look, list.indices, geometry);
-    return true;
+    return Ok{};
 }
 
 }  // namespace monoplane::scenes::gltf

@@ -34,7 +34,7 @@ std::string describe_primitive(const tinygltf::Model& model, int mesh, int primi
 // Appends the primitive's triangles to geometry as one batch. Points and lines, primitives
 // without positions and primitives whose triangles all vanish add nothing (counted in report).
 // The error names the accessor, mesh and primitive.
-Result<bool> import_primitive(const PrimitiveSource& source, const GltfLoadOptions& options,
+Result<void> import_primitive(const PrimitiveSource& source, const GltfLoadOptions& options,
                               TextureSet& textures, GltfLoadReport& report,
                               ImportedGeometry& geometry);
 

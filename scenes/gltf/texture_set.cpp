@@ -13,7 +13,7 @@ Result<int> TextureSet::use(int texture) {
     const auto found = scene_index_of_.find(texture);
     if (found != scene_index_of_.end()) return found->second;
     Result<SceneTexture> decoded = decode_texture(document_, texture, texels_left_);
-    if (!decoded) return decoded.error();
+    MONOPLANE_TRY(decoded);
     texels_left_ -= std::uint64_t{decoded->width} * decoded->height;
     const int index = static_cast<int>(textures_.size());
     textures_.push_back(std::move(decoded).value());

@@ -79,14 +79,16 @@ Dataset two_sites() {
 
 TEST(ParticipantCodes, ACodeInTwoFilesIsRefusedNamingCodesFilesAndTheWaysOn) {
     Dataset d = two_sites();
-    const Result<bool> joined = join_participant_codes(d, SharedCodes::Refuse);
+    const Result<void> joined = join_participant_codes(d, SharedCodes::Refuse);
     ASSERT_FALSE(joined.ok());
     const std::string& message = joined.error().message;
     EXPECT_TRUE(contains(message, "a1 and a2 in data/site-a.sqlite and other/site-b.sqlite"))
         << message;
     EXPECT_FALSE(contains(message, "b3")) << message;
-    EXPECT_TRUE(contains(message, "--codes same-person")) << message;
-    EXPECT_TRUE(contains(message, "--codes per-database")) << message;
+    // The analysis' own names for the two ways on (`analyze` names its --codes option).
+    EXPECT_TRUE(contains(message, "\n  same-person   they are the same people")) << message;
+    EXPECT_TRUE(contains(message, "\n  per-database  each file's codes are its own")) << message;
+    EXPECT_FALSE(contains(message, "--codes")) << message;
     EXPECT_TRUE(contains(message, "site-a/a1, site-b/a1")) << message;
     EXPECT_EQ(d.trials[0].participant, "a1");  // nothing changed
 }
@@ -114,16 +116,16 @@ Dataset two_pcs() {
 
 TEST(ParticipantCodes, SamePersonRefusesFilesThatCannotBeOnePerson) {
     Dataset d = two_sites();  // a1 and a2 have a session 1 at each site, other numbers
-    const Result<bool> joined = join_participant_codes(d, SharedCodes::SamePerson);
+    const Result<void> joined = join_participant_codes(d, SharedCodes::SamePerson);
     ASSERT_FALSE(joined.ok());
     const std::string& message = joined.error().message;
     EXPECT_TRUE(
         contains(message, "a1: session 1 in both data/site-a.sqlite and other/site-b.sqlite"))
         << message;
-    EXPECT_TRUE(contains(message, "--codes per-database")) << message;
+    EXPECT_TRUE(contains(message, "use per-database;")) << message;
     Dataset numbers = two_pcs();
     numbers.sessions[2].participant_number = 5;  // a1 at the second PC
-    const Result<bool> renumbered = join_participant_codes(numbers, SharedCodes::SamePerson);
+    const Result<void> renumbered = join_participant_codes(numbers, SharedCodes::SamePerson);
     ASSERT_FALSE(renumbered.ok());
     EXPECT_TRUE(contains(renumbered.error().message,
                          "a1: participant number 1 in data/site-a.sqlite but 6 in "
@@ -133,7 +135,7 @@ TEST(ParticipantCodes, SamePersonRefusesFilesThatCannotBeOnePerson) {
 
 TEST(ParticipantCodes, SamePersonKeepsTheCodesAsOneParticipant) {
     Dataset d = two_pcs();
-    const Result<bool> joined = join_participant_codes(d, SharedCodes::SamePerson);
+    const Result<void> joined = join_participant_codes(d, SharedCodes::SamePerson);
     ASSERT_TRUE(joined.ok()) << joined.error().message;
     EXPECT_EQ(d.codes, SharedCodes::SamePerson);
     EXPECT_EQ(d.shared_codes, (std::vector<std::string>{"a1", "a2"}));
@@ -144,7 +146,7 @@ TEST(ParticipantCodes, SamePersonKeepsTheCodesAsOneParticipant) {
 
 TEST(ParticipantCodes, PerDatabasePrefixesEveryCodeWithItsFileStem) {
     Dataset d = two_sites();
-    const Result<bool> joined = join_participant_codes(d, SharedCodes::PerDatabase);
+    const Result<void> joined = join_participant_codes(d, SharedCodes::PerDatabase);
     ASSERT_TRUE(joined.ok()) << joined.error().message;
     EXPECT_EQ(d.codes, SharedCodes::PerDatabase);
     EXPECT_EQ(d.trials[0].participant, "site-a/a1");
@@ -163,7 +165,7 @@ TEST(ParticipantCodes, PerDatabaseRefusesTwoFilesOfOneName) {
         if (s.source == "other/site-b.sqlite") s.source = "other/site-a.sqlite";
     d.answers.clear();
     d.sources[1] = "other/site-a.sqlite";
-    const Result<bool> joined = join_participant_codes(d, SharedCodes::PerDatabase);
+    const Result<void> joined = join_participant_codes(d, SharedCodes::PerDatabase);
     ASSERT_FALSE(joined.ok());
     EXPECT_TRUE(contains(joined.error().message, "are both called 'site-a'"))
         << joined.error().message;

@@ -717,14 +717,14 @@ TEST(ChartsFile, WritesAndReportsFailures) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     const std::string svg = render_svg(three_series_chart());
-    const Result<bool> written = write_svg_file(dir / "figure.svg", svg);
+    const Result<void> written = write_svg_file(dir / "figure.svg", svg);
     ASSERT_TRUE(written.ok()) << written.error().message;
     std::ifstream in(dir / "figure.svg", std::ios::binary);
     std::stringstream back;
     back << in.rdbuf();
     EXPECT_EQ(back.str(), svg);
 
-    const Result<bool> failed = write_svg_file(dir / "missing" / "figure.svg", svg);
+    const Result<void> failed = write_svg_file(dir / "missing" / "figure.svg", svg);
     ASSERT_FALSE(failed.ok());
     EXPECT_NE(failed.error().message.find("missing/figure.svg"), std::string::npos);
     std::filesystem::remove_all(dir);

@@ -91,7 +91,7 @@ class LauncherModelTest : public ::testing::Test {
     LauncherModel ready(const std::string& protocol) {
         LauncherModel m(LauncherSettings{db_, protocols_});
         EXPECT_TRUE(m.database_open()) << m.database_message();
-        const Result<bool> chosen = m.select_protocol(protocols_ / protocol);
+        const Result<void> chosen = m.select_protocol(protocols_ / protocol);
         EXPECT_TRUE(chosen.ok()) << chosen.error().message;
         return m;
     }
@@ -145,18 +145,18 @@ TEST_F(LauncherModelTest, StepsFollowTheDayAndABrokenProtocolCannotBeChosen) {
     LauncherModel m(LauncherSettings{{}, protocols_});
     EXPECT_EQ(m.step(), LauncherStep::Database);
     EXPECT_FALSE(m.go_to(LauncherStep::Protocol).ok());
-    const Result<bool> absent = m.open_database(db_, false);
+    const Result<void> absent = m.open_database(db_, false);
     ASSERT_FALSE(absent.ok());
     EXPECT_TRUE(contains(absent.error().message, "choose Create")) << absent.error().message;
     EXPECT_FALSE(fs::exists(db_));
     ASSERT_TRUE(m.open_database(db_, true).ok()) << m.database_message();
     EXPECT_TRUE(fs::exists(db_));
     ASSERT_TRUE(m.go_to(LauncherStep::Protocol).ok());
-    const Result<bool> to_participant = m.go_to(LauncherStep::Participant);
+    const Result<void> to_participant = m.go_to(LauncherStep::Participant);
     ASSERT_FALSE(to_participant.ok());
     EXPECT_EQ(to_participant.error().message, "choose a valid protocol first");
 
-    const Result<bool> broken = m.select_protocol(protocols_ / "broken.toml");
+    const Result<void> broken = m.select_protocol(protocols_ / "broken.toml");
     ASSERT_FALSE(broken.ok());
     EXPECT_TRUE(contains(broken.error().message, "broken.toml:5:1")) << broken.error().message;
     EXPECT_EQ(m.protocol(), nullptr);

@@ -589,7 +589,7 @@ TEST(StudyExport, ExportsFromTheStoreToAFile) {
         ASSERT_TRUE((*store)->record_outcome(*id, 2, known.trials[1].outcome).ok());
 
         const fs::path csv = dir / "trials.csv";
-        const Result<bool> written = export_trials(**store, ExportFormat::Csv, csv);
+        const Result<void> written = export_trials(**store, ExportFormat::Csv, csv);
         ASSERT_TRUE(written.ok()) << written.error().message;
         std::ifstream in(csv, std::ios::binary);
         const std::string text((std::istreambuf_iterator<char>(in)),
@@ -608,7 +608,7 @@ TEST(StudyExport, ExportsFromTheStoreToAFile) {
         ASSERT_TRUE(export_trials(**store, ExportFormat::Json, json).ok());
         EXPECT_EQ(json.str().substr(0, 4), "[\n  ");
 
-        const Result<bool> nowhere =
+        const Result<void> nowhere =
             export_trials(**store, ExportFormat::Csv, dir / "missing" / "t.csv");
         ASSERT_FALSE(nowhere.ok());
         EXPECT_NE(

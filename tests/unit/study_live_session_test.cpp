@@ -128,7 +128,7 @@ class LiveSessionTest : public ::testing::Test {
     }
 
     static void present(LiveSession& s, std::int64_t frame) {
-        const Result<bool> ok = s.frame_presented(frame, at(frame));
+        const Result<void> ok = s.frame_presented(frame, at(frame));
         ASSERT_TRUE(ok.ok()) << ok.error().message;
     }
 
@@ -570,7 +570,7 @@ TEST_F(LiveSessionTest, QuestionnaireAfterTheLastTrial) {
     EXPECT_FALSE(s->answer(-1, 3).ok());
     EXPECT_EQ(s->screen().question, 1);
     EXPECT_EQ(answers(id).size(), 1u);
-    const Result<bool> ok = s->answer(1, 5);
+    const Result<void> ok = s->answer(1, 5);
     ASSERT_TRUE(ok.ok()) << ok.error().message;
     EXPECT_TRUE(s->finished());
     EXPECT_EQ(s->screen().kind, ScreenKind::Finished);
@@ -1267,7 +1267,7 @@ TEST_F(ScreenSessionTest, NotesCarryTheSessionTimeAndTheTrial) {
     present(*s, 8);
     request(*s, LiveInput::Confirm, 9);  // decided; the neutral screen
     ASSERT_TRUE(s->note("after the decision", NoteSource::Command).ok());
-    const Result<bool> blank = s->note(" \t\n");
+    const Result<void> blank = s->note(" \t\n");
     ASSERT_FALSE(blank.ok());
     EXPECT_NE(blank.error().message.find("empty"), std::string::npos);
 
@@ -1365,7 +1365,7 @@ Drive drive(LiveSession& session, ObserverInput& input, std::int64_t frame = 0) 
             EXPECT_TRUE(r.ok()) << r.error().message;
             ++d.requests;
         }
-        Result<bool> ok = session.frame_presented(frame, t);
+        Result<void> ok = session.frame_presented(frame, t);
         EXPECT_TRUE(ok.ok()) << ok.error().message;
     }
     EXPECT_TRUE(session.finished()) << "the session did not end in " << kLimit << " frames";

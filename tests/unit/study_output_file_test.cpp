@@ -1,8 +1,9 @@
-// Output files that never destroy what a lab has (study/output_file.h): an export's --out that
+// Output files that never destroy what a lab has (study/output_file.h): an export's output that
 // is the study database (by any path), any SQLite database, or an existing file that is not an
-// earlier export of the same format is refused with a message naming the file and --force, and
-// nothing changes (bytes and modification time); new files, earlier exports of the same format
-// and, with --force, other files that are not databases are written whole, by a rename.
+// earlier export of the same format is refused with a message naming the file and whether
+// forcing helps, and nothing changes (bytes and modification time); new files, earlier exports
+// of the same format and, forced, other files that are not databases are written whole, by a
+// rename. The CLI's words for the same refusals (--out, --force) are cli_wording_test's.
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 #include <sys/stat.h>
@@ -11,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -63,22 +65,29 @@ class OutputFile : public ::testing::Test {
     }
 
     // Exports the (empty) study as `format` to `out`, as `study export` does.
-    Result<bool> export_to(const fs::path& out, ExportFormat format, bool force) {
+    Result<void> export_to(const fs::path& out, ExportFormat format, bool force) {
         return export_trials(*store_, format, out, force);
     }
 
-    // `out` is refused with a message naming it (and --force when `force_helps`), unchanged,
-    // and no temporary file is left in its folder.
+    // `out` is refused for `refusal` with a message naming it and saying whether forcing
+    // would help, unchanged, and no temporary file is left in its folder.
     void expect_refused(const fs::path& out, ExportFormat format, bool force,
-                        const std::string& reason, bool force_helps) {
+                        const std::string& reason, OutputRefusal refusal) {
         const Snapshot before = age_and_snapshot(out);
-        const Result<bool> refused = export_to(out, format, force);
+        const std::optional<OutputProblem> problem =
+            output_problem(out, export_output_kind(format), {store_->path()}, force);
+        ASSERT_TRUE(problem.has_value()) << out;
+        EXPECT_EQ(problem->refusal, refusal) << problem->what;
+        const Result<void> refused = export_to(out, format, force);
         ASSERT_FALSE(refused.ok()) << out;
         const std::string& message = refused.error().message;
+        EXPECT_TRUE(message.starts_with(problem->what)) << message;
         EXPECT_NE(message.find("'" + out.string() + "'"), std::string::npos) << message;
         EXPECT_NE(message.find(reason), std::string::npos) << message;
-        EXPECT_NE(message.find("--force"), std::string::npos) << message;
-        EXPECT_EQ(message.find("Give --force") != std::string::npos, force_helps) << message;
+        const bool force_helps = refusal == OutputRefusal::NotAnEarlierOutput;
+        EXPECT_EQ(message.find("replaced only when forced") != std::string::npos, force_helps)
+            << message;
+        EXPECT_EQ(message.find("even when forced") != std::string::npos, !force_helps) << message;
         EXPECT_NE(message.find("Nothing was written"), std::string::npos) << message;
         EXPECT_TRUE(snapshot(out) == before) << out << " changed";
         expect_no_temporary_files();
@@ -95,7 +104,7 @@ class OutputFile : public ::testing::Test {
     std::unique_ptr<StudyStore> store_;
 };
 
-// `study export --out s.sqlite` onto the study itself, spelled another way: refused, --force
+// `study export --out s.sqlite` onto the study itself, spelled another way: refused, forced
 // or not, and the database is intact.
 TEST_F(OutputFile, RefusesTheStudyDatabaseByAnotherPath) {
     const fs::path relative = fs::relative(dir_ / "study.db", fs::current_path());
@@ -103,24 +112,25 @@ TEST_F(OutputFile, RefusesTheStudyDatabaseByAnotherPath) {
     expect_refused(relative, ExportFormat::Csv, false,
                    "is the same file as '" + (dir_ / "study.db").string() +
                        "', the database this command reads",
-                   false);
+                   OutputRefusal::IsAnInput);
     expect_refused(dir_ / "study.db", ExportFormat::Csv, true,
-                   "' is the database this command reads: writing there would destroy it", false);
+                   "' is the database this command reads: writing there would destroy it",
+                   OutputRefusal::IsAnInput);
     expect_refused(dir_ / "." / "study.db", ExportFormat::Json, true,
-                   "the database this command reads", false);
+                   "the database this command reads", OutputRefusal::IsAnInput);
     fs::create_directory(dir_ / "sub");
     expect_refused(dir_ / "sub" / ".." / "study.db", ExportFormat::NotesCsv, true,
-                   "the database this command reads", false);
+                   "the database this command reads", OutputRefusal::IsAnInput);
     EXPECT_TRUE(StudyStore::open(dir_ / "study.db").ok());
 }
 
 TEST_F(OutputFile, RefusesASymbolicLinkToTheDatabase) {
     fs::create_symlink(dir_ / "study.db", dir_ / "trials.csv");
     expect_refused(dir_ / "trials.csv", ExportFormat::Csv, true, "the database this command reads",
-                   false);
+                   OutputRefusal::IsAnInput);
     EXPECT_TRUE(fs::is_symlink(dir_ / "trials.csv"));
     // Not an input of this command, still a database: refused as one.
-    const Result<bool> other =
+    const Result<void> other =
         check_output(dir_ / "trials.csv", export_output_kind(ExportFormat::Csv), {}, true);
     ASSERT_FALSE(other.ok());
     EXPECT_NE(other.error().message.find("is an SQLite database"), std::string::npos);
@@ -136,15 +146,17 @@ TEST_F(OutputFile, RefusesAnySqliteDatabase) {
         SQLITE_OK);
     sqlite3_close(db);
     ASSERT_TRUE(is_sqlite_file(other));
-    expect_refused(other, ExportFormat::Csv, false, "is an SQLite database", false);
-    expect_refused(other, ExportFormat::Csv, true, "is an SQLite database", false);
+    expect_refused(other, ExportFormat::Csv, false, "is an SQLite database",
+                   OutputRefusal::IsADatabase);
+    expect_refused(other, ExportFormat::Csv, true, "is an SQLite database",
+                   OutputRefusal::IsADatabase);
 }
 
 // The write-ahead log and the other files beside the database belong to it.
 TEST_F(OutputFile, RefusesTheDatabasesCompanionFiles) {
     for (const std::string suffix : {"-wal", "-shm", "-journal", "-holds"}) {
         const fs::path companion = dir_ / ("study.db" + suffix);
-        const Result<bool> refused = check_output(companion, export_output_kind(ExportFormat::Csv),
+        const Result<void> refused = check_output(companion, export_output_kind(ExportFormat::Csv),
                                                   {dir_ / "study.db"}, true);
         ASSERT_FALSE(refused.ok()) << suffix;
         EXPECT_NE(refused.error().message.find("belongs to the database"), std::string::npos)
@@ -156,9 +168,8 @@ TEST_F(OutputFile, RefusesAProtocolUnlessForced) {
     const fs::path protocol = dir_ / "fink2019.toml";
     write_all(protocol, "name = \"fink2019\"\nscenes = [\"beams\"]\n");
     expect_refused(protocol, ExportFormat::Csv, false,
-                   "is not an earlier export of --format csv: it begins with 'name = "
-                   "\"fink2019\"'.",
-                   true);
+                   "is not an earlier csv export: it begins with 'name = \"fink2019\"';",
+                   OutputRefusal::NotAnEarlierOutput);
     ASSERT_TRUE(export_to(protocol, ExportFormat::Csv, true).ok());
     EXPECT_EQ(read_all(protocol).substr(0, 28), "participant,session,trial_in");
 }
@@ -167,14 +178,14 @@ TEST_F(OutputFile, RefusesAProtocolUnlessForced) {
 TEST_F(OutputFile, RefusesAnEarlierExportOfAnotherFormat) {
     const fs::path notes = dir_ / "notes.csv";
     ASSERT_TRUE(export_to(notes, ExportFormat::NotesCsv, false).ok());
-    expect_refused(notes, ExportFormat::Csv, false, "is not an earlier export of --format csv",
-                   true);
-    expect_refused(notes, ExportFormat::FramesCsv, false,
-                   "is not an earlier export of --format frames-csv", true);
+    expect_refused(notes, ExportFormat::Csv, false, "is not an earlier csv export",
+                   OutputRefusal::NotAnEarlierOutput);
+    expect_refused(notes, ExportFormat::FramesCsv, false, "is not an earlier frames-csv export",
+                   OutputRefusal::NotAnEarlierOutput);
     const fs::path json = dir_ / "trials.json";
     ASSERT_TRUE(export_to(json, ExportFormat::Json, false).ok());
-    expect_refused(json, ExportFormat::NotesCsv, false,
-                   "is not an earlier export of --format notes-csv", true);
+    expect_refused(json, ExportFormat::NotesCsv, false, "is not an earlier notes-csv export",
+                   OutputRefusal::NotAnEarlierOutput);
 }
 
 TEST_F(OutputFile, WritesNewFilesAndReplacesEarlierExportsOfTheSameFormat) {
@@ -185,7 +196,7 @@ TEST_F(OutputFile, WritesNewFilesAndReplacesEarlierExportsOfTheSameFormat) {
         const std::string first = read_all(out);
         ASSERT_FALSE(first.empty());
         age_and_snapshot(out);
-        const Result<bool> again = export_to(out, format, false);
+        const Result<void> again = export_to(out, format, false);
         ASSERT_TRUE(again.ok()) << again.error().message;
         EXPECT_EQ(read_all(out), first);
     }
@@ -193,7 +204,7 @@ TEST_F(OutputFile, WritesNewFilesAndReplacesEarlierExportsOfTheSameFormat) {
 }
 
 TEST_F(OutputFile, AMissingFolderOrAFolderAsOutputIsAnError) {
-    const Result<bool> missing =
+    const Result<void> missing =
         export_to(dir_ / "results" / "trials.csv", ExportFormat::Csv, true);
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().message.find("the folder '" + (dir_ / "results").string() +
@@ -201,7 +212,7 @@ TEST_F(OutputFile, AMissingFolderOrAFolderAsOutputIsAnError) {
               std::string::npos)
         << missing.error().message;
     EXPECT_FALSE(fs::exists(dir_ / "results"));
-    const Result<bool> folder = export_to(dir_, ExportFormat::Csv, true);
+    const Result<void> folder = export_to(dir_, ExportFormat::Csv, true);
     ASSERT_FALSE(folder.ok());
     EXPECT_NE(folder.error().message.find("is a folder"), std::string::npos)
         << folder.error().message;
@@ -212,7 +223,7 @@ TEST_F(OutputFile, AFailedWriteLeavesTheOldFile) {
     const fs::path out = dir_ / "trials.csv";
     write_all(out, "old");
     const Snapshot before = age_and_snapshot(out);
-    const Result<bool> failed = write_file_atomically(out, [](std::ostream& s) -> Result<bool> {
+    const Result<void> failed = write_file_atomically(out, [](std::ostream& s) -> Result<void> {
         s << "half of it";
         return Error{"the database went away"};
     });
@@ -226,9 +237,9 @@ TEST_F(OutputFile, AFailedWriteLeavesTheOldFile) {
 // symbolic link the file it points to is replaced and the link stays.
 TEST_F(OutputFile, ModesAndLinksAreKept) {
     const auto write = [](const std::string& text) {
-        return [text](std::ostream& s) -> Result<bool> {
+        return [text](std::ostream& s) -> Result<void> {
             s << text;
-            return true;
+            return Ok{};
         };
     };
     const fs::path kept = dir_ / "kept.csv";

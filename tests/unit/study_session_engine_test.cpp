@@ -330,7 +330,7 @@ TEST(SessionEngine, TheMemoryLogRefusesASecondDecision) {
     TrialOutcome outcome;
     outcome.choice = 1;
     ASSERT_TRUE(log.record_outcome(1, 3, outcome).ok());
-    const Result<bool> again = log.record_outcome(1, 3, outcome);
+    const Result<void> again = log.record_outcome(1, 3, outcome);
     ASSERT_FALSE(again.ok());
     EXPECT_NE(again.error().message.find("never overwritten"), std::string::npos);
 }

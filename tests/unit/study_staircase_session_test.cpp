@@ -139,7 +139,7 @@ void drive(StudyStore& store, std::int64_t id, const Protocol& protocol,
             const Result<std::string> done = session->request(request, now);
             ASSERT_TRUE(done.ok()) << done.error().message;
         }
-        const Result<bool> shown = session->frame_presented(frame, now);
+        const Result<void> shown = session->frame_presented(frame, now);
         ASSERT_TRUE(shown.ok()) << shown.error().message;
     }
 }
@@ -308,7 +308,7 @@ TEST(StaircaseSession, StoreRefusesAStimulusThatDoesNotFitThePlan) {
     const std::int64_t id = begin(*store, protocol);
     ScheduledTrial slot = store->load_schedule(id)->trials[3];
     const auto refused = [&](const ScheduledTrial& t, std::string_view why) {
-        const Result<bool> r = store->record_stimulus(id, t);
+        const Result<void> r = store->record_stimulus(id, t);
         ASSERT_FALSE(r.ok()) << why;
         EXPECT_NE(r.error().message.find(why), std::string::npos) << r.error().message;
     };

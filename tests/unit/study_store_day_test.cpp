@@ -382,7 +382,7 @@ TEST_F(StudyDayStoreTest, RefusesNotesThatSayNothingOrTooMuchWritingNothing) {
     const std::int64_t id = begin(*store, make_info("A1"), make_schedule_for(0, 1));
     const auto refused = [&](std::int64_t session, const SessionNote& note,
                              const std::string& why) {
-        const Result<bool> ok = store->add_note(session, note);
+        const Result<void> ok = store->add_note(session, note);
         ASSERT_FALSE(ok.ok()) << why;
         EXPECT_TRUE(contains(ok.error().message, why)) << ok.error().message;
     };
@@ -422,7 +422,7 @@ TEST_F(StudyDayStoreTest, ScreenEventsRoundTripWithoutATrial) {
         auto store = open_store();
         id = begin(*store, make_info("A1"), make_schedule_for(0, 1));
         for (const TrialEvent& e : events) {
-            const Result<bool> ok = store->append_event(id, e);
+            const Result<void> ok = store->append_event(id, e);
             ASSERT_TRUE(ok.ok()) << describe(e) << ": " << ok.error().message;
         }
     }
@@ -447,7 +447,7 @@ TEST_F(StudyDayStoreTest, RefusesScreenEventsThatClaimATrialOrLackAPage) {
     auto store = open_store();
     const std::int64_t id = begin(*store, make_info("A1"), make_schedule_for(0, 1));
     const auto refused = [&](std::int64_t session, const TrialEvent& e, const std::string& why) {
-        const Result<bool> ok = store->append_event(session, e);
+        const Result<void> ok = store->append_event(session, e);
         ASSERT_FALSE(ok.ok()) << why;
         EXPECT_TRUE(contains(ok.error().message, why)) << ok.error().message;
     };
@@ -481,7 +481,7 @@ TEST_F(StudyDayStoreTest, TheFrameLogCoversTheScreens) {
     FrameRecord in_trial = screen_frame(5, "label1");
     in_trial.trial_index = 1;
     store->queue_frame(id, in_trial);
-    const Result<bool> flushed = store->flush_frames();
+    const Result<void> flushed = store->flush_frames();
     ASSERT_TRUE(flushed.ok()) << flushed.error().message;
     const Result<std::vector<FrameRecord>> frames = store->frames(id);
     ASSERT_TRUE(frames.ok()) << frames.error().message;

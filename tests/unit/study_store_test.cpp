@@ -306,10 +306,10 @@ TEST_F(StudyStoreTest, EventsAndOutcomesRoundTripExactly) {
         auto store = open_store();
         id = begin(*store, "P01");
         for (const TrialEvent& event : events) {
-            const Result<bool> ok = store->append_event(id, event);
+            const Result<void> ok = store->append_event(id, event);
             ASSERT_TRUE(ok.ok()) << ok.error().message;
         }
-        const Result<bool> ok = store->record_outcome(id, 2, outcome);
+        const Result<void> ok = store->record_outcome(id, 2, outcome);
         ASSERT_TRUE(ok.ok()) << ok.error().message;
     }
     auto store = open_store();  // what a resumed session would see
@@ -348,7 +348,7 @@ TEST_F(StudyStoreTest, EventsAndOutcomesRoundTripExactly) {
 TEST_F(StudyStoreTest, RefusesEventsAndOutcomesForUnknownTrialsOrBadValues) {
     auto store = open_store();
     const std::int64_t id = begin(*store, "P01");
-    Result<bool> bad = store->append_event(id, TrialEvent{EventKind::Shown, 99, 1, 5, 0, -1});
+    Result<void> bad = store->append_event(id, TrialEvent{EventKind::Shown, 99, 1, 5, 0, -1});
     ASSERT_FALSE(bad.ok());
     EXPECT_TRUE(contains(bad.error().message, "trial 99 of session 1")) << bad.error().message;
     EXPECT_FALSE(store->append_event(id + 1, TrialEvent{EventKind::Shown, 0, 1, 5, 0, -1}).ok());
@@ -384,7 +384,7 @@ TEST_F(StudyStoreTest, ResumesAtTheFirstUndecidedTrial) {
         outcome.chosen_mode = t.label2_mode;
         outcome.valid = true;
         outcome.switches = 1;
-        const Result<bool> ok = store->record_outcome(id, index, outcome);
+        const Result<void> ok = store->record_outcome(id, index, outcome);
         ASSERT_TRUE(ok.ok()) << ok.error().message;
     };
     for (int index : {0, 1, 3}) decide(index);
@@ -456,7 +456,7 @@ TEST_F(StudyStoreTest, ALockedDatabaseIsAClearErrorNamingTheFile) {
     {
         RawDb other(db_);
         ASSERT_EQ(other.exec("BEGIN EXCLUSIVE"), SQLITE_OK);  // in WAL: holds the write lock
-        const Result<bool> blocked =
+        const Result<void> blocked =
             store->append_event(id, TrialEvent{EventKind::Shown, 0, 1, 5, 0, -1});
         ASSERT_FALSE(blocked.ok());
         EXPECT_TRUE(contains(blocked.error().message, "'" + db_.string() + "' is locked"))
@@ -549,7 +549,7 @@ TEST_F(StudyStoreTest, AFullDiskFailsTheWriteAndKeepsEarlierData) {
         auto store = open_store(full);
         ASSERT_TRUE(store);
         for (; written < 100000; ++written) {
-            const Result<bool> ok = store->append_event(
+            const Result<void> ok = store->append_event(
                 id,
                 TrialEvent{EventKind::Switched, 2, 1 + written % 2, 1000 + written, written, -1});
             if (!ok) {
@@ -611,7 +611,7 @@ TEST_F(StudyStoreTest, TheFrameLogBecomesDurableWithTheNextEvent) {
     RawDb raw(db_);
     // Queued rows wait in memory: nothing on disk yet.
     EXPECT_EQ(raw.integer("SELECT count(*) FROM frames"), 0);
-    const Result<bool> shown = store->append_event(id, {EventKind::Shown, 0, 1, 1'050, 3, -1});
+    const Result<void> shown = store->append_event(id, {EventKind::Shown, 0, 1, 1'050, 3, -1});
     ASSERT_TRUE(shown.ok()) << shown.error().message;
     // The event's transaction carried them.
     EXPECT_EQ(raw.integer("SELECT count(*) FROM frames"), 2);
@@ -867,7 +867,7 @@ TEST_F(StudyStoreTest, SessionNotesAreKeptInOrder) {
     EXPECT_EQ(info->notes[1].text, "second, with \"quotes\"");
     EXPECT_EQ(info->notes[0].noted_utc.size(), 20u);  // YYYY-MM-DDThh:mm:ssZ
     EXPECT_FALSE(store->add_session_note(id, "").ok());
-    const Result<bool> unknown = store->add_session_note(id + 1, "x");
+    const Result<void> unknown = store->add_session_note(id + 1, "x");
     ASSERT_FALSE(unknown.ok());
     EXPECT_TRUE(contains(unknown.error().message, "no session " + std::to_string(id + 1)))
         << unknown.error().message;

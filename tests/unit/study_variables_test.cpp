@@ -1,4 +1,4 @@
-// Participant variables given as --var NAME=VALUE: checked against the protocol's declarations
+// Participant variables given as NAME=VALUE: checked against the protocol's declarations
 // before any trial, every problem at once and each naming the variable and what is allowed;
 // accepted values kept in one canonical text.
 #include <gtest/gtest.h>
@@ -64,11 +64,12 @@ TEST(StudyVariables, OptionalVariablesMayBeLeftOut) {
 TEST(StudyVariables, AMissingRequiredVariableSaysWhatToGive) {
     const Result<std::vector<VariableValue>> values = check_variables(kDeclarations, {});
     ASSERT_FALSE(values.ok());
-    EXPECT_EQ(values.error().message,
-              "variable 'age' is required (Age in years): give --var age=VALUE, an integer from 18 "
-              "to 99\n"
-              "variable 'vision' is required: give --var vision=VALUE, one of normal, corrected, "
-              "other");
+    EXPECT_EQ(
+        values.error().message,
+        "variable 'age' is required (Age in years): give variable age=VALUE, an integer from 18 "
+        "to 99\n"
+        "variable 'vision' is required: give variable vision=VALUE, one of normal, corrected, "
+        "other");
 }
 
 TEST(StudyVariables, EveryProblemIsReportedAtOnce) {
@@ -76,27 +77,28 @@ TEST(StudyVariables, EveryProblemIsReportedAtOnce) {
         kDeclarations, {"age=17", "vision=blue", "agee=3", "ipd_mm=63,5", "remark", "age=40"});
     ASSERT_FALSE(values.ok());
     EXPECT_EQ(values.error().message,
-              "--var age=17: out of range; age must be an integer from 18 to 99\n"
-              "--var vision=blue: not one of normal, corrected, other\n"
-              "--var agee=3: unknown variable 'agee'; did you mean 'age'?\n"
-              "--var ipd_mm=63,5: not a number (use '.' as the decimal point); ipd_mm must be a "
+              "variable age=17: out of range; age must be an integer from 18 to 99\n"
+              "variable vision=blue: not one of normal, corrected, other\n"
+              "variable agee=3: unknown variable 'agee'; did you mean 'age'?\n"
+              "variable ipd_mm=63,5: not a number (use '.' as the decimal point); ipd_mm must be a "
               "number of at least 50\n"
-              "--var remark: expected NAME=VALUE (the protocol declares: age, vision, ipd_mm, "
+              "variable remark: expected NAME=VALUE (the protocol declares: age, vision, ipd_mm, "
               "remark)\n"
-              "--var age=40: variable 'age' is given twice; give each variable once");
+              "variable age=40: variable 'age' is given twice; give each variable once");
 }
 
 TEST(StudyVariables, UnknownNamesListTheDeclaredOnes) {
     const Result<std::vector<VariableValue>> far =
         check_variables(kDeclarations, {"age=30", "vision=normal", "handedness=left"});
     ASSERT_FALSE(far.ok());
-    EXPECT_EQ(far.error().message,
-              "--var handedness=left: unknown variable 'handedness' (the protocol declares: age, "
-              "vision, ipd_mm, remark)");
+    EXPECT_EQ(
+        far.error().message,
+        "variable handedness=left: unknown variable 'handedness' (the protocol declares: age, "
+        "vision, ipd_mm, remark)");
     const Result<std::vector<VariableValue>> none = check_variables({}, {"age=30"});
     ASSERT_FALSE(none.ok());
     EXPECT_EQ(none.error().message,
-              "--var age=30: unknown variable 'age' (the protocol declares no variables)");
+              "variable age=30: unknown variable 'age' (the protocol declares no variables)");
 }
 
 TEST(StudyVariables, IntegersArePlainDecimal) {
@@ -108,18 +110,18 @@ TEST(StudyVariables, IntegersArePlainDecimal) {
          {"4.0", "+42", " 42", "42 ", "4e1", "forty", "", "0x2a", "42y", "99999999999999999999"}) {
         const Result<std::string> value = check_variable_value(age, bad);
         ASSERT_FALSE(value.ok()) << bad;
-        EXPECT_EQ(value.error().message, "--var age=" + std::string(bad) +
+        EXPECT_EQ(value.error().message, "variable age=" + std::string(bad) +
                                              ": not an integer; age must be an integer from 18 "
                                              "to 99");
     }
     EXPECT_EQ(check_variable_value(age, "100").error().message,
-              "--var age=100: out of range; age must be an integer from 18 to 99");
+              "variable age=100: out of range; age must be an integer from 18 to 99");
     const ParticipantVariable open = declared("count", VariableType::Integer);
     EXPECT_EQ(check_variable_value(open, "-0").value(), "0");
     EXPECT_EQ(check_variable_value(open, "-7").value(), "-7");
     const ParticipantVariable low = declared("trials", VariableType::Integer, 1.0);
     EXPECT_EQ(check_variable_value(low, "0").error().message,
-              "--var trials=0: out of range; trials must be an integer of at least 1");
+              "variable trials=0: out of range; trials must be an integer of at least 1");
 }
 
 TEST(StudyVariables, NumbersReadAndWriteWithAPointInAnyLocale) {
@@ -133,20 +135,21 @@ TEST(StudyVariables, NumbersReadAndWriteWithAPointInAnyLocale) {
     for (const char* bad : {"nan", "inf", "", "1.5 ", "+1", "1..5", "abc"}) {
         const Result<std::string> value = check_variable_value(x, bad);
         ASSERT_FALSE(value.ok()) << bad;
-        EXPECT_EQ(value.error().message, "--var x=" + std::string(bad) +
+        EXPECT_EQ(value.error().message, "variable x=" + std::string(bad) +
                                              ": not a number; x must be a number of at most 10");
     }
     EXPECT_EQ(check_variable_value(x, "10.5").error().message,
-              "--var x=10.5: out of range; x must be a number of at most 10");
+              "variable x=10.5: out of range; x must be a number of at most 10");
 }
 
 TEST(StudyVariables, ChoicesAreExactWithAHint) {
     const ParticipantVariable& vision = kDeclarations[1];
     EXPECT_EQ(check_variable_value(vision, "other").value(), "other");
-    EXPECT_EQ(check_variable_value(vision, "Normal").error().message,
-              "--var vision=Normal: not one of normal, corrected, other; did you mean 'normal'?");
+    EXPECT_EQ(
+        check_variable_value(vision, "Normal").error().message,
+        "variable vision=Normal: not one of normal, corrected, other; did you mean 'normal'?");
     EXPECT_EQ(check_variable_value(vision, "").error().message,
-              "--var vision=: not one of normal, corrected, other");
+              "variable vision=: not one of normal, corrected, other");
 }
 
 TEST(StudyVariables, TextIsOneLineOfAtMostAThousandCharacters) {
@@ -163,12 +166,13 @@ TEST(StudyVariables, TextIsOneLineOfAtMostAThousandCharacters) {
     const std::string allowed =
         "; remark must be a text of 1 to 1000 characters without control characters";
     EXPECT_EQ(check_variable_value(remark, umlauts + "x").error().message,
-              "--var remark=" + umlauts + "x: 1001 characters is too long" + allowed);
-    EXPECT_EQ(check_variable_value(remark, "").error().message, "--var remark=: empty" + allowed);
+              "variable remark=" + umlauts + "x: 1001 characters is too long" + allowed);
+    EXPECT_EQ(check_variable_value(remark, "").error().message,
+              "variable remark=: empty" + allowed);
     EXPECT_EQ(check_variable_value(remark, "two\nlines").error().message,
-              "--var remark=two\nlines: has a control character (a line break?)" + allowed);
+              "variable remark=two\nlines: has a control character (a line break?)" + allowed);
     EXPECT_EQ(check_variable_value(remark, "bad \xc3").error().message,
-              "--var remark=bad \xc3: not valid UTF-8 text" + allowed);
+              "variable remark=bad \xc3: not valid UTF-8 text" + allowed);
 }
 
 TEST(StudyVariables, AValueWithAnEqualsSignKeepsIt) {

@@ -78,15 +78,15 @@ TEST(MirrorPage, ThePageAsTheHeadsetShowsIt) {
 }
 
 TEST(NoteOutcome, StoredAtTheTrialOrWhyNot) {
-    EXPECT_EQ(note_outcome(Result<bool>(true), "adjusted the headset", 12),
+    EXPECT_EQ(note_outcome(Result<void>(Ok{}), "adjusted the headset", 12),
               "note stored at trial 12");
-    EXPECT_EQ(note_outcome(Result<bool>(true), "before we start", 0),
+    EXPECT_EQ(note_outcome(Result<void>(Ok{}), "before we start", 0),
               "note stored before the first trial");
     const std::string refused =
-        note_outcome(Result<bool>(Error{"a note cannot be blank"}), "  ", 3);
+        note_outcome(Result<void>(Error{"a note cannot be blank"}), "  ", 3);
     EXPECT_EQ(refused.rfind("note not stored: a note cannot be blank", 0), 0u);
     // What was typed is not lost with the cleared field.
-    EXPECT_NE(note_outcome(Result<bool>(Error{"disk full"}), "participant sneezed", 3)
+    EXPECT_NE(note_outcome(Result<void>(Error{"disk full"}), "participant sneezed", 3)
                   .find("participant sneezed"),
               std::string::npos);
 }
