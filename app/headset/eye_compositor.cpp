@@ -105,9 +105,7 @@ void EyeCompositor::record_eye(const vk::raii::CommandBuffer& cmd, vk::Image tar
             Access::eColorAttachmentWrite | Access::eTransferWrite | Access::eTransferRead,
             Stage::eTransfer, Access::eTransferWrite);
     if (source) {
-        vk_core::transition(cmd, *source, vk::ImageLayout::eColorAttachmentOptimal,
-                            vk::ImageLayout::eTransferSrcOptimal, Stage::eColorAttachmentOutput,
-                            Access::eColorAttachmentWrite, Stage::eTransfer, Access::eTransferRead);
+        // The renderer's frame left it a transfer source, visible to transfers that follow.
         const PixelRect all{0, 0, static_cast<int>(extent.width), static_cast<int>(extent.height)};
         const vk::Extent2D from = source->desc().extent;
         // Same size: an exact copy; a blit also converts RGBA to a BGRA swapchain.

@@ -53,8 +53,8 @@ class EyeCompositor {
                                               vk::ImageLayout, vk::Extent2D)>;
 
     // Records the eye into `target` (a swapchain image in COLOR_ATTACHMENT_OPTIMAL, left so).
-    // source: the renderer's display image in COLOR_ATTACHMENT_OPTIMAL (left in
-    // TRANSFER_SRC_OPTIMAL), or null for the neutral screen. mirror: called with the finished
+    // source: the renderer's display image, as its frame left it (TRANSFER_SRC_OPTIMAL, visible
+    // to transfers), or null for the neutral screen. mirror: called with the finished
     // image in TRANSFER_SRC_OPTIMAL (the left eye's, for the experimenter window).
     void record_eye(const vk::raii::CommandBuffer& cmd, vk::Image target, vk::Extent2D extent,
                     const rig::Tangents& tangents, const vk_core::Image* source,

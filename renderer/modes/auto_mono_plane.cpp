@@ -60,8 +60,9 @@ void AutoMonoPlane::set_eye_depths(std::array<vk::ImageView, 2> linear_depth,
     if (histogram_) histogram_->set_eye_depths(linear_depth, eye_extent);
 }
 
-void AutoMonoPlane::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const {
-    if (histogram_ && eye_depths_) histogram_->record(cmd, slot);
+void AutoMonoPlane::record(const vk::raii::CommandBuffer& cmd, passes::StepSync& sync,
+                           std::uint32_t slot) const {
+    if (histogram_ && eye_depths_) histogram_->record(cmd, sync, slot);
 }
 
 void AutoMonoPlane::complete(std::uint32_t slot, bool histogram_recorded,

@@ -37,7 +37,8 @@ class AutoMonoPlane {
     // whenever they change).
     void set_eye_depths(std::array<vk::ImageView, 2> linear_depth, vk::Extent2D eye_extent);
     // The histogram of this frame's final eye depths into the slot's buffer.
-    void record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const;
+    void record(const vk::raii::CommandBuffer& cmd, passes::StepSync& sync,
+                std::uint32_t slot) const;
     // A completed frame: its histogram (if it recorded one) and pass times go to the chooser.
     void complete(std::uint32_t slot, bool histogram_recorded, const profile::FrameStats& stats);
     // The histogram of the last completed frame that recorded one (tests: its counts against the

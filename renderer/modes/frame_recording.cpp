@@ -1,5 +1,5 @@
-// The recorders of ModeRenderer: one per kind of planned pass (renderer/plan/frame_plan.h), and
-// the transitions the plan's reads imply.
+// The recorders of ModeRenderer: one per kind of planned pass (renderer/plan/frame_plan.h). None
+// records a barrier: the executor (graph_executor.h) places the compiled ones before each step.
 #include <algorithm>
 
 #include "renderer/modes/mode_renderer_internals.h"
@@ -9,22 +9,9 @@
 namespace monoplane::modes {
 namespace {
 
-using Stage = vk::PipelineStageFlagBits2;
-using Access = vk::AccessFlagBits2;
-
-// A layout transition for a colour image an earlier pass left as an attachment.
-void to_shader_read(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image) {
-    vk_core::transition(cmd, image, vk::ImageLayout::eColorAttachmentOptimal,
-                        vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eColorAttachmentOutput,
-                        Access::eColorAttachmentWrite,
-                        Stage::eFragmentShader | Stage::eComputeShader, Access::eShaderSampledRead);
-}
-
+// A colour image to a host buffer; the render graph made the image a transfer source.
 void copy_to_buffer(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image,
-                    vk::Extent2D extent, const vk_core::Buffer& buffer, vk::ImageLayout from) {
-    vk_core::transition(cmd, image, from, vk::ImageLayout::eTransferSrcOptimal,
-                        Stage::eColorAttachmentOutput | Stage::eFragmentShader,
-                        Access::eColorAttachmentWrite, Stage::eTransfer, Access::eTransferRead);
+                    vk::Extent2D extent, const vk_core::Buffer& buffer) {
     cmd.copyImageToBuffer(
         image.handle(), vk::ImageLayout::eTransferSrcOptimal, buffer.handle(),
         vk::BufferImageCopy(
@@ -52,46 +39,18 @@ passes::ForwardStep forward_step(DrawStep step) {
 
 }  // namespace
 
-const vk_core::Image* ModeRenderer::planned_image(const std::string& resource) const {
-    const std::size_t dot = resource.find('.');
-    if (dot == std::string::npos) return nullptr;
-    const std::string view = resource.substr(0, dot);
-    const std::string image = resource.substr(dot + 1);
-    const View* owner = view == "left"    ? eyes_[0].get()
-                        : view == "right" ? eyes_[1].get()
-                        : view == "mono"  ? mono_.get()
-                                          : nullptr;
-    if (owner == nullptr) return nullptr;
-    if (image == "hdr") return &owner->hdr;
-    if (image == "linear_depth") return &owner->linear_depth;
-    if (image == "velocity") return owner->velocity ? &*owner->velocity : nullptr;
-    return nullptr;  // depth, history, ao, display: their passes transition them
-}
-
-void ModeRenderer::record_pass(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
-                               FrameState& frame) {
-    // The plan's reads: colour images an earlier pass left as attachments become sampled.
-    for (const std::string& read : pass.reads) {
-        auto written =
-            std::find(frame.attachments_written.begin(), frame.attachments_written.end(), read);
-        if (written == frame.attachments_written.end()) continue;
-        if (const vk_core::Image* image = planned_image(read)) to_shader_read(cmd, *image);
-        frame.attachments_written.erase(written);
-    }
+void ModeRenderer::record_pass(const vk::raii::CommandBuffer& cmd, std::size_t index,
+                               const FrameState& frame) {
+    const PlannedPass& pass = last_plan_.passes[index];
+    // The barriers into the pass first, outside its timed scope, as its own commands' cost is.
+    passes::StepSync& sync = executor_.begin_pass(cmd, index);
     const bool timed = pass.kind != PassKind::kReadback;  // read-backs are not GPU frame time
     if (timed) profiler_.begin_pass(cmd, pass.name);
     if (!pass.statistics_scope.empty()) profiler_.begin_view(cmd, pass.statistics_scope);
-    record_planned(cmd, pass, frame);
+    record_planned(cmd, pass, frame, sync);
     if (!pass.statistics_scope.empty()) profiler_.end_view(cmd);
     if (timed) profiler_.end_pass(cmd);
-    // The plan's writes: what this pass left as colour attachments.
-    for (const std::string& write : pass.writes) {
-        if (planned_image(write) != nullptr &&
-            std::find(frame.attachments_written.begin(), frame.attachments_written.end(), write) ==
-                frame.attachments_written.end()) {
-            frame.attachments_written.push_back(write);
-        }
-    }
+    executor_.end_pass();
 }
 
 std::optional<passes::Predicate> ModeRenderer::predicate(GpuPredicate when) const {
@@ -109,7 +68,7 @@ std::optional<passes::Predicate> ModeRenderer::predicate(GpuPredicate when) cons
 }
 
 void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
-                                  const FrameState& frame) {
+                                  const FrameState& frame, passes::StepSync& sync) {
     switch (pass.kind) {
         case PassKind::kCulling:
             culling_.record_frustum_phase(cmd);
@@ -121,7 +80,7 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const Plan
             record_forward(cmd, pass);
             break;
         case PassKind::kDepthPyramid:
-            record_pyramid(cmd, pass, frame);
+            record_pyramid(cmd, pass, frame, sync);
             break;
         case PassKind::kOcclusionCulling:
             passes::with_predicate(cmd, predicate(pass.when),
@@ -130,34 +89,24 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const Plan
         case PassKind::kMonoSsao:
             // The far region's AO, computed once for both eyes (C alone sees it).
             passes::with_predicate(cmd, predicate(pass.when), [&] {
-                ssao_->record_view(cmd, *mono_->ssao, mono_->area);
-                ssao_->record_apply(cmd, *mono_->ssao, mono_->hdr, mono_->area);
+                ssao_->record_view(cmd, sync, *mono_->ssao, mono_->area);
+                ssao_->record_apply(cmd, sync, *mono_->ssao, mono_->hdr, mono_->area);
             });
             break;
         case PassKind::kComposite:
             record_composite(cmd, pass, frame);
             break;
         case PassKind::kSsao:
-            // In hybrid, pixels well beyond m take C's AO: their own estimate is not needed.
-            ssao_->record_pair(
-                cmd, *eyes_[0]->ssao, *eyes_[1]->ssao, eye_extent_, *options_.ssao,
-                frame.use_mono ? static_cast<float>(frame.inputs->mono_plane) + ssao_->skip_margin()
-                               : passes::SsaoPass::kEveryPixel);
-            for (const auto& eye : eyes_) {
-                // In hybrid the far region already carries C's AO: only the near content takes
-                // the eyes'.
-                ssao_->record_apply(cmd, *eye->ssao, eye->hdr, eye_extent_,
-                                    frame.use_mono ? &eye->depth : nullptr);
-            }
+            record_ssao(cmd, frame, sync);
             break;
         case PassKind::kTaa:
-            record_taa(cmd, *eyes_[pass.view == "left" ? 0 : 1]);
+            record_taa(cmd, *eyes_[eye_index(pass.view)]);
             break;
         case PassKind::kTonemap:
             record_tonemap(cmd, pass, frame);
             break;
         case PassKind::kDepthHistogram:
-            auto_mono_plane_->record(cmd, frame.slot);
+            auto_mono_plane_->record(cmd, sync, frame.slot);
             break;
         case PassKind::kReadback:
             record_readback(cmd, frame);
@@ -170,14 +119,14 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const Plan
     for (const PlannedDraw& draw : pass.draws) {
         draws.push_back({forward_step(draw.step), predicate(draw.when)});
     }
-    if (pass.view == "eyes") {
+    if (pass.view == ViewId::kEyes) {
         // Both eyes in one pass, from the list of chunks either eye needs.
         eyes_forward_->record(cmd, eye_layers_->forward_targets(eye_extent_), *eye_pair_set_,
                               *merged_depth_set_, resources_->geometry(), resources_->textures(),
                               culling_.draws(passes::CullView::kBothEyes), draws);
         return;
     }
-    if (pass.view == "mono") {
+    if (pass.view == ViewId::kMono) {
         // Pixels hidden in both eyes stay unwritten; C's image read back shows them black,
         // and C's SSAO must not read stale depths there.
         const bool masked = std::any_of(pass.draws.begin(), pass.draws.end(), [](const auto& d) {
@@ -189,39 +138,40 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const Plan
                         culling_.draws(passes::CullView::kMono), draws);
         return;
     }
-    const int e = pass.view == "left" ? 0 : 1;
+    const int e = eye_index(pass.view);
     forward_.record(cmd, eyes_[e]->forward_targets(), *eyes_[e]->forward_set, *merged_depth_set_,
                     resources_->geometry(), resources_->textures(),
                     culling_.draws(static_cast<passes::CullView>(e)), draws);
 }
 
 void ModeRenderer::record_pyramid(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
-                                  const FrameState& frame) {
-    for (const auto& eye : eyes_) {
-        vk_core::transition(cmd, eye->depth, vk::ImageLayout::eDepthAttachmentOptimal,
-                            vk::ImageLayout::eDepthReadOnlyOptimal, Stage::eLateFragmentTests,
-                            Access::eDepthStencilAttachmentWrite, Stage::eComputeShader,
-                            Access::eShaderSampledRead);
-    }
+                                  const FrameState& frame, passes::StepSync& sync) {
     std::array<glm::dmat3, 2> mono_to_eye;
     for (int e = 0; e < 2; ++e) {
         mono_to_eye[e] =
             rig::jittered_pixel_mapping(rig::mono_pixel_to_eye_pixel(*rig_, e), frame.jitter_px);
     }
-    pyramid_.record(cmd, mono_to_eye, predicate(pass.when));
+    pyramid_.record(cmd, sync, mono_to_eye, predicate(pass.when));
+}
+
+void ModeRenderer::record_ssao(const vk::raii::CommandBuffer& cmd, const FrameState& frame,
+                               passes::StepSync& sync) {
+    // In hybrid, pixels well beyond m take C's AO: their own estimate is not needed.
+    ssao_->record_pair(cmd, sync, *eyes_[0]->ssao, *eyes_[1]->ssao, eye_extent_, *options_.ssao,
+                       frame.use_mono
+                           ? static_cast<float>(frame.inputs->mono_plane) + ssao_->skip_margin()
+                           : passes::SsaoPass::kEveryPixel);
     for (const auto& eye : eyes_) {
-        vk_core::transition(cmd, eye->depth, vk::ImageLayout::eDepthReadOnlyOptimal,
-                            vk::ImageLayout::eDepthAttachmentOptimal, Stage::eComputeShader,
-                            Access::eShaderSampledRead,
-                            Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
-                            Access::eDepthStencilAttachmentRead);
+        // In hybrid the far region already carries C's AO: only the near content takes the eyes'.
+        ssao_->record_apply(cmd, sync, *eye->ssao, eye->hdr, eye_extent_,
+                            frame.use_mono ? &eye->depth : nullptr);
     }
 }
 
 void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
                                     const FrameState& frame) {
     const FrameInputs& inputs = *frame.inputs;
-    const int e = pass.view == "left" ? 0 : 1;
+    const int e = eye_index(pass.view);
     const View& view = *eyes_[e];
     passes::CompositeParams params;
     params.mono_allocation = glm::vec2(static_cast<float>(mono_->extent.width),
@@ -256,11 +206,11 @@ void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd, const Pl
 
 void ModeRenderer::record_tonemap(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
                                   const FrameState& frame) {
-    if (pass.view == "mono") {
+    if (pass.view == ViewId::kMono) {
         tonemap_.record(cmd, mono_->display, *mono_->tonemap_set, options_.tonemap);
         return;
     }
-    const View& view = *eyes_[pass.view == "left" ? 0 : 1];
+    const View& view = *eyes_[eye_index(pass.view)];
     const vk::DescriptorSet input =
         frame.taa ? *view.tonemap_taa_sets[history_parity_] : *view.tonemap_set;
     tonemap_.record(cmd, view.display, input, options_.tonemap);
@@ -268,35 +218,23 @@ void ModeRenderer::record_tonemap(const vk::raii::CommandBuffer& cmd, const Plan
 
 void ModeRenderer::record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame) {
     for (const auto& view : eyes_) {
-        if (options_.read_back) {
-            copy_to_buffer(cmd, view->display, view->extent, view->readback,
-                           vk::ImageLayout::eColorAttachmentOptimal);
-        }
+        if (options_.read_back) copy_to_buffer(cmd, view->display, view->extent, view->readback);
         if (options_.read_back_depth) {
-            copy_to_buffer(cmd, view->linear_depth, view->extent, view->depth_readback,
-                           vk::ImageLayout::eShaderReadOnlyOptimal);
+            copy_to_buffer(cmd, view->linear_depth, view->extent, view->depth_readback);
         }
         if (options_.read_back_ao) ssao_->record_readback(cmd, *view->ssao);
     }
     if (frame.use_mono && options_.read_back) {
-        copy_to_buffer(cmd, mono_->display, mono_->area, mono_->readback,
-                       vk::ImageLayout::eColorAttachmentOptimal);
+        copy_to_buffer(cmd, mono_->display, mono_->area, mono_->readback);
     }
     culling_.record_readback(cmd, options_.read_back_draw_lists, frame.slot);
 }
 
 void ModeRenderer::record_taa(const vk::raii::CommandBuffer& cmd, View& view) {
-    const vk_core::Image& history = *view.history[1 - history_parity_];
-    if (!history_valid_) {
-        // Never written (or stale): bound for the shader's interface, not read on a reset.
-        vk_core::transition(cmd, history, vk::ImageLayout::eUndefined,
-                            vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eFragmentShader,
-                            Access::eShaderSampledRead, Stage::eFragmentShader,
-                            Access::eShaderSampledRead);
-    }
+    // A restarted history is bound for the shader's interface, not read (the render graph still
+    // gives it a layout).
     const vk_core::Image& output = *view.history[history_parity_];
     taa_.record(cmd, output, *view.taa_sets[history_parity_], options_.taa, !history_valid_);
-    to_shader_read(cmd, output);
 }
 
 }  // namespace monoplane::modes

@@ -170,6 +170,8 @@ void ModeRenderer::ensure_pyramid() {
     if (pyramid_.fits(mono_->extent)) return;
     // The old pyramid and the sets naming it may be in use by a frame in flight.
     drain_frames();
+    executor_.forget(pyramid_.pyramid_image());
+    executor_.forget(pyramid_.blocks_image());
     pyramid_.resize(mono_->extent);
     pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
     culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
@@ -201,6 +203,7 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     // Allocated once for the nearest m in normal use (eq. 8); grown only if a frame needs more,
     // after the frames in flight that use the old images.
     drain_frames();
+    if (mono_) forget_images(*mono_);
     mono_.reset();
     const bool taa = options_.anti_aliasing == AntiAliasing::kTaa;
     mono_ = std::make_unique<MonoView>(ctx_, needed, ViewFeatures{taa, false});
@@ -450,6 +453,7 @@ void ModeRenderer::update_plan(const FrameInputs& inputs, const FrameState& fram
     options.stereo_pass = options_.stereo_pass;
     options.anti_aliasing = options_.anti_aliasing;
     options.ssao = options_.ssao.has_value();
+    options.ssao_stereo = options_.ssao == passes::SsaoVariant::kStereoConsistent;
     options.depth_prepass = options_.depth_prepass;
     options.read_back = options_.read_back;
     options.read_back_depth = options_.read_back_depth;
@@ -480,9 +484,11 @@ void ModeRenderer::submit_frame(
     const vk::raii::CommandBuffer& cmd = ring_.commands(frame.slot);
     uploads_.record(cmd);
     profiler_.begin_frame(cmd, frame.slot);
-    for (const PlannedPass& pass : last_plan_.passes) {
-        if (!pass.skipped) record_pass(cmd, pass, frame);
+    executor_.begin_frame(last_plan_, bind_resources());
+    for (std::size_t p = 0; p < last_plan_.passes.size(); ++p) {
+        if (!last_plan_.passes[p].skipped) record_pass(cmd, p, frame);
     }
+    executor_.end_frame(cmd);
     const double record_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - cpu_start)
             .count();

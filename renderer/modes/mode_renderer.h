@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "renderer/modes/auto_mono_plane.h"
+#include "renderer/executor/graph_executor.h"
 #include "renderer/modes/scene_resources.h"
 #include "renderer/modes/view_setup.h"
 #include "renderer/passes/composite/composite_pass.h"
@@ -31,9 +32,9 @@
 #include "renderer/plan/render_choices.h"
 #include "renderer/plan/variant_chooser.h"
 #include "renderer/profile/frame_profiler.h"
-#include "rig/rig.h"
 #include "renderer/vk/frame_ring.h"
 #include "renderer/vk/frame_uploads.h"
+#include "rig/rig.h"
 
 namespace monoplane::modes {
 
@@ -135,9 +136,10 @@ class ModeRenderer {
     void set_read_back(bool read_back) { options_.read_back = read_back; }
     // The last frame's images (options.read_back).
     const RgbaImage& eye_image(Eye eye) const;
-    // The last frame's tone-mapped eye on the GPU (R8G8B8A8_SRGB, transfer-source usage): in
-    // COLOR_ATTACHMENT_OPTIMAL without read_back, else TRANSFER_SRC_OPTIMAL. For a headset's
-    // swapchain; the next frame overwrites it.
+    // The last frame's tone-mapped eye on the GPU (R8G8B8A8_SRGB): TRANSFER_SRC_OPTIMAL, and
+    // visible to transfer reads (copies, blits) recorded after the frame (record_after). For a
+    // headset's swapchain; a command reading it must leave it in that layout, and the next frame
+    // overwrites it.
     const vk_core::Image& display_image(Eye eye) const;
     // The last submitted frame's linear depth of the eye on the GPU (ForwardPass::
     // kLinearDepthFormat, sampled usage): metres in front of the eyes' plane, in hybrid C's depth
@@ -163,6 +165,11 @@ class ModeRenderer {
     std::vector<std::uint32_t> drawn_chunks(passes::CullView view) const;
     // The plan the last frame executed (render --json, bench.json).
     const FramePlan& last_plan() const { return last_plan_; }
+    // Tests only: frames from now on leave out the compiled barriers `drop` selects (what the
+    // synchronisation validation layer must then report).
+    void drop_barriers_for_test(GraphExecutor::BarrierFilter drop) {
+        executor_.drop_barriers_for_test(std::move(drop));
+    }
     // The variant the last hybrid frame used (FrameInputs::mono_culling resolved: with kAuto,
     // the one the measurement chose or is trying).
     MonoCulling last_variant() const { return last_variant_; }
@@ -209,18 +216,21 @@ class ModeRenderer {
     void update_frame_views(const FrameInputs& inputs, FrameState& frame);
     // Makes last_plan_ this frame's plan (kept when nothing it depends on changed).
     void update_plan(const FrameInputs& inputs, const FrameState& frame);
-    // The image a plan resource names, when the executor transitions it (colour images the
-    // passes leave as attachments), else nullptr.
-    const vk_core::Image* planned_image(const std::string& resource) const;
+    // The device images the plan's resources are this frame (resource_bindings.cpp).
+    std::vector<BoundResource> bind_resources();
+    std::vector<vk_core::ImageRange> view_images(const ResourceKey& key) const;
+    // Before a view's images go: the executor must not take their states for new ones.
+    void forget_images(const View& view);
     std::optional<passes::Predicate> predicate(GpuPredicate when) const;
-    // Transitions for the pass's reads, its profiler scopes, and its commands.
-    void record_pass(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
-                     FrameState& frame);
+    // The pass's barriers (the executor's), its profiler scopes, and its commands.
+    void record_pass(const vk::raii::CommandBuffer& cmd, std::size_t pass, const FrameState& frame);
     void record_planned(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
-                        const FrameState& frame);
+                        const FrameState& frame, passes::StepSync& sync);
     void record_forward(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass);
     void record_pyramid(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
-                        const FrameState& frame);
+                        const FrameState& frame, passes::StepSync& sync);
+    void record_ssao(const vk::raii::CommandBuffer& cmd, const FrameState& frame,
+                     passes::StepSync& sync);
     void record_composite(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
                           const FrameState& frame);
     void record_taa(const vk::raii::CommandBuffer& cmd, View& view);
@@ -265,6 +275,8 @@ class ModeRenderer {
     bool mono_rendered_ = false;
     std::optional<rig::Rig> rig_;
     FramePlan last_plan_;
+    // Owns every frame's synchronisation: compiles the plan's barriers and records them.
+    GraphExecutor executor_;
     struct PlanInputs {
         PlanOptions options;
         PlanFrame frame;

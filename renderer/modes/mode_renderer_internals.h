@@ -182,9 +182,6 @@ struct ModeRenderer::FrameState {
     MonoCulling mono_culling = MonoCulling::kNoOpt;
     bool measuring_variant = false;  // this frame's time goes to the chooser
     std::uint32_t slot = 0;          // the frame-in-flight slot it is recorded into
-    // Colour images a pass left as attachments that a later pass samples (frame_plan.h's
-    // resource names): transitioned once, before their first reader.
-    std::vector<std::string> attachments_written;
 };
 
 }  // namespace monoplane::modes

@@ -12,6 +12,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "renderer/graph/frame_graph.h"
 #include "renderer/passes/shadow/shadow_pass.h"
 #include "renderer/passes/shared/scene_geometry.h"
 #include "renderer/passes/shared/scene_textures.h"
@@ -39,6 +40,9 @@ class SceneResources {
     // Records the shadow map for the light transform; call when shadow_needed says so, in a
     // submission that completes before another renderer reads the map.
     void record_shadow(const vk::raii::CommandBuffer& cmd, const glm::dmat4& light_view_proj);
+    // The shadow map's synchronisation state, shared by every renderer of the scene: each
+    // renderer's render graph starts from what the last frame of any of them left.
+    graph::ResourceState& shadow_map_state() { return shadow_map_state_; }
 
   private:
     const scenes::Scene& scene_;
@@ -49,6 +53,7 @@ class SceneResources {
     passes::ShadowPass shadow_;
     passes::DrawList shadow_draws_;  // every chunk
     std::optional<glm::dmat4> shadow_light_view_proj_;
+    graph::ResourceState shadow_map_state_;
 };
 
 }  // namespace monoplane::modes

@@ -1,14 +1,16 @@
 #include "renderer/plan/frame_plan.h"
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 
 #include "renderer/plan/name_table.h"
+#include "renderer/plan/pass_steps.h"
 
 namespace monoplane::modes {
 namespace {
 
-constexpr std::array<const char*, 2> kEyes = {"left", "right"};
+constexpr std::array<ViewId, 2> kEyes = {ViewId::kLeft, ViewId::kRight};
 
 constexpr NameTable<PassKind> kPassKindNames = {{PassKind::kCulling, "culling"},
                                                 {PassKind::kShadow, "shadow"},
@@ -34,10 +36,6 @@ constexpr NameTable<DrawStep> kDrawStepNames = {
     {DrawStep::kChunksShowRouting, "chunks-show-routing"},
     {DrawStep::kSky, "sky"}};
 
-std::string resource(const std::string& view, const char* image) {
-    return view + "." + image;
-}
-
 // What shapes this frame's passes, derived once from the inputs (the renderer's own rules).
 struct FrameShape {
     bool hybrid = false;    // a hybrid mode, whether or not this frame draws C
@@ -48,6 +46,7 @@ struct FrameShape {
     bool predicated = false;
     bool single_pass = false;
     bool taa = false;
+    bool msaa = false;
 };
 
 FrameShape shape_of(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device) {
@@ -63,13 +62,14 @@ FrameShape shape_of(const PlanOptions& options, const PlanFrame& frame, const Pl
     s.predicated = device.conditional_rendering;
     s.single_pass = options.stereo_pass != StereoPass::kTwoPasses;
     s.taa = options.anti_aliasing == AntiAliasing::kTaa;
+    s.msaa = options.anti_aliasing != AntiAliasing::kNone && !s.taa;
     return s;
 }
 
 class PlanBuilder {
   public:
     PlanBuilder(const PlanOptions& options, const PlanFrame& frame, const FrameShape& shape)
-        : options_(options), frame_(frame), s_(shape) {}
+        : options_(options), frame_(frame), s_(shape), r_(plan_) {}
 
     FramePlan build() {
         add_culling();
@@ -79,6 +79,9 @@ class PlanBuilder {
         add_post_processing();
         if (options_.depth_histogram) add_depth_histogram();
         add_readback();
+        add_exports();
+        declare_predicate_reads();
+        cull_unread_passes();
         return std::move(plan_);
     }
 
@@ -87,11 +90,11 @@ class PlanBuilder {
         return s_.predicated ? predicate : GpuPredicate::kAlways;
     }
 
-    PlannedPass& add(PassKind kind, std::string name, std::string view = {}) {
+    PlannedPass& add(PassKind kind, std::string name, ViewId view = ViewId::kNone) {
         PlannedPass pass;
         pass.kind = kind;
         pass.name = std::move(name);
-        pass.view = std::move(view);
+        pass.view = view;
         plan_.passes.push_back(std::move(pass));
         return plan_.passes.back();
     }
@@ -102,21 +105,32 @@ class PlanBuilder {
                                                    : DrawStep::kChunks;
     }
 
-    void add_forward_writes(PlannedPass& pass, const std::string& view) const {
-        for (const char* image : {"hdr", "depth", "linear_depth"}) {
-            pass.writes.push_back(resource(view, image));
-        }
-        if (s_.taa) pass.writes.push_back(resource(view, "velocity"));
+    static bool predicated(const std::vector<PlannedDraw>& draws) {
+        return std::any_of(draws.begin(), draws.end(),
+                           [](const PlannedDraw& d) { return d.when != GpuPredicate::kAlways; });
+    }
+
+    // The forward pass's uses, once its draws are known.
+    std::vector<graph::Step> forward_steps_of(const PlannedPass& pass, std::vector<ViewId> views) {
+        ForwardUses uses;
+        uses.views = std::move(views);
+        uses.velocity = s_.taa;
+        uses.multisampled = s_.msaa;
+        uses.masks_hidden = std::any_of(pass.draws.begin(), pass.draws.end(), [](const auto& d) {
+            return d.step == DrawStep::kMaskHidden;
+        });
+        uses.predicated = predicated(pass.draws);
+        return forward_steps(r_, uses);
     }
 
     void add_culling() {
         PlannedPass& pass = add(PassKind::kCulling, "culling");
-        pass.writes = {"draw_lists", "predicates"};
+        pass.steps = culling_steps(r_);
     }
 
     void add_shadow() {
         PlannedPass& pass = add(PassKind::kShadow, "shadow");
-        pass.writes = {"shadow_map"};
+        pass.steps = shadow_steps(r_);
         if (!frame_.shadow_needed) {
             pass.skipped = "light region unchanged: the shadow map is reused";
         }
@@ -138,19 +152,17 @@ class PlanBuilder {
 
     void add_eye_forward() {
         if (s_.single_pass) {
-            PlannedPass& pass = add(PassKind::kForward, "eyes.forward", "eyes");
+            PlannedPass& pass = add(PassKind::kForward, "eyes.forward", ViewId::kEyes);
             pass.statistics_scope = "eyes";
-            pass.reads = {"draw_lists", "shadow_map"};
-            for (const char* eye : kEyes) add_forward_writes(pass, eye);
             pass.draws = eye_draws();
+            pass.steps = forward_steps_of(pass, {kEyes.begin(), kEyes.end()});
             return;
         }
-        for (const char* eye : kEyes) {
-            PlannedPass& pass = add(PassKind::kForward, std::string(eye) + ".forward", eye);
-            pass.statistics_scope = eye;
-            pass.reads = {"draw_lists", "shadow_map"};
-            add_forward_writes(pass, eye);
+        for (ViewId eye : kEyes) {
+            PlannedPass& pass = add(PassKind::kForward, view_name(eye) + ".forward", eye);
+            pass.statistics_scope = view_name(eye);
             pass.draws = eye_draws();
+            pass.steps = forward_steps_of(pass, {eye});
         }
     }
 
@@ -175,42 +187,34 @@ class PlanBuilder {
                 : std::optional<std::string>("m >= far: nothing lies beyond the mono plane, no C");
         {
             PlannedPass& pass = add(PassKind::kDepthPyramid, "depth_pyramid");
-            pass.reads = {"left.depth", "right.depth"};
-            pass.writes = {"merged_depth"};
+            pass.steps = depth_pyramid_steps(r_);
             pass.when = when(GpuPredicate::kMonoDepthTested);
             pass.skipped = no_mono ? no_mono : pyramid_skip_reason();
         }
         {
             PlannedPass& pass = add(PassKind::kOcclusionCulling, "occlusion_culling");
-            pass.reads = {"merged_depth", "draw_lists"};
-            pass.writes = {"draw_lists"};
+            pass.steps = occlusion_culling_steps(r_);
             pass.when = when(GpuPredicate::kMonoDepthTested);
             pass.skipped = no_mono ? no_mono : occlusion_skip_reason();
         }
         {
-            PlannedPass& pass = add(PassKind::kForward, "mono.forward", "mono");
+            PlannedPass& pass = add(PassKind::kForward, "mono.forward", ViewId::kMono);
             pass.statistics_scope = "mono";
-            pass.reads = {"draw_lists", "shadow_map"};
-            if (s_.depth_tested) pass.reads.emplace_back("merged_depth");
-            add_forward_writes(pass, "mono");
             pass.draws = mono_draws();
+            pass.steps = forward_steps_of(pass, {ViewId::kMono});
             pass.skipped = no_mono;
         }
         if (options_.ssao) {
             // The far region's AO, computed once for both eyes (C alone sees it).
-            PlannedPass& pass = add(PassKind::kMonoSsao, "mono.ssao", "mono");
-            pass.reads = {"mono.linear_depth"};
-            pass.writes = {"mono.ao", "mono.hdr"};
+            PlannedPass& pass = add(PassKind::kMonoSsao, "mono.ssao", ViewId::kMono);
+            pass.steps = mono_ssao_steps(r_);
             pass.when = when(GpuPredicate::kMonoAny);
             pass.skipped = no_mono;
         }
-        for (const char* eye : kEyes) {
-            PlannedPass& pass = add(PassKind::kComposite, std::string(eye) + ".composite", eye);
-            pass.statistics_scope = std::string(eye) + ".composite";
-            pass.reads = {"mono.hdr", "mono.linear_depth", resource(eye, "depth")};
-            if (s_.taa) pass.reads.emplace_back("mono.velocity");
-            pass.writes = {resource(eye, "hdr"), resource(eye, "linear_depth")};
-            if (s_.taa) pass.writes.push_back(resource(eye, "velocity"));
+        for (ViewId eye : kEyes) {
+            PlannedPass& pass = add(PassKind::kComposite, view_name(eye) + ".composite", eye);
+            pass.statistics_scope = view_name(eye) + ".composite";
+            pass.steps = composite_steps(r_, eye, s_.taa);
             pass.when = when(GpuPredicate::kMonoAny);
             pass.skipped = no_mono;
         }
@@ -232,62 +236,95 @@ class PlanBuilder {
     void add_post_processing() {
         if (options_.ssao) {
             PlannedPass& pass = add(PassKind::kSsao, "ssao");
-            for (const char* eye : kEyes) {
-                pass.reads.push_back(resource(eye, "linear_depth"));
-                // In hybrid the far region already carries C's AO: the eye's depth tells which.
-                if (s_.use_mono) pass.reads.push_back(resource(eye, "depth"));
-                pass.writes.push_back(resource(eye, "ao"));
-                pass.writes.push_back(resource(eye, "hdr"));
-            }
+            // In hybrid the far region already carries C's AO: the eye's depth tells which.
+            pass.steps = ssao_steps(r_, options_.ssao_stereo, s_.use_mono);
         }
-        for (const char* eye : kEyes) {
+        for (ViewId eye : kEyes) {
             if (s_.taa) {
-                PlannedPass& pass = add(PassKind::kTaa, std::string(eye) + ".taa", eye);
-                pass.reads = {resource(eye, "hdr"), resource(eye, "velocity"),
-                              resource(eye, "linear_depth"), resource(eye, "history")};
-                pass.writes = {resource(eye, "history")};
+                PlannedPass& pass = add(PassKind::kTaa, view_name(eye) + ".taa", eye);
+                pass.steps = taa_steps(r_, eye);
             }
-            PlannedPass& pass = add(PassKind::kTonemap, std::string(eye) + ".tonemap", eye);
-            pass.reads = {resource(eye, s_.taa ? "history" : "hdr")};
-            pass.writes = {resource(eye, "display")};
+            PlannedPass& pass = add(PassKind::kTonemap, view_name(eye) + ".tonemap", eye);
+            pass.steps = tonemap_steps(r_, eye, s_.taa ? ImageRole::kHistory : ImageRole::kHdr);
         }
         if (s_.hybrid) {
-            // C's own tone-mapped image exists only to be looked at (mono.png).
-            PlannedPass& pass = add(PassKind::kTonemap, "mono.tonemap", "mono");
-            pass.reads = {"mono.hdr"};
-            pass.writes = {"mono.display"};
-            if (!s_.use_mono) {
-                pass.skipped = "m >= far: nothing lies beyond the mono plane, no C";
-            } else if (!options_.read_back) {
-                pass.skipped = "no read-back: C's own image is only looked at";
-            }
+            // C's own tone-mapped image exists only to be looked at (mono.png): without a
+            // read-back nothing reads it, and the culling drops the pass.
+            PlannedPass& pass = add(PassKind::kTonemap, "mono.tonemap", ViewId::kMono);
+            pass.steps = tonemap_steps(r_, ViewId::kMono, ImageRole::kHdr);
+            if (!s_.use_mono) pass.skipped = "m >= far: nothing lies beyond the mono plane, no C";
         }
     }
 
     // The eyes' final depth (C's where it shows through), counted for `--mono-plane auto`.
     void add_depth_histogram() {
         PlannedPass& pass = add(PassKind::kDepthHistogram, "depth_histogram");
-        for (const char* eye : kEyes) pass.reads.push_back(resource(eye, "linear_depth"));
-        pass.writes = {"depth_histogram"};
+        pass.steps = depth_histogram_steps(r_);
+        plan_.exports.push_back(
+            {r_.shared(BufferRole::kDepthHistogram).index, graph::Use::kHostRead});
     }
 
     void add_readback() {
         PlannedPass& pass = add(PassKind::kReadback, "readback");
-        pass.reads = {"predicates"};  // the culling counts, always
-        for (const char* eye : kEyes) {
-            if (options_.read_back) pass.reads.push_back(resource(eye, "display"));
-            if (options_.read_back_depth) pass.reads.push_back(resource(eye, "linear_depth"));
-            if (options_.read_back_ao) pass.reads.push_back(resource(eye, "ao"));
+        ReadbackUses uses;
+        uses.color = options_.read_back;
+        uses.depth = options_.read_back_depth;
+        uses.ao = options_.read_back_ao;
+        uses.mono_color = s_.use_mono && options_.read_back;
+        uses.draw_lists = options_.read_back_draw_lists;
+        pass.steps = readback_steps(r_, uses);
+        // The host reads every buffer the copies wrote once the frame's fence has signalled.
+        for (const graph::ResourceUse& use : pass.steps.front().uses) {
+            if (use.use == graph::Use::kTransferDst) {
+                plan_.exports.push_back({use.resource, graph::Use::kHostRead});
+            }
         }
-        if (s_.use_mono && options_.read_back) pass.reads.emplace_back("mono.display");
-        if (options_.read_back_draw_lists) pass.reads.emplace_back("draw_lists");
-        pass.writes = {"host"};
+    }
+
+    // What other components read between frames: a headset's compositor copies the display
+    // images into its swapchain and samples the eyes' linear depth for its depth layer.
+    void add_exports() {
+        for (ViewId eye : kEyes) {
+            plan_.exports.push_back(
+                {r_.image(eye, ImageRole::kDisplay).index, graph::Use::kTransferSrc});
+            plan_.exports.push_back(
+                {r_.image(eye, ImageRole::kLinearDepth).index, graph::Use::kSampledFragment});
+        }
+    }
+
+    // A pass the GPU skips by a predicate reads the culling's words (conditional rendering) in
+    // every step it records.
+    void declare_predicate_reads() {
+        if (!s_.predicated) return;
+        const graph::BufferHandle predicates = r_.shared(BufferRole::kPredicates);
+        for (PlannedPass& pass : plan_.passes) {
+            if (pass.when == GpuPredicate::kAlways) continue;
+            for (graph::Step& step : pass.steps) {
+                graph::StepBuilder(step).use(predicates, graph::Use::kConditional);
+            }
+        }
+    }
+
+    // A pass whose outputs nothing reads (up to the exports and what persists) does not run.
+    void cull_unread_passes() {
+        const std::vector<bool> needed =
+            graph::needed_passes(plan_.resources, plan_.graph_passes(), plan_.exports);
+        for (std::size_t p = 0; p < plan_.passes.size(); ++p) {
+            PlannedPass& pass = plan_.passes[p];
+            if (pass.skipped || needed[p]) continue;
+            std::string outputs;
+            for (const std::string& name : plan_.writes(pass)) {
+                outputs += (outputs.empty() ? "" : ", ") + name;
+            }
+            pass.skipped = "culled: nothing reads " + outputs;
+        }
     }
 
     const PlanOptions& options_;
     const PlanFrame& frame_;
     const FrameShape& s_;
     FramePlan plan_;
+    PlanResources r_;
 };
 
 }  // namespace
@@ -323,6 +360,50 @@ const PlannedPass* FramePlan::find(const std::string& name) const {
         if (pass.name == name) return &pass;
     }
     return nullptr;
+}
+
+namespace {
+
+// The distinct names of the resources a pass reads (or writes), in first-use order.
+std::vector<std::string> resource_names(const FramePlan& plan, const PlannedPass& pass,
+                                        bool writes) {
+    std::vector<std::string> names;
+    for (const graph::Step& step : pass.steps) {
+        for (const graph::ResourceUse& use : step.uses) {
+            const graph::UseScope scope = graph::use_scope(use.use);
+            // A blend is both; attachment and storage writes are listed as writes.
+            const bool reads = !scope.writes || use.use == graph::Use::kColorBlend;
+            if (writes ? !scope.writes : !reads) continue;
+            const std::string& name = plan.resources[use.resource].name;
+            if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+        }
+    }
+    return names;
+}
+
+}  // namespace
+
+std::vector<std::string> FramePlan::reads(const PlannedPass& pass) const {
+    return resource_names(*this, pass, false);
+}
+
+std::vector<std::string> FramePlan::writes(const PlannedPass& pass) const {
+    return resource_names(*this, pass, true);
+}
+
+std::optional<std::uint16_t> FramePlan::handle(const ResourceKey& key) const {
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+        if (keys[k] == key) return static_cast<std::uint16_t>(k);
+    }
+    return std::nullopt;
+}
+
+std::vector<graph::GraphPass> FramePlan::graph_passes() const {
+    std::vector<graph::GraphPass> graph;
+    for (const PlannedPass& pass : passes) {
+        graph.push_back({pass.name, &pass.steps, !pass.skipped.has_value()});
+    }
+    return graph;
 }
 
 FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device) {

@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "renderer/graph/frame_graph.h"
+#include "renderer/plan/frame_resources.h"
 #include "renderer/plan/render_choices.h"
 
 namespace monoplane::modes {
@@ -32,7 +34,7 @@ namespace monoplane::modes {
 enum class PassKind {
     kCulling,           // GPU chunk culling into the views' indirect draw lists and predicates
     kShadow,            // the sun's shadow map
-    kForward,           // a view's forward pass (steps below); view "left", "right", "eyes", "mono"
+    kForward,           // a view's forward pass (draws below): left, right, eyes or mono
     kDepthPyramid,      // the merged depth pyramid of both eyes (papers/000 Sect. 4.4)
     kOcclusionCulling,  // C's list re-sorted against the pyramid
     kMonoSsao,          // C's ambient occlusion, once for both eyes (hybrid)
@@ -78,32 +80,46 @@ struct PlannedPass {
     // "mono.ssao", "left.composite", "ssao", "left.taa", "left.tonemap", "mono.tonemap",
     // "readback".
     std::string name;
-    // "left", "right", "eyes" (both, single-pass stereo), "mono" (C), or "" for passes over
-    // every view (culling, shadow, pyramid, ssao, read-back).
-    std::string view;
+    // The camera it draws for; kNone for passes over every view (culling, shadow, pyramid, ssao,
+    // read-back).
+    ViewId view = ViewId::kNone;
     // The pipeline-statistics scope of the pass (per-view counters in render/bench), or "".
     // Forward passes count under their view, composites under "<eye>.composite".
     std::string statistics_scope;
-    // Resources by name, "<view>.<image>" for a view's images (hdr, depth, linear_depth,
-    // velocity, ao, history, display) and "draw_lists", "predicates", "shadow_map",
-    // "merged_depth", "host" for the shared ones.
-    std::vector<std::string> reads;
-    std::vector<std::string> writes;
+    // What the pass records, in order, and how each step uses the frame's resources (typed
+    // handles into FramePlan::resources). The executor places the compiled barriers before each.
+    std::vector<graph::Step> steps;
     GpuPredicate when = GpuPredicate::kAlways;  // the whole pass
     std::vector<PlannedDraw> draws;             // kForward only
     // Set when this frame leaves the pass out: why, for a reader ("light region unchanged: the
-    // shadow map is reused", "m >= far: nothing lies beyond the mono plane", ...).
+    // shadow map is reused", "m >= far: nothing lies beyond the mono plane", "culled: nothing
+    // reads mono.display", ...).
     std::optional<std::string> skipped;
 };
 
 struct FramePlan {
     std::vector<PlannedPass> passes;  // in execution order, skipped ones where they would run
+    graph::ResourceTable resources;   // every resource a pass uses
+    std::vector<ResourceKey> keys;    // keys[handle index]: what the executor binds
+    // Uses after the last pass: the host's reads of the read-back buffers, and the images other
+    // components read between frames (display images for a headset's swapchain, the eyes'
+    // linear depth for its depth layer).
+    std::vector<graph::ResourceUse> exports;
+
     // The passes that run, in order.
     std::vector<const PlannedPass*> executed() const;
     // The names of the passes that run, in order (what tests compare).
     std::vector<std::string> executed_names() const;
     // The pass of that name, or nullptr.
     const PlannedPass* find(const std::string& name) const;
+    // The names of the resources a pass reads (a read-modify-write included) or writes, in the
+    // order its steps first use them: what tests and `render --json` show.
+    std::vector<std::string> reads(const PlannedPass& pass) const;
+    std::vector<std::string> writes(const PlannedPass& pass) const;
+    // The handle of a resource by key, or nullopt when no pass uses it.
+    std::optional<std::uint16_t> handle(const ResourceKey& key) const;
+    // The passes as the graph's compile step sees them (runs = not skipped).
+    std::vector<graph::GraphPass> graph_passes() const;
 };
 
 // What the renderer was built with (RendererOptions, less what does not change the plan).
@@ -111,7 +127,9 @@ struct PlanOptions {
     Mode mode = Mode::kStereo;
     StereoPass stereo_pass = StereoPass::kTwoPasses;
     AntiAliasing anti_aliasing = AntiAliasing::kNone;
-    bool ssao = false;           // any SSAO variant
+    bool ssao = false;  // any SSAO variant
+    // papers/002's stereo-consistent SSAO (its steps run over both eyes at once); else per eye.
+    bool ssao_stereo = false;
     bool depth_prepass = false;  // RendererOptions::depth_prepass
     bool read_back = true;       // display images (and C's tone-mapped image) to the host
     bool read_back_depth = false;

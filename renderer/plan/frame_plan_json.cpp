@@ -8,7 +8,7 @@ void write_plan_json(JsonWriter& j, const FramePlan& plan, std::string_view key)
         j.begin_object();
         j.value("pass", pass.name)
             .value("kind", pass_kind_name(pass.kind))
-            .value("view", pass.view);
+            .value("view", view_name(pass.view));
         if (pass.skipped) {
             j.value("skipped", *pass.skipped);
         } else {

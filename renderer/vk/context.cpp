@@ -1,6 +1,7 @@
 #include "renderer/vk/context.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <optional>
 #include <string_view>
@@ -177,6 +178,7 @@ std::optional<Error> Context::create_instance(const ContextOptions& options) {
         }
         layers.push_back(kValidationLayer);
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
     }
     if (auto missing = add_extensions(options.instance_extensions,
                                       loader_.enumerateInstanceExtensionProperties(), "instance",
@@ -184,7 +186,12 @@ std::optional<Error> Context::create_instance(const ContextOptions& options) {
         return *missing;
     }
     const vk::ApplicationInfo app_info("monoplane", 1, "monoplane", 1, VK_API_VERSION_1_3);
-    const vk::InstanceCreateInfo instance_info({}, &app_info, layers, extensions);
+    vk::InstanceCreateInfo instance_info({}, &app_info, layers, extensions);
+    // With validation, the layer's synchronisation validation too: hazards between commands
+    // (a missing or too narrow barrier) are reported like any other validation message.
+    const std::array sync_validation = {vk::ValidationFeatureEnableEXT::eSynchronizationValidation};
+    const vk::ValidationFeaturesEXT features(sync_validation, {});
+    if (options.validation) instance_info.setPNext(&features);
     if (options.hooks.create_instance) {
         Result<VkInstance> handle =
             options.hooks.create_instance(static_cast<const VkInstanceCreateInfo&>(instance_info));

@@ -4,8 +4,8 @@
 #include <atomic>
 #include <functional>
 #include <memory>
-#include <optional>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -29,7 +29,8 @@ struct ContextCreationHooks {
 };
 
 struct ContextOptions {
-    // Khronos validation layer with a message counter; tests turn it on and fail on any message.
+    // Khronos validation layer, its synchronisation validation included, with a message counter;
+    // tests turn it on and fail on any message.
     bool validation = false;
     std::string device_selector;  // see select_device()
     // Extensions beyond monoplane's own, e.g. a window's surface extensions (GLFW) and

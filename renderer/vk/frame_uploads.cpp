@@ -31,7 +31,18 @@ void FrameUploads::record(const vk::raii::CommandBuffer& cmd) {
     if (updates_.empty()) return;
     using Stage = vk::PipelineStageFlagBits2;
     using Access = vk::AccessFlagBits2;
-    for (const Update& u : updates_) {
+    // A later update of a range an earlier one wrote must wait for it (the later stage wins).
+    const vk::MemoryBarrier2 in_order(Stage::eTransfer, Access::eTransferWrite, Stage::eTransfer,
+                                      Access::eTransferWrite);
+    for (std::size_t i = 0; i < updates_.size(); ++i) {
+        const Update& u = updates_[i];
+        const bool overlaps = std::any_of(
+            updates_.begin(), updates_.begin() + static_cast<std::ptrdiff_t>(i),
+            [&u](const Update& earlier) {
+                return earlier.target == u.target && earlier.offset < u.offset + u.size &&
+                       u.offset < earlier.offset + earlier.size;
+            });
+        if (overlaps) cmd.pipelineBarrier2(vk::DependencyInfo({}, in_order));
         // The raw call: Vulkan-Hpp's typed overload takes an ArrayProxy of one element type.
         cmd.getDispatcher()->vkCmdUpdateBuffer(*cmd, u.target, u.offset, u.size,
                                                bytes_.data() + u.first);

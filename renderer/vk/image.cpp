@@ -53,6 +53,56 @@ vk::raii::Sampler make_clamped_sampler(const Context& ctx, vk::Filter filter) {
                                             vk::SamplerAddressMode::eClampToEdge));
 }
 
+ImageRange Image::range() const {
+    return {handle_, aspect_, base_layer_, desc_.layers, desc_.mip_levels, initial_layout_};
+}
+
+void initialise_image(const Context& ctx, const ImageRange& range,
+                      std::optional<vk::ClearColorValue> clear) {
+    using Stage = vk::PipelineStageFlagBits2;
+    using Access = vk::AccessFlagBits2;
+    const vk::ImageSubresourceRange all(range.aspect, 0, range.mip_levels, range.base_layer,
+                                        range.layers);
+    ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
+        const vk::ImageLayout first =
+            clear ? vk::ImageLayout::eTransferDstOptimal : range.initial_layout;
+        const vk::ImageMemoryBarrier2 to_first(Stage::eNone, Access::eNone, Stage::eAllTransfer,
+                                               Access::eTransferWrite, vk::ImageLayout::eUndefined,
+                                               first, VK_QUEUE_FAMILY_IGNORED,
+                                               VK_QUEUE_FAMILY_IGNORED, range.handle, all);
+        cmd.pipelineBarrier2(vk::DependencyInfo({}, {}, {}, to_first));
+        if (!clear) return;
+        cmd.clearColorImage(range.handle, first, *clear, all);
+        // The submission's wait makes the clear available to every later use.
+        const vk::ImageMemoryBarrier2 to_layout(
+            Stage::eAllTransfer, Access::eTransferWrite, Stage::eAllCommands,
+            Access::eMemoryRead | Access::eMemoryWrite, first, range.initial_layout,
+            VK_QUEUE_FAMILY_IGNORED, VK_QUEUE_FAMILY_IGNORED, range.handle, all);
+        cmd.pipelineBarrier2(vk::DependencyInfo({}, {}, {}, to_layout));
+    });
+}
+
+void initialise_image(const Context& ctx, Image& image, vk::ImageLayout layout,
+                      std::optional<vk::ClearColorValue> clear) {
+    image.set_initial_layout(layout);
+    initialise_image(ctx, image.range(), clear);
+}
+
+void begin_upload(const vk::raii::CommandBuffer& cmd, const Image& image) {
+    using Stage = vk::PipelineStageFlagBits2;
+    using Access = vk::AccessFlagBits2;
+    transition(cmd, image, vk::ImageLayout::eUndefined, vk::ImageLayout::eTransferDstOptimal,
+               Stage::eNone, Access::eNone, Stage::eAllTransfer, Access::eTransferWrite);
+}
+
+void end_upload(const vk::raii::CommandBuffer& cmd, const Image& image) {
+    using Stage = vk::PipelineStageFlagBits2;
+    using Access = vk::AccessFlagBits2;
+    transition(cmd, image, vk::ImageLayout::eTransferDstOptimal,
+               vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eAllTransfer, Access::eTransferWrite,
+               Stage::eFragmentShader, Access::eShaderSampledRead);
+}
+
 void transition(const vk::raii::CommandBuffer& cmd, const Image& image, vk::ImageLayout from,
                 vk::ImageLayout to, vk::PipelineStageFlags2 src_stage, vk::AccessFlags2 src_access,
                 vk::PipelineStageFlags2 dst_stage, vk::AccessFlags2 dst_access) {

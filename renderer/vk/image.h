@@ -3,6 +3,8 @@
 // reads and writes one eye's layer as if it were an image of its own.
 #pragma once
 
+#include <optional>
+
 #include "renderer/vk/context.h"
 #include "renderer/vk/memory.h"
 
@@ -18,6 +20,17 @@ struct ImageDesc {
     bool array_view = false;       // an array view even of one layer (for sampler2DArray)
 };
 
+// The subresources a barrier covers, and the layout the image was left in when it was made
+// (initialise_image): what the render graph's executor needs of an image it synchronises.
+struct ImageRange {
+    vk::Image handle;
+    vk::ImageAspectFlags aspect;
+    std::uint32_t base_layer = 0;
+    std::uint32_t layers = 1;
+    std::uint32_t mip_levels = 1;
+    vk::ImageLayout initial_layout = vk::ImageLayout::eUndefined;
+};
+
 class Image {
   public:
     Image() = default;
@@ -31,6 +44,11 @@ class Image {
     vk::ImageView view() const { return *view_; }
     const ImageDesc& desc() const { return desc_; }
     vk::ImageAspectFlags aspect() const { return aspect_; }
+    // Every subresource of this image (or of this layer).
+    ImageRange range() const;
+    // What initialise_image left it in (undefined for an image that was not initialised).
+    vk::ImageLayout initial_layout() const { return initial_layout_; }
+    void set_initial_layout(vk::ImageLayout layout) { initial_layout_ = layout; }
 
   private:
     vk::raii::Image image_{nullptr};  // null for a layer of another image
@@ -40,6 +58,7 @@ class Image {
     vk::raii::ImageView view_{nullptr};
     ImageDesc desc_;
     vk::ImageAspectFlags aspect_;
+    vk::ImageLayout initial_layout_ = vk::ImageLayout::eUndefined;
 };
 
 bool is_depth_format(vk::Format format);
@@ -47,6 +66,20 @@ bool is_depth_format(vk::Format format);
 // A sampler with the given filter, no mipmaps, clamped to the edge: what full-screen passes read
 // their inputs with.
 vk::raii::Sampler make_clamped_sampler(const Context& ctx, vk::Filter filter);
+
+// Once, when an image is made and before any frame uses it: puts every subresource in `layout`,
+// cleared to `clear` when given (a colour image), submitted and waited for; the image remembers the
+// layout (initial_layout). The frames' own transitions are the render graph's.
+void initialise_image(const Context& ctx, Image& image, vk::ImageLayout layout,
+                      std::optional<vk::ClearColorValue> clear = std::nullopt);
+// The same for an image the caller made by hand (a mip chain with views of its own).
+void initialise_image(const Context& ctx, const ImageRange& range,
+                      std::optional<vk::ClearColorValue> clear = std::nullopt);
+
+// Uploads outside frames (scene textures): before the copies, every subresource becomes a
+// transfer destination; after them, shader-readable for the fragment shaders.
+void begin_upload(const vk::raii::CommandBuffer& cmd, const Image& image);
+void end_upload(const vk::raii::CommandBuffer& cmd, const Image& image);
 
 // One image layout transition with a full synchronization2 barrier between the given stages.
 void transition(const vk::raii::CommandBuffer& cmd, const Image& image, vk::ImageLayout from,

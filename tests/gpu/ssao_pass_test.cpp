@@ -3,6 +3,8 @@
 // floor stays unoccluded, the corner darkens, the sky is 1; the stereo-consistent variant
 // (papers/002) gives the two eyes closer values at corresponding points than per-view HBAO+;
 // the apply pass multiplies the HDR by exactly the AO, only over near content when asked.
+// The pass records no barriers: it runs under the render graph (tests/gpu/graph_harness.h) with
+// the steps the frame plan declares for it, as in a frame.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -23,17 +26,21 @@
 #include "renderer/passes/forward/forward_pass.h"
 #include "renderer/passes/shared/view_constants.h"
 #include "renderer/passes/ssao/ssao_pass.h"
+#include "renderer/plan/pass_steps.h"
 #include "rig/projection.h"
 #include "tests/gpu/gpu_test.h"
+#include "tests/gpu/graph_harness.h"
 
 namespace monoplane {
 namespace {
 
+using modes::ImageRole;
 using passes::SsaoPass;
 using passes::SsaoVariant;
 using passes::SsaoView;
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
+using testing::GraphHarness;
 
 constexpr vk::Extent2D kArea{128, 96};
 const rig::Tangents kTangents{-4.0 / 3.0, 4.0 / 3.0, -1.0, 1.0};  // square pixels at 128 x 96
@@ -150,6 +157,8 @@ EyeInputs make_eye(const vk_core::Context& ctx, int eye, vk::Extent2D extent, vk
                             Access::eTransferWrite, Stage::eComputeShader,
                             Access::eShaderSampledRead);
     });
+    // The render graph's executor starts the image from this layout.
+    in.linear_depth.set_initial_layout(vk::ImageLayout::eShaderReadOnlyOptimal);
     return in;
 }
 
@@ -179,6 +188,17 @@ bool inside(Pixel p, vk::Extent2D area) {
            p.y < static_cast<int>(area.height);
 }
 
+// A view's SSAO images and the linear depth it reads, as the plan's resources of `view`.
+void bind_view(GraphHarness& harness, modes::ViewId view, const SsaoView& ssao,
+               const vk_core::Image& linear_depth) {
+    modes::PlanResources& r = harness.resources();
+    harness.bind(r.image(view, ImageRole::kLinearDepth), linear_depth);
+    harness.bind(r.image(view, ImageRole::kAo), ssao.ao());
+    std::vector<vk_core::ImageRange> scratch;
+    for (const vk_core::Image* image : ssao.scratch()) scratch.push_back(image->range());
+    harness.bind(r.image(view, ImageRole::kAoScratch), std::move(scratch));
+}
+
 struct AoPair {
     std::array<std::vector<float>, 2> ao;  // per eye, extent-sized
     vk::Extent2D extent;
@@ -203,11 +223,31 @@ class SsaoPassTest : public testing::GpuTest {
             pass.make_view(eyes[0].constants, eyes[0].linear_depth, extent);
         const std::unique_ptr<SsaoView> right =
             pass.make_view(eyes[1].constants, eyes[1].linear_depth, extent);
-        ctx().submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-            pass.record_pair(cmd, *left, *right, kArea, variant, skip_beyond);
+        GraphHarness harness;
+        modes::PlanResources& r = harness.resources();
+        for (int e = 0; e < 2; ++e) harness.input(modes::eye_view(e), ImageRole::kLinearDepth);
+        // The plan's steps for the eyes' SSAO less its applies: record_pair records the rest.
+        std::vector<graph::Step> steps =
+            modes::ssao_steps(r, variant == SsaoVariant::kStereoConsistent, false);
+        std::erase_if(steps, [](const graph::Step& s) { return s.name.ends_with(".apply"); });
+        harness.add_pass(modes::PassKind::kSsao, "ssao", std::move(steps),
+                         [&](const vk::raii::CommandBuffer& cmd, passes::StepSync& sync) {
+                             pass.record_pair(cmd, sync, *left, *right, kArea, variant,
+                                              skip_beyond);
+                         });
+        std::vector<std::pair<graph::ImageHandle, graph::BufferHandle>> copies;
+        for (int e = 0; e < 2; ++e) {
+            const modes::ViewId eye = modes::eye_view(e);
+            copies.emplace_back(r.image(eye, ImageRole::kAo),
+                                r.buffer(eye, modes::BufferRole::kAoReadback));
+        }
+        harness.add_readback(copies, [&](const vk::raii::CommandBuffer& cmd, passes::StepSync&) {
             pass.record_readback(cmd, *left);
             pass.record_readback(cmd, *right);
         });
+        bind_view(harness, modes::ViewId::kLeft, *left, eyes[0].linear_depth);
+        bind_view(harness, modes::ViewId::kRight, *right, eyes[1].linear_depth);
+        ctx().submit_and_wait([&](const vk::raii::CommandBuffer& cmd) { harness.record(cmd); });
         AoPair result{{left->ao_values(), right->ao_values()}, extent};
         EXPECT_EQ(result.ao[0].size(), std::size_t{extent.width} * extent.height);
         EXPECT_EQ(result.ao[1].size(), result.ao[0].size());
@@ -369,7 +409,8 @@ TEST_F(SsaoPassTest, AreaInsideALargerImageReadsOnlyTheArea) {
     }
 }
 
-// Reads an R16G16B16A16_SFLOAT image back as floats (it is left in eTransferSrcOptimal).
+// Reads an R16G16B16A16_SFLOAT image back as floats: from eColorAttachmentOptimal, where the
+// render graph left it after the apply, into eTransferSrcOptimal.
 std::vector<float> read_hdr(const vk_core::Context& ctx, const vk_core::Image& hdr) {
     const vk::Extent2D extent = hdr.desc().extent;
     const vk_core::Buffer buffer(ctx, vk::DeviceSize{extent.width} * extent.height * 8,
@@ -396,35 +437,23 @@ std::vector<float> read_hdr(const vk_core::Context& ctx, const vk_core::Image& h
     return values;
 }
 
-TEST_F(SsaoPassTest, ApplyMultipliesTheHdrByTheAoOverNearContentOnlyWhenAsked) {
-    const SsaoPass pass(ctx());
-    const std::unique_ptr<SsaoView> view =
-        pass.make_view(eyes_[0].constants, eyes_[0].linear_depth, kArea);
-    const std::array<float, 4> color = {0.5f, 1.0f, 2.0f, 0.75f};  // exact in half floats
-    const auto hdr_usage = vk::ImageUsageFlagBits::eColorAttachment |
-                           vk::ImageUsageFlagBits::eTransferSrc |
-                           vk::ImageUsageFlagBits::eTransferDst;
-    const vk_core::Image everywhere(ctx(), {kArea, passes::ForwardPass::kHdrFormat, hdr_usage});
-    const vk_core::Image near_only(ctx(), {kArea, passes::ForwardPass::kHdrFormat, hdr_usage});
-    // Near content in the left half (reversed-Z 0.5), the cleared far value 0 elsewhere.
-    const vk_core::Image depth(ctx(), {kArea, passes::ForwardPass::kDepthFormat,
-                                       vk::ImageUsageFlagBits::eDepthStencilAttachment});
-    const std::uint32_t near_width = kArea.width / 2;
-    ctx().submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-        pass.record_view(cmd, *view, kArea);
-        pass.record_readback(cmd, *view);
-        for (const vk_core::Image* hdr : {&everywhere, &near_only}) {
-            vk_core::transition(cmd, *hdr, vk::ImageLayout::eUndefined,
-                                vk::ImageLayout::eTransferDstOptimal, Stage::eNone, Access::eNone,
-                                Stage::eClear, Access::eTransferWrite);
-            cmd.clearColorImage(
-                hdr->handle(), vk::ImageLayout::eTransferDstOptimal, vk::ClearColorValue(color),
-                vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1));
-            vk_core::transition(cmd, *hdr, vk::ImageLayout::eTransferDstOptimal,
-                                vk::ImageLayout::eColorAttachmentOptimal, Stage::eClear,
-                                Access::eTransferWrite, Stage::eColorAttachmentOutput,
-                                Access::eColorAttachmentRead | Access::eColorAttachmentWrite);
-        }
+// An HDR target filled with `color`, left a colour attachment (the apply blends into it).
+vk_core::Image make_hdr(const vk_core::Context& ctx, const std::array<float, 4>& color) {
+    vk_core::Image hdr(
+        ctx, {kArea, passes::ForwardPass::kHdrFormat,
+              vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eTransferSrc |
+                  vk::ImageUsageFlagBits::eTransferDst});
+    vk_core::initialise_image(ctx, hdr, vk::ImageLayout::eColorAttachmentOptimal,
+                              vk::ClearColorValue(color));
+    return hdr;
+}
+
+// Near content in the left `near_width` columns (reversed-Z 0.5), the cleared far value 0
+// elsewhere; left a depth attachment.
+vk_core::Image make_near_depth(const vk_core::Context& ctx, std::uint32_t near_width) {
+    vk_core::Image depth(ctx, {kArea, passes::ForwardPass::kDepthFormat,
+                               vk::ImageUsageFlagBits::eDepthStencilAttachment});
+    ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
         vk_core::transition(cmd, depth, vk::ImageLayout::eUndefined,
                             vk::ImageLayout::eDepthAttachmentOptimal, Stage::eNone, Access::eNone,
                             Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
@@ -448,9 +477,63 @@ TEST_F(SsaoPassTest, ApplyMultipliesTheHdrByTheAoOverNearContentOnlyWhenAsked) {
                 Access::eDepthStencilAttachmentRead | Access::eDepthStencilAttachmentWrite);
             cmd.pipelineBarrier2(vk::DependencyInfo({}, cleared));
         }
-        pass.record_apply(cmd, *view, everywhere, kArea);
-        pass.record_apply(cmd, *view, near_only, kArea, &depth);
     });
+    // The render graph's executor starts the image from this layout.
+    depth.set_initial_layout(vk::ImageLayout::eDepthAttachmentOptimal);
+    return depth;
+}
+
+// record_view, record_apply into `everywhere` and, depth-tested against `depth`, into
+// `near_only`, then the AO's read-back, under the render graph. The plan's keys only label the
+// images here: C's SSAO (mono_ssao_steps: the estimate, the filters, an apply everywhere) is
+// this view's, and left.hdr and left.depth stand for the second target and its near content,
+// applied with the uses of the eyes' near-only apply (ssao_steps).
+void record_ssao_and_applies(const vk_core::Context& ctx, const SsaoPass& pass, SsaoView& view,
+                             const vk_core::Image& linear_depth, const vk_core::Image& everywhere,
+                             const vk_core::Image& near_only, const vk_core::Image& depth) {
+    using modes::ViewId;
+    GraphHarness harness;
+    modes::PlanResources& r = harness.resources();
+    harness.input(ViewId::kMono, ImageRole::kLinearDepth);
+    harness.input(ViewId::kMono, ImageRole::kHdr);
+    harness.input(ViewId::kLeft, ImageRole::kHdr);
+    harness.input(ViewId::kLeft, ImageRole::kDepth);
+    std::vector<graph::Step> steps = modes::mono_ssao_steps(r);
+    graph::Step& near = steps.emplace_back();
+    near.name = "apply-near";
+    graph::StepBuilder(near)
+        .use(r.image(ViewId::kMono, ImageRole::kAo), graph::Use::kSampledFragment)
+        .use(r.image(ViewId::kLeft, ImageRole::kHdr), graph::Use::kColorBlend)
+        .use(r.image(ViewId::kLeft, ImageRole::kDepth), graph::Use::kDepthTest);
+    harness.add_pass(modes::PassKind::kMonoSsao, "mono.ssao", std::move(steps),
+                     [&](const vk::raii::CommandBuffer& cmd, passes::StepSync& sync) {
+                         pass.record_view(cmd, sync, view, kArea);
+                         pass.record_apply(cmd, sync, view, everywhere, kArea);
+                         pass.record_apply(cmd, sync, view, near_only, kArea, &depth);
+                     });
+    harness.add_readback({{r.image(ViewId::kMono, ImageRole::kAo),
+                           r.buffer(ViewId::kMono, modes::BufferRole::kAoReadback)}},
+                         [&](const vk::raii::CommandBuffer& cmd, passes::StepSync&) {
+                             pass.record_readback(cmd, view);
+                         });
+    bind_view(harness, ViewId::kMono, view, linear_depth);
+    harness.bind(r.image(ViewId::kMono, ImageRole::kHdr), everywhere);
+    harness.bind(r.image(ViewId::kLeft, ImageRole::kHdr), near_only);
+    harness.bind(r.image(ViewId::kLeft, ImageRole::kDepth), depth);
+    ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) { harness.record(cmd); });
+}
+
+TEST_F(SsaoPassTest, ApplyMultipliesTheHdrByTheAoOverNearContentOnlyWhenAsked) {
+    const SsaoPass pass(ctx());
+    const std::unique_ptr<SsaoView> view =
+        pass.make_view(eyes_[0].constants, eyes_[0].linear_depth, kArea);
+    const std::array<float, 4> color = {0.5f, 1.0f, 2.0f, 0.75f};  // exact in half floats
+    const vk_core::Image everywhere = make_hdr(ctx(), color);
+    const vk_core::Image near_only = make_hdr(ctx(), color);
+    const std::uint32_t near_width = kArea.width / 2;
+    const vk_core::Image depth = make_near_depth(ctx(), near_width);
+    record_ssao_and_applies(ctx(), pass, *view, eyes_[0].linear_depth, everywhere, near_only,
+                            depth);
     const std::vector<float> ao = view->ao_values();
     ASSERT_EQ(ao.size(), std::size_t{kArea.width} * kArea.height);
     const std::vector<float> all = read_hdr(ctx(), everywhere);

@@ -122,13 +122,14 @@ std::string joined(const std::vector<std::string>& list) {
 }
 
 // Two executed passes that do the same (everything but a skip reason).
-void expect_same_pass(const PlannedPass& a, const PlannedPass& b, const std::string& context) {
+void expect_same_pass(const FramePlan& pa, const PlannedPass& a, const FramePlan& pb,
+                      const PlannedPass& b, const std::string& context) {
     EXPECT_EQ(a.kind, b.kind) << context << ": " << a.name;
     EXPECT_EQ(a.name, b.name) << context;
     EXPECT_EQ(a.view, b.view) << context << ": " << a.name;
     EXPECT_EQ(a.statistics_scope, b.statistics_scope) << context << ": " << a.name;
-    EXPECT_EQ(a.reads, b.reads) << context << ": " << a.name;
-    EXPECT_EQ(a.writes, b.writes) << context << ": " << a.name;
+    EXPECT_EQ(pa.reads(a), pb.reads(b)) << context << ": " << a.name;
+    EXPECT_EQ(pa.writes(a), pb.writes(b)) << context << ": " << a.name;
     EXPECT_EQ(a.when, b.when) << context << ": " << a.name;
     EXPECT_EQ(a.draws, b.draws) << context << ": " << a.name;
 }
@@ -141,8 +142,8 @@ TEST(FramePlan, StereoTwoPassesRunsCullingShadowForwardTonemapReadback) {
         EXPECT_EQ(draws_of(plan, "left.forward"), eye);
         EXPECT_EQ(draws_of(plan, "right.forward"), eye);
         ASSERT_NE(plan.find("left.forward"), nullptr);
-        EXPECT_EQ(plan.find("left.forward")->view, "left");
-        EXPECT_EQ(plan.find("right.forward")->view, "right");
+        EXPECT_EQ(plan.find("left.forward")->view, ViewId::kLeft);
+        EXPECT_EQ(plan.find("right.forward")->view, ViewId::kRight);
         EXPECT_EQ(plan.find("left.forward")->kind, PassKind::kForward);
         // Stereo has no pass of C at all, not even a skipped one.
         for (const std::string& name : kMonoPasses) EXPECT_EQ(plan.find(name), nullptr) << name;
@@ -177,7 +178,7 @@ TEST(FramePlan, HybridWithNothingBeyondTheMonoPlaneRunsExactlyStereosPasses) {
                                 const auto he = h.executed();
                                 const auto se = s.executed();
                                 for (std::size_t i = 0; i < he.size(); ++i) {
-                                    expect_same_pass(*he[i], *se[i], context.str());
+                                    expect_same_pass(h, *he[i], s, *se[i], context.str());
                                 }
                                 Names skipped = kMonoPasses;
                                 if (ssao) skipped.emplace_back("mono.ssao");
@@ -225,15 +226,15 @@ TEST(FramePlan, HybridOcclusionCullWithConditionalRendering) {
     EXPECT_EQ(draws_of(plan, "left.forward"), eye);
     EXPECT_EQ(draws_of(plan, "right.forward"), eye);
     ASSERT_NE(plan.find("mono.forward"), nullptr);
-    EXPECT_EQ(plan.find("mono.forward")->view, "mono");
+    EXPECT_EQ(plan.find("mono.forward")->view, ViewId::kMono);
     // C's passes wait for the GPU's verdict: the pyramid and its culling only when C has
     // something and an eye drew something, the composites only when C has something.
     EXPECT_EQ(plan.find("depth_pyramid")->when, kMonoDepthTested);
     EXPECT_EQ(plan.find("occlusion_culling")->when, kMonoDepthTested);
     EXPECT_EQ(plan.find("left.composite")->when, kMonoAny);
     EXPECT_EQ(plan.find("right.composite")->when, kMonoAny);
-    EXPECT_EQ(plan.find("left.composite")->view, "left");
-    EXPECT_EQ(plan.find("right.composite")->view, "right");
+    EXPECT_EQ(plan.find("left.composite")->view, ViewId::kLeft);
+    EXPECT_EQ(plan.find("right.composite")->view, ViewId::kRight);
 }
 
 TEST(FramePlan, HybridWithoutConditionalRenderingPredicatesNothingAndEyesDrawNoSky) {
@@ -282,7 +283,7 @@ TEST(FramePlan, NoOptNeitherBuildsThePyramidNorMasks) {
                             {DrawStep::kSky, conditional ? kMonoAny : kAlways}};
         EXPECT_EQ(draws_of(plan, "mono.forward"), mono);
         ASSERT_NE(plan.find("mono.forward"), nullptr);
-        EXPECT_FALSE(contains(plan.find("mono.forward")->reads, "merged_depth"));
+        EXPECT_FALSE(contains(plan.reads(*plan.find("mono.forward")), "merged_depth"));
     }
 }
 
@@ -313,10 +314,11 @@ TEST(FramePlan, SinglePassStereoDrawsBothEyesInOneForwardPass) {
         const PlannedPass* eyes = plan.find("eyes.forward");
         ASSERT_NE(eyes, nullptr);
         EXPECT_EQ(eyes->kind, PassKind::kForward);
-        EXPECT_EQ(eyes->view, "eyes");
+        EXPECT_EQ(eyes->view, ViewId::kEyes);
         for (const char* image : {"left.hdr", "left.depth", "left.linear_depth", "right.hdr",
                                   "right.depth", "right.linear_depth"}) {
-            EXPECT_TRUE(contains(eyes->writes, image)) << stereo_pass_name(stereo_pass) << image;
+            EXPECT_TRUE(contains(plan.writes(*eyes), image))
+                << stereo_pass_name(stereo_pass) << image;
         }
         const Draws draws = {{DrawStep::kChunks, kAlways}, {DrawStep::kSky, kAlways}};
         EXPECT_EQ(eyes->draws, draws);
@@ -360,18 +362,18 @@ TEST(FramePlan, TaaResolvesEachEyeBeforeItsTonemap) {
                     }
                     const PlannedPass* tonemap = plan.find(eye + ".tonemap");
                     ASSERT_NE(tonemap, nullptr);
-                    EXPECT_TRUE(contains(tonemap->reads, eye + ".history")) << context;
+                    EXPECT_TRUE(contains(plan.reads(*tonemap), eye + ".history")) << context;
                     const PlannedPass* resolve = plan.find(eye + ".taa");
                     EXPECT_EQ(resolve->kind, PassKind::kTaa);
-                    EXPECT_EQ(resolve->view, eye);
+                    EXPECT_EQ(view_name(resolve->view), eye);
                 }
                 // Every forward pass writes its view's velocity (both eyes' for eyes.forward).
                 for (const PlannedPass* pass : plan.executed()) {
                     if (pass->kind != PassKind::kForward) continue;
-                    const Names views =
-                        pass->view == "eyes" ? Names{"left", "right"} : Names{pass->view};
+                    const Names views = pass->view == ViewId::kEyes ? Names{"left", "right"}
+                                                                    : Names{view_name(pass->view)};
                     for (const std::string& view : views) {
-                        EXPECT_TRUE(contains(pass->writes, view + ".velocity"))
+                        EXPECT_TRUE(contains(plan.writes(*pass), view + ".velocity"))
                             << context << " " << pass->name;
                     }
                 }
@@ -379,7 +381,7 @@ TEST(FramePlan, TaaResolvesEachEyeBeforeItsTonemap) {
                 const FramePlan plain =
                     plan_of(options_for(mode, stereo_pass), frame_with(false), conditional);
                 for (const PlannedPass* pass : plain.executed()) {
-                    for (const std::string& write : pass->writes) {
+                    for (const std::string& write : plain.writes(*pass)) {
                         EXPECT_EQ(write.find("velocity"), std::string::npos) << pass->name;
                     }
                 }
@@ -461,7 +463,7 @@ TEST(FramePlan, DepthPrepassStartsEveryForwardPassAfterTheMask) {
                         ASSERT_FALSE(pass->draws.empty()) << context;
                         std::size_t first = 0;
                         if (pass->draws[0].step == DrawStep::kMaskHidden) {
-                            EXPECT_EQ(pass->view, "mono") << context;
+                            EXPECT_EQ(pass->view, ViewId::kMono) << context;
                             first = 1;
                         }
                         ASSERT_GT(pass->draws.size(), first) << context;
@@ -539,12 +541,12 @@ TEST(FramePlan, MonoTonemapOnlyWhenReadBack) {
     EXPECT_TRUE(skipped_with_reason(plan, "mono.tonemap"));
     EXPECT_EQ(plan.executed_names(), without(kHybridList, {"mono.tonemap"}));
     ASSERT_NE(plan.find("readback"), nullptr);
-    EXPECT_FALSE(contains(plan.find("readback")->reads, "mono.display"));
+    EXPECT_FALSE(contains(plan.reads(*plan.find("readback")), "mono.display"));
 
     const FramePlan read = plan_of(options_for(Mode::kHybrid), frame_with(false), true);
     ASSERT_NE(read.find("mono.tonemap"), nullptr);
     EXPECT_FALSE(read.find("mono.tonemap")->skipped.has_value());
-    EXPECT_TRUE(contains(read.find("readback")->reads, "mono.display"));
+    EXPECT_TRUE(contains(read.reads(*read.find("readback")), "mono.display"));
 }
 
 // --mono-plane auto: both eyes' final depth is counted after everything that writes it (the
@@ -562,9 +564,10 @@ TEST(FramePlan, AutoMonoPlaneCountsTheEyesFinalDepthBeforeTheReadBack) {
         const PlannedPass* pass = counted.find("depth_histogram");
         ASSERT_NE(pass, nullptr);
         EXPECT_EQ(pass->kind, PassKind::kDepthHistogram);
-        EXPECT_EQ(pass->reads,
+        EXPECT_EQ(counted.reads(*pass),
                   (std::vector<std::string>{"left.linear_depth", "right.linear_depth"}));
-        EXPECT_EQ(pass->writes, (std::vector<std::string>{"depth_histogram"}));
+        // It clears the bins first, and the host reads them after the frame.
+        EXPECT_EQ(counted.writes(*pass), (std::vector<std::string>{"depth_histogram"}));
     }
 }
 
@@ -624,7 +627,7 @@ std::vector<Combination> all_combinations() {
 
 // Persistent across frames: what a pass may read that no pass of this frame wrote.
 bool persistent_input(const std::string& resource, const FramePlan& plan) {
-    if (resource == "left.history" || resource == "right.history") return true;
+    if (resource == "left.history_previous" || resource == "right.history_previous") return true;
     const PlannedPass* shadow = plan.find("shadow");
     return resource == "shadow_map" && shadow != nullptr && shadow->skipped.has_value();
 }
@@ -643,12 +646,22 @@ TEST(FramePlan, EveryReadIsPrecededByAWriteOverAllOptions) {
                 EXPECT_FALSE(pass.skipped->empty()) << c.text() << ": " << pass.name;
                 continue;
             }
-            for (const std::string& read : pass.reads) {
-                EXPECT_TRUE(written.contains(read) || persistent_input(read, plan))
-                    << c.text() << ": " << pass.name << " reads " << read
-                    << " before any pass wrote it";
+            // Step by step: SSAO writes its AO images before its apply steps read them.
+            for (const graph::Step& step : pass.steps) {
+                for (const graph::ResourceUse& use : step.uses) {
+                    const graph::UseScope scope = graph::use_scope(use.use);
+                    const std::string& name = plan.resources[use.resource].name;
+                    if (scope.writes && use.use != graph::Use::kColorBlend) continue;
+                    EXPECT_TRUE(written.contains(name) || persistent_input(name, plan))
+                        << c.text() << ": " << pass.name << "/" << step.name << " reads " << name
+                        << " before any pass wrote it";
+                }
+                for (const graph::ResourceUse& use : step.uses) {
+                    if (graph::use_scope(use.use).writes) {
+                        written.insert(plan.resources[use.resource].name);
+                    }
+                }
             }
-            written.insert(pass.writes.begin(), pass.writes.end());
         }
         ASSERT_FALSE(plan.passes.empty()) << c.text();
         EXPECT_EQ(plan.passes.front().name, "culling") << c.text();
@@ -723,7 +736,7 @@ std::string plan_text(const FramePlan& plan) {
     for (const PlannedPass& pass : plan.passes) {
         std::ostringstream line;
         line << "  " << std::left << std::setw(18) << pass.name << std::setw(7)
-             << (pass.view.empty() ? "-" : pass.view);
+             << (pass.view == ViewId::kNone ? "-" : view_name(pass.view));
         if (pass.skipped) {
             line << "skipped: " << *pass.skipped;
         } else {

@@ -16,8 +16,6 @@ const std::uint32_t kCullChunks[] = {
 #include "cull_chunks.comp.spv.inc"
 };
 
-using Stage = vk::PipelineStageFlagBits2;
-using Access = vk::AccessFlagBits2;
 constexpr vk::DeviceSize kCommandSize = sizeof(vk::DrawIndexedIndirectCommand);
 
 std::vector<ChunkRecord> chunk_records(const scenes::Scene& scene) {
@@ -166,15 +164,6 @@ void ChunkCullingPass::record_phase(const vk::raii::CommandBuffer& cmd, std::uin
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *layout_, 0, *set_, {});
     cmd.pushConstants<std::uint32_t>(*layout_, vk::ShaderStageFlagBits::eCompute, 0, phase);
     cmd.dispatch(1, 1, 1);
-    // The lists feed indirect draws, the predicates conditional rendering, and phase 1 rewrites
-    // C's list after the eyes' passes.
-    const vk::MemoryBarrier2 barrier(Stage::eComputeShader, Access::eShaderStorageWrite,
-                                     Stage::eDrawIndirect | Stage::eConditionalRenderingEXT |
-                                         Stage::eComputeShader | Stage::eFragmentShader,
-                                     Access::eIndirectCommandRead |
-                                         Access::eConditionalRenderingReadEXT |
-                                         Access::eShaderStorageRead | Access::eShaderStorageWrite);
-    cmd.pipelineBarrier2(vk::DependencyInfo({}, barrier));
 }
 
 void ChunkCullingPass::record_frustum_phase(const vk::raii::CommandBuffer& cmd) const {
@@ -187,10 +176,6 @@ void ChunkCullingPass::record_occlusion_phase(const vk::raii::CommandBuffer& cmd
 
 void ChunkCullingPass::record_readback(const vk::raii::CommandBuffer& cmd, bool lists,
                                        std::uint32_t slot) const {
-    const vk::MemoryBarrier2 barrier(
-        Stage::eComputeShader | Stage::eDrawIndirect | Stage::eConditionalRenderingEXT,
-        Access::eShaderStorageWrite, Stage::eTransfer, Access::eTransferRead);
-    cmd.pipelineBarrier2(vk::DependencyInfo({}, barrier));
     cmd.copyBuffer(counts_.handle(), counts_readback_.at(slot).handle(),
                    vk::BufferCopy(0, 0, counts_.size()));
     if (lists) {

@@ -61,8 +61,8 @@ class ChunkCullingPass {
     // the first frame and when the order changes (throws std::invalid_argument for a wrong size).
     void set_draw_order(std::span<const std::uint32_t> order, vk_core::FrameUploads& uploads);
 
-    // Phase 0: all views' lists; phase 1: C's list again, with occlusion culling. Each leaves a
-    // barrier that makes its results visible to indirect draws, predicates and later dispatches.
+    // Phase 0: all views' lists; phase 1: C's list again, with occlusion culling. The render graph
+    // makes their results visible to the indirect draws, predicates and read-backs that follow.
     void record_frustum_phase(const vk::raii::CommandBuffer& cmd) const;
     void record_occlusion_phase(const vk::raii::CommandBuffer& cmd) const;
     // Copies the counts (into the frame-in-flight slot's own buffer; with lists, the draw lists

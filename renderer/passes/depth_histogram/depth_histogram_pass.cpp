@@ -80,15 +80,12 @@ void DepthHistogramPass::set_eye_depths(std::array<vk::ImageView, 2> linear_dept
     }
 }
 
-void DepthHistogramPass::record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const {
-    using Stage = vk::PipelineStageFlagBits2;
-    using Access = vk::AccessFlagBits2;
+void DepthHistogramPass::record(const vk::raii::CommandBuffer& cmd, StepSync& sync,
+                                std::uint32_t slot) const {
     assert(slot < buffers_.size() && extent_.width > 0);
+    sync.next(cmd);  // clear
     cmd.fillBuffer(buffers_[slot].handle(), 0, kBytes, 0u);
-    const vk::MemoryBarrier2 cleared(Stage::eTransfer, Access::eTransferWrite,
-                                     Stage::eComputeShader,
-                                     Access::eShaderStorageRead | Access::eShaderStorageWrite);
-    cmd.pipelineBarrier2(vk::DependencyInfo({}, cleared));
+    sync.next(cmd);  // count
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_);
     const Push push{static_cast<float>(std::log(near_)),
                     static_cast<float>(MONOPLANE_DEPTH_HISTOGRAM_BINS / std::log(far_ / near_)),
@@ -99,10 +96,6 @@ void DepthHistogramPass::record(const vk::raii::CommandBuffer& cmd, std::uint32_
         cmd.dispatch((extent_.width + kGroup - 1) / kGroup, (extent_.height + kGroup - 1) / kGroup,
                      1);
     }
-    // The host reads the buffer once the frame's fence has signalled.
-    const vk::MemoryBarrier2 counted(Stage::eComputeShader, Access::eShaderStorageWrite,
-                                     Stage::eHost, Access::eHostRead);
-    cmd.pipelineBarrier2(vk::DependencyInfo({}, counted));
 }
 
 modes::DepthHistogram DepthHistogramPass::result(std::uint32_t slot) const {

@@ -7,6 +7,7 @@
 #include <array>
 #include <vector>
 
+#include "renderer/passes/shared/step_sync.h"
 #include "renderer/plan/depth_histogram.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptor_set.h"
@@ -21,8 +22,9 @@ class DepthHistogramPass {
 
     // The eyes' linear depth images; call before the first frame and whenever they change.
     void set_eye_depths(std::array<vk::ImageView, 2> linear_depth, vk::Extent2D eye_extent);
-    // Clears the slot's buffer and counts both eyes into it.
-    void record(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) const;
+    // Clears the slot's buffer and counts both eyes into it: two steps ("clear", "count"), each
+    // begun with sync.next().
+    void record(const vk::raii::CommandBuffer& cmd, StepSync& sync, std::uint32_t slot) const;
     // The slot's histogram; call once its frame has completed.
     modes::DepthHistogram result(std::uint32_t slot) const;
 

@@ -19,19 +19,11 @@ const std::uint32_t kReduceDepth[] = {
 #include "reduce_depth.comp.spv.inc"
 };
 
-using Stage = vk::PipelineStageFlagBits2;
-using Access = vk::AccessFlagBits2;
 constexpr vk::Format kFormat = vk::Format::eR32Sfloat;
 constexpr std::uint32_t kGroup = 8;  // the shaders' local size in x and y
 
 std::uint32_t groups(std::uint32_t size) {
     return (size + kGroup - 1) / kGroup;
-}
-
-void storage_barrier(const vk::raii::CommandBuffer& cmd, vk::PipelineStageFlags2 dst_stage) {
-    const vk::MemoryBarrier2 barrier(Stage::eComputeShader, Access::eShaderStorageWrite, dst_stage,
-                                     Access::eShaderStorageRead | Access::eShaderSampledRead);
-    cmd.pipelineBarrier2(vk::DependencyInfo({}, barrier));
 }
 
 }  // namespace
@@ -132,20 +124,8 @@ void DepthPyramidPass::create_image(vk::Extent2D extent) {
     }
     // The pyramid lives in eGeneral: written as storage, read by texelFetch, never moved. Its
     // first contents are "nothing needs C" (1), never read before a build.
-    ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-        const vk::ImageMemoryBarrier2 barrier(
-            Stage::eNone, Access::eNone, Stage::eClear, Access::eTransferWrite,
-            vk::ImageLayout::eUndefined, vk::ImageLayout::eGeneral, VK_QUEUE_FAMILY_IGNORED,
-            VK_QUEUE_FAMILY_IGNORED, *image_, vk::ImageSubresourceRange(color, 0, mips_, 0, 1));
-        cmd.pipelineBarrier2(vk::DependencyInfo({}, {}, {}, barrier));
-        cmd.clearColorImage(*image_, vk::ImageLayout::eGeneral,
-                            vk::ClearColorValue(std::array{1.0f, 1.0f, 1.0f, 1.0f}),
-                            vk::ImageSubresourceRange(color, 0, mips_, 0, 1));
-        const vk::MemoryBarrier2 done(Stage::eClear, Access::eTransferWrite,
-                                      Stage::eComputeShader | Stage::eFragmentShader,
-                                      Access::eShaderRead | Access::eShaderWrite);
-        cmd.pipelineBarrier2(vk::DependencyInfo({}, done));
-    });
+    vk_core::initialise_image(ctx_, pyramid_image(),
+                              vk::ClearColorValue(std::array{1.0f, 1.0f, 1.0f, 1.0f}));
 
     using Type = vk::DescriptorType;
     const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eCombinedImageSampler, 2),
@@ -195,14 +175,7 @@ void DepthPyramidPass::set_eye_depths(vk::ImageView left, vk::ImageView right,
         blocks_view_ = vk::raii::ImageView(
             ctx_.device(), vk::ImageViewCreateInfo({}, *blocks_image_, vk::ImageViewType::e2DArray,
                                                    kFormat, {}, layers));
-        ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-            const vk::ImageMemoryBarrier2 barrier(
-                Stage::eNone, Access::eNone, Stage::eComputeShader,
-                Access::eShaderStorageWrite | Access::eShaderStorageRead,
-                vk::ImageLayout::eUndefined, vk::ImageLayout::eGeneral, VK_QUEUE_FAMILY_IGNORED,
-                VK_QUEUE_FAMILY_IGNORED, *blocks_image_, layers);
-            cmd.pipelineBarrier2(vk::DependencyInfo({}, {}, {}, barrier));
-        });
+        vk_core::initialise_image(ctx_, blocks_image());
     }
     const std::array depths = {
         vk::DescriptorImageInfo(*nearest_, left, vk::ImageLayout::eDepthReadOnlyOptimal),
@@ -218,7 +191,7 @@ void DepthPyramidPass::set_eye_depths(vk::ImageView left, vk::ImageView right,
     ctx_.device().updateDescriptorSets(writes, {});
 }
 
-void DepthPyramidPass::record(const vk::raii::CommandBuffer& cmd,
+void DepthPyramidPass::record(const vk::raii::CommandBuffer& cmd, StepSync& sync,
                               const std::array<glm::dmat3, 2>& mono_to_eye,
                               const std::optional<Predicate>& when) const {
     std::array<glm::vec4, 6> rows{};
@@ -230,26 +203,33 @@ void DepthPyramidPass::record(const vk::raii::CommandBuffer& cmd,
         }
     }
     with_predicate(cmd, when, [&] {
+        sync.next(cmd);  // blocks
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *merge_pipeline_layout_, 0,
                                *merge_set_, {});
         cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *blocks_);
         cmd.dispatch(groups(blocks_extent_.width), groups(blocks_extent_.height), 2);
-        storage_barrier(cmd, Stage::eComputeShader);
+        sync.next(cmd);  // merge
         cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *merge_);
         cmd.pushConstants<std::array<glm::vec4, 6>>(*merge_pipeline_layout_,
                                                     vk::ShaderStageFlagBits::eCompute, 0, rows);
         cmd.dispatch(groups(extent_.width), groups(extent_.height), 1);
         cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *reduce_);
         for (std::uint32_t mip = 1; mip < mips_; ++mip) {
-            storage_barrier(cmd, Stage::eComputeShader);
+            sync.next(cmd);  // reduce (again, per level)
             cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *reduce_pipeline_layout_, 0,
                                    *reduce_sets_[mip - 1], {});
             cmd.dispatch(groups(std::max(extent_.width >> mip, 1u)),
                          groups(std::max(extent_.height >> mip, 1u)), 1);
         }
     });
-    // The culling pass (phase 1) and C's fragment shader read the pyramid.
-    storage_barrier(cmd, Stage::eComputeShader | Stage::eFragmentShader);
+}
+
+vk_core::ImageRange DepthPyramidPass::pyramid_image() const {
+    return {*image_, vk::ImageAspectFlagBits::eColor, 0, 1, mips_, vk::ImageLayout::eGeneral};
+}
+
+vk_core::ImageRange DepthPyramidPass::blocks_image() const {
+    return {*blocks_image_, vk::ImageAspectFlagBits::eColor, 0, 2, 1, vk::ImageLayout::eGeneral};
 }
 
 }  // namespace monoplane::passes

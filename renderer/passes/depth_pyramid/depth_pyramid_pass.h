@@ -14,6 +14,7 @@
 #include <glm/ext/matrix_double3x3.hpp>
 
 #include "renderer/passes/shared/indirect_draws.h"
+#include "renderer/passes/shared/step_sync.h"
 #include "renderer/vk/image.h"
 
 namespace monoplane::passes {
@@ -32,10 +33,16 @@ class DepthPyramidPass {
     // resize() that returned true.
     void set_eye_depths(vk::ImageView left, vk::ImageView right, vk::Extent2D eye_extent);
 
-    // Builds all levels. mono_to_eye: homographies from C's pixels to each eye's pixels
+    // Builds all levels in three steps, each begun with sync.next(): "blocks" (the eyes' depth,
+    // depth-read-only, to 4 x 4 minima), "merge" (level 0) and "reduce" (once per further
+    // level). mono_to_eye: homographies from C's pixels to each eye's pixels
     // (rig::mono_pixel_to_eye_pixel). With a predicate the dispatches run only when it holds.
-    void record(const vk::raii::CommandBuffer& cmd, const std::array<glm::dmat3, 2>& mono_to_eye,
+    void record(const vk::raii::CommandBuffer& cmd, StepSync& sync,
+                const std::array<glm::dmat3, 2>& mono_to_eye,
                 const std::optional<Predicate>& when) const;
+    // The pyramid and the eyes' blocks, for the render graph (both live in general layout).
+    vk_core::ImageRange pyramid_image() const;
+    vk_core::ImageRange blocks_image() const;
 
     vk::ImageView view() const { return *all_mips_; }  // every mip, for texelFetch
     vk::Sampler sampler() const { return *nearest_; }

@@ -145,246 +145,277 @@ ShaderSet shader_set(const ForwardConfig& config) {
     return {kForwardVert, kForwardShowRoutingVert, {},      {}, {},
             kForwardFrag, kForwardShowRoutingFrag, kSkyFrag};
 }
-}  // namespace
 
-ForwardPass::ForwardPass(const vk_core::Context& ctx, vk::DescriptorSetLayout scene_textures_layout,
-                         const ForwardConfig& config)
-    : ctx_(ctx), config_(config) {
-    using Stage = vk::ShaderStageFlagBits;
-    const bool gs = config.stereo == StereoDuplication::kGeometryShader;
-    if (gs && !ctx.capabilities().geometry_shader) {
+void require_stereo_support(const vk_core::Context& ctx, StereoDuplication stereo) {
+    if (stereo == StereoDuplication::kGeometryShader && !ctx.capabilities().geometry_shader) {
         throw UserError("device '" + ctx.device_info().name +
                         "' has no geometry shaders: single-pass stereo by primitive duplication "
                         "(stereo-gs, --stereo-pass gs) is not available; try multiview");
     }
-    if (config.stereo == StereoDuplication::kMultiview && !ctx.capabilities().multiview) {
+    if (stereo == StereoDuplication::kMultiview && !ctx.capabilities().multiview) {
         throw UserError("device '" + ctx.device_info().name +
                         "' has no VK_KHR_multiview: stereo-multiview (--stereo-pass multiview) is "
                         "not available; try gs");
     }
+}
+
+// Set 0: the view constants (read by the geometry shader too in the GS form) and the shadow map.
+vk::raii::DescriptorSetLayout make_view_set_layout(const vk_core::Context& ctx,
+                                                   StereoDuplication stereo) {
+    using Stage = vk::ShaderStageFlagBits;
     const vk::ShaderStageFlags constant_stages =
-        Stage::eVertex | Stage::eFragment | (gs ? Stage::eGeometry : vk::ShaderStageFlags());
+        Stage::eVertex | Stage::eFragment |
+        (stereo == StereoDuplication::kGeometryShader ? Stage::eGeometry : vk::ShaderStageFlags());
     const std::array bindings = {
         vk::DescriptorSetLayoutBinding(0, vk::DescriptorType::eUniformBuffer, 1, constant_stages),
         vk::DescriptorSetLayoutBinding(1, vk::DescriptorType::eCombinedImageSampler, 1,
                                        Stage::eFragment),
     };
-    set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
-                                                vk::DescriptorSetLayoutCreateInfo({}, bindings));
-    const std::array set1_bindings = {
+    return vk::raii::DescriptorSetLayout(ctx.device(),
+                                         vk::DescriptorSetLayoutCreateInfo({}, bindings));
+}
+
+// Set 1: the merged depth pyramid and the per-chunk routing words.
+vk::raii::DescriptorSetLayout make_merged_depth_layout(const vk_core::Context& ctx) {
+    using Stage = vk::ShaderStageFlagBits;
+    const std::array bindings = {
         vk::DescriptorSetLayoutBinding(0, vk::DescriptorType::eCombinedImageSampler, 1,
                                        Stage::eFragment),
         vk::DescriptorSetLayoutBinding(1, vk::DescriptorType::eStorageBuffer, 1, Stage::eFragment),
     };
-    merged_depth_layout_ = vk::raii::DescriptorSetLayout(
-        ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, set1_bindings));
+    return vk::raii::DescriptorSetLayout(ctx.device(),
+                                         vk::DescriptorSetLayoutCreateInfo({}, bindings));
+}
+
+// The shader modules of one pipeline; an empty SPIR-V span (the geometry stage outside the GS
+// form) leaves its stage out.
+struct PipelineShaders {
+    vk::raii::ShaderModule vertex, geometry, fragment;
+
+    PipelineShaders(const vk_core::Context& ctx, std::span<const std::uint32_t> vertex_spirv,
+                    std::span<const std::uint32_t> geometry_spirv,
+                    std::span<const std::uint32_t> fragment_spirv)
+        : vertex(module(ctx, vertex_spirv)),
+          geometry(module(ctx, geometry_spirv)),
+          fragment(module(ctx, fragment_spirv)) {}
+
+    vk_core::GraphicsPipelineDesc in(vk_core::GraphicsPipelineDesc desc) const {
+        desc.vertex = *vertex;
+        desc.geometry = *geometry;
+        desc.fragment = *fragment;
+        return desc;
+    }
+
+  private:
+    static vk::raii::ShaderModule module(const vk_core::Context& ctx,
+                                         std::span<const std::uint32_t> spirv) {
+        return spirv.empty() ? vk::raii::ShaderModule(nullptr) : vk_core::make_shader(ctx, spirv);
+    }
+};
+
+// What every pipeline of a pass shares: its layout, and the attachments and views it draws into.
+vk_core::GraphicsPipelineDesc shared_pipeline_desc(vk::PipelineLayout layout,
+                                                   const ForwardConfig& config) {
+    vk_core::GraphicsPipelineDesc desc;
+    desc.layout = layout;
+    desc.color_formats = {ForwardPass::kHdrFormat, ForwardPass::kLinearDepthFormat};
+    if (config.velocity) desc.color_formats.push_back(ForwardPass::kVelocityFormat);
+    desc.depth_format = ForwardPass::kDepthFormat;
+    desc.samples = config.samples;
+    desc.view_mask = config.stereo == StereoDuplication::kMultiview ? 0b11u : 0u;
+    return desc;
+}
+
+// The attachments of one forward pass; the vk::RenderingInfo recorded points into them.
+struct Attachments {
+    std::vector<vk::RenderingAttachmentInfo> colors;
+    vk::RenderingAttachmentInfo depth;
+};
+
+vk::RenderingAttachmentInfo color_attachment(const vk_core::Image& image,
+                                             const vk_core::Image* multisampled,
+                                             vk::AttachmentLoadOp load,
+                                             const vk::ClearColorValue& clear) {
+    vk::RenderingAttachmentInfo info(image.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {},
+                                     {}, load, vk::AttachmentStoreOp::eStore,
+                                     vk::ClearValue(clear));
+    if (multisampled) {
+        // Draw into the samples, keep only their average: the samples are never read again.
+        info.setImageView(multisampled->view())
+            .setResolveMode(vk::ResolveModeFlagBits::eAverage)
+            .setResolveImageView(image.view())
+            .setResolveImageLayout(vk::ImageLayout::eColorAttachmentOptimal)
+            .setStoreOp(vk::AttachmentStoreOp::eDontCare);
+    }
+    return info;
+}
+
+Attachments make_attachments(const ForwardTargets& targets, bool velocity) {
+    const MultisampleTargets* ms = targets.multisample;
+    const vk::AttachmentLoadOp color_load =
+        targets.clear_color ? vk::AttachmentLoadOp::eClear : vk::AttachmentLoadOp::eDontCare;
+    Attachments attachments;
+    attachments.colors = {
+        color_attachment(targets.hdr, ms ? &ms->hdr : nullptr, color_load,
+                         vk::ClearColorValue(0.0f, 0.0f, 0.0f, 1.0f)),
+        color_attachment(
+            targets.linear_depth, ms ? &ms->linear_depth : nullptr, color_load,
+            vk::ClearColorValue(static_cast<float>(MONOPLANE_SKY_LINEAR_DEPTH), 0.0f, 0.0f, 0.0f)),
+    };
+    if (velocity) {
+        attachments.colors.push_back(color_attachment(*targets.velocity, nullptr, color_load,
+                                                      vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f)));
+    }
+    const vk_core::Image& depth_image = ms ? ms->depth : targets.depth;
+    attachments.depth = vk::RenderingAttachmentInfo(
+        depth_image.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
+        vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
+        vk::ClearValue(vk::ClearDepthStencilValue(0.0f, 0)));  // reversed Z: far is 0
+    return attachments;
+}
+
+// Single-pass stereo draws both layers of the targets: every draw covers both views with
+// multiview; the geometry shader picks the layer of each triangle it emits otherwise.
+vk::RenderingInfo rendering_info(vk::Extent2D area, StereoDuplication stereo,
+                                 const Attachments& attachments) {
+    return vk::RenderingInfo()
+        .setRenderArea(vk::Rect2D({0, 0}, area))
+        .setLayerCount(stereo == StereoDuplication::kGeometryShader ? 2 : 1)
+        .setViewMask(stereo == StereoDuplication::kMultiview ? 0b11u : 0u)
+        .setColorAttachments(attachments.colors)
+        .setPDepthAttachment(&attachments.depth);
+}
+}  // namespace
+
+ForwardPass::ForwardPass(const vk_core::Context& ctx, vk::DescriptorSetLayout scene_textures_layout,
+                         const ForwardConfig& config)
+    : ctx_(ctx), config_(config) {
+    require_stereo_support(ctx, config.stereo);
+    set_layout_ = make_view_set_layout(ctx, config.stereo);
+    merged_depth_layout_ = make_merged_depth_layout(ctx);
     // One layout for all pipelines; set 1 is bound only for the steps that read it.
     const std::array set_layouts = {*set_layout_, *merged_depth_layout_, scene_textures_layout};
     layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layouts));
+    make_chunk_pipelines();
+    make_fullscreen_pipelines();
+}
 
-    const ShaderSet shaders = shader_set(config);
-    auto module = [&](std::span<const std::uint32_t> spirv) {
-        return spirv.empty() ? vk::raii::ShaderModule(nullptr) : vk_core::make_shader(ctx, spirv);
-    };
-    std::vector<vk::Format> color_formats = {kHdrFormat, kLinearDepthFormat};
-    if (config.velocity) color_formats.push_back(kVelocityFormat);
-    const std::uint32_t view_mask = config.stereo == StereoDuplication::kMultiview ? 0b11u : 0u;
+// The same vertex shader in both pipelines, whose `precise` product rounds alike in both, so the
+// pipeline after a pre-pass finds exactly the depth the pre-pass left.
+ForwardPass::ChunkPipelines ForwardPass::ChunkPipelines::make(const vk_core::Context& ctx,
+                                                              vk_core::GraphicsPipelineDesc desc) {
+    ChunkPipelines pipelines;
+    desc.depth_write = true;
+    desc.depth_compare = vk::CompareOp::eGreaterOrEqual;
+    pipelines.first = vk_core::make_graphics_pipeline(ctx, desc);
+    desc.depth_write = false;
+    desc.depth_compare = vk::CompareOp::eEqual;
+    pipelines.after_prepass = vk_core::make_graphics_pipeline(ctx, desc);
+    return pipelines;
+}
+
+void ForwardPass::make_chunk_pipelines() {
+    const ShaderSet shaders = shader_set(config_);
     // forward_vertex.glsl's kVertexWork (constant_id 0).
-    const auto vertex_work = static_cast<std::int32_t>(config.vertex_work);
+    const auto vertex_work = static_cast<std::int32_t>(config_.vertex_work);
     const vk::SpecializationMapEntry work_entry(0, 0, sizeof(vertex_work));
     const vk::SpecializationInfo vertex_specialization(1, &work_entry, sizeof(vertex_work),
                                                        &vertex_work);
-    const vk::raii::ShaderModule forward_vert = module(shaders.vertex);
-    const vk::raii::ShaderModule forward_geom = module(shaders.geometry);
-    const vk::raii::ShaderModule forward_frag = module(shaders.forward);
-    vk_core::GraphicsPipelineDesc geometry;
-    geometry.layout = *layout_;
-    geometry.vertex = *forward_vert;
-    geometry.vertex_specialization = &vertex_specialization;
-    geometry.geometry = *forward_geom;
-    geometry.fragment = *forward_frag;
-    geometry.vertex_bindings = SceneGeometry::vertex_bindings();
-    geometry.vertex_attributes = SceneGeometry::vertex_attributes();
-    geometry.color_formats = color_formats;
-    geometry.depth_format = kDepthFormat;
-    geometry.samples = config.samples;
-    geometry.view_mask = view_mask;
-    // Each chunk pipeline twice: testing and writing depth, and after a depth pre-pass, testing
-    // for the depth the pre-pass left (the same vertex shader, whose `precise` product rounds
-    // alike in both pipelines).
-    auto make_chunk_pipelines = [&](vk::raii::Pipeline& first, vk::raii::Pipeline& after_prepass) {
-        geometry.depth_write = true;
-        geometry.depth_compare = vk::CompareOp::eGreaterOrEqual;
-        first = vk_core::make_graphics_pipeline(ctx, geometry);
-        geometry.depth_write = false;
-        geometry.depth_compare = vk::CompareOp::eEqual;
-        after_prepass = vk_core::make_graphics_pipeline(ctx, geometry);
-        geometry.depth_write = true;
-        geometry.depth_compare = vk::CompareOp::eGreaterOrEqual;
-    };
-    make_chunk_pipelines(geometry_pipeline_, geometry_after_prepass_pipeline_);
+    vk_core::GraphicsPipelineDesc chunks = shared_pipeline_desc(*layout_, config_);
+    chunks.vertex_specialization = &vertex_specialization;
+    chunks.vertex_bindings = SceneGeometry::vertex_bindings();
+    chunks.vertex_attributes = SceneGeometry::vertex_attributes();
+
+    const PipelineShaders shading(ctx_, shaders.vertex, shaders.geometry, shaders.forward);
+    shading_pipelines_ = ChunkPipelines::make(ctx_, shading.in(chunks));
     // Depth only: no fragment shader and no colour written; nearer is greater, as always.
-    vk_core::GraphicsPipelineDesc prepass = geometry;
+    vk_core::GraphicsPipelineDesc prepass = shading.in(chunks);
     prepass.fragment = nullptr;
     prepass.blend = vk::PipelineColorBlendAttachmentState().setColorWriteMask({});
-    depth_prepass_pipeline_ = vk_core::make_graphics_pipeline(ctx, prepass);
-    const vk::raii::ShaderModule routing_vert = module(shaders.show_routing_vertex);
-    const vk::raii::ShaderModule routing_geom = module(shaders.show_routing_geometry);
-    const vk::raii::ShaderModule routing_frag = module(shaders.show_routing);
-    geometry.vertex = *routing_vert;
-    geometry.geometry = *routing_geom;
-    geometry.fragment = *routing_frag;
-    make_chunk_pipelines(show_routing_pipeline_, show_routing_after_prepass_pipeline_);
+    depth_prepass_pipeline_ = vk_core::make_graphics_pipeline(ctx_, prepass);
 
+    const PipelineShaders routing(ctx_, shaders.show_routing_vertex, shaders.show_routing_geometry,
+                                  shaders.show_routing);
+    show_routing_pipelines_ = ChunkPipelines::make(ctx_, routing.in(chunks));
+}
+
+void ForwardPass::make_fullscreen_pipelines() {
+    const ShaderSet shaders = shader_set(config_);
     // The sky covers only pixels still at the cleared far depth (0 with reversed Z).
-    const vk::raii::ShaderModule fullscreen_vert = vk_core::make_shader(ctx, kFullscreenVert);
-    const vk::raii::ShaderModule sky_geom = module(shaders.sky_geometry);
-    const vk::raii::ShaderModule sky_frag = module(shaders.sky);
-    vk_core::GraphicsPipelineDesc sky;
-    sky.layout = *layout_;
-    sky.vertex = *fullscreen_vert;
-    sky.geometry = *sky_geom;
-    sky.fragment = *sky_frag;
-    sky.color_formats = color_formats;
-    sky.depth_format = kDepthFormat;
-    sky.samples = config.samples;
-    sky.view_mask = view_mask;
+    const PipelineShaders sky_shaders(ctx_, kFullscreenVert, shaders.sky_geometry, shaders.sky);
+    vk_core::GraphicsPipelineDesc sky = sky_shaders.in(shared_pipeline_desc(*layout_, config_));
     sky.cull = vk::CullModeFlagBits::eNone;
     sky.depth_write = false;
     sky.depth_compare = vk::CompareOp::eEqual;
-    sky_pipeline_ = vk_core::make_graphics_pipeline(ctx, sky);
-    if (config.stereo == StereoDuplication::kNone) {
-        // Every pixel at once, whatever the depth; only the hidden ones survive the discard.
-        const vk::raii::ShaderModule mask_frag = vk_core::make_shader(ctx, kMaskHiddenFrag);
-        vk_core::GraphicsPipelineDesc mask = sky;
-        mask.geometry = nullptr;
-        mask.fragment = *mask_frag;
-        mask.depth_write = true;
-        mask.depth_compare = vk::CompareOp::eAlways;
-        mask.blend = vk::PipelineColorBlendAttachmentState().setColorWriteMask({});
-        mask_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx, mask);
-    }
+    sky_pipeline_ = vk_core::make_graphics_pipeline(ctx_, sky);
+    if (config_.stereo != StereoDuplication::kNone) return;
+
+    // Every pixel at once, whatever the depth; only the hidden ones survive the discard.
+    const vk::raii::ShaderModule mask_frag = vk_core::make_shader(ctx_, kMaskHiddenFrag);
+    vk_core::GraphicsPipelineDesc mask = sky;
+    mask.geometry = nullptr;
+    mask.fragment = *mask_frag;
+    mask.depth_write = true;
+    mask.depth_compare = vk::CompareOp::eAlways;
+    mask.blend = vk::PipelineColorBlendAttachmentState().setColorWriteMask({});
+    mask_hidden_pipeline_ = vk_core::make_graphics_pipeline(ctx_, mask);
 }
 
 void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
                          vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
                          const SceneGeometry& geometry, const SceneTextures& textures,
                          const IndirectDraws& chunks, std::span<const ForwardDraw> steps) const {
-    using Stage = vk::PipelineStageFlagBits2;
-    using Access = vk::AccessFlagBits2;
-    const MultisampleTargets* ms = targets.multisample;
-    assert((config_.samples != vk::SampleCountFlagBits::e1) == (ms != nullptr));
+    assert((config_.samples != vk::SampleCountFlagBits::e1) == (targets.multisample != nullptr));
     assert(!config_.velocity || targets.velocity != nullptr);
-    std::vector<const vk_core::Image*> colors_written = {&targets.hdr, &targets.linear_depth};
-    if (config_.velocity) colors_written.push_back(targets.velocity);
-    if (ms) {
-        colors_written.push_back(&ms->hdr);
-        colors_written.push_back(&ms->linear_depth);
-    }
-    for (const vk_core::Image* color : colors_written) {
-        vk_core::transition(cmd, *color, vk::ImageLayout::eUndefined,
-                            vk::ImageLayout::eColorAttachmentOptimal, Stage::eFragmentShader,
-                            Access::eShaderSampledRead, Stage::eColorAttachmentOutput,
-                            Access::eColorAttachmentWrite);
-    }
-    const vk_core::Image& depth_image = ms ? ms->depth : targets.depth;
-    vk_core::transition(cmd, depth_image, vk::ImageLayout::eUndefined,
-                        vk::ImageLayout::eDepthAttachmentOptimal,
-                        Stage::eLateFragmentTests | Stage::eFragmentShader | Stage::eComputeShader,
-                        Access::eDepthStencilAttachmentWrite | Access::eShaderSampledRead,
-                        Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
-                        Access::eDepthStencilAttachmentWrite | Access::eDepthStencilAttachmentRead);
-    const vk::AttachmentLoadOp color_load =
-        targets.clear_color ? vk::AttachmentLoadOp::eClear : vk::AttachmentLoadOp::eDontCare;
-    auto attachment = [&](const vk_core::Image& image, const vk_core::Image* multisampled,
-                          const vk::ClearColorValue& clear) {
-        vk::RenderingAttachmentInfo info(image.view(), vk::ImageLayout::eColorAttachmentOptimal, {},
-                                         {}, {}, color_load, vk::AttachmentStoreOp::eStore,
-                                         vk::ClearValue(clear));
-        if (multisampled) {
-            // Draw into the samples, keep only their average: the samples are never read again.
-            info.setImageView(multisampled->view())
-                .setResolveMode(vk::ResolveModeFlagBits::eAverage)
-                .setResolveImageView(image.view())
-                .setResolveImageLayout(vk::ImageLayout::eColorAttachmentOptimal)
-                .setStoreOp(vk::AttachmentStoreOp::eDontCare);
-        }
-        return info;
-    };
-    std::vector<vk::RenderingAttachmentInfo> colors = {
-        attachment(targets.hdr, ms ? &ms->hdr : nullptr,
-                   vk::ClearColorValue(0.0f, 0.0f, 0.0f, 1.0f)),
-        attachment(
-            targets.linear_depth, ms ? &ms->linear_depth : nullptr,
-            vk::ClearColorValue(static_cast<float>(MONOPLANE_SKY_LINEAR_DEPTH), 0.0f, 0.0f, 0.0f)),
-    };
-    if (config_.velocity) {
-        colors.push_back(
-            attachment(*targets.velocity, nullptr, vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f)));
-    }
-    const vk::RenderingAttachmentInfo depth(
-        depth_image.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
-        vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
-        vk::ClearValue(vk::ClearDepthStencilValue(0.0f, 0)));  // reversed Z: far is 0
-    // Single-pass stereo draws both layers of the targets: every draw covers both views with
-    // multiview; the geometry shader picks the layer of each triangle it emits otherwise.
-    const bool gs = config_.stereo == StereoDuplication::kGeometryShader;
-    const bool multiview = config_.stereo == StereoDuplication::kMultiview;
     assert(targets.hdr.desc().layers == (config_.stereo == StereoDuplication::kNone ? 1u : 2u));
-    cmd.beginRendering(vk::RenderingInfo()
-                           .setRenderArea(vk::Rect2D({0, 0}, targets.area))
-                           .setLayerCount(gs ? 2 : 1)
-                           .setViewMask(multiview ? 0b11u : 0u)
-                           .setColorAttachments(colors)
-                           .setPDepthAttachment(&depth));
+    const Attachments attachments = make_attachments(targets, config_.velocity);
+    cmd.beginRendering(rendering_info(targets.area, config_.stereo, attachments));
     vk_core::set_viewport_and_scissor(cmd, targets.area);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, view_set, {});
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 2, textures.set(), {});
     geometry.bind(cmd);
     // Whether a depth pre-pass precedes the chunk steps: they then test for its depths.
     bool prepassed = false;
-    auto chunk_pipeline = [&](const vk::raii::Pipeline& first,
-                              const vk::raii::Pipeline& after_prepass) {
-        return prepassed ? *after_prepass : *first;
-    };
     for (const ForwardDraw& draw : steps) {
-        with_predicate(cmd, draw.when, [&] {
-            switch (draw.step) {
-                case ForwardStep::kMaskHidden:
-                    assert(*mask_hidden_pipeline_);
-                    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
-                                           merged_depth_set, {});
-                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *mask_hidden_pipeline_);
-                    cmd.draw(3, 1, 0, 0);
-                    break;
-                case ForwardStep::kDepthPrepass:
-                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *depth_prepass_pipeline_);
-                    chunks.record(cmd);
-                    break;
-                case ForwardStep::kChunks:
-                    cmd.bindPipeline(
-                        vk::PipelineBindPoint::eGraphics,
-                        chunk_pipeline(geometry_pipeline_, geometry_after_prepass_pipeline_));
-                    chunks.record(cmd);
-                    break;
-                case ForwardStep::kChunksShowRouting:
-                    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1,
-                                           merged_depth_set, {});
-                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
-                                     chunk_pipeline(show_routing_pipeline_,
-                                                    show_routing_after_prepass_pipeline_));
-                    chunks.record(cmd);
-                    break;
-                case ForwardStep::kSky:
-                    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
-                    cmd.draw(3, 1, 0, 0);
-                    break;
-            }
-        });
+        with_predicate(cmd, draw.when,
+                       [&] { record_step(cmd, draw.step, prepassed, merged_depth_set, chunks); });
         // A predicated pre-pass runs under the same predicate as the chunk steps after it.
         if (draw.step == ForwardStep::kDepthPrepass) prepassed = true;
     }
     cmd.endRendering();
+}
+
+void ForwardPass::record_step(const vk::raii::CommandBuffer& cmd, ForwardStep step, bool prepassed,
+                              vk::DescriptorSet merged_depth_set,
+                              const IndirectDraws& chunks) const {
+    switch (step) {
+        case ForwardStep::kMaskHidden:
+            assert(*mask_hidden_pipeline_);
+            cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1, merged_depth_set,
+                                   {});
+            cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *mask_hidden_pipeline_);
+            cmd.draw(3, 1, 0, 0);
+            break;
+        case ForwardStep::kDepthPrepass:
+            cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *depth_prepass_pipeline_);
+            chunks.record(cmd);
+            break;
+        case ForwardStep::kChunks:
+            cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, shading_pipelines_.pick(prepassed));
+            chunks.record(cmd);
+            break;
+        case ForwardStep::kChunksShowRouting:
+            cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1, merged_depth_set,
+                                   {});
+            cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
+                             show_routing_pipelines_.pick(prepassed));
+            chunks.record(cmd);
+            break;
+        case ForwardStep::kSky:
+            cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
+            cmd.draw(3, 1, 0, 0);
+            break;
+    }
 }
 
 vk_core::DescriptorSet ForwardPass::make_view_set(const vk_core::Buffer& constants,

@@ -114,6 +114,24 @@ class ForwardPass {
                 const IndirectDraws& chunks, std::span<const ForwardDraw> steps) const;
 
   private:
+    // A chunk pipeline twice: testing and writing depth, and testing for the depth a pre-pass left.
+    struct ChunkPipelines {
+        vk::raii::Pipeline first{nullptr};
+        vk::raii::Pipeline after_prepass{nullptr};
+
+        // desc: everything but the depth test and write, which each pipeline sets itself.
+        static ChunkPipelines make(const vk_core::Context& ctx, vk_core::GraphicsPipelineDesc desc);
+        vk::Pipeline pick(bool prepassed) const { return prepassed ? *after_prepass : *first; }
+    };
+
+    // The pipelines drawing the scene's chunks: shading, routing, and the depth pre-pass.
+    void make_chunk_pipelines();
+    // The fullscreen pipelines: the sky, and in one-view passes the mask of hidden pixels.
+    void make_fullscreen_pipelines();
+    // One step of record, inside the rendering; prepassed: a depth pre-pass came before it.
+    void record_step(const vk::raii::CommandBuffer& cmd, ForwardStep step, bool prepassed,
+                     vk::DescriptorSet merged_depth_set, const IndirectDraws& chunks) const;
+
     const vk_core::Context& ctx_;
     ForwardConfig config_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
@@ -121,10 +139,8 @@ class ForwardPass {
     vk::raii::PipelineLayout layout_{nullptr};
     vk::raii::Pipeline depth_prepass_pipeline_{nullptr};
     vk::raii::Pipeline mask_hidden_pipeline_{nullptr};  // one-view passes only (C's)
-    vk::raii::Pipeline geometry_pipeline_{nullptr};
-    vk::raii::Pipeline geometry_after_prepass_pipeline_{nullptr};
-    vk::raii::Pipeline show_routing_pipeline_{nullptr};
-    vk::raii::Pipeline show_routing_after_prepass_pipeline_{nullptr};
+    ChunkPipelines shading_pipelines_;
+    ChunkPipelines show_routing_pipelines_;
     vk::raii::Pipeline sky_pipeline_{nullptr};
 };
 

@@ -77,12 +77,6 @@ ShadowPass::ShadowPass(const vk_core::Context& ctx, const ShadowParams& params)
 
 void ShadowPass::record(const vk::raii::CommandBuffer& cmd, const SceneGeometry& geometry,
                         const DrawList& draws, const glm::mat4& light_view_proj) const {
-    using Stage = vk::PipelineStageFlagBits2;
-    using Access = vk::AccessFlagBits2;
-    vk_core::transition(cmd, map_, vk::ImageLayout::eUndefined,
-                        vk::ImageLayout::eDepthAttachmentOptimal, Stage::eFragmentShader,
-                        Access::eShaderSampledRead, Stage::eEarlyFragmentTests,
-                        Access::eDepthStencilAttachmentWrite);
     const vk::RenderingAttachmentInfo depth(map_.view(), vk::ImageLayout::eDepthAttachmentOptimal,
                                             {}, {}, {}, vk::AttachmentLoadOp::eClear,
                                             vk::AttachmentStoreOp::eStore,
@@ -101,10 +95,6 @@ void ShadowPass::record(const vk::raii::CommandBuffer& cmd, const SceneGeometry&
     geometry.bind(cmd);
     draws.draw(cmd);
     cmd.endRendering();
-    vk_core::transition(cmd, map_, vk::ImageLayout::eDepthAttachmentOptimal,
-                        vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eLateFragmentTests,
-                        Access::eDepthStencilAttachmentWrite, Stage::eFragmentShader,
-                        Access::eShaderSampledRead);
 }
 
 }  // namespace monoplane::passes

@@ -29,6 +29,7 @@ class ShadowPass {
                 const DrawList& draws, const glm::mat4& light_view_proj) const;
 
     vk::ImageView view() const { return map_.view(); }
+    const vk_core::Image& map() const { return map_; }
     vk::Sampler sampler() const { return *sampler_; }
     float texel_size() const { return 1.0f / static_cast<float>(params_.resolution); }
     const ShadowParams& params() const { return params_; }

@@ -152,8 +152,6 @@ SceneTextures::SceneTextures(const vk_core::Context& ctx, const scenes::Scene& s
 
 void SceneTextures::upload_arrays(const vk_core::Context& ctx, const scenes::Scene& scene,
                                   const scenes::TextureArrayLayout& layout) {
-    using Stage = vk::PipelineStageFlagBits2;
-    using Access = vk::AccessFlagBits2;
     for (std::uint32_t a = 0; a < scenes::kTextureArrayCount; ++a) {
         const bool used = layout.layers[a] > 0;
         const std::uint32_t side = used ? scenes::TextureArrayLayout::side(a) : 1;
@@ -165,11 +163,8 @@ void SceneTextures::upload_arrays(const vk_core::Context& ctx, const scenes::Sce
         desc.mip_levels = scenes::mip_level_count(side, side);
         desc.array_view = true;
         const vk_core::Image& array = arrays_.emplace_back(ctx, desc);
-        ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-            vk_core::transition(cmd, array, vk::ImageLayout::eUndefined,
-                                vk::ImageLayout::eTransferDstOptimal, Stage::eNone, Access::eNone,
-                                Stage::eCopy, Access::eTransferWrite);
-        });
+        ctx.submit_and_wait(
+            [&](const vk::raii::CommandBuffer& cmd) { vk_core::begin_upload(cmd, array); });
         if (used) {
             for (std::size_t t = 0; t < scene.textures.size(); ++t) {
                 if (layout.slots[t].array != a) continue;
@@ -180,12 +175,8 @@ void SceneTextures::upload_arrays(const vk_core::Context& ctx, const scenes::Sce
             const scenes::SceneTexture white{"unused", 1, 1, {255, 255, 255, 255}};
             image_bytes_ += upload_layer(ctx, array, white, 1, 0);
         }
-        ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-            vk_core::transition(cmd, array, vk::ImageLayout::eTransferDstOptimal,
-                                vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eCopy,
-                                Access::eTransferWrite, Stage::eFragmentShader,
-                                Access::eShaderSampledRead);
-        });
+        ctx.submit_and_wait(
+            [&](const vk::raii::CommandBuffer& cmd) { vk_core::end_upload(cmd, array); });
     }
 }
 

@@ -30,8 +30,6 @@ const std::uint32_t kSsaoApply[] = {
 #include "ssao_apply.frag.spv.inc"
 };
 
-using Stage = vk::PipelineStageFlagBits2;
-using Access = vk::AccessFlagBits2;
 using Type = vk::DescriptorType;
 
 constexpr std::uint32_t kGroup = 8;  // the compute shaders' local size in x and y
@@ -69,14 +67,6 @@ static_assert(sizeof(ApplyPush) == 8, "must match ssao_apply.frag");
 
 std::uint32_t groups(std::uint32_t size) {
     return (size + kGroup - 1) / kGroup;
-}
-
-// Storage writes of one step -> reads (and rewrites) of the next.
-void compute_barrier(const vk::raii::CommandBuffer& cmd) {
-    const vk::MemoryBarrier2 barrier(Stage::eComputeShader, Access::eShaderStorageWrite,
-                                     Stage::eComputeShader,
-                                     Access::eShaderStorageRead | Access::eShaderStorageWrite);
-    cmd.pipelineBarrier2(vk::DependencyInfo({}, barrier));
 }
 
 // hdr *= AO: the output (AO, AO, AO, 1) blends as dst * src; the target's alpha is kept. The
@@ -160,6 +150,10 @@ const vk_core::Image& SsaoView::ao() const {
     return state_->ao;
 }
 
+std::vector<const vk_core::Image*> SsaoView::scratch() const {
+    return {&state_->raw, &state_->filtered_x, &state_->other_pixel};
+}
+
 vk::Extent2D SsaoView::extent() const {
     return state_->extent;
 }
@@ -211,39 +205,6 @@ struct SsaoPass::Impl {
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *compute_layout, 0, sets, {});
         cmd.pushConstants<PushBlock>(*compute_layout, vk::ShaderStageFlagBits::eCompute, 0, block);
         cmd.dispatch(groups(area.width), groups(area.height), 1);
-    }
-
-    // Before the first step: the inputs' writes (the forward pass's colour output, a copy, a
-    // compute pass), chained after the caller's transition to eShaderReadOnlyOptimal, become
-    // visible to the compute shaders; the views' AO images become writable.
-    static void begin(const vk::raii::CommandBuffer& cmd,
-                      std::initializer_list<const SsaoView*> views) {
-        const vk::MemoryBarrier2 inputs(
-            Stage::eColorAttachmentOutput | Stage::eFragmentShader | Stage::eComputeShader |
-                Stage::eTransfer,
-            Access::eColorAttachmentWrite | Access::eShaderWrite | Access::eTransferWrite,
-            Stage::eComputeShader,
-            Access::eShaderSampledRead | Access::eShaderStorageRead | Access::eShaderStorageWrite);
-        cmd.pipelineBarrier2(vk::DependencyInfo({}, inputs));
-        for (const SsaoView* view : views) {
-            vk_core::transition(cmd, view->state_->ao, vk::ImageLayout::eShaderReadOnlyOptimal,
-                                vk::ImageLayout::eGeneral,
-                                Stage::eFragmentShader | Stage::eComputeShader, Access::eNone,
-                                Stage::eComputeShader, Access::eShaderStorageWrite);
-        }
-    }
-
-    // After the last step: the AO images go back to eShaderReadOnlyOptimal for the apply pass,
-    // a later compute pass or the read-back.
-    static void finish(const vk::raii::CommandBuffer& cmd,
-                       std::initializer_list<const SsaoView*> views) {
-        for (const SsaoView* view : views) {
-            vk_core::transition(cmd, view->state_->ao, vk::ImageLayout::eGeneral,
-                                vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eComputeShader,
-                                Access::eShaderStorageWrite,
-                                Stage::eFragmentShader | Stage::eComputeShader,
-                                Access::eShaderSampledRead);
-        }
     }
 };
 
@@ -342,40 +303,27 @@ std::unique_ptr<SsaoView> SsaoPass::make_view(const vk_core::Buffer& constants,
     ctx_.device().updateDescriptorSets(writes, {});
 
     // Scratch images live in eGeneral; the AO starts as 1 everywhere (outside the area it stays
-    // so) in the layout every recording expects.
-    ctx_.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
-        for (const vk_core::Image* image : {&state->raw, &state->filtered_x, &state->other_pixel}) {
-            vk_core::transition(cmd, *image, vk::ImageLayout::eUndefined, vk::ImageLayout::eGeneral,
-                                Stage::eNone, Access::eNone, Stage::eComputeShader,
-                                Access::eShaderStorageRead | Access::eShaderStorageWrite);
-        }
-        vk_core::transition(cmd, state->ao, vk::ImageLayout::eUndefined,
-                            vk::ImageLayout::eTransferDstOptimal, Stage::eNone, Access::eNone,
-                            Stage::eClear, Access::eTransferWrite);
-        cmd.clearColorImage(state->ao.handle(), vk::ImageLayout::eTransferDstOptimal,
-                            vk::ClearColorValue(std::array{1.0f, 1.0f, 1.0f, 1.0f}),
-                            vk::ImageSubresourceRange(vk::ImageAspectFlagBits::eColor, 0, 1, 0, 1));
-        vk_core::transition(cmd, state->ao, vk::ImageLayout::eTransferDstOptimal,
-                            vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eClear,
-                            Access::eTransferWrite, Stage::eFragmentShader | Stage::eComputeShader,
-                            Access::eShaderSampledRead);
-    });
+    // so), shader-readable as if a frame had computed it.
+    for (vk_core::Image* image : {&state->raw, &state->filtered_x, &state->other_pixel}) {
+        vk_core::initialise_image(ctx_, *image, vk::ImageLayout::eGeneral);
+    }
+    vk_core::initialise_image(ctx_, state->ao, vk::ImageLayout::eShaderReadOnlyOptimal,
+                              vk::ClearColorValue(std::array{1.0f, 1.0f, 1.0f, 1.0f}));
     return std::unique_ptr<SsaoView>(new SsaoView(std::move(state)));
 }
 
-void SsaoPass::record_view(const vk::raii::CommandBuffer& cmd, SsaoView& view, vk::Extent2D area,
-                           float skip_beyond) const {
+void SsaoPass::record_view(const vk::raii::CommandBuffer& cmd, StepSync& sync, SsaoView& view,
+                           vk::Extent2D area, float skip_beyond) const {
     assert(area.width <= view.extent().width && area.height <= view.extent().height);
     const Impl& impl = *impl_;
-    Impl::begin(cmd, {&view});
     const PushBlock plain = impl.push(params_, area, 0, skip_beyond);
+    sync.next(cmd);  // estimate
     impl.dispatch(cmd, impl.hbao_estimate, view, view, plain, area);
-    compute_barrier(cmd);
+    sync.next(cmd);  // filter-x
     impl.dispatch(cmd, impl.bilateral_filter, view, view, plain, area);
-    compute_barrier(cmd);
+    sync.next(cmd);  // filter-y
     impl.dispatch(cmd, impl.bilateral_filter, view, view,
                   impl.push(params_, area, kFlagVertical, skip_beyond), area);
-    Impl::finish(cmd, {&view});
 }
 
 float SsaoPass::skip_margin() const {
@@ -384,54 +332,50 @@ float SsaoPass::skip_margin() const {
     return 6.0f * params_.sigma_max;
 }
 
-void SsaoPass::record_pair(const vk::raii::CommandBuffer& cmd, SsaoView& left, SsaoView& right,
-                           vk::Extent2D area, SsaoVariant variant, float skip_beyond) const {
+void SsaoPass::record_pair(const vk::raii::CommandBuffer& cmd, StepSync& sync, SsaoView& left,
+                           SsaoView& right, vk::Extent2D area, SsaoVariant variant,
+                           float skip_beyond) const {
     assert(left.extent() == right.extent());
     if (variant == SsaoVariant::kPerView) {
-        record_view(cmd, left, area, skip_beyond);
-        record_view(cmd, right, area, skip_beyond);
+        record_view(cmd, sync, left, area, skip_beyond);
+        record_view(cmd, sync, right, area, skip_beyond);
         return;
     }
     assert(area.width <= left.extent().width && area.height <= left.extent().height);
     const Impl& impl = *impl_;
-    Impl::begin(cmd, {&left, &right});
     // Sect. 3.1: the visibility maps L^l and L^r by reverse reprojection with a back-check.
     const PushBlock plain = impl.push(params_, area, 0, skip_beyond);
+    sync.next(cmd);  // visibility-left
     impl.dispatch(cmd, impl.stereo_visibility, left, right, plain, area);
+    sync.next(cmd);  // visibility-right
     impl.dispatch(cmd, impl.stereo_visibility, right, left, plain, area);
-    compute_barrier(cmd);
     // Sect. 3.1: the left eye's stereo estimate; Sect. 3.2: the right eye reprojects it where
     // L^r allows and estimates the rest from scratch.
+    sync.next(cmd);  // estimate-left
     impl.dispatch(cmd, impl.stereo_estimate, left, right, plain, area);
-    compute_barrier(cmd);
+    sync.next(cmd);  // estimate-right
     impl.dispatch(cmd, impl.stereo_estimate, right, left,
                   impl.push(params_, area, kFlagReproject, skip_beyond), area);
-    compute_barrier(cmd);
     // Sect. 3.3: the stereo filter, horizontally in both views, then vertically on that.
     const PushBlock horizontal = impl.push(params_, area, kFlagStereo, skip_beyond);
+    sync.next(cmd);  // filter-x-left
     impl.dispatch(cmd, impl.bilateral_filter, left, right, horizontal, area);
+    sync.next(cmd);  // filter-x-right
     impl.dispatch(cmd, impl.bilateral_filter, right, left, horizontal, area);
-    compute_barrier(cmd);
     const PushBlock vertical = impl.push(params_, area, kFlagStereo | kFlagVertical, skip_beyond);
+    sync.next(cmd);  // filter-y-left
     impl.dispatch(cmd, impl.bilateral_filter, left, right, vertical, area);
+    sync.next(cmd);  // filter-y-right
     impl.dispatch(cmd, impl.bilateral_filter, right, left, vertical, area);
-    Impl::finish(cmd, {&left, &right});
 }
 
-void SsaoPass::record_apply(const vk::raii::CommandBuffer& cmd, const SsaoView& view,
-                            const vk_core::Image& hdr, vk::Extent2D area,
+void SsaoPass::record_apply(const vk::raii::CommandBuffer& cmd, StepSync& sync,
+                            const SsaoView& view, const vk_core::Image& hdr, vk::Extent2D area,
                             const vk_core::Image* near_only_depth) const {
     assert(hdr.desc().format == ForwardPass::kHdrFormat);
     assert(!near_only_depth || near_only_depth->desc().format == ForwardPass::kDepthFormat);
     const Impl& impl = *impl_;
-    // Earlier rendering into the HDR (and the depth) finished before the blend reads it.
-    const vk::MemoryBarrier2 targets(
-        Stage::eColorAttachmentOutput | Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
-        Access::eColorAttachmentWrite | Access::eDepthStencilAttachmentWrite,
-        Stage::eColorAttachmentOutput | Stage::eEarlyFragmentTests | Stage::eLateFragmentTests,
-        Access::eColorAttachmentRead | Access::eColorAttachmentWrite |
-            Access::eDepthStencilAttachmentRead);
-    cmd.pipelineBarrier2(vk::DependencyInfo({}, targets));
+    sync.next(cmd);
     const vk::RenderingAttachmentInfo color(hdr.view(), vk::ImageLayout::eColorAttachmentOptimal,
                                             {}, {}, {}, vk::AttachmentLoadOp::eLoad,
                                             vk::AttachmentStoreOp::eStore);
@@ -461,21 +405,11 @@ void SsaoPass::record_apply(const vk::raii::CommandBuffer& cmd, const SsaoView& 
 
 void SsaoPass::record_readback(const vk::raii::CommandBuffer& cmd, SsaoView& view) const {
     SsaoView::State& state = *view.state_;
-    vk_core::transition(cmd, state.ao, vk::ImageLayout::eShaderReadOnlyOptimal,
-                        vk::ImageLayout::eTransferSrcOptimal,
-                        Stage::eComputeShader | Stage::eFragmentShader, Access::eNone, Stage::eCopy,
-                        Access::eTransferRead);
     cmd.copyImageToBuffer(
         state.ao.handle(), vk::ImageLayout::eTransferSrcOptimal, state.readback.handle(),
         vk::BufferImageCopy(0, 0, 0,
                             vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
                             {0, 0, 0}, vk::Extent3D(state.extent, 1)));
-    vk_core::transition(cmd, state.ao, vk::ImageLayout::eTransferSrcOptimal,
-                        vk::ImageLayout::eShaderReadOnlyOptimal, Stage::eCopy, Access::eNone,
-                        Stage::eFragmentShader | Stage::eComputeShader, Access::eShaderSampledRead);
-    const vk::MemoryBarrier2 to_host(Stage::eCopy, Access::eTransferWrite, Stage::eHost,
-                                     Access::eHostRead);
-    cmd.pipelineBarrier2(vk::DependencyInfo({}, to_host));
     state.read_back = true;
 }
 

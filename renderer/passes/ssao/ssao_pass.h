@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/passes/shared/step_sync.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
@@ -63,32 +64,36 @@ class SsaoPass {
 
     // HBAO+ and the bilateral filter on one view alone (C in hybrid mode, or one eye). area: the
     // region drawn from the top-left corner (C: its eq. 8 viewport); pixel centres map to NDC
-    // over the area. Expects linear_depth in eShaderReadOnlyOptimal; leaves the AO image in
-    // eShaderReadOnlyOptimal.
+    // over the area. Three steps (estimate, filter-x, filter-y), each begun with sync.next(): the
+    // render graph puts linear_depth in shader-read-only and the AO and scratch images in general
+    // (renderer/plan/pass_steps.h, ssao_steps).
     // skip_beyond: the estimate leaves AO 1 at pixels whose linear depth is beyond it (hybrid:
     // m + skip_margin(), where the eyes' AO is never applied and no nearer pixel's filter weighs
     // the value); the default computes every pixel.
-    void record_view(const vk::raii::CommandBuffer& cmd, SsaoView& view, vk::Extent2D area,
-                     float skip_beyond = kEveryPixel) const;
+    void record_view(const vk::raii::CommandBuffer& cmd, StepSync& sync, SsaoView& view,
+                     vk::Extent2D area, float skip_beyond = kEveryPixel) const;
     static constexpr float kEveryPixel = 3.0e38f;
     // Metres beyond a depth at which a pixel's AO no longer reaches nearer pixels' filtered AO.
     float skip_margin() const;
 
-    // Both eyes: kPerView is record_view on each; kStereoConsistent is papers/002 Sect. 3. Same
-    // layout contract as record_view; both views have the same extent and area.
-    void record_pair(const vk::raii::CommandBuffer& cmd, SsaoView& left, SsaoView& right,
-                     vk::Extent2D area, SsaoVariant variant, float skip_beyond = kEveryPixel) const;
+    // Both eyes: kPerView is record_view on each (six steps); kStereoConsistent is papers/002
+    // Sect. 3 in eight steps, one per dispatch, each over both eyes' images (visibility,
+    // estimate, filter-x, filter-y, each for the left eye, then the right). Both views have the
+    // same extent and area.
+    void record_pair(const vk::raii::CommandBuffer& cmd, StepSync& sync, SsaoView& left,
+                     SsaoView& right, vk::Extent2D area, SsaoVariant variant,
+                     float skip_beyond = kEveryPixel) const;
 
-    // hdr *= AO over the area. hdr must be in eColorAttachmentOptimal (it stays there). With
-    // `near_only_depth` (the eye's reversed-Z depth buffer, eDepthAttachmentOptimal, read only)
+    // hdr *= AO over the area, one step (begun with sync.next()): hdr a colour attachment, the AO
+    // sampled. With `near_only_depth` (the eye's reversed-Z depth buffer, depth-tested, read only)
     // only where it holds near content (depth != the cleared 0): in hybrid mode the far region's
     // AO was applied to C's image before the composite.
-    void record_apply(const vk::raii::CommandBuffer& cmd, const SsaoView& view,
+    void record_apply(const vk::raii::CommandBuffer& cmd, StepSync& sync, const SsaoView& view,
                       const vk_core::Image& hdr, vk::Extent2D area,
                       const vk_core::Image* near_only_depth = nullptr) const;
 
-    // Copies the AO image to the view's host-visible buffer (after record_*; the AO image goes
-    // back to eShaderReadOnlyOptimal). ao_values() reads it after the submission completed.
+    // Copies the AO image (a transfer source by then) to the view's host-visible buffer, inside
+    // the read-back pass's step. ao_values() reads it after the submission completed.
     void record_readback(const vk::raii::CommandBuffer& cmd, SsaoView& view) const;
 
   private:
@@ -102,6 +107,8 @@ class SsaoView {
   public:
     ~SsaoView();
     const vk_core::Image& ao() const;
+    // The images the estimate and filters write between them (the render graph's ao_scratch).
+    std::vector<const vk_core::Image*> scratch() const;
     vk::Extent2D extent() const;
     // The last read-back AO, row-major, extent().width * extent().height values (pixels outside
     // the area are unspecified). Empty before the first record_readback.

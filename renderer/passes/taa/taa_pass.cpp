@@ -52,13 +52,6 @@ TaaPass::TaaPass(const vk_core::Context& ctx)
 
 void TaaPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& output,
                      vk::DescriptorSet inputs, const TaaParams& params, bool reset) const {
-    using Stage = vk::PipelineStageFlagBits2;
-    using Access = vk::AccessFlagBits2;
-    // The output was last read as the history (or by tone mapping) two frames ago.
-    vk_core::transition(cmd, output, vk::ImageLayout::eUndefined,
-                        vk::ImageLayout::eColorAttachmentOptimal, Stage::eFragmentShader,
-                        Access::eShaderSampledRead, Stage::eColorAttachmentOutput,
-                        Access::eColorAttachmentWrite);
     const vk::RenderingAttachmentInfo color(output.view(), vk::ImageLayout::eColorAttachmentOptimal,
                                             {}, {}, {}, vk::AttachmentLoadOp::eDontCare,
                                             vk::AttachmentStoreOp::eStore);

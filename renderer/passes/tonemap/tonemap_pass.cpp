@@ -37,12 +37,6 @@ TonemapPass::TonemapPass(const vk_core::Context& ctx) : ctx_(ctx) {
 
 void TonemapPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& display,
                          vk::DescriptorSet hdr_set, const TonemapParams& params) const {
-    using Stage = vk::PipelineStageFlagBits2;
-    using Access = vk::AccessFlagBits2;
-    vk_core::transition(cmd, display, vk::ImageLayout::eUndefined,
-                        vk::ImageLayout::eColorAttachmentOptimal, Stage::eTransfer,
-                        Access::eTransferRead, Stage::eColorAttachmentOutput,
-                        Access::eColorAttachmentWrite);
     const vk::RenderingAttachmentInfo color(
         display.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
         vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore);

@@ -1,0 +1,110 @@
+// ModeRenderer's side of the render graph: which device image each of the plan's resources is
+// this frame (the executor records the barriers; renderer/executor/graph_executor.h).
+#include <stdexcept>
+
+#include "renderer/modes/mode_renderer_internals.h"
+
+namespace monoplane::modes {
+namespace {
+
+// One layer of a two-layer image (single-pass stereo's multisampled targets).
+vk_core::ImageRange layer_of(const vk_core::Image& both, std::uint32_t layer) {
+    vk_core::ImageRange range = both.range();
+    range.base_layer += layer;
+    range.layers = 1;
+    return range;
+}
+
+}  // namespace
+
+std::vector<vk_core::ImageRange> ModeRenderer::view_images(const ResourceKey& key) const {
+    const View* view = key.view == ViewId::kMono ? mono_.get() : eyes_[eye_index(key.view)].get();
+    if (view == nullptr) return {};  // C not made yet: only passes the frame leaves out use it
+    const auto samples = [&](const std::optional<vk_core::Image>& own,
+                             const std::optional<vk_core::Image> ForwardImages::*both)
+        -> std::vector<vk_core::ImageRange> {
+        if (own) return {own->range()};
+        // Single-pass stereo draws both eyes' samples into two-layer images.
+        if (eye_layers_ && key.view != ViewId::kMono && (*eye_layers_).*both) {
+            return {
+                layer_of(*((*eye_layers_).*both), static_cast<std::uint32_t>(eye_index(key.view)))};
+        }
+        return {};
+    };
+    switch (key.image) {
+        case ImageRole::kHdr:
+            return {view->hdr.range()};
+        case ImageRole::kDepth:
+            return {view->depth.range()};
+        case ImageRole::kLinearDepth:
+            return {view->linear_depth.range()};
+        case ImageRole::kVelocity:
+            return view->velocity ? std::vector{view->velocity->range()}
+                                  : std::vector<vk_core::ImageRange>{};
+        case ImageRole::kHdrSamples:
+            return samples(view->hdr_samples, &ForwardImages::hdr_samples);
+        case ImageRole::kLinearDepthSamples:
+            return samples(view->linear_depth_samples, &ForwardImages::linear_depth_samples);
+        case ImageRole::kDepthSamples:
+            return samples(view->depth_samples, &ForwardImages::depth_samples);
+        case ImageRole::kAo:
+            return view->ssao ? std::vector{view->ssao->ao().range()}
+                              : std::vector<vk_core::ImageRange>{};
+        case ImageRole::kAoScratch: {
+            std::vector<vk_core::ImageRange> scratch;
+            if (view->ssao) {
+                for (const vk_core::Image* image : view->ssao->scratch())
+                    scratch.push_back(image->range());
+            }
+            return scratch;
+        }
+        case ImageRole::kHistory:
+            return {view->history[history_parity_]->range()};
+        case ImageRole::kHistoryPrevious:
+            return {view->history[1 - history_parity_]->range()};
+        case ImageRole::kDisplay:
+            return {view->display.range()};
+        default:
+            throw std::logic_error("bind: " + resource_name(key) + " is not a view's image");
+    }
+}
+
+std::vector<BoundResource> ModeRenderer::bind_resources() {
+    std::vector<BoundResource> bindings;
+    for (const ResourceKey& key : last_plan_.keys) {
+        BoundResource& bound = bindings.emplace_back();
+        if (key.is_buffer) continue;  // buffers take memory barriers
+        switch (key.image) {
+            case ImageRole::kShadowMap:
+                bound.images = {resources_->shadow().map().range()};
+                bound.shared_state = &resources_->shadow_map_state();
+                break;
+            case ImageRole::kPyramidBlocks:
+                bound.images = {pyramid_.blocks_image()};
+                break;
+            case ImageRole::kMergedDepth:
+                bound.images = {pyramid_.pyramid_image()};
+                break;
+            default:
+                bound.images = view_images(key);
+        }
+    }
+    return bindings;
+}
+
+void ModeRenderer::forget_images(const View& view) {
+    for (const vk_core::Image* image :
+         {&view.hdr, &view.depth, &view.linear_depth, &view.display}) {
+        executor_.forget(image->range());
+    }
+    for (const auto* image : {&view.velocity, &view.hdr_samples, &view.linear_depth_samples,
+                              &view.depth_samples, &view.history[0], &view.history[1]}) {
+        if (*image) executor_.forget((*image)->range());
+    }
+    if (view.ssao) {
+        executor_.forget(view.ssao->ao().range());
+        for (const vk_core::Image* image : view.ssao->scratch()) executor_.forget(image->range());
+    }
+}
+
+}  // namespace monoplane::modes

@@ -1,0 +1,234 @@
+#include "renderer/plan/pass_steps.h"
+
+#include <array>
+
+namespace monoplane::modes {
+namespace {
+
+using graph::Step;
+using graph::StepBuilder;
+using graph::Use;
+
+constexpr std::array<ViewId, 2> kEyeViews = {ViewId::kLeft, ViewId::kRight};
+
+// Resources carried from frame to frame: read before this frame writes them, or kept for the next.
+graph::Lifetime lifetime_of(const ResourceKey& key) {
+    if (key.is_buffer) return graph::Lifetime::kTransient;
+    switch (key.image) {
+        case ImageRole::kShadowMap:        // kept while the light's region holds
+        case ImageRole::kHistory:          // the next frame's history_previous
+        case ImageRole::kHistoryPrevious:  // the previous frame's resolve
+            return graph::Lifetime::kPersistent;
+        default:
+            return graph::Lifetime::kTransient;
+    }
+}
+
+Step& add_step(std::vector<Step>& steps, std::string name, bool repeats = false) {
+    Step& step = steps.emplace_back();
+    step.name = std::move(name);
+    step.repeats = repeats;
+    return step;
+}
+
+// One compute step of SSAO over `views`: the estimates and filters read the views' linear depth
+// and rewrite their scratch and AO images.
+void add_ssao_compute(PlanResources& r, std::vector<Step>& steps, std::string name,
+                      std::initializer_list<ViewId> views) {
+    StepBuilder step(add_step(steps, std::move(name)));
+    for (ViewId view : views) {
+        step.use(r.image(view, ImageRole::kLinearDepth), Use::kSampledCompute)
+            .use(r.image(view, ImageRole::kAoScratch), Use::kStorageWrite)
+            .use(r.image(view, ImageRole::kAo), Use::kStorageWrite);
+    }
+}
+
+void add_ssao_apply(PlanResources& r, std::vector<Step>& steps, ViewId view, bool near_only) {
+    StepBuilder step(add_step(steps, view_name(view) + ".apply"));
+    step.use(r.image(view, ImageRole::kAo), Use::kSampledFragment)
+        .use(r.image(view, ImageRole::kHdr), Use::kColorBlend);
+    if (near_only) step.use(r.image(view, ImageRole::kDepth), Use::kDepthTest);
+}
+
+}  // namespace
+
+std::uint16_t PlanResources::handle(const ResourceKey& key) {
+    if (auto existing = plan_.handle(key)) return *existing;
+    const std::string name = resource_name(key);
+    const graph::Lifetime lifetime = lifetime_of(key);
+    const std::uint16_t index = key.is_buffer ? plan_.resources.buffer(name, lifetime).index
+                                              : plan_.resources.image(name, lifetime).index;
+    plan_.keys.push_back(key);
+    return index;
+}
+
+graph::ImageHandle PlanResources::image(ViewId view, ImageRole role) {
+    return {handle({view, false, role, BufferRole::kDrawLists})};
+}
+
+graph::BufferHandle PlanResources::buffer(ViewId view, BufferRole role) {
+    return {handle({view, true, ImageRole::kHdr, role})};
+}
+
+std::vector<Step> culling_steps(PlanResources& r) {
+    std::vector<Step> steps;
+    StepBuilder(add_step(steps, "frustum"))
+        .use(r.shared(BufferRole::kDrawLists), Use::kStorageWrite)
+        .use(r.shared(BufferRole::kPredicates), Use::kStorageWrite);
+    return steps;
+}
+
+std::vector<Step> shadow_steps(PlanResources& r) {
+    std::vector<Step> steps;
+    StepBuilder(add_step(steps, "draw")).use(r.shared(ImageRole::kShadowMap), Use::kDepthWrite);
+    return steps;
+}
+
+std::vector<Step> forward_steps(PlanResources& r, const ForwardUses& uses) {
+    std::vector<Step> steps;
+    StepBuilder step(add_step(steps, "draw"));
+    // The draw lists' commands and counts (the counts share the predicates' buffer).
+    step.use(r.shared(BufferRole::kDrawLists), Use::kIndirectArgs)
+        .use(r.shared(BufferRole::kPredicates), Use::kIndirectArgs)
+        .use(r.shared(ImageRole::kShadowMap), Use::kSampledFragment);
+    if (uses.predicated) step.use(r.shared(BufferRole::kPredicates), Use::kConditional);
+    if (uses.masks_hidden) step.use(r.shared(ImageRole::kMergedDepth), Use::kGeneralSampled);
+    for (ViewId view : uses.views) {
+        if (uses.multisampled) {
+            step.use(r.image(view, ImageRole::kHdrSamples), Use::kColorWrite)
+                .use(r.image(view, ImageRole::kLinearDepthSamples), Use::kColorWrite)
+                .use(r.image(view, ImageRole::kDepthSamples), Use::kDepthWrite);
+        } else {
+            step.use(r.image(view, ImageRole::kDepth), Use::kDepthWrite);
+        }
+        // Drawn, or resolved into from the samples.
+        step.use(r.image(view, ImageRole::kHdr), Use::kColorWrite)
+            .use(r.image(view, ImageRole::kLinearDepth), Use::kColorWrite);
+        if (uses.velocity) step.use(r.image(view, ImageRole::kVelocity), Use::kColorWrite);
+    }
+    return steps;
+}
+
+std::vector<Step> depth_pyramid_steps(PlanResources& r) {
+    std::vector<Step> steps;
+    StepBuilder blocks(add_step(steps, "blocks"));
+    for (ViewId eye : kEyeViews)
+        blocks.use(r.image(eye, ImageRole::kDepth), Use::kDepthSampledCompute);
+    blocks.use(r.shared(ImageRole::kPyramidBlocks), Use::kStorageWrite);
+    StepBuilder(add_step(steps, "merge"))
+        .use(r.shared(ImageRole::kPyramidBlocks), Use::kStorageRead)
+        .use(r.shared(ImageRole::kMergedDepth), Use::kStorageWrite);
+    StepBuilder(add_step(steps, "reduce", true))
+        .use(r.shared(ImageRole::kMergedDepth), Use::kStorageWrite);
+    return steps;
+}
+
+std::vector<Step> occlusion_culling_steps(PlanResources& r) {
+    std::vector<Step> steps;
+    StepBuilder(add_step(steps, "occlusion"))
+        .use(r.shared(ImageRole::kMergedDepth), Use::kGeneralSampled)
+        .use(r.shared(BufferRole::kDrawLists), Use::kStorageWrite)
+        .use(r.shared(BufferRole::kPredicates), Use::kStorageWrite);
+    return steps;
+}
+
+std::vector<Step> mono_ssao_steps(PlanResources& r) {
+    std::vector<Step> steps;
+    for (const char* name : {"estimate", "filter-x", "filter-y"}) {
+        add_ssao_compute(r, steps, name, {ViewId::kMono});
+    }
+    StepBuilder(add_step(steps, "apply"))
+        .use(r.image(ViewId::kMono, ImageRole::kAo), Use::kSampledFragment)
+        .use(r.image(ViewId::kMono, ImageRole::kHdr), Use::kColorBlend);
+    return steps;
+}
+
+std::vector<Step> composite_steps(PlanResources& r, ViewId eye, bool velocity) {
+    std::vector<Step> steps;
+    StepBuilder step(add_step(steps, "composite"));
+    step.use(r.image(ViewId::kMono, ImageRole::kHdr), Use::kSampledFragment)
+        .use(r.image(ViewId::kMono, ImageRole::kLinearDepth), Use::kSampledFragment);
+    if (velocity) step.use(r.image(ViewId::kMono, ImageRole::kVelocity), Use::kSampledFragment);
+    // C shows where the eye drew nothing nearer: depth-tested against the eye, blended into it.
+    step.use(r.image(eye, ImageRole::kDepth), Use::kDepthTest)
+        .use(r.image(eye, ImageRole::kHdr), Use::kColorBlend)
+        .use(r.image(eye, ImageRole::kLinearDepth), Use::kColorBlend);
+    if (velocity) step.use(r.image(eye, ImageRole::kVelocity), Use::kColorBlend);
+    return steps;
+}
+
+std::vector<Step> ssao_steps(PlanResources& r, bool stereo, bool near_only) {
+    std::vector<Step> steps;
+    if (stereo) {
+        // One step per dispatch: each dispatch binds both eyes' images, and a shader's storage
+        // images count as read and written wherever it could touch them.
+        for (const char* name : {"visibility", "estimate", "filter-x", "filter-y"}) {
+            for (ViewId eye : kEyeViews) {
+                add_ssao_compute(r, steps, std::string(name) + "-" + view_name(eye),
+                                 {ViewId::kLeft, ViewId::kRight});
+            }
+        }
+    } else {
+        for (ViewId eye : kEyeViews) {
+            for (const char* name : {".estimate", ".filter-x", ".filter-y"}) {
+                add_ssao_compute(r, steps, view_name(eye) + name, {eye});
+            }
+        }
+    }
+    for (ViewId eye : kEyeViews) add_ssao_apply(r, steps, eye, near_only);
+    return steps;
+}
+
+std::vector<Step> taa_steps(PlanResources& r, ViewId eye) {
+    std::vector<Step> steps;
+    StepBuilder(add_step(steps, "resolve"))
+        .use(r.image(eye, ImageRole::kHdr), Use::kSampledFragment)
+        .use(r.image(eye, ImageRole::kVelocity), Use::kSampledFragment)
+        .use(r.image(eye, ImageRole::kLinearDepth), Use::kSampledFragment)
+        .use(r.image(eye, ImageRole::kHistoryPrevious), Use::kSampledFragment)
+        .use(r.image(eye, ImageRole::kHistory), Use::kColorWrite);
+    return steps;
+}
+
+std::vector<Step> tonemap_steps(PlanResources& r, ViewId view, ImageRole source) {
+    std::vector<Step> steps;
+    StepBuilder(add_step(steps, "tonemap"))
+        .use(r.image(view, source), Use::kSampledFragment)
+        .use(r.image(view, ImageRole::kDisplay), Use::kColorWrite);
+    return steps;
+}
+
+std::vector<Step> depth_histogram_steps(PlanResources& r) {
+    std::vector<Step> steps;
+    StepBuilder(add_step(steps, "clear"))
+        .use(r.shared(BufferRole::kDepthHistogram), Use::kTransferDst);
+    StepBuilder count(add_step(steps, "count"));
+    for (ViewId eye : kEyeViews)
+        count.use(r.image(eye, ImageRole::kLinearDepth), Use::kSampledCompute);
+    count.use(r.shared(BufferRole::kDepthHistogram), Use::kStorageWrite);
+    return steps;
+}
+
+std::vector<Step> readback_steps(PlanResources& r, const ReadbackUses& uses) {
+    std::vector<Step> steps;
+    StepBuilder step(add_step(steps, "copy"));
+    const auto copy = [&](ViewId view, ImageRole from, BufferRole to) {
+        step.use(r.image(view, from), Use::kTransferSrc).use(r.buffer(view, to), Use::kTransferDst);
+    };
+    for (ViewId eye : kEyeViews) {
+        if (uses.color) copy(eye, ImageRole::kDisplay, BufferRole::kReadback);
+        if (uses.depth) copy(eye, ImageRole::kLinearDepth, BufferRole::kDepthReadback);
+        if (uses.ao) copy(eye, ImageRole::kAo, BufferRole::kAoReadback);
+    }
+    if (uses.mono_color) copy(ViewId::kMono, ImageRole::kDisplay, BufferRole::kReadback);
+    // The culling counts, always (the frame's statistics).
+    step.use(r.shared(BufferRole::kPredicates), Use::kTransferSrc)
+        .use(r.shared(BufferRole::kCountsReadback), Use::kTransferDst);
+    if (uses.draw_lists) {
+        step.use(r.shared(BufferRole::kDrawLists), Use::kTransferSrc)
+            .use(r.shared(BufferRole::kListsReadback), Use::kTransferDst);
+    }
+    return steps;
+}
+
+}  // namespace monoplane::modes
