@@ -315,6 +315,17 @@ double pixel_stddev(const fs::path& png) {
     return std::sqrt(std::max(0.0, sum2 / n - mean * mean));
 }
 
+// Whether the window has saved its screenshot of a step ("NN-<step>.png"): it takes it on the
+// step's third frame, so a test that moves on at once could outrun it on a loaded machine.
+bool has_shot(const fs::path& dir, const std::string& step) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir / "shots", ec)) {
+        const std::string name = entry.path().stem().string();
+        if (name.substr(name.find('-') + 1) == step) return true;
+    }
+    return false;
+}
+
 class LabWindowTest : public ::testing::Test {
   protected:
     void SetUp() override {
@@ -329,12 +340,15 @@ TEST_F(LabWindowTest, DayFromProtocolToExport) {
                   "0", "--sim-rate", "5"});
     ASSERT_TRUE(lab.focus()) << lab.log();
     ASSERT_TRUE(lab.wait_step("protocol")) << lab.log();  // --db opened it: Database is done
+    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "protocol"); }, 30));
     xdo("type --delay 40 demo.toml");
     xdo("key Return");
     ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
+    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "participant"); }, 30));
     xdo("type --delay 40 P07");
     xdo("key Return");
     ASSERT_TRUE(lab.wait_step("headset")) << lab.state().dump(1);
+    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "headset"); }, 30));
     const json ready = lab.state();
     EXPECT_EQ(ready["start"]["enabled"], true) << ready.dump(1);
     xdo("key ctrl+Return");
@@ -345,7 +359,7 @@ TEST_F(LabWindowTest, DayFromProtocolToExport) {
     xdo("key ctrl+r");
     EXPECT_TRUE(wait_for([&] { return fs::exists(dir / "lab-analysis/report.html"); }, 180))
         << lab.log();
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));  // the summary's screenshot
+    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "summary"); }, 30));
     xdo("key ctrl+q");
     ASSERT_EQ(lab.wait_exit(60), 0) << lab.log();
 
@@ -469,9 +483,11 @@ TEST_F(LabWindowTest, SeededSessionIsTheCommandsSession) {
     xdo("type --delay 40 demo.toml");
     xdo("key Return");
     ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
+    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "participant"); }, 30));
     xdo("type --delay 40 P07");
     xdo("key Return");
     ASSERT_TRUE(lab.wait_step("headset")) << lab.state().dump(1);
+    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "headset"); }, 30));
     const json ready = lab.state();
     ASSERT_EQ(ready["start"]["enabled"], true) << ready.dump(1);
     EXPECT_EQ(ready["headset"]["choice"], "none") << ready.dump(1);
