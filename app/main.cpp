@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
                     "Vulkan device: index or part of its name (default: discrete GPU, else "
                     "llvmpipe); see `monoplane devices`");
     root.add_flag("--validation", global.validation,
-                  "Enable the Khronos validation layer; any message is an error");
+                  "Enable the Khronos validation layer, its synchronisation validation "
+                  "included; any message is an error");
     add_render_command(root, global);
     add_rig_command(root, global);
     add_devices_command(root, global);
