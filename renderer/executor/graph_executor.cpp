@@ -123,8 +123,6 @@ class GraphExecutor::PassSync : public passes::StepSync {
         return next_ + 1 == declared.size() && declared.back().repeats;
     }
 
-    void begin_single(const vk::raii::CommandBuffer& cmd) { next(cmd); }
-
   private:
     GraphExecutor& executor_;
     std::size_t pass_;
@@ -138,13 +136,20 @@ void GraphExecutor::begin_frame(const FramePlan& plan, std::vector<BoundResource
     assert(bindings.size() == plan.resources.size());
     plan_ = &plan;
     bindings_ = std::move(bindings);
-    compiled_ = graph::compile(plan.resources, plan.graph_passes(), plan.exports, initial_states());
+    // Consecutive frames of one plan start from the same states (TAA's two history images swap
+    // roles and states together): compile only when either changed.
+    std::vector<graph::ResourceState> initial = initial_states();
+    if (plan_generation_ != compiled_generation_ || initial != compiled_initial_) {
+        compiled_ = graph::compile(plan.resources, plan.graph_passes(), plan.exports, initial);
+        compiled_initial_ = std::move(initial);
+        compiled_generation_ = plan_generation_;
+    }
     keep_final_states(compiled_.final_states);
 }
 
 passes::StepSync& GraphExecutor::begin_pass(const vk::raii::CommandBuffer& cmd, std::size_t pass) {
     sync_ = std::make_unique<PassSync>(*this, pass);
-    if (plan_->passes[pass].steps.size() == 1) sync_->begin_single(cmd);
+    if (plan_->passes[pass].steps.size() == 1) sync_->next(cmd);
     return *sync_;
 }
 

@@ -40,8 +40,11 @@ class GraphExecutor {
     GraphExecutor(const GraphExecutor&) = delete;
     GraphExecutor& operator=(const GraphExecutor&) = delete;
 
-    // Compiles the frame. bindings[r]: resource r of plan.resources.
+    // Compiles the frame (or reuses the last compilation: same plan, same initial states).
+    // bindings[r]: resource r of plan.resources.
     void begin_frame(const FramePlan& plan, std::vector<BoundResource> bindings);
+    // The plan passed to begin_frame is a new one (its owner remade it): compile it afresh.
+    void plan_changed() { ++plan_generation_; }
     // Records the first step's barriers of plan.passes[pass] (a pass of one step), and returns
     // the sync a pass of several steps calls before each of its steps.
     passes::StepSync& begin_pass(const vk::raii::CommandBuffer& cmd, std::size_t pass);
@@ -73,6 +76,10 @@ class GraphExecutor {
     const FramePlan* plan_ = nullptr;
     std::vector<BoundResource> bindings_;
     graph::CompiledFrame compiled_;
+    // What compiled_ was made from: the plan's generation and the initial states.
+    std::uint64_t plan_generation_ = 1;
+    std::uint64_t compiled_generation_ = 0;
+    std::vector<graph::ResourceState> compiled_initial_;
     std::map<ImageId, graph::ResourceState> image_states_;
     std::map<std::string, graph::ResourceState> buffer_states_;  // by the resource's name
     std::unique_ptr<PassSync> sync_;

@@ -471,6 +471,7 @@ void ModeRenderer::update_plan(const FrameInputs& inputs, const FrameState& fram
     if (last_plan_inputs_ == key) return;
     last_plan_ = plan_frame(options, planned, device);
     last_plan_inputs_ = key;
+    executor_.plan_changed();
 }
 
 void ModeRenderer::submit_frame(

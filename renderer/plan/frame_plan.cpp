@@ -105,11 +105,6 @@ class PlanBuilder {
                                                    : DrawStep::kChunks;
     }
 
-    static bool predicated(const std::vector<PlannedDraw>& draws) {
-        return std::any_of(draws.begin(), draws.end(),
-                           [](const PlannedDraw& d) { return d.when != GpuPredicate::kAlways; });
-    }
-
     // The forward pass's uses, once its draws are known.
     std::vector<graph::Step> forward_steps_of(const PlannedPass& pass, std::vector<ViewId> views) {
         ForwardUses uses;
@@ -119,7 +114,6 @@ class PlanBuilder {
         uses.masks_hidden = std::any_of(pass.draws.begin(), pass.draws.end(), [](const auto& d) {
             return d.step == DrawStep::kMaskHidden;
         });
-        uses.predicated = predicated(pass.draws);
         return forward_steps(r_, uses);
     }
 
@@ -292,13 +286,17 @@ class PlanBuilder {
         }
     }
 
-    // A pass the GPU skips by a predicate reads the culling's words (conditional rendering) in
-    // every step it records.
+    // A pass the GPU skips by a predicate, whole or in some of its draws, reads the culling's
+    // words (conditional rendering) in every step it records: one rule for every kind of pass.
     void declare_predicate_reads() {
         if (!s_.predicated) return;
         const graph::BufferHandle predicates = r_.shared(BufferRole::kPredicates);
+        const auto conditional = [](GpuPredicate when) { return when != GpuPredicate::kAlways; };
         for (PlannedPass& pass : plan_.passes) {
-            if (pass.when == GpuPredicate::kAlways) continue;
+            const bool draws_predicated =
+                std::any_of(pass.draws.begin(), pass.draws.end(),
+                            [&](const PlannedDraw& d) { return conditional(d.when); });
+            if (!conditional(pass.when) && !draws_predicated) continue;
             for (graph::Step& step : pass.steps) {
                 graph::StepBuilder(step).use(predicates, graph::Use::kConditional);
             }

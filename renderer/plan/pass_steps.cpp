@@ -91,7 +91,6 @@ std::vector<Step> forward_steps(PlanResources& r, const ForwardUses& uses) {
     step.use(r.shared(BufferRole::kDrawLists), Use::kIndirectArgs)
         .use(r.shared(BufferRole::kPredicates), Use::kIndirectArgs)
         .use(r.shared(ImageRole::kShadowMap), Use::kSampledFragment);
-    if (uses.predicated) step.use(r.shared(BufferRole::kPredicates), Use::kConditional);
     if (uses.masks_hidden) step.use(r.shared(ImageRole::kMergedDepth), Use::kGeneralSampled);
     for (ViewId view : uses.views) {
         if (uses.multisampled) {

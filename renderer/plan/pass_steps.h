@@ -32,7 +32,6 @@ struct ForwardUses {
     bool velocity = false;      // TAA
     bool multisampled = false;  // MSAA: drawn into the sample images, resolved into hdr, linear
     bool masks_hidden = false;  // C's mask-hidden draw reads the merged pyramid
-    bool predicated = false;    // a draw is predicated on the culling words
 };
 
 std::vector<graph::Step> culling_steps(PlanResources& r);

@@ -173,6 +173,8 @@ class Lab {
         exited_ = true;
         return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     }
+    const fs::path& dir() const { return dir_; }
+
     std::string log() const {
         std::ifstream in(dir_ / "lab.log");
         std::stringstream text;
@@ -326,6 +328,22 @@ bool has_shot(const fs::path& dir, const std::string& step) {
     return false;
 }
 
+// From the launcher's start to the Headset step of demo.toml with participant `code`, waiting on
+// each step for its screenshot before moving on.
+void walk_to_headset_step(Lab& lab, const std::string& code) {
+    EXPECT_TRUE(lab.focus()) << lab.log();
+    EXPECT_TRUE(lab.wait_step("protocol")) << lab.log();  // --db opened it: Database is done
+    EXPECT_TRUE(wait_for([&] { return has_shot(lab.dir(), "protocol"); }, 30));
+    xdo("type --delay 40 demo.toml");
+    xdo("key Return");
+    EXPECT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
+    EXPECT_TRUE(wait_for([&] { return has_shot(lab.dir(), "participant"); }, 30));
+    xdo("type --delay 40 " + code);
+    xdo("key Return");
+    EXPECT_TRUE(lab.wait_step("headset")) << lab.state().dump(1);
+    EXPECT_TRUE(wait_for([&] { return has_shot(lab.dir(), "headset"); }, 30));
+}
+
 class LabWindowTest : public ::testing::Test {
   protected:
     void SetUp() override {
@@ -338,17 +356,8 @@ TEST_F(LabWindowTest, DayFromProtocolToExport) {
     // Small sessions: the observer's dwell times are real, the frames few and tiny.
     Lab lab(dir, {"--detail", "test", "--resolution-scale", "0.1", "--neutral-s", "0.3", "--end-s",
                   "0", "--sim-rate", "5"});
-    ASSERT_TRUE(lab.focus()) << lab.log();
-    ASSERT_TRUE(lab.wait_step("protocol")) << lab.log();  // --db opened it: Database is done
-    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "protocol"); }, 30));
-    xdo("type --delay 40 demo.toml");
-    xdo("key Return");
-    ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
-    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "participant"); }, 30));
-    xdo("type --delay 40 P07");
-    xdo("key Return");
-    ASSERT_TRUE(lab.wait_step("headset")) << lab.state().dump(1);
-    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "headset"); }, 30));
+    walk_to_headset_step(lab, "P07");
+    ASSERT_FALSE(HasFailure()) << lab.log();
     const json ready = lab.state();
     EXPECT_EQ(ready["start"]["enabled"], true) << ready.dump(1);
     xdo("key ctrl+Return");
@@ -478,16 +487,8 @@ TEST_F(LabWindowTest, BadInputKeepsStartDisabled) {
 TEST_F(LabWindowTest, SeededSessionIsTheCommandsSession) {
     const fs::path dir = prepare({});
     Lab lab(dir, {"--headset", "none", "--seed", "4242"});
-    ASSERT_TRUE(lab.focus()) << lab.log();
-    ASSERT_TRUE(lab.wait_step("protocol")) << lab.log();
-    xdo("type --delay 40 demo.toml");
-    xdo("key Return");
-    ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
-    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "participant"); }, 30));
-    xdo("type --delay 40 P07");
-    xdo("key Return");
-    ASSERT_TRUE(lab.wait_step("headset")) << lab.state().dump(1);
-    EXPECT_TRUE(wait_for([&] { return has_shot(dir, "headset"); }, 30));
+    walk_to_headset_step(lab, "P07");
+    ASSERT_FALSE(HasFailure()) << lab.log();
     const json ready = lab.state();
     ASSERT_EQ(ready["start"]["enabled"], true) << ready.dump(1);
     EXPECT_EQ(ready["headset"]["choice"], "none") << ready.dump(1);
@@ -531,14 +532,8 @@ TEST_F(LabWindowTest, ClosingTheSessionWindowKeepsItResumable) {
     const fs::path dir = prepare({});
     Lab lab(dir, {"--detail", "test", "--resolution-scale", "0.1", "--neutral-s", "0.3", "--end-s",
                   "0", "--sim-rate", "5"});
-    ASSERT_TRUE(lab.focus()) << lab.log();
-    ASSERT_TRUE(lab.wait_step("protocol")) << lab.log();
-    xdo("type --delay 40 demo.toml");
-    xdo("key Return");
-    ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
-    xdo("type --delay 40 P03");
-    xdo("key Return");
-    ASSERT_TRUE(lab.wait_step("headset")) << lab.state().dump(1);
+    walk_to_headset_step(lab, "P03");
+    ASSERT_FALSE(HasFailure()) << lab.log();
     xdo("key ctrl+Return");
     ASSERT_TRUE(lab.wait_step("session")) << lab.log();
     ASSERT_TRUE(wait_for(
@@ -648,14 +643,7 @@ fs::path write_check_script(const fs::path& dir, const std::string& extra) {
 
 // Up to the Headset step of demo.toml with participant `code`; the probed headset's state.
 json reach_headset_step(Lab& lab, const std::string& code) {
-    EXPECT_TRUE(lab.focus()) << lab.log();
-    EXPECT_TRUE(lab.wait_step("protocol")) << lab.log();
-    xdo("type --delay 40 demo.toml");
-    xdo("key Return");
-    EXPECT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
-    xdo("type --delay 40 " + code);
-    xdo("key Return");
-    EXPECT_TRUE(lab.wait_step("headset")) << lab.state().dump(1);
+    walk_to_headset_step(lab, code);
     // The step probed the simulated runtime on entry.
     EXPECT_TRUE(wait_for([&] { return lab.state()["headset"]["runtime_available"] == true; }, 30))
         << lab.state().dump(1) << lab.log();

@@ -74,6 +74,7 @@ std::vector<modes::BoundResource> GraphHarness::bindings() const {
 }
 
 void GraphHarness::record(const vk::raii::CommandBuffer& cmd) {
+    executor_.plan_changed();  // the harness's plan may have gained passes since the last record
     executor_.begin_frame(plan_, bindings());
     for (std::size_t p = 0; p < plan_.passes.size(); ++p) {
         passes::StepSync& sync = executor_.begin_pass(cmd, p);
