@@ -16,6 +16,7 @@ enum class NamedRenderMode {
     Stereo,
     StereoMultiview,
     StereoGs,
+    StereoInstanced,
     Hybrid,
     HybridFarfield,
     HybridAuto
@@ -25,6 +26,7 @@ inline constexpr NameTable<NamedRenderMode> kRenderModeNames = {
     {NamedRenderMode::Stereo, "stereo"},
     {NamedRenderMode::StereoMultiview, "stereo-multiview"},
     {NamedRenderMode::StereoGs, "stereo-gs"},
+    {NamedRenderMode::StereoInstanced, "stereo-instanced"},
     {NamedRenderMode::Hybrid, "hybrid"},
     {NamedRenderMode::HybridFarfield, "hybrid-farfield"},
     {NamedRenderMode::HybridAuto, "hybrid-auto"},

@@ -6,6 +6,9 @@ of the file, the unit costs of each kind of pass on that device:
 
   forward passes (left/right/eyes/mono.forward):  ms = a * primitives + b * fragments
   full-screen passes (composite, tonemap, taa):   ms = c * pixels covered
+  (a composite that tone maps into the display image itself, the plan's "writes_display", is
+  fitted as its own kind, composite+tonemap, over the eye's pixels; its eye's tonemap pass then
+  draws only in frames whose C had nothing, and is left out of the fit)
 
 Primitives are the view's clipping invocations and fragments its fragment-shader invocations
 (llvmpipe counts every covered pixel of every 2x2 quad, before the depth test rejects any). Then,
@@ -37,9 +40,23 @@ def forward_rows(runs):
     return rows
 
 
+def screen_kind(run, name):
+    """The kind a full-screen pass is fitted as, or None for a tone mapping whose work the
+    composite did (its draw runs only when C had nothing to draw)."""
+    view, _, kind = name.partition(".")
+    fused = {p["pass"] for p in run.get("plan", []) if p.get("writes_display")}
+    if kind == "composite" and name in fused:
+        return "composite+tonemap"
+    if kind == "tonemap" and f"{view}.composite" in fused:
+        return None
+    return kind
+
+
 def fullscreen_pixels(run, name, eye_pixels):
     """Pixels a full-screen pass covers (its own counter where it has one)."""
     view = name.split(".")[0]
+    if screen_kind(run, name) == "composite+tonemap":
+        return eye_pixels  # both draws' counters together cover every pixel twice
     if name.endswith(".composite"):
         return run["view_fragments"].get(name, eye_pixels)
     if view == "mono":
@@ -69,11 +86,11 @@ def fit(report):
         sys.exit("cost_model: need at least two forward passes in the bench")
     per_primitive, per_fragment = least_squares_2(rows)
     screen = {}
-    for kind in ("composite", "tonemap", "taa"):
+    for kind in ("composite", "composite+tonemap", "tonemap", "taa"):
         t, px = [], []
         for run in runs:
             for name, value in run["passes"].items():
-                if name.endswith("." + kind):
+                if screen_kind(run, name) == kind:
                     pixels = fullscreen_pixels(run, name, eye_pixels)
                     if pixels:
                         t.append(value)
@@ -91,7 +108,8 @@ def modelled_passes(run, model, eye_pixels):
         if kind == "forward" and view in run["view_primitives"]:
             out[name] = (per_primitive * run["view_primitives"][view]
                          + per_fragment * run["view_fragments"].get(view, 0))
-        elif kind in screen:
+        elif screen_kind(run, name) in screen:
+            kind = screen_kind(run, name)
             pixels = fullscreen_pixels(run, name, eye_pixels)
             if pixels:
                 out[name] = screen[kind] * pixels
@@ -113,7 +131,7 @@ def main():
           f"{per_fragment * 1e6:.2f} ns per fragment invocation")
     for kind, ms_per_pixel in screen.items():
         print(f"{kind}: {ms_per_pixel * 1e6:.2f} ns per pixel")
-    header = ["scene", "mode", "variant", "m", "measured ms", "modelled ms", "modelled/measured",
+    header = ["scene", "mode", "variant", "m", "lod", "measured ms", "modelled ms", "modelled/measured",
               "largest pass (modelled ms)"]
     if args.markdown:
         print("| " + " | ".join(header) + " |")
@@ -124,7 +142,7 @@ def main():
         largest = max(passes.items(), key=lambda item: item[1]) if passes else ("-", 0.0)
         m = "far" if run.get("mono_plane_is_far") else (
             "-" if run["mono_plane"] is None else f"{run['mono_plane']:g}")
-        cells = [run["scene"], run["mode"], run["variant"] or "-", m,
+        cells = [run["scene"], run["mode"], run["variant"] or "-", m, run.get("lod", "off"),
                  f"{run['frame_ms_median']:.1f}", f"{modelled:.1f}",
                  f"{modelled / run['frame_ms_median']:.2f}",
                  f"{largest[0]} ({largest[1]:.1f})"]

@@ -8,9 +8,9 @@ namespace monoplane::study {
 namespace {
 
 // Every named mode is a study mode, in the table's order.
-constexpr std::array<RenderMode, 6> kAllModes = [] {
-    static_assert(kRenderModeNames.size() == 6, "a new named mode needs its RenderMode");
-    std::array<RenderMode, 6> modes{};
+constexpr std::array<RenderMode, 7> kAllModes = [] {
+    static_assert(kRenderModeNames.size() == 7, "a new named mode needs its RenderMode");
+    std::array<RenderMode, 7> modes{};
     std::size_t i = 0;
     for (const auto& [named, text] : kRenderModeNames) modes[i++] = static_cast<RenderMode>(named);
     return modes;

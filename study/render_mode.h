@@ -18,6 +18,9 @@ enum class RenderMode {
     StereoMultiview = static_cast<int>(NamedRenderMode::StereoMultiview),
     // "stereo-gs": both eyes in one pass via a geometry shader
     StereoGs = static_cast<int>(NamedRenderMode::StereoGs),
+    // "stereo-instanced": both eyes in one pass, each draw's instance count doubled (the
+    // instance picks the eye and its layer, as Unity's Single Pass Instanced)
+    StereoInstanced = static_cast<int>(NamedRenderMode::StereoInstanced),
     // "hybrid": Fink et al. 2019, stereo up to the mono plane, mono beyond
     Hybrid = static_cast<int>(NamedRenderMode::Hybrid),
     // "hybrid-farfield": the engine-style far-field variant (papers/003)

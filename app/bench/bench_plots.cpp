@@ -35,8 +35,11 @@ std::string plane_label(const BenchRun& run) {
 }
 
 // `--mono-planes auto` runs are a configuration of their own: one point each.
+// "hybrid occlusion-cull", with " lod off" for full-detail runs (level of detail is the
+// default) and " auto" where the renderer chose m.
 std::string config_name(const BenchRun& run) {
-    const std::string name = run.variant.empty() ? run.mode : run.mode + " " + run.variant;
+    std::string name = run.variant.empty() ? run.mode : run.mode + " " + run.variant;
+    if (run.lod == "off") name += " lod off";
     return run.mono_plane_auto ? name + " auto" : name;
 }
 
@@ -231,7 +234,8 @@ std::string time_vs_error_chart(const BenchReport& report, const std::string& sc
             charts::DataPoint point;
             point.x = *run->max_error_px;
             point.y = *run->time_ratio;
-            if (config == "hybrid occlusion-cull" || config == "hybrid-farfield") {
+            if (config.starts_with("hybrid occlusion-cull") ||
+                config.starts_with("hybrid-farfield")) {
                 point.label = "m " + plane_label(*run);
                 if (run->ssim_vs_stereo) {
                     point.label += ", " + charts::format_number(*run->ssim_vs_stereo, 3);

@@ -9,13 +9,44 @@
 
 namespace monoplane::app {
 
+namespace {
+
+// A run's stereo reference: two-pass stereo of its scene at its level of detail.
+std::string stereo_key(const BenchRun& run) {
+    return run.scene + "\n" + run.lod;
+}
+
+// The same configuration at another level of detail.
+bool same_but_lod(const BenchRun& a, const BenchRun& b) {
+    return a.scene == b.scene && a.mode == b.mode && a.variant == b.variant &&
+           a.stereo_pass == b.stereo_pass && a.mono_plane_auto == b.mono_plane_auto &&
+           a.mono_plane_is_far == b.mono_plane_is_far &&
+           (a.mono_plane_auto || a.mono_plane == b.mono_plane);
+}
+
+// An auto run's median over the matching off run's, where the bench did not pair them itself.
+void add_lod_ratios(BenchReport& report) {
+    for (BenchRun& run : report.runs) {
+        if (run.lod != "auto" || run.time_ratio_vs_lod_off) continue;
+        for (const BenchRun& off : report.runs) {
+            if (off.lod == "off" && same_but_lod(run, off) && off.frame_ms_median > 0.0) {
+                run.time_ratio_vs_lod_off = run.frame_ms_median / off.frame_ms_median;
+                break;
+            }
+        }
+    }
+}
+
+}  // namespace
+
 void add_ratios_to_stereo(BenchReport& report) {
+    add_lod_ratios(report);
     std::map<std::string, const BenchRun*> stereo;
     for (const BenchRun& run : report.runs) {
-        if (run.mode == "stereo") stereo[run.scene] = &run;
+        if (run.mode == "stereo") stereo[stereo_key(run)] = &run;
     }
     for (BenchRun& run : report.runs) {
-        const auto found = stereo.find(run.scene);
+        const auto found = stereo.find(stereo_key(run));
         if (found == stereo.end()) continue;
         const BenchRun& reference = *found->second;
         if (&run == &reference) run.time_ratio = 1.0;
@@ -37,8 +68,8 @@ namespace {
 
 bool same_configuration(const BenchRun& fixed, const BenchRun& automatic) {
     return !fixed.mono_plane_auto && fixed.mono_plane && fixed.scene == automatic.scene &&
-           fixed.mode == automatic.mode && fixed.variant == automatic.variant && fixed.time_ratio &&
-           fixed.visible_error_arcmin;
+           fixed.lod == automatic.lod && fixed.mode == automatic.mode &&
+           fixed.variant == automatic.variant && fixed.time_ratio && fixed.visible_error_arcmin;
 }
 
 std::string fixed_name(const BenchRun& fixed) {
@@ -141,6 +172,7 @@ void write_times_and_counts(JsonWriter& j, const BenchRun& run) {
 // Accuracy against the stereo reference, and the ratios to its time and counts.
 void write_comparison_with_stereo(JsonWriter& j, const BenchRun& run) {
     optional_value(j, "ssim_vs_stereo", run.ssim_vs_stereo);
+    optional_value(j, "mean_abs_difference_vs_stereo", run.mean_abs_difference);
     optional_value(j, "max_error_px", run.max_error_px);
     optional_value(j, "max_error_arcmin", run.max_error_arcmin);
     optional_value(j, "visible_error_arcmin", run.visible_error_arcmin);
@@ -152,6 +184,7 @@ void write_comparison_with_stereo(JsonWriter& j, const BenchRun& run) {
     optional_value(j, "time_ratio_p75", run.time_ratio_p75);
     optional_value(j, "primitive_ratio_vs_stereo", run.primitive_ratio);
     optional_value(j, "vertex_invocation_ratio_vs_stereo", run.vertex_invocation_ratio);
+    optional_value(j, "time_ratio_vs_lod_off", run.time_ratio_vs_lod_off);
 }
 
 void write_run(JsonWriter& j, const BenchRun& run) {
@@ -159,6 +192,7 @@ void write_run(JsonWriter& j, const BenchRun& run) {
     j.value("scene", run.scene).value("mode", run.mode).value("variant", run.variant);
     if (!run.variant_chosen.empty()) j.value("variant_chosen", run.variant_chosen);
     j.value("stereo_pass", run.stereo_pass);
+    j.value("lod", run.lod).value("lod_error_px", run.lod_error_px);
     optional_value(j, "mono_plane", run.mono_plane);
     j.value("mono_plane_is_far", run.mono_plane_is_far);
     j.value("mono_plane_auto", run.mono_plane_auto);
@@ -219,7 +253,8 @@ std::string bench_csv(const BenchReport& report) {
            "vertex_invocations,geometry_invocations,vertex_invocation_ratio_vs_stereo,"
            "max_channel_difference_vs_stereo,mono_plane_auto,max_error_arcmin,"
            "visible_error_arcmin,turning_time_ratio,turning_driver_compiles,"
-           "turning_compile_share";
+           "turning_compile_share,lod,lod_error_px,mean_abs_difference_vs_stereo,"
+           "time_ratio_vs_lod_off";
     for (const std::string& name : pass_names) csv << ",pass_ms_" << name;
     csv << "\n";
     auto count = [](const std::map<std::string, std::uint64_t>& values, const char* key) {
@@ -244,7 +279,9 @@ std::string bench_csv(const BenchReport& report) {
             << number(run.max_error_arcmin) << "," << number(run.visible_error_arcmin) << ","
             << number(run.turning_time_ratio) << ","
             << (run.turning_driver_compiles ? std::to_string(*run.turning_driver_compiles) : "")
-            << "," << number(run.turning_compile_share);
+            << "," << number(run.turning_compile_share) << "," << run.lod << ","
+            << number(run.lod_error_px) << "," << number(run.mean_abs_difference) << ","
+            << number(run.time_ratio_vs_lod_off);
         for (const std::string& name : pass_names) {
             const auto found = run.pass_ms_median.find(name);
             csv << ",";

@@ -14,11 +14,15 @@ namespace monoplane::app {
 
 struct BenchRun {
     std::string scene;
-    std::string mode;  // stereo, stereo-multiview, stereo-gs, hybrid, hybrid-farfield
-    // How the eyes' forward passes were drawn: two, multiview or gs (for stereo-multiview and
-    // stereo-gs, their form; for the hybrid modes, their near passes').
+    // stereo, stereo-multiview, stereo-gs, stereo-instanced, hybrid, hybrid-farfield
+    std::string mode;
+    // How the eyes' forward passes were drawn: two, multiview, gs or instanced (for the
+    // single-pass stereo modes, their form; for the hybrid modes, their near passes').
     std::string stereo_pass = "two";
-    std::string variant;         // hybrid: no-opt, discard, occlusion-cull, auto; otherwise empty
+    std::string variant;  // hybrid: no-opt, discard, occlusion-cull, auto; otherwise empty
+    // Level of detail: "auto" or "off" (--lod), and auto's budget in pixels.
+    std::string lod = "auto";
+    double lod_error_px = 0.5;
     std::string variant_chosen;  // auto: the variant in use at the last frame; otherwise empty
     std::optional<double> mono_plane;  // none for stereo; auto: the median of its frames
     bool mono_plane_is_far = false;    // m = f: C skipped, hybrid records stereo's passes
@@ -53,8 +57,11 @@ struct BenchRun {
     std::uint64_t vertex_invocations = 0;
     std::uint64_t geometry_invocations = 0;
     // Accuracy against stereo (hybrid modes below far).
+    // Against two-pass stereo at full detail (--lod off), so level of detail's error counts too.
     std::optional<double> ssim_vs_stereo;  // mean of both eyes, Gaussian SSIM
-    std::optional<double> max_error_px;    // analytic supremum (rig)
+    // The mean absolute difference of the colour channels, 8-bit levels, mean of both eyes.
+    std::optional<double> mean_abs_difference;
+    std::optional<double> max_error_px;  // analytic supremum (rig)
     // The same in visual angle (rig/angular_error.h): each eye's supremum at infinity, and at the
     // farthest depth the stereo reference shows (the error any visible pixel can have; auto: the
     // largest over its frames).
@@ -73,6 +80,10 @@ struct BenchRun {
     // Quartiles of the per-pair time ratios: how much a ratio varies frame to frame.
     std::optional<double> time_ratio_p25;
     std::optional<double> time_ratio_p75;
+    // Level of detail's gain: with --lod off,auto, an auto run's median frame time over the
+    // matching off run's (two-pass stereo's: the median of per-frame ratios to full-detail
+    // stereo frames rendered in between, as time_ratio).
+    std::optional<double> time_ratio_vs_lod_off;
     std::optional<double> primitive_ratio;
     std::optional<double> vertex_invocation_ratio;  // to the scene's stereo run
     // The turning-head configuration (--turning-frames): the median ratio of a frame's GPU time
@@ -113,7 +124,8 @@ struct BenchReport {
     std::vector<BenchRun> runs;
 };
 
-// Fills time_ratio, primitive_ratio and vertex_invocation_ratio from each scene's stereo run.
+// Fills time_ratio, primitive_ratio and vertex_invocation_ratio from the stereo run of each
+// run's scene and level of detail, and time_ratio_vs_lod_off where the bench left it empty.
 void add_ratios_to_stereo(BenchReport& report);
 
 // Fills on_fixed_m_frontier, dominated_by and dominated_beyond_spread_by of every auto run from the

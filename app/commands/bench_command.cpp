@@ -22,6 +22,7 @@
 #include "app/commands/commands.h"
 #include "app/commands/frame_summary.h"
 #include "app/commands/image_quality_options.h"
+#include "app/commands/lod_flags.h"
 #include "app/commands/output_directory.h"
 #include "app/commands/scene_source.h"
 #include "app/commands/validation_report.h"
@@ -65,9 +66,11 @@ struct BenchOptions {
     std::uint32_t vertex_work = 0;
     double grazing_deg = 1.0;  // rig::RigInputs::grazing_angle, degrees
     bool depth_prepass = false;
+    bool separate_tonemap = false;  // RendererOptions::separate_tonemap in every run
     AutoMonoPlaneFlags auto_flags;  // the "auto" entry of --mono-planes
     int auto_warmup = 40;           // extra warm-up frames for auto to settle on its m
     int turning_frames = 0;         // pairs of still and turning-head frames per run (0: none)
+    LodFlags lod;                   // a sweep: "off,auto"
     std::string out;
 };
 
@@ -300,6 +303,7 @@ struct Reference {
 
 struct Accuracy {
     double ssim = 0.0;
+    double mean_abs_difference = 0.0;  // 8-bit levels, mean of both eyes
     double drift_px = 0.0;
     std::size_t drift_patches = 0;
 };
@@ -333,6 +337,8 @@ Accuracy measure_accuracy(modes::ModeRenderer& renderer, const modes::FrameInput
         const quality::ImageView a = quality::rgba_view(reference.images[e]);
         const quality::ImageView b = quality::rgba_view(renderer.eye_image(eye));
         accuracy.ssim += 0.5 * quality::ssim(a, b).value_or_throw().mean;
+        accuracy.mean_abs_difference +=
+            0.5 * quality::mean_channel_difference(a, b).value_or_throw();
         // Drift where stereo sees beyond the plane (where hybrid can differ at all).
         std::vector<std::uint8_t> beyond(reference.depth[e].size());
         for (std::size_t i = 0; i < beyond.size(); ++i) {
@@ -429,6 +435,7 @@ struct BenchSweep {
     std::vector<modes::RenderModeChoice> mode_choices;
     modes::StereoPass hybrid_stereo_pass = modes::StereoPass::kTwoPasses;  // --stereo-pass
     std::vector<modes::MonoCulling> variants;                              // hybrid's
+    std::vector<modes::LodOptions> lods;                                   // --lod, in order
     scenes::Detail detail{};
 };
 
@@ -443,8 +450,8 @@ BenchSweep parse_sweep(const BenchOptions& o) {
         const auto mode = modes::parse_render_mode(name);
         if (!mode) {
             throw UserError("--modes: '" + name +
-                            "' is not stereo, stereo-multiview, stereo-gs, hybrid or "
-                            "hybrid-farfield");
+                            "' is not stereo, stereo-multiview, stereo-gs, stereo-instanced, "
+                            "hybrid or hybrid-farfield");
         }
         sweep.mode_choices.push_back(*mode);
     }
@@ -457,6 +464,7 @@ BenchSweep parse_sweep(const BenchOptions& o) {
         }
         sweep.variants.push_back(*variant);
     }
+    sweep.lods = parse_lod_list(o.lod);
     const auto detail = scenes::parse_detail(o.detail);
     if (!detail) throw UserError("--detail " + o.detail + ": use test, low, medium, high or ultra");
     sweep.detail = *detail;
@@ -507,6 +515,7 @@ BenchSetup prepare_setup(const BenchOptions& o, const BenchSweep& sweep) {
     apply_image_quality_flags(o.anti_aliasing, o.ssao, renderer_options);
     renderer_options.vertex_work = o.vertex_work;
     renderer_options.depth_prepass = o.depth_prepass;
+    renderer_options.separate_tonemap = o.separate_tonemap;
     if (modes::msaa_samples(renderer_options.anti_aliasing) != vk::SampleCountFlagBits::e1 &&
         std::any_of(
             sweep.mode_choices.begin(), sweep.mode_choices.end(),
@@ -529,7 +538,7 @@ int count_runs(const BenchSweep& sweep, const std::vector<Plane>& planes) {
             total += static_cast<int>(planes.size() * sweep.variants.size());
         if (choice.mode == modes::Mode::kHybridFarfield) total += static_cast<int>(planes.size());
     }
-    return total * static_cast<int>(sweep.scene_sources.size());
+    return total * static_cast<int>(sweep.scene_sources.size() * sweep.lods.size());
 }
 
 // bench.json's header: the configuration every run shares.
@@ -561,37 +570,44 @@ struct SweepState {
     BenchReport& report;
     Progress progress;
     int done = 0;
+    modes::LodOptions lod;  // of the runs under way
 
-    void show(const std::string& what) const { progress.show(done, what); }
+    void show(const std::string& what) const {
+        progress.show(done, what + (sweep.lods.size() > 1 ? " lod " + lod_name() : ""));
+    }
+    std::string lod_name() const { return modes::lod_mode_name(lod.enabled); }
+    // The renderers' options at the level of detail under way.
+    modes::RendererOptions renderer_options() const {
+        modes::RendererOptions options = setup.renderer_options;
+        options.lod = lod;
+        return options;
+    }
     void add(BenchRun run) {
+        run.lod = lod_name();
+        run.lod_error_px = lod.error_px;
         report.runs.push_back(std::move(run));
         ++done;
     }
 };
 
-// A scene under measurement and its stereo reference: the renderer whose frames interleave with
-// every other run's (for the time ratios), and its images and depth (for the accuracy).
+// A scene under measurement at one level of detail: the scene's GPU resources (uploaded and
+// simplified once for every renderer), the stereo renderer at this level of detail whose frames
+// interleave with every other run's (for the time ratios), two-pass stereo at full detail (the
+// accuracy reference: its images and depth), and same_lod: the stereo images at this level of
+// detail, which single-pass stereo must equal.
 struct SceneUnderTest {
     const scenes::Scene& scene;
     std::string name;
+    std::shared_ptr<modes::SceneResources> resources;
     modes::ModeRenderer& stereo;
     const modes::FrameInputs& stereo_inputs;
-    Reference reference;
+    const Reference& reference;
+    Reference same_lod;
     double visible_depth = 0.0;  // farthest_visible_depth(reference)
 };
 
-// Stereo's own timed run (when --modes asks for two-pass stereo), then the reference frame:
-// images for the accuracy, depth for the visible error.
-Reference measure_stereo(SweepState& state, const std::string& scene_name,
-                         modes::ModeRenderer& stereo, const modes::FrameInputs& inputs) {
-    const std::vector<modes::RenderModeChoice>& mode_list = state.sweep.mode_choices;
-    if (std::any_of(mode_list.begin(), mode_list.end(), is_two_pass_stereo)) {
-        state.show(scene_name + " stereo");
-        BenchRun run = measure(stereo, inputs, state.options);
-        run.scene = scene_name;
-        run.mode = "stereo";
-        state.add(std::move(run));
-    }
+// One frame's images and linear depth, read back.
+Reference read_reference(modes::ModeRenderer& stereo, const modes::FrameInputs& inputs) {
     Reference reference;
     stereo.set_read_back(true);
     stereo.render_frame(inputs);
@@ -599,24 +615,55 @@ Reference measure_stereo(SweepState& state, const std::string& scene_name,
         reference.images[static_cast<int>(eye)] = stereo.eye_image(eye);
         reference.depth[static_cast<int>(eye)] = stereo.eye_linear_depth(eye);
     }
+    stereo.set_read_back(false);
     return reference;
+}
+
+// Stereo's own timed run (when --modes asks for two-pass stereo). With level of detail, the run
+// interleaves with full-detail stereo frames: its time ratio to them is level of detail's gain,
+// and its images' SSIM and mean difference against full detail are its error.
+void measure_stereo(SweepState& state, const SceneUnderTest& scene,
+                    modes::ModeRenderer& full_detail) {
+    const std::vector<modes::RenderModeChoice>& mode_list = state.sweep.mode_choices;
+    if (!std::any_of(mode_list.begin(), mode_list.end(), is_two_pass_stereo)) return;
+    state.show(scene.name + " stereo");
+    const bool lod = state.lod.enabled;
+    BenchRun run = measure(scene.stereo, scene.stereo_inputs, state.options,
+                           lod ? &full_detail : nullptr, lod ? &scene.stereo_inputs : nullptr);
+    run.scene = scene.name;
+    run.mode = "stereo";
+    if (lod) {
+        run.time_ratio_vs_lod_off = run.time_ratio;
+        run.time_ratio.reset();  // stereo is its level of detail's reference: 1
+        run.stereo_frame_ms_median.reset();
+        run.time_ratio_p25.reset();
+        run.time_ratio_p75.reset();
+        if (state.options.accuracy) {
+            const Accuracy accuracy =
+                measure_accuracy(scene.stereo, scene.stereo_inputs, scene.reference);
+            run.ssim_vs_stereo = accuracy.ssim;
+            run.mean_abs_difference = accuracy.mean_abs_difference;
+        }
+    }
+    state.add(std::move(run));
 }
 
 // Single-pass stereo: the same images as stereo in one pass (papers/001).
 void bench_single_pass_stereo(SweepState& state, const SceneUnderTest& scene,
                               const modes::RenderModeChoice& choice,
                               const modes::FrameInputs& inputs) {
-    modes::RendererOptions options = state.setup.renderer_options;
+    modes::RendererOptions options = state.renderer_options();
     options.stereo_pass = choice.stereo_pass;
     const std::string name = modes::render_mode_name(choice);
     state.show(scene.name + " " + name);
-    modes::ModeRenderer renderer(state.ctx, scene.scene, choice.mode, state.setup.extent, options);
+    modes::ModeRenderer renderer(state.ctx, scene.resources, choice.mode, state.setup.extent,
+                                 options);
     BenchRun run = measure(renderer, inputs, state.options, &scene.stereo, &scene.stereo_inputs);
     run.scene = scene.name;
     run.mode = name;
     run.stereo_pass = modes::stereo_pass_name(options.stereo_pass);
     if (state.options.accuracy) {
-        run.max_channel_difference = max_channel_difference(renderer, inputs, scene.reference);
+        run.max_channel_difference = max_channel_difference(renderer, inputs, scene.same_lod);
     }
     state.add(std::move(run));
 }
@@ -644,7 +691,7 @@ void bench_auto_plane(SweepState& state, const SceneUnderTest& scene, const Hybr
         state.show(scene.name + " hybrid " + modes::mono_culling_name(variant) + " m=auto");
         modes::RendererOptions auto_options = hybrid.options;
         auto_options.auto_mono_plane = setup.auto_params;
-        modes::ModeRenderer automatic(state.ctx, scene.scene, hybrid.mode, setup.extent,
+        modes::ModeRenderer automatic(state.ctx, scene.resources, hybrid.mode, setup.extent,
                                       auto_options, setup.nearest);
         AutoRunContext context{setup.profile, setup.extent, scene.visible_depth, scene.reference};
         BenchRun run = measure_auto(automatic, inputs, variant, state.options, context,
@@ -699,6 +746,7 @@ void bench_fixed_plane(SweepState& state, const SceneUnderTest& scene, const Hyb
         }
         if (accuracy) {
             run.ssim_vs_stereo = accuracy->ssim;
+            run.mean_abs_difference = accuracy->mean_abs_difference;
             run.drift_px = accuracy->drift_px;
             run.drift_patches = accuracy->drift_patches;
         }
@@ -711,9 +759,9 @@ void bench_fixed_plane(SweepState& state, const SceneUnderTest& scene, const Hyb
 void bench_hybrid_mode(SweepState& state, const SceneUnderTest& scene, modes::Mode mode,
                        modes::FrameInputs& inputs) {
     const BenchSetup& setup = state.setup;
-    modes::RendererOptions options = setup.renderer_options;
+    modes::RendererOptions options = state.renderer_options();
     options.stereo_pass = state.sweep.hybrid_stereo_pass;
-    modes::ModeRenderer renderer(state.ctx, scene.scene, mode, setup.extent, options,
+    modes::ModeRenderer renderer(state.ctx, scene.resources, mode, setup.extent, options,
                                  setup.nearest);
     const HybridMode hybrid{mode, renderer, options, modes::stereo_pass_name(options.stereo_pass),
                             mode == modes::Mode::kHybrid ? state.sweep.variants
@@ -738,23 +786,45 @@ void bench_scene(SweepState& state, const SceneSource& source) {
     if (!viewpoint) throw UserError("--view " + o.view + ": " + scene_name + " has no such view");
     modes::FrameInputs inputs = setup.base;
     inputs.views.head = viewpoint->head;
+    auto resources =
+        std::make_shared<modes::SceneResources>(state.ctx, scene, setup.renderer_options.shadow);
 
-    modes::RendererOptions stereo_options = setup.renderer_options;
-    stereo_options.read_back_depth = true;
-    stereo_options.stereo_pass = modes::StereoPass::kTwoPasses;
-    modes::ModeRenderer stereo(state.ctx, scene, modes::Mode::kStereo, setup.extent,
-                               stereo_options);
+    modes::RendererOptions full_options = setup.renderer_options;
+    full_options.read_back_depth = true;
+    full_options.stereo_pass = modes::StereoPass::kTwoPasses;
+    full_options.lod.enabled = false;
+    modes::ModeRenderer full_detail(state.ctx, resources, modes::Mode::kStereo, setup.extent,
+                                    full_options);
     const modes::FrameInputs stereo_inputs = inputs;
-    SceneUnderTest under_test{scene, scene_name, stereo, stereo_inputs,
-                              measure_stereo(state, scene_name, stereo, inputs)};
-    under_test.visible_depth = farthest_visible_depth(under_test.reference);
+    const Reference reference = read_reference(full_detail, stereo_inputs);
 
-    for (const modes::RenderModeChoice& choice : state.sweep.mode_choices) {
-        if (is_two_pass_stereo(choice)) continue;
-        if (choice.mode == modes::Mode::kStereo) {
-            bench_single_pass_stereo(state, under_test, choice, inputs);
-        } else {
-            bench_hybrid_mode(state, under_test, choice.mode, inputs);
+    for (const modes::LodOptions& lod : state.sweep.lods) {
+        state.lod = lod;
+        modes::RendererOptions stereo_options = state.renderer_options();
+        stereo_options.read_back_depth = true;
+        stereo_options.stereo_pass = modes::StereoPass::kTwoPasses;
+        std::optional<modes::ModeRenderer> at_lod;
+        if (lod.enabled) {
+            at_lod.emplace(state.ctx, resources, modes::Mode::kStereo, setup.extent,
+                           stereo_options);
+        }
+        modes::ModeRenderer& stereo = at_lod ? *at_lod : full_detail;
+        SceneUnderTest under_test{scene,
+                                  scene_name,
+                                  resources,
+                                  stereo,
+                                  stereo_inputs,
+                                  reference,
+                                  lod.enabled ? read_reference(stereo, stereo_inputs) : reference};
+        under_test.visible_depth = farthest_visible_depth(reference);
+        measure_stereo(state, under_test, full_detail);
+        for (const modes::RenderModeChoice& choice : state.sweep.mode_choices) {
+            if (is_two_pass_stereo(choice)) continue;
+            if (choice.mode == modes::Mode::kStereo) {
+                bench_single_pass_stereo(state, under_test, choice, inputs);
+            } else {
+                bench_hybrid_mode(state, under_test, choice.mode, inputs);
+            }
         }
     }
 }
@@ -827,8 +897,8 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
         "bench", "Measure time, primitives and accuracy over scenes x modes x mono planes");
     cmd->add_option("--scenes", options->scenes, "Comma-separated scenes")->capture_default_str();
     cmd->add_option("--modes", options->modes,
-                    "Comma-separated modes: stereo, stereo-multiview, stereo-gs, hybrid, "
-                    "hybrid-farfield")
+                    "Comma-separated modes: stereo, stereo-multiview, stereo-gs, "
+                    "stereo-instanced, hybrid, hybrid-farfield")
         ->capture_default_str();
     cmd->add_option("--variants", options->variants,
                     "hybrid's variants (papers/000 Sect. 5.1): no-opt, discard, occlusion-cull, "
@@ -868,8 +938,8 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
     cmd->add_option("--ssao", options->ssao, "off, per-eye or stereo for every run")
         ->capture_default_str();
     cmd->add_option("--stereo-pass", options->stereo_pass,
-                    "The hybrid modes' near passes: two, multiview or gs (single-pass stereo is "
-                    "measured by --modes stereo-multiview,stereo-gs)")
+                    "The hybrid modes' near passes: two, multiview, gs or instanced (single-pass "
+                    "stereo is measured by --modes stereo-multiview,stereo-gs,stereo-instanced)")
         ->capture_default_str();
     cmd->add_option("--vertex-work", options->vertex_work,
                     "Vertex-heavy configuration (papers/001 Table 1): rounds of synthetic "
@@ -879,6 +949,10 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
     cmd->add_flag("--depth-prepass", options->depth_prepass,
                   "A depth-only pass before every forward pass, the stereo reference's included "
                   "(each visible pixel shaded once; off by default, docs/benchmarks.md)");
+    cmd->add_flag("--separate-tonemap", options->separate_tonemap,
+                  "Hybrid modes: tone map each eye in a pass of its own after the composite, as "
+                  "before the composite wrote the display image itself (the paired comparison "
+                  "of docs/benchmarks.md; each run's plan shows which)");
     cmd->add_option("--grazing-deg", options->grazing_deg,
                     "Overlap for surfaces down to this angle to the view rays (0: eps = k s m)")
         ->capture_default_str();
@@ -888,6 +962,7 @@ void add_bench_command(CLI::App& root, const GlobalOptions& global) {
                     "shader compiles where they can be counted (turning_* in bench.json)")
         ->capture_default_str()
         ->check(CLI::Range(0, 1000));
+    add_lod_flags(*cmd, options->lod, true);
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->callback([options, &global] { run_bench(*options, global); });
 }

@@ -18,7 +18,9 @@ void apply_image_quality_flags(const std::string& anti_aliasing, const std::stri
 
 modes::StereoPass parse_stereo_pass_flag(const std::string& stereo_pass) {
     const auto pass = modes::parse_stereo_pass(stereo_pass);
-    if (!pass) throw UserError("--stereo-pass " + stereo_pass + ": use two, multiview or gs");
+    if (!pass) {
+        throw UserError("--stereo-pass " + stereo_pass + ": use two, multiview, gs or instanced");
+    }
     return *pass;
 }
 

@@ -16,6 +16,7 @@
 #include "app/commands/depth_profile_json.h"
 #include "app/commands/frame_summary.h"
 #include "app/commands/image_quality_options.h"
+#include "app/commands/lod_flags.h"
 #include "app/commands/output_directory.h"
 #include "app/commands/scene_source.h"
 #include "app/commands/stereo_comparison.h"
@@ -62,6 +63,7 @@ struct RenderOptions {
     double fps = 90.0;
     bool depth_prepass = false;
     bool depth_profile = false;  // --depth-profile (docs/scenes.md)
+    LodFlags lod;
 };
 
 std::string joined(const std::vector<std::string>& names) {
@@ -102,6 +104,11 @@ void write_configuration(JsonWriter& j, const RenderOptions& o,
         j.value("variant_used", modes::mono_culling_name(r.renderer.last_variant()));
     }
     j.value("anti_aliasing", o.anti_aliasing).value("ssao", o.ssao);
+    j.value("lod", o.lod.lod).value("lod_error_px", o.lod.error_px);
+    // Building the levels (every chunk, at load): their cost and size.
+    const modes::SceneResources& resources = r.renderer.scene_resources();
+    j.value("lod_build_s", resources.lod_build_seconds());
+    j.value("lod_triangles", static_cast<std::uint64_t>(resources.lods().triangle_count()));
     j.value("pose_path", o.pose_path).value("fps", o.fps);
 }
 
@@ -248,8 +255,8 @@ modes::RenderModeChoice parse_mode_flags(const RenderOptions& o) {
     auto choice = modes::parse_render_mode(o.mode);
     if (!choice) {
         throw UserError("--mode " + o.mode +
-                        ": unknown; use stereo, stereo-multiview, stereo-gs, hybrid or "
-                        "hybrid-farfield");
+                        ": unknown; use stereo, stereo-multiview, stereo-gs, stereo-instanced, "
+                        "hybrid or hybrid-farfield");
     }
     if (!o.stereo_pass.empty()) {
         const modes::StereoPass pass = parse_stereo_pass_flag(o.stereo_pass);
@@ -319,6 +326,7 @@ RenderSetup parse_render_flags(const RenderOptions& o) {
     modes::RendererOptions& renderer_options = setup.renderer_options;
     renderer_options.stereo_pass = setup.choice.stereo_pass;
     apply_image_quality_flags(o.anti_aliasing, o.ssao, renderer_options);
+    renderer_options.lod = parse_lod_flags(o.lod.lod, o.lod.error_px);
     // E(p) reprojects the eyes' AO through their depth.
     setup.ssao = renderer_options.ssao.has_value();
     renderer_options.read_back_ao = setup.ssao;
@@ -502,12 +510,14 @@ namespace {
 // views and the variant.
 void add_mode_flags(CLI::App& cmd, RenderOptions& options) {
     cmd.add_option("--mode", options.mode,
-                   "stereo, stereo-multiview, stereo-gs, hybrid or hybrid-farfield")
+                   "stereo, stereo-multiview, stereo-gs, stereo-instanced, hybrid or "
+                   "hybrid-farfield")
         ->capture_default_str();
     cmd.add_option("--stereo-pass", options.stereo_pass,
                    "How the eyes' forward passes are drawn (stereo, and hybrid's near region): "
-                   "two (one pass per eye), multiview (VK_KHR_multiview) or gs (geometry-shader "
-                   "duplication, papers/001); default two, or the mode's");
+                   "two (one pass per eye), multiview (VK_KHR_multiview), gs (geometry-shader "
+                   "duplication, papers/001) or instanced (two instances per draw, one per "
+                   "eye); default two, or the mode's");
     cmd.add_option("--mono-plane", options.mono_plane,
                    "Mono-plane distance m in metres (hybrid modes), or auto: chosen every frame "
                    "within --error-budget-arcmin (docs/hybrid.md, \"Choosing m\")");
@@ -585,6 +595,7 @@ void add_rendering_flags(CLI::App& cmd, RenderOptions& options) {
                    "Ambient occlusion: off, per-eye (HBAO+ in each eye) or stereo (papers/002); "
                    "writes ao_left.png, ao_right.png, ao_inconsistency.png and E's mean")
         ->capture_default_str();
+    add_lod_flags(cmd, options.lod, false);
     cmd.add_option("--pose-path", options.pose_path,
                    "Head motion over the frames: static, sway, turn or walk")
         ->capture_default_str();

@@ -17,8 +17,8 @@ modes::RenderModeChoice renderer_mode(study::RenderMode mode) {
     const auto parsed = modes::parse_render_mode(std::string(study::render_mode_name(mode)));
     if (!parsed) {
         throw UserError("render mode " + std::string(study::render_mode_name(mode)) +
-                        " is not implemented; use stereo, stereo-multiview, stereo-gs, hybrid or "
-                        "hybrid-farfield");
+                        " is not implemented; use stereo, stereo-multiview, stereo-gs, "
+                        "stereo-instanced, hybrid or hybrid-farfield");
     }
     return *parsed;
 }

@@ -16,8 +16,8 @@
 
 namespace monoplane::app {
 
-// The renderer's mode and stereo pass for a protocol's mode name (stereo-multiview and stereo-gs
-// are stereo drawn in one pass).
+// The renderer's mode and stereo pass for a protocol's mode name (stereo-multiview, stereo-gs and
+// stereo-instanced are stereo drawn in one pass).
 modes::RenderModeChoice renderer_mode(study::RenderMode mode);
 
 // The chooser's parameters of a protocol's [auto] table (hybrid-auto alternatives).

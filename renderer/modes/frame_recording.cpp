@@ -199,6 +199,12 @@ void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd, const Pl
     if (inputs.debug == DebugView::kStereoOnly) params.mapping = passes::CompositeMapping::kNothing;
     params.cover_all_pixels = inputs.debug == DebugView::kMonoOnly;
     params.when = predicate(pass.when);
+    if (pass.writes_display) {
+        composite_.record_display(cmd, {view.display, view.linear_depth, view.depth},
+                                  *mono_->composite_set, *view.composite_hdr_set, params,
+                                  options_.tonemap);
+        return;
+    }
     composite_.record(
         cmd, {view.hdr, view.linear_depth, view.depth, view.velocity ? &*view.velocity : nullptr},
         *mono_->composite_set, params);
@@ -213,7 +219,8 @@ void ModeRenderer::record_tonemap(const vk::raii::CommandBuffer& cmd, const Plan
     const View& view = *eyes_[eye_index(pass.view)];
     const vk::DescriptorSet input =
         frame.taa ? *view.tonemap_taa_sets[history_parity_] : *view.tonemap_set;
-    tonemap_.record(cmd, view.display, input, options_.tonemap);
+    // Predicated (if mono-none) where the composite writes the display image otherwise.
+    tonemap_.record(cmd, view.display, input, options_.tonemap, predicate(pass.when));
 }
 
 void ModeRenderer::record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame) {

@@ -87,6 +87,39 @@ const RendererOptions& checked(const vk_core::Context& ctx, Mode mode,
     return options;
 }
 
+// The forward pass's form of a single-pass StereoPass.
+passes::StereoDuplication stereo_duplication(StereoPass pass) {
+    switch (pass) {
+        case StereoPass::kMultiview:
+            return passes::StereoDuplication::kMultiview;
+        case StereoPass::kGeometryShader:
+            return passes::StereoDuplication::kGeometryShader;
+        case StereoPass::kInstanced:
+            return passes::StereoDuplication::kInstanced;
+        case StereoPass::kTwoPasses:
+            break;
+    }
+    return passes::StereoDuplication::kNone;
+}
+
+// Whether a frame's plan may have the composite write the display image (PlannedPass::
+// writes_display), asked of the plan itself: the composite's pipelines for it are made with the
+// renderer, never mid-run, and only when some frame will use them.
+bool composite_may_write_display(const vk_core::Context& ctx, Mode mode,
+                                 const RendererOptions& renderer) {
+    PlanOptions options;
+    options.mode = mode;
+    options.stereo_pass = renderer.stereo_pass;
+    options.anti_aliasing = renderer.anti_aliasing;
+    options.ssao = renderer.ssao.has_value();
+    options.separate_tonemap = renderer.separate_tonemap;
+    PlanDevice device;
+    device.independent_blend = ctx.capabilities().independent_blend;
+    const FramePlan plan = plan_frame(options, PlanFrame{}, device);
+    const PlannedPass* composite = plan.find("left.composite");
+    return composite != nullptr && composite->writes_display;
+}
+
 }  // namespace
 
 ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& scene, Mode mode,
@@ -110,8 +143,9 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
                                      msaa_samples(options.anti_aliasing),
                                      passes::StereoDuplication::kNone, options.vertex_work}),
       tonemap_(ctx),
-      composite_(ctx, options.anti_aliasing == AntiAliasing::kTaa),
-      culling_(ctx, scene_, resources_->chunk_table()),
+      composite_(ctx, options.anti_aliasing == AntiAliasing::kTaa,
+                 composite_may_write_display(ctx, mode, options)),
+      culling_(ctx, scene_, resources_->chunk_table(), resources_->level_table()),
       pyramid_(ctx),
       taa_(ctx),
       profiler_(ctx),
@@ -122,10 +156,7 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
     const ViewFeatures eye_features{taa, taa, msaa_samples(options.anti_aliasing)};
     if (options.stereo_pass != StereoPass::kTwoPasses) {
         eye_layers_ = std::make_unique<ForwardImages>(ctx, eye_extent, eye_features, 2);
-        const passes::StereoDuplication duplication =
-            options.stereo_pass == StereoPass::kMultiview
-                ? passes::StereoDuplication::kMultiview
-                : passes::StereoDuplication::kGeometryShader;
+        const passes::StereoDuplication duplication = stereo_duplication(options.stereo_pass);
         eyes_forward_ = std::make_unique<passes::ForwardPass>(
             ctx, resources_->textures().layout(),
             passes::ForwardConfig{taa, msaa_samples(options.anti_aliasing), duplication,
@@ -143,6 +174,9 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
         eye = eye_layers_ ? std::make_unique<View>(ctx, *eye_layers_, e, eye_features)
                           : std::make_unique<View>(ctx, eye_extent, eye_features);
         make_view_sets(*eye);
+        if (composite_.writes_display()) {
+            eye->composite_hdr_set = composite_.make_eye_input(eye->hdr);
+        }
         if (taa) make_taa_sets(*eye);
         if (ssao_) eye->ssao = ssao_->make_view(eye->constants, eye->linear_depth, eye_extent);
     }
@@ -388,6 +422,8 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
     const PlannedPass* pyramid = last_plan_.find("depth_pyramid");
     const bool depth_tested = pyramid != nullptr && !pyramid->skipped;
     passes::CullFrame cull;
+    // Instanced stereo draws each chunk of the both-eyes list once per eye, as two instances.
+    cull.both_eyes_instances = options_.stereo_pass == StereoPass::kInstanced ? 2u : 1u;
     const glm::dvec3 mono_in_head = farfield || !use_mono ? glm::dvec3(0.0) : rig_->mono_position;
     const glm::dvec3 mono_position = to_world(views.head, mono_in_head);
     for (Eye eye : {Eye::kLeft, Eye::kRight}) {
@@ -401,7 +437,10 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
                     to_world(views.head, offset), inputs, mono_position, band,
                     frame.light_view_proj);
         cull.view_proj[e] = view_proj;  // a sub-pixel jitter changes no chunk's visibility
+        cull.lod_views[e] = lod_view_of(view_proj, to_world(views.head, offset),
+                                        glm::dvec2(eye_extent_.width, eye_extent_.height));
     }
+    if (options_.lod.enabled) cull.lod_error_px = options_.lod.error_px;
     if (use_mono) {
         glm::dmat4 mono_view_proj;
         if (farfield) {
@@ -426,6 +465,9 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
                     inputs, mono_position, 0.0, frame.light_view_proj, threshold);
         cull.view_proj[MONOPLANE_CULL_MONO] = mono_view_proj;
         cull.mono_viewport = glm::dvec2(mono_->area.width, mono_->area.height);
+        // C's own pixels (eq. 8): its viewport over its field.
+        cull.lod_views[MONOPLANE_CULL_MONO] =
+            lod_view_of(mono_view_proj, mono_position, cull.mono_viewport);
         cull.hidden_depth_threshold = threshold;
         decide_routing(inputs, cull);
         if (depth_tested) {
@@ -460,12 +502,13 @@ void ModeRenderer::update_plan(const FrameInputs& inputs, const FrameState& fram
     options.read_back_ao = options_.read_back_ao;
     options.read_back_draw_lists = options_.read_back_draw_lists;
     options.depth_histogram = auto_mono_plane_ != nullptr;
+    options.separate_tonemap = options_.separate_tonemap;
     PlanFrame planned;
     planned.mono_skipped = !frame.use_mono;
     planned.mono_culling = frame.mono_culling;
     planned.debug = inputs.debug;
     planned.shadow_needed = frame.shadow_needed;
-    const PlanDevice device{frame.predicated};
+    const PlanDevice device{frame.predicated, ctx_.capabilities().independent_blend};
     // Consecutive frames of one configuration share their plan: make it only when that changes.
     const PlanInputs key{options, planned, device};
     if (last_plan_inputs_ == key) return;
@@ -592,6 +635,12 @@ std::vector<std::uint32_t> ModeRenderer::drawn_chunks(passes::CullView view) con
     // Without the option the lists were never copied to the host: nothing to report.
     if (!options_.read_back_draw_lists) return {};
     return culling_.drawn_chunks(view, last_slot_);
+}
+
+std::vector<vk::DrawIndexedIndirectCommand> ModeRenderer::drawn_commands(
+    passes::CullView view) const {
+    if (!options_.read_back_draw_lists) return {};
+    return culling_.drawn_commands(view, last_slot_);
 }
 
 const vk_core::Image& ModeRenderer::display_image(Eye eye) const {

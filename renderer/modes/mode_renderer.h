@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "renderer/modes/auto_mono_plane.h"
 #include "renderer/executor/graph_executor.h"
+#include "renderer/modes/auto_mono_plane.h"
 #include "renderer/modes/scene_resources.h"
 #include "renderer/modes/view_setup.h"
 #include "renderer/passes/composite/composite_pass.h"
@@ -29,6 +29,7 @@
 #include "renderer/passes/taa/taa_pass.h"
 #include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/plan/frame_plan.h"
+#include "renderer/plan/lod_selection.h"
 #include "renderer/plan/render_choices.h"
 #include "renderer/plan/variant_chooser.h"
 #include "renderer/profile/frame_profiler.h"
@@ -56,6 +57,9 @@ struct RendererOptions {
     // visible pixel shaded once whatever the draw order. Off by default: on llvmpipe the pass
     // costs more than the shading it saves (docs/benchmarks.md, "Shading each pixel once").
     bool depth_prepass = false;
+    // Tone map each eye in a pass of its own in hybrid even where the composite could write the
+    // display image itself (PlanOptions::separate_tonemap): tests and the paired benchmark.
+    bool separate_tonemap = false;
     bool read_back = true;              // display images to the host (PNGs, tests)
     bool read_back_depth = false;       // linear depth to the host (tests, later analyses)
     bool read_back_draw_lists = false;  // each view's chunk list to the host (tests)
@@ -63,6 +67,9 @@ struct RendererOptions {
     // budget (renderer/plan/mono_plane_chooser.h) and FrameInputs::mono_plane is ignored; each
     // frame's FrameStats carry the m chosen and why.
     std::optional<AutoMonoPlaneParams> auto_mono_plane;
+    // Level of detail (`--lod`, `--lod-error-px`): each view draws each chunk at the coarsest
+    // level whose projected error stays within error_px (renderer/plan/lod_selection.h).
+    LodOptions lod;
 };
 
 struct FrameInputs {
@@ -163,6 +170,10 @@ class ModeRenderer {
     const std::optional<rig::Rig>& last_rig() const { return rig_; }
     // The chunk indices the last frame drew in a view, in draw order (read_back_draw_lists).
     std::vector<std::uint32_t> drawn_chunks(passes::CullView view) const;
+    // Their draw commands (read_back_draw_lists): level of detail and instance count included.
+    std::vector<vk::DrawIndexedIndirectCommand> drawn_commands(passes::CullView view) const;
+    // The scene's shared resources: its levels of detail, their build time.
+    const SceneResources& scene_resources() const { return *resources_; }
     // The plan the last frame executed (render --json, bench.json).
     const FramePlan& last_plan() const { return last_plan_; }
     // Tests only: frames from now on leave out the compiled barriers `drop` selects (what the

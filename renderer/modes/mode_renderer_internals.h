@@ -129,6 +129,8 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     passes::ViewConstants written_constants{};  // what this frame's constants hold
     vk_core::DescriptorSet forward_set;
     vk_core::DescriptorSet tonemap_set;
+    // An eye's HDR image as the composite that writes the display image reads it.
+    vk_core::DescriptorSet composite_hdr_set;
     RgbaImage image;
     std::vector<float> linear;
     // TAA: the sets reading and writing the history images.

@@ -1,19 +1,32 @@
 #include "renderer/modes/scene_resources.h"
 
+#include <chrono>
 #include <numeric>
 #include <vector>
 
 #include "renderer/passes/culling/chunk_culling_pass.h"
 
 namespace monoplane::modes {
+namespace {
+
+scenes::LodChain timed_lod_chain(const scenes::Scene& scene, double& seconds) {
+    const auto start = std::chrono::steady_clock::now();
+    scenes::LodChain chain = scenes::build_lod_chain(scene);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return chain;
+}
+
+}  // namespace
 
 SceneResources::SceneResources(const vk_core::Context& ctx, const scenes::Scene& scene,
                                const passes::ShadowParams& shadow)
     : scene_(scene),
       shadow_params_(shadow),
-      geometry_(ctx, scene),
+      lods_(timed_lod_chain(scene, lod_build_seconds_)),
+      geometry_(ctx, scene, lods_),
       textures_(ctx, scene),
-      chunk_table_(passes::ChunkCullingPass::make_chunk_table(ctx, scene)),
+      chunk_table_(passes::ChunkCullingPass::make_chunk_table(ctx, scene, lods_)),
+      level_table_(passes::ChunkCullingPass::make_level_table(ctx, scene, lods_)),
       shadow_(ctx, shadow),
       shadow_draws_(ctx, scene.chunks.size()) {
     std::vector<std::uint32_t> all(scene.chunks.size());

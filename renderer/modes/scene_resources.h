@@ -1,7 +1,8 @@
-// What every renderer of one scene shares on the GPU: its geometry (vertex and index buffers),
-// its textures, its chunk table for the culling pass, the shadow map's draw list and the shadow map
-// itself. A study with 3 scenes x 2 alternatives uploads each scene once, not once per renderer
-// (study run prints the device memory it holds).
+// What every renderer of one scene shares on the GPU: its geometry (vertex and index buffers,
+// the levels of detail built at creation included), its textures, its chunk and level tables for
+// the culling pass, the shadow map's draw list and the shadow map itself. A study with 3 scenes x 2
+// alternatives uploads each scene once, not once per renderer (study run prints the device memory
+// it holds).
 //
 // When may this be used: by renderers whose frames do not overlap on the GPU (each frame is
 // submitted and waited for, as ModeRenderer does); the shadow map is redrawn by whichever
@@ -17,6 +18,7 @@
 #include "renderer/passes/shared/scene_geometry.h"
 #include "renderer/passes/shared/scene_textures.h"
 #include "renderer/vk/buffer.h"
+#include "scenes/lod_chain.h"
 #include "scenes/scene.h"
 
 namespace monoplane::modes {
@@ -30,6 +32,10 @@ class SceneResources {
     const passes::SceneGeometry& geometry() const { return geometry_; }
     const passes::SceneTextures& textures() const { return textures_; }
     const vk_core::Buffer& chunk_table() const { return chunk_table_; }
+    const vk_core::Buffer& level_table() const { return level_table_; }
+    const scenes::LodChain& lods() const { return lods_; }
+    // How long building the levels of detail took (meshoptimizer's simplifier, every chunk).
+    double lod_build_seconds() const { return lod_build_seconds_; }
     const passes::ShadowParams& shadow_params() const { return shadow_params_; }
     const passes::ShadowPass& shadow() const { return shadow_; }
 
@@ -47,9 +53,12 @@ class SceneResources {
   private:
     const scenes::Scene& scene_;
     passes::ShadowParams shadow_params_;
+    double lod_build_seconds_ = 0.0;
+    scenes::LodChain lods_;
     passes::SceneGeometry geometry_;
     passes::SceneTextures textures_;
     vk_core::Buffer chunk_table_;
+    vk_core::Buffer level_table_;
     passes::ShadowPass shadow_;
     passes::DrawList shadow_draws_;  // every chunk
     std::optional<glm::dmat4> shadow_light_view_proj_;

@@ -44,6 +44,7 @@ struct FrameShape {
     bool depth_tested = false;      // the merged depth pyramid saves C's work
     bool occlusion_culled = false;  // ... and C's hidden chunks are not drawn
     bool predicated = false;
+    bool independent_blend = false;  // the composite may write the display image
     bool single_pass = false;
     bool taa = false;
     bool msaa = false;
@@ -60,6 +61,7 @@ FrameShape shape_of(const PlanOptions& options, const PlanFrame& frame, const Pl
                      frame.debug != DebugView::kMonoOnly;
     s.occlusion_culled = s.depth_tested && frame.mono_culling == MonoCulling::kOcclusionCull;
     s.predicated = device.conditional_rendering;
+    s.independent_blend = device.independent_blend;
     s.single_pass = options.stereo_pass != StereoPass::kTwoPasses;
     s.taa = options.anti_aliasing == AntiAliasing::kTaa;
     s.msaa = options.anti_aliasing != AntiAliasing::kNone && !s.taa;
@@ -77,6 +79,7 @@ class PlanBuilder {
         add_eye_forward();
         if (s_.hybrid) add_mono_passes();
         add_post_processing();
+        fuse_tonemaps();
         if (options_.depth_histogram) add_depth_histogram();
         add_readback();
         add_exports();
@@ -247,6 +250,60 @@ class PlanBuilder {
             PlannedPass& pass = add(PassKind::kTonemap, "mono.tonemap", ViewId::kMono);
             pass.steps = tonemap_steps(r_, ViewId::kMono, ImageRole::kHdr);
             if (!s_.use_mono) pass.skipped = "m >= far: nothing lies beyond the mono plane, no C";
+        }
+    }
+
+    PlannedPass* find_pass(const std::string& name) {
+        for (PlannedPass& pass : plan_.passes) {
+            if (pass.name == name) return &pass;
+        }
+        return nullptr;
+    }
+
+    // Whether `tonemap` reads the eye's HDR image and no pass after `composite` but it uses that
+    // image at all (TAA and SSAO do): then the composite may tone map in its place.
+    bool hdr_read_only_by_tonemap(ViewId eye, const PlannedPass& composite,
+                                  const PlannedPass& tonemap) {
+        const std::uint16_t hdr = r_.image(eye, ImageRole::kHdr).index;
+        const auto uses_hdr = [&](const PlannedPass& pass) {
+            return std::any_of(pass.steps.begin(), pass.steps.end(), [&](const graph::Step& step) {
+                return std::any_of(
+                    step.uses.begin(), step.uses.end(),
+                    [&](const graph::ResourceUse& use) { return use.resource == hdr; });
+            });
+        };
+        if (!uses_hdr(tonemap)) return false;
+        bool after = false;
+        for (const PlannedPass& pass : plan_.passes) {
+            if (after && &pass != &tonemap && uses_hdr(pass)) return false;
+            after = after || &pass == &composite;
+        }
+        return true;
+    }
+
+    // One full-screen pass per eye where the eye's linear colour has no reader but its tone
+    // mapping: the composite writes the display image itself (one pass's fixed cost and the HDR
+    // image's write and read of every far pixel saved). When C has nothing to draw the GPU skips
+    // the composite, so with predicates the tonemap stays for that case alone, loading what the
+    // composite wrote otherwise; without them C always draws and the tonemap is not needed.
+    void fuse_tonemaps() {
+        if (!s_.use_mono || options_.separate_tonemap || !s_.independent_blend) return;
+        for (ViewId eye : kEyes) {
+            PlannedPass* composite = find_pass(view_name(eye) + ".composite");
+            PlannedPass* tonemap = find_pass(view_name(eye) + ".tonemap");
+            if (composite == nullptr || tonemap == nullptr ||
+                !hdr_read_only_by_tonemap(eye, *composite, *tonemap)) {
+                continue;
+            }
+            composite->writes_display = true;
+            composite->steps = composite_display_steps(r_, eye);
+            if (s_.predicated) {
+                tonemap->when = GpuPredicate::kMonoNone;
+                tonemap->steps = tonemap_steps(r_, eye, ImageRole::kHdr, true);
+            } else {
+                tonemap->skipped = "fused into " + composite->name + ": nothing else reads " +
+                                   view_name(eye) + ".hdr";
+            }
         }
     }
 

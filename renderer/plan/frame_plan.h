@@ -7,11 +7,15 @@
 // The plans (docs/architecture.md prints them as plan_frame produces them):
 //   stereo:          culling, shadow*, per eye {forward: chunks, sky}, [ssao],
 //                    per eye {[taa], tonemap}, read-back
-//                    (stereo-multiview, stereo-gs: one eyes.forward for both eyes)
+//                    (stereo-multiview, stereo-gs, stereo-instanced: one eyes.forward for
+//                    both eyes)
 //   hybrid:          culling, shadow*, per eye {forward n..m: chunks, sky only if C has nothing},
 //                    [depth pyramid, [occlusion culling]], C {forward m-eps..f + sky}, [C's ssao],
 //                    per eye {composite C through M_{E->C}}, [ssao of the near content],
-//                    per eye {[taa], tonemap}, [C's tonemap], [depth histogram], read-back
+//                    per eye {[taa], tonemap}, [C's tonemap], [depth histogram], read-back;
+//                    without TAA and SSAO each composite also tone maps into the eye's display
+//                    image (one full-screen pass per eye), and the eye's tonemap runs only when
+//                    C had nothing (the composite is then skipped), or not at all
 //   hybrid-farfield: as hybrid with C at the eyes' centre, no pyramid, an offset copy
 // (* only when the light's region changed). With m >= f (the rig's mono_skipped) hybrid's executed
 // passes are exactly stereo's: nothing lies beyond the plane.
@@ -91,6 +95,11 @@ struct PlannedPass {
     std::vector<graph::Step> steps;
     GpuPredicate when = GpuPredicate::kAlways;  // the whole pass
     std::vector<PlannedDraw> draws;             // kForward only
+    // kComposite: the composite also tone maps, writing the eye's display image whole (C's
+    // colour where the eye drew nothing, the eye's own elsewhere) instead of C's colour into the
+    // eye's HDR image. Planned where nothing but the eye's tonemap reads that HDR image after
+    // the composite; the tonemap is then left out, or runs only if mono-none.
+    bool writes_display = false;
     // Set when this frame leaves the pass out: why, for a reader ("light region unchanged: the
     // shadow map is reused", "m >= far: nothing lies beyond the mono plane", "culled: nothing
     // reads mono.display", ...).
@@ -137,6 +146,9 @@ struct PlanOptions {
     bool read_back_draw_lists = false;
     // `--mono-plane auto`: the eyes' final depth is counted for the next frames' choice of m.
     bool depth_histogram = false;
+    // Keep each eye's tone mapping a pass of its own even where the composite could write the
+    // display image (PlannedPass::writes_display): the comparisons of tests and benchmarks.
+    bool separate_tonemap = false;
     bool operator==(const PlanOptions&) const = default;
 };
 
@@ -155,6 +167,10 @@ struct PlanFrame {
 
 struct PlanDevice {
     bool conditional_rendering = false;  // VK_EXT_conditional_rendering: GPU predicates
+    // independentBlend: a pipeline may write one colour attachment and leave another, as the
+    // composite that writes the display image does (PlannedPass::writes_display); without it the
+    // tone mapping stays a pass of its own. Almost every device has it, hence the default.
+    bool independent_blend = true;
     bool operator==(const PlanDevice&) const = default;
 };
 

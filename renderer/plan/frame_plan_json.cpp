@@ -15,6 +15,7 @@ void write_plan_json(JsonWriter& j, const FramePlan& plan, std::string_view key)
             j.null("skipped");
         }
         if (pass.when != GpuPredicate::kAlways) j.value("when", gpu_predicate_name(pass.when));
+        if (pass.writes_display) j.value("writes_display", true);
         if (!pass.draws.empty()) {
             j.begin_array("draws");
             for (const PlannedDraw& draw : pass.draws) {

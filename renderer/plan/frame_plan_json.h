@@ -1,6 +1,7 @@
 // The executed frame plan as render --json and bench.json report it (docs/architecture.md):
 // "plan": [{"pass": name, "kind": k, "view": v, "skipped": reason-or-null, "draws": [...]}, ...],
-// every planned pass in order, skipped ones with their reason.
+// every planned pass in order, skipped ones with their reason; "when" for a predicated pass, and
+// "writes_display": true for a composite that tone maps into the display image itself.
 #pragma once
 
 #include <string_view>

@@ -38,7 +38,8 @@ constexpr NameTable<BufferRole> kBufferRoleNames = {
     {BufferRole::kDepthReadback, "depth_readback"},
     {BufferRole::kAoReadback, "ao_readback"},
     {BufferRole::kCountsReadback, "counts_readback"},
-    {BufferRole::kListsReadback, "lists_readback"}};
+    {BufferRole::kListsReadback, "lists_readback"},
+    {BufferRole::kLodState, "lod_state"}};
 
 }  // namespace
 

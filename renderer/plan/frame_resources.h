@@ -51,6 +51,7 @@ enum class BufferRole : std::uint8_t {
     kAoReadback,      // a view's AO, read by the host
     kCountsReadback,  // shared: the culling counts, read by the host
     kListsReadback,   // shared: the draw lists, read by the host
+    kLodState,        // shared: each chunk's level of detail last frame (hysteresis)
 };
 std::string buffer_role_name(BufferRole role);
 

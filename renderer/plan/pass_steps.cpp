@@ -13,7 +13,11 @@ constexpr std::array<ViewId, 2> kEyeViews = {ViewId::kLeft, ViewId::kRight};
 
 // Resources carried from frame to frame: read before this frame writes them, or kept for the next.
 graph::Lifetime lifetime_of(const ResourceKey& key) {
-    if (key.is_buffer) return graph::Lifetime::kTransient;
+    // The culling pass reads each chunk's last level of detail before it writes this frame's.
+    if (key.is_buffer) {
+        return key.buffer == BufferRole::kLodState ? graph::Lifetime::kPersistent
+                                                   : graph::Lifetime::kTransient;
+    }
     switch (key.image) {
         case ImageRole::kShadowMap:        // kept while the light's region holds
         case ImageRole::kHistory:          // the next frame's history_previous
@@ -74,7 +78,8 @@ std::vector<Step> culling_steps(PlanResources& r) {
     std::vector<Step> steps;
     StepBuilder(add_step(steps, "frustum"))
         .use(r.shared(BufferRole::kDrawLists), Use::kStorageWrite)
-        .use(r.shared(BufferRole::kPredicates), Use::kStorageWrite);
+        .use(r.shared(BufferRole::kPredicates), Use::kStorageWrite)
+        .use(r.shared(BufferRole::kLodState), Use::kStorageWrite);
     return steps;
 }
 
@@ -127,7 +132,8 @@ std::vector<Step> occlusion_culling_steps(PlanResources& r) {
     StepBuilder(add_step(steps, "occlusion"))
         .use(r.shared(ImageRole::kMergedDepth), Use::kGeneralSampled)
         .use(r.shared(BufferRole::kDrawLists), Use::kStorageWrite)
-        .use(r.shared(BufferRole::kPredicates), Use::kStorageWrite);
+        .use(r.shared(BufferRole::kPredicates), Use::kStorageWrite)
+        .use(r.shared(BufferRole::kLodState), Use::kStorageRead);
     return steps;
 }
 
@@ -153,6 +159,18 @@ std::vector<Step> composite_steps(PlanResources& r, ViewId eye, bool velocity) {
         .use(r.image(eye, ImageRole::kHdr), Use::kColorBlend)
         .use(r.image(eye, ImageRole::kLinearDepth), Use::kColorBlend);
     if (velocity) step.use(r.image(eye, ImageRole::kVelocity), Use::kColorBlend);
+    return steps;
+}
+
+std::vector<Step> composite_display_steps(PlanResources& r, ViewId eye) {
+    std::vector<Step> steps;
+    StepBuilder(add_step(steps, "composite"))
+        .use(r.image(ViewId::kMono, ImageRole::kHdr), Use::kSampledFragment)
+        .use(r.image(ViewId::kMono, ImageRole::kLinearDepth), Use::kSampledFragment)
+        .use(r.image(eye, ImageRole::kHdr), Use::kSampledFragment)
+        .use(r.image(eye, ImageRole::kDepth), Use::kDepthTest)
+        .use(r.image(eye, ImageRole::kLinearDepth), Use::kColorBlend)
+        .use(r.image(eye, ImageRole::kDisplay), Use::kColorWrite);
     return steps;
 }
 
@@ -189,11 +207,13 @@ std::vector<Step> taa_steps(PlanResources& r, ViewId eye) {
     return steps;
 }
 
-std::vector<Step> tonemap_steps(PlanResources& r, ViewId view, ImageRole source) {
+std::vector<Step> tonemap_steps(PlanResources& r, ViewId view, ImageRole source,
+                                bool keeps_display) {
     std::vector<Step> steps;
     StepBuilder(add_step(steps, "tonemap"))
         .use(r.image(view, source), Use::kSampledFragment)
-        .use(r.image(view, ImageRole::kDisplay), Use::kColorWrite);
+        .use(r.image(view, ImageRole::kDisplay),
+             keeps_display ? Use::kColorBlend : Use::kColorWrite);
     return steps;
 }
 

@@ -43,13 +43,19 @@ std::vector<graph::Step> occlusion_culling_steps(PlanResources& r);
 // C's SSAO: estimate, filter-x, filter-y over C alone, then "apply" into C's HDR.
 std::vector<graph::Step> mono_ssao_steps(PlanResources& r);
 std::vector<graph::Step> composite_steps(PlanResources& r, ViewId eye, bool velocity);
+// The composite that tone maps into the eye's display image (PlannedPass::writes_display): it
+// reads the eye's HDR image instead of blending into it, and writes the display image whole.
+std::vector<graph::Step> composite_display_steps(PlanResources& r, ViewId eye);
 // The eyes' SSAO: per eye (estimate, filter-x, filter-y each) or stereo-consistent (visibility,
 // estimate, filter-x, filter-y, each once per eye over both eyes' images: "visibility-left",
 // "visibility-right", ...), then "left.apply" and
 // "right.apply"; near_only: hybrid, the apply is depth-tested against the eye's near content.
 std::vector<graph::Step> ssao_steps(PlanResources& r, bool stereo, bool near_only);
 std::vector<graph::Step> taa_steps(PlanResources& r, ViewId eye);
-std::vector<graph::Step> tonemap_steps(PlanResources& r, ViewId view, ImageRole source);
+// keeps_display: the display image is loaded (a predicated tone mapping keeps what the composite
+// wrote when the GPU skips its draw).
+std::vector<graph::Step> tonemap_steps(PlanResources& r, ViewId view, ImageRole source,
+                                       bool keeps_display = false);
 std::vector<graph::Step> depth_histogram_steps(PlanResources& r);
 
 struct ReadbackUses {

@@ -6,7 +6,7 @@ namespace monoplane::modes {
 
 namespace {
 
-// The named render modes (common/render_mode_names.h) as the renderer draws them: stereo's three
+// The named render modes (common/render_mode_names.h) as the renderer draws them: stereo's four
 // names are its stereo passes; the hybrid modes draw their near region in two passes by default.
 struct ModeOfName {
     NamedRenderMode named;
@@ -16,6 +16,7 @@ constexpr ModeOfName kModesOfNames[] = {
     {NamedRenderMode::Stereo, {Mode::kStereo, StereoPass::kTwoPasses}},
     {NamedRenderMode::StereoMultiview, {Mode::kStereo, StereoPass::kMultiview}},
     {NamedRenderMode::StereoGs, {Mode::kStereo, StereoPass::kGeometryShader}},
+    {NamedRenderMode::StereoInstanced, {Mode::kStereo, StereoPass::kInstanced}},
     {NamedRenderMode::Hybrid, {Mode::kHybrid, StereoPass::kTwoPasses}},
     {NamedRenderMode::HybridFarfield, {Mode::kHybridFarfield, StereoPass::kTwoPasses}},
 };
@@ -23,7 +24,8 @@ constexpr ModeOfName kModesOfNames[] = {
 // The choices' own names, for parse_* and *_name alike.
 constexpr NameTable<StereoPass> kStereoPassNames = {{StereoPass::kTwoPasses, "two"},
                                                     {StereoPass::kMultiview, "multiview"},
-                                                    {StereoPass::kGeometryShader, "gs"}};
+                                                    {StereoPass::kGeometryShader, "gs"},
+                                                    {StereoPass::kInstanced, "instanced"}};
 constexpr NameTable<DebugView> kDebugViewNames = {{DebugView::kNone, "none"},
                                                   {DebugView::kTintMono, "tint-mono"},
                                                   {DebugView::kStereoOnly, "stereo-only"},

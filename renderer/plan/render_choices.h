@@ -14,22 +14,24 @@ namespace monoplane::modes {
 enum class Mode { kStereo, kHybrid, kHybridFarfield };
 
 // How the eyes' forward passes are drawn, in stereo and in hybrid's near region: one pass per eye,
-// or one pass for both (papers/001's geometry-shader duplication, or VK_KHR_multiview) into the
-// layers of two-layer targets. All three draw the same images (tests/gpu/single_pass_stereo_test).
-enum class StereoPass { kTwoPasses, kMultiview, kGeometryShader };
-std::optional<StereoPass> parse_stereo_pass(const std::string& name);  // "two", "multiview", "gs"
+// or one pass for both (papers/001's geometry-shader duplication, VK_KHR_multiview, or instancing:
+// every draw's instance count doubled, the instance picking the eye) into the layers of two-layer
+// targets. All four draw the same images (tests/gpu/single_pass_stereo_test).
+enum class StereoPass { kTwoPasses, kMultiview, kGeometryShader, kInstanced };
+// "two", "multiview", "gs", "instanced"
+std::optional<StereoPass> parse_stereo_pass(const std::string& name);
 std::string stereo_pass_name(StereoPass pass);
 
-// A mode as the CLI, protocols and bench.json name it: stereo-multiview and stereo-gs are stereo
-// with a single-pass StereoPass (docs/single-pass-stereo.md).
+// A mode as the CLI, protocols and bench.json name it: stereo-multiview, stereo-gs and
+// stereo-instanced are stereo with a single-pass StereoPass (docs/single-pass-stereo.md).
 struct RenderModeChoice {
     Mode mode = Mode::kStereo;
     StereoPass stereo_pass = StereoPass::kTwoPasses;
 };
 // The names are common/render_mode_names.h's; "hybrid-auto" (the study's) is no choice here.
 std::optional<RenderModeChoice> parse_render_mode(const std::string& name);
-// "stereo", "stereo-multiview", "stereo-gs", "hybrid", "hybrid-farfield" (the hybrid modes'
-// stereo pass is not part of their name).
+// "stereo", "stereo-multiview", "stereo-gs", "stereo-instanced", "hybrid", "hybrid-farfield"
+// (the hybrid modes' stereo pass is not part of their name).
 std::string render_mode_name(const RenderModeChoice& choice);
 
 // Debug views of the hybrid modes.

@@ -11,4 +11,9 @@ namespace monoplane::quality {
 // levels. Fails for malformed images or images of different size or channel count.
 Result<int> max_channel_difference(const ImageView& a, const ImageView& b);
 
+// The mean absolute difference of the colour channels (alpha left out) over every pixel, in
+// 8-bit levels: how far an approximation (a level of detail) moves the image on average. Fails
+// as max_channel_difference does.
+Result<double> mean_channel_difference(const ImageView& a, const ImageView& b);
+
 }  // namespace monoplane::quality

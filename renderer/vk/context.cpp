@@ -112,8 +112,11 @@ void enable_features(DeviceChain& chain, const vk::raii::PhysicalDevice& device,
     enable10.geometryShader = f10.geometryShader;
     enable10.depthClamp = f10.depthClamp;
     enable10.samplerAnisotropy = f10.samplerAnisotropy;
+    enable10.independentBlend = f10.independentBlend;
     chain.get<vk::PhysicalDeviceVulkan11Features>().multiview =
         supported.get<vk::PhysicalDeviceVulkan11Features>().multiview;
+    chain.get<vk::PhysicalDeviceVulkan11Features>().shaderDrawParameters =
+        supported.get<vk::PhysicalDeviceVulkan11Features>().shaderDrawParameters;
     if (indirect_count_extension) {
         chain.get<vk::PhysicalDeviceHostQueryResetFeatures>().hostQueryReset = VK_TRUE;
         chain.get<vk::PhysicalDeviceTimelineSemaphoreFeatures>().timelineSemaphore =
@@ -238,7 +241,11 @@ std::optional<Error> Context::choose_device(const ContextOptions& options) {
     caps.pipeline_statistics = f10.pipelineStatisticsQuery;
     caps.geometry_shader = f10.geometryShader;
     caps.multiview = f11.multiview;
+    caps.independent_blend = f10.independentBlend;
+    caps.shader_draw_parameters = f11.shaderDrawParameters;
     const auto device_extensions = physical_device_.enumerateDeviceExtensionProperties();
+    caps.vertex_shader_layer =
+        has_extension(device_extensions, VK_EXT_SHADER_VIEWPORT_INDEX_LAYER_EXTENSION_NAME);
     caps.conditional_rendering =
         std::any_of(device_extensions.begin(), device_extensions.end(), [](const auto& extension) {
             return std::string_view(extension.extensionName) ==
@@ -265,6 +272,9 @@ std::optional<Error> Context::create_device(const ContextOptions& options) {
     std::vector<const char*> device_extension_names;
     if (indirect_count_extension) {
         device_extension_names.push_back(VK_KHR_DRAW_INDIRECT_COUNT_EXTENSION_NAME);
+    }
+    if (capabilities_.vertex_shader_layer) {
+        device_extension_names.push_back(VK_EXT_SHADER_VIEWPORT_INDEX_LAYER_EXTENSION_NAME);
     }
     if (auto missing = add_extensions(options.device_extensions, device_extensions, "device",
                                       device_extension_names)) {

@@ -58,6 +58,15 @@ struct DeviceCapabilities {
     bool pipeline_statistics = false;
     bool geometry_shader = false;
     bool multiview = false;
+    // Colour attachments written with different channel masks by one pipeline: the composite
+    // that writes the display image and keeps the eye's linear depth (renderer/passes/composite).
+    bool independent_blend = false;
+    // Instanced stereo: the vertex shader reads the draw's base instance (Vulkan 1.1's
+    // shaderDrawParameters) and writes gl_Layer (VK_EXT_shader_viewport_index_layer, enabled
+    // when offered; Vulkan 1.2's shaderOutputLayer would need the feature structure the device
+    // chain leaves out beside VK_KHR_draw_indirect_count).
+    bool shader_draw_parameters = false;
+    bool vertex_shader_layer = false;
     // VK_EXT_conditional_rendering: passes whose inputs the GPU culling left empty are skipped
     // without a round trip to the CPU (the draws and dispatches of such a pass do nothing).
     bool conditional_rendering = false;

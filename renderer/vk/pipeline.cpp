@@ -45,6 +45,9 @@ vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipe
         desc.blend.value_or(vk::PipelineColorBlendAttachmentState().setColorWriteMask(
             vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
             vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA)));
+    for (std::size_t i = 0; i < desc.color_write_masks.size() && i < blend.size(); ++i) {
+        blend[i].colorWriteMask = desc.color_write_masks[i];
+    }
     const vk::PipelineColorBlendStateCreateInfo color_blend({}, VK_FALSE, vk::LogicOp::eCopy,
                                                             blend);
     std::vector<vk::DynamicState> dynamic = {vk::DynamicState::eViewport,

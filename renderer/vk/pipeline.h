@@ -34,6 +34,9 @@ struct GraphicsPipelineDesc {
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
     // Blending of every colour attachment; none by default (the output replaces the target).
     std::optional<vk::PipelineColorBlendAttachmentState> blend;
+    // Per colour attachment, the channels written (an empty flag set leaves that attachment as
+    // it is); empty: every channel of every attachment.
+    std::vector<vk::ColorComponentFlags> color_write_masks;
     // VK_KHR_multiview: the views each draw covers (bit i: layer i); 0 without multiview. Must
     // equal the view mask of the rendering the pipeline is used in.
     std::uint32_t view_mask = 0;

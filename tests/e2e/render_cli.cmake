@@ -72,6 +72,31 @@ if(rc EQUAL 0 OR NOT log MATCHES "--depth-profile needs --json")
   message(FATAL_ERROR "--depth-profile without --json must fail naming it (${rc}): ${log}")
 endif()
 
+# Instanced stereo (docs/single-pass-stereo.md): both eyes in one pass, the stereo pair written,
+# two passes' images within 1/255.
+set(dir ${OUT}/instanced)
+file(REMOVE_RECURSE ${dir})
+execute_process(
+  COMMAND ${MONOPLANE} --validation render --scene spheres --mode stereo-instanced --hmd vive
+          --width 96 --height 108 --detail test --shadow-resolution 512 --compare-stereo
+          --out ${dir} --json
+  RESULT_VARIABLE rc OUTPUT_VARIABLE json ERROR_VARIABLE log)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "stereo-instanced render failed (${rc}):\n${log}")
+endif()
+foreach(file left.png right.png stats.json)
+  if(NOT EXISTS ${dir}/${file})
+    message(FATAL_ERROR "stereo-instanced render did not write ${file}")
+  endif()
+endforeach()
+string(JSON mode GET "${json}" mode)
+string(JSON pass GET "${json}" stereo_pass)
+string(JSON difference GET "${json}" max_channel_difference_vs_stereo)
+if(NOT mode STREQUAL "stereo-instanced" OR NOT pass STREQUAL "instanced" OR difference GREATER 1)
+  message(FATAL_ERROR "stereo-instanced: mode ${mode}, stereo_pass ${pass}, max channel "
+                      "difference ${difference}: ${json}")
+endif()
+
 # Hybrid with the comparison against stereo: mono.png, SSIM heat maps, the keys tools read.
 set(dir ${OUT}/hybrid)
 file(REMOVE_RECURSE ${dir})

@@ -257,6 +257,9 @@ TEST_F(TexturedScene, TexelsLandWhereTheirCoordinatesSayAndDecodeFromSrgb) {
     const auto hybrid_reference = render(reference_scene, Mode::kHybrid, 1.5);
     // Single-pass stereo draws what two passes draw.
     const auto gs = render(textured_scene, Mode::kStereo, 8.0, modes::StereoPass::kGeometryShader);
+    // Instanced stereo's right eye is instance 1: its texture is still the base instance's chunk's.
+    const auto instanced =
+        render(textured_scene, Mode::kStereo, 8.0, modes::StereoPass::kInstanced);
     for (Eye eye : {Eye::kLeft, Eye::kRight}) {
         const auto e = static_cast<std::size_t>(eye);
         for (int q = 0; q < 4; ++q) {
@@ -267,6 +270,8 @@ TEST_F(TexturedScene, TexelsLandWhereTheirCoordinatesSayAndDecodeFromSrgb) {
                                "hybrid quadrant " + std::to_string(q));
             expect_same_colour(patch(gs[e], eye, at), patch(textured[e], eye, at), 0.5,
                                "stereo-gs quadrant " + std::to_string(q));
+            expect_same_colour(patch(instanced[e], eye, at), patch(textured[e], eye, at), 0.5,
+                               "stereo-instanced quadrant " + std::to_string(q));
         }
     }
 }

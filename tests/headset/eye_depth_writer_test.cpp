@@ -233,6 +233,11 @@ TEST_P(EyeDepthBehindRenderer, WritesTheRenderersDepth) {
         !ctx().capabilities().geometry_shader) {
         GTEST_SKIP() << "the device has no geometry shader";
     }
+    if (c.stereo_pass == modes::StereoPass::kInstanced &&
+        !(ctx().capabilities().vertex_shader_layer &&
+          ctx().capabilities().shader_draw_parameters)) {
+        GTEST_SKIP() << "the device cannot write gl_Layer from a vertex shader";
+    }
     const scenes::Scene scene =
         scenes::generate_scene(scenes::SceneId::Beams, scenes::Detail::Test, 5);
     const hmd::HmdProfile vive = hmd::load_hmd_profile("vive").value_or_throw();
@@ -287,22 +292,23 @@ TEST_P(EyeDepthBehindRenderer, WritesTheRenderersDepth) {
 
 INSTANTIATE_TEST_SUITE_P(
     Configurations, EyeDepthBehindRenderer,
-    ::testing::Values(RendererCase{"StereoPlain", modes::Mode::kStereo, modes::AntiAliasing::kNone,
-                                   modes::StereoPass::kTwoPasses, false, false},
-                      RendererCase{"HybridPlain", modes::Mode::kHybrid, modes::AntiAliasing::kNone,
-                                   modes::StereoPass::kTwoPasses, false, false},
-                      RendererCase{"HybridTaaSsao", modes::Mode::kHybrid, modes::AntiAliasing::kTaa,
-                                   modes::StereoPass::kTwoPasses, true, false},
-                      RendererCase{"HybridReadBack", modes::Mode::kHybrid,
-                                   modes::AntiAliasing::kNone, modes::StereoPass::kTwoPasses, false,
-                                   true},
-                      RendererCase{"StereoMsaa4", modes::Mode::kStereo, modes::AntiAliasing::kMsaa4,
-                                   modes::StereoPass::kTwoPasses, false, false},
-                      RendererCase{"StereoMultiviewMsaa4", modes::Mode::kStereo,
-                                   modes::AntiAliasing::kMsaa4, modes::StereoPass::kMultiview,
-                                   false, false},
-                      RendererCase{"StereoGsTaa", modes::Mode::kStereo, modes::AntiAliasing::kTaa,
-                                   modes::StereoPass::kGeometryShader, false, false}),
+    ::testing::Values(
+        RendererCase{"StereoPlain", modes::Mode::kStereo, modes::AntiAliasing::kNone,
+                     modes::StereoPass::kTwoPasses, false, false},
+        RendererCase{"HybridPlain", modes::Mode::kHybrid, modes::AntiAliasing::kNone,
+                     modes::StereoPass::kTwoPasses, false, false},
+        RendererCase{"HybridTaaSsao", modes::Mode::kHybrid, modes::AntiAliasing::kTaa,
+                     modes::StereoPass::kTwoPasses, true, false},
+        RendererCase{"HybridReadBack", modes::Mode::kHybrid, modes::AntiAliasing::kNone,
+                     modes::StereoPass::kTwoPasses, false, true},
+        RendererCase{"StereoMsaa4", modes::Mode::kStereo, modes::AntiAliasing::kMsaa4,
+                     modes::StereoPass::kTwoPasses, false, false},
+        RendererCase{"StereoMultiviewMsaa4", modes::Mode::kStereo, modes::AntiAliasing::kMsaa4,
+                     modes::StereoPass::kMultiview, false, false},
+        RendererCase{"StereoGsTaa", modes::Mode::kStereo, modes::AntiAliasing::kTaa,
+                     modes::StereoPass::kGeometryShader, false, false},
+        RendererCase{"StereoInstancedMsaa4", modes::Mode::kStereo, modes::AntiAliasing::kMsaa4,
+                     modes::StereoPass::kInstanced, false, false}),
     [](const ::testing::TestParamInfo<RendererCase>& info) { return info.param.name; });
 
 }  // namespace

@@ -62,7 +62,8 @@ def main():
     assert len(rows) == len(runs), out
     for row in rows:
         cells = [c.strip() for c in row.strip("|").split("|")]
-        assert cells[6] == "1.00", row  # modelled / measured
+        assert cells[4] == "off", row  # runs without a "lod" key: full detail
+        assert cells[7] == "1.00", row  # modelled / measured
     # The largest modelled pass of the second run is C's forward pass.
     assert "mono.forward" in rows[1], rows[1]
     print("cost_model_test: 3 configurations, unit costs recovered")

@@ -47,8 +47,9 @@ const std::vector<Mode> kHybridModes = {Mode::kHybrid, Mode::kHybridFarfield};
 const std::vector<MonoCulling> kCullings = {MonoCulling::kNoOpt, MonoCulling::kDiscard,
                                             MonoCulling::kOcclusionCull};
 const std::vector<StereoPass> kStereoPasses = {StereoPass::kTwoPasses, StereoPass::kMultiview,
-                                               StereoPass::kGeometryShader};
-const std::vector<StereoPass> kSinglePasses = {StereoPass::kMultiview, StereoPass::kGeometryShader};
+                                               StereoPass::kGeometryShader, StereoPass::kInstanced};
+const std::vector<StereoPass> kSinglePasses = {StereoPass::kMultiview, StereoPass::kGeometryShader,
+                                               StereoPass::kInstanced};
 const std::vector<AntiAliasing> kAntiAliasings = {AntiAliasing::kNone, AntiAliasing::kTaa};
 
 // The passes of C that a frame with nothing beyond the mono plane leaves out.
@@ -64,6 +65,10 @@ const Names kHybridList = {
     "culling",           "shadow",       "left.forward",   "right.forward",   "depth_pyramid",
     "occlusion_culling", "mono.forward", "left.composite", "right.composite", "left.tonemap",
     "right.tonemap",     "mono.tonemap", "readback"};
+
+// Without predicates C always draws, so each composite tone maps into the display image whole
+// and the eyes' separate tone mappings are left out (PlannedPass::writes_display).
+const Names kFusedTonemaps = {"left.tonemap", "right.tonemap"};
 
 PlanOptions options_for(Mode mode, StereoPass stereo_pass = StereoPass::kTwoPasses) {
     PlanOptions options;
@@ -132,6 +137,46 @@ void expect_same_pass(const FramePlan& pa, const PlannedPass& a, const FramePlan
     EXPECT_EQ(pa.writes(a), pb.writes(b)) << context << ": " << a.name;
     EXPECT_EQ(a.when, b.when) << context << ": " << a.name;
     EXPECT_EQ(a.draws, b.draws) << context << ": " << a.name;
+}
+
+// A plan whose composites write the display images: what each reads and writes, when it runs,
+// what becomes of the tonemap, and that nothing after a composite but its eye's tonemap reads
+// the eye's HDR image.
+void expect_fused(const FramePlan& plan, bool conditional, const std::string& context) {
+    for (const std::string eye : {"left", "right"}) {
+        const PlannedPass* composite = plan.find(eye + ".composite");
+        const PlannedPass* tonemap = plan.find(eye + ".tonemap");
+        ASSERT_NE(composite, nullptr) << context;
+        ASSERT_NE(tonemap, nullptr) << context;
+        EXPECT_FALSE(composite->skipped.has_value()) << context;
+        EXPECT_TRUE(composite->writes_display) << context << " " << eye;
+        EXPECT_EQ(composite->when, conditional ? kMonoAny : kAlways) << context;
+        Names reads = {"mono.hdr", "mono.linear_depth", eye + ".hdr", eye + ".depth",
+                       eye + ".linear_depth"};
+        if (conditional) reads.emplace_back("predicates");
+        EXPECT_EQ(plan.reads(*composite), reads) << context;
+        EXPECT_EQ(plan.writes(*composite), (Names{eye + ".linear_depth", eye + ".display"}))
+            << context;
+        if (conditional) {
+            EXPECT_FALSE(tonemap->skipped.has_value()) << context;
+            EXPECT_EQ(tonemap->when, kMonoNone) << context;
+            // It loads the display image: when the GPU skips its draw, the composite's stays.
+            EXPECT_EQ(plan.reads(*tonemap), (Names{eye + ".hdr", eye + ".display", "predicates"}))
+                << context;
+        } else {
+            EXPECT_EQ(tonemap->skipped,
+                      "fused into " + eye + ".composite: nothing else reads " + eye + ".hdr")
+                << context;
+        }
+        bool after = false;
+        for (const PlannedPass* pass : plan.executed()) {
+            if (after && pass != tonemap) {
+                EXPECT_FALSE(contains(plan.reads(*pass), eye + ".hdr")) << context << pass->name;
+                EXPECT_FALSE(contains(plan.writes(*pass), eye + ".hdr")) << context << pass->name;
+            }
+            after = after || pass == composite;
+        }
+    }
 }
 
 TEST(FramePlan, StereoTwoPassesRunsCullingShadowForwardTonemapReadback) {
@@ -250,7 +295,7 @@ TEST(FramePlan, HybridWithoutConditionalRenderingPredicatesNothingAndEyesDrawNoS
         EXPECT_EQ(draws_of(plan, "right.forward"), eye) << mono_culling_name(culling);
     }
     const FramePlan plan = plan_of(options_for(Mode::kHybrid), frame_with(false), false);
-    EXPECT_EQ(plan.executed_names(), kHybridList);
+    EXPECT_EQ(plan.executed_names(), without(kHybridList, kFusedTonemaps));
     const Draws mono = {
         {DrawStep::kMaskHidden, kAlways}, {DrawStep::kChunks, kAlways}, {DrawStep::kSky, kAlways}};
     EXPECT_EQ(draws_of(plan, "mono.forward"), mono);
@@ -260,7 +305,9 @@ TEST(FramePlan, DiscardBuildsThePyramidButDoesNotOcclusionCull) {
     for (bool conditional : {false, true}) {
         const FramePlan plan = plan_of(options_for(Mode::kHybrid),
                                        frame_with(false, MonoCulling::kDiscard), conditional);
-        EXPECT_EQ(plan.executed_names(), without(kHybridList, {"occlusion_culling"}));
+        const Names fused = conditional ? Names{} : kFusedTonemaps;
+        EXPECT_EQ(plan.executed_names(),
+                  without(without(kHybridList, {"occlusion_culling"}), fused));
         EXPECT_TRUE(skipped_with_reason(plan, "occlusion_culling"));
         ASSERT_NE(plan.find("depth_pyramid"), nullptr);
         EXPECT_FALSE(plan.find("depth_pyramid")->skipped.has_value());
@@ -275,8 +322,9 @@ TEST(FramePlan, NoOptNeitherBuildsThePyramidNorMasks) {
     for (bool conditional : {false, true}) {
         const FramePlan plan = plan_of(options_for(Mode::kHybrid),
                                        frame_with(false, MonoCulling::kNoOpt), conditional);
+        const Names fused = conditional ? Names{} : kFusedTonemaps;
         EXPECT_EQ(plan.executed_names(),
-                  without(kHybridList, {"depth_pyramid", "occlusion_culling"}));
+                  without(without(kHybridList, {"depth_pyramid", "occlusion_culling"}), fused));
         EXPECT_TRUE(skipped_with_reason(plan, "depth_pyramid"));
         EXPECT_TRUE(skipped_with_reason(plan, "occlusion_culling"));
         const Draws mono = {{DrawStep::kChunks, kAlways},
@@ -295,7 +343,9 @@ TEST(FramePlan, HybridFarfieldHasNoPyramidNoOcclusionCullingButComposites) {
         for (bool conditional : {false, true}) {
             const FramePlan plan = plan_of(options_for(Mode::kHybridFarfield),
                                            frame_with(false, culling), conditional);
-            EXPECT_EQ(plan.executed_names(), expected) << mono_culling_name(culling);
+            EXPECT_EQ(plan.executed_names(),
+                      conditional ? expected : without(expected, kFusedTonemaps))
+                << mono_culling_name(culling);
             EXPECT_TRUE(skipped_with_reason(plan, "depth_pyramid"));
             EXPECT_TRUE(skipped_with_reason(plan, "occlusion_culling"));
             const Draws mono = {{DrawStep::kChunks, kAlways},
@@ -344,8 +394,12 @@ TEST(FramePlan, TaaResolvesEachEyeBeforeItsTonemap) {
         for (StereoPass stereo_pass : kStereoPasses) {
             for (bool conditional : {false, true}) {
                 PlanOptions options = options_for(mode, stereo_pass);
+                // TAA reads the eye's HDR image after the composite, so its tone mapping is a
+                // pass of its own, as separate_tonemap keeps it without TAA.
+                options.separate_tonemap = true;
                 const Names no_taa =
                     plan_of(options, frame_with(false), conditional).executed_names();
+                options.separate_tonemap = false;
                 options.anti_aliasing = AntiAliasing::kTaa;
                 const FramePlan plan = plan_of(options, frame_with(false), conditional);
                 const Names names = plan.executed_names();
@@ -549,6 +603,116 @@ TEST(FramePlan, MonoTonemapOnlyWhenReadBack) {
     EXPECT_TRUE(contains(read.reads(*read.find("readback")), "mono.display"));
 }
 
+// One full-screen pass per eye (issue 33): where nothing but the eye's tone mapping reads its HDR
+// image after the composite, the composite writes the display image itself. With predicates the
+// tonemap stays, if mono-none (the GPU skips the composite exactly then), keeping what the
+// composite wrote otherwise; without them C always draws and the tonemap is left out, saying why.
+TEST(FramePlan, CompositeWritesTheDisplayWhereOnlyTheTonemapReadsTheHdr) {
+    for (Mode mode : kHybridModes) {
+        for (StereoPass stereo_pass : kStereoPasses) {
+            for (MonoCulling culling : kCullings) {
+                for (DebugView debug :
+                     {DebugView::kNone, DebugView::kTintMono, DebugView::kStereoOnly,
+                      DebugView::kMonoOnly, DebugView::kRouting}) {
+                    for (bool conditional : {false, true}) {
+                        for (bool extras : {false, true}) {
+                            // What reads the eyes' linear depth and display images changes
+                            // nothing: the composite still writes the linear depth.
+                            PlanOptions options = options_for(mode, stereo_pass);
+                            options.read_back = !extras;
+                            options.read_back_depth = extras;
+                            options.depth_histogram = extras;
+                            options.depth_prepass = extras;
+                            PlanFrame frame = frame_with(false, culling);
+                            frame.debug = debug;
+                            const std::string context =
+                                mode_name(mode) + " " + stereo_pass_name(stereo_pass) + " " +
+                                mono_culling_name(culling) + " debug " +
+                                std::to_string(static_cast<int>(debug)) + " conditional " +
+                                std::to_string(conditional) + " extras " + std::to_string(extras);
+                            expect_fused(plan_of(options, frame, conditional), conditional,
+                                         context);
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+// TAA (it resolves the eye's HDR image) and SSAO (it blends its AO into it) read the linear colour
+// after the composite: the tone mapping stays a pass of its own, as separate_tonemap keeps it, and
+// as on a device without independentBlend (the composite could not leave the linear depth alone).
+TEST(FramePlan, TaaSsaoOrSeparateTonemapKeepTheToneMappingAPassOfItsOwn) {
+    for (Mode mode : kHybridModes) {
+        for (StereoPass stereo_pass : kStereoPasses) {
+            for (bool conditional : {false, true}) {
+                for (int reader = 0; reader < 5; ++reader) {
+                    PlanOptions options = options_for(mode, stereo_pass);
+                    options.anti_aliasing = reader == 0 ? AntiAliasing::kTaa : AntiAliasing::kNone;
+                    options.ssao = reader == 1 || reader == 2;
+                    options.ssao_stereo = reader == 2;
+                    options.separate_tonemap = reader == 3;
+                    const FramePlan plan = plan_frame(options, frame_with(false),
+                                                      PlanDevice{conditional, reader != 4});
+                    const std::string context =
+                        mode_name(mode) + " " + stereo_pass_name(stereo_pass) + " reader " +
+                        std::to_string(reader) + " conditional " + std::to_string(conditional);
+                    for (const std::string eye : {"left", "right"}) {
+                        const PlannedPass* composite = plan.find(eye + ".composite");
+                        const PlannedPass* tonemap = plan.find(eye + ".tonemap");
+                        ASSERT_NE(composite, nullptr) << context;
+                        ASSERT_NE(tonemap, nullptr) << context;
+                        EXPECT_FALSE(composite->writes_display) << context;
+                        EXPECT_TRUE(contains(plan.writes(*composite), eye + ".hdr")) << context;
+                        EXPECT_FALSE(contains(plan.writes(*composite), eye + ".display"))
+                            << context;
+                        EXPECT_FALSE(tonemap->skipped.has_value()) << context;
+                        EXPECT_EQ(tonemap->when, kAlways) << context;
+                        EXPECT_EQ(plan.reads(*tonemap),
+                                  Names{eye + (reader == 0 ? ".history" : ".hdr")})
+                            << context;
+                    }
+                }
+            }
+        }
+    }
+    // separate_tonemap is the plan as it was before the composite could write the display image.
+    for (bool conditional : {false, true}) {
+        PlanOptions options = options_for(Mode::kHybrid);
+        options.separate_tonemap = true;
+        EXPECT_EQ(plan_of(options, frame_with(false), conditional).executed_names(), kHybridList);
+    }
+}
+
+// Nothing beyond the plane, or stereo: no composite, so nothing to fuse; the flag changes nothing.
+TEST(FramePlan, WithoutACompositeTheTonemapAlwaysRunsAndSeparateTonemapChangesNothing) {
+    for (Mode mode : kModes) {
+        for (bool conditional : {false, true}) {
+            for (bool mono_skipped : {false, true}) {
+                if (mode != Mode::kStereo && !mono_skipped) continue;
+                PlanOptions options = options_for(mode);
+                const FramePlan plan = plan_of(options, frame_with(mono_skipped), conditional);
+                options.separate_tonemap = true;
+                const FramePlan separate = plan_of(options, frame_with(mono_skipped), conditional);
+                const std::string context =
+                    mode_name(mode) + " conditional " + std::to_string(conditional);
+                ASSERT_EQ(plan.executed_names(), separate.executed_names()) << context;
+                for (std::size_t i = 0; i < plan.executed().size(); ++i) {
+                    expect_same_pass(plan, *plan.executed()[i], separate, *separate.executed()[i],
+                                     context);
+                }
+                for (const std::string eye : {"left", "right"}) {
+                    const PlannedPass* tonemap = plan.find(eye + ".tonemap");
+                    ASSERT_NE(tonemap, nullptr) << context;
+                    EXPECT_FALSE(tonemap->skipped.has_value()) << context;
+                    EXPECT_EQ(tonemap->when, kAlways) << context;
+                }
+            }
+        }
+    }
+}
+
 // --mono-plane auto: both eyes' final depth is counted after everything that writes it (the
 // composites, SSAO's apply, TAA reads it) and before the read-back; nothing else changes.
 TEST(FramePlan, AutoMonoPlaneCountsTheEyesFinalDepthBeforeTheReadBack) {
@@ -634,7 +798,7 @@ bool persistent_input(const std::string& resource, const FramePlan& plan) {
 
 TEST(FramePlan, EveryReadIsPrecededByAWriteOverAllOptions) {
     const std::vector<Combination> all = all_combinations();
-    EXPECT_EQ(all.size(), 3u * 3 * 2 * 2 * 3 * 2 * 2 * 2 * 2 * 2 * 3);
+    EXPECT_EQ(all.size(), 3u * 3 * 2 * 2 * 4 * 2 * 2 * 2 * 2 * 2 * 3);
     for (const Combination& c : all) {
         const FramePlan plan = plan_of(c.options, c.frame, c.conditional);
         std::set<std::string> written;
@@ -744,6 +908,8 @@ std::string plan_text(const FramePlan& plan) {
             if (pass.when != GpuPredicate::kAlways) {
                 details.push_back("if " + gpu_predicate_name(pass.when));
             }
+            if (pass.writes_display)
+                details.push_back("writes " + view_name(pass.view) + ".display");
             if (!pass.draws.empty()) {
                 std::string draws = "draws:";
                 for (const PlannedDraw& draw : pass.draws) {
@@ -776,6 +942,8 @@ TEST(FramePlanPrint, ArchitecturePageShowsThePlansAsTheCodeMakesThem) {
                                  PlanFrame{}, conditional)},
         {"hybrid, m = 8, occlusion-cull, conditional rendering",
          plan_frame(options_for(Mode::kHybrid), frame_with(false), conditional)},
+        {"hybrid, m = 8, occlusion-cull, without conditional rendering",
+         plan_frame(options_for(Mode::kHybrid), frame_with(false), PlanDevice{false})},
         {"hybrid, m = far (mono_skipped)",
          plan_frame(options_for(Mode::kHybrid), frame_with(true), conditional)},
         {"hybrid, m = 8, occlusion-cull, TAA + SSAO, conditional rendering",

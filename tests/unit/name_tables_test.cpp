@@ -34,7 +34,8 @@ TEST(NameTable, ReadsBothWays) {
 
 TEST(RenderModeNames, EveryNamedModeRoundTripsAndIsDistinct) {
     EXPECT_EQ(joined_names(kRenderModeNames),
-              "stereo, stereo-multiview, stereo-gs, hybrid, hybrid-farfield, hybrid-auto");
+              "stereo, stereo-multiview, stereo-gs, stereo-instanced, hybrid, hybrid-farfield, "
+              "hybrid-auto");
     std::set<std::string_view> names;
     for (const auto& [mode, name] : kRenderModeNames) {
         EXPECT_EQ(parse_name(kRenderModeNames, name), mode) << name;
@@ -65,6 +66,8 @@ TEST(RenderModeNames, TheRenderersChoicesAreTheNamedModes) {
     const RenderModeChoice stereo_gs{Mode::kStereo, StereoPass::kGeometryShader};
     EXPECT_EQ(render_mode_name(stereo_gs), "stereo-gs");
     EXPECT_EQ(render_mode_name({Mode::kStereo, StereoPass::kMultiview}), "stereo-multiview");
+    EXPECT_EQ(render_mode_name({Mode::kStereo, StereoPass::kInstanced}), "stereo-instanced");
+    EXPECT_EQ(render_mode_name({Mode::kHybrid, StereoPass::kInstanced}), "hybrid");
     EXPECT_EQ(render_mode_name({Mode::kHybrid, StereoPass::kMultiview}), "hybrid");
     EXPECT_EQ(render_mode_name({Mode::kHybridFarfield, StereoPass::kTwoPasses}), "hybrid-farfield");
     for (const auto& [named, name] : kRenderModeNames) {
@@ -77,8 +80,8 @@ TEST(RenderModeNames, TheRenderersChoicesAreTheNamedModes) {
         EXPECT_EQ(render_mode_name(*choice), name);
     }
     for (Mode mode : {Mode::kStereo, Mode::kHybrid, Mode::kHybridFarfield}) {
-        for (StereoPass pass :
-             {StereoPass::kTwoPasses, StereoPass::kMultiview, StereoPass::kGeometryShader}) {
+        for (StereoPass pass : {StereoPass::kTwoPasses, StereoPass::kMultiview,
+                                StereoPass::kGeometryShader, StereoPass::kInstanced}) {
             const std::string name = render_mode_name({mode, pass});
             EXPECT_TRUE(parse_name(kRenderModeNames, name).has_value()) << name;
             EXPECT_EQ(parse_render_mode(name)->mode, mode) << name;
@@ -87,6 +90,11 @@ TEST(RenderModeNames, TheRenderersChoicesAreTheNamedModes) {
     }
     EXPECT_EQ(mode_name(Mode::kHybridFarfield), "hybrid-farfield");
     EXPECT_EQ(parse_mode("stereo-gs"), std::nullopt);  // a render mode, not a Mode
+    EXPECT_EQ(parse_mode("stereo-instanced"), std::nullopt);
+    const auto instanced = parse_render_mode("stereo-instanced");
+    ASSERT_TRUE(instanced.has_value());
+    EXPECT_EQ(instanced->mode, Mode::kStereo);
+    EXPECT_EQ(instanced->stereo_pass, StereoPass::kInstanced);
     EXPECT_EQ(parse_mode("hybrid-auto"), std::nullopt);
     EXPECT_EQ(parse_render_mode("Stereo"), std::nullopt);
 }
@@ -102,6 +110,9 @@ TEST(RenderModeNames, AntiAliasingRoundTripsThroughTheSharedTable) {
     EXPECT_EQ(parse_anti_aliasing("msaa16"), std::nullopt);
     EXPECT_EQ(mono_culling_name(MonoCulling::kOcclusionCull), "occlusion-cull");
     EXPECT_EQ(parse_stereo_pass("gs"), StereoPass::kGeometryShader);
+    EXPECT_EQ(parse_stereo_pass("instanced"), StereoPass::kInstanced);
+    EXPECT_EQ(stereo_pass_name(StereoPass::kInstanced), "instanced");
+    EXPECT_EQ(parse_stereo_pass("Instanced"), std::nullopt);
 }
 
 // The stored event names: one per kind, each read back as its kind; screen kinds after trial kinds.

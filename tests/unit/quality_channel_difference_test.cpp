@@ -37,5 +37,15 @@ TEST(ChannelDifference, RefusesImagesOfDifferentShape) {
     EXPECT_FALSE(max_channel_difference(view_of(two, 2, 1), view_of(short_buffer, 2, 1)).ok());
 }
 
+// Colour channels only: alpha differs by 255 here and must not count. (1 + 53 + 3 + 0 + 0 + 0)
+// over six colour channels.
+TEST(ChannelDifference, TheMeanOverTheColourChannels) {
+    const std::vector<std::uint8_t> a = {10, 20, 30, 255, 200, 0, 0, 255};
+    const std::vector<std::uint8_t> b = {11, 20, 30, 0, 147, 3, 0, 0};
+    EXPECT_DOUBLE_EQ(mean_channel_difference(view_of(a, 2, 1), view_of(b, 2, 1)).value_or_throw(),
+                     57.0 / 6.0);
+    EXPECT_FALSE(mean_channel_difference(view_of(a, 2, 1), view_of(a, 1, 2)).ok());
+}
+
 }  // namespace
 }  // namespace monoplane::quality

@@ -19,12 +19,16 @@ TEST(RenderMode, CliNamesAreTheDesignsNames) {
     EXPECT_EQ(render_mode_name(RenderMode::Stereo), "stereo");
     EXPECT_EQ(render_mode_name(RenderMode::StereoMultiview), "stereo-multiview");
     EXPECT_EQ(render_mode_name(RenderMode::StereoGs), "stereo-gs");
+    EXPECT_EQ(render_mode_name(RenderMode::StereoInstanced), "stereo-instanced");
     EXPECT_EQ(render_mode_name(RenderMode::Hybrid), "hybrid");
     EXPECT_EQ(render_mode_name(RenderMode::HybridFarfield), "hybrid-farfield");
 }
 
 TEST(RenderMode, EveryNameRoundTrips) {
-    EXPECT_EQ(all_render_modes().size(), 6u);
+    EXPECT_EQ(all_render_modes().size(), 7u);
+    const Result<RenderMode> instanced = parse_render_mode("stereo-instanced");
+    ASSERT_TRUE(instanced.ok()) << instanced.error().message;
+    EXPECT_EQ(*instanced, RenderMode::StereoInstanced);
     EXPECT_EQ(render_mode_name(RenderMode::HybridAuto), "hybrid-auto");
     std::set<std::string_view> names;
     for (RenderMode mode : all_render_modes()) {
@@ -37,12 +41,13 @@ TEST(RenderMode, EveryNameRoundTrips) {
 }
 
 TEST(RenderMode, UnknownNameListsTheValidOnes) {
-    for (std::string_view bad : {"Stereo", "mono", "", "hybrid ", "stereo_gs"}) {
+    for (std::string_view bad : {"Stereo", "mono", "", "hybrid ", "stereo_gs", "instanced"}) {
         const Result<RenderMode> parsed = parse_render_mode(bad);
         ASSERT_FALSE(parsed.ok()) << bad;
         const std::string& message = parsed.error().message;
         EXPECT_NE(message.find("'" + std::string(bad) + "'"), std::string::npos) << message;
-        EXPECT_NE(message.find("stereo, stereo-multiview, stereo-gs, hybrid, hybrid-farfield"),
+        EXPECT_NE(message.find("stereo, stereo-multiview, stereo-gs, stereo-instanced, hybrid, "
+                               "hybrid-farfield"),
                   std::string::npos)
             << message;
     }
@@ -73,6 +78,8 @@ TEST(Condition, SceneNames) {
 TEST(Condition, Describe) {
     EXPECT_EQ(describe({"spheres", RenderMode::Hybrid, 8.0}), "spheres / hybrid / m = 8 m");
     EXPECT_EQ(describe({"beams", RenderMode::StereoGs, 39.5}), "beams / stereo-gs / m = 39.5 m");
+    EXPECT_EQ(describe({"spheres", RenderMode::StereoInstanced, 3.0}),
+              "spheres / stereo-instanced / m = 3 m");
 }
 
 TEST(Condition, UnknownSceneIsRefused) {

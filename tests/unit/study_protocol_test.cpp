@@ -12,6 +12,7 @@
 #include <fstream>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "study/protocol.h"
@@ -72,6 +73,26 @@ TEST(StudyProtocol, ValidTextParsesWithEveryValue) {
     EXPECT_EQ(p->trials_per_session(), 15u);
     EXPECT_EQ(p->source, "test.toml");
     EXPECT_EQ(p->text, kValidProtocol);
+}
+
+// Every single-pass stereo mode may be an alternative, as stereo is.
+TEST(StudyProtocol, SinglePassStereoModesAreAlternatives) {
+    const std::pair<std::string, RenderMode> modes[] = {
+        {"stereo-multiview", RenderMode::StereoMultiview},
+        {"stereo-gs", RenderMode::StereoGs},
+        {"stereo-instanced", RenderMode::StereoInstanced}};
+    for (const auto& [name, mode] : modes) {
+        const Result<Protocol> p = parse_protocol(
+            "name = \"single pass\"\n"
+            "scenes = [\"beams\"]\n"
+            "mono_planes = [8]\n"
+            "alternatives = [\"" +
+                name + "\", \"hybrid\"]\n",
+            "single-pass.toml");
+        ASSERT_TRUE(p.ok()) << name << ": " << p.error().message;
+        EXPECT_EQ(p->alternatives[0], mode) << name;
+        EXPECT_EQ(p->alternatives[1], RenderMode::Hybrid);
+    }
 }
 
 TEST(StudyProtocol, OptionalKeysTakeTheirDefaults) {
@@ -426,7 +447,7 @@ const MalformedCase kMalformedCases[] = {
      "\"hybrid\"]",
      "\"hybird\"]",
      {"test.toml:4:", "'alternatives'", "'hybird'",
-      "stereo, stereo-multiview, stereo-gs, hybrid, hybrid-farfield"}},
+      "stereo, stereo-multiview, stereo-gs, stereo-instanced, hybrid, hybrid-farfield"}},
     {"identical alternatives",
      "[\"stereo\", \"hybrid\"]",
      "[\"hybrid\", \"hybrid\"]",

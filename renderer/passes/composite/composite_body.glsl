@@ -1,20 +1,21 @@
-// The body of composite.frag and composite_velocity.frag (compiled twice).
-// Fills an eye's pixels that no near (stereo) content covered with the mono camera C's image
-// (Fink et al. 2019, Sect. 4.2), and writes their linear depth. The eye's far plane is the mono
-// plane m, so such pixels still hold the cleared depth; the pipeline's depth test selects them.
+// The body of composite.frag, composite_velocity.frag and composite_display.frag (compiled three
+// times). Fills an eye's pixels that no near (stereo) content covered with the mono camera C's
+// image (Fink et al. 2019, Sect. 4.2), and writes their linear depth. The eye's far plane is the
+// mono plane m, so such pixels still hold the cleared depth; the pipeline's depth test selects
+// them. With MONOPLANE_WRITE_DISPLAY the colour is tone mapped into the eye's display image
+// instead of its HDR image (one full-screen pass per eye: CompositePass::record_display).
 #include "renderer/passes/shared/view_constants.h"
+#ifdef MONOPLANE_WRITE_DISPLAY
+#include "renderer/passes/tonemap/tone_mapping.glsl"
+#endif
+
+#include "renderer/passes/composite/composite_push.glsl"
 
 layout(set = 0, binding = 0) uniform sampler2D mono_hdr;           // bilinear, clamped
 layout(set = 0, binding = 1) uniform sampler2D mono_linear_depth;  // read texel-exact
-layout(push_constant) uniform Push {
-    mat4 eye_to_mono;       // M_{E->C} of eq. 5, eye clip space -> C's clip space
-    vec4 uv_limits;         // xy: C's uv sub-range (eq. 8 viewport / allocation); zw: half a texel
-    vec4 eye_extent_mode;   // xy: eye size in pixels; z: mapping; w: tint of the mono region
-    vec4 pixel_offset;      // xy: integer offset of the engine-style copy (papers/003)
-    vec4 velocity_scale;    // xy: C's NDC velocity -> the eye's, 1/2 S of eq. 9 (diagonal)
-};
 
 layout(location = 0) in vec2 in_uv;  // pixel centre / eye size
+// The eye's HDR colour, or with MONOPLANE_WRITE_DISPLAY its display image (tone mapped).
 layout(location = 0) out vec4 out_color;
 layout(location = 1) out float out_linear_depth;
 #ifdef MONOPLANE_WRITE_VELOCITY
@@ -50,14 +51,24 @@ void main() {
         mono_texel = texel;
     } else if (mapping == kMapOffsetCopy) {
         ivec2 size = textureSize(mono_hdr, 0);
-        ivec2 texel = clamp(ivec2(gl_FragCoord.xy) + ivec2(pixel_offset.xy), ivec2(0), size - 1);
+        ivec2 texel = clamp(ivec2(gl_FragCoord.xy) + ivec2(offset_exposure.xy), ivec2(0), size - 1);
         color = texelFetch(mono_hdr, texel, 0).rgb;
         depth = texelFetch(mono_linear_depth, texel, 0).r;
         mono_texel = texel;
     }
     // Debug view "mono region tinted": a cool tint over everything C contributed.
     color = mix(color, color * vec3(0.45, 0.7, 1.6) + vec3(0.0, 0.02, 0.08), eye_extent_mode.w);
+#ifdef MONOPLANE_WRITE_DISPLAY
+    // The separate passes store this colour in the eye's half-float HDR image before tone mapping
+    // it. Cutting the mantissa to a half float's 10 bits rounds as that store does on llvmpipe
+    // (toward zero), so the display images are theirs bit for bit there; a device whose store
+    // rounds to nearest differs by at most one half-float step, under 1/255 after tone mapping.
+    // (The colours here are far inside the half-float range: no overflow or subnormal to mimic.)
+    vec3 stored = uintBitsToFloat(floatBitsToUint(color) & 0xFFFFE000u);
+    out_color = vec4(monoplane_tone_map(stored, offset_exposure.z), 1.0);
+#else
     out_color = vec4(color, 1.0);
+#endif
     out_linear_depth = depth;
 #ifdef MONOPLANE_WRITE_VELOCITY
     // Eq. 9: v_{L,R} = 1/2 S v_C, C's velocity carried into the eye's NDC, never interpolated.

@@ -17,20 +17,46 @@ const std::uint32_t kCompositeFrag[] = {
 const std::uint32_t kCompositeVelocityFrag[] = {
 #include "composite_velocity.frag.spv.inc"
 };
+const std::uint32_t kCompositeDisplayFrag[] = {
+#include "composite_display.frag.spv.inc"
+};
+const std::uint32_t kCompositeNearFrag[] = {
+#include "composite_near.frag.spv.inc"
+};
 
 // The shader's push-constant block, std430.
 struct PushBlock {
     glm::mat4 eye_to_mono;
     glm::vec4 uv_limits;
     glm::vec4 eye_extent_mode;
-    glm::vec4 pixel_offset;
+    glm::vec4 offset_exposure;
     glm::vec4 velocity_scale;
 };
-static_assert(sizeof(PushBlock) == 128, "must match composite_body.glsl");
+static_assert(sizeof(PushBlock) == 128, "must match composite_push.glsl");
+
+constexpr vk::ColorComponentFlags kAllChannels =
+    vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+    vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA;
+
+// Begins rendering into `colors` over the eye's depth, read only (the composite's depth test
+// against the cleared far value), and sets the viewport to the whole extent.
+void begin_over_eye_depth(const vk::raii::CommandBuffer& cmd,
+                          vk::ArrayProxy<const vk::RenderingAttachmentInfo> colors,
+                          const vk_core::Image& eye_depth, vk::Extent2D extent) {
+    const vk::RenderingAttachmentInfo depth(
+        eye_depth.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
+        vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
+    cmd.beginRendering(vk::RenderingInfo()
+                           .setRenderArea(vk::Rect2D({0, 0}, extent))
+                           .setLayerCount(1)
+                           .setColorAttachments(colors)
+                           .setPDepthAttachment(&depth));
+    vk_core::set_viewport_and_scissor(cmd, extent);
+}
 
 }  // namespace
 
-CompositePass::CompositePass(const vk_core::Context& ctx, bool velocity)
+CompositePass::CompositePass(const vk_core::Context& ctx, bool velocity, bool display)
     : ctx_(ctx),
       velocity_(velocity),
       bilinear_(vk_core::make_clamped_sampler(ctx, vk::Filter::eLinear)),
@@ -66,6 +92,51 @@ CompositePass::CompositePass(const vk_core::Context& ctx, bool velocity)
     behind_near_content_ = vk_core::make_graphics_pipeline(ctx, desc);
     desc.depth_test = false;
     everywhere_ = vk_core::make_graphics_pipeline(ctx, desc);
+    assert(!(velocity && display));
+    if (display) make_display_pipelines(desc);
+}
+
+void CompositePass::make_display_pipelines(const vk_core::GraphicsPipelineDesc& composite_desc) {
+    const vk::DescriptorSetLayoutBinding binding(0, vk::DescriptorType::eCombinedImageSampler, 1,
+                                                 vk::ShaderStageFlagBits::eFragment);
+    eye_set_layout_ = vk::raii::DescriptorSetLayout(ctx_.device(),
+                                                    vk::DescriptorSetLayoutCreateInfo({}, binding));
+    const std::array set_layouts = {*set_layout_, *eye_set_layout_};
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(PushBlock));
+    display_layout_ = vk::raii::PipelineLayout(ctx_.device(),
+                                               vk::PipelineLayoutCreateInfo({}, set_layouts, push));
+    const vk::raii::ShaderModule composite = vk_core::make_shader(ctx_, kCompositeDisplayFrag);
+    const vk::raii::ShaderModule near = vk_core::make_shader(ctx_, kCompositeNearFrag);
+    vk_core::GraphicsPipelineDesc desc = composite_desc;
+    desc.layout = *display_layout_;
+    desc.fragment = *composite;
+    desc.color_formats = {TonemapPass::kDisplayFormat, ForwardPass::kLinearDepthFormat};
+    desc.depth_test = true;
+    display_behind_near_content_ = vk_core::make_graphics_pipeline(ctx_, desc);
+    desc.depth_test = false;
+    display_everywhere_ = vk_core::make_graphics_pipeline(ctx_, desc);
+    // The complement of the composite's test: every pixel the eye drew. Its linear depth is the
+    // eye's own and stays; only the display image is written.
+    desc.fragment = *near;
+    desc.depth_test = true;
+    desc.depth_compare = vk::CompareOp::eNotEqual;
+    desc.color_write_masks = {kAllChannels, vk::ColorComponentFlags()};
+    near_display_ = vk_core::make_graphics_pipeline(ctx_, desc);
+}
+
+void CompositePass::push(const vk::raii::CommandBuffer& cmd, vk::PipelineLayout layout,
+                         vk::Extent2D extent, const CompositeParams& params, float exposure) const {
+    const glm::vec2 half_texel = 0.5f / params.mono_allocation;
+    const PushBlock block{
+        params.eye_to_mono,
+        glm::vec4(params.uv_scale, half_texel),
+        glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
+                  static_cast<float>(params.mapping), params.tint),
+        glm::vec4(static_cast<float>(params.pixel_offset.x),
+                  static_cast<float>(params.pixel_offset.y), exposure, 0.0f),
+        glm::vec4(params.velocity_scale, 0.0f, 0.0f),
+    };
+    cmd.pushConstants<PushBlock>(layout, vk::ShaderStageFlagBits::eFragment, 0, block);
 }
 
 void CompositePass::record(const vk::raii::CommandBuffer& cmd, const CompositeTargets& targets,
@@ -80,31 +151,56 @@ void CompositePass::record(const vk::raii::CommandBuffer& cmd, const CompositeTa
                             vk::ResolveModeFlagBits::eNone, nullptr, vk::ImageLayout::eUndefined,
                             vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
     }
-    const vk::RenderingAttachmentInfo depth(
-        targets.depth.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
-        vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
-    cmd.beginRendering(vk::RenderingInfo()
-                           .setRenderArea(vk::Rect2D({0, 0}, extent))
-                           .setLayerCount(1)
-                           .setColorAttachments(colors)
-                           .setPDepthAttachment(&depth));
-    vk_core::set_viewport_and_scissor(cmd, extent);
+    begin_over_eye_depth(cmd, colors, targets.depth, extent);
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
                      params.cover_all_pixels ? *everywhere_ : *behind_near_content_);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, mono_set, {});
-    const glm::vec2 half_texel = 0.5f / params.mono_allocation;
-    const PushBlock push{
-        params.eye_to_mono,
-        glm::vec4(params.uv_scale, half_texel),
-        glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
-                  static_cast<float>(params.mapping), params.tint),
-        glm::vec4(static_cast<float>(params.pixel_offset.x),
-                  static_cast<float>(params.pixel_offset.y), 0.0f, 0.0f),
-        glm::vec4(params.velocity_scale, 0.0f, 0.0f),
-    };
-    cmd.pushConstants<PushBlock>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, push);
+    push(cmd, *layout_, extent, params, 0.0f);
     with_predicate(cmd, params.when, [&] { cmd.draw(3, 1, 0, 0); });
     cmd.endRendering();
+}
+
+void CompositePass::record_display(const vk::raii::CommandBuffer& cmd,
+                                   const CompositeDisplayTargets& targets,
+                                   vk::DescriptorSet mono_set, vk::DescriptorSet eye_set,
+                                   const CompositeParams& params,
+                                   const TonemapParams& tonemap) const {
+    assert(writes_display());
+    const vk::Extent2D extent = targets.display.desc().extent;
+    // Every pixel is written by one of the two draws: the display image's contents need no load.
+    const std::array colors = {
+        vk::RenderingAttachmentInfo(
+            targets.display.view(), vk::ImageLayout::eColorAttachmentOptimal,
+            vk::ResolveModeFlagBits::eNone, nullptr, vk::ImageLayout::eUndefined,
+            vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore),
+        vk::RenderingAttachmentInfo(
+            targets.linear_depth.view(), vk::ImageLayout::eColorAttachmentOptimal,
+            vk::ResolveModeFlagBits::eNone, nullptr, vk::ImageLayout::eUndefined,
+            vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore)};
+    begin_over_eye_depth(cmd, colors, targets.depth, extent);
+    const std::array sets = {mono_set, eye_set};
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *display_layout_, 0, sets, {});
+    push(cmd, *display_layout_, extent, params, tonemap.exposure);
+    with_predicate(cmd, params.when, [&] {
+        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, params.cover_all_pixels
+                                                               ? *display_everywhere_
+                                                               : *display_behind_near_content_);
+        cmd.draw(3, 1, 0, 0);
+        if (params.cover_all_pixels) return;
+        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *near_display_);
+        cmd.draw(3, 1, 0, 0);
+    });
+    cmd.endRendering();
+}
+
+vk_core::DescriptorSet CompositePass::make_eye_input(const vk_core::Image& eye_hdr) const {
+    assert(writes_display());
+    const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1)};
+    vk_core::DescriptorSet set(ctx_, *eye_set_layout_, sizes);
+    const std::array images = {vk::DescriptorImageInfo(*nearest_, eye_hdr.view(),
+                                                       vk::ImageLayout::eShaderReadOnlyOptimal)};
+    vk_core::write_sampled_images(ctx_, *set, images);
+    return set;
 }
 
 vk_core::DescriptorSet CompositePass::make_source(const vk_core::Image& mono_hdr,

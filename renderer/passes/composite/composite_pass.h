@@ -3,6 +3,11 @@
 // depth where its depth buffer still holds the cleared far value (no near content), or
 // everywhere for the debug view "mono only"; with velocity (TAA) also C's velocity through eq. 9
 // (set 0, binding 2, read texel-exact).
+// record_display is the same composite fused with the eye's tone mapping, for frames in which
+// nothing else reads the eye's HDR image (renderer/plan/frame_plan.h, PlannedPass::
+// writes_display): one full-screen pass writes the eye's display image whole, C's colour tone
+// mapped where the eye drew nothing and the eye's own HDR colour (set 1) tone mapped elsewhere,
+// and C's linear depth where the eye drew nothing.
 #pragma once
 
 #include <glm/mat4x4.hpp>
@@ -11,6 +16,7 @@
 #include <optional>
 
 #include "renderer/passes/shared/indirect_draws.h"
+#include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/vk/descriptor_set.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
@@ -46,9 +52,20 @@ struct CompositeTargets {
     const vk_core::Image* velocity = nullptr;  // eye velocity; required with `velocity`
 };
 
+// The targets of record_display (the eye's HDR image is read through make_eye_input's set).
+struct CompositeDisplayTargets {
+    const vk_core::Image& display;       // TonemapPass::kDisplayFormat, written whole
+    const vk_core::Image& linear_depth;  // eye linear depth, eColorAttachmentOptimal
+    const vk_core::Image& depth;         // eye depth, eDepthAttachmentOptimal (read only)
+};
+
 class CompositePass {
   public:
-    explicit CompositePass(const vk_core::Context& ctx, bool velocity = false);
+    // display: also make the pipelines of record_display (never with velocity: TAA reads the
+    // eye's HDR image after the composite, so its tone mapping stays a pass of its own).
+    CompositePass(const vk_core::Context& ctx, bool velocity = false, bool display = false);
+
+    bool writes_display() const { return static_cast<bool>(*display_layout_); }
 
     // The set record() reads C through: its HDR (bilinear), linear depth (texel-exact) and, in a
     // pass made with velocity, its velocity (required then), all sampled.
@@ -60,7 +77,25 @@ class CompositePass {
     void record(const vk::raii::CommandBuffer& cmd, const CompositeTargets& targets,
                 vk::DescriptorSet mono_set, const CompositeParams& params) const;
 
+    // The set record_display reads the eye's HDR image (sampled, texel-exact) through. Needs
+    // writes_display().
+    vk_core::DescriptorSet make_eye_input(const vk_core::Image& eye_hdr) const;
+
+    // The composite and the eye's tone mapping in one pass: writes every pixel of the display
+    // image once (tone mapped with `tonemap`, as TonemapPass does) and C's linear depth where the
+    // eye drew nothing; the eye's HDR image is only read. With params.when the GPU may skip both
+    // draws: the display image is then undefined, and the eye's TonemapPass must write it.
+    // Needs writes_display().
+    void record_display(const vk::raii::CommandBuffer& cmd, const CompositeDisplayTargets& targets,
+                        vk::DescriptorSet mono_set, vk::DescriptorSet eye_set,
+                        const CompositeParams& params, const TonemapParams& tonemap) const;
+
   private:
+    void make_display_pipelines(const vk_core::GraphicsPipelineDesc& composite_desc);
+    // The push constants of both record functions.
+    void push(const vk::raii::CommandBuffer& cmd, vk::PipelineLayout layout, vk::Extent2D extent,
+              const CompositeParams& params, float exposure) const;
+
     const vk_core::Context& ctx_;
     bool velocity_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
@@ -69,6 +104,12 @@ class CompositePass {
     vk::raii::PipelineLayout layout_{nullptr};
     vk::raii::Pipeline behind_near_content_{nullptr};  // depth test: equal to the cleared far
     vk::raii::Pipeline everywhere_{nullptr};
+    // record_display: set 0 C's images as above, set 1 the eye's HDR image.
+    vk::raii::DescriptorSetLayout eye_set_layout_{nullptr};
+    vk::raii::PipelineLayout display_layout_{nullptr};
+    vk::raii::Pipeline display_behind_near_content_{nullptr};
+    vk::raii::Pipeline display_everywhere_{nullptr};
+    vk::raii::Pipeline near_display_{nullptr};  // depth not equal to the cleared far value
 };
 
 }  // namespace monoplane::passes

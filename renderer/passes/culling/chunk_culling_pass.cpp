@@ -18,17 +18,46 @@ const std::uint32_t kCullChunks[] = {
 
 constexpr vk::DeviceSize kCommandSize = sizeof(vk::DrawIndexedIndirectCommand);
 
-std::vector<ChunkRecord> chunk_records(const scenes::Scene& scene) {
+template <typename T>
+std::uint32_t bits_of(T value) {
+    static_assert(sizeof(T) == sizeof(std::uint32_t));
+    std::uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof(bits));
+    return bits;
+}
+
+std::vector<ChunkRecord> chunk_records(const scenes::Scene& scene, const scenes::LodChain& lods) {
     std::vector<ChunkRecord> records;
     records.reserve(scene.chunks.size());
-    for (const scenes::Chunk& chunk : scene.chunks) {
-        std::uint32_t vertex_offset_bits = 0;
-        std::memcpy(&vertex_offset_bits, &chunk.vertex_offset, sizeof(vertex_offset_bits));
-        records.push_back(
-            {glm::vec4(chunk.bounds.min, 0.0f), glm::vec4(chunk.bounds.max, 0.0f),
-             glm::uvec4(chunk.index_count, chunk.first_index, vertex_offset_bits, chunk.flags)});
+    std::uint32_t first_level = 0;
+    for (std::size_t c = 0; c < scene.chunks.size(); ++c) {
+        const scenes::Chunk& chunk = scene.chunks[c];
+        const std::uint32_t level_count = 1 + lods.chunks.at(c).level_count;
+        records.push_back({glm::vec4(chunk.bounds.min, 0.0f), glm::vec4(chunk.bounds.max, 0.0f),
+                           glm::uvec4(chunk.index_count, chunk.first_index,
+                                      bits_of(chunk.vertex_offset), chunk.flags),
+                           glm::uvec4(first_level, level_count, 0u, 0u)});
+        first_level += level_count;
     }
     if (records.empty()) records.push_back({});  // buffers may not be empty
+    return records;
+}
+
+// Per chunk its level 0 (the chunk itself), then the chain's levels, in chunk_records' order.
+std::vector<LodRecord> level_records(const scenes::Scene& scene, const scenes::LodChain& lods) {
+    const auto chain_base = static_cast<std::uint32_t>(scene.indices.size());
+    std::vector<LodRecord> records;
+    for (std::size_t c = 0; c < scene.chunks.size(); ++c) {
+        const scenes::Chunk& chunk = scene.chunks[c];
+        records.push_back({glm::uvec4(chunk.index_count, chunk.first_index, bits_of(0.0f), 0u)});
+        const scenes::ChunkLods& chain = lods.chunks.at(c);
+        for (std::uint32_t l = 0; l < chain.level_count; ++l) {
+            const scenes::LodLevel& level = lods.levels.at(chain.first_level + l);
+            records.push_back({glm::uvec4(level.index_count, chain_base + level.first_index,
+                                          bits_of(level.error_m), 0u)});
+        }
+    }
+    if (records.empty()) records.push_back({});
     return records;
 }
 
@@ -47,15 +76,32 @@ void write_planes(const glm::dmat4& view_proj, vec4* out) {
 }  // namespace
 
 vk_core::Buffer ChunkCullingPass::make_chunk_table(const vk_core::Context& ctx,
-                                                   const scenes::Scene& scene) {
-    return vk_core::make_device_buffer(ctx, std::span<const ChunkRecord>(chunk_records(scene)),
+                                                   const scenes::Scene& scene,
+                                                   const scenes::LodChain& lods) {
+    return vk_core::make_device_buffer(ctx,
+                                       std::span<const ChunkRecord>(chunk_records(scene, lods)),
+                                       vk::BufferUsageFlagBits::eStorageBuffer);
+}
+
+vk_core::Buffer ChunkCullingPass::make_level_table(const vk_core::Context& ctx,
+                                                   const scenes::Scene& scene,
+                                                   const scenes::LodChain& lods) {
+    return vk_core::make_device_buffer(ctx, std::span<const LodRecord>(level_records(scene, lods)),
                                        vk::BufferUsageFlagBits::eStorageBuffer);
 }
 
 ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Scene& scene,
-                                   const vk_core::Buffer& chunk_table)
+                                   const vk_core::Buffer& chunk_table,
+                                   const vk_core::Buffer& level_table)
     : chunk_count_(static_cast<std::uint32_t>(scene.chunks.size())),
       chunks_(chunk_table),
+      levels_(level_table),
+      // Level 0 for every chunk and group until the first frame chooses.
+      lod_state_(vk_core::make_device_buffer(
+          ctx,
+          std::span<const std::uint32_t>(std::vector<std::uint32_t>(
+              std::size_t{std::max(chunk_count_, 1u)} * MONOPLANE_LOD_GROUPS, 0u)),
+          vk::BufferUsageFlagBits::eStorageBuffer)),
       commands_(ctx,
                 vk::DeviceSize{MONOPLANE_CULL_LISTS} * std::max(chunk_count_, 1u) * kCommandSize,
                 vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eIndirectBuffer |
@@ -79,6 +125,12 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
         readback = vk_core::Buffer(ctx, counts_.size(), vk::BufferUsageFlagBits::eTransferDst,
                                    vk_core::MemoryUse::kHostVisible);
     }
+    make_pipeline();
+    write_descriptors();
+}
+
+void ChunkCullingPass::make_pipeline() {
+    const vk_core::Context& ctx = ctx_;
     using Type = vk::DescriptorType;
     const auto compute = vk::ShaderStageFlagBits::eCompute;
     const std::array bindings = {
@@ -89,10 +141,12 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
         vk::DescriptorSetLayoutBinding(4, Type::eCombinedImageSampler, 1, compute),
         vk::DescriptorSetLayoutBinding(5, Type::eStorageBuffer, 1, compute),
         vk::DescriptorSetLayoutBinding(6, Type::eStorageBuffer, 1, compute),
+        vk::DescriptorSetLayoutBinding(7, Type::eStorageBuffer, 1, compute),
+        vk::DescriptorSetLayoutBinding(8, Type::eStorageBuffer, 1, compute),
     };
     set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
                                                 vk::DescriptorSetLayoutCreateInfo({}, bindings));
-    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 6),
+    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 8),
                                    vk::DescriptorPoolSize(Type::eCombinedImageSampler, 1)};
     pool_ = vk::raii::DescriptorPool(
         ctx.device(), vk::DescriptorPoolCreateInfo(
@@ -105,13 +159,19 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
         vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout, push));
     const vk::raii::ShaderModule shader = vk_core::make_shader(ctx, kCullChunks);
     pipeline_ = vk_core::make_compute_pipeline(ctx, *layout_, *shader);
+}
 
+// Every binding but the merged depth pyramid (set_merged_depth), which may not exist yet.
+void ChunkCullingPass::write_descriptors() const {
+    using Type = vk::DescriptorType;
     const vk::DescriptorBufferInfo chunks_info(chunks_.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorBufferInfo commands_info(commands_.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorBufferInfo counts_info(counts_.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorBufferInfo constants_info(constants_.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorBufferInfo routing_info(routing_.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorBufferInfo order_info(order_.handle(), 0, VK_WHOLE_SIZE);
+    const vk::DescriptorBufferInfo levels_info(levels_.handle(), 0, VK_WHOLE_SIZE);
+    const vk::DescriptorBufferInfo lod_state_info(lod_state_.handle(), 0, VK_WHOLE_SIZE);
     const std::array writes = {
         vk::WriteDescriptorSet(*set_, 0, 0, Type::eStorageBuffer, {}, chunks_info),
         vk::WriteDescriptorSet(*set_, 1, 0, Type::eStorageBuffer, {}, commands_info),
@@ -119,8 +179,10 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
         vk::WriteDescriptorSet(*set_, 3, 0, Type::eStorageBuffer, {}, constants_info),
         vk::WriteDescriptorSet(*set_, 5, 0, Type::eStorageBuffer, {}, routing_info),
         vk::WriteDescriptorSet(*set_, 6, 0, Type::eStorageBuffer, {}, order_info),
+        vk::WriteDescriptorSet(*set_, 7, 0, Type::eStorageBuffer, {}, levels_info),
+        vk::WriteDescriptorSet(*set_, 8, 0, Type::eStorageBuffer, {}, lod_state_info),
     };
-    ctx.device().updateDescriptorSets(writes, {});
+    ctx_.device().updateDescriptorSets(writes, {});
 }
 
 void ChunkCullingPass::set_merged_depth(vk::ImageView pyramid, vk::Sampler nearest) const {
@@ -141,13 +203,20 @@ void ChunkCullingPass::set_frame(const CullFrame& frame, vk_core::FrameUploads& 
     std::uint32_t honour = 0;
     if (frame.honour_force_mono) honour |= MONOPLANE_CULL_HONOUR_FORCE_MONO;
     if (frame.honour_force_stereo) honour |= MONOPLANE_CULL_HONOUR_FORCE_STEREO;
-    c.config = glm::uvec4(chunk_count_, views, 0u, honour);
+    c.config = glm::uvec4(chunk_count_, views, frame.both_eyes_instances, honour);
     if (frame.view_proj[MONOPLANE_CULL_MONO]) {
         c.mono_view_proj = glm::mat4(*frame.view_proj[MONOPLANE_CULL_MONO]);
     }
     c.occlusion = glm::vec4(
         static_cast<float>(frame.mono_viewport.x), static_cast<float>(frame.mono_viewport.y),
         static_cast<float>(frame.hidden_depth_threshold), static_cast<float>(frame.pyramid_mips));
+    for (std::size_t v = 0; v < frame.lod_views.size(); ++v) {
+        const modes::LodView& lod = frame.lod_views[v];
+        c.lod_views[2 * v] = glm::vec4(glm::vec3(lod.position), lod.pixels_per_tangent);
+        c.lod_views[2 * v + 1] = glm::vec4(glm::vec3(lod.forward), lod.max_tangent_squared);
+    }
+    c.lod = glm::vec4(static_cast<float>(frame.lod_error_px),
+                      static_cast<float>(modes::kLodCoarsenFraction), 0.0f, 0.0f);
     uploads.stage(constants_, &c, sizeof(c));
 }
 
@@ -206,14 +275,21 @@ std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> ChunkCullingPass::counts(
     return values;
 }
 
-std::vector<std::uint32_t> ChunkCullingPass::drawn_chunks(CullView view, std::uint32_t slot) const {
+std::vector<vk::DrawIndexedIndirectCommand> ChunkCullingPass::drawn_commands(
+    CullView view, std::uint32_t slot) const {
     const auto v = static_cast<std::uint32_t>(view);
     const std::uint32_t count = counts(slot)[v];
     const auto* commands =
         reinterpret_cast<const vk::DrawIndexedIndirectCommand*>(commands_readback_.mapped()) +
         std::size_t{v} * chunk_count_;
-    std::vector<std::uint32_t> chunks(count);
-    for (std::uint32_t i = 0; i < count; ++i) chunks[i] = commands[i].firstInstance;
+    return {commands, commands + count};
+}
+
+std::vector<std::uint32_t> ChunkCullingPass::drawn_chunks(CullView view, std::uint32_t slot) const {
+    std::vector<std::uint32_t> chunks;
+    for (const vk::DrawIndexedIndirectCommand& command : drawn_commands(view, slot)) {
+        chunks.push_back(command.firstInstance);
+    }
     return chunks;
 }
 

@@ -15,9 +15,11 @@
 
 #include "renderer/passes/culling/cull_constants.h"
 #include "renderer/passes/shared/indirect_draws.h"
+#include "renderer/plan/lod_selection.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/frame_ring.h"
 #include "renderer/vk/frame_uploads.h"
+#include "scenes/lod_chain.h"
 #include "scenes/scene.h"
 
 namespace monoplane::passes {
@@ -38,18 +40,30 @@ struct CullFrame {
     glm::dvec2 mono_viewport{0.0};        // C's viewport in pixels (eq. 8)
     double hidden_depth_threshold = 0.0;  // the eyes' reversed-Z depth of m - eps
     std::uint32_t pyramid_mips = 1;
+    // Instances per draw of the both-eyes list: 2 for instanced stereo (the eye is the instance
+    // index minus the base instance), 1 for every other use.
+    std::uint32_t both_eyes_instances = 1;
+    // Level of detail (renderer/plan/lod_selection.h): each drawn view's projection of errors,
+    // and the budget in pixels (0: every chunk at full detail).
+    std::array<modes::LodView, MONOPLANE_CULL_VIEWS> lod_views{};
+    double lod_error_px = 0.0;
 };
 
 class ChunkCullingPass {
   public:
-    // The scene's chunk table on the GPU (bounds, draw ranges, routing flags): made once per
-    // scene and shared by every renderer of it (renderer/modes/scene_resources.h).
-    static vk_core::Buffer make_chunk_table(const vk_core::Context& ctx,
-                                            const scenes::Scene& scene);
+    // The scene's chunk table on the GPU (bounds, draw ranges, routing flags, where its levels
+    // of detail start): made once per scene and shared by every renderer of it
+    // (renderer/modes/scene_resources.h).
+    static vk_core::Buffer make_chunk_table(const vk_core::Context& ctx, const scenes::Scene& scene,
+                                            const scenes::LodChain& lods);
+    // Every chunk's levels (level 0 first) as LodRecords; first indices count from the start of
+    // SceneGeometry's index buffer (the scene's indices, then the chain's).
+    static vk_core::Buffer make_level_table(const vk_core::Context& ctx, const scenes::Scene& scene,
+                                            const scenes::LodChain& lods);
 
-    // chunk_table: make_chunk_table of the same scene; it must outlive the pass.
+    // chunk_table, level_table: made for the same scene; they must outlive the pass.
     ChunkCullingPass(const vk_core::Context& ctx, const scenes::Scene& scene,
-                     const vk_core::Buffer& chunk_table);
+                     const vk_core::Buffer& chunk_table, const vk_core::Buffer& level_table);
 
     // Points the occlusion test at the merged depth pyramid (a view of all its mips, in
     // eGeneral). Call between frames, before the first record().
@@ -81,12 +95,20 @@ class ChunkCullingPass {
     // The chunk indices of a view's list, in draw order (record_readback with lists), once the
     // slot's frame, the last to read lists back, has completed.
     std::vector<std::uint32_t> drawn_chunks(CullView view, std::uint32_t slot = 0) const;
+    // The same list's draw commands: each names its chunk in firstInstance, its level of detail
+    // by its index range, and the eyes it draws by its instance count.
+    std::vector<vk::DrawIndexedIndirectCommand> drawn_commands(CullView view,
+                                                               std::uint32_t slot = 0) const;
 
   private:
+    void make_pipeline();
+    void write_descriptors() const;
     void record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const;
 
     std::uint32_t chunk_count_ = 0;
     const vk_core::Buffer& chunks_;
+    const vk_core::Buffer& levels_;
+    vk_core::Buffer lod_state_;  // per chunk and MONOPLANE_LOD_* group: last frame's level
     vk_core::Buffer commands_;
     vk_core::Buffer counts_;
     vk_core::Buffer routing_;

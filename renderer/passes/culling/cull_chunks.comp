@@ -35,6 +35,10 @@ layout(set = 0, binding = 4) uniform sampler2D merged_depth;
 layout(std430, set = 0, binding = 5) buffer Routing { uint routing[]; };
 // The frame's draw order: a permutation of the chunk indices.
 layout(std430, set = 0, binding = 6) readonly buffer Order { uint order[]; };
+// Every chunk's levels of detail (ChunkRecord.lod indexes it), and each chunk's level of the
+// last frame per view group (MONOPLANE_LOD_*), for the hysteresis.
+layout(std430, set = 0, binding = 7) readonly buffer Levels { LodRecord levels[]; };
+layout(std430, set = 0, binding = 8) buffer LodState { uint lod_state[]; };
 layout(push_constant) uniform Push { uint phase; };  // 0: frustum, 1: C's occlusion culling
 
 const uint kBlock = 256;
@@ -92,6 +96,53 @@ bool hidden_in_both_eyes(vec3 lo, vec3 hi) {
     return farthest > cull.occlusion.z;
 }
 
+// The projected error (pixels) of error_m metres at the box's nearest point in view v
+// (renderer/plan/lod_selection.h: error f (1 + tan^2 theta) / d); +inf inside the box.
+float projected_error_px(uint v, vec3 lo, vec3 hi, float error_m) {
+    vec4 camera = cull.lod_views[2 * v];
+    vec4 axis = cull.lod_views[2 * v + 1];
+    vec3 to_nearest = clamp(camera.xyz, lo, hi) - camera.xyz;
+    float distance_squared = dot(to_nearest, to_nearest);
+    if (distance_squared <= 0.0) return 1.0 / 0.0;
+    float along = dot(to_nearest, axis.xyz);
+    float tangent_squared = axis.w;
+    if (along > 0.0) {
+        float across_squared = distance_squared - along * along;
+        tangent_squared = min(tangent_squared, across_squared / (along * along));
+    }
+    return error_m * camera.w * (1.0 + tangent_squared) * inversesqrt(distance_squared);
+}
+
+// The coarsest of the chunk's levels within budget_px in every view of `views` (a bit mask).
+uint coarsest_within(ChunkRecord chunk, uint views, float budget_px) {
+    uint level = 0u;
+    for (uint l = 1u; l < chunk.lod.y; ++l) {
+        float error_m = uintBitsToFloat(levels[chunk.lod.x + l].draw.z);
+        bool fits = true;
+        for (uint v = 0u; v < MONOPLANE_CULL_VIEWS; ++v) {
+            if ((views & (1u << v)) == 0u) continue;
+            fits = fits && projected_error_px(v, chunk.bounds_min.xyz, chunk.bounds_max.xyz,
+                                              error_m) <= budget_px;
+        }
+        if (!fits) break;  // errors grow along the chain
+        level = l;
+    }
+    return level;
+}
+
+// The group's level this frame: within the budget, coarser only once comfortably so
+// (hysteresis); stored for the next frame.
+uint choose_level(ChunkRecord chunk, uint index, uint group, uint views) {
+    uint slot = index * MONOPLANE_LOD_GROUPS + group;
+    float budget = cull.lod.x;
+    if (budget <= 0.0 || views == 0u) return 0u;
+    uint within = coarsest_within(chunk, views, budget);
+    uint comfortably = coarsest_within(chunk, views, cull.lod.y * budget);
+    uint level = clamp(lod_state[slot], comfortably, within);
+    lod_state[slot] = level;
+    return level;
+}
+
 void main() {
     uint lane = gl_LocalInvocationIndex;
     uint chunk_count = cull.config.x;
@@ -106,8 +157,21 @@ void main() {
         uint position = base + lane;
         uint index = position < chunk_count ? order[position] : 0u;
         bool visible[MONOPLANE_CULL_LISTS] = bool[](false, false, false, false);
+        uint level[MONOPLANE_LOD_GROUPS] = uint[](0u, 0u);
         if (position < chunk_count) {
             ChunkRecord chunk = chunks[index];
+            // Phase 0 chooses both groups' levels; phase 1 redraws C's list at C's choice.
+            uint eye_views = views & ((1u << MONOPLANE_CULL_LEFT) | (1u << MONOPLANE_CULL_RIGHT));
+            uint mono_views = views & (1u << MONOPLANE_CULL_MONO);
+            if (!occlusion_phase) {
+                level[MONOPLANE_LOD_EYES] =
+                    choose_level(chunk, index, MONOPLANE_LOD_EYES, eye_views);
+                level[MONOPLANE_LOD_MONO] =
+                    choose_level(chunk, index, MONOPLANE_LOD_MONO, mono_views);
+            } else if (cull.lod.x > 0.0) {
+                level[MONOPLANE_LOD_MONO] =
+                    lod_state[index * MONOPLANE_LOD_GROUPS + MONOPLANE_LOD_MONO];
+            }
             vec3 lo = chunk.bounds_min.xyz;
             vec3 hi = chunk.bounds_max.xyz;
             uint flags = chunk.draw.w;
@@ -149,9 +213,16 @@ void main() {
             if (!visible[v]) continue;
             ChunkRecord chunk = chunks[index];
             uint slot = v * chunk_count + written[v] + scan[v][lane] - 1u;
+            LodRecord drawn = levels[chunk.lod.x +
+                                     level[v == MONOPLANE_CULL_MONO ? MONOPLANE_LOD_MONO
+                                                                    : MONOPLANE_LOD_EYES]];
             // first_instance carries the chunk index (the shaders ignore it): read-back lists
             // name their chunks.
-            commands[slot] = DrawCommand(chunk.draw.x, 1u, chunk.draw.y, int(chunk.draw.z), index);
+            // The both-eyes list draws config.z instances of each chunk: 1 for the geometry
+            // shader's and multiview's duplication, 2 for instanced stereo (one per eye).
+            uint instances = v == MONOPLANE_CULL_BOTH_EYES ? max(cull.config.z, 1u) : 1u;
+            commands[slot] =
+                DrawCommand(drawn.draw.x, instances, drawn.draw.y, int(chunk.draw.z), index);
         }
         barrier();
         if (lane < MONOPLANE_CULL_LISTS) written[lane] += scan[lane][kBlock - 1];

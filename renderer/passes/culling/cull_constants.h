@@ -47,31 +47,55 @@ using uvec4 = glm::uvec4;
 #define MONOPLANE_ROUTE_MONO 4u
 #define MONOPLANE_ROUTE_HIDDEN 8u
 
+// The level-of-detail view groups: both eyes choose one level together, C its own
+// (renderer/plan/lod_selection.h). The per-chunk state buffer keeps each group's last level.
+#define MONOPLANE_LOD_EYES 0
+#define MONOPLANE_LOD_MONO 1
+#define MONOPLANE_LOD_GROUPS 2
+
 struct CullConstants {
     // Six planes per view (a, b, c, d; inside where a x + b y + c z + d >= 0), world space,
     // normalised so that (a, b, c) is a unit vector: distances in metres, float-safe.
     vec4 planes[MONOPLANE_CULL_VIEWS * 6];
-    // x: chunk count; y: bit v set when view v is drawn this frame; z: unused (the phase is a
-    // push constant); w: MONOPLANE_CULL_HONOUR_* bits.
+    // x: chunk count; y: bit v set when view v is drawn this frame; z: instances per draw of the
+    // both-eyes list (1, or 2 for instanced stereo; the phase is a push constant); w:
+    // MONOPLANE_CULL_HONOUR_* bits.
     uvec4 config;
     mat4 mono_view_proj;  // world -> C's clip space (phase 1)
     // x, y: C's viewport in pixels (eq. 8); z: the eyes' reversed-Z depth of m - eps (a pyramid
     // value above it means every eye pixel that reads this part of C is covered by nearer
     // content); w: the pyramid's mip count (mip 0 is level 2 of the paper).
     vec4 occlusion;
+    // Level of detail, per view v: lod_views[2 v] = (camera position, pixels per unit tangent),
+    // lod_views[2 v + 1] = (unit view axis, tan^2 of the widest corner ray).
+    vec4 lod_views[MONOPLANE_CULL_VIEWS * 2];
+    // x: the error budget in pixels (0: level 0 always, --lod off); y: the share of it a coarser
+    // level must meet before a chunk moves to it (hysteresis).
+    vec4 lod;
 };
 
-// One chunk as the culling shader reads it (std430: 48 bytes).
+// One chunk as the culling shader reads it (std430: 64 bytes).
 struct ChunkRecord {
     vec4 bounds_min;  // xyz
     vec4 bounds_max;  // xyz
     // x: index count, y: first index, z: vertex offset (bit pattern of an int32), w: flags.
     uvec4 draw;
+    // x: the chunk's first record in the level table, y: its number of levels (level 0, the
+    // chunk itself, included).
+    uvec4 lod;
+};
+
+// One level of detail of a chunk (std430: 16 bytes): x index count, y first index in the
+// scene's index buffer, z the level's geometric error in metres (bit pattern of a float).
+struct LodRecord {
+    uvec4 draw;
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CullConstants) == 18 * 16 + 16 + 64 + 16, "std430 layout shared with GLSL");
-static_assert(sizeof(ChunkRecord) == 48, "std430 layout shared with GLSL");
+static_assert(sizeof(CullConstants) == 18 * 16 + 16 + 64 + 16 + 6 * 16 + 16,
+              "std430 layout shared with GLSL");
+static_assert(sizeof(ChunkRecord) == 64, "std430 layout shared with GLSL");
+static_assert(sizeof(LodRecord) == 16, "std430 layout shared with GLSL");
 }  // namespace monoplane::passes
 #endif
 

@@ -5,146 +5,10 @@
 #include <vector>
 
 #include "common/result.h"
+#include "renderer/passes/forward/forward_shaders.h"
 
 namespace monoplane::passes {
 namespace {
-const std::uint32_t kForwardVert[] = {
-#include "forward.vert.spv.inc"
-};
-const std::uint32_t kForwardFrag[] = {
-#include "forward.frag.spv.inc"
-};
-const std::uint32_t kForwardShowRoutingVert[] = {
-#include "forward_show_routing.vert.spv.inc"
-};
-const std::uint32_t kForwardShowRoutingFrag[] = {
-#include "forward_show_routing.frag.spv.inc"
-};
-const std::uint32_t kFullscreenVert[] = {
-#include "fullscreen.vert.spv.inc"
-};
-const std::uint32_t kSkyFrag[] = {
-#include "sky.frag.spv.inc"
-};
-const std::uint32_t kForwardVelocityFrag[] = {
-#include "forward_velocity.frag.spv.inc"
-};
-const std::uint32_t kForwardShowRoutingVelocityFrag[] = {
-#include "forward_show_routing_velocity.frag.spv.inc"
-};
-const std::uint32_t kSkyVelocityFrag[] = {
-#include "sky_velocity.frag.spv.inc"
-};
-const std::uint32_t kMaskHiddenFrag[] = {
-#include "mask_hidden.frag.spv.inc"
-};
-
-const std::uint32_t kForwardMultiviewVert[] = {
-#include "forward_multiview.vert.spv.inc"
-};
-const std::uint32_t kForwardShowRoutingMultiviewVert[] = {
-#include "forward_show_routing_multiview.vert.spv.inc"
-};
-const std::uint32_t kForwardMultiviewFrag[] = {
-#include "forward_multiview.frag.spv.inc"
-};
-const std::uint32_t kForwardVelocityMultiviewFrag[] = {
-#include "forward_velocity_multiview.frag.spv.inc"
-};
-const std::uint32_t kForwardShowRoutingMultiviewFrag[] = {
-#include "forward_show_routing_multiview.frag.spv.inc"
-};
-const std::uint32_t kForwardShowRoutingVelocityMultiviewFrag[] = {
-#include "forward_show_routing_velocity_multiview.frag.spv.inc"
-};
-const std::uint32_t kSkyMultiviewFrag[] = {
-#include "sky_multiview.frag.spv.inc"
-};
-const std::uint32_t kSkyVelocityMultiviewFrag[] = {
-#include "sky_velocity_multiview.frag.spv.inc"
-};
-const std::uint32_t kForwardGsVert[] = {
-#include "forward_gs.vert.spv.inc"
-};
-const std::uint32_t kForwardShowRoutingGsVert[] = {
-#include "forward_show_routing_gs.vert.spv.inc"
-};
-const std::uint32_t kForwardGsFrag[] = {
-#include "forward_gs.frag.spv.inc"
-};
-const std::uint32_t kForwardVelocityGsFrag[] = {
-#include "forward_velocity_gs.frag.spv.inc"
-};
-const std::uint32_t kForwardShowRoutingGsFrag[] = {
-#include "forward_show_routing_gs.frag.spv.inc"
-};
-const std::uint32_t kForwardShowRoutingVelocityGsFrag[] = {
-#include "forward_show_routing_velocity_gs.frag.spv.inc"
-};
-const std::uint32_t kSkyGsFrag[] = {
-#include "sky_gs.frag.spv.inc"
-};
-const std::uint32_t kSkyVelocityGsFrag[] = {
-#include "sky_velocity_gs.frag.spv.inc"
-};
-const std::uint32_t kStereoDuplicateGeom[] = {
-#include "stereo_duplicate.geom.spv.inc"
-};
-const std::uint32_t kStereoDuplicateShowRoutingGeom[] = {
-#include "stereo_duplicate_show_routing.geom.spv.inc"
-};
-const std::uint32_t kStereoDuplicateSkyGeom[] = {
-#include "stereo_duplicate_sky.geom.spv.inc"
-};
-
-// The shaders of one configuration.
-struct ShaderSet {
-    std::span<const std::uint32_t> vertex, show_routing_vertex;
-    std::span<const std::uint32_t> geometry, show_routing_geometry, sky_geometry;  // GS form only
-    std::span<const std::uint32_t> forward, show_routing, sky;
-};
-
-ShaderSet shader_set(const ForwardConfig& config) {
-    const bool v = config.velocity;
-    switch (config.stereo) {
-        case StereoDuplication::kMultiview:
-            return {
-                kForwardMultiviewVert,
-                kForwardShowRoutingMultiviewVert,
-                {},
-                {},
-                {},
-                v ? std::span<const std::uint32_t>(kForwardVelocityMultiviewFrag)
-                  : kForwardMultiviewFrag,
-                v ? std::span<const std::uint32_t>(kForwardShowRoutingVelocityMultiviewFrag)
-                  : kForwardShowRoutingMultiviewFrag,
-                v ? std::span<const std::uint32_t>(kSkyVelocityMultiviewFrag) : kSkyMultiviewFrag};
-        case StereoDuplication::kGeometryShader:
-            return {kForwardGsVert,
-                    kForwardShowRoutingGsVert,
-                    kStereoDuplicateGeom,
-                    kStereoDuplicateShowRoutingGeom,
-                    kStereoDuplicateSkyGeom,
-                    v ? std::span<const std::uint32_t>(kForwardVelocityGsFrag) : kForwardGsFrag,
-                    v ? std::span<const std::uint32_t>(kForwardShowRoutingVelocityGsFrag)
-                      : kForwardShowRoutingGsFrag,
-                    v ? std::span<const std::uint32_t>(kSkyVelocityGsFrag) : kSkyGsFrag};
-        case StereoDuplication::kNone:
-            break;
-    }
-    if (v) {
-        return {kForwardVert,
-                kForwardShowRoutingVert,
-                {},
-                {},
-                {},
-                kForwardVelocityFrag,
-                kForwardShowRoutingVelocityFrag,
-                kSkyVelocityFrag};
-    }
-    return {kForwardVert, kForwardShowRoutingVert, {},      {}, {},
-            kForwardFrag, kForwardShowRoutingFrag, kSkyFrag};
-}
 
 void require_stereo_support(const vk_core::Context& ctx, StereoDuplication stereo) {
     if (stereo == StereoDuplication::kGeometryShader && !ctx.capabilities().geometry_shader) {
@@ -156,6 +20,16 @@ void require_stereo_support(const vk_core::Context& ctx, StereoDuplication stere
         throw UserError("device '" + ctx.device_info().name +
                         "' has no VK_KHR_multiview: stereo-multiview (--stereo-pass multiview) is "
                         "not available; try gs");
+    }
+    const vk_core::DeviceCapabilities& caps = ctx.capabilities();
+    if (stereo == StereoDuplication::kInstanced &&
+        !(caps.vertex_shader_layer && caps.shader_draw_parameters)) {
+        throw UserError("device '" + ctx.device_info().name + "' " +
+                        (caps.vertex_shader_layer ? "has no shaderDrawParameters"
+                                                  : "cannot write gl_Layer from a vertex shader "
+                                                    "(VK_EXT_shader_viewport_index_layer)") +
+                        ": stereo-instanced (--stereo-pass instanced) is not available; try gs or "
+                        "multiview");
     }
 }
 
@@ -275,12 +149,15 @@ Attachments make_attachments(const ForwardTargets& targets, bool velocity) {
 }
 
 // Single-pass stereo draws both layers of the targets: every draw covers both views with
-// multiview; the geometry shader picks the layer of each triangle it emits otherwise.
+// multiview; otherwise the geometry shader picks the layer of each triangle it emits, or the
+// vertex shader that of each instance.
 vk::RenderingInfo rendering_info(vk::Extent2D area, StereoDuplication stereo,
                                  const Attachments& attachments) {
+    const bool layered =
+        stereo == StereoDuplication::kGeometryShader || stereo == StereoDuplication::kInstanced;
     return vk::RenderingInfo()
         .setRenderArea(vk::Rect2D({0, 0}, area))
-        .setLayerCount(stereo == StereoDuplication::kGeometryShader ? 2 : 1)
+        .setLayerCount(layered ? 2 : 1)
         .setViewMask(stereo == StereoDuplication::kMultiview ? 0b11u : 0u)
         .setColorAttachments(attachments.colors)
         .setPDepthAttachment(&attachments.depth);
@@ -315,7 +192,7 @@ ForwardPass::ChunkPipelines ForwardPass::ChunkPipelines::make(const vk_core::Con
 }
 
 void ForwardPass::make_chunk_pipelines() {
-    const ShaderSet shaders = shader_set(config_);
+    const ForwardShaders shaders = forward_shaders(config_);
     // forward_vertex.glsl's kVertexWork (constant_id 0).
     const auto vertex_work = static_cast<std::int32_t>(config_.vertex_work);
     const vk::SpecializationMapEntry work_entry(0, 0, sizeof(vertex_work));
@@ -340,9 +217,9 @@ void ForwardPass::make_chunk_pipelines() {
 }
 
 void ForwardPass::make_fullscreen_pipelines() {
-    const ShaderSet shaders = shader_set(config_);
+    const ForwardShaders shaders = forward_shaders(config_);
     // The sky covers only pixels still at the cleared far depth (0 with reversed Z).
-    const PipelineShaders sky_shaders(ctx_, kFullscreenVert, shaders.sky_geometry, shaders.sky);
+    const PipelineShaders sky_shaders(ctx_, shaders.sky_vertex, shaders.sky_geometry, shaders.sky);
     vk_core::GraphicsPipelineDesc sky = sky_shaders.in(shared_pipeline_desc(*layout_, config_));
     sky.cull = vk::CullModeFlagBits::eNone;
     sky.depth_write = false;
@@ -351,7 +228,7 @@ void ForwardPass::make_fullscreen_pipelines() {
     if (config_.stereo != StereoDuplication::kNone) return;
 
     // Every pixel at once, whatever the depth; only the hidden ones survive the discard.
-    const vk::raii::ShaderModule mask_frag = vk_core::make_shader(ctx_, kMaskHiddenFrag);
+    const vk::raii::ShaderModule mask_frag = vk_core::make_shader(ctx_, shaders.mask_hidden);
     vk_core::GraphicsPipelineDesc mask = sky;
     mask.geometry = nullptr;
     mask.fragment = *mask_frag;
@@ -411,10 +288,13 @@ void ForwardPass::record_step(const vk::raii::CommandBuffer& cmd, ForwardStep st
                              show_routing_pipelines_.pick(prepassed));
             chunks.record(cmd);
             break;
-        case ForwardStep::kSky:
+        case ForwardStep::kSky: {
+            // Instanced stereo draws the full-screen triangle once per eye, as it does each chunk.
+            const std::uint32_t instances = config_.stereo == StereoDuplication::kInstanced ? 2 : 1;
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
-            cmd.draw(3, 1, 0, 0);
+            cmd.draw(3, instances, 0, 0);
             break;
+        }
     }
 }
 

@@ -51,6 +51,10 @@ enum class StereoDuplication {
     kNone,
     kMultiview,       // VK_KHR_multiview: every draw covers both layers, gl_ViewIndex picks the eye
     kGeometryShader,  // papers/001: vertices shaded once, each triangle emitted into both layers
+    // Unity's Single Pass Instanced, Unreal's Instanced Stereo: each draw of the both-eyes list has
+    // two instances (CullFrame::both_eyes_instances); the vertex shader takes the eye from the
+    // instance index minus the base instance (the chunk's index) and writes that eye's layer.
+    kInstanced,
 };
 
 struct ForwardConfig {

@@ -2,8 +2,9 @@
 // single-pass stereo forms of view_block.glsl).
 // Forward shading as in Fink et al. 2019, Sect. 5: a directional light with a shadow map and
 // 3x3 percentage-closer filtering, sky reflections, albedo (procedural patterns), HDR output.
-#ifdef MONOPLANE_STEREO_GS
-layout(location = 5) flat in int in_view;  // the eye stereo_duplicate.geom drew this copy for
+#if defined(MONOPLANE_STEREO_GS) || defined(MONOPLANE_STEREO_INSTANCED)
+// The eye stereo_duplicate.geom drew this copy for, or the eye of the instance drawn (instanced).
+layout(location = 5) flat in int in_view;
 #define MONOPLANE_VIEW_INDEX in_view
 #endif
 #include "renderer/passes/shared/view_block.glsl"

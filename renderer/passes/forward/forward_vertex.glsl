@@ -1,8 +1,16 @@
 // The body of forward.vert and forward_show_routing.vert (compiled twice, and again for
 // single-pass stereo: MONOPLANE_STEREO_MULTIVIEW projects into the view gl_ViewIndex names;
-// MONOPLANE_STEREO_GS projects nothing, stereo_duplicate.geom does it once per eye).
+// MONOPLANE_STEREO_GS projects nothing, stereo_duplicate.geom does it once per eye;
+// MONOPLANE_STEREO_INSTANCED runs once per vertex and eye, the eye being the instance within the
+// draw, and sends the vertex to that eye's layer).
 #ifdef MONOPLANE_STEREO_GS
 #define MONOPLANE_VIEW_INDEX 0  // the eyes share everything this stage reads
+#endif
+#ifdef MONOPLANE_STEREO_INSTANCED
+#extension GL_ARB_shader_viewport_layer_array : require
+// The culling pass draws each chunk of the both-eyes list with two instances from the chunk's
+// index (CullFrame::both_eyes_instances): instance 0 is the left eye, 1 the right.
+#define MONOPLANE_VIEW_INDEX (gl_InstanceIndex - gl_BaseInstance)
 #endif
 #include "renderer/passes/shared/view_block.glsl"
 #include "renderer/passes/shared/scene_vertex.glsl"
@@ -15,6 +23,9 @@ layout(location = 2) out vec3 out_albedo;
 layout(location = 3) flat out uint out_material;
 #ifdef MONOPLANE_SHOW_ROUTING
 layout(location = 4) flat out uint out_chunk;  // the draw's first instance: its chunk index
+#endif
+#ifdef MONOPLANE_STEREO_INSTANCED
+layout(location = 5) flat out int out_view;  // the eye and layer, as stereo_duplicate.geom's
 #endif
 layout(location = 6) out vec2 out_uv;             // base-colour texture coordinate
 layout(location = 7) flat out uvec4 out_texture;  // its slot (scene_textures.glsl)
@@ -40,7 +51,11 @@ void main() {
     out_material = in_material;
     fetch_texture(out_texture, out_uv);
 #ifdef MONOPLANE_SHOW_ROUTING
-    out_chunk = uint(gl_InstanceIndex);
+    out_chunk = uint(MONOPLANE_DRAWN_CHUNK);  // scene_textures.glsl
+#endif
+#ifdef MONOPLANE_STEREO_INSTANCED
+    out_view = MONOPLANE_VIEW_INDEX;
+    gl_Layer = MONOPLANE_VIEW_INDEX;
 #endif
 #ifndef MONOPLANE_STEREO_GS
     // precise (no fused multiply-add): stereo_duplicate.geom computes the same product and must

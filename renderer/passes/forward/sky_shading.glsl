@@ -1,7 +1,8 @@
 // The body of sky.frag and its variants (velocity, single-pass stereo).
 // The sky behind the geometry: drawn after it where the depth buffer still holds the far plane.
-#ifdef MONOPLANE_STEREO_GS
-layout(location = 5) flat in int in_view;  // the eye stereo_duplicate.geom drew this copy for
+#if defined(MONOPLANE_STEREO_GS) || defined(MONOPLANE_STEREO_INSTANCED)
+// The eye stereo_duplicate.geom drew this copy for, or the eye of the instance drawn (instanced).
+layout(location = 5) flat in int in_view;
 #define MONOPLANE_VIEW_INDEX in_view
 #endif
 #include "renderer/passes/shared/view_block.glsl"

@@ -4,10 +4,24 @@
 
 namespace monoplane::passes {
 
-SceneGeometry::SceneGeometry(const vk_core::Context& ctx, const scenes::Scene& scene)
+namespace {
+
+std::vector<std::uint32_t> all_indices(const scenes::Scene& scene, const scenes::LodChain& lods) {
+    std::vector<std::uint32_t> indices;
+    indices.reserve(scene.indices.size() + lods.indices.size());
+    indices.insert(indices.end(), scene.indices.begin(), scene.indices.end());
+    indices.insert(indices.end(), lods.indices.begin(), lods.indices.end());
+    return indices;
+}
+
+}  // namespace
+
+SceneGeometry::SceneGeometry(const vk_core::Context& ctx, const scenes::Scene& scene,
+                             const scenes::LodChain& lods)
     : vertices_(vk_core::make_device_buffer(ctx, std::span(scene.vertices),
                                             vk::BufferUsageFlagBits::eVertexBuffer)),
-      indices_(vk_core::make_device_buffer(ctx, std::span(scene.indices),
+      indices_(vk_core::make_device_buffer(ctx,
+                                           std::span<const std::uint32_t>(all_indices(scene, lods)),
                                            vk::BufferUsageFlagBits::eIndexBuffer)),
       chunk_count_(scene.chunks.size()) {}
 

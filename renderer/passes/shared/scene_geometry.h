@@ -6,14 +6,17 @@
 
 #include "renderer/passes/shared/indirect_draws.h"
 #include "renderer/vk/buffer.h"
+#include "scenes/lod_chain.h"
 #include "scenes/scene.h"
 
 namespace monoplane::passes {
 
-// Vertex and index buffers of a scenes::Scene, uploaded once.
+// Vertex and index buffers of a scenes::Scene, uploaded once. The index buffer holds the
+// scene's indices, then its levels of detail's (scenes/lod_chain.h).
 class SceneGeometry {
   public:
-    SceneGeometry(const vk_core::Context& ctx, const scenes::Scene& scene);
+    SceneGeometry(const vk_core::Context& ctx, const scenes::Scene& scene,
+                  const scenes::LodChain& lods);
 
     void bind(const vk::raii::CommandBuffer& cmd) const;
     std::size_t chunk_count() const { return chunk_count_; }

@@ -8,11 +8,19 @@ layout(std430, set = 2, binding = 0) readonly buffer Texcoords { vec2 texcoords[
 layout(std430, set = 2, binding = 1) readonly buffer ChunkTextures { int chunk_texture[]; };
 layout(std430, set = 2, binding = 2) readonly buffer TextureSlots { uvec4 texture_slots[]; };
 
-// The texture of the chunk this draw draws (the culling pass puts the chunk index in the draw's
-// first instance) as (array, layer, wrap_u, wrap_v), or MONOPLANE_NO_TEXTURE in x; and the
-// vertex's coordinate, read only for textured chunks.
+// The chunk this draw draws: the culling pass puts its index in the draw's first instance. Instanced
+// stereo draws two instances, one per eye, so there only the base instance is the chunk; the other
+// forms draw one instance and need no draw parameters (shaderDrawParameters).
+#ifdef MONOPLANE_STEREO_INSTANCED
+#define MONOPLANE_DRAWN_CHUNK gl_BaseInstance
+#else
+#define MONOPLANE_DRAWN_CHUNK gl_InstanceIndex
+#endif
+
+// The texture of the chunk this draw draws as (array, layer, wrap_u, wrap_v), or
+// MONOPLANE_NO_TEXTURE in x; and the vertex's coordinate, read only for textured chunks.
 void fetch_texture(out uvec4 slot, out vec2 uv) {
-    int texture_index = chunk_texture[gl_InstanceIndex];
+    int texture_index = chunk_texture[MONOPLANE_DRAWN_CHUNK];
     slot = uvec4(MONOPLANE_NO_TEXTURE, 0u, 0u, 0u);
     uv = vec2(0.0);
     if (texture_index < 0) return;

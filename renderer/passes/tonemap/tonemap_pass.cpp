@@ -36,17 +36,19 @@ TonemapPass::TonemapPass(const vk_core::Context& ctx) : ctx_(ctx) {
 }
 
 void TonemapPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& display,
-                         vk::DescriptorSet hdr_set, const TonemapParams& params) const {
+                         vk::DescriptorSet hdr_set, const TonemapParams& params,
+                         const std::optional<Predicate>& when) const {
     const vk::RenderingAttachmentInfo color(
         display.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
-        vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore);
+        when ? vk::AttachmentLoadOp::eLoad : vk::AttachmentLoadOp::eDontCare,
+        vk::AttachmentStoreOp::eStore);
     const vk::Extent2D extent = display.desc().extent;
     cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, extent), 1, 0, color));
     vk_core::set_viewport_and_scissor(cmd, extent);
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline_);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, hdr_set, {});
     cmd.pushConstants<TonemapParams>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, params);
-    cmd.draw(3, 1, 0, 0);
+    with_predicate(cmd, when, [&] { cmd.draw(3, 1, 0, 0); });
     cmd.endRendering();
 }
 

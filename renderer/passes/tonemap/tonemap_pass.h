@@ -1,7 +1,11 @@
-// HDR -> 8-bit sRGB display image for one view.
+// HDR -> 8-bit sRGB display image for one view (tone_mapping.glsl, which the composite that
+// writes the display image itself shares).
 // Reads: the HDR image (set 0, binding 0, texel-exact). Writes: the display image.
 #pragma once
 
+#include <optional>
+
+#include "renderer/passes/shared/indirect_draws.h"
 #include "renderer/vk/descriptor_set.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
@@ -22,9 +26,12 @@ class TonemapPass {
     vk_core::DescriptorSet make_input(const vk_core::Image& source) const;
 
     // Expects the HDR image bound in hdr_set to be in eShaderReadOnlyOptimal and `display` in
-    // eUndefined; leaves `display` in eColorAttachmentOptimal.
+    // eColorAttachmentOptimal; overwrites all of it. With `when` the GPU may skip the draw: the
+    // display image is then loaded and kept as an earlier pass wrote it (the composite that
+    // writes the display image itself, in a frame whose C had something to draw).
     void record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& display,
-                vk::DescriptorSet hdr_set, const TonemapParams& params) const;
+                vk::DescriptorSet hdr_set, const TonemapParams& params,
+                const std::optional<Predicate>& when = std::nullopt) const;
 
   private:
     const vk_core::Context& ctx_;
