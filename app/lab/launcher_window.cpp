@@ -87,6 +87,9 @@ void LauncherWindow::Impl::run_check() {
     check_frames_drawn = 0;
     last_check_frame = {};
     panels.run_check([this](const HeadsetCheckTurn& turn) { return check_turn(turn); });
+    // A check that ended before its tenth frame (a loaded machine draws fewer) is shown by its
+    // last frame: the panel with the runtime's measurements as it ended.
+    if (check_frames_drawn > 0 && check_frames_drawn < 10) save_screenshot("headset-check");
     write_state();
 }
 
