@@ -20,9 +20,9 @@ inline constexpr std::uint64_t kDefaultSeed = 1;
 // id may not be SceneId::Imported (imported scenes come from scenes/gltf/load_gltf.h).
 Scene generate_scene(SceneId id, Detail detail, std::uint64_t seed = kDefaultSeed);
 
-// A 64-bit hash of the vertices, indices, chunks, texture coordinates and viewpoints (not the
-// texels), for determinism checks and for tagging results with the exact geometry they were
-// measured on.
+// A 64-bit hash of the vertices, indices, chunks (their alpha modes and cut-offs too where any
+// chunk is not opaque), texture coordinates and viewpoints (not the texels), for determinism
+// checks and for tagging results with the exact geometry they were measured on.
 std::uint64_t geometry_hash(const Scene& scene);
 
 // "beams", "landscape", "spheres" (scene_name also gives "imported", which does not parse back).

@@ -128,7 +128,19 @@ LodChain build_range(const Scene& scene, std::size_t begin, std::size_t end) {
     LodChain chain;
     chain.chunks.reserve(end - begin);
     for (std::size_t c = begin; c < end; ++c) {
-        build_chunk_levels(chunk_mesh(scene, scene.chunks[c]), chain);
+        const Chunk& chunk = scene.chunks[c];
+        // Cut-out and blended chunks keep their full detail only. A masked chunk's silhouette is
+        // its texture's alpha, which the simplifier (positions only) never sees: a level would
+        // drag the texture coordinates, and with them the holes of a fence or the outline of a
+        // leaf, across the surface. A blended chunk is ordered back to front as a whole and
+        // writes no depth, so its triangles are never sorted among themselves: a coarser level
+        // that folds triangles over one another would blend them twice, in no defined order.
+        if (chunk.alpha_mode != AlphaMode::kOpaque) {
+            ChunkLods& lods = chain.chunks.emplace_back();
+            lods.first_level = static_cast<std::uint32_t>(chain.levels.size());
+            continue;
+        }
+        build_chunk_levels(chunk_mesh(scene, chunk), chain);
     }
     return chain;
 }

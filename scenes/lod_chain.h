@@ -57,7 +57,9 @@ struct LodChain {
 // Builds every chunk's chain: level k aims at 1/2^k of the chunk's triangles (simplified from
 // the full chunk each time, so errors are measured against the original surface) and the chain
 // ends where the simplifier cannot halve the previous level any more (locked borders), below
-// kMinLodTriangles, or at kMaxLodLevels. Deterministic: the same scene gives the same chain.
+// kMinLodTriangles, or at kMaxLodLevels. Chunks whose alpha mode is not AlphaMode::kOpaque get
+// no levels beyond level 0 (lod_chain.cpp says why). Deterministic: the same scene gives the same
+// chain.
 inline constexpr std::uint32_t kMinLodTriangles = 8;
 LodChain build_lod_chain(const Scene& scene);
 

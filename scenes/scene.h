@@ -67,6 +67,14 @@ struct ChunkRouting {
     glm::vec3 force_stereo_centre{0.0f};
 };
 
+// How a chunk's surface covers what lies behind it (glTF's material.alphaMode). Its alpha is the
+// vertex's albedo alpha (base-colour factor times vertex colour) times the base-colour texture's.
+// kOpaque ignores alpha; kMask drops the fragments whose alpha is below Chunk::alpha_cutoff and
+// draws the rest opaque (cut-outs: leaves, fences, grilles); kBlend draws after the opaque
+// geometry, back to front, over what lies behind with weight alpha (glass, water), writing no
+// depth. Procedural scenes are opaque throughout.
+enum class AlphaMode : std::uint8_t { kOpaque = 0, kMask = 1, kBlend = 2 };
+
 // A contiguous index range with its bounds: the unit of culling and of indirect draws.
 struct Chunk {
     std::uint32_t first_index = 0;
@@ -77,6 +85,9 @@ struct Chunk {
     // Index into Scene::textures of the base-colour texture every triangle of the chunk uses, or
     // -1 for none: a chunk never mixes textures, so one draw binds one texture.
     std::int32_t texture = -1;
+    // A chunk never mixes alpha modes or cut-offs (one pipeline and one cut-off per draw).
+    AlphaMode alpha_mode = AlphaMode::kOpaque;
+    float alpha_cutoff = 0.5f;  // kMask only: glTF's alphaCutoff (default 0.5)
 };
 
 // How texture coordinates outside [0, 1] fold back (the glTF sampler's wrapS / wrapT).

@@ -1,6 +1,7 @@
 // geometry_hash (generate.h): a splitmix-based combine over 64-bit words of the raw bytes.
 // Word-wise rather than FNV's byte-wise, so hashing a High scene (about 100 MB) stays cheap.
 // Little-endian byte order is assumed (every platform the project builds on).
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -45,6 +46,11 @@ std::uint64_t geometry_hash(const Scene& scene) {
     Hasher hasher;
     hasher.bytes(scene.vertices.data(), scene.vertices.size() * sizeof(Vertex));
     hasher.bytes(scene.indices.data(), scene.indices.size() * sizeof(std::uint32_t));
+    // Only scenes with masked or blended chunks hash the alpha fields: opaque scenes, procedural
+    // or imported, keep the hashes they had before alpha modes were read.
+    const bool any_alpha =
+        std::any_of(scene.chunks.begin(), scene.chunks.end(),
+                    [](const Chunk& chunk) { return chunk.alpha_mode != AlphaMode::kOpaque; });
     // Chunks field by field: never hash padding.
     for (const Chunk& chunk : scene.chunks) {
         hasher.value(chunk.first_index);
@@ -55,6 +61,10 @@ std::uint64_t geometry_hash(const Scene& scene) {
         hasher.value(chunk.flags);
         // Only imported scenes have textures: procedural hashes stay what they always were.
         if (!scene.textures.empty()) hasher.value(chunk.texture);
+        if (any_alpha) {
+            hasher.value(static_cast<std::uint8_t>(chunk.alpha_mode));
+            hasher.value(chunk.alpha_cutoff);
+        }
     }
     if (!scene.texcoords.empty()) {
         hasher.bytes(scene.texcoords.data(), scene.texcoords.size() * sizeof(glm::vec2));

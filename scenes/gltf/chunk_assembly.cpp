@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 #include <meshoptimizer.h>
@@ -11,6 +12,28 @@
 
 namespace monoplane::scenes::gltf {
 namespace {
+
+// What every triangle of a chunk shares: its texture and how it covers what lies behind it.
+// Blended triangles also share their batch (primitive instance): the renderer orders blended
+// chunks back to front, never the triangles within one, so two panes of glass must not share a
+// chunk. Ordered by texture first, so a scene that is opaque throughout chunks as it did before
+// alpha modes were read.
+struct ChunkLook {
+    std::int32_t texture = -1;
+    AlphaMode alpha_mode = AlphaMode::kOpaque;
+    float alpha_cutoff = 0.5f;
+    std::int64_t batch = -1;  // kBlend only: into ImportedGeometry::batches
+
+    static ChunkLook of(const ImportedGeometry& geometry, std::size_t batch_index) {
+        const GeometryBatch& batch = geometry.batches[batch_index];
+        const bool blend = batch.alpha_mode == AlphaMode::kBlend;
+        return {batch.texture, batch.alpha_mode, batch.alpha_cutoff,
+                blend ? static_cast<std::int64_t>(batch_index) : -1};
+    }
+    auto key() const { return std::tuple(texture, alpha_mode, alpha_cutoff, batch); }
+    bool operator<(const ChunkLook& other) const { return key() < other.key(); }
+    bool operator==(const ChunkLook& other) const { return key() == other.key(); }
+};
 
 // A triangle to place: its centre (the split key) and its number in ImportedGeometry order.
 struct TriangleRef {
@@ -62,7 +85,7 @@ class ChunkWriter {
           stamp_(geometry.vertices.size(), 0u),
           local_(geometry.vertices.size(), 0u) {}
 
-    void write(std::vector<std::uint32_t>& triangles, std::int32_t texture) {
+    void write(std::vector<std::uint32_t>& triangles, const ChunkLook& look) {
         std::sort(triangles.begin(), triangles.end());
         // Chunk-local indices in first-use order, then the GPU-friendly triangle order.
         ++chunk_;
@@ -84,7 +107,9 @@ class ChunkWriter {
         chunk.first_index = static_cast<std::uint32_t>(scene_.indices.size());
         chunk.vertex_offset = static_cast<std::int32_t>(scene_.vertices.size());
         chunk.index_count = static_cast<std::uint32_t>(optimized_.size());
-        chunk.texture = texture;
+        chunk.texture = look.texture;
+        chunk.alpha_mode = look.alpha_mode;
+        chunk.alpha_cutoff = look.alpha_cutoff;
         for (const std::uint32_t old_local : optimized_) {
             const std::uint32_t global = by_first_use[old_local];
             const std::size_t before = globals_.size();
@@ -129,21 +154,27 @@ void assemble_chunks(const ImportedGeometry& geometry, std::uint32_t target_tria
     assert(geometry.triangle_count() < std::numeric_limits<std::uint32_t>::max());
     const std::uint32_t target = std::clamp(target_triangles, kMinChunkTarget, kMaxChunkTriangles);
 
-    // Global vertex numbers of every triangle's corners, and each triangle's texture.
+    // The distinct looks, in order, and global vertex numbers of every triangle's corners.
+    std::vector<ChunkLook> looks;
+    looks.reserve(geometry.batches.size());
+    for (std::size_t b = 0; b < geometry.batches.size(); ++b) {
+        looks.push_back(ChunkLook::of(geometry, b));
+    }
+    std::sort(looks.begin(), looks.end());
+    looks.erase(std::unique(looks.begin(), looks.end()), looks.end());
     const std::size_t triangle_count = geometry.triangle_count();
     std::vector<std::uint32_t> corners(3 * triangle_count);
-    std::vector<std::int32_t> texture_of(triangle_count);
-    for (const GeometryBatch& batch : geometry.batches) {
+    std::vector<std::uint32_t> look_of(triangle_count);  // into looks
+    for (std::size_t b = 0; b < geometry.batches.size(); ++b) {
+        const GeometryBatch& batch = geometry.batches[b];
         for (std::size_t i = 0; i < batch.index_count; ++i) {
             corners[batch.first_index + i] = static_cast<std::uint32_t>(
                 batch.first_vertex + geometry.indices[batch.first_index + i]);
         }
-        std::fill_n(texture_of.begin() + static_cast<std::ptrdiff_t>(batch.first_index / 3),
-                    batch.index_count / 3, batch.texture);
+        const auto found = std::lower_bound(looks.begin(), looks.end(), ChunkLook::of(geometry, b));
+        std::fill_n(look_of.begin() + static_cast<std::ptrdiff_t>(batch.first_index / 3),
+                    batch.index_count / 3, static_cast<std::uint32_t>(found - looks.begin()));
     }
-    std::vector<std::int32_t> textures(texture_of.begin(), texture_of.end());
-    std::sort(textures.begin(), textures.end());
-    textures.erase(std::unique(textures.begin(), textures.end()), textures.end());
 
     scene.vertices.clear();
     scene.indices.clear();
@@ -151,17 +182,19 @@ void assemble_chunks(const ImportedGeometry& geometry, std::uint32_t target_tria
     scene.texcoords.clear();
     scene.indices.reserve(geometry.indices.size());
     scene.vertices.reserve(geometry.vertices.size() + geometry.vertices.size() / 8);
-    const bool textured = !textures.empty() && textures.back() >= 0;
+    const bool textured = std::any_of(looks.begin(), looks.end(),
+                                      [](const ChunkLook& look) { return look.texture >= 0; });
     ChunkWriter writer(geometry, corners, textured, scene);
     std::size_t done = 0;
     std::vector<TriangleRef> refs;
     std::vector<std::pair<std::size_t, std::size_t>> cells;
     std::vector<std::uint32_t> members;
-    // Triangles of different textures never share a chunk: one k-d tree per texture.
-    for (const std::int32_t texture : textures) {
+    // Triangles of different textures, alpha modes or cut-offs (or blended triangles of different
+    // primitive instances) never share a chunk: one k-d tree per look.
+    for (std::size_t l = 0; l < looks.size(); ++l) {
         refs.clear();
         for (std::size_t t = 0; t < triangle_count; ++t) {
-            if (texture_of[t] != texture) continue;
+            if (look_of[t] != l) continue;
             const glm::vec3& a = geometry.vertices[corners[3 * t]].position;
             const glm::vec3& b = geometry.vertices[corners[3 * t + 1]].position;
             const glm::vec3& c = geometry.vertices[corners[3 * t + 2]].position;
@@ -172,7 +205,7 @@ void assemble_chunks(const ImportedGeometry& geometry, std::uint32_t target_tria
         for (const auto& [begin, end] : cells) {
             members.clear();
             for (std::size_t i = begin; i < end; ++i) members.push_back(refs[i].triangle);
-            writer.write(members, texture);
+            writer.write(members, looks[l]);
             done += end - begin;
             if (progress) progress(done);
         }

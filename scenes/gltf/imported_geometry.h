@@ -1,5 +1,6 @@
 // World-space triangles collected from a glTF scene's mesh instances, before chunking
-// (chunk_assembly.h): one batch per primitive instance, so that a batch has one texture.
+// (chunk_assembly.h): one batch per primitive instance, so that a batch has one texture and one
+// alpha mode.
 #pragma once
 
 #include <cstddef>
@@ -17,7 +18,9 @@ struct GeometryBatch {
     std::uint32_t vertex_count = 0;
     std::size_t first_index = 0;  // into ImportedGeometry::indices, values batch-relative
     std::size_t index_count = 0;
-    std::int32_t texture = -1;  // Scene::textures index, or -1
+    std::int32_t texture = -1;                  // Scene::textures index, or -1
+    AlphaMode alpha_mode = AlphaMode::kOpaque;  // the material's (Chunk::alpha_mode)
+    float alpha_cutoff = 0.5f;                  // kMask only (Chunk::alpha_cutoff)
 };
 
 struct ImportedGeometry {

@@ -122,13 +122,6 @@ std::vector<std::string> warnings_for(const tinygltf::Model& model, const GltfLo
         ignored += (ignored.empty() ? "" : ", ") + extension;
     }
     if (!ignored.empty()) lines.push_back("ignores extensions " + ignored);
-    const auto translucent = std::count_if(
-        model.materials.begin(), model.materials.end(),
-        [](const tinygltf::Material& material) { return material.alphaMode != "OPAQUE"; });
-    if (translucent > 0) {
-        lines.push_back("draws " + plural(static_cast<std::size_t>(translucent), "material") +
-                        " with alphaMode MASK or BLEND as opaque");
-    }
     if (!model.skins.empty() || !model.animations.empty()) {
         lines.push_back("ignores skins and animations (meshes are drawn in their rest pose)");
     }

@@ -66,8 +66,9 @@ struct GltfLoadReport {
 
 // Reads a glTF 2.0 scene: the file's default scene (or its first, or, without any, every root
 // node), meshes in TRIANGLES, TRIANGLE_STRIP or TRIANGLE_FAN mode, node transforms, base-colour
-// factor, vertex colour and texture, roughness. The scene's id is SceneId::Imported and its name
-// the file's stem. Any thread, any time; report (optional) says what was skipped.
+// factor, vertex colour and texture, roughness, alpha mode and cut-off (Chunk::alpha_mode). The
+// scene's id is SceneId::Imported and its name the file's stem. Any thread, any time; report
+// (optional) says what was skipped.
 Result<Scene> load_gltf_scene(const std::filesystem::path& file,
                               const GltfLoadOptions& options = {},
                               GltfLoadReport* report = nullptr);

@@ -268,6 +268,8 @@ void append_vertices(const VertexAttributes& attributes, const SurfaceLook& look
     for (std::size_t k = 0; k < output_count; ++k) {
         const std::size_t from = attributes.normals.file_vertex(k);
         // Linear, like COLOR_0; the renderer multiplies in the texture (forward_shading.glsl).
+        // Alpha too: the factor's times COLOR_0's (a VEC3 colour is opaque), which masked and
+        // blended chunks use and opaque ones ignore.
         glm::vec4 colour = look.base_color;
         if (!colours.values.empty()) {
             const float* c = &colours.values[from * colours.components];
@@ -313,6 +315,8 @@ void append_batch(const VertexAttributes& attributes, const SurfaceLook& look,
     batch.first_index = geometry.indices.size();
     batch.index_count = indices.size();
     batch.texture = attributes.texture.scene_texture;
+    batch.alpha_mode = look.alpha_mode;
+    batch.alpha_cutoff = look.alpha_cutoff;
     append_vertices(attributes, look, output_count, geometry);
     orient_by_normals(geometry.vertices.data() + batch.first_vertex, indices);
     geometry.indices.insert(geometry.indices.end(), indices.begin(), indices.end());

@@ -1,5 +1,6 @@
 // What a glTF material (pbrMetallicRoughness) becomes in the renderer's simpler model: one
-// linear albedo per vertex, roughness and a scalar specular reflectance (scenes::Material).
+// linear albedo per vertex, roughness and a scalar specular reflectance (scenes::Material), and
+// how the surface covers what lies behind it (alphaMode, alphaCutoff: scenes::AlphaMode).
 #pragma once
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 
 #include "common/result.h"
 #include "scenes/gltf/tiny_gltf_config.h"
+#include "scenes/scene.h"
 
 namespace monoplane::scenes::gltf {
 
@@ -19,6 +21,10 @@ struct SurfaceLook {
     // glTF's doubleSided: back faces are drawn too (the importer adds them as triangles of their
     // own, since the renderer culls back faces of every chunk alike).
     bool double_sided = false;
+    // glTF's alphaMode ("OPAQUE", the default, "MASK" or "BLEND") and, for MASK only,
+    // alphaCutoff (default 0.5; the specification has other modes ignore it, so they keep 0.5).
+    AlphaMode alpha_mode = AlphaMode::kOpaque;
+    float alpha_cutoff = 0.5f;
 };
 
 // Whether material `material` is double-sided; false for -1 (glTF's default material) and for an
@@ -26,8 +32,10 @@ struct SurfaceLook {
 bool is_double_sided(const tinygltf::Model& model, int material);
 
 // The look of material `material`, or glTF's default material for -1 (white, metallic 1,
-// roughness 1). Metals are approximated: the base colour stays the diffuse albedo (the renderer
-// has no metallic term) and the specular reflectance rises from 0.04 (dielectrics) towards 0.5.
+// roughness 1, opaque). Metals are approximated: the base colour stays the diffuse albedo (the
+// renderer has no metallic term) and the specular reflectance rises from 0.04 (dielectrics)
+// towards 0.5. An alphaMode other than the three, or a negative alphaCutoff, is an error naming
+// the material.
 Result<SurfaceLook> surface_look(const tinygltf::Model& model, int material);
 
 }  // namespace monoplane::scenes::gltf
