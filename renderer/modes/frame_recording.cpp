@@ -33,6 +33,8 @@ passes::ForwardStep forward_step(DrawStep step) {
             return passes::ForwardStep::kChunksShowRouting;
         case DrawStep::kSky:
             return passes::ForwardStep::kSky;
+        case DrawStep::kBlended:
+            return passes::ForwardStep::kBlended;
     }
     return passes::ForwardStep::kChunks;
 }
@@ -96,6 +98,9 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const Plan
         case PassKind::kComposite:
             record_composite(cmd, pass, frame);
             break;
+        case PassKind::kTransparency:
+            record_transparency(cmd, pass);
+            break;
         case PassKind::kSsao:
             record_ssao(cmd, frame, sync);
             break;
@@ -123,7 +128,7 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const Plan
         // Both eyes in one pass, from the list of chunks either eye needs.
         eyes_forward_->record(cmd, eye_layers_->forward_targets(eye_extent_), *eye_pair_set_,
                               *merged_depth_set_, resources_->geometry(), resources_->textures(),
-                              culling_.draws(passes::CullView::kBothEyes), draws);
+                              culling_.chunk_draws(passes::CullView::kBothEyes), draws);
         return;
     }
     if (pass.view == ViewId::kMono) {
@@ -135,13 +140,24 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const Plan
         const bool clear_color = masked && (options_.read_back || ssao_);
         forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,
                         *merged_depth_set_, resources_->geometry(), resources_->textures(),
-                        culling_.draws(passes::CullView::kMono), draws);
+                        culling_.chunk_draws(passes::CullView::kMono), draws);
         return;
     }
     const int e = eye_index(pass.view);
     forward_.record(cmd, eyes_[e]->forward_targets(), *eyes_[e]->forward_set, *merged_depth_set_,
                     resources_->geometry(), resources_->textures(),
-                    culling_.draws(static_cast<passes::CullView>(e)), draws);
+                    culling_.chunk_draws(static_cast<passes::CullView>(e)), draws);
+}
+
+void ModeRenderer::record_transparency(const vk::raii::CommandBuffer& cmd,
+                                       const PlannedPass& pass) {
+    // One eye at a time in every stereo form: the eye's own list holds its blended chunks.
+    const int e = eye_index(pass.view);
+    View& eye = *eyes_[e];
+    forward_.record_after_composite(
+        cmd, passes::AfterCompositeTargets{eye.hdr, eye_extent_}, *eye.forward_set,
+        *eye.composite_depth_set, resources_->geometry(), resources_->textures(),
+        culling_.draws(static_cast<passes::CullView>(e), MONOPLANE_CLASS_BLENDED));
 }
 
 void ModeRenderer::record_pyramid(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,

@@ -1,6 +1,7 @@
 #include "renderer/modes/frustum_culling.h"
 
 #include <algorithm>
+#include <iterator>
 #include <numeric>
 
 #include <glm/common.hpp>
@@ -46,6 +47,34 @@ std::vector<std::uint32_t> front_to_back_order(const scenes::Scene& scene,
     std::iota(order.begin(), order.end(), 0u);
     std::stable_sort(order.begin(), order.end(),
                      [&](std::uint32_t a, std::uint32_t b) { return distance[a] < distance[b]; });
+    return order;
+}
+
+std::vector<std::uint32_t> draw_order(const scenes::Scene& scene, const glm::dvec3& viewer) {
+    std::vector<std::uint32_t> order = front_to_back_order(scene, viewer);
+    std::vector<double> centre_distance(scene.chunks.size());
+    for (std::size_t i = 0; i < scene.chunks.size(); ++i) {
+        const scenes::Aabb& box = scene.chunks[i].bounds;
+        const glm::dvec3 centre = 0.5 * (glm::dvec3(box.min) + glm::dvec3(box.max));
+        centre_distance[i] = glm::length(centre - viewer);
+    }
+    const auto blended = [&](std::uint32_t c) {
+        return scene.chunks[c].alpha_mode == scenes::AlphaMode::kBlend;
+    };
+    // The blended chunks keep their places among the others (the lists separate the classes);
+    // only their order among themselves changes.
+    std::vector<std::uint32_t> back_to_front;
+    std::copy_if(order.begin(), order.end(), std::back_inserter(back_to_front), blended);
+    std::stable_sort(back_to_front.begin(), back_to_front.end(),
+                     [&](std::uint32_t a, std::uint32_t b) {
+                         if (centre_distance[a] != centre_distance[b])
+                             return centre_distance[a] > centre_distance[b];
+                         return a < b;
+                     });
+    auto next = back_to_front.begin();
+    for (std::uint32_t& chunk : order) {
+        if (blended(chunk)) chunk = *next++;
+    }
     return order;
 }
 

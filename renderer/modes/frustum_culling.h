@@ -28,6 +28,14 @@ bool intersects(const std::array<glm::dvec4, 6>& planes, const scenes::Aabb& box
 std::vector<std::uint32_t> front_to_back_order(const scenes::Scene& scene,
                                                const glm::dvec3& viewer);
 
+// The frame's draw order: front_to_back_order for the opaque and alpha-masked chunks, and the
+// blended ones (alphaMode BLEND) back to front by the distance from `viewer` to their bounds'
+// centre, farthest first, ties by index. The culling pass keeps the order within each alpha class,
+// so each view blends its surfaces farthest first ("over" is not commutative). A chunk is the
+// unit: two blended chunks that interpenetrate, or one whose centre is nearer but which lies
+// partly behind another, blend in the wrong order where they overlap (docs/scenes.md).
+std::vector<std::uint32_t> draw_order(const scenes::Scene& scene, const glm::dvec3& viewer);
+
 // Indices of the chunks whose bounds intersect the frustum of view_proj.
 std::vector<std::uint32_t> visible_chunks(const scenes::Scene& scene, const glm::dmat4& view_proj);
 

@@ -102,12 +102,25 @@ passes::StereoDuplication stereo_duplication(StereoPass pass) {
     return passes::StereoDuplication::kNone;
 }
 
+// The forward pass's configuration: anti-aliasing, the stereo form, and the pipelines of the
+// alpha classes the scene has.
+passes::ForwardConfig forward_config(const RendererOptions& options,
+                                     passes::StereoDuplication stereo, const scenes::Scene& scene) {
+    passes::ForwardConfig config{options.anti_aliasing == AntiAliasing::kTaa,
+                                 msaa_samples(options.anti_aliasing), stereo, options.vertex_work};
+    const auto classes = passes::ChunkCullingPass::class_sizes(scene);
+    config.masked_chunks = classes[MONOPLANE_CLASS_MASKED] > 0;
+    config.blended_chunks = classes[MONOPLANE_CLASS_BLENDED] > 0;
+    return config;
+}
+
 // Whether a frame's plan may have the composite write the display image (PlannedPass::
 // writes_display), asked of the plan itself: the composite's pipelines for it are made with the
 // renderer, never mid-run, and only when some frame will use them.
 bool composite_may_write_display(const vk_core::Context& ctx, Mode mode,
-                                 const RendererOptions& renderer) {
+                                 const RendererOptions& renderer, bool blended_chunks) {
     PlanOptions options;
+    options.blended = blended_chunks;
     options.mode = mode;
     options.stereo_pass = renderer.stereo_pass;
     options.anti_aliasing = renderer.anti_aliasing;
@@ -138,13 +151,13 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       eye_extent_(eye_extent),
       options_(checked(ctx, mode, options)),
       nearest_mono_plane_(nearest_mono_plane),
+      blended_chunks_(
+          forward_config(options, passes::StereoDuplication::kNone, scene_).blended_chunks),
       forward_(ctx, resources_->textures().layout(),
-               passes::ForwardConfig{options.anti_aliasing == AntiAliasing::kTaa,
-                                     msaa_samples(options.anti_aliasing),
-                                     passes::StereoDuplication::kNone, options.vertex_work}),
+               forward_config(options, passes::StereoDuplication::kNone, scene_)),
       tonemap_(ctx),
       composite_(ctx, options.anti_aliasing == AntiAliasing::kTaa,
-                 composite_may_write_display(ctx, mode, options)),
+                 composite_may_write_display(ctx, mode, options, blended_chunks_)),
       culling_(ctx, scene_, resources_->chunk_table(), resources_->level_table()),
       pyramid_(ctx),
       taa_(ctx),
@@ -158,9 +171,7 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
         eye_layers_ = std::make_unique<ForwardImages>(ctx, eye_extent, eye_features, 2);
         const passes::StereoDuplication duplication = stereo_duplication(options.stereo_pass);
         eyes_forward_ = std::make_unique<passes::ForwardPass>(
-            ctx, resources_->textures().layout(),
-            passes::ForwardConfig{taa, msaa_samples(options.anti_aliasing), duplication,
-                                  options.vertex_work});
+            ctx, resources_->textures().layout(), forward_config(options, duplication, scene_));
         eye_pair_constants_.emplace(ctx, 2 * sizeof(passes::ViewConstants),
                                     vk::BufferUsageFlagBits::eUniformBuffer,
                                     vk_core::MemoryUse::kDeviceLocal);
@@ -178,6 +189,10 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
             eye->composite_hdr_set = composite_.make_eye_input(eye->hdr);
         }
         if (taa) make_taa_sets(*eye);
+        if (blended_chunks_ && mode != Mode::kStereo) {
+            eye->composite_depth_set =
+                forward_.make_composite_depth_set(eye->linear_depth.view(), pyramid_.sampler());
+        }
         if (ssao_) eye->ssao = ssao_->make_view(eye->constants, eye->linear_depth, eye_extent);
     }
     pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
@@ -422,6 +437,8 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
     const PlannedPass* pyramid = last_plan_.find("depth_pyramid");
     const bool depth_tested = pyramid != nullptr && !pyramid->skipped;
     passes::CullFrame cull;
+    // Hybrid: C draws the blended chunks wholly beyond m - eps, the eyes the others.
+    cull.split_blended = use_mono;
     // Instanced stereo draws each chunk of the both-eyes list once per eye, as two instances.
     cull.both_eyes_instances = options_.stereo_pass == StereoPass::kInstanced ? 2u : 1u;
     const glm::dvec3 mono_in_head = farfield || !use_mono ? glm::dvec3(0.0) : rig_->mono_position;
@@ -475,10 +492,10 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
             cull.pyramid_mips = pyramid_.mips();
         }
     }
-    // Nearest chunks first (one order for every view: the eyes and C look from the head), sorted
-    // and uploaded again only when the head has moved.
+    // Nearest chunks first, blended ones farthest first (one order for every view: the eyes and C
+    // look from the head), sorted and uploaded again only when the head has moved.
     if (draw_order_viewer_ != views.head.position) {
-        culling_.set_draw_order(front_to_back_order(scene_, views.head.position), uploads_);
+        culling_.set_draw_order(draw_order(scene_, views.head.position), uploads_);
         draw_order_viewer_ = views.head.position;
     }
     culling_.set_frame(cull, uploads_);
@@ -503,6 +520,7 @@ void ModeRenderer::update_plan(const FrameInputs& inputs, const FrameState& fram
     options.read_back_draw_lists = options_.read_back_draw_lists;
     options.depth_histogram = auto_mono_plane_ != nullptr;
     options.separate_tonemap = options_.separate_tonemap;
+    options.blended = blended_chunks_;
     PlanFrame planned;
     planned.mono_skipped = !frame.use_mono;
     planned.mono_culling = frame.mono_culling;

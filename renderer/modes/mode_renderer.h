@@ -244,6 +244,7 @@ class ModeRenderer {
                      passes::StepSync& sync);
     void record_composite(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
                           const FrameState& frame);
+    void record_transparency(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass);
     void record_taa(const vk::raii::CommandBuffer& cmd, View& view);
     void record_tonemap(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
                         const FrameState& frame);
@@ -266,6 +267,7 @@ class ModeRenderer {
     vk::Extent2D eye_extent_;
     RendererOptions options_;
     double nearest_mono_plane_;
+    bool blended_chunks_;  // the scene has alphaMode BLEND chunks (frame_plan.h: PlanOptions)
     passes::ForwardPass forward_;
     std::unique_ptr<passes::ForwardPass> eyes_forward_;  // single-pass stereo: both eyes at once
     passes::TonemapPass tonemap_;

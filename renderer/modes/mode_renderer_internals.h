@@ -131,6 +131,9 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     vk_core::DescriptorSet tonemap_set;
     // An eye's HDR image as the composite that writes the display image reads it.
     vk_core::DescriptorSet composite_hdr_set;
+    // Hybrid with blended chunks: the eye's linear depth after the composite, as its
+    // transparency pass tests against it.
+    vk_core::DescriptorSet composite_depth_set;
     RgbaImage image;
     std::vector<float> linear;
     // TAA: the sets reading and writing the history images.

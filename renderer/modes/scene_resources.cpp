@@ -1,7 +1,7 @@
 #include "renderer/modes/scene_resources.h"
 
+#include <algorithm>
 #include <chrono>
-#include <numeric>
 #include <vector>
 
 #include "renderer/passes/culling/chunk_culling_pass.h"
@@ -16,6 +16,19 @@ scenes::LodChain timed_lod_chain(const scenes::Scene& scene, double& seconds) {
     return chain;
 }
 
+std::vector<std::uint32_t> chunks_of(const scenes::Scene& scene, scenes::AlphaMode mode) {
+    std::vector<std::uint32_t> chunks;
+    for (std::uint32_t i = 0; i < scene.chunks.size(); ++i) {
+        if (scene.chunks[i].alpha_mode == mode) chunks.push_back(i);
+    }
+    return chunks;
+}
+
+bool any_chunk_of(const scenes::Scene& scene, scenes::AlphaMode mode) {
+    return std::any_of(scene.chunks.begin(), scene.chunks.end(),
+                       [&](const scenes::Chunk& chunk) { return chunk.alpha_mode == mode; });
+}
+
 }  // namespace
 
 SceneResources::SceneResources(const vk_core::Context& ctx, const scenes::Scene& scene,
@@ -27,16 +40,20 @@ SceneResources::SceneResources(const vk_core::Context& ctx, const scenes::Scene&
       textures_(ctx, scene),
       chunk_table_(passes::ChunkCullingPass::make_chunk_table(ctx, scene, lods_)),
       level_table_(passes::ChunkCullingPass::make_level_table(ctx, scene, lods_)),
-      shadow_(ctx, shadow),
-      shadow_draws_(ctx, scene.chunks.size()) {
-    std::vector<std::uint32_t> all(scene.chunks.size());
-    std::iota(all.begin(), all.end(), 0u);
-    shadow_draws_.assign(scene, all);
+      shadow_(ctx, shadow, textures_.layout(), any_chunk_of(scene, scenes::AlphaMode::kMask)),
+      shadow_opaque_(ctx, scene.chunks.size()),
+      shadow_masked_(ctx, scene.chunks.size()) {
+    shadow_opaque_.assign(scene, chunks_of(scene, scenes::AlphaMode::kOpaque));
+    shadow_masked_.assign(scene, chunks_of(scene, scenes::AlphaMode::kMask));
 }
 
 void SceneResources::record_shadow(const vk::raii::CommandBuffer& cmd,
                                    const glm::dmat4& light_view_proj) {
-    shadow_.record(cmd, geometry_, shadow_draws_, glm::mat4(light_view_proj));
+    // Blended chunks cast no shadow (passes::ShadowCasters).
+    shadow_.record(cmd, geometry_,
+                   passes::ShadowCasters{shadow_opaque_.indirect(), shadow_masked_.indirect(),
+                                         textures_.set()},
+                   glm::mat4(light_view_proj));
     // Frames are waited for before the next is recorded, so the map holds this from now on.
     shadow_light_view_proj_ = light_view_proj;
 }

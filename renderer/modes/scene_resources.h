@@ -60,7 +60,9 @@ class SceneResources {
     vk_core::Buffer chunk_table_;
     vk_core::Buffer level_table_;
     passes::ShadowPass shadow_;
-    passes::DrawList shadow_draws_;  // every chunk
+    // What casts shadows: the opaque chunks, and the masked ones through the alpha test.
+    passes::DrawList shadow_opaque_;
+    passes::DrawList shadow_masked_;
     std::optional<glm::dmat4> shadow_light_view_proj_;
     graph::ResourceState shadow_map_state_;
 };

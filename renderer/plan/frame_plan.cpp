@@ -19,6 +19,7 @@ constexpr NameTable<PassKind> kPassKindNames = {{PassKind::kCulling, "culling"},
                                                 {PassKind::kOcclusionCulling, "occlusion_culling"},
                                                 {PassKind::kMonoSsao, "mono_ssao"},
                                                 {PassKind::kComposite, "composite"},
+                                                {PassKind::kTransparency, "transparency"},
                                                 {PassKind::kSsao, "ssao"},
                                                 {PassKind::kTaa, "taa"},
                                                 {PassKind::kTonemap, "tonemap"},
@@ -34,7 +35,8 @@ constexpr NameTable<DrawStep> kDrawStepNames = {
     {DrawStep::kDepthPrepass, "depth-prepass"},
     {DrawStep::kChunks, "chunks"},
     {DrawStep::kChunksShowRouting, "chunks-show-routing"},
-    {DrawStep::kSky, "sky"}};
+    {DrawStep::kSky, "sky"},
+    {DrawStep::kBlended, "blended"}};
 
 // What shapes this frame's passes, derived once from the inputs (the renderer's own rules).
 struct FrameShape {
@@ -144,6 +146,8 @@ class PlanBuilder {
         } else if (s_.predicated) {
             draws.push_back({DrawStep::kSky, GpuPredicate::kMonoNone});
         }
+        // In hybrid the eyes' blended chunks wait for the composite (add_transparency).
+        if (options_.blended && !s_.use_mono) draws.push_back({DrawStep::kBlended});
         return draws;
     }
 
@@ -174,6 +178,8 @@ class PlanBuilder {
         if (options_.depth_prepass) draws.push_back({DrawStep::kDepthPrepass});
         draws.push_back({chunks});
         draws.push_back({DrawStep::kSky, when(GpuPredicate::kMonoAny)});
+        // Only the blended chunks wholly beyond m - eps: they are mapped like the rest of C.
+        if (options_.blended) draws.push_back({DrawStep::kBlended});
         return draws;
     }
 
@@ -214,6 +220,18 @@ class PlanBuilder {
             pass.steps = composite_steps(r_, eye, s_.taa);
             pass.when = when(GpuPredicate::kMonoAny);
             pass.skipped = no_mono;
+        }
+        if (options_.blended && s_.use_mono) add_transparency();
+    }
+
+    // Hybrid's blended chunks nearer than m or straddling it, per eye after the composite: a
+    // blended surface has no single depth, so it cannot be mapped through the mono plane; drawn
+    // over the composite and tested against its depth, each is drawn once into each eye.
+    void add_transparency() {
+        for (ViewId eye : kEyes) {
+            PlannedPass& pass = add(PassKind::kTransparency, view_name(eye) + ".transparency", eye);
+            pass.statistics_scope = view_name(eye) + ".transparency";
+            pass.steps = transparency_steps(r_, eye);
         }
     }
 

@@ -11,14 +11,17 @@
 //                    both eyes)
 //   hybrid:          culling, shadow*, per eye {forward n..m: chunks, sky only if C has nothing},
 //                    [depth pyramid, [occlusion culling]], C {forward m-eps..f + sky}, [C's ssao],
-//                    per eye {composite C through M_{E->C}}, [ssao of the near content],
+//                    per eye {composite C through M_{E->C}}, [per eye {blended chunks nearer
+//                    than m, tested against the composite's depth}], [ssao of the near content],
 //                    per eye {[taa], tonemap}, [C's tonemap], [depth histogram], read-back;
 //                    without TAA and SSAO each composite also tone maps into the eye's display
 //                    image (one full-screen pass per eye), and the eye's tonemap runs only when
 //                    C had nothing (the composite is then skipped), or not at all
 //   hybrid-farfield: as hybrid with C at the eyes' centre, no pyramid, an offset copy
-// (* only when the light's region changed). With m >= f (the rig's mono_skipped) hybrid's executed
-// passes are exactly stereo's: nothing lies beyond the plane.
+// (* only when the light's region changed). A scene with blended chunks (alphaMode BLEND) draws
+// them last in each forward pass; in hybrid, C draws those wholly beyond m - eps and the eyes the
+// others in their transparency passes, after the composite. With m >= f (the rig's mono_skipped)
+// hybrid's executed passes are exactly stereo's: nothing lies beyond the plane.
 //
 // When may this be called: any time; it allocates and touches no device.
 #pragma once
@@ -43,6 +46,7 @@ enum class PassKind {
     kOcclusionCulling,  // C's list re-sorted against the pyramid
     kMonoSsao,          // C's ambient occlusion, once for both eyes (hybrid)
     kComposite,         // C mapped into an eye (eq. 5) or offset-copied (hybrid-farfield)
+    kTransparency,      // hybrid: an eye's blended chunks nearer than m, after the composite
     kSsao,              // the eyes' ambient occlusion (near content only in hybrid)
     kTaa,               // an eye's temporal anti-aliasing resolve
     kTonemap,           // an eye's (or C's) tone mapping into its display image
@@ -68,6 +72,7 @@ enum class DrawStep {
     kChunks,             // the view's chunk list, shaded
     kChunksShowRouting,  // debug view "routing"
     kSky,                // the sky where nothing was drawn
+    kBlended,            // the view's blended chunks (alphaMode BLEND), back to front
 };
 std::string draw_step_name(DrawStep step);  // "mask-hidden", "depth-prepass", "chunks", ...
 
@@ -81,8 +86,8 @@ struct PlannedPass {
     PassKind kind = PassKind::kCulling;
     // The profiler's scope and the key of bench.json's "passes": "culling", "shadow",
     // "left.forward", "eyes.forward", "mono.forward", "depth_pyramid", "occlusion_culling",
-    // "mono.ssao", "left.composite", "ssao", "left.taa", "left.tonemap", "mono.tonemap",
-    // "readback".
+    // "mono.ssao", "left.composite", "left.transparency", "ssao", "left.taa", "left.tonemap",
+    // "mono.tonemap", "readback".
     std::string name;
     // The camera it draws for; kNone for passes over every view (culling, shadow, pyramid, ssao,
     // read-back).
@@ -149,6 +154,9 @@ struct PlanOptions {
     // Keep each eye's tone mapping a pass of its own even where the composite could write the
     // display image (PlannedPass::writes_display): the comparisons of tests and benchmarks.
     bool separate_tonemap = false;
+    // The scene has blended chunks (alphaMode BLEND): each view draws them last; in hybrid the
+    // eyes draw theirs after the composite (PassKind::kTransparency).
+    bool blended = false;
     bool operator==(const PlanOptions&) const = default;
 };
 

@@ -162,6 +162,17 @@ std::vector<Step> composite_steps(PlanResources& r, ViewId eye, bool velocity) {
     return steps;
 }
 
+std::vector<Step> transparency_steps(PlanResources& r, ViewId eye) {
+    std::vector<Step> steps;
+    StepBuilder(add_step(steps, "draw"))
+        .use(r.shared(BufferRole::kDrawLists), Use::kIndirectArgs)
+        .use(r.shared(BufferRole::kPredicates), Use::kIndirectArgs)
+        .use(r.shared(ImageRole::kShadowMap), Use::kSampledFragment)
+        .use(r.image(eye, ImageRole::kLinearDepth), Use::kSampledFragment)
+        .use(r.image(eye, ImageRole::kHdr), Use::kColorBlend);
+    return steps;
+}
+
 std::vector<Step> composite_display_steps(PlanResources& r, ViewId eye) {
     std::vector<Step> steps;
     StepBuilder(add_step(steps, "composite"))

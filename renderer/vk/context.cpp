@@ -242,6 +242,7 @@ std::optional<Error> Context::choose_device(const ContextOptions& options) {
     caps.geometry_shader = f10.geometryShader;
     caps.multiview = f11.multiview;
     caps.independent_blend = f10.independentBlend;
+    caps.depth_clamp = f10.depthClamp;
     caps.shader_draw_parameters = f11.shaderDrawParameters;
     const auto device_extensions = physical_device_.enumerateDeviceExtensionProperties();
     caps.vertex_shader_layer =

@@ -61,6 +61,9 @@ struct DeviceCapabilities {
     // Colour attachments written with different channel masks by one pipeline: the composite
     // that writes the display image and keeps the eye's linear depth (renderer/passes/composite).
     bool independent_blend = false;
+    // Depth clamping: hybrid draws blended chunks straddling the mono plane into the eyes after
+    // the composite with the eyes' projection, whose far plane is m (renderer/passes/forward).
+    bool depth_clamp = false;
     // Instanced stereo: the vertex shader reads the draw's base instance (Vulkan 1.1's
     // shaderDrawParameters) and writes gl_Layer (VK_EXT_shader_viewport_index_layer, enabled
     // when offered; Vulkan 1.2's shaderOutputLayer would need the feature structure the device

@@ -27,7 +27,8 @@ vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipe
     }
     if (desc.fragment) {
         stages.emplace_back(vk::PipelineShaderStageCreateFlags(),
-                            vk::ShaderStageFlagBits::eFragment, desc.fragment, "main");
+                            vk::ShaderStageFlagBits::eFragment, desc.fragment, "main",
+                            desc.fragment_specialization);
     }
     const vk::PipelineVertexInputStateCreateInfo vertex_input({}, desc.vertex_bindings,
                                                               desc.vertex_attributes);
@@ -35,9 +36,11 @@ vk::raii::Pipeline make_graphics_pipeline(const Context& ctx, const GraphicsPipe
         {}, vk::PrimitiveTopology::eTriangleList);
     const vk::PipelineViewportStateCreateInfo viewport({}, 1, nullptr, 1, nullptr);
     vk::PipelineRasterizationStateCreateInfo raster(
-        {}, VK_FALSE, VK_FALSE, vk::PolygonMode::eFill, desc.cull, vk::FrontFace::eCounterClockwise,
-        desc.depth_bias ? VK_TRUE : VK_FALSE, 0.0f, 0.0f, 0.0f, 1.0f);
-    const vk::PipelineMultisampleStateCreateInfo multisample({}, desc.samples);
+        {}, desc.depth_clamp ? VK_TRUE : VK_FALSE, VK_FALSE, vk::PolygonMode::eFill, desc.cull,
+        vk::FrontFace::eCounterClockwise, desc.depth_bias ? VK_TRUE : VK_FALSE, 0.0f, 0.0f, 0.0f,
+        1.0f);
+    const vk::PipelineMultisampleStateCreateInfo multisample(
+        {}, desc.samples, VK_FALSE, 0.0f, nullptr, desc.alpha_to_coverage ? VK_TRUE : VK_FALSE);
     const vk::PipelineDepthStencilStateCreateInfo depth({}, desc.depth_test, desc.depth_write,
                                                         desc.depth_compare);
     std::vector<vk::PipelineColorBlendAttachmentState> blend(

@@ -20,6 +20,7 @@ struct GraphicsPipelineDesc {
     const vk::SpecializationInfo* vertex_specialization = nullptr;
     vk::ShaderModule geometry;  // optional (single-pass stereo duplicating primitives)
     vk::ShaderModule fragment;  // may be null for depth-only passes
+    const vk::SpecializationInfo* fragment_specialization = nullptr;  // optional
     std::vector<vk::VertexInputBindingDescription> vertex_bindings;
     std::vector<vk::VertexInputAttributeDescription> vertex_attributes;
     std::vector<vk::Format> color_formats;
@@ -32,6 +33,11 @@ struct GraphicsPipelineDesc {
     bool depth_bias = false;
     // MSAA: the rasterisation samples of every attachment (ImageDesc::samples).
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;
+    // MSAA: the first colour output's alpha becomes the fragment's sample coverage.
+    bool alpha_to_coverage = false;
+    // Depth clamping instead of clipping at the near and far planes (needs the device's
+    // depthClamp, DeviceCapabilities::depth_clamp).
+    bool depth_clamp = false;
     // Blending of every colour attachment; none by default (the output replaces the target).
     std::optional<vk::PipelineColorBlendAttachmentState> blend;
     // Per colour attachment, the channels written (an empty flag set leaves that attachment as

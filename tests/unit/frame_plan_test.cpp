@@ -713,6 +713,79 @@ TEST(FramePlan, WithoutACompositeTheTonemapAlwaysRunsAndSeparateTonemapChangesNo
     }
 }
 
+// Blended chunks (alphaMode BLEND) are drawn last in every view; in hybrid the eyes draw theirs
+// after the composite, into the HDR image the composite wrote, tested against its linear depth,
+// so the composite no longer writes the display image.
+TEST(FramePlan, BlendedChunksDrawLastAndInHybridAfterTheComposite) {
+    for (bool conditional : {false, true}) {
+        PlanOptions stereo = options_for(Mode::kStereo);
+        stereo.blended = true;
+        const FramePlan stereo_plan = plan_of(stereo, PlanFrame{}, conditional);
+        EXPECT_EQ(stereo_plan.executed_names(), kStereoList);
+        const Draws eye = {
+            {DrawStep::kChunks, kAlways}, {DrawStep::kSky, kAlways}, {DrawStep::kBlended, kAlways}};
+        EXPECT_EQ(draws_of(stereo_plan, "left.forward"), eye);
+        EXPECT_EQ(draws_of(stereo_plan, "right.forward"), eye);
+
+        PlanOptions hybrid = options_for(Mode::kHybrid);
+        hybrid.blended = true;
+        const FramePlan plan = plan_of(hybrid, frame_with(false), conditional);
+        const Names expected = {"culling",
+                                "shadow",
+                                "left.forward",
+                                "right.forward",
+                                "depth_pyramid",
+                                "occlusion_culling",
+                                "mono.forward",
+                                "left.composite",
+                                "right.composite",
+                                "left.transparency",
+                                "right.transparency",
+                                "left.tonemap",
+                                "right.tonemap",
+                                "mono.tonemap",
+                                "readback"};
+        EXPECT_EQ(plan.executed_names(), expected) << conditional;
+        for (const std::string name : {"left.forward", "right.forward"}) {
+            for (const PlannedDraw& draw : draws_of(plan, name)) {
+                EXPECT_NE(draw.step, DrawStep::kBlended) << name;
+            }
+        }
+        ASSERT_FALSE(draws_of(plan, "mono.forward").empty());
+        EXPECT_EQ(draws_of(plan, "mono.forward").back(),
+                  (PlannedDraw{DrawStep::kBlended, kAlways}));
+        for (const std::string e : {"left", "right"}) {
+            const PlannedPass* pass = plan.find(e + ".transparency");
+            ASSERT_NE(pass, nullptr);
+            EXPECT_EQ(pass->kind, PassKind::kTransparency);
+            EXPECT_EQ(pass->when, kAlways);  // an eye's own blended chunks, whatever C drew
+            EXPECT_EQ(plan.reads(*pass), (Names{"draw_lists", "predicates", "shadow_map",
+                                                e + ".linear_depth", e + ".hdr"}));
+            EXPECT_EQ(plan.writes(*pass), (Names{e + ".hdr"}));
+            EXPECT_FALSE(plan.find(e + ".composite")->writes_display) << e;
+        }
+        // Nothing beyond m: stereo's passes and draws exactly, blended chunks in the forward
+        // passes.
+        const FramePlan skipped = plan_of(hybrid, frame_with(true), conditional);
+        EXPECT_EQ(skipped.executed_names(), kStereoList);
+        EXPECT_EQ(draws_of(skipped, "left.forward"), eye);
+        // Single-pass stereo: one forward pass for both eyes, a transparency pass per eye.
+        PlanOptions single = options_for(Mode::kHybrid, StereoPass::kInstanced);
+        single.blended = true;
+        const Names names = plan_of(single, frame_with(false), conditional).executed_names();
+        EXPECT_LT(index_of(names, "right.composite"), index_of(names, "left.transparency"));
+        EXPECT_LT(index_of(names, "left.transparency"), index_of(names, "right.transparency"));
+        EXPECT_LT(index_of(names, "right.transparency"), index_of(names, "left.tonemap"));
+        // With TAA and SSAO: after the composites, before the eyes' SSAO and TAA.
+        PlanOptions post = hybrid;
+        post.anti_aliasing = AntiAliasing::kTaa;
+        post.ssao = true;
+        const Names with_post = plan_of(post, frame_with(false), conditional).executed_names();
+        EXPECT_LT(index_of(with_post, "right.transparency"), index_of(with_post, "ssao"));
+        EXPECT_LT(index_of(with_post, "ssao"), index_of(with_post, "left.taa"));
+    }
+}
+
 // --mono-plane auto: both eyes' final depth is counted after everything that writes it (the
 // composites, SSAO's apply, TAA reads it) and before the read-back; nothing else changes.
 TEST(FramePlan, AutoMonoPlaneCountsTheEyesFinalDepthBeforeTheReadBack) {
@@ -748,13 +821,14 @@ struct Combination {
           << anti_aliasing_name(options.anti_aliasing) << " ssao " << options.ssao << " prepass "
           << options.depth_prepass << " read_back " << options.read_back << " conditional "
           << conditional << " mono_skipped " << frame.mono_skipped << " shadow_needed "
-          << frame.shadow_needed << " debug " << static_cast<int>(frame.debug);
+          << frame.shadow_needed << " debug " << static_cast<int>(frame.debug) << " blended "
+          << options.blended;
         return s.str();
     }
 };
 
 // Modes x culling variants x AA none/TAA x SSAO x stereo passes x depth prepass x conditional
-// rendering x mono_skipped x shadow needed x read-back x debug views.
+// rendering x mono_skipped x shadow needed x read-back x debug views x blended chunks.
 std::vector<Combination> all_combinations() {
     std::vector<Combination> all;
     for (Mode mode : kModes)
@@ -769,23 +843,27 @@ std::vector<Combination> all_combinations() {
                                         for (bool read_back : {false, true})
                                             for (DebugView debug :
                                                  {DebugView::kNone, DebugView::kRouting,
-                                                  DebugView::kMonoOnly}) {
-                                                Combination c;
-                                                c.options = options_for(mode, stereo_pass);
-                                                c.options.anti_aliasing = aa;
-                                                c.options.ssao = ssao;
-                                                c.options.depth_prepass = prepass;
-                                                c.options.read_back = read_back;
-                                                // The renderer refuses AO read-back without SSAO.
-                                                c.options.read_back_ao = ssao && read_back;
-                                                c.options.read_back_depth = read_back;
-                                                c.options.read_back_draw_lists = !read_back;
-                                                c.frame = frame_with(mono_skipped, culling);
-                                                c.frame.shadow_needed = shadow_needed;
-                                                c.frame.debug = debug;
-                                                c.conditional = conditional;
-                                                all.push_back(c);
-                                            }
+                                                  DebugView::kMonoOnly})
+                                                for (bool blended : {false, true}) {
+                                                    Combination c;
+                                                    c.options.blended = blended;
+                                                    c.options.mode = mode;
+                                                    c.options.stereo_pass = stereo_pass;
+                                                    c.options.anti_aliasing = aa;
+                                                    c.options.ssao = ssao;
+                                                    c.options.depth_prepass = prepass;
+                                                    c.options.read_back = read_back;
+                                                    // The renderer refuses AO read-back without
+                                                    // SSAO.
+                                                    c.options.read_back_ao = ssao && read_back;
+                                                    c.options.read_back_depth = read_back;
+                                                    c.options.read_back_draw_lists = !read_back;
+                                                    c.frame = frame_with(mono_skipped, culling);
+                                                    c.frame.shadow_needed = shadow_needed;
+                                                    c.frame.debug = debug;
+                                                    c.conditional = conditional;
+                                                    all.push_back(c);
+                                                }
     return all;
 }
 
@@ -798,7 +876,7 @@ bool persistent_input(const std::string& resource, const FramePlan& plan) {
 
 TEST(FramePlan, EveryReadIsPrecededByAWriteOverAllOptions) {
     const std::vector<Combination> all = all_combinations();
-    EXPECT_EQ(all.size(), 3u * 3 * 2 * 2 * 4 * 2 * 2 * 2 * 2 * 2 * 3);
+    EXPECT_EQ(all.size(), 3u * 3 * 2 * 2 * 4 * 2 * 2 * 2 * 2 * 2 * 3 * 2);
     for (const Combination& c : all) {
         const FramePlan plan = plan_of(c.options, c.frame, c.conditional);
         std::set<std::string> written;
@@ -851,24 +929,18 @@ TEST(FramePlan, EveryReadIsPrecededByAWriteOverAllOptions) {
 }
 
 TEST(FramePlan, NamesOfKindsPredicatesAndStepsAreNonEmptyAndDistinct) {
-    const std::vector<PassKind> kinds = {PassKind::kCulling,
-                                         PassKind::kShadow,
-                                         PassKind::kForward,
-                                         PassKind::kDepthPyramid,
-                                         PassKind::kOcclusionCulling,
-                                         PassKind::kMonoSsao,
-                                         PassKind::kComposite,
-                                         PassKind::kSsao,
-                                         PassKind::kTaa,
-                                         PassKind::kTonemap,
-                                         PassKind::kDepthHistogram,
-                                         PassKind::kReadback};
+    const std::vector<PassKind> kinds = {
+        PassKind::kCulling,      PassKind::kShadow,           PassKind::kForward,
+        PassKind::kDepthPyramid, PassKind::kOcclusionCulling, PassKind::kMonoSsao,
+        PassKind::kComposite,    PassKind::kTransparency,     PassKind::kSsao,
+        PassKind::kTaa,          PassKind::kTonemap,          PassKind::kDepthHistogram,
+        PassKind::kReadback};
     const std::vector<GpuPredicate> predicates = {GpuPredicate::kAlways, GpuPredicate::kMonoAny,
                                                   GpuPredicate::kMonoNone,
                                                   GpuPredicate::kMonoDepthTested};
     const std::vector<DrawStep> steps = {DrawStep::kMaskHidden, DrawStep::kDepthPrepass,
-                                         DrawStep::kChunks, DrawStep::kChunksShowRouting,
-                                         DrawStep::kSky};
+                                         DrawStep::kChunks,     DrawStep::kChunksShowRouting,
+                                         DrawStep::kSky,        DrawStep::kBlended};
     const auto check = [](const std::vector<std::string>& names) {
         const std::set<std::string> distinct(names.begin(), names.end());
         EXPECT_EQ(distinct.size(), names.size()) << joined(names);

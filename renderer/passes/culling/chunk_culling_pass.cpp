@@ -26,6 +26,18 @@ std::uint32_t bits_of(T value) {
     return bits;
 }
 
+std::uint32_t alpha_class(const scenes::Chunk& chunk) {
+    switch (chunk.alpha_mode) {
+        case scenes::AlphaMode::kOpaque:
+            return MONOPLANE_CLASS_OPAQUE;
+        case scenes::AlphaMode::kMask:
+            return MONOPLANE_CLASS_MASKED;
+        case scenes::AlphaMode::kBlend:
+            return MONOPLANE_CLASS_BLENDED;
+    }
+    return MONOPLANE_CLASS_OPAQUE;
+}
+
 std::vector<ChunkRecord> chunk_records(const scenes::Scene& scene, const scenes::LodChain& lods) {
     std::vector<ChunkRecord> records;
     records.reserve(scene.chunks.size());
@@ -33,10 +45,11 @@ std::vector<ChunkRecord> chunk_records(const scenes::Scene& scene, const scenes:
     for (std::size_t c = 0; c < scene.chunks.size(); ++c) {
         const scenes::Chunk& chunk = scene.chunks[c];
         const std::uint32_t level_count = 1 + lods.chunks.at(c).level_count;
-        records.push_back({glm::vec4(chunk.bounds.min, 0.0f), glm::vec4(chunk.bounds.max, 0.0f),
-                           glm::uvec4(chunk.index_count, chunk.first_index,
-                                      bits_of(chunk.vertex_offset), chunk.flags),
-                           glm::uvec4(first_level, level_count, 0u, 0u)});
+        records.push_back(
+            {glm::vec4(chunk.bounds.min, 0.0f), glm::vec4(chunk.bounds.max, 0.0f),
+             glm::uvec4(chunk.index_count, chunk.first_index, bits_of(chunk.vertex_offset),
+                        chunk.flags | (alpha_class(chunk) << MONOPLANE_CHUNK_CLASS_SHIFT)),
+             glm::uvec4(first_level, level_count, 0u, 0u)});
         first_level += level_count;
     }
     if (records.empty()) records.push_back({});  // buffers may not be empty
@@ -75,6 +88,19 @@ void write_planes(const glm::dmat4& view_proj, vec4* out) {
 
 }  // namespace
 
+std::array<std::uint32_t, MONOPLANE_CLASSES> ChunkCullingPass::class_sizes(
+    const scenes::Scene& scene) {
+    std::array<std::uint32_t, MONOPLANE_CLASSES> sizes{};
+    for (const scenes::Chunk& chunk : scene.chunks) ++sizes.at(alpha_class(chunk));
+    return sizes;
+}
+
+std::uint32_t ChunkCullingPass::class_base(std::uint32_t alpha_class) const {
+    std::uint32_t base = 0;
+    for (std::uint32_t c = 0; c < alpha_class; ++c) base += class_sizes_.at(c);
+    return base;
+}
+
 vk_core::Buffer ChunkCullingPass::make_chunk_table(const vk_core::Context& ctx,
                                                    const scenes::Scene& scene,
                                                    const scenes::LodChain& lods) {
@@ -94,6 +120,7 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
                                    const vk_core::Buffer& chunk_table,
                                    const vk_core::Buffer& level_table)
     : chunk_count_(static_cast<std::uint32_t>(scene.chunks.size())),
+      class_sizes_(class_sizes(scene)),
       chunks_(chunk_table),
       levels_(level_table),
       // Level 0 for every chunk and group until the first frame chooses.
@@ -203,6 +230,7 @@ void ChunkCullingPass::set_frame(const CullFrame& frame, vk_core::FrameUploads& 
     std::uint32_t honour = 0;
     if (frame.honour_force_mono) honour |= MONOPLANE_CULL_HONOUR_FORCE_MONO;
     if (frame.honour_force_stereo) honour |= MONOPLANE_CULL_HONOUR_FORCE_STEREO;
+    if (frame.split_blended) honour |= MONOPLANE_CULL_SPLIT_BLENDED;
     c.config = glm::uvec4(chunk_count_, views, frame.both_eyes_instances, honour);
     if (frame.view_proj[MONOPLANE_CULL_MONO]) {
         c.mono_view_proj = glm::mat4(*frame.view_proj[MONOPLANE_CULL_MONO]);
@@ -217,6 +245,8 @@ void ChunkCullingPass::set_frame(const CullFrame& frame, vk_core::FrameUploads& 
     }
     c.lod = glm::vec4(static_cast<float>(frame.lod_error_px),
                       static_cast<float>(modes::kLodCoarsenFraction), 0.0f, 0.0f);
+    c.classes = glm::uvec4(class_base(MONOPLANE_CLASS_OPAQUE), class_base(MONOPLANE_CLASS_MASKED),
+                           class_base(MONOPLANE_CLASS_BLENDED), 0u);
     uploads.stage(constants_, &c, sizeof(c));
 }
 
@@ -253,15 +283,32 @@ void ChunkCullingPass::record_readback(const vk::raii::CommandBuffer& cmd, bool 
     }
 }
 
-IndirectDraws ChunkCullingPass::draws(CullView view) const {
+IndirectDraws ChunkCullingPass::draws(CullView view, std::uint32_t alpha_class) const {
     const auto v = static_cast<std::uint32_t>(view);
     IndirectDraws draws;
     draws.commands = commands_.handle();
-    draws.commands_offset = vk::DeviceSize{v} * chunk_count_ * kCommandSize;
+    draws.commands_offset =
+        (vk::DeviceSize{v} * chunk_count_ + class_base(alpha_class)) * kCommandSize;
     draws.count = counts_.handle();
-    draws.count_offset = vk::DeviceSize{v} * sizeof(std::uint32_t);
-    draws.max_draws = chunk_count_;
+    draws.count_offset = vk::DeviceSize{count_word(v, alpha_class)} * sizeof(std::uint32_t);
+    draws.max_draws = class_sizes_.at(alpha_class);
     return draws;
+}
+
+ChunkDraws ChunkCullingPass::chunk_draws(CullView view) const {
+    return {draws(view, MONOPLANE_CLASS_OPAQUE), draws(view, MONOPLANE_CLASS_MASKED),
+            draws(view, MONOPLANE_CLASS_BLENDED)};
+}
+
+std::uint32_t ChunkCullingPass::count_word(std::uint32_t list, std::uint32_t alpha_class) {
+    switch (alpha_class) {
+        case MONOPLANE_CLASS_MASKED:
+            return MONOPLANE_COUNT_MASKED + list;
+        case MONOPLANE_CLASS_BLENDED:
+            return MONOPLANE_COUNT_BLENDED + list;
+        default:
+            return list;
+    }
 }
 
 Predicate ChunkCullingPass::predicate(std::uint32_t word, bool inverted) const {
@@ -278,11 +325,16 @@ std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> ChunkCullingPass::counts(
 std::vector<vk::DrawIndexedIndirectCommand> ChunkCullingPass::drawn_commands(
     CullView view, std::uint32_t slot) const {
     const auto v = static_cast<std::uint32_t>(view);
-    const std::uint32_t count = counts(slot)[v];
-    const auto* commands =
+    const std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> words = counts(slot);
+    const auto* list =
         reinterpret_cast<const vk::DrawIndexedIndirectCommand*>(commands_readback_.mapped()) +
         std::size_t{v} * chunk_count_;
-    return {commands, commands + count};
+    std::vector<vk::DrawIndexedIndirectCommand> commands;
+    for (std::uint32_t c = 0; c < MONOPLANE_CLASSES; ++c) {
+        const auto* first = list + class_base(c);
+        commands.insert(commands.end(), first, first + words.at(count_word(v, c)));
+    }
+    return commands;
 }
 
 std::vector<std::uint32_t> ChunkCullingPass::drawn_chunks(CullView view, std::uint32_t slot) const {

@@ -43,6 +43,9 @@ struct CullFrame {
     // Instances per draw of the both-eyes list: 2 for instanced stereo (the eye is the instance
     // index minus the base instance), 1 for every other use.
     std::uint32_t both_eyes_instances = 1;
+    // Hybrid: blended chunks wholly beyond C's near plane go to C alone, all others to the eyes
+    // alone, whatever the eyes' far plane (MONOPLANE_CULL_SPLIT_BLENDED).
+    bool split_blended = false;
     // Level of detail (renderer/plan/lod_selection.h): each drawn view's projection of errors,
     // and the budget in pixels (0: every chunk at full detail).
     std::array<modes::LodView, MONOPLANE_CULL_VIEWS> lod_views{};
@@ -51,6 +54,11 @@ struct CullFrame {
 
 class ChunkCullingPass {
   public:
+    // How many chunks of each alpha class (MONOPLANE_CLASS_*) the scene has.
+    static std::array<std::uint32_t, MONOPLANE_CLASSES> class_sizes(const scenes::Scene& scene);
+    // The counts word of a list's class (cull_constants.h).
+    static std::uint32_t count_word(std::uint32_t list, std::uint32_t alpha_class);
+
     // The scene's chunk table on the GPU (bounds, draw ranges, routing flags, where its levels
     // of detail start): made once per scene and shared by every renderer of it
     // (renderer/modes/scene_resources.h).
@@ -84,7 +92,9 @@ class ChunkCullingPass {
     void record_readback(const vk::raii::CommandBuffer& cmd, bool lists,
                          std::uint32_t slot = 0) const;
 
-    IndirectDraws draws(CullView view) const;
+    // A view's draws of one alpha class; chunk_draws: all three.
+    IndirectDraws draws(CullView view, std::uint32_t alpha_class = MONOPLANE_CLASS_OPAQUE) const;
+    ChunkDraws chunk_draws(CullView view) const;
     // One uint32 of MONOPLANE_ROUTE_* bits per chunk, written every frame (storage buffer).
     vk::Buffer routing() const { return routing_.handle(); }
     // Conditional rendering on a counts word (MONOPLANE_PRED_*).
@@ -92,8 +102,8 @@ class ChunkCullingPass {
 
     // After the slot's frame has completed.
     std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> counts(std::uint32_t slot = 0) const;
-    // The chunk indices of a view's list, in draw order (record_readback with lists), once the
-    // slot's frame, the last to read lists back, has completed.
+    // The chunk indices of a view's list, class by class, each (record_readback with lists), once
+    // the slot's frame, the last to read lists back, has completed.
     std::vector<std::uint32_t> drawn_chunks(CullView view, std::uint32_t slot = 0) const;
     // The same list's draw commands: each names its chunk in firstInstance, its level of detail
     // by its index range, and the eyes it draws by its instance count.
@@ -104,8 +114,11 @@ class ChunkCullingPass {
     void make_pipeline();
     void write_descriptors() const;
     void record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const;
+    // The first command of an alpha class within each list.
+    std::uint32_t class_base(std::uint32_t alpha_class) const;
 
     std::uint32_t chunk_count_ = 0;
+    std::array<std::uint32_t, MONOPLANE_CLASSES> class_sizes_{};
     const vk_core::Buffer& chunks_;
     const vk_core::Buffer& levels_;
     vk_core::Buffer lod_state_;  // per chunk and MONOPLANE_LOD_* group: last frame's level

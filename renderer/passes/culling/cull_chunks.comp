@@ -42,17 +42,44 @@ layout(std430, set = 0, binding = 8) buffer LodState { uint lod_state[]; };
 layout(push_constant) uniform Push { uint phase; };  // 0: frustum, 1: C's occlusion culling
 
 const uint kBlock = 256;
-shared uint scan[MONOPLANE_CULL_LISTS][kBlock];
-shared uint written[MONOPLANE_CULL_LISTS];
+// One running list per view list and alpha class: sub-list s = class * MONOPLANE_CULL_LISTS + list.
+const uint kSublists = MONOPLANE_CULL_LISTS * MONOPLANE_CLASSES;
+shared uint scan[kSublists][kBlock];
+shared uint written[kSublists];
 
-bool outside_frustum(uint view, vec3 lo, vec3 hi) {
+// Planes of modes::frustum_planes: left, right, bottom, top, far (reversed Z: z >= 0), near.
+const uint kFarPlane = 4u;
+const uint kNearPlane = 5u;
+const uint kNoPlane = 6u;
+
+// skip: a plane not tested (kFarPlane: the eyes' lists of blended chunks in hybrid), or kNoPlane.
+bool outside_frustum(uint view, vec3 lo, vec3 hi, uint skip) {
     for (uint i = 0; i < 6; ++i) {
+        if (i == skip) continue;
         vec4 p = cull.planes[view * 6 + i];
         // The box corner furthest along the plane's normal (a select per component).
         vec3 corner = mix(lo, hi, greaterThanEqual(p.xyz, vec3(0.0)));
         if (dot(p.xyz, corner) + p.w < 0.0) return true;
     }
     return false;
+}
+
+bool outside_frustum(uint view, vec3 lo, vec3 hi) {
+    return outside_frustum(view, lo, hi, kNoPlane);
+}
+
+// Whether the whole box lies inside the plane's half-space (its corner furthest against the
+// normal does).
+bool wholly_inside(vec4 p, vec3 lo, vec3 hi) {
+    vec3 corner = mix(hi, lo, greaterThanEqual(p.xyz, vec3(0.0)));
+    return dot(p.xyz, corner) + p.w >= 0.0;
+}
+
+// The counts word of list l's class c (cull_constants.h).
+uint count_word(uint l, uint c) {
+    return c == MONOPLANE_CLASS_OPAQUE ? l
+                                       : (c == MONOPLANE_CLASS_MASKED ? MONOPLANE_COUNT_MASKED + l
+                                                                      : MONOPLANE_COUNT_BLENDED + l);
 }
 
 // True when every eye pixel that would read the box's part of C is covered by content nearer
@@ -150,7 +177,8 @@ void main() {
     bool occlusion_phase = phase == 1u;
     bool honour_force_mono = (cull.config.w & MONOPLANE_CULL_HONOUR_FORCE_MONO) != 0u;
     bool honour_force_stereo = (cull.config.w & MONOPLANE_CULL_HONOUR_FORCE_STEREO) != 0u;
-    if (lane < MONOPLANE_CULL_LISTS) written[lane] = 0u;
+    bool split_blended = (cull.config.w & MONOPLANE_CULL_SPLIT_BLENDED) != 0u;
+    if (lane < kSublists) written[lane] = 0u;
     barrier();
 
     for (uint base = 0; base < chunk_count; base += kBlock) {
@@ -158,6 +186,7 @@ void main() {
         uint index = position < chunk_count ? order[position] : 0u;
         bool visible[MONOPLANE_CULL_LISTS] = bool[](false, false, false, false);
         uint level[MONOPLANE_LOD_GROUPS] = uint[](0u, 0u);
+        uint alpha_class = MONOPLANE_CLASS_OPAQUE;
         if (position < chunk_count) {
             ChunkRecord chunk = chunks[index];
             // Phase 0 chooses both groups' levels; phase 1 redraws C's list at C's choice.
@@ -174,13 +203,22 @@ void main() {
             }
             vec3 lo = chunk.bounds_min.xyz;
             vec3 hi = chunk.bounds_max.xyz;
-            uint flags = chunk.draw.w;
+            uint flags = chunk.draw.w & 0xffu;
+            alpha_class = chunk.draw.w >> MONOPLANE_CHUNK_CLASS_SHIFT;
             bool eyes_allowed = !(honour_force_mono && (flags & 1u) != 0u);
             bool mono_allowed = !(honour_force_stereo && (flags & 2u) != 0u);
+            // Blended chunks in hybrid: C's when wholly beyond its near plane, else the eyes'.
+            uint eye_skip = kNoPlane;
+            if (split_blended && alpha_class == MONOPLANE_CLASS_BLENDED) {
+                bool beyond = wholly_inside(cull.planes[MONOPLANE_CULL_MONO * 6 + kNearPlane], lo, hi);
+                eyes_allowed = !beyond;
+                mono_allowed = beyond;
+                eye_skip = kFarPlane;
+            }
             if (!occlusion_phase) {
                 for (uint v = 0; v < MONOPLANE_CULL_MONO; ++v) {
                     visible[v] = (views & (1u << v)) != 0u && eyes_allowed &&
-                                 !outside_frustum(v, lo, hi);
+                                 !outside_frustum(v, lo, hi, eye_skip);
                 }
                 visible[MONOPLANE_CULL_BOTH_EYES] =
                     visible[MONOPLANE_CULL_LEFT] || visible[MONOPLANE_CULL_RIGHT];
@@ -197,22 +235,26 @@ void main() {
                 routing[index] = (routing[index] & ~MONOPLANE_ROUTE_MONO) | MONOPLANE_ROUTE_HIDDEN;
             }
         }
-        for (uint v = 0; v < MONOPLANE_CULL_LISTS; ++v) scan[v][lane] = visible[v] ? 1u : 0u;
+        for (uint s = 0; s < kSublists; ++s) {
+            uint v = s % MONOPLANE_CULL_LISTS;
+            scan[s][lane] = visible[v] && s / MONOPLANE_CULL_LISTS == alpha_class ? 1u : 0u;
+        }
         barrier();
-        // Inclusive prefix sums (Hillis and Steele) of the block's visibility, per view.
+        // Inclusive prefix sums (Hillis and Steele) of the block's visibility, per sub-list.
         for (uint offset = 1; offset < kBlock; offset <<= 1) {
-            uint add[MONOPLANE_CULL_LISTS];
-            for (uint v = 0; v < MONOPLANE_CULL_LISTS; ++v) {
-                add[v] = lane >= offset ? scan[v][lane - offset] : 0u;
+            uint add[kSublists];
+            for (uint s = 0; s < kSublists; ++s) {
+                add[s] = lane >= offset ? scan[s][lane - offset] : 0u;
             }
             barrier();
-            for (uint v = 0; v < MONOPLANE_CULL_LISTS; ++v) scan[v][lane] += add[v];
+            for (uint s = 0; s < kSublists; ++s) scan[s][lane] += add[s];
             barrier();
         }
         for (uint v = 0; v < MONOPLANE_CULL_LISTS; ++v) {
             if (!visible[v]) continue;
             ChunkRecord chunk = chunks[index];
-            uint slot = v * chunk_count + written[v] + scan[v][lane] - 1u;
+            uint s = alpha_class * MONOPLANE_CULL_LISTS + v;
+            uint slot = v * chunk_count + cull.classes[alpha_class] + written[s] + scan[s][lane] - 1u;
             LodRecord drawn = levels[chunk.lod.x +
                                      level[v == MONOPLANE_CULL_MONO ? MONOPLANE_LOD_MONO
                                                                     : MONOPLANE_LOD_EYES]];
@@ -225,18 +267,24 @@ void main() {
                 DrawCommand(drawn.draw.x, instances, drawn.draw.y, int(chunk.draw.z), index);
         }
         barrier();
-        if (lane < MONOPLANE_CULL_LISTS) written[lane] += scan[lane][kBlock - 1];
+        if (lane < kSublists) written[lane] += scan[lane][kBlock - 1];
         barrier();
     }
 
     if (lane == 0) {
-        uint mono = written[MONOPLANE_CULL_MONO];
-        counts[MONOPLANE_COUNT_MONO] = mono;
+        uint mono = 0u;
+        uint near = 0u;
+        for (uint c = 0; c < MONOPLANE_CLASSES; ++c) {
+            uint base = c * MONOPLANE_CULL_LISTS;
+            counts[count_word(MONOPLANE_CULL_MONO, c)] = written[base + MONOPLANE_CULL_MONO];
+            mono += written[base + MONOPLANE_CULL_MONO];
+            if (occlusion_phase) continue;
+            for (uint l = 0; l < MONOPLANE_CULL_LISTS; ++l) {
+                if (l != MONOPLANE_CULL_MONO) counts[count_word(l, c)] = written[base + l];
+            }
+            near += written[base + MONOPLANE_CULL_LEFT] + written[base + MONOPLANE_CULL_RIGHT];
+        }
         if (!occlusion_phase) {
-            uint near = written[MONOPLANE_CULL_LEFT] + written[MONOPLANE_CULL_RIGHT];
-            counts[MONOPLANE_COUNT_LEFT] = written[MONOPLANE_CULL_LEFT];
-            counts[MONOPLANE_COUNT_RIGHT] = written[MONOPLANE_CULL_RIGHT];
-            counts[MONOPLANE_COUNT_BOTH_EYES] = written[MONOPLANE_CULL_BOTH_EYES];
             counts[MONOPLANE_COUNT_MONO_CANDIDATES] = mono;
             counts[MONOPLANE_PRED_MONO_ANY] = mono > 0u ? 1u : 0u;
             counts[MONOPLANE_PRED_MONO_DEPTH_TESTED] = mono > 0u && near > 0u ? 1u : 0u;

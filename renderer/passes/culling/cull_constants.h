@@ -27,6 +27,20 @@ using uvec4 = glm::uvec4;
 // config.w bits
 #define MONOPLANE_CULL_HONOUR_FORCE_MONO 1u    // kChunkForceMono chunks skip the eyes' lists
 #define MONOPLANE_CULL_HONOUR_FORCE_STEREO 2u  // kChunkForceStereo chunks skip C's list
+// Hybrid: a blended chunk wholly beyond C's near plane (m - eps) is C's alone; every other goes to
+// the eyes alone, whose lists take it whatever their far plane (m): the eyes draw it after the
+// composite (renderer/plan/frame_plan.h). Nothing blended is drawn twice into one eye.
+#define MONOPLANE_CULL_SPLIT_BLENDED 4u
+
+// Alpha classes (scenes::AlphaMode), one pipeline each: every list holds its chunks class by
+// class, class c of list l in the commands from l * chunk_count + CullConstants.classes[c] (the
+// chunks of the classes before it counted at load), in the frame's order within each class.
+#define MONOPLANE_CLASS_OPAQUE 0
+#define MONOPLANE_CLASS_MASKED 1
+#define MONOPLANE_CLASS_BLENDED 2
+#define MONOPLANE_CLASSES 3
+// ChunkRecord.draw.w: the chunk's flags in the low byte, its class in bits 8-9.
+#define MONOPLANE_CHUNK_CLASS_SHIFT 8u
 
 // Words of the counts buffer (uint32 each). The first four are each list's number of draws (word
 // l counts list l); the others are predicates for conditional rendering, written by the frustum
@@ -38,7 +52,11 @@ using uvec4 = glm::uvec4;
 #define MONOPLANE_COUNT_MONO_CANDIDATES 4   // C's draws before occlusion culling
 #define MONOPLANE_PRED_MONO_ANY 5           // C has chunks: C, its composite (else the eyes' sky)
 #define MONOPLANE_PRED_MONO_DEPTH_TESTED 6  // and an eye has some: the pyramid, C's hidden mask
-#define MONOPLANE_COUNT_WORDS 7
+// Each list's draws of masked chunks (word + list), then of blended chunks; the words above count
+// the opaque class.
+#define MONOPLANE_COUNT_MASKED 7
+#define MONOPLANE_COUNT_BLENDED 11
+#define MONOPLANE_COUNT_WORDS 15
 
 // Bits of the routing word each chunk gets per frame (the debug view "routing"): the lists it went
 // to, and whether occlusion culling then took it out of C's.
@@ -72,13 +90,16 @@ struct CullConstants {
     // x: the error budget in pixels (0: level 0 always, --lod off); y: the share of it a coarser
     // level must meet before a chunk moves to it (hysteresis).
     vec4 lod;
+    // The first command of each class within a list (MONOPLANE_CLASS_*); w unused.
+    uvec4 classes;
 };
 
 // One chunk as the culling shader reads it (std430: 64 bytes).
 struct ChunkRecord {
     vec4 bounds_min;  // xyz
     vec4 bounds_max;  // xyz
-    // x: index count, y: first index, z: vertex offset (bit pattern of an int32), w: flags.
+    // x: index count, y: first index, z: vertex offset (bit pattern of an int32), w: flags and
+    // class (MONOPLANE_CHUNK_CLASS_SHIFT).
     uvec4 draw;
     // x: the chunk's first record in the level table, y: its number of levels (level 0, the
     // chunk itself, included).
@@ -92,7 +113,7 @@ struct LodRecord {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(CullConstants) == 18 * 16 + 16 + 64 + 16 + 6 * 16 + 16,
+static_assert(sizeof(CullConstants) == 18 * 16 + 16 + 64 + 16 + 6 * 16 + 16 + 16,
               "std430 layout shared with GLSL");
 static_assert(sizeof(ChunkRecord) == 64, "std430 layout shared with GLSL");
 static_assert(sizeof(LodRecord) == 16, "std430 layout shared with GLSL");

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cassert>
+#include <cstddef>
 #include <vector>
 
 #include "common/result.h"
@@ -151,6 +152,36 @@ Attachments make_attachments(const ForwardTargets& targets, bool velocity) {
 // Single-pass stereo draws both layers of the targets: every draw covers both views with
 // multiview; otherwise the geometry shader picks the layer of each triangle it emits, or the
 // vertex shader that of each instance.
+// forward_shading.glsl's alpha constants: kAlphaMode (constant_id 1), kAlphaToCoverage (2).
+struct AlphaSpecialization {
+    std::int32_t mode = 0;  // scenes::AlphaMode
+    vk::Bool32 to_coverage = VK_FALSE;
+    std::array<vk::SpecializationMapEntry, 2> entries = {
+        vk::SpecializationMapEntry(1, 0, sizeof(std::int32_t)),
+        vk::SpecializationMapEntry(2, sizeof(std::int32_t), sizeof(vk::Bool32))};
+    vk::SpecializationInfo info;
+
+    AlphaSpecialization(scenes::AlphaMode alpha_mode, bool alpha_to_coverage)
+        : mode(static_cast<std::int32_t>(alpha_mode)),
+          to_coverage(alpha_to_coverage ? VK_TRUE : VK_FALSE),
+          info(static_cast<std::uint32_t>(entries.size()), entries.data(),
+               sizeof(std::int32_t) + sizeof(vk::Bool32), &mode) {}
+    AlphaSpecialization(const AlphaSpecialization&) = delete;
+    AlphaSpecialization& operator=(const AlphaSpecialization&) = delete;
+};
+static_assert(offsetof(AlphaSpecialization, to_coverage) == sizeof(std::int32_t));
+
+// glTF's "over" with straight alpha into the HDR colour (attachment 0); the linear depth and the
+// velocity (TAA) keep what lies behind, whose depth they describe.
+vk::PipelineColorBlendAttachmentState over_blend() {
+    using Factor = vk::BlendFactor;
+    return vk::PipelineColorBlendAttachmentState(
+        VK_TRUE, Factor::eSrcAlpha, Factor::eOneMinusSrcAlpha, vk::BlendOp::eAdd, Factor::eOne,
+        Factor::eOneMinusSrcAlpha, vk::BlendOp::eAdd,
+        vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
+            vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA);
+}
+
 vk::RenderingInfo rendering_info(vk::Extent2D area, StereoDuplication stereo,
                                  const Attachments& attachments) {
     const bool layered =
@@ -214,6 +245,65 @@ void ForwardPass::make_chunk_pipelines() {
     const PipelineShaders routing(ctx_, shaders.show_routing_vertex, shaders.show_routing_geometry,
                                   shaders.show_routing);
     show_routing_pipelines_ = ChunkPipelines::make(ctx_, routing.in(chunks));
+    make_alpha_pipelines(shading.in(chunks), prepass);
+}
+
+// Masked: the alpha test in the pre-pass and in the shading (alpha to coverage with MSAA).
+void ForwardPass::make_masked_pipelines(const vk_core::GraphicsPipelineDesc& chunks,
+                                        const vk_core::GraphicsPipelineDesc& prepass,
+                                        std::span<const std::uint32_t> masked_depth_spirv) {
+    const bool multisampled = config_.samples != vk::SampleCountFlagBits::e1;
+    const vk::raii::ShaderModule masked_depth = vk_core::make_shader(ctx_, masked_depth_spirv);
+    vk_core::GraphicsPipelineDesc masked_prepass = prepass;
+    masked_prepass.fragment = *masked_depth;
+    masked_prepass.alpha_to_coverage = multisampled;
+    masked_prepass_pipeline_ = vk_core::make_graphics_pipeline(ctx_, masked_prepass);
+    const AlphaSpecialization mask(scenes::AlphaMode::kMask, multisampled);
+    vk_core::GraphicsPipelineDesc masked = chunks;
+    masked.fragment_specialization = &mask.info;
+    masked.alpha_to_coverage = multisampled;
+    masked_pipelines_ = ChunkPipelines::make(ctx_, masked);
+}
+
+void ForwardPass::make_alpha_pipelines(const vk_core::GraphicsPipelineDesc& chunks,
+                                       const vk_core::GraphicsPipelineDesc& prepass) {
+    const ForwardShaders shaders = forward_shaders(config_);
+    const bool multisampled = config_.samples != vk::SampleCountFlagBits::e1;
+    if (config_.masked_chunks) make_masked_pipelines(chunks, prepass, shaders.masked_depth);
+    if (!config_.blended_chunks) return;
+    // Blended: after everything opaque, depth tested and not written; the HDR colour blended,
+    // the other attachments left as they are (independentBlend).
+    if (!ctx_.capabilities().independent_blend) {
+        throw UserError("device '" + ctx_.device_info().name +
+                        "' has no independentBlend: it cannot draw alphaMode BLEND materials, "
+                        "which blend the colour and leave the linear depth behind them");
+    }
+    const AlphaSpecialization blend(scenes::AlphaMode::kBlend, false);
+    vk_core::GraphicsPipelineDesc blended = chunks;
+    blended.fragment_specialization = &blend.info;
+    blended.depth_write = false;
+    blended.depth_compare = vk::CompareOp::eGreater;
+    blended.blend = over_blend();
+    blended.color_write_masks = {over_blend().colorWriteMask, {}, {}};
+    blended_pipeline_ = vk_core::make_graphics_pipeline(ctx_, blended);
+
+    // Hybrid's after the composite, one eye per pass (hybrid has no MSAA): HDR colour only, no
+    // depth buffer (the shader tests the composite's linear depth), clamped rather than clipped
+    // at the eyes' far plane m.
+    if (!ctx_.capabilities().depth_clamp || multisampled ||
+        config_.stereo != StereoDuplication::kNone) {
+        return;
+    }
+    const vk::raii::ShaderModule after = vk_core::make_shader(ctx_, shaders.after_composite);
+    vk_core::GraphicsPipelineDesc after_composite = blended;
+    after_composite.fragment = *after;
+    after_composite.color_formats = {kHdrFormat};
+    after_composite.color_write_masks.clear();
+    after_composite.depth_format = vk::Format::eUndefined;
+    after_composite.depth_test = false;
+    after_composite.depth_write = false;
+    after_composite.depth_clamp = true;
+    after_composite_pipeline_ = vk_core::make_graphics_pipeline(ctx_, after_composite);
 }
 
 void ForwardPass::make_fullscreen_pipelines() {
@@ -241,7 +331,7 @@ void ForwardPass::make_fullscreen_pipelines() {
 void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
                          vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
                          const SceneGeometry& geometry, const SceneTextures& textures,
-                         const IndirectDraws& chunks, std::span<const ForwardDraw> steps) const {
+                         const ChunkDraws& chunks, std::span<const ForwardDraw> steps) const {
     assert((config_.samples != vk::SampleCountFlagBits::e1) == (targets.multisample != nullptr));
     assert(!config_.velocity || targets.velocity != nullptr);
     assert(targets.hdr.desc().layers == (config_.stereo == StereoDuplication::kNone ? 1u : 2u));
@@ -263,8 +353,7 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
 }
 
 void ForwardPass::record_step(const vk::raii::CommandBuffer& cmd, ForwardStep step, bool prepassed,
-                              vk::DescriptorSet merged_depth_set,
-                              const IndirectDraws& chunks) const {
+                              vk::DescriptorSet merged_depth_set, const ChunkDraws& chunks) const {
     switch (step) {
         case ForwardStep::kMaskHidden:
             assert(*mask_hidden_pipeline_);
@@ -275,18 +364,30 @@ void ForwardPass::record_step(const vk::raii::CommandBuffer& cmd, ForwardStep st
             break;
         case ForwardStep::kDepthPrepass:
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *depth_prepass_pipeline_);
-            chunks.record(cmd);
+            chunks.opaque.record(cmd);
+            if (chunks.masked.max_draws == 0) break;
+            cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *masked_prepass_pipeline_);
+            chunks.masked.record(cmd);
             break;
         case ForwardStep::kChunks:
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, shading_pipelines_.pick(prepassed));
-            chunks.record(cmd);
+            chunks.opaque.record(cmd);
+            if (chunks.masked.max_draws == 0) break;
+            cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, masked_pipelines_.pick(prepassed));
+            chunks.masked.record(cmd);
             break;
         case ForwardStep::kChunksShowRouting:
+            // Masked chunks drawn whole: the debug view shows routing, not surfaces.
             cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1, merged_depth_set,
                                    {});
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
                              show_routing_pipelines_.pick(prepassed));
-            chunks.record(cmd);
+            chunks.opaque.record(cmd);
+            chunks.masked.record(cmd);
+            break;
+        case ForwardStep::kBlended:
+            cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *blended_pipeline_);
+            chunks.blended.record(cmd);
             break;
         case ForwardStep::kSky: {
             // Instanced stereo draws the full-screen triangle once per eye, as it does each chunk.
@@ -312,6 +413,47 @@ vk_core::DescriptorSet ForwardPass::make_view_set(const vk_core::Buffer& constan
         vk::WriteDescriptorSet(*set, 1, 0, vk::DescriptorType::eCombinedImageSampler, shadow_info),
     };
     ctx_.device().updateDescriptorSets(writes, {});
+    return set;
+}
+
+void ForwardPass::record_after_composite(const vk::raii::CommandBuffer& cmd,
+                                         const AfterCompositeTargets& targets,
+                                         vk::DescriptorSet view_set,
+                                         vk::DescriptorSet composite_depth_set,
+                                         const SceneGeometry& geometry,
+                                         const SceneTextures& textures,
+                                         const IndirectDraws& blended) const {
+    assert(*after_composite_pipeline_);
+    const vk::RenderingAttachmentInfo color(
+        targets.hdr.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
+        vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore, {});
+    cmd.beginRendering(vk::RenderingInfo()
+                           .setRenderArea(vk::Rect2D({0, 0}, targets.area))
+                           .setLayerCount(1)
+                           .setColorAttachments(color));
+    vk_core::set_viewport_and_scissor(cmd, targets.area);
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, view_set, {});
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1, composite_depth_set, {});
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 2, textures.set(), {});
+    geometry.bind(cmd);
+    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *after_composite_pipeline_);
+    blended.record(cmd);
+    cmd.endRendering();
+}
+
+vk_core::DescriptorSet ForwardPass::make_composite_depth_set(vk::ImageView linear_depth,
+                                                             vk::Sampler nearest) const {
+    if (!*after_composite_pipeline_) {
+        throw UserError("device '" + ctx_.device_info().name +
+                        "' cannot clamp depth (depthClamp): hybrid cannot draw the blended "
+                        "surfaces nearer than the mono plane after the composite; use --mode "
+                        "stereo for scenes with alphaMode BLEND materials");
+    }
+    vk_core::DescriptorSet set = make_merged_depth_set();
+    const vk::DescriptorImageInfo depth(nearest, linear_depth,
+                                        vk::ImageLayout::eShaderReadOnlyOptimal);
+    ctx_.device().updateDescriptorSets(
+        vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eCombinedImageSampler, depth), {});
     return set;
 }
 

@@ -44,6 +44,15 @@ struct ForwardTargets {
     const MultisampleTargets* multisample = nullptr;
 };
 
+// Hybrid's blended chunks nearer than m or straddling it, drawn into an eye after the composite
+// (record_after_composite): blended into the eye's HDR image, each fragment tested against the
+// composite's linear depth (the near content's and C's mapped in), which the set made by
+// make_composite_depth_set reads.
+struct AfterCompositeTargets {
+    const vk_core::Image& hdr;  // kHdrFormat, eColorAttachmentOptimal; kept and blended into
+    vk::Extent2D area;
+};
+
 // How one forward pass draws both eyes, or kNone for a pass drawing one view. With a form, the
 // targets are two-layer images (layer 0 the left eye, 1 the right) and set 0's constants are both
 // eyes' ViewConstants in that order (renderer/passes/shared/view_block.glsl).
@@ -64,18 +73,28 @@ struct ForwardConfig {
     // The benchmark's vertex-heavy configuration: rounds of synthetic per-vertex work that leave
     // the image unchanged (forward_vertex.glsl); 0 in normal rendering.
     std::uint32_t vertex_work = 0;
+    // The scene has chunks of alphaMode MASK / BLEND: their pipelines are made (and the steps
+    // draw them); a scene without leaves them out.
+    bool masked_chunks = false;
+    bool blended_chunks = false;
 };
 
 // What a forward pass draws, in order; each step may run under a GPU predicate.
 // With kDepthPrepass first, the chunk steps after it test depth for equality and write none, so
 // each visible pixel is shaded about once whatever the draw order (docs/benchmarks.md measures
-// the fragments it saves); without it they test and write as usual.
+// the fragments it saves); without it they test and write as usual. The chunk steps draw the
+// opaque chunks, then the masked ones (alphaMode MASK: fragments below the cut-off dropped, with
+// MSAA alpha to coverage); kBlended draws the blended ones last.
 enum class ForwardStep {
     kMaskHidden,         // C only, before the pre-pass: pixels hidden in both eyes at depth 1
     kDepthPrepass,       // the view's chunk list, depth only (no fragment shader)
     kChunks,             // the view's chunk list, every fragment shaded
     kSky,                // the sky where nothing was drawn
     kChunksShowRouting,  // the debug view "routing": chunks coloured by the lists they are in
+    // The view's blended chunks (alphaMode BLEND) in the list's order, back to front, over what
+    // the steps before drew: depth tested, not written; colour blended by the base colour's
+    // alpha (glTF: straight alpha, "over"); linear depth and velocity keep what lies behind.
+    kBlended,
 };
 struct ForwardDraw {
     ForwardStep step = ForwardStep::kChunks;
@@ -107,6 +126,11 @@ class ForwardPass {
     vk_core::DescriptorSet make_merged_depth_set() const;
     void write_merged_depth(const vk_core::DescriptorSet& set, vk::ImageView pyramid,
                             vk::Sampler nearest, vk::Buffer routing) const;
+    // Set 1 of record_after_composite: the eye's linear depth after the composite (sampled,
+    // eShaderReadOnlyOptimal). Needs the depth_clamp capability (UserError otherwise, naming
+    // it); a pass of one view made with blended_chunks.
+    vk_core::DescriptorSet make_composite_depth_set(vk::ImageView linear_depth,
+                                                    vk::Sampler nearest) const;
 
     // Expects the targets in eUndefined (their contents are replaced); leaves the colour targets
     // (velocity included) in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
@@ -115,7 +139,17 @@ class ForwardPass {
     void record(const vk::raii::CommandBuffer& cmd, const ForwardTargets& targets,
                 vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
                 const SceneGeometry& geometry, const SceneTextures& textures,
-                const IndirectDraws& chunks, std::span<const ForwardDraw> steps) const;
+                const ChunkDraws& chunks, std::span<const ForwardDraw> steps) const;
+
+    // Hybrid: the blended chunks of one eye's list, back to front, after the composite, with
+    // depth clamping instead of clipping at the eye's far plane m, so a pane straddling m is
+    // drawn whole. A pass of one view (StereoDuplication::kNone) only; expects the HDR image in
+    // eColorAttachmentOptimal and leaves it there.
+    void record_after_composite(const vk::raii::CommandBuffer& cmd,
+                                const AfterCompositeTargets& targets, vk::DescriptorSet view_set,
+                                vk::DescriptorSet composite_depth_set,
+                                const SceneGeometry& geometry, const SceneTextures& textures,
+                                const IndirectDraws& blended) const;
 
   private:
     // A chunk pipeline twice: testing and writing depth, and testing for the depth a pre-pass left.
@@ -133,8 +167,14 @@ class ForwardPass {
     // The fullscreen pipelines: the sky, and in one-view passes the mask of hidden pixels.
     void make_fullscreen_pipelines();
     // One step of record, inside the rendering; prepassed: a depth pre-pass came before it.
+    // The pipelines of alphaMode MASK and BLEND chunks.
+    void make_alpha_pipelines(const vk_core::GraphicsPipelineDesc& chunks,
+                              const vk_core::GraphicsPipelineDesc& prepass);
+    void make_masked_pipelines(const vk_core::GraphicsPipelineDesc& chunks,
+                               const vk_core::GraphicsPipelineDesc& prepass,
+                               std::span<const std::uint32_t> masked_depth_spirv);
     void record_step(const vk::raii::CommandBuffer& cmd, ForwardStep step, bool prepassed,
-                     vk::DescriptorSet merged_depth_set, const IndirectDraws& chunks) const;
+                     vk::DescriptorSet merged_depth_set, const ChunkDraws& chunks) const;
 
     const vk_core::Context& ctx_;
     ForwardConfig config_;
@@ -146,6 +186,10 @@ class ForwardPass {
     ChunkPipelines shading_pipelines_;
     ChunkPipelines show_routing_pipelines_;
     vk::raii::Pipeline sky_pipeline_{nullptr};
+    vk::raii::Pipeline masked_prepass_pipeline_{nullptr};
+    ChunkPipelines masked_pipelines_;
+    vk::raii::Pipeline blended_pipeline_{nullptr};
+    vk::raii::Pipeline after_composite_pipeline_{nullptr};  // where the device clamps depth
 };
 
 }  // namespace monoplane::passes

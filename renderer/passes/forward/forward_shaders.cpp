@@ -120,17 +120,31 @@ const std::uint32_t kSkyVelocityInstancedFrag[] = {
 #include "sky_velocity_instanced.frag.spv.inc"
 };
 
+const std::uint32_t kForwardAfterCompositeFrag[] = {
+#include "forward_after_composite.frag.spv.inc"
+};
+const std::uint32_t kAlphaTestFrag[] = {
+#include "alpha_test.frag.spv.inc"
+};
+const std::uint32_t kAlphaToCoverageFrag[] = {
+#include "alpha_to_coverage.frag.spv.inc"
+};
+
 // A form's fragment shaders, without and with velocity output (TAA).
 struct FragmentShaders {
     Spirv forward, forward_velocity;
     Spirv show_routing, show_routing_velocity;
     Spirv sky, sky_velocity;
+    // Hybrid's blended chunks after the composite (never velocity; one view per pass, so the
+    // single-pass forms have none).
+    Spirv after_composite;
 };
 
 void set_fragment_shaders(ForwardShaders& shaders, const FragmentShaders& form, bool velocity) {
     shaders.forward = velocity ? form.forward_velocity : form.forward;
     shaders.show_routing = velocity ? form.show_routing_velocity : form.show_routing;
     shaders.sky = velocity ? form.sky_velocity : form.sky;
+    shaders.after_composite = form.after_composite;
 }
 
 }  // namespace
@@ -139,6 +153,8 @@ ForwardShaders forward_shaders(const ForwardConfig& config) {
     ForwardShaders shaders;
     shaders.sky_vertex = kFullscreenVert;
     shaders.mask_hidden = kMaskHiddenFrag;
+    const bool multisampled = config.samples != vk::SampleCountFlagBits::e1;
+    shaders.masked_depth = multisampled ? Spirv(kAlphaToCoverageFrag) : Spirv(kAlphaTestFrag);
     FragmentShaders fragment;
     switch (config.stereo) {
         case StereoDuplication::kNone:
@@ -149,7 +165,8 @@ ForwardShaders forward_shaders(const ForwardConfig& config) {
                         kForwardShowRoutingFrag,
                         kForwardShowRoutingVelocityFrag,
                         kSkyFrag,
-                        kSkyVelocityFrag};
+                        kSkyVelocityFrag,
+                        kForwardAfterCompositeFrag};
             break;
         case StereoDuplication::kMultiview:
             shaders.vertex = kForwardMultiviewVert;
@@ -159,7 +176,8 @@ ForwardShaders forward_shaders(const ForwardConfig& config) {
                         kForwardShowRoutingMultiviewFrag,
                         kForwardShowRoutingVelocityMultiviewFrag,
                         kSkyMultiviewFrag,
-                        kSkyVelocityMultiviewFrag};
+                        kSkyVelocityMultiviewFrag,
+                        {}};
             break;
         case StereoDuplication::kGeometryShader:
             shaders.vertex = kForwardGsVert;
@@ -172,7 +190,8 @@ ForwardShaders forward_shaders(const ForwardConfig& config) {
                         kForwardShowRoutingGsFrag,
                         kForwardShowRoutingVelocityGsFrag,
                         kSkyGsFrag,
-                        kSkyVelocityGsFrag};
+                        kSkyVelocityGsFrag,
+                        {}};
             break;
         case StereoDuplication::kInstanced:
             shaders.vertex = kForwardInstancedVert;
@@ -183,7 +202,8 @@ ForwardShaders forward_shaders(const ForwardConfig& config) {
                         kForwardShowRoutingInstancedFrag,
                         kForwardShowRoutingVelocityInstancedFrag,
                         kSkyInstancedFrag,
-                        kSkyVelocityInstancedFrag};
+                        kSkyVelocityInstancedFrag,
+                        {}};
             break;
     }
     set_fragment_shaders(shaders, fragment, config.velocity);

@@ -19,6 +19,10 @@ struct ForwardShaders {
     // The fragment shaders, with velocity output where the configuration asks for it.
     Spirv forward, show_routing, sky;
     Spirv mask_hidden;  // one-view passes' (C's) mask of pixels hidden in both eyes
+    // The depth pre-pass of alphaMode MASK chunks: the alpha test (alpha to coverage with MSAA).
+    Spirv masked_depth;
+    // Hybrid's blended chunks nearer than m, drawn into the eyes after the composite.
+    Spirv after_composite;
 };
 
 ForwardShaders forward_shaders(const ForwardConfig& config);

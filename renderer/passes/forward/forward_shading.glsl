@@ -20,12 +20,29 @@ layout(location = 4) flat in uint in_chunk;
 
 layout(location = 0) in vec3 in_world;
 layout(location = 1) in vec3 in_normal;
-layout(location = 2) in vec3 in_albedo;
+layout(location = 2) in vec4 in_albedo;
+layout(location = 8) flat in float in_alpha_cutoff;
 layout(location = 3) flat in uint in_material;
 layout(location = 6) in vec2 in_uv;
 layout(location = 7) flat in uvec4 in_texture;
 #define MONOPLANE_SCENE_TEXTURES_FRAGMENT
 #include "renderer/passes/shared/scene_textures.glsl"
+#ifdef MONOPLANE_AFTER_COMPOSITE
+// Hybrid's blended chunks nearer than m or straddling it, drawn per eye after the composite:
+// tested against the composite's linear depth (the eye's near content, and C's content mapped into
+// the eye), which no depth buffer holds for C's part.
+layout(set = 1, binding = 0) uniform sampler2D composite_linear_depth;
+float composite_depth_at(ivec2 pixel) {
+    return texelFetch(composite_linear_depth, pixel, 0).r;
+}
+#endif
+
+// The alphaMode of the chunks this pipeline draws (scenes::AlphaMode): 0 opaque, 1 mask (drop
+// the fragments below the chunk's cut-off), 2 blend (alpha out, for the pipeline's blending).
+layout(constant_id = 1) const int kAlphaMode = 0;
+// MSAA with alphaMode MASK: the pipeline turns alpha into sample coverage instead (alpha to
+// coverage), so cut-out edges are anti-aliased like triangle edges.
+layout(constant_id = 2) const bool kAlphaToCoverage = false;
 layout(location = 0) out vec4 out_color;
 // Distance in front of the eyes' plane along the head's forward axis: the same for all three
 // cameras of the rig (they share the head's orientation), so hybrid can assemble it per pixel.
@@ -79,8 +96,21 @@ float sun_visibility(vec3 world, vec3 normal) {
     return lit / 9.0;
 }
 
+// The alpha written to the colour target: 1 for opaque; the base colour's alpha for blending;
+// for alpha to coverage, alpha against the cut-off sharpened to about one pixel's ramp.
+float output_alpha(float alpha) {
+    if (kAlphaMode == 2) return alpha;
+    if (kAlphaMode == 1 && kAlphaToCoverage) {
+        return clamp((alpha - in_alpha_cutoff) / max(fwidth(alpha), 1e-4) + 0.5, 0.0, 1.0);
+    }
+    return 1.0;
+}
+
 void main() {
     float linear_depth = dot(in_world - view.head_position.xyz, view.head_forward.xyz);
+#ifdef MONOPLANE_AFTER_COMPOSITE
+    if (linear_depth >= composite_depth_at(ivec2(gl_FragCoord.xy))) discard;
+#endif
     // Hybrid (Sect. 4.3): across a band below m the eye's view vector turns into C's, so that
     // highlights and reflections meet C's shading at the mono plane without a seam.
     vec3 origin = view.camera_position.xyz;
@@ -96,10 +126,12 @@ void main() {
     float roughness = float(in_material & 0xffu) / 255.0;
     float specular = float((in_material >> 8) & 0xffu) / 255.0;
     uint pattern = (in_material >> 16) & 0xffu;
-    vec3 albedo = in_albedo;
     // glTF: the base colour is factor x vertex colour (in_albedo) x texture. The slot is flat,
     // so the branch is uniform within every primitive and the texture's gradients are valid.
-    if (in_texture.x != MONOPLANE_NO_TEXTURE) albedo *= base_colour_texture(in_texture, in_uv).rgb;
+    vec4 base_colour = in_albedo;
+    if (in_texture.x != MONOPLANE_NO_TEXTURE) base_colour *= base_colour_texture(in_texture, in_uv);
+    if (kAlphaMode == 1 && !kAlphaToCoverage && base_colour.a < in_alpha_cutoff) discard;
+    vec3 albedo = base_colour.rgb;
     albedo = patterned_albedo(albedo, pattern, in_world);
 
     float n_dot_l = max(dot(n, l), 0.0);
@@ -135,7 +167,7 @@ void main() {
                                   : (by_mono ? vec3(0.1, 0.35, 1.0) : vec3(0.1, 0.9, 0.15));
     color = hue * (0.3 + 0.7 * dot(color, vec3(0.2126, 0.7152, 0.0722)));
 #endif
-    out_color = vec4(color, 1.0);
+    out_color = vec4(color, output_alpha(base_colour.a));
     out_linear_depth = linear_depth;
 #ifdef MONOPLANE_WRITE_VELOCITY
     out_velocity = ndc_velocity(vec4(in_world, 1.0));

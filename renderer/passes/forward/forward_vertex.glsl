@@ -19,7 +19,7 @@
 
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
-layout(location = 2) out vec3 out_albedo;
+layout(location = 2) out vec4 out_albedo;  // rgb, and alpha (scenes::AlphaMode)
 layout(location = 3) flat out uint out_material;
 #ifdef MONOPLANE_SHOW_ROUTING
 layout(location = 4) flat out uint out_chunk;  // the draw's first instance: its chunk index
@@ -29,6 +29,7 @@ layout(location = 5) flat out int out_view;  // the eye and layer, as stereo_dup
 #endif
 layout(location = 6) out vec2 out_uv;             // base-colour texture coordinate
 layout(location = 7) flat out uvec4 out_texture;  // its slot (scene_textures.glsl)
+layout(location = 8) flat out float out_alpha_cutoff;  // the chunk's (alphaMode MASK)
 
 // The benchmark's vertex-heavy configuration (papers/001 Table 1: single-pass stereo gains most
 // where vertices cost most): rounds of dependent per-vertex arithmetic, as skinning or procedural
@@ -47,7 +48,8 @@ void main() {
     if (kVertexWork > 0) world += view.view_blend.w * vertex_work(in_position);
     out_world = world;
     out_normal = in_normal;
-    out_albedo = in_albedo.rgb;
+    out_albedo = in_albedo;
+    out_alpha_cutoff = fetch_alpha_cutoff();
     out_material = in_material;
     fetch_texture(out_texture, out_uv);
 #ifdef MONOPLANE_SHOW_ROUTING

@@ -34,11 +34,11 @@ void main() {
 #else
 layout(location = 0) in vec3 in_world[];
 layout(location = 1) in vec3 in_normal[];
-layout(location = 2) in vec3 in_albedo[];
+layout(location = 2) in vec4 in_albedo[];
 layout(location = 3) in uint in_material[];
 layout(location = 0) out vec3 out_world;
 layout(location = 1) out vec3 out_normal;
-layout(location = 2) out vec3 out_albedo;
+layout(location = 2) out vec4 out_albedo;
 layout(location = 3) flat out uint out_material;
 #ifdef MONOPLANE_SHOW_ROUTING
 layout(location = 4) in uint in_chunk[];
@@ -48,6 +48,8 @@ layout(location = 6) in vec2 in_uv[];
 layout(location = 7) in uvec4 in_texture[];
 layout(location = 6) out vec2 out_uv;
 layout(location = 7) flat out uvec4 out_texture;
+layout(location = 8) in float in_alpha_cutoff[];
+layout(location = 8) flat out float out_alpha_cutoff;
 
 // Whether all three vertices lie beyond one clip plane (reversed Z: 0 <= z <= w inside): the
 // rasteriser would draw nothing of the copy, so it is not emitted. Chunks are culled against the
@@ -73,6 +75,7 @@ void main() {
             out_material = in_material[i];
             out_uv = in_uv[i];
             out_texture = in_texture[i];
+            out_alpha_cutoff = in_alpha_cutoff[i];
 #ifdef MONOPLANE_SHOW_ROUTING
             out_chunk = in_chunk[i];
 #endif

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -10,6 +11,12 @@ namespace monoplane::passes {
 namespace {
 const std::uint32_t kShadowVert[] = {
 #include "shadow.vert.spv.inc"
+};
+const std::uint32_t kShadowMaskedVert[] = {
+#include "shadow_masked.vert.spv.inc"
+};
+const std::uint32_t kAlphaTestFrag[] = {
+#include "alpha_test.frag.spv.inc"
 };
 constexpr vk::Format kDepthFormat = vk::Format::eD32Sfloat;
 }  // namespace
@@ -46,7 +53,8 @@ glm::dmat4 fit_light_view_proj(const glm::dvec3& towards_sun, const scenes::Aabb
     return m;
 }
 
-ShadowPass::ShadowPass(const vk_core::Context& ctx, const ShadowParams& params)
+ShadowPass::ShadowPass(const vk_core::Context& ctx, const ShadowParams& params,
+                       vk::DescriptorSetLayout scene_textures, bool masked)
     : params_(params),
       map_(ctx, vk_core::ImageDesc{{params.resolution, params.resolution},
                                    kDepthFormat,
@@ -61,7 +69,11 @@ ShadowPass::ShadowPass(const vk_core::Context& ctx, const ShadowParams& params)
             vk::SamplerAddressMode::eClampToEdge, 0.0f, VK_FALSE, 1.0f, VK_TRUE,
             vk::CompareOp::eLessOrEqual, 0.0f, 0.0f, vk::BorderColor::eFloatOpaqueWhite));
     const vk::PushConstantRange push(vk::ShaderStageFlagBits::eVertex, 0, sizeof(glm::mat4));
-    layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, {}, push));
+    // The scene's textures sit at set 2, where the forward pass's shaders (which the masked
+    // draws share) expect them.
+    no_bindings_ = vk::raii::DescriptorSetLayout(ctx.device(), vk::DescriptorSetLayoutCreateInfo());
+    const std::array sets = {*no_bindings_, *no_bindings_, scene_textures};
+    layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, sets, push));
     const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kShadowVert);
     vk_core::GraphicsPipelineDesc desc;
     desc.layout = *layout_;
@@ -73,10 +85,23 @@ ShadowPass::ShadowPass(const vk_core::Context& ctx, const ShadowParams& params)
     desc.depth_compare = vk::CompareOp::eLessOrEqual;  // standard depth: nearest the sun is 0
     desc.depth_bias = true;
     pipeline_ = vk_core::make_graphics_pipeline(ctx, desc);
+    if (masked) make_masked_pipeline(ctx, desc);
+}
+
+void ShadowPass::make_masked_pipeline(const vk_core::Context& ctx,
+                                      vk_core::GraphicsPipelineDesc desc) {
+    const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kShadowMaskedVert);
+    const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, kAlphaTestFrag);
+    desc.vertex = *vert;
+    desc.fragment = *frag;
+    // The albedo's alpha (location 2) joins the position.
+    desc.vertex_attributes = SceneGeometry::position_attribute();
+    desc.vertex_attributes.push_back(SceneGeometry::vertex_attributes()[2]);
+    masked_pipeline_ = vk_core::make_graphics_pipeline(ctx, desc);
 }
 
 void ShadowPass::record(const vk::raii::CommandBuffer& cmd, const SceneGeometry& geometry,
-                        const DrawList& draws, const glm::mat4& light_view_proj) const {
+                        const ShadowCasters& casters, const glm::mat4& light_view_proj) const {
     const vk::RenderingAttachmentInfo depth(map_.view(), vk::ImageLayout::eDepthAttachmentOptimal,
                                             {}, {}, {}, vk::AttachmentLoadOp::eClear,
                                             vk::AttachmentStoreOp::eStore,
@@ -93,7 +118,13 @@ void ShadowPass::record(const vk::raii::CommandBuffer& cmd, const SceneGeometry&
     cmd.setDepthBias(params_.depth_bias_constant, 0.0f, params_.depth_bias_slope);
     cmd.pushConstants<glm::mat4>(*layout_, vk::ShaderStageFlagBits::eVertex, 0, light_view_proj);
     geometry.bind(cmd);
-    draws.draw(cmd);
+    casters.opaque.record(cmd);
+    if (casters.masked.max_draws > 0) {
+        assert(*masked_pipeline_);
+        cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 2, casters.textures, {});
+        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *masked_pipeline_);
+        casters.masked.record(cmd);
+    }
     cmd.endRendering();
 }
 

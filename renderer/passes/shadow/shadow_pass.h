@@ -20,13 +20,25 @@ struct ShadowParams {
 // Orthographic world -> shadow clip transform (depth 0 nearest the sun) that encloses `region`.
 glm::dmat4 fit_light_view_proj(const glm::dvec3& towards_sun, const scenes::Aabb& region);
 
+// What casts a shadow: the opaque chunks whole, the alpha-masked ones (alphaMode MASK) where
+// their alpha reaches the cut-off. Blended chunks cast none (a pane of glass would otherwise
+// throw a solid shadow: the map holds one depth per texel, not a transmittance).
+struct ShadowCasters {
+    IndirectDraws opaque;
+    IndirectDraws masked;
+    vk::DescriptorSet textures;  // set 2 (SceneTextures::set()), read by the masked draws
+};
+
 class ShadowPass {
   public:
-    ShadowPass(const vk_core::Context& ctx, const ShadowParams& params);
+    // scene_textures: the layout of set 2 (SceneTextures::layout()); masked: the scene has
+    // alpha-masked chunks, whose pipeline (the alpha test) is then made.
+    ShadowPass(const vk_core::Context& ctx, const ShadowParams& params,
+               vk::DescriptorSetLayout scene_textures, bool masked);
 
     // Leaves the shadow map in eShaderReadOnlyOptimal for the forward pass.
     void record(const vk::raii::CommandBuffer& cmd, const SceneGeometry& geometry,
-                const DrawList& draws, const glm::mat4& light_view_proj) const;
+                const ShadowCasters& casters, const glm::mat4& light_view_proj) const;
 
     vk::ImageView view() const { return map_.view(); }
     const vk_core::Image& map() const { return map_; }
@@ -38,8 +50,12 @@ class ShadowPass {
     ShadowParams params_;
     vk_core::Image map_;
     vk::raii::Sampler sampler_{nullptr};
+    void make_masked_pipeline(const vk_core::Context& ctx, vk_core::GraphicsPipelineDesc desc);
+
+    vk::raii::DescriptorSetLayout no_bindings_{nullptr};  // sets 0 and 1: the forward pass's
     vk::raii::PipelineLayout layout_{nullptr};
     vk::raii::Pipeline pipeline_{nullptr};
+    vk::raii::Pipeline masked_pipeline_{nullptr};  // alphaMode MASK: the alpha test
 };
 
 }  // namespace monoplane::passes

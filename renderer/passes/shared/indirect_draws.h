@@ -36,4 +36,12 @@ struct IndirectDraws {
     void record(const vk::raii::CommandBuffer& cmd) const;
 };
 
+// A view's chunk list by alpha class (scenes::AlphaMode): what a forward pass draws with each of
+// its pipelines (the culling pass writes them, renderer/passes/culling).
+struct ChunkDraws {
+    IndirectDraws opaque;
+    IndirectDraws masked;
+    IndirectDraws blended;  // back to front (the frame's draw order, modes::draw_order)
+};
+
 }  // namespace monoplane::passes

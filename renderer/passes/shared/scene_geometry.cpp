@@ -58,8 +58,10 @@ void DrawList::assign(const scenes::Scene& scene, std::span<const std::uint32_t>
     auto* out = reinterpret_cast<vk::DrawIndexedIndirectCommand*>(commands_.mapped());
     for (std::size_t i = 0; i < chunk_indices.size(); ++i) {
         const scenes::Chunk& chunk = scene.chunks[chunk_indices[i]];
+        // The first instance names the chunk, as the culling pass's commands do (shaders that
+        // read per-chunk data, the alpha test's texture and cut-off, find it there).
         out[i] = vk::DrawIndexedIndirectCommand(chunk.index_count, 1, chunk.first_index,
-                                                chunk.vertex_offset, 0);
+                                                chunk.vertex_offset, chunk_indices[i]);
     }
     count_ = static_cast<std::uint32_t>(chunk_indices.size());
 }

@@ -41,7 +41,8 @@ class DrawList {
   public:
     DrawList(const vk_core::Context& ctx, std::size_t max_draws);
 
-    // Replaces the list with the given chunks (chunk indices into scene.chunks).
+    // Replaces the list with the given chunks (chunk indices into scene.chunks); each command's
+    // first instance is its chunk's index.
     void assign(const scenes::Scene& scene, std::span<const std::uint32_t> chunk_indices);
     void draw(const vk::raii::CommandBuffer& cmd) const { indirect().record(cmd); }
     IndirectDraws indirect() const;

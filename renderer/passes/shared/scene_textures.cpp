@@ -1,7 +1,10 @@
 #include "renderer/passes/shared/scene_textures.h"
 
 #include <algorithm>
+#include <bit>
 #include <string>
+
+#include <glm/vec2.hpp>
 
 #include "common/result.h"
 #include "renderer/passes/shared/scene_texture_constants.h"
@@ -37,10 +40,13 @@ vk_core::Buffer storage_buffer(const vk_core::Context& ctx, std::vector<T> items
                                        vk::BufferUsageFlagBits::eStorageBuffer);
 }
 
-std::vector<std::int32_t> chunk_texture_words(const scenes::Scene& scene) {
-    std::vector<std::int32_t> words;
+// Per chunk: its texture and its alpha cut-off's bits (scene_textures.glsl's chunk_surface).
+std::vector<glm::ivec2> chunk_surface_words(const scenes::Scene& scene) {
+    std::vector<glm::ivec2> words;
     words.reserve(scene.chunks.size());
-    for (const scenes::Chunk& chunk : scene.chunks) words.push_back(chunk.texture);
+    for (const scenes::Chunk& chunk : scene.chunks) {
+        words.emplace_back(chunk.texture, std::bit_cast<std::int32_t>(chunk.alpha_cutoff));
+    }
     return words;
 }
 
@@ -115,7 +121,7 @@ std::uint64_t upload_layer(const vk_core::Context& ctx, const vk_core::Image& ar
 
 SceneTextures::SceneTextures(const vk_core::Context& ctx, const scenes::Scene& scene)
     : texcoords_(storage_buffer(ctx, scene.texcoords)),
-      chunk_textures_(storage_buffer(ctx, chunk_texture_words(scene))) {
+      chunk_textures_(storage_buffer(ctx, chunk_surface_words(scene))) {
     const scenes::TextureArrayLayout layout = scenes::layout_texture_arrays(scene.textures);
     check_device_limits(ctx, scene, layout);
     texture_slots_ = storage_buffer(ctx, slot_words(scene, layout));

@@ -5,7 +5,8 @@
 
 #ifdef MONOPLANE_SCENE_TEXTURES_VERTEX
 layout(std430, set = 2, binding = 0) readonly buffer Texcoords { vec2 texcoords[]; };
-layout(std430, set = 2, binding = 1) readonly buffer ChunkTextures { int chunk_texture[]; };
+// Per chunk: x its texture (-1: none), y its alpha cut-off (float bits; scenes::Chunk).
+layout(std430, set = 2, binding = 1) readonly buffer ChunkSurfaces { ivec2 chunk_surface[]; };
 layout(std430, set = 2, binding = 2) readonly buffer TextureSlots { uvec4 texture_slots[]; };
 
 // The chunk this draw draws: the culling pass puts its index in the draw's first instance. Instanced
@@ -20,12 +21,17 @@ layout(std430, set = 2, binding = 2) readonly buffer TextureSlots { uvec4 textur
 // The texture of the chunk this draw draws as (array, layer, wrap_u, wrap_v), or
 // MONOPLANE_NO_TEXTURE in x; and the vertex's coordinate, read only for textured chunks.
 void fetch_texture(out uvec4 slot, out vec2 uv) {
-    int texture_index = chunk_texture[MONOPLANE_DRAWN_CHUNK];
+    int texture_index = chunk_surface[MONOPLANE_DRAWN_CHUNK].x;
     slot = uvec4(MONOPLANE_NO_TEXTURE, 0u, 0u, 0u);
     uv = vec2(0.0);
     if (texture_index < 0) return;
     slot = texture_slots[texture_index];
     uv = texcoords[gl_VertexIndex];
+}
+
+// The alpha below which the chunk's fragments are dropped (alphaMode MASK; unused otherwise).
+float fetch_alpha_cutoff() {
+    return intBitsToFloat(chunk_surface[MONOPLANE_DRAWN_CHUNK].y);
 }
 #endif
 
@@ -50,6 +56,9 @@ vec4 sample_array(texture2DArray array, uint sampler_index, vec3 at, vec2 dx, ve
     }
 }
 
+// glTF's base-colour alpha: the vertex's (factor x vertex colour) times the texture's.
+float surface_alpha(float vertex_alpha, uvec4 slot, vec2 uv);
+
 // Linear RGBA of the texture at uv. The gradients are those of the unfolded coordinate, so that
 // folding does not make the level of detail jump at a fold.
 vec4 base_colour_texture(uvec4 slot, vec2 uv) {
@@ -70,5 +79,10 @@ vec4 base_colour_texture(uvec4 slot, vec2 uv) {
         case 5u: return sample_array(base_colour_arrays[5], sampler_index, layer, dx, dy);
         default: return sample_array(base_colour_arrays[6], sampler_index, layer, dx, dy);
     }
+}
+
+float surface_alpha(float vertex_alpha, uvec4 slot, vec2 uv) {
+    if (slot.x == MONOPLANE_NO_TEXTURE) return vertex_alpha;
+    return vertex_alpha * base_colour_texture(slot, uv).a;
 }
 #endif

@@ -1,7 +1,7 @@
 // An imported scene's base-colour textures on the GPU, and what the forward pass reads them by
 // (its descriptor set 2, renderer/passes/shared/scene_textures.glsl):
 //   binding 0  the texture coordinates, parallel to the vertices (Scene::texcoords)
-//   binding 1  per chunk, its texture (Chunk::texture) or -1
+//   binding 1  per chunk, its texture (Chunk::texture) or -1, and its alpha cut-off
 //   binding 2  per texture, where it lies: array, layer, wrap_u, wrap_v
 //   binding 3  the texture arrays (scenes/texture_arrays.h), sRGB, mip-mapped
 //   binding 4  four samplers, repeating or clamping to the edge per axis (trilinear, and
