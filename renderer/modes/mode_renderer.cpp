@@ -437,7 +437,7 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
     const PlannedPass* pyramid = last_plan_.find("depth_pyramid");
     const bool depth_tested = pyramid != nullptr && !pyramid->skipped;
     passes::CullFrame cull;
-    // Hybrid: C draws the blended chunks wholly beyond m - eps, the eyes the others.
+    // Hybrid: C draws the blended chunks wholly beyond m, the eyes the others.
     cull.split_blended = use_mono;
     // Instanced stereo draws each chunk of the both-eyes list once per eye, as two instances.
     cull.both_eyes_instances = options_.stereo_pass == StereoPass::kInstanced ? 2u : 1u;

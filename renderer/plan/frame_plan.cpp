@@ -178,7 +178,7 @@ class PlanBuilder {
         if (options_.depth_prepass) draws.push_back({DrawStep::kDepthPrepass});
         draws.push_back({chunks});
         draws.push_back({DrawStep::kSky, when(GpuPredicate::kMonoAny)});
-        // Only the blended chunks wholly beyond m - eps: they are mapped like the rest of C.
+        // Only the blended chunks wholly beyond m: they are mapped like the rest of C.
         if (options_.blended) draws.push_back({DrawStep::kBlended});
         return draws;
     }

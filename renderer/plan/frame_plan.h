@@ -19,7 +19,7 @@
 //                    C had nothing (the composite is then skipped), or not at all
 //   hybrid-farfield: as hybrid with C at the eyes' centre, no pyramid, an offset copy
 // (* only when the light's region changed). A scene with blended chunks (alphaMode BLEND) draws
-// them last in each forward pass; in hybrid, C draws those wholly beyond m - eps and the eyes the
+// them last in each forward pass; in hybrid, C draws those wholly beyond m and the eyes the
 // others in their transparency passes, after the composite. With m >= f (the rig's mono_skipped)
 // hybrid's executed passes are exactly stereo's: nothing lies beyond the plane.
 //

@@ -95,14 +95,17 @@ class AlphaSceneTest : public GpuTest {
         return render(scene, mode, m, options(pass));
     }
 
+    // Where the eye is: the camera shifted by half the IPD along x.
+    glm::dvec3 eye_position(Eye eye) const {
+        return glm::dvec3(kAlphaSceneEye) +
+               glm::dvec3((eye == Eye::kLeft ? -0.5 : 0.5) * vive_.ipd, 0.0, 0.0);
+    }
+
     // The eye's continuous pixel coordinate of a world point (x right, y down; the pixel
     // (i, j) covers [i, i + 1) x [j, j + 1)).
     glm::dvec2 pixel(Eye eye, const glm::dvec3& p) const {
         const rig::Tangents& t = eye == Eye::kLeft ? vive_.left : vive_.right;
-        const glm::dvec3 eye_position =
-            glm::dvec3(kAlphaSceneEye) +
-            glm::dvec3((eye == Eye::kLeft ? -0.5 : 0.5) * vive_.ipd, 0.0, 0.0);
-        const glm::dvec3 d = p - eye_position;
+        const glm::dvec3 d = p - eye_position(eye);
         const double tx = d.x / -d.z, ty = d.y / -d.z;
         return {(tx - t.left) / (t.right - t.left) * extent_.width,
                 (t.up - ty) / (t.up - t.down) * extent_.height};

@@ -43,8 +43,8 @@ struct CullFrame {
     // Instances per draw of the both-eyes list: 2 for instanced stereo (the eye is the instance
     // index minus the base instance), 1 for every other use.
     std::uint32_t both_eyes_instances = 1;
-    // Hybrid: blended chunks wholly beyond C's near plane go to C alone, all others to the eyes
-    // alone, whatever the eyes' far plane (MONOPLANE_CULL_SPLIT_BLENDED).
+    // Hybrid: blended chunks wholly beyond m (the eyes' far plane) go to C alone, all others to the
+    // eyes alone, whatever their far plane (MONOPLANE_CULL_SPLIT_BLENDED).
     bool split_blended = false;
     // Level of detail (renderer/plan/lod_selection.h): each drawn view's projection of errors,
     // and the budget in pixels (0: every chunk at full detail).

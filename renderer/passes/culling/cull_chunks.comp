@@ -49,7 +49,6 @@ shared uint written[kSublists];
 
 // Planes of modes::frustum_planes: left, right, bottom, top, far (reversed Z: z >= 0), near.
 const uint kFarPlane = 4u;
-const uint kNearPlane = 5u;
 const uint kNoPlane = 6u;
 
 // skip: a plane not tested (kFarPlane: the eyes' lists of blended chunks in hybrid), or kNoPlane.
@@ -68,11 +67,11 @@ bool outside_frustum(uint view, vec3 lo, vec3 hi) {
     return outside_frustum(view, lo, hi, kNoPlane);
 }
 
-// Whether the whole box lies inside the plane's half-space (its corner furthest against the
+// Whether the whole box lies outside the plane's half-space (its corner furthest along the
 // normal does).
-bool wholly_inside(vec4 p, vec3 lo, vec3 hi) {
-    vec3 corner = mix(hi, lo, greaterThanEqual(p.xyz, vec3(0.0)));
-    return dot(p.xyz, corner) + p.w >= 0.0;
+bool wholly_outside(vec4 p, vec3 lo, vec3 hi) {
+    vec3 corner = mix(lo, hi, greaterThanEqual(p.xyz, vec3(0.0)));
+    return dot(p.xyz, corner) + p.w < 0.0;
 }
 
 // The counts word of list l's class c (cull_constants.h).
@@ -207,10 +206,13 @@ void main() {
             alpha_class = chunk.draw.w >> MONOPLANE_CHUNK_CLASS_SHIFT;
             bool eyes_allowed = !(honour_force_mono && (flags & 1u) != 0u);
             bool mono_allowed = !(honour_force_stereo && (flags & 2u) != 0u);
-            // Blended chunks in hybrid: C's when wholly beyond its near plane, else the eyes'.
+            // Blended chunks in hybrid: C's when wholly beyond m (both eyes' far plane), else
+            // the eyes', even where C's region (from m - eps) reaches them.
             uint eye_skip = kNoPlane;
             if (split_blended && alpha_class == MONOPLANE_CLASS_BLENDED) {
-                bool beyond = wholly_inside(cull.planes[MONOPLANE_CULL_MONO * 6 + kNearPlane], lo, hi);
+                bool beyond =
+                    wholly_outside(cull.planes[MONOPLANE_CULL_LEFT * 6 + kFarPlane], lo, hi) &&
+                    wholly_outside(cull.planes[MONOPLANE_CULL_RIGHT * 6 + kFarPlane], lo, hi);
                 eyes_allowed = !beyond;
                 mono_allowed = beyond;
                 eye_skip = kFarPlane;

@@ -27,9 +27,10 @@ using uvec4 = glm::uvec4;
 // config.w bits
 #define MONOPLANE_CULL_HONOUR_FORCE_MONO 1u    // kChunkForceMono chunks skip the eyes' lists
 #define MONOPLANE_CULL_HONOUR_FORCE_STEREO 2u  // kChunkForceStereo chunks skip C's list
-// Hybrid: a blended chunk wholly beyond C's near plane (m - eps) is C's alone; every other goes to
-// the eyes alone, whose lists take it whatever their far plane (m): the eyes draw it after the
-// composite (renderer/plan/frame_plan.h). Nothing blended is drawn twice into one eye.
+// Hybrid: a blended chunk wholly beyond m (both eyes' far plane) is C's alone; every other goes
+// to the eyes alone, whose lists take it whatever their far plane: the eyes draw it after the
+// composite (renderer/plan/frame_plan.h). Nothing blended is drawn twice into one eye, though C's
+// region starts at m - eps: a blended surface has no depth the composite could choose by.
 #define MONOPLANE_CULL_SPLIT_BLENDED 4u
 
 // Alpha classes (scenes::AlphaMode), one pipeline each: every list holds its chunks class by
