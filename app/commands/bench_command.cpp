@@ -163,12 +163,16 @@ class Progress {
     bool terminal_;
 };
 
-// The pixels a view's passes cover: an eye's image (its composite too), both eyes' for the
-// single-pass "eyes", C's viewport (eq. 8) for "mono"; 0 for a view it does not know.
+// The pixels a view's passes cover: an eye's image (its composite and transparency too), both
+// eyes' for the single-pass "eyes", C's viewport (eq. 8) for "mono"; 0 for a view it does not
+// know.
 std::uint64_t view_pixels(const modes::ModeRenderer& renderer, const std::string& view) {
     const vk::Extent2D eye = renderer.eye_extent();
     const std::uint64_t eye_pixels = std::uint64_t{eye.width} * eye.height;
-    if (view == "left" || view == "right" || view.ends_with(".composite")) return eye_pixels;
+    if (view == "left" || view == "right" || view.ends_with(".composite") ||
+        view.ends_with(".transparency")) {
+        return eye_pixels;
+    }
     if (view == "eyes") return 2 * eye_pixels;
     if (view == "mono" && renderer.last_rig()) {
         const rig::MonoCamera& mono = renderer.last_rig()->mono;
@@ -284,7 +288,7 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
             run.view_fragments_per_pixel[v.view] =
                 static_cast<double>(v.fragment_invocations) / static_cast<double>(pixels);
         }
-        if (v.view.find('.') != std::string::npos) continue;  // composites: not scene work
+        if (v.view.ends_with(".composite")) continue;  // not scene work (transparency is)
         run.primitives += v.clipping_invocations;
         run.vertex_invocations += v.vertex_invocations;
         run.geometry_invocations += v.geometry_invocations;

@@ -613,12 +613,30 @@ profile::FrameStats ModeRenderer::collect_frame(std::uint32_t slot, double recor
     profile::FrameStats stats = profiler_.collect(slot);
     stats.cpu_record_ms = record_ms;
     const auto counts = culling_.counts(slot);
+    // A list's draws of one alpha class, and of the classes its forward pass draws: all three,
+    // but in hybrid the eyes' blended chunks, which their transparency passes draw.
+    const auto drawn = [&](std::uint32_t list, std::uint32_t alpha_class) {
+        return counts[passes::ChunkCullingPass::count_word(list, alpha_class)];
+    };
+    const bool transparency = last_plan_.find("left.transparency") != nullptr &&
+                              !last_plan_.find("left.transparency")->skipped;
+    const auto forward_draws = [&](std::uint32_t list) {
+        const std::uint32_t blended = drawn(list, MONOPLANE_CLASS_BLENDED);
+        return drawn(list, MONOPLANE_CLASS_OPAQUE) + drawn(list, MONOPLANE_CLASS_MASKED) +
+               (transparency && list != MONOPLANE_CULL_MONO ? 0u : blended);
+    };
     for (profile::ViewStatistics& view : stats.views) {
-        if (view.view == "left") view.draws = counts[MONOPLANE_COUNT_LEFT];
-        if (view.view == "right") view.draws = counts[MONOPLANE_COUNT_RIGHT];
-        if (view.view == "eyes") view.draws = counts[MONOPLANE_COUNT_BOTH_EYES];
+        if (view.view == "left") view.draws = forward_draws(MONOPLANE_CULL_LEFT);
+        if (view.view == "right") view.draws = forward_draws(MONOPLANE_CULL_RIGHT);
+        if (view.view == "eyes") view.draws = forward_draws(MONOPLANE_CULL_BOTH_EYES);
+        if (view.view == "left.transparency") {
+            view.draws = drawn(MONOPLANE_CULL_LEFT, MONOPLANE_CLASS_BLENDED);
+        }
+        if (view.view == "right.transparency") {
+            view.draws = drawn(MONOPLANE_CULL_RIGHT, MONOPLANE_CLASS_BLENDED);
+        }
         if (view.view == "mono") {
-            view.draws = counts[MONOPLANE_COUNT_MONO];
+            view.draws = forward_draws(MONOPLANE_CULL_MONO);
             view.draws_before_occlusion_culling = counts[MONOPLANE_COUNT_MONO_CANDIDATES];
         }
     }
