@@ -387,6 +387,67 @@ TEST_F(AlphaBlendHybrid, FarfieldDrawsNearPanesWhereStereoDoes) {
     }
 }
 
+// A pane straddling m: a ramp rising from 5 m to 9 m in front of the camera, with m = 7, over an
+// opaque backdrop. It is the eyes', drawn whole after the composite (depth clamping, not the
+// eyes' far plane at m, bounds it), so hybrid shows it where and as stereo does; C draws none of
+// it.
+TEST_F(AlphaBlendHybrid, APaneStraddlingMIsDrawnWholeByTheEyes) {
+    scenes::testing::TestGltf gltf;
+    gltf.json["materials"] = {
+        {{"pbrMetallicRoughness",
+          {{"baseColorFactor", {0.2, 0.5, 0.3, 1.0}}, {"metallicFactor", 0.0}}}},
+        {{"alphaMode", "BLEND"},
+         {"doubleSided", true},
+         {"pbrMetallicRoughness",
+          {{"baseColorFactor", {0.9, 0.5, 0.1, 0.5}}, {"metallicFactor", 0.0}}}}};
+    const auto add_quad = [&](const std::vector<glm::vec3>& corners, int material) {
+        const int positions = gltf.add_positions(corners);
+        const int indices = gltf.add_indices({0, 2, 1, 1, 2, 3});
+        gltf.add_node({{"mesh", gltf.add_mesh({{"POSITION", positions}}, indices, 4, material)}});
+    };
+    // Corners: top-left, top-right, bottom-left, bottom-right seen from the camera.
+    add_quad({{-60, 50, -40}, {60, 50, -40}, {-60, -30, -40}, {60, -30, -40}}, 0);
+    add_quad({{-1.0f, 2.4f, -9.0f}, {1.0f, 2.4f, -9.0f}, {-1.0f, 0.8f, -5.0f}, {1.0f, 0.8f, -5.0f}},
+             1);
+    const glm::vec3 eye = kAlphaSceneEye;
+    gltf.json["cameras"] = {
+        {{"type", "perspective"}, {"perspective", {{"yfov", 1.5}, {"znear", 0.1}}}}};
+    gltf.add_node({{"camera", 0}, {"translation", {eye.x, eye.y, eye.z}}});
+    gltf.write_gltf(dir_ / "ramp.gltf");
+    const scenes::Scene ramp = load(dir_ / "ramp.gltf");
+
+    const EyeImages stereo = render(ramp, Mode::kStereo);
+    modes::RendererOptions with = options();
+    with.read_back_draw_lists = true;
+    modes::ModeRenderer hybrid(ctx(), ramp, Mode::kHybrid, extent_, with);
+    hybrid.render_frame(inputs(ramp, 7.0));
+    const AlphaQuad ramp_quad{
+        "ramp", {-1.0f, 2.4f, -9.0f}, {2.0f, 0.0f, 0.0f}, {0.0f, -1.6f, 4.0f}};
+    for (Eye e : {Eye::kLeft, Eye::kRight}) {
+        const auto i = static_cast<std::size_t>(e);
+        const modes::RgbaImage& image = hybrid.eye_image(e);
+        const PixelBox box = box_of(ramp_quad, e, 3);
+        EXPECT_GT((box.hi.y - box.lo.y) * (box.hi.x - box.lo.x), 400);
+        EXPECT_LE(box_difference(stereo[i], image, box, e), 2) << eye_text(e);
+        // Both ends of the ramp are there, orange over the green backdrop.
+        for (const glm::vec2 uv : {glm::vec2(0.5f, 0.1f), glm::vec2(0.5f, 0.9f)}) {
+            const glm::ivec2 p = *pixel_of(e, ramp_quad.at(uv));
+            const Rgb c = rgb_at(image, p.x, p.y);
+            EXPECT_GT(c.r, c.g) << eye_text(e) << " at v " << uv.y;
+        }
+    }
+    for (std::uint32_t c = 0; c < ramp.chunks.size(); ++c) {
+        if (ramp.chunks[c].alpha_mode != scenes::AlphaMode::kBlend) continue;
+        const auto listed = [&](passes::CullView view) {
+            const std::vector<std::uint32_t> list = hybrid.drawn_chunks(view);
+            return std::count(list.begin(), list.end(), c);
+        };
+        EXPECT_EQ(listed(passes::CullView::kMono), 0);
+        EXPECT_EQ(listed(passes::CullView::kLeft), 1);
+        EXPECT_EQ(listed(passes::CullView::kRight), 1);
+    }
+}
+
 // TAA on a pose path: the head moves sideways 1 cm a frame, so near_red (3 m) slides over the
 // backdrop (40 m) by about 0.4 px a frame. A blended surface writes no velocity (its pixels keep
 // the background's), so its history is reprojected with the background's motion; TAA's clamp to
