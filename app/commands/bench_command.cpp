@@ -574,7 +574,7 @@ struct SweepState {
     BenchReport& report;
     Progress progress;
     int done = 0;
-    modes::LodOptions lod;  // of the runs under way
+    modes::LodOptions lod{};  // of the runs under way
 
     void show(const std::string& what) const {
         progress.show(done, what + (sweep.lods.size() > 1 ? " lod " + lod_name() : ""));

@@ -105,10 +105,11 @@ passes::StereoDuplication stereo_duplication(StereoPass pass) {
 // The forward pass's configuration: anti-aliasing, the stereo form, and the pipelines of the
 // alpha classes the scene has.
 passes::ForwardConfig forward_config(const RendererOptions& options,
-                                     passes::StereoDuplication stereo, const scenes::Scene& scene) {
+                                     passes::StereoDuplication stereo,
+                                     const SceneResources& resources) {
     passes::ForwardConfig config{options.anti_aliasing == AntiAliasing::kTaa,
                                  msaa_samples(options.anti_aliasing), stereo, options.vertex_work};
-    const auto classes = passes::ChunkCullingPass::class_sizes(scene);
+    const auto& classes = resources.alpha_classes();
     config.masked_chunks = classes[MONOPLANE_CLASS_MASKED] > 0;
     config.blended_chunks = classes[MONOPLANE_CLASS_BLENDED] > 0;
     return config;
@@ -151,10 +152,9 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       eye_extent_(eye_extent),
       options_(checked(ctx, mode, options)),
       nearest_mono_plane_(nearest_mono_plane),
-      blended_chunks_(
-          forward_config(options, passes::StereoDuplication::kNone, scene_).blended_chunks),
+      blended_chunks_(resources_->alpha_classes()[MONOPLANE_CLASS_BLENDED] > 0),
       forward_(ctx, resources_->textures().layout(),
-               forward_config(options, passes::StereoDuplication::kNone, scene_)),
+               forward_config(options, passes::StereoDuplication::kNone, *resources_)),
       tonemap_(ctx),
       composite_(ctx, options.anti_aliasing == AntiAliasing::kTaa,
                  composite_may_write_display(ctx, mode, options, blended_chunks_)),
@@ -171,7 +171,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
         eye_layers_ = std::make_unique<ForwardImages>(ctx, eye_extent, eye_features, 2);
         const passes::StereoDuplication duplication = stereo_duplication(options.stereo_pass);
         eyes_forward_ = std::make_unique<passes::ForwardPass>(
-            ctx, resources_->textures().layout(), forward_config(options, duplication, scene_));
+            ctx, resources_->textures().layout(),
+            forward_config(options, duplication, *resources_));
         eye_pair_constants_.emplace(ctx, 2 * sizeof(passes::ViewConstants),
                                     vk::BufferUsageFlagBits::eUniformBuffer,
                                     vk_core::MemoryUse::kDeviceLocal);
@@ -618,8 +619,11 @@ profile::FrameStats ModeRenderer::collect_frame(std::uint32_t slot, double recor
     const auto drawn = [&](std::uint32_t list, std::uint32_t alpha_class) {
         return counts[passes::ChunkCullingPass::count_word(list, alpha_class)];
     };
-    const bool transparency = last_plan_.find("left.transparency") != nullptr &&
-                              !last_plan_.find("left.transparency")->skipped;
+    // This slot's frame had transparency passes if its statistics have their scopes (the plan
+    // may since have changed).
+    const bool transparency =
+        std::any_of(stats.views.begin(), stats.views.end(),
+                    [](const profile::ViewStatistics& v) { return v.view == "left.transparency"; });
     const auto forward_draws = [&](std::uint32_t list) {
         const std::uint32_t blended = drawn(list, MONOPLANE_CLASS_BLENDED);
         return drawn(list, MONOPLANE_CLASS_OPAQUE) + drawn(list, MONOPLANE_CLASS_MASKED) +

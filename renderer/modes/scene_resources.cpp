@@ -1,6 +1,5 @@
 #include "renderer/modes/scene_resources.h"
 
-#include <algorithm>
 #include <chrono>
 #include <vector>
 
@@ -24,11 +23,6 @@ std::vector<std::uint32_t> chunks_of(const scenes::Scene& scene, scenes::AlphaMo
     return chunks;
 }
 
-bool any_chunk_of(const scenes::Scene& scene, scenes::AlphaMode mode) {
-    return std::any_of(scene.chunks.begin(), scene.chunks.end(),
-                       [&](const scenes::Chunk& chunk) { return chunk.alpha_mode == mode; });
-}
-
 }  // namespace
 
 SceneResources::SceneResources(const vk_core::Context& ctx, const scenes::Scene& scene,
@@ -40,7 +34,8 @@ SceneResources::SceneResources(const vk_core::Context& ctx, const scenes::Scene&
       textures_(ctx, scene),
       chunk_table_(passes::ChunkCullingPass::make_chunk_table(ctx, scene, lods_)),
       level_table_(passes::ChunkCullingPass::make_level_table(ctx, scene, lods_)),
-      shadow_(ctx, shadow, textures_.layout(), any_chunk_of(scene, scenes::AlphaMode::kMask)),
+      alpha_classes_(passes::ChunkCullingPass::class_sizes(scene)),
+      shadow_(ctx, shadow, textures_.layout(), alpha_classes_[MONOPLANE_CLASS_MASKED] > 0),
       shadow_opaque_(ctx, scene.chunks.size()),
       shadow_masked_(ctx, scene.chunks.size()) {
     shadow_opaque_.assign(scene, chunks_of(scene, scenes::AlphaMode::kOpaque));

@@ -9,11 +9,14 @@
 // renderer first needs another light region. The scene must outlive the resources.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <optional>
 
 #include <glm/mat4x4.hpp>
 
 #include "renderer/graph/frame_graph.h"
+#include "renderer/passes/culling/cull_constants.h"
 #include "renderer/passes/shadow/shadow_pass.h"
 #include "renderer/passes/shared/scene_geometry.h"
 #include "renderer/passes/shared/scene_textures.h"
@@ -33,6 +36,11 @@ class SceneResources {
     const passes::SceneTextures& textures() const { return textures_; }
     const vk_core::Buffer& chunk_table() const { return chunk_table_; }
     const vk_core::Buffer& level_table() const { return level_table_; }
+    // How many chunks of each alpha class (MONOPLANE_CLASS_*) the scene has: the pipelines and
+    // passes a renderer of it needs.
+    const std::array<std::uint32_t, MONOPLANE_CLASSES>& alpha_classes() const {
+        return alpha_classes_;
+    }
     const scenes::LodChain& lods() const { return lods_; }
     // How long building the levels of detail took (meshoptimizer's simplifier, every chunk).
     double lod_build_seconds() const { return lod_build_seconds_; }
@@ -59,6 +67,7 @@ class SceneResources {
     passes::SceneTextures textures_;
     vk_core::Buffer chunk_table_;
     vk_core::Buffer level_table_;
+    std::array<std::uint32_t, MONOPLANE_CLASSES> alpha_classes_;
     passes::ShadowPass shadow_;
     // What casts shadows: the opaque chunks, and the masked ones through the alpha test.
     passes::DrawList shadow_opaque_;

@@ -154,7 +154,8 @@ void assemble_chunks(const ImportedGeometry& geometry, std::uint32_t target_tria
     assert(geometry.triangle_count() < std::numeric_limits<std::uint32_t>::max());
     const std::uint32_t target = std::clamp(target_triangles, kMinChunkTarget, kMaxChunkTriangles);
 
-    // The distinct looks, in order, and global vertex numbers of every triangle's corners.
+    // The distinct looks, in order, the batches of each (in file order, so its triangles come in
+    // ascending order), and global vertex numbers of every triangle's corners.
     std::vector<ChunkLook> looks;
     looks.reserve(geometry.batches.size());
     for (std::size_t b = 0; b < geometry.batches.size(); ++b) {
@@ -162,9 +163,8 @@ void assemble_chunks(const ImportedGeometry& geometry, std::uint32_t target_tria
     }
     std::sort(looks.begin(), looks.end());
     looks.erase(std::unique(looks.begin(), looks.end()), looks.end());
-    const std::size_t triangle_count = geometry.triangle_count();
-    std::vector<std::uint32_t> corners(3 * triangle_count);
-    std::vector<std::uint32_t> look_of(triangle_count);  // into looks
+    std::vector<std::vector<std::size_t>> batches_of(looks.size());
+    std::vector<std::uint32_t> corners(3 * geometry.triangle_count());
     for (std::size_t b = 0; b < geometry.batches.size(); ++b) {
         const GeometryBatch& batch = geometry.batches[b];
         for (std::size_t i = 0; i < batch.index_count; ++i) {
@@ -172,8 +172,7 @@ void assemble_chunks(const ImportedGeometry& geometry, std::uint32_t target_tria
                 batch.first_vertex + geometry.indices[batch.first_index + i]);
         }
         const auto found = std::lower_bound(looks.begin(), looks.end(), ChunkLook::of(geometry, b));
-        std::fill_n(look_of.begin() + static_cast<std::ptrdiff_t>(batch.first_index / 3),
-                    batch.index_count / 3, static_cast<std::uint32_t>(found - looks.begin()));
+        batches_of[static_cast<std::size_t>(found - looks.begin())].push_back(b);
     }
 
     scene.vertices.clear();
@@ -191,14 +190,19 @@ void assemble_chunks(const ImportedGeometry& geometry, std::uint32_t target_tria
     std::vector<std::uint32_t> members;
     // Triangles of different textures, alpha modes or cut-offs (or blended triangles of different
     // primitive instances) never share a chunk: one k-d tree per look.
+    // (Each look's triangles are gathered from its batches: a scan of every triangle per look
+    // would be quadratic in a scene of many blended primitives, each a look of its own.)
     for (std::size_t l = 0; l < looks.size(); ++l) {
         refs.clear();
-        for (std::size_t t = 0; t < triangle_count; ++t) {
-            if (look_of[t] != l) continue;
-            const glm::vec3& a = geometry.vertices[corners[3 * t]].position;
-            const glm::vec3& b = geometry.vertices[corners[3 * t + 1]].position;
-            const glm::vec3& c = geometry.vertices[corners[3 * t + 2]].position;
-            refs.push_back({(a + b + c) / 3.0f, static_cast<std::uint32_t>(t)});
+        for (const std::size_t b : batches_of[l]) {
+            const GeometryBatch& batch = geometry.batches[b];
+            for (std::size_t t = batch.first_index / 3;
+                 t < (batch.first_index + batch.index_count) / 3; ++t) {
+                const glm::vec3& p0 = geometry.vertices[corners[3 * t]].position;
+                const glm::vec3& p1 = geometry.vertices[corners[3 * t + 1]].position;
+                const glm::vec3& p2 = geometry.vertices[corners[3 * t + 2]].position;
+                refs.push_back({(p0 + p1 + p2) / 3.0f, static_cast<std::uint32_t>(t)});
+            }
         }
         cells.clear();
         split(refs, 0, refs.size(), target, cells);

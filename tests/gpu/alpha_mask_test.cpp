@@ -181,9 +181,13 @@ TEST_F(AlphaMask, MultiviewDrawsTheSameCutOuts) {
     const EyeImages images = render(fence, Mode::kStereo, 8.0, StereoPass::kMultiview);
     const bool llvmpipe = ctx().device_info().name.find("llvmpipe") != std::string::npos;
     if (!llvmpipe) expect_cut_outs(images, 0.5f, 0.0, "stereo-multiview");
+    if (!llvmpipe) return;
     const Tally left = check_checker(images[0], Eye::kLeft, 0.0);
-    std::cout << "multiview: left eye's checker points wrong " << left.wrong << " of "
-              << left.surface + left.background << "\n";
+    const Tally right = check_checker(images[1], Eye::kRight, 0.0);
+    GTEST_SKIP() << "measured on " << ctx().device_info().name << ": checker points wrong, left "
+                 << left.wrong << " of " << left.surface + left.background << ", right "
+                 << right.wrong << " of " << right.surface + right.background
+                 << " (lavapipe 22.3's multiview is defective: not asserted)";
 }
 
 // A depth pre-pass alpha-tests too: the images are those drawn without it.

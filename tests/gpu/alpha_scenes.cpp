@@ -11,20 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "tests/unit/gltf_test_files.h"
-
-// A private copy of stb_image_write: STB_IMAGE_WRITE_STATIC keeps its functions out of the
-// symbols other test sources (with copies of their own) define.
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#endif
-#include <stb/stb_image_write.h>
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
+#include "tests/unit/png_bytes.h"
 
 namespace monoplane::testing {
 namespace {
@@ -71,20 +58,8 @@ std::vector<unsigned char> gradient_image(const std::array<std::uint8_t, 3>& col
     });
 }
 
-void write_png(const std::filesystem::path& path, const std::vector<unsigned char>& rgba) {
-    std::vector<unsigned char> bytes;
-    stbi_write_png_to_func(
-        [](void* context, void* data, int size) {
-            auto* out = static_cast<std::vector<unsigned char>*>(context);
-            out->insert(out->end(), static_cast<unsigned char*>(data),
-                        static_cast<unsigned char*>(data) + size);
-        },
-        &bytes, kAlphaTextureSize, kAlphaTextureSize, 4, rgba.data(), kAlphaTextureSize * 4);
-    if (bytes.empty()) throw std::runtime_error("cannot encode " + path.string());
-    std::ofstream out(path, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()),
-              static_cast<std::streamsize>(bytes.size()));
-    if (!out) throw std::runtime_error("cannot write " + path.string());
+void write_texture(const std::filesystem::path& path, const std::vector<unsigned char>& rgba) {
+    write_png(path, kAlphaTextureSize, kAlphaTextureSize, rgba);
 }
 
 json factor(const glm::vec4& colour) {
@@ -167,8 +142,8 @@ float gradient_alpha(glm::vec2 uv) {
 
 std::filesystem::path write_fence_scene(const std::filesystem::path& dir,
                                         const FenceOptions& options) {
-    write_png(dir / "fence_checker.png", checker_image());
-    write_png(dir / "alpha_gradient.png", gradient_image(kGradientTexel));
+    write_texture(dir / "fence_checker.png", checker_image());
+    write_texture(dir / "alpha_gradient.png", gradient_image(kGradientTexel));
     TestGltf file = base_scene();
     file.json["images"] = {{{"uri", "fence_checker.png"}}, {{"uri", "alpha_gradient.png"}}};
     file.json["textures"] = {{{"sampler", 0}, {"source", 0}}, {{"sampler", 0}, {"source", 1}}};
@@ -193,7 +168,7 @@ std::filesystem::path write_pane_scene(const std::filesystem::path& dir,
                                        const PaneOptions& options) {
     TestGltf file = base_scene();
     if (options.with_panes) {
-        write_png(dir / "pane_gradient.png", gradient_image({255, 255, 255}));
+        write_texture(dir / "pane_gradient.png", gradient_image({255, 255, 255}));
         file.json["images"] = {{{"uri", "pane_gradient.png"}}};
         file.json["textures"] = {{{"sampler", 0}, {"source", 0}}};
         const std::string mode = options.blended ? "BLEND" : "OPAQUE";

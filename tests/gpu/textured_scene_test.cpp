@@ -21,18 +21,7 @@
 #include "tests/gpu/gpu_test.h"
 #include "tests/gpu/profile_inputs.h"
 #include "tests/unit/gltf_test_files.h"
-
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#endif
-#include <stb/stb_image_write.h>
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
+#include "tests/unit/png_bytes.h"
 
 namespace monoplane {
 namespace {
@@ -54,18 +43,6 @@ double srgb_to_linear(int encoded) {
     return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-std::vector<unsigned char> png(int width, int height, const std::vector<unsigned char>& rgba) {
-    std::vector<unsigned char> bytes;
-    stbi_write_png_to_func(
-        [](void* context, void* data, int size) {
-            auto* out = static_cast<std::vector<unsigned char>*>(context);
-            out->insert(out->end(), static_cast<unsigned char*>(data),
-                        static_cast<unsigned char*>(data) + size);
-        },
-        &bytes, width, height, 4, rgba.data(), width * 4);
-    return bytes;
-}
-
 // 64 x 64 texels, a solid colour per quadrant.
 std::vector<unsigned char> quadrant_png() {
     std::vector<unsigned char> rgba;
@@ -77,7 +54,7 @@ std::vector<unsigned char> quadrant_png() {
                          static_cast<unsigned char>(c[2]), 255});
         }
     }
-    return png(64, 64, rgba);
+    return testing::png_bytes(64, 64, rgba);
 }
 
 // 128 x 128 texels alternating black and white: its mean is linear 0.5.
@@ -89,7 +66,7 @@ std::vector<unsigned char> checker_png() {
             rgba.insert(rgba.end(), {v, v, v, 255});
         }
     }
-    return png(128, 128, rgba);
+    return testing::png_bytes(128, 128, rgba);
 }
 
 // A quad facing +z: centre, half size, texture coordinates at its top-left and bottom-right

@@ -16,18 +16,7 @@
 #include "scenes/lod_chain.h"
 #include "tests/unit/gltf_scene_checks.h"
 #include "tests/unit/gltf_test_files.h"
-
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#endif
-#include <stb/stb_image_write.h>
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
+#include "tests/unit/png_bytes.h"
 
 namespace monoplane::scenes {
 namespace {
@@ -235,7 +224,7 @@ TEST_F(GltfAlphaMode, BlendedPrimitivesNeverShareAChunk) {
 TEST_F(GltfAlphaMode, TextureAndAlphaModeSplitChunksTogether) {
     TestGltf file;
     const std::vector<unsigned char> white = {255, 255, 255, 255};
-    ASSERT_NE(stbi_write_png((dir_ / "white.png").string().c_str(), 1, 1, 4, white.data(), 4), 0);
+    monoplane::testing::write_png(dir_ / "white.png", 1, 1, white);
     file.json["images"] = {{{"uri", "white.png"}}};
     file.json["textures"] = {{{"source", 0}}};
     json textured_mask = alpha_material("MASK", 0.4);

@@ -10,37 +10,15 @@
 #include "scenes/gltf/load_gltf.h"
 #include "tests/unit/gltf_scene_checks.h"
 #include "tests/unit/gltf_test_files.h"
-
-#define STB_IMAGE_WRITE_STATIC
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#endif
-#include <stb/stb_image_write.h>
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
+#include "tests/unit/png_bytes.h"
 
 namespace monoplane::scenes {
 namespace {
 
+using monoplane::testing::png_bytes;
 using nlohmann::json;
 using testing::quiet;
 using testing::TestGltf;
-
-std::vector<unsigned char> png(int width, int height, const std::vector<unsigned char>& rgba) {
-    std::vector<unsigned char> bytes;
-    stbi_write_png_to_func(
-        [](void* context, void* data, int size) {
-            auto* out = static_cast<std::vector<unsigned char>*>(context);
-            out->insert(out->end(), static_cast<unsigned char*>(data),
-                        static_cast<unsigned char*>(data) + size);
-        },
-        &bytes, width, height, 4, rgba.data(), width * 4);
-    return bytes;
-}
 
 void write_bytes(const std::filesystem::path& path, const std::vector<unsigned char>& bytes) {
     std::ofstream out(path, std::ios::binary);
@@ -67,7 +45,7 @@ const std::vector<unsigned char> kOrange = {255, 128, 0, 255, 255, 128, 0, 255,
 
 TEST(GltfTexture, ExternalPngIsKeptWithItsCoordinates) {
     const auto dir = testing::test_directory("texture_png");
-    write_bytes(dir / "orange.png", png(2, 2, kOrange));
+    write_bytes(dir / "orange.png", png_bytes(2, 2, kOrange));
     TestGltf file;
     file.json["images"] = {{{"uri", "orange.png"}}};
     file.json["textures"] = {{{"source", 0}}};
@@ -108,7 +86,7 @@ TEST(GltfTexture, TheSamplersWrapModesAreKept) {
         {33648, 33071, TextureWrap::MirroredRepeat, TextureWrap::ClampToEdge},
     };
     const auto dir = testing::test_directory("wrap_modes");
-    write_bytes(dir / "ramp.png", png(2, 1, {0, 0, 0, 255, 255, 255, 255, 255}));
+    write_bytes(dir / "ramp.png", png_bytes(2, 1, {0, 0, 0, 255, 255, 255, 255, 255}));
     for (const Case& c : cases) {
         TestGltf file;
         file.json["images"] = {{{"uri", "ramp.png"}}};
@@ -128,7 +106,7 @@ TEST(GltfTexture, TheSamplersWrapModesAreKept) {
 // The same image embedded in a .glb buffer view, and as a data: URI in a .gltf.
 TEST(GltfTexture, EmbeddedImages) {
     const auto dir = testing::test_directory("texture_embedded");
-    const std::vector<unsigned char> image = png(2, 2, kOrange);
+    const std::vector<unsigned char> image = png_bytes(2, 2, kOrange);
     {
         TestGltf file;
         file.json["images"] = {
@@ -158,8 +136,8 @@ TEST(GltfTexture, EmbeddedImages) {
 // Two textures on two overlapping triangles: two chunks, one texture each.
 TEST(GltfTexture, ChunksNeverMixTextures) {
     const auto dir = testing::test_directory("texture_mix");
-    write_bytes(dir / "orange.png", png(2, 2, kOrange));
-    write_bytes(dir / "white.png", png(1, 1, {255, 255, 255, 255}));
+    write_bytes(dir / "orange.png", png_bytes(2, 2, kOrange));
+    write_bytes(dir / "white.png", png_bytes(1, 1, {255, 255, 255, 255}));
     TestGltf file;
     file.json["images"] = {{{"uri", "orange.png"}}, {{"uri", "white.png"}}};
     file.json["textures"] = {{{"source", 0}}, {{"source", 1}}};
@@ -184,7 +162,7 @@ TEST(GltfTexture, ChunksNeverMixTextures) {
 
 TEST(GltfTexture, PrimitiveWithoutItsTexcoordsIsDrawnUntextured) {
     const auto dir = testing::test_directory("texture_no_uv");
-    write_bytes(dir / "orange.png", png(2, 2, kOrange));
+    write_bytes(dir / "orange.png", png_bytes(2, 2, kOrange));
     TestGltf file;
     file.json["images"] = {{{"uri", "orange.png"}}};
     file.json["textures"] = {{{"source", 0}}};
@@ -209,7 +187,7 @@ TEST(GltfTexture, PrimitiveWithoutItsTexcoordsIsDrawnUntextured) {
 
 TEST(GltfTexture, BadImagesAreErrors) {
     const auto dir = testing::test_directory("texture_bad");
-    write_bytes(dir / "orange.png", png(2, 2, kOrange));
+    write_bytes(dir / "orange.png", png_bytes(2, 2, kOrange));
     write_bytes(dir / "garbage.png", {'n', 'o', 't', ' ', 'a', ' ', 'p', 'n', 'g'});
     struct Case {
         std::string uri;

@@ -301,14 +301,7 @@ ChunkDraws ChunkCullingPass::chunk_draws(CullView view) const {
 }
 
 std::uint32_t ChunkCullingPass::count_word(std::uint32_t list, std::uint32_t alpha_class) {
-    switch (alpha_class) {
-        case MONOPLANE_CLASS_MASKED:
-            return MONOPLANE_COUNT_MASKED + list;
-        case MONOPLANE_CLASS_BLENDED:
-            return MONOPLANE_COUNT_BLENDED + list;
-        default:
-            return list;
-    }
+    return MONOPLANE_COUNT_WORD(list, alpha_class);
 }
 
 Predicate ChunkCullingPass::predicate(std::uint32_t word, bool inverted) const {

@@ -74,13 +74,6 @@ bool wholly_outside(vec4 p, vec3 lo, vec3 hi) {
     return dot(p.xyz, corner) + p.w < 0.0;
 }
 
-// The counts word of list l's class c (cull_constants.h).
-uint count_word(uint l, uint c) {
-    return c == MONOPLANE_CLASS_OPAQUE ? l
-                                       : (c == MONOPLANE_CLASS_MASKED ? MONOPLANE_COUNT_MASKED + l
-                                                                      : MONOPLANE_COUNT_BLENDED + l);
-}
-
 // True when every eye pixel that would read the box's part of C is covered by content nearer
 // than m - eps (Sect. 4.4, "Occlusion Culling"): the box's screen rectangle in C selects the
 // pyramid level at which it spans at most 2 x 2 texels.
@@ -278,11 +271,13 @@ void main() {
         uint near = 0u;
         for (uint c = 0; c < MONOPLANE_CLASSES; ++c) {
             uint base = c * MONOPLANE_CULL_LISTS;
-            counts[count_word(MONOPLANE_CULL_MONO, c)] = written[base + MONOPLANE_CULL_MONO];
+            counts[MONOPLANE_COUNT_WORD(MONOPLANE_CULL_MONO, c)] =
+                written[base + MONOPLANE_CULL_MONO];
             mono += written[base + MONOPLANE_CULL_MONO];
             if (occlusion_phase) continue;
             for (uint l = 0; l < MONOPLANE_CULL_LISTS; ++l) {
-                if (l != MONOPLANE_CULL_MONO) counts[count_word(l, c)] = written[base + l];
+                if (l == MONOPLANE_CULL_MONO) continue;
+                counts[MONOPLANE_COUNT_WORD(l, c)] = written[base + l];
             }
             near += written[base + MONOPLANE_CULL_LEFT] + written[base + MONOPLANE_CULL_RIGHT];
         }

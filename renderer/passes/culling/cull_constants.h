@@ -58,6 +58,12 @@ using uvec4 = glm::uvec4;
 #define MONOPLANE_COUNT_MASKED 7
 #define MONOPLANE_COUNT_BLENDED 11
 #define MONOPLANE_COUNT_WORDS 15
+// The counts word of list l's draws of alpha class c.
+#define MONOPLANE_COUNT_WORD(l, c)                                                              \
+    ((c) == MONOPLANE_CLASS_OPAQUE                                                              \
+         ? (l)                                                                                  \
+         : ((c) == MONOPLANE_CLASS_MASKED ? MONOPLANE_COUNT_MASKED : MONOPLANE_COUNT_BLENDED) + \
+               (l))
 
 // Bits of the routing word each chunk gets per frame (the debug view "routing"): the lists it went
 // to, and whether occlusion culling then took it out of C's.

@@ -3,7 +3,7 @@
 // The depth-only draws of alphaMode MASK chunks (the depth pre-pass, the shadow map): fragments
 // whose alpha (base-colour factor x vertex colour x texture) is below the chunk's cut-off are
 // dropped, the others write their depth. MONOPLANE_ALPHA_TO_COVERAGE (MSAA): the alpha goes out
-// sharpened for the pipeline's alpha to coverage instead, as forward_shading.glsl's does.
+// sharpened for the pipeline's alpha to coverage instead (coverage_alpha).
 layout(location = 2) in vec4 in_albedo;
 layout(location = 6) in vec2 in_uv;
 layout(location = 7) flat in uvec4 in_texture;
@@ -17,8 +17,7 @@ layout(location = 0) out vec4 out_color;
 void main() {
     float alpha = surface_alpha(in_albedo.a, in_texture, in_uv);
 #ifdef MONOPLANE_ALPHA_TO_COVERAGE
-    out_color = vec4(0.0, 0.0, 0.0,
-                     clamp((alpha - in_alpha_cutoff) / max(fwidth(alpha), 1e-4) + 0.5, 0.0, 1.0));
+    out_color = vec4(0.0, 0.0, 0.0, coverage_alpha(alpha, in_alpha_cutoff));
 #else
     if (alpha < in_alpha_cutoff) discard;
 #endif

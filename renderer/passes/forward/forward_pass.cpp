@@ -149,9 +149,6 @@ Attachments make_attachments(const ForwardTargets& targets, bool velocity) {
     return attachments;
 }
 
-// Single-pass stereo draws both layers of the targets: every draw covers both views with
-// multiview; otherwise the geometry shader picks the layer of each triangle it emits, or the
-// vertex shader that of each instance.
 // forward_shading.glsl's alpha constants: kAlphaMode (constant_id 1), kAlphaToCoverage (2).
 struct AlphaSpecialization {
     std::int32_t mode = 0;  // scenes::AlphaMode
@@ -182,6 +179,9 @@ vk::PipelineColorBlendAttachmentState over_blend() {
             vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA);
 }
 
+// Single-pass stereo draws both layers of the targets: every draw covers both views with
+// multiview; otherwise the geometry shader picks the layer of each triangle it emits, or the
+// vertex shader that of each instance.
 vk::RenderingInfo rendering_info(vk::Extent2D area, StereoDuplication stereo,
                                  const Attachments& attachments) {
     const bool layered =
@@ -245,7 +245,7 @@ void ForwardPass::make_chunk_pipelines() {
     const PipelineShaders routing(ctx_, shaders.show_routing_vertex, shaders.show_routing_geometry,
                                   shaders.show_routing);
     show_routing_pipelines_ = ChunkPipelines::make(ctx_, routing.in(chunks));
-    make_alpha_pipelines(shading.in(chunks), prepass);
+    make_alpha_pipelines(shaders, shading.in(chunks), prepass);
 }
 
 // Masked: the alpha test in the pre-pass and in the shading (alpha to coverage with MSAA).
@@ -265,9 +265,9 @@ void ForwardPass::make_masked_pipelines(const vk_core::GraphicsPipelineDesc& chu
     masked_pipelines_ = ChunkPipelines::make(ctx_, masked);
 }
 
-void ForwardPass::make_alpha_pipelines(const vk_core::GraphicsPipelineDesc& chunks,
+void ForwardPass::make_alpha_pipelines(const ForwardShaders& shaders,
+                                       const vk_core::GraphicsPipelineDesc& chunks,
                                        const vk_core::GraphicsPipelineDesc& prepass) {
-    const ForwardShaders shaders = forward_shaders(config_);
     const bool multisampled = config_.samples != vk::SampleCountFlagBits::e1;
     if (config_.masked_chunks) make_masked_pipelines(chunks, prepass, shaders.masked_depth);
     if (!config_.blended_chunks) return;

@@ -19,6 +19,8 @@
 
 namespace monoplane::passes {
 
+struct ForwardShaders;  // forward_shaders.h
+
 // The multisampled images an MSAA pass draws into; ForwardTargets' hdr and linear depth then
 // receive their resolve (the average of the samples), and its depth image is not written.
 struct MultisampleTargets {
@@ -166,13 +168,14 @@ class ForwardPass {
     void make_chunk_pipelines();
     // The fullscreen pipelines: the sky, and in one-view passes the mask of hidden pixels.
     void make_fullscreen_pipelines();
-    // One step of record, inside the rendering; prepassed: a depth pre-pass came before it.
-    // The pipelines of alphaMode MASK and BLEND chunks.
-    void make_alpha_pipelines(const vk_core::GraphicsPipelineDesc& chunks,
+    // The pipelines of alphaMode MASK and BLEND chunks, from make_chunk_pipelines's.
+    void make_alpha_pipelines(const ForwardShaders& shaders,
+                              const vk_core::GraphicsPipelineDesc& chunks,
                               const vk_core::GraphicsPipelineDesc& prepass);
     void make_masked_pipelines(const vk_core::GraphicsPipelineDesc& chunks,
                                const vk_core::GraphicsPipelineDesc& prepass,
                                std::span<const std::uint32_t> masked_depth_spirv);
+    // One step of record, inside the rendering; prepassed: a depth pre-pass came before it.
     void record_step(const vk::raii::CommandBuffer& cmd, ForwardStep step, bool prepassed,
                      vk::DescriptorSet merged_depth_set, const ChunkDraws& chunks) const;
 

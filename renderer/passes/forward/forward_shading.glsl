@@ -100,9 +100,7 @@ float sun_visibility(vec3 world, vec3 normal) {
 // for alpha to coverage, alpha against the cut-off sharpened to about one pixel's ramp.
 float output_alpha(float alpha) {
     if (kAlphaMode == 2) return alpha;
-    if (kAlphaMode == 1 && kAlphaToCoverage) {
-        return clamp((alpha - in_alpha_cutoff) / max(fwidth(alpha), 1e-4) + 0.5, 0.0, 1.0);
-    }
+    if (kAlphaMode == 1 && kAlphaToCoverage) return coverage_alpha(alpha, in_alpha_cutoff);
     return 1.0;
 }
 

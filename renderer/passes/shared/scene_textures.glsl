@@ -85,4 +85,10 @@ float surface_alpha(float vertex_alpha, uvec4 slot, vec2 uv) {
     if (slot.x == MONOPLANE_NO_TEXTURE) return vertex_alpha;
     return vertex_alpha * base_colour_texture(slot, uv).a;
 }
+
+// Alpha to coverage for alphaMode MASK (MSAA): the alpha against the cut-off, sharpened to a ramp
+// about one pixel wide, so the samples covered change where the alpha test would cut.
+float coverage_alpha(float alpha, float cutoff) {
+    return clamp((alpha - cutoff) / max(fwidth(alpha), 1e-4) + 0.5, 0.0, 1.0);
+}
 #endif
