@@ -17,42 +17,65 @@ struct Entry {
     bool needs_vulkan_enable2;
 };
 
-#define SIMXR_CORE(name)                                            \
-    Entry {                                                         \
-#name, reinterpret_cast < PFN_xrVoidFunction>(&name), false \
+// After the instance is lost (the script's lose_instance_at_s) a call fails as a real
+// runtime's does once its service is gone: XR_ERROR_INSTANCE_LOST. The stale-handle checks of the
+// function itself come after, as the spec lists the loss first among a call's failures.
+template <auto function>
+struct UnlessLost;
+template <class... Args, XrResult(XRAPI_PTR* function)(Args...)>
+struct UnlessLost<function> {
+    static XrResult XRAPI_CALL call(Args... args) {
+        {
+            std::lock_guard lock(runtime_mutex());
+            if (instance_lost()) return XR_ERROR_INSTANCE_LOST;
+        }
+        return function(args...);
     }
-#define SIMXR_VULKAN2(name)                                        \
-    Entry {                                                        \
-#name, reinterpret_cast < PFN_xrVoidFunction>(&name), true \
-    }
+};
+
+template <auto function>
+Entry entry(std::string_view name, bool needs_vulkan_enable2) {
+    return {name, reinterpret_cast<PFN_xrVoidFunction>(&UnlessLost<function>::call),
+            needs_vulkan_enable2};
+}
+
+Entry always_entry(std::string_view name, PFN_xrVoidFunction function) {
+    return {name, function, false};
+}
+
+// SIMXR_CORE: fails once the instance is lost. SIMXR_ALWAYS: what an application still needs
+// then, to hear of the loss (xrPollEvent), word it, and destroy what it holds.
+#define SIMXR_CORE(name) entry<&name>(#name, false)
+#define SIMXR_VULKAN2(name) entry<&name>(#name, true)
+#define SIMXR_ALWAYS(name) always_entry(#name, reinterpret_cast<PFN_xrVoidFunction>(&name))
 
 const Entry kEntries[] = {
-    SIMXR_CORE(xrGetInstanceProcAddr),
-    SIMXR_CORE(xrEnumerateApiLayerProperties),
-    SIMXR_CORE(xrEnumerateInstanceExtensionProperties),
-    SIMXR_CORE(xrCreateInstance),
-    SIMXR_CORE(xrDestroyInstance),
+    SIMXR_ALWAYS(xrGetInstanceProcAddr),
+    SIMXR_ALWAYS(xrEnumerateApiLayerProperties),
+    SIMXR_ALWAYS(xrEnumerateInstanceExtensionProperties),
+    SIMXR_ALWAYS(xrCreateInstance),
+    SIMXR_ALWAYS(xrDestroyInstance),
     SIMXR_CORE(xrGetInstanceProperties),
-    SIMXR_CORE(xrPollEvent),
-    SIMXR_CORE(xrResultToString),
-    SIMXR_CORE(xrStructureTypeToString),
+    SIMXR_ALWAYS(xrPollEvent),
+    SIMXR_ALWAYS(xrResultToString),
+    SIMXR_ALWAYS(xrStructureTypeToString),
     SIMXR_CORE(xrGetSystem),
     SIMXR_CORE(xrGetSystemProperties),
     SIMXR_CORE(xrEnumerateEnvironmentBlendModes),
     SIMXR_CORE(xrCreateSession),
-    SIMXR_CORE(xrDestroySession),
+    SIMXR_ALWAYS(xrDestroySession),
     SIMXR_CORE(xrEnumerateReferenceSpaces),
     SIMXR_CORE(xrCreateReferenceSpace),
     SIMXR_CORE(xrGetReferenceSpaceBoundsRect),
     SIMXR_CORE(xrCreateActionSpace),
     SIMXR_CORE(xrLocateSpace),
-    SIMXR_CORE(xrDestroySpace),
+    SIMXR_ALWAYS(xrDestroySpace),
     SIMXR_CORE(xrEnumerateViewConfigurations),
     SIMXR_CORE(xrGetViewConfigurationProperties),
     SIMXR_CORE(xrEnumerateViewConfigurationViews),
     SIMXR_CORE(xrEnumerateSwapchainFormats),
     SIMXR_CORE(xrCreateSwapchain),
-    SIMXR_CORE(xrDestroySwapchain),
+    SIMXR_ALWAYS(xrDestroySwapchain),
     SIMXR_CORE(xrEnumerateSwapchainImages),
     SIMXR_CORE(xrAcquireSwapchainImage),
     SIMXR_CORE(xrWaitSwapchainImage),
@@ -67,9 +90,9 @@ const Entry kEntries[] = {
     SIMXR_CORE(xrStringToPath),
     SIMXR_CORE(xrPathToString),
     SIMXR_CORE(xrCreateActionSet),
-    SIMXR_CORE(xrDestroyActionSet),
+    SIMXR_ALWAYS(xrDestroyActionSet),
     SIMXR_CORE(xrCreateAction),
-    SIMXR_CORE(xrDestroyAction),
+    SIMXR_ALWAYS(xrDestroyAction),
     SIMXR_CORE(xrSuggestInteractionProfileBindings),
     SIMXR_CORE(xrAttachSessionActionSets),
     SIMXR_CORE(xrGetCurrentInteractionProfile),
@@ -89,6 +112,7 @@ const Entry kEntries[] = {
 };
 
 #undef SIMXR_CORE
+#undef SIMXR_ALWAYS
 #undef SIMXR_VULKAN2
 
 // spec (xrGetInstanceProcAddr): with XR_NULL_HANDLE only these may be queried.

@@ -27,6 +27,21 @@ void queue_state_change(Session& session, XrSessionState state, XrTime time) {
     session.queued_state = state;
 }
 
+void lose_instance(Instance& instance, XrTime time) {
+    auto event =
+        xr_struct<XrEventDataInstanceLossPending>(XR_TYPE_EVENT_DATA_INSTANCE_LOSS_PENDING);
+    // Spec: the instance is lost at lossTime; simxr loses it at once, as a runtime whose
+    // service died, so the application meets the loss either in this event or in a failed call.
+    event.lossTime = time;
+    queue_event(instance, &event, sizeof(event), nullptr);
+    instance.lost = true;
+}
+
+bool instance_lost() {
+    return std::ranges::any_of(live_objects<Instance>(),
+                               [](const auto& entry) { return entry.second->lost; });
+}
+
 void drop_events_of(Instance& instance, const Session* session) {
     std::erase_if(instance.events,
                   [session](const QueuedEvent& event) { return event.session == session; });
@@ -37,7 +52,10 @@ XrResult XRAPI_CALL xrPollEvent(XrInstance handle, XrEventDataBuffer* buffer) {
     Instance* instance = lookup<Instance>(handle);
     if (instance == nullptr) return XR_ERROR_HANDLE_INVALID;
     if (!has_type(buffer, XR_TYPE_EVENT_DATA_BUFFER)) return XR_ERROR_VALIDATION_FAILURE;
-    if (instance->events.empty()) return XR_EVENT_UNAVAILABLE;
+    // A lost instance still delivers what was queued (its loss-pending event among it), then
+    // says it is lost.
+    if (instance->events.empty())
+        return instance->lost ? XR_ERROR_INSTANCE_LOST : XR_EVENT_UNAVAILABLE;
     const QueuedEvent event = instance->events.front();
     instance->events.pop_front();
     if (event.state && event.session != nullptr) event.session->state = *event.state;

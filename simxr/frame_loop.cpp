@@ -1,6 +1,7 @@
 // The frame loop on a virtual clock (docs/simxr.md): xrWaitFrame never sleeps; the n-th call of
 // a session (n from 0) predicts display time base + n * period. Script events (exit_after_s,
-// lose_session_at_s) fire at the first xrWaitFrame whose predicted time reaches them.
+// lose_session_at_s, lose_instance_at_s) fire at the first xrWaitFrame whose predicted time
+// reaches them.
 #include <cmath>
 #include <cstdio>
 
@@ -26,6 +27,9 @@ void fire_script_events(Session& session, XrTime time) {
     if (!session.loss_pending && reached(session, time, script.lose_session_at_s)) {
         session.loss_pending = true;
         queue_state_change(session, XR_SESSION_STATE_LOSS_PENDING, time);
+    }
+    if (!session.instance->lost && reached(session, time, script.lose_instance_at_s)) {
+        lose_instance(*session.instance, time);
     }
 }
 

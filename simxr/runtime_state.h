@@ -56,6 +56,9 @@ struct Instance {
     VkInstance vk_instance = VK_NULL_HANDLE;                  // from xrGetVulkanGraphicsDevice2KHR
     VkPhysicalDevice named_physical_device = VK_NULL_HANDLE;  // what that call returned
     Session* session = nullptr;                               // simxr allows one session at a time
+    // The script's lose_instance_at_s has come: every call but the destroy functions (and
+    // xrPollEvent while events are queued) returns XR_ERROR_INSTANCE_LOST (dispatch.cpp).
+    bool lost = false;
     std::vector<ActionSet*> action_sets;
     // Suggested bindings per interaction profile path (the latest call for a profile wins).
     std::map<XrPath, std::vector<std::pair<Action*, std::string>>> suggested_bindings;
@@ -191,6 +194,11 @@ void begin_exit(Session& session);
 // Queues a session state change, delivered by xrPollEvent (events.cpp).
 void queue_state_change(Session& session, XrSessionState state, XrTime time);
 void queue_event(Instance& instance, const void* event, std::size_t size, Session* session);
+// The instance is lost from now on (the script's lose_instance_at_s): queues
+// XrEventDataInstanceLossPending with this lossTime and marks it lost.
+void lose_instance(Instance& instance, XrTime time);
+// Whether the live instance (simxr has at most one) is lost. Call with runtime_mutex() held.
+bool instance_lost();
 // Drops queued events that name a session about to be destroyed.
 void drop_events_of(Instance& instance, const Session* session);
 

@@ -54,8 +54,12 @@ struct Script {
     std::string interaction_profile = "/interaction_profiles/khr/simple_controller";
     std::filesystem::path dump_dir;  // empty: no dumps
     std::int64_t dump_every = 1;
-    double exit_after_s = 0.0;        // > 0: runtime-initiated STOPPING at that time
-    double lose_session_at_s = 0.0;   // > 0: LOSS_PENDING at that time
+    double exit_after_s = 0.0;       // > 0: runtime-initiated STOPPING at that time
+    double lose_session_at_s = 0.0;  // > 0: LOSS_PENDING at that time
+    // > 0: the instance is lost at that time, as when a runtime's service dies: an
+    // XrEventDataInstanceLossPending is queued and every later call but the destroy functions
+    // returns XR_ERROR_INSTANCE_LOST.
+    double lose_instance_at_s = 0.0;
     std::vector<PoseKeyframe> poses;  // ascending t; empty: the default keyframe
     HeadMotion head_motion = HeadMotion::kStill;
     std::vector<InputPress> inputs;

@@ -18,10 +18,10 @@
 namespace monoplane::simxr {
 namespace {
 
-constexpr std::array<std::string_view, 12> kTopLevelKeys = {
+constexpr std::array<std::string_view, 13> kTopLevelKeys = {
     "hmd",      "display_rate_hz", "missed_slot_every", "physical_device",   "interaction_profile",
-    "dump_dir", "dump_every",      "exit_after_s",      "lose_session_at_s", "pose",
-    "input",    "head_motion"};
+    "dump_dir", "dump_every",      "exit_after_s",      "lose_session_at_s", "lose_instance_at_s",
+    "pose",     "input",           "head_motion"};
 constexpr std::array<std::string_view, 3> kPoseKeys = {"t", "position", "yaw_pitch_roll_deg"};
 constexpr std::array<std::string_view, 3> kInputKeys = {"t", "path", "duration"};
 // Above this a frame period is shorter than any display and the rate is a typo (kHz for Hz);
@@ -184,7 +184,8 @@ void read_settings(const Reader& root, const std::filesystem::path& folder, Scri
         }
     }
     for (auto [key, field] : {std::pair{"exit_after_s", &Script::exit_after_s},
-                              std::pair{"lose_session_at_s", &Script::lose_session_at_s}}) {
+                              std::pair{"lose_session_at_s", &Script::lose_session_at_s},
+                              std::pair{"lose_instance_at_s", &Script::lose_instance_at_s}}) {
         if (const auto seconds = root.number(key)) {
             if (*seconds < 0.0) {
                 root.problem(key, "must be 0 (never) or a positive time in seconds");

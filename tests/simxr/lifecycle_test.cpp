@@ -99,6 +99,55 @@ TEST_F(SimxrTest, LoseSessionAtMakesTheSessionLost) {
     EXPECT_EQ(xrWaitFrame(session_, nullptr, &state), XR_ERROR_SESSION_LOST);
 }
 
+// lose_instance_at_s: the instance is lost as a runtime's is when its service dies. The wait
+// that reaches the time still succeeds; from then every call fails with XR_ERROR_INSTANCE_LOST,
+// xrPollEvent first delivers the loss-pending event, and what the application holds can still
+// be destroyed (TearDown destroys the session and the instance and expects success).
+TEST_F(SimxrTest, LoseInstanceAtMakesEveryCallFailButTheDestroyFunctions) {
+    start("display_rate_hz = 100\nlose_instance_at_s = 0.05\n");
+    begin_and_focus();  // frame 0
+    XrTime lost_frame_time = 0;
+    int lost_frame = -1;
+    for (int frame = 1; frame < 20 && lost_frame < 0; ++frame) {
+        auto state = xr_struct<XrFrameState>(XR_TYPE_FRAME_STATE);
+        ASSERT_EQ(xrWaitFrame(session_, nullptr, &state), XR_SUCCESS) << "frame " << frame;
+        const XrResult begun = xrBeginFrame(session_, nullptr);
+        if (begun == XR_ERROR_INSTANCE_LOST) {
+            lost_frame = frame;
+            lost_frame_time = state.predictedDisplayTime;
+            break;
+        }
+        ASSERT_EQ(begun, XR_SUCCESS);
+        auto end = xr_struct<XrFrameEndInfo>(XR_TYPE_FRAME_END_INFO);
+        end.displayTime = state.predictedDisplayTime;
+        end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
+        ASSERT_EQ(xrEndFrame(session_, &end), XR_SUCCESS);
+    }
+    // Frame 5 is the first whose predicted time (0.05 s after frame 0) reaches the loss.
+    EXPECT_EQ(lost_frame, 5);
+
+    auto event = xr_struct<XrEventDataBuffer>(XR_TYPE_EVENT_DATA_BUFFER);
+    ASSERT_EQ(xrPollEvent(instance_, &event), XR_SUCCESS);
+    ASSERT_EQ(event.type, XR_TYPE_EVENT_DATA_INSTANCE_LOSS_PENDING);
+    EXPECT_EQ(reinterpret_cast<const XrEventDataInstanceLossPending&>(event).lossTime,
+              lost_frame_time);
+    event = xr_struct<XrEventDataBuffer>(XR_TYPE_EVENT_DATA_BUFFER);
+    EXPECT_EQ(xrPollEvent(instance_, &event), XR_ERROR_INSTANCE_LOST);
+
+    auto state = xr_struct<XrFrameState>(XR_TYPE_FRAME_STATE);
+    EXPECT_EQ(xrWaitFrame(session_, nullptr, &state), XR_ERROR_INSTANCE_LOST);
+    EXPECT_EQ(xrRequestExitSession(session_), XR_ERROR_INSTANCE_LOST);
+    EXPECT_EQ(xrEndSession(session_), XR_ERROR_INSTANCE_LOST);
+    XrSystemId system = XR_NULL_SYSTEM_ID;
+    auto system_info = xr_struct<XrSystemGetInfo>(XR_TYPE_SYSTEM_GET_INFO);
+    system_info.formFactor = XR_FORM_FACTOR_HEAD_MOUNTED_DISPLAY;
+    EXPECT_EQ(xrGetSystem(instance_, &system_info, &system), XR_ERROR_INSTANCE_LOST);
+    // A loss is worded like any result.
+    char text[XR_MAX_RESULT_STRING_SIZE] = {};
+    ASSERT_EQ(xrResultToString(instance_, XR_ERROR_INSTANCE_LOST, text), XR_SUCCESS);
+    EXPECT_STREQ(text, "XR_ERROR_INSTANCE_LOST");
+}
+
 TEST_F(SimxrTest, ReportsItsSystemAndViews) {
     start("hmd = \"vive\"\n");
     auto properties = xr_struct<XrSystemProperties>(XR_TYPE_SYSTEM_PROPERTIES);

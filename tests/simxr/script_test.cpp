@@ -39,6 +39,7 @@ TEST(SimxrScript, EmptyScriptKeepsEveryDefault) {
     EXPECT_EQ(script.missed_slot_every, 0);
     EXPECT_EQ(script.exit_after_s, 0.0);
     EXPECT_EQ(script.lose_session_at_s, 0.0);
+    EXPECT_EQ(script.lose_instance_at_s, 0.0);
     EXPECT_TRUE(script.poses.empty());
     EXPECT_TRUE(script.inputs.empty());
     EXPECT_EQ(script.frame_period_ns(), 11'111'111);
@@ -55,6 +56,7 @@ dump_every = 5
 missed_slot_every = 4
 exit_after_s = 3.5
 lose_session_at_s = 7
+lose_instance_at_s = 8.5
 [[pose]]
 t = 0.0
 position = [0.0, 1.7, 0.5]
@@ -74,6 +76,7 @@ duration = 0.25
     EXPECT_EQ(script.missed_slot_every, 4);
     EXPECT_EQ(script.exit_after_s, 3.5);
     EXPECT_EQ(script.lose_session_at_s, 7.0);
+    EXPECT_EQ(script.lose_instance_at_s, 8.5);
     ASSERT_EQ(script.poses.size(), 1u);
     EXPECT_EQ(script.poses[0].position, glm::dvec3(0.0, 1.7, 0.5));
     EXPECT_EQ(script.poses[0].yaw_pitch_roll_deg, glm::dvec3(10.0, 0.0, 0.0));
@@ -141,6 +144,7 @@ path = "/user/hand/right/input/trigger/click"
 TEST(SimxrScript, RefusesBadRangesAndOrder) {
     EXPECT_NE(parse_error("display_rate_hz = 0").find("display_rate_hz"), std::string::npos);
     EXPECT_NE(parse_error("exit_after_s = -1").find("exit_after_s"), std::string::npos);
+    EXPECT_NE(parse_error("lose_instance_at_s = -1").find("lose_instance_at_s"), std::string::npos);
     // Found by the fuzzer (tests/fuzz): 1e9 / rate ns and times in ns must fit the int64 clock.
     EXPECT_NE(parse_error("display_rate_hz = 5e-324").find("display_rate_hz"), std::string::npos);
     EXPECT_NE(parse_error("exit_after_s = 1e300").find("exit_after_s"), std::string::npos);
