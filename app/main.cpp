@@ -1,10 +1,12 @@
 // monoplane: hybrid mono-stereo rendering for VR perception studies (see README.md).
-// Exceptions end here: a user error prints its message and exits 1.
+// Exceptions end here: a user error prints its message and exits 1; a session whose OpenXR
+// runtime was lost (app/commands/runtime_lost.h) prints its one message and exits 3.
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands/commands.h"
+#include "app/commands/runtime_lost.h"
 #include "common/result.h"
 #include "renderer/vk/vulkan.h"
 
@@ -35,6 +37,9 @@ int main(int argc, char** argv) {
         root.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return root.exit(e);
+    } catch (const RuntimeLost& e) {
+        std::cerr << "monoplane: " << e.what() << "\n";
+        return kExitRuntimeLost;
     } catch (const monoplane::UserError& e) {
         std::cerr << "monoplane: " << e.what() << "\n";
         return 1;

@@ -13,6 +13,7 @@
 
 #include "app/commands/validation_report.h"
 #include "app/headset/eye_compositor.h"
+#include "app/headset/headset_device.h"
 #include "app/headset/openxr_headset.h"
 #include "app/headset/overlay_text.h"
 #include "renderer/vk/context.h"
@@ -295,49 +296,31 @@ class CheckLoop {
     Clock::time_point exit_deadline_;
 };
 
-// Ends the session before the Vulkan device goes, on every way out (an exception included):
-// the runtime's swapchains live on that device.
-class SessionGuard {
-  public:
-    SessionGuard(headset::OpenXrHeadset& headset, const vk_core::Context& ctx)
-        : headset_(headset), ctx_(ctx) {}
-    ~SessionGuard() {
-        try {
-            ctx_.device().waitIdle();
-        } catch (const std::exception&) {
-            // A lost device has nothing left to wait for.
-        }
-        headset_.destroy_session();
+// The check on a created headset: its Vulkan device, session and frame loop. The device owns
+// the headset, so OpenXR goes before Vulkan on every way out (headset_device.h).
+Result<HeadsetCheck> check_on(std::unique_ptr<headset::OpenXrHeadset> created,
+                              const HeadsetCheckOptions& options) {
+    Result<headset::HeadsetDevice> opened =
+        headset::HeadsetDevice::create(std::move(created), options.global.context_options());
+    MONOPLANE_TRY(opened);
+    const headset::HeadsetDevice& device = *opened;
+    headset::OpenXrHeadset& headset = device.headset();
+    const vk_core::Context& ctx = device.vulkan();
+    if (Result<void> session = headset.create_session(ctx, options.headset.resolution_scale);
+        !session) {
+        return Error{"the headset check could not start a session: " + session.error().message};
     }
-    SessionGuard(const SessionGuard&) = delete;
-    SessionGuard& operator=(const SessionGuard&) = delete;
-
-  private:
-    headset::OpenXrHeadset& headset_;
-    const vk_core::Context& ctx_;
-};
-
-// The check on a created headset: its Vulkan device, session and frame loop.
-Result<HeadsetCheck> check_on(headset::OpenXrHeadset& headset, const HeadsetCheckOptions& options) {
-    vk_core::ContextOptions context_options = options.global.context_options();
-    context_options.hooks = headset.vulkan_hooks();
-    Result<std::unique_ptr<vk_core::Context>> created = vk_core::Context::create(context_options);
-    MONOPLANE_TRY(created);
-    const vk_core::Context& ctx = *created.value();
     HeadsetCheck result;
     {
-        SessionGuard guard(headset, ctx);
-        if (Result<void> session = headset.create_session(ctx, options.headset.resolution_scale);
-            !session) {
-            return Error{"the headset check could not start a session: " + session.error().message};
-        }
         CheckLoop loop(options, headset, ctx);
         result = loop.run();
-        result.width = static_cast<int>(headset.eye_extent().width);
-        result.height = static_cast<int>(headset.eye_extent().height);
     }
+    result.width = static_cast<int>(headset.eye_extent().width);
+    result.height = static_cast<int>(headset.eye_extent().height);
     result.runtime = headset.runtime_name();
     result.system = headset.system_name();
+    // Here rather than in the destructor: what the validation layers say of it counts below.
+    headset.destroy_session();
     try {
         fail_on_validation_messages(ctx, headset.validation_messages(), options.global);
     } catch (const UserError& e) {
@@ -384,7 +367,7 @@ Result<HeadsetCheck> run_headset_check(const HeadsetCheckOptions& options) {
             headset::OpenXrHeadset::create(options.global.validation, false);
         choice.instance_created();
         MONOPLANE_TRY(created);
-        return check_on(*created.value(), options);
+        return check_on(std::move(created).value(), options);
     } catch (const std::exception& e) {
         // A Vulkan failure (a lost device) or a bad simulated script: a message, not a crash.
         return Error{std::string("the headset check failed: ") + e.what()};

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/commands/commands.h"
+#include "app/commands/runtime_lost.h"
 #include "app/commands/study_options.h"
 
 namespace monoplane::app {
@@ -99,6 +100,7 @@ void add_run_command(CLI::App* study, const std::shared_ptr<StudyOptions>& optio
     run->add_option("--pace-ms", options->pace_ms, "Sleep per logged event (tests)");
     run->add_flag("--trace", options->trace, "Print each durable write on stdout");
     add_headset_options(run, *options);
+    run->footer(kSessionExitStatusHelp);
     run->callback([options, &global] { run_study(*options, global); });
 }
 
@@ -121,6 +123,7 @@ void add_resume_command(CLI::App* study, const std::shared_ptr<StudyOptions>& op
                      "Resume although scene files (glTF) changed since the session began; "
                      "refused without it. The session's notes record each changed file");
     add_headset_options(resume, *options);
+    resume->footer(kSessionExitStatusHelp);
     resume->callback([options, &global] { resume_study(*options, global); });
 }
 

@@ -11,6 +11,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/commands/headset_frame_log.h"
+#include "app/commands/runtime_lost.h"
 #include "app/commands/screen_pages.h"
 #include "app/commands/study_renderers.h"
 #include "app/commands/validation_report.h"
@@ -18,6 +19,7 @@
 #include "app/headset/eye_compositor.h"
 #include "app/headset/eye_depth_writer.h"
 #include "app/headset/frame_times.h"
+#include "app/headset/headset_device.h"
 #include "app/headset/openxr_headset.h"
 #include "app/headset/overlay_text.h"
 #include "app/window/experimenter_window.h"
@@ -157,6 +159,7 @@ class HeadsetLoop {
         : options_(options),
           protocol_(protocol),
           info_(store.session(session_id).value_or_throw()),
+          db_(store.path()),
           headset_(headset),
           ctx_(ctx),
           experimenter_(experimenter),
@@ -167,10 +170,6 @@ class HeadsetLoop {
           frame_log_(store, session_id),
           pages_(headset::TextPanelOptions{protocol.day.text_height_deg}),
           window_answers_(protocol.questionnaire.items.size(), 0) {
-        // A resumed session's frames continue its numbering after every frame an earlier run
-        // logged or an event names: the frame log's rows (primary key session, frame) and the
-        // events' frame numbers stay those of the run that showed them.
-        frame_base_ = store.next_frame_number(session_id).value_or_throw();
         headset::TextStyle label_style;
         label_style.scale = 2;
         label_style.padding = 2;
@@ -188,24 +187,22 @@ class HeadsetLoop {
         if (observer) observer_input_.emplace(*observer, protocol, trial_error_px);
     }
 
-    // Frames until the runtime ends the session (after the study, or when the window closes).
+    // Frames until the runtime ends the session (after the study, or when the window closes) or
+    // is lost; then the frame log and the summaries.
     void run() {
-        for (;;) {
-            if (!headset_.poll_events().value_or_throw()) break;
-            // A runtime that stops showing frames ends the end screen's hold too.
-            if (live_->finished() && (end_screen_seen() || !headset_.running())) request_exit();
-            if (!headset_.running()) {
-                // Waiting for the runtime (READY, or EXITING after the end): nothing to render.
-                if (experimenter_) experimenter_->frame({});
-                std::this_thread::sleep_for(std::chrono::milliseconds(5));
-                continue;
-            }
-            frame();
+        while (turn()) {
         }
+        if (headset_.lost()) show_loss();
         finish();
     }
 
     bool finished() const { return live_->finished(); }
+
+    // The one message of a lost runtime (runtime_lost.h): where the session stood. After run().
+    std::string loss_message() const {
+        return runtime_lost_message(live_->screen(), live_->progress(), info_, db_,
+                                    options_.headset);
+    }
 
     // The protocol's end screen stays up for --end-s of display time (or until the experimenter
     // closes the window), so the participant reads it; an aborted session or one without an end
@@ -219,6 +216,48 @@ class HeadsetLoop {
   private:
     using Clock = std::chrono::steady_clock;
 
+    // One turn: the runtime's events, then a frame while the session runs. False once the
+    // session is over: the runtime ended it, or lost it.
+    bool turn() {
+        const std::optional<bool> alive = unless_lost(headset_.poll_events());
+        if (!alive || !*alive) return false;
+        // A runtime that stops showing frames ends the end screen's hold too.
+        if (live_->finished() && (end_screen_seen() || !headset_.running())) request_exit();
+        if (!headset_.running()) {
+            // Waiting for the runtime (READY, or EXITING after the end): nothing to render.
+            if (experimenter_) experimenter_->frame({});
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            return !headset_.lost();
+        }
+        frame();
+        return !headset_.lost();
+    }
+
+    // An OpenXR call's value, or none once the runtime is lost: the session then ends as an
+    // interruption (loss_message), not as an error. Any other failure goes to main().
+    template <class T>
+    std::optional<T> unless_lost(Result<T> result) const {
+        if (result) return std::move(result).value();
+        if (!headset_.lost()) throw UserError(result.error());
+        return std::nullopt;
+    }
+    bool unless_lost(const Result<void>& result) const {
+        if (result) return true;
+        if (!headset_.lost()) throw UserError(result.error());
+        return false;
+    }
+
+    // The loss in the experimenter window as on stderr: its status line and log tail, one last
+    // frame (the one --screenshot saves).
+    void show_loss() {
+        const std::string message = loss_message();
+        log_tail_.push_back(message);
+        if (!experimenter_ || !last_frame_) return;
+        window::ExperimenterView view = window_view(*last_frame_, live_->screen(), last_frame_ns_);
+        view.status_line = message;
+        window_commands_ = experimenter_->frame(view);
+    }
+
     // What one frame rendered: the scene's renderer (or none) and what it returned.
     struct Rendered {
         bool shown = false;
@@ -229,9 +268,15 @@ class HeadsetLoop {
     void frame() {
         frame_start_ = Clock::now();
         step_start_ = frame_start_;
-        headset::HeadsetFrame frame = headset_.begin_frame().value_or_throw();
-        frame.index += frame_base_;  // the session's frame number, continued over resumes
-        const std::int64_t now = frame.display_time_ns;
+        std::optional<headset::HeadsetFrame> begun = unless_lost(headset_.begin_frame());
+        if (!begun) return;
+        headset::HeadsetFrame& frame = *begun;
+        if (live_->run().run == 0) begin_run(frame);
+        // The session's frame number and time: this run's frames after every frame an earlier
+        // run used, its clock after every earlier time (the runtime's may have started again).
+        frame.index += live_->run().first_frame;
+        last_frame_ = frame;
+        const std::int64_t now = live_->session_time(frame.display_time_ns);
         if (first_frame_ns_ < 0) first_frame_ns_ = now;
         last_frame_ns_ = now;
         if (end_shown_ns_ < 0 && live_->screen().kind == ScreenKind::End) end_shown_ns_ = now;
@@ -248,13 +293,16 @@ class HeadsetLoop {
         // Every frame the eyes' depth was written in carries it (an encoding for all of them).
         std::optional<headset::DepthEncoding> depth;
         if (depth_writer_) depth = headset::DepthEncoding{protocol_.near};
-        headset_.end_frame(frame, depth).value_or_throw();
+        // A frame the runtime did not take was never seen: it is not logged.
+        if (headset_.lost() || !unless_lost(headset_.end_frame(frame, depth))) return;
         charge(headset::FrameStep::kOpenXrEnd);
         // What the participant sees changes only with a frame that was shown.
         if (rendered.shown) {
             const double cpu_ms =
                 std::chrono::duration<double, std::milli>(Clock::now() - frame_start_).count();
-            frame_log_.displayed(frame, screen, tracked, cpu_ms, rendered.renderer);
+            headset::HeadsetFrame logged = frame;
+            logged.display_time_ns = now;  // the runtime's own time goes to xrEndFrame only
+            frame_log_.displayed(logged, screen, tracked, cpu_ms, rendered.renderer);
             // After displayed(): a renderer that waited may return this very frame's time.
             frame_log_.completed(rendered.renderer, rendered.completed);
             live_->frame_presented(frame.index, now).value_or_throw();
@@ -265,20 +313,27 @@ class HeadsetLoop {
         times_.end_frame(rendered.renderer != nullptr);
     }
 
+    // This process's run of the session begins with the runtime's first frame, one display period
+    // after the run's clock starts (study/session_runs.h).
+    void begin_run(const headset::HeadsetFrame& first) {
+        live_
+            ->begin_run({.runtime = headset_.runtime_name(),
+                         .clock_start_ns = first.display_time_ns - first.display_period_ns})
+            .value_or_throw();
+    }
+
     // The controller, then the experimenter's window, then a simulated observer.
     void handle_inputs(std::int64_t now) {
+        // A lost runtime has no presses; the frame then ends at its next OpenXR call.
         const std::vector<headset::ControlPress> presses =
-            headset_.sync_controls().value_or_throw();
+            unless_lost(headset_.sync_controls()).value_or(std::vector<headset::ControlPress>{});
         charge(headset::FrameStep::kOpenXrBegin);
         for (const headset::ControlPress& press : presses) {
-            if (press.control == headset::Control::Switch)
-                request(LiveInput::Switch, press.time_ns);
-            if (press.control == headset::Control::Confirm) {
-                request(LiveInput::Confirm, press.time_ns);
-            }
+            const std::int64_t pressed = live_->session_time(press.time_ns);
+            if (press.control == headset::Control::Switch) request(LiveInput::Switch, pressed);
+            if (press.control == headset::Control::Confirm) request(LiveInput::Confirm, pressed);
             if (press.control == headset::Control::Pause) {
-                request(live_->screen().paused ? LiveInput::Resume : LiveInput::Pause,
-                        press.time_ns);
+                request(live_->screen().paused ? LiveInput::Resume : LiveInput::Pause, pressed);
             }
         }
         for (const window::Command& c : window_commands_) window_command(c, now);
@@ -343,10 +398,15 @@ class HeadsetLoop {
     Rendered render(const headset::HeadsetFrame& frame, const LocatedHead& located,
                     const study::LiveScreen& screen, const rig::Pose& head) {
         std::array<vk::Image, 2> targets;
-        for (int e = 0; e < 2; ++e) targets[e] = headset_.acquire_eye_image(e).value_or_throw();
         std::array<vk::Image, 2> depth_targets;
-        for (int e = 0; e < 2 && depth_writer_; ++e) {
-            depth_targets[e] = headset_.acquire_eye_depth_image(e).value_or_throw();
+        for (int e = 0; e < 2; ++e) {
+            const std::optional<vk::Image> image = unless_lost(headset_.acquire_eye_image(e));
+            std::optional<vk::Image> depth_image = vk::Image{};
+            if (image && depth_writer_)
+                depth_image = unless_lost(headset_.acquire_eye_depth_image(e));
+            if (!image || !depth_image) return Rendered{};  // lost: nothing is drawn or shown
+            targets[e] = *image;
+            depth_targets[e] = *depth_image;
         }
         charge(headset::FrameStep::kOpenXrBegin);
         Rendered rendered;
@@ -530,7 +590,7 @@ class HeadsetLoop {
 
     void request_exit() {
         if (exit_requested_) return;
-        headset_.request_exit().value_or_throw();
+        if (!unless_lost(headset_.request_exit())) return;  // lost: the session is over anyway
         exit_requested_ = true;
     }
 
@@ -553,6 +613,7 @@ class HeadsetLoop {
     const HeadsetStudyOptions& options_;
     const study::Protocol& protocol_;
     study::SessionInfo info_;
+    std::filesystem::path db_;  // the study database, for the resume line of a lost runtime
     headset::OpenXrHeadset& headset_;
     const vk_core::Context& ctx_;
     window::ExperimenterWindow* experimenter_;
@@ -572,10 +633,10 @@ class HeadsetLoop {
     Clock::time_point frame_start_;
     Clock::time_point step_start_;
     SeatAnchor anchor_;
+    std::optional<headset::HeadsetFrame> last_frame_;  // the latest begun, for the window
     std::int64_t first_frame_ns_ = -1;
     std::int64_t last_frame_ns_ = -1;
     std::int64_t end_shown_ns_ = -1;  // the first frame that showed the end screen
-    std::int64_t frame_base_ = 0;     // the runtime's frame n is the session's frame_base_ + n
     int last_reported_trial_ = -1;
     bool exit_requested_ = false;
     // The experimenter window's state.
@@ -602,13 +663,10 @@ bool want_window(const HeadsetStudyOptions& options, vk_core::ContextOptions& co
     return true;
 }
 
-}  // namespace
-
-study::SessionStatus run_headset_session(
-    const HeadsetStudyOptions& options, const GlobalOptions& global, study::StudyStore& store,
-    const study::Protocol& protocol, ImportedStudyScenes imported, study::Observer* observer,
-    const std::function<double(const study::ScheduledTrial&)>& trial_error_px,
-    const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
+// The runtime `options.headset` names (simxr, written a script, for simulated) with the Vulkan
+// device it makes from `context_options`.
+headset::HeadsetDevice open_headset(const HeadsetStudyOptions& options, const GlobalOptions& global,
+                                    const vk_core::ContextOptions& context_options) {
     std::optional<fs::path> written_script;
     if (options.headset == "simulated") written_script = select_simulated_runtime(options);
     auto created = headset::OpenXrHeadset::create(global.validation, options.layer_depth != "off");
@@ -617,43 +675,60 @@ study::SessionStatus run_headset_session(
         std::error_code ignored;
         fs::remove(*written_script, ignored);
     }
-    auto headset = std::move(created).value_or_throw();
-    std::cerr << "OpenXR runtime: " << headset->runtime_name() << ", system "
-              << headset->system_name() << "\n";
+    std::unique_ptr<headset::OpenXrHeadset> openxr = std::move(created).value_or_throw();
+    std::cerr << "OpenXR runtime: " << openxr->runtime_name() << ", system "
+              << openxr->system_name() << "\n";
+    return headset::HeadsetDevice::create(std::move(openxr), context_options).value_or_throw();
+}
+
+}  // namespace
+
+study::SessionStatus run_headset_session(
+    const HeadsetStudyOptions& options, const GlobalOptions& global, study::StudyStore& store,
+    const study::Protocol& protocol, ImportedStudyScenes imported, study::Observer* observer,
+    const std::function<double(const study::ScheduledTrial&)>& trial_error_px,
+    const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
     vk_core::ContextOptions context_options = global.context_options();
-    context_options.hooks = headset->vulkan_hooks();
     const bool window = want_window(options, context_options);
-    auto ctx = vk_core::Context::create(context_options).value_or_throw();
-    std::cerr << "device: " << ctx->device_info().name << "\n";
-    headset->create_session(*ctx, options.resolution_scale).value_or_throw();
-    const vk::Extent2D extent = headset->eye_extent();
+    // OpenXR goes before Vulkan on every way out (headset_device.h); what renders is declared
+    // after the device, so it goes before both.
+    const headset::HeadsetDevice device = open_headset(options, global, context_options);
+    headset::OpenXrHeadset& headset = device.headset();
+    const vk_core::Context& ctx = device.vulkan();
+    std::cerr << "device: " << ctx.device_info().name << "\n";
+    headset.create_session(ctx, options.resolution_scale).value_or_throw();
+    const vk::Extent2D extent = headset.eye_extent();
     std::cerr << "eye swapchains: " << extent.width << " x " << extent.height << "\n";
     std::unique_ptr<window::ExperimenterWindow> experimenter;
-    if (window)
-        experimenter = window::ExperimenterWindow::create(*ctx, {}, extent).value_or_throw();
+    if (window) experimenter = window::ExperimenterWindow::create(ctx, {}, extent).value_or_throw();
 
-    const std::int64_t session_id = begin(headset->runtime_name(), ctx->device_info().name);
+    const std::int64_t session_id = begin(headset.runtime_name(), ctx.device_info().name);
     // Sessions of schema version 1 recorded no detail: they rendered at the default, low.
     study::RenderSettings render = store.session(session_id).value_or_throw().render;
     if (render.detail.empty()) render.detail = "low";
-    StudyRenderers renderers(*ctx, protocol, extent, render, std::move(imported));
+    StudyRenderers renderers(ctx, protocol, extent, render, std::move(imported));
     bool finished = false;
+    std::string loss;  // the lost runtime's message; empty if it was not lost
     {
-        HeadsetLoop loop(options, protocol, store, session_id, *headset, *ctx, experimenter.get(),
+        HeadsetLoop loop(options, protocol, store, session_id, headset, ctx, experimenter.get(),
                          renderers, observer, trial_error_px);
         loop.run();
         finished = loop.finished();
-        ctx->device().waitIdle();
+        if (headset.lost()) loss = loop.loss_message();
+        ctx.device().waitIdle();
     }
     experimenter.reset();
-    headset->destroy_session();
-    fail_on_validation_messages(*ctx, headset->validation_messages(), global);
+    // Here rather than in the destructor: what the validation layers say of it counts below.
+    headset.destroy_session();
+    fail_on_validation_messages(ctx, headset.validation_messages(), global);
     const study::SessionInfo end = store.session(session_id).value_or_throw();
+    // A runtime lost after the session completed took nothing from it.
+    if (!finished && !loss.empty()) throw RuntimeLost(loss);
     if (!finished) {
         // Not an error of the study's data (everything decided is stored), but the session did
         // not finish: the exit status says so, for scripts that run sessions.
         throw UserError("the OpenXR session ended (" +
-                        std::string(headset::session_phase_name(headset->phase())) +
+                        std::string(headset::session_phase_name(headset.phase())) +
                         ") before the study did; `monoplane study resume --db ...` continues at "
                         "the first undecided trial");
     }

@@ -34,6 +34,12 @@ Error xr_error(XrInstance instance, const char* call, XrResult result) {
     return Error{std::string(call) + " failed: " + result_text(instance, result)};
 }
 
+// The runtime is gone for this session: the instance or the session was lost (Monado's client
+// answers XR_ERROR_INSTANCE_LOST to every call once its service's IPC connection broke).
+bool is_loss(XrResult result) {
+    return result == XR_ERROR_INSTANCE_LOST || result == XR_ERROR_SESSION_LOST;
+}
+
 rig::Pose to_pose(const XrPosef& p) {
     rig::Pose pose;
     pose.position = {p.position.x, p.position.y, p.position.z};
@@ -158,6 +164,10 @@ struct OpenXrHeadset::Impl {
     XrValidation validation;
     XrSystemId system = XR_NULL_SYSTEM_ID;
     XrSession session = XR_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;  // the session's: its swapchain images live there
+    // The runtime lost the instance or the session (OpenXrHeadset::lost). Mutable: any call,
+    // const ones included, may be the one that hears it.
+    mutable bool lost = false;
     XrSpace local = XR_NULL_HANDLE;
     XrActionSet action_set = XR_NULL_HANDLE;
     std::array<XrAction, 3> actions{};  // indexed by Control
@@ -181,8 +191,9 @@ struct OpenXrHeadset::Impl {
     PFN_xrCreateVulkanDeviceKHR create_vk_device = nullptr;
 
     Result<void> check(const char* call, XrResult result) const {
-        if (XR_FAILED(result)) return xr_error(instance, call, result);
-        return Ok{};
+        if (!XR_FAILED(result)) return Ok{};
+        if (is_loss(result)) lost = true;
+        return xr_error(instance, call, result);
     }
     // xrCreateInstance with these extensions and the validation's layers, then its messenger.
     Result<void> create_instance(const std::vector<const char*>& extensions);
@@ -540,6 +551,7 @@ Result<void> OpenXrHeadset::create_session(const vk_core::Context& ctx, double r
     info.next = &binding;
     info.systemId = x.system;
     MONOPLANE_TRY(x.check("xrCreateSession", xrCreateSession(x.instance, &info, &x.session)));
+    x.device = binding.device;
     phase_ = SessionPhase::Idle;
 
     // LOCAL: the origin where the participant's head was when the session began, so the scene's
@@ -560,9 +572,11 @@ Result<bool> OpenXrHeadset::poll_events() {
         XrEventDataBuffer event{XR_TYPE_EVENT_DATA_BUFFER};
         const XrResult result = xrPollEvent(x.instance, &event);
         if (result == XR_EVENT_UNAVAILABLE) break;
-        if (XR_FAILED(result)) return xr_error(x.instance, "xrPollEvent", result);
+        MONOPLANE_TRY(x.check("xrPollEvent", result));
         if (event.type == XR_TYPE_EVENT_DATA_INSTANCE_LOSS_PENDING) {
             phase_ = SessionPhase::LossPending;
+            x.lost = true;
+            running_ = false;
             return false;
         }
         if (event.type != XR_TYPE_EVENT_DATA_SESSION_STATE_CHANGED) continue;
@@ -578,6 +592,7 @@ Result<bool> OpenXrHeadset::poll_events() {
             running_ = false;
         } else if (changed.state == XR_SESSION_STATE_EXITING ||
                    changed.state == XR_SESSION_STATE_LOSS_PENDING) {
+            x.lost = x.lost || changed.state == XR_SESSION_STATE_LOSS_PENDING;
             running_ = false;
             return false;
         }
@@ -625,7 +640,7 @@ Result<std::vector<ControlPress>> OpenXrHeadset::sync_controls() {
     sync.countActiveActionSets = 1;
     sync.activeActionSets = &active;
     const XrResult result = xrSyncActions(x.session, &sync);
-    if (XR_FAILED(result)) return xr_error(x.instance, "xrSyncActions", result);
+    MONOPLANE_TRY(x.check("xrSyncActions", result));
     std::vector<ControlPress> presses;
     if (result == XR_SESSION_NOT_FOCUSED) return presses;  // input belongs to another app now
     for (std::size_t i = 0; i < x.actions.size(); ++i) {
@@ -754,8 +769,16 @@ Result<void> OpenXrHeadset::request_exit() {
     return x.check("xrRequestExitSession", xrRequestExitSession(x.session));
 }
 
+bool OpenXrHeadset::lost() const {
+    return impl_->lost;
+}
+
 void OpenXrHeadset::destroy_session() {
     Impl& x = *impl_;
+    // The runtime may free a swapchain's images at once: the GPU must be done with them. A lost
+    // device has nothing left to wait for.
+    if (x.device != VK_NULL_HANDLE) static_cast<void>(vkDeviceWaitIdle(x.device));
+    x.device = VK_NULL_HANDLE;
     for (auto* pair : {&x.swapchains, &x.depth_swapchains}) {
         for (Impl::Swapchain& swapchain : *pair) {
             if (swapchain.handle != XR_NULL_HANDLE) xrDestroySwapchain(swapchain.handle);
@@ -765,7 +788,8 @@ void OpenXrHeadset::destroy_session() {
     if (x.local != XR_NULL_HANDLE) xrDestroySpace(x.local);
     x.local = XR_NULL_HANDLE;
     if (x.session != XR_NULL_HANDLE) {
-        if (running_) xrEndSession(x.session);
+        // A lost session cannot be ended, only destroyed (spec: XR_ERROR_SESSION_LOST).
+        if (running_ && !x.lost) xrEndSession(x.session);
         xrDestroySession(x.session);
     }
     x.session = XR_NULL_HANDLE;

@@ -109,6 +109,11 @@ class OpenXrHeadset {
     Result<bool> poll_events();
     SessionPhase phase() const { return phase_; }
     bool running() const { return running_; }  // between xrBeginSession and xrEndSession
+    // Whether the runtime is gone for this session: a call answered XR_ERROR_INSTANCE_LOST or
+    // XR_ERROR_SESSION_LOST (Monado's client answers so when its service died: a broken IPC
+    // connection), or an instance- or session-loss-pending event arrived. From then on every
+    // call may fail: the session can only be destroyed. Any time.
+    bool lost() const;
 
     // xrWaitFrame, xrBeginFrame and xrLocateViews. Only while running().
     Result<HeadsetFrame> begin_frame();
@@ -133,7 +138,10 @@ class OpenXrHeadset {
     Result<std::string> interaction_profile() const;
     // Asks the runtime to end the session (it answers with STOPPING).
     Result<void> request_exit();
-    // Destroys the swapchains and the session; call before the Vulkan device is destroyed.
+    // Ends the session (unless the runtime is lost) and destroys it with its swapchains, after
+    // waiting for the session's Vulkan device to finish with their images. Call while that
+    // device lives (HeadsetDevice, app/headset/headset_device.h, owns both in that order); the
+    // destructor calls it too. Any time; again, nothing happens.
     void destroy_session();
 
   private:
