@@ -6,6 +6,7 @@ namespace monoplane::study {
 
 std::string RosterEntry::state() const {
     if (holder) return "running (" + holder->describe() + ")";
+    if (row.abandoned_reason) return "abandoned (" + *row.abandoned_reason + ")";
     if (row.status == SessionStatus::Running || row.status == SessionStatus::Paused)
         return "interrupted";
     return std::string(session_status_name(row.status));
@@ -14,9 +15,7 @@ std::string RosterEntry::state() const {
 Result<std::vector<RosterEntry>> read_roster(const std::vector<std::filesystem::path>& databases) {
     std::vector<RosterEntry> entries;
     for (const std::filesystem::path& database : databases) {
-        if (!std::filesystem::is_regular_file(database))
-            return Error{"no study database '" + database.string() + "'"};
-        Result<std::unique_ptr<StudyStore>> store = StudyStore::open(database);
+        Result<std::unique_ptr<StudyStore>> store = StudyStore::open_read_only(database);
         MONOPLANE_TRY(store);
         Result<std::vector<RosterRow>> roster = store.value()->roster();
         MONOPLANE_TRY(roster);

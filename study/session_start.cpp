@@ -181,7 +181,22 @@ Result<SessionStart> plan_session(const StudyStore* store, const Protocol& proto
             info.variables = *values;
         info.participant_index = known->participant_count;
     }
+    if (store != nullptr && known->participant) {
+        Result<std::vector<EarlierSession>> earlier = store->earlier_sessions(r.participant_code);
+        MONOPLANE_TRY(earlier);
+        Result<Admission> admitted = admit_session(
+            AdmissionContext{.database = known->database, .participant_code = r.participant_code},
+            *earlier, ProtocolVersion{.name = protocol.name, .text = protocol.text,
+                                      .hash = protocol.text_hash},
+            r.decisions);
+        if (!admitted) problems.push_back(admitted.error().message);
+    } else if (r.decisions.abandon_session || !r.decisions.protocol_change_reason.empty()) {
+        problems.push_back("participant " + r.participant_code +
+                           " has no earlier session here: --abandon and --protocol-changed are "
+                           "for a participant's later sessions");
+    }
     if (!problems.empty()) return Error{joined(problems)};
+    info.decisions = r.decisions;
     info.participant_code = r.participant_code;
     info.protocol_name = protocol.name;
     info.protocol_hash = protocol.text_hash;

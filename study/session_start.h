@@ -23,6 +23,7 @@ struct SessionRequest {
     std::optional<int> participant_number;  // 1-based, as people count
     std::vector<std::string> variables;     // NAME=VALUE, as given
     std::uint64_t seed = 0;
+    StartDecisions decisions;  // --abandon, --protocol-changed
 };
 
 // A session ready to begin: begin_session(info, schedule) with info's runtime and device set.
@@ -39,7 +40,8 @@ struct SessionStart {
 // beyond the protocol's `sessions`; a participant number below 1, taken by another participant,
 // or different from the one a returning participant has; variables (check_variables: unknown,
 // out of range, not a choice, required but missing) for a new participant, and for a returning
-// one any value that differs from the recorded one. The messages name the request's inputs as
+// one any value that differs from the recorded one; an earlier session of theirs that is running
+// or interrupted, or a change of design without a reason (admit_session). The messages name the request's inputs as
 // `names` says them. Writes nothing. Any time.
 Result<SessionStart> plan_session(const StudyStore* store, const Protocol& protocol,
                                   const SessionRequest& request,

@@ -246,8 +246,66 @@ DROP TABLE frames;
 ALTER TABLE frames_v7 RENAME TO frames;
 )sql";
 
-constexpr std::array<std::string_view, 7> kMigrations = {kVersion1, kVersion2, kVersion3, kVersion4,
-                                                         kVersion5, kVersion6, kVersion7};
+// Version 8 (issue 42): integrity across files, runs and decisions about sessions.
+// - sessions.session_uuid: made when a session starts (a random, version-4 UUID), so the same
+//   session found in two files (a copy, a backup) is known as one. Sessions written before
+//   version 8 get one derived from what identifies them (store_open.cpp: derive_session_uuids),
+//   the same in every copy and every read, whether the file was migrated or only read.
+// - session_runs: each run of a session (its start and every resume): when, where, which
+//   runtime, the frame it started at, and the offset that puts its runtime's clock on the
+//   session's time axis (a restarted runtime starts its clock again).
+// - trials.runs: how many runs a trial spanned (1 + the interruptions during it).
+// - events: kinds for decisions about a session (session_abandoned, protocol_changed,
+//   protocol_text_changed, run_started), with their reason in `detail`; rebuilt as in version 7.
+constexpr std::string_view kVersion8 = R"sql(
+ALTER TABLE sessions ADD COLUMN session_uuid TEXT
+    CHECK (length(session_uuid) = 36 AND session_uuid NOT GLOB '*[^0-9a-f-]*');
+CREATE TABLE session_runs (
+    session_id      INTEGER NOT NULL REFERENCES sessions(id),
+    run             INTEGER NOT NULL CHECK (run >= 1),
+    started_utc     TEXT NOT NULL,
+    host            TEXT NOT NULL,
+    pid             INTEGER NOT NULL CHECK (pid >= 0),
+    runtime         TEXT NOT NULL,
+    first_frame     INTEGER NOT NULL CHECK (first_frame >= 0),
+    clock_offset_ns INTEGER NOT NULL,
+    PRIMARY KEY (session_id, run)
+);
+ALTER TABLE trials ADD COLUMN runs INTEGER NOT NULL DEFAULT 1 CHECK (runs >= 1);
+
+CREATE TABLE events_v8 (
+    id          INTEGER PRIMARY KEY,
+    session_id  INTEGER NOT NULL REFERENCES sessions(id),
+    trial_index INTEGER,
+    kind        TEXT NOT NULL
+                CHECK (kind IN ('shown', 'switched', 'confirmed', 'refused', 'paused', 'resumed',
+                                'aborted', 'instructions_shown', 'instructions_confirmed',
+                                'ready_shown', 'ready_confirmed', 'break_started', 'break_ended',
+                                'end_shown', 'session_abandoned', 'protocol_changed',
+                                'protocol_text_changed', 'run_started')),
+    label       INTEGER NOT NULL CHECK (label IN (0, 1, 2)),
+    time_ns     INTEGER NOT NULL,
+    frame       INTEGER NOT NULL CHECK (frame >= -1),
+    page        INTEGER CHECK (page >= 0),
+    detail      TEXT,
+    FOREIGN KEY (session_id, trial_index) REFERENCES trials(session_id, trial_index),
+    -- A screen or a decision about the session is no trial; a trial's event names its trial.
+    CHECK ((trial_index IS NULL) = (kind NOT IN ('shown', 'switched', 'confirmed', 'refused',
+                                                 'paused', 'resumed', 'aborted'))),
+    CHECK ((page IS NOT NULL) = (kind IN ('instructions_shown', 'instructions_confirmed'))),
+    CHECK ((detail IS NOT NULL) = (kind IN ('session_abandoned', 'protocol_changed',
+                                            'protocol_text_changed')))
+);
+INSERT INTO events_v8 (id, session_id, trial_index, kind, label, time_ns, frame, page)
+    SELECT id, session_id, trial_index, kind, label, time_ns, frame, page FROM events;
+DROP TABLE events;
+ALTER TABLE events_v8 RENAME TO events;
+CREATE INDEX events_by_session ON events(session_id, id);
+)sql";
+
+constexpr std::array<std::string_view, 8> kMigrations = {kVersion1, kVersion2, kVersion3,
+                                                         kVersion4, kVersion5, kVersion6,
+                                                         kVersion7, kVersion8};
 
 }  // namespace
 

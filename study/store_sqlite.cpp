@@ -159,4 +159,12 @@ Result<void> Transaction::commit(std::string_view what) {
     return Ok{};
 }
 
+Result<std::int64_t> query_int(const Connection& db, std::string_view sql, std::string_view what) {
+    Result<Statement> stmt = Statement::prepare(db, sql);
+    MONOPLANE_TRY(stmt);
+    Result<bool> row = stmt.value().step(what);
+    MONOPLANE_TRY(row);
+    return *row ? stmt->int64(0) : 0;
+}
+
 }  // namespace monoplane::study::sqlite

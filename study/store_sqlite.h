@@ -104,4 +104,7 @@ class Transaction {
     bool open_;
 };
 
+// The first column of the first row of `sql` as an integer (0 when there is no row).
+Result<std::int64_t> query_int(const Connection& db, std::string_view sql, std::string_view what);
+
 }  // namespace monoplane::study::sqlite

@@ -18,13 +18,18 @@
 #include "study/frame_queue.h"
 #include "study/planned_trial_store.h"
 #include "study/scene_file_store.h"
+#include "study/session_hold.h"
+#include "study/session_run_store.h"
 #include "study/store_schema.h"
+#include "study/session_uuid.h"
+#include "study/store_impl.h"
 #include "study/store_sqlite.h"
 
 namespace monoplane::study {
 namespace {
 
 using sqlite::Connection;
+using sqlite::query_int;
 using sqlite::Statement;
 using sqlite::Transaction;
 
@@ -107,14 +112,6 @@ std::size_t code_points(std::string_view text) {
         text, [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
 }
 
-Result<std::int64_t> query_int(const Connection& db, std::string_view sql, std::string_view what) {
-    Result<Statement> stmt = Statement::prepare(db, sql);
-    MONOPLANE_TRY(stmt);
-    Result<bool> row = stmt.value().step(what);
-    MONOPLANE_TRY(row);
-    return *row ? stmt->int64(0) : 0;
-}
-
 // Refuses the schedule before anything is written: a bad one would be stored for good.
 Result<void> validate_schedule(const Schedule& schedule) {
     if (schedule.trials.empty()) return Error{"the schedule has no trials"};
@@ -161,204 +158,10 @@ std::vector<std::string> split_scenes(const std::string& text) {
     return scenes;
 }
 
-// Creates the file with mode 0600 before SQLite sees it, so no moment exists in which it is
-// readable by others. Returns whether this call created it.
-Result<bool> create_private_file(const std::string& file) {
-    bool created = true;
-    int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-    if (fd < 0 && errno == EEXIST) {
-        created = false;
-        fd = ::open(file.c_str(), O_RDWR | O_CLOEXEC);
-    }
-    if (fd < 0) {
-        const int err = errno;
-        return Error{"cannot " + std::string(created ? "create" : "open") + " study database '" +
-                     file + "': " + std::strerror(err) +
-                     "; check that its directory exists and is writable by you."};
-    }
-    struct stat st {};
-    const bool regular = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode);
-    if (created) ::fchmod(fd, 0600);  // a umask cannot widen it, but make the intent explicit
-    ::close(fd);
-    if (!regular) return Error{"study database '" + file + "' is not a regular file"};
-    return created;
-}
-
-// SQLite gives the -wal and -shm files the database file's mode; this makes sure they are never
-// more open than the database, whatever created them.
-void restrict_sidecars(const std::string& file) {
-    struct stat db {};
-    if (::stat(file.c_str(), &db) != 0) return;
-    for (const char* suffix : {"-wal", "-shm"}) {
-        const std::string side = file + suffix;
-        struct stat st {};
-        if (::stat(side.c_str(), &st) == 0 && (st.st_mode & 077 & ~db.st_mode) != 0)
-            ::chmod(side.c_str(), db.st_mode & 0777);
-    }
-}
-
-void remove_files(const std::string& file) {
-    for (const char* suffix : {"", "-wal", "-shm"}) ::unlink((file + suffix).c_str());
-}
-
 }  // namespace
 
 std::string_view session_status_name(SessionStatus status) {
     return kStatusNames.at(static_cast<std::size_t>(status));
-}
-
-struct StudyStore::Impl {
-    std::filesystem::path file;  // as the caller named it (session holds lie beside it)
-    Connection db;
-    FrameQueue frames;  // the frame log's rows not yet written
-
-    // Inside a durable write's open transaction: the queued frames go with it.
-    Result<void> write_queued_frames() const { return frames.write(db); }
-    // Commits a durable write's transaction; the frames it carried leave the queue.
-    Result<void> commit_written(Transaction& tx, std::string_view what) {
-        Result<void> ok = tx.commit(what);
-        if (ok) frames.clear();
-        return ok;
-    }
-
-    Error no_session(std::int64_t id) const {
-        return Error{"no session " + std::to_string(id) + " in study database '" + db.path() + "'"};
-    }
-
-    Result<void> require_session(std::int64_t id) const {
-        Result<Statement> stmt = Statement::prepare(db, "SELECT 1 FROM sessions WHERE id = ?");
-        MONOPLANE_TRY(stmt);
-        stmt.value().bind(1, id);
-        Result<bool> row = stmt.value().step("looking up a session");
-        MONOPLANE_TRY(row);
-        if (!*row) return no_session(id);
-        return Ok{};
-    }
-
-    // Brings the schema to kSchemaVersion in one transaction, or refuses the file.
-    Result<void> migrate() {
-        Result<std::int64_t> version =
-            query_int(db, "PRAGMA user_version", "reading the schema version");
-        MONOPLANE_TRY(version);
-        if (*version > StudyStore::kSchemaVersion) return newer_schema(*version);
-        if (*version == StudyStore::kSchemaVersion) return check_application_id();
-
-        Result<Transaction> tx = Transaction::begin(db, "migrating the schema");
-        MONOPLANE_TRY(tx);
-        // Another process may have migrated between the read above and the lock.
-        version = query_int(db, "PRAGMA user_version", "reading the schema version");
-        MONOPLANE_TRY(version);
-        if (*version > StudyStore::kSchemaVersion) return newer_schema(*version);
-        if (*version == 0) {
-            // A version-0 file with tables belongs to another program: do not write into it.
-            Result<std::int64_t> objects =
-                query_int(db, "SELECT count(*) FROM sqlite_schema", "reading the schema");
-            MONOPLANE_TRY(objects);
-            if (*objects > 0)
-                return Error{
-                    "'" + db.path() + "' is a SQLite database of another program (it has " +
-                    std::to_string(*objects) +
-                    " schema objects but no monoplane schema version); give a new file name."};
-            MONOPLANE_TRY(
-                db.exec("PRAGMA application_id = " + std::to_string(kStoreApplicationId)));
-        } else {
-            MONOPLANE_TRY(check_application_id());
-        }
-        const auto steps = store_migrations();
-        static_assert(StudyStore::kSchemaVersion >= 1);
-        for (std::int64_t v = *version; v < StudyStore::kSchemaVersion; ++v) {
-            MONOPLANE_TRY(db.exec(steps[static_cast<std::size_t>(v)]));
-        }
-        MONOPLANE_TRY(
-            db.exec("PRAGMA user_version = " + std::to_string(StudyStore::kSchemaVersion)));
-        return tx.value().commit("migrating the schema");
-    }
-
-    Error newer_schema(std::int64_t version) const {
-        return Error{"study database '" + db.path() + "' has schema version " +
-                     std::to_string(version) + ", newer than this build of monoplane knows (" +
-                     std::to_string(StudyStore::kSchemaVersion) +
-                     "); open it with a newer monoplane. It was not changed."};
-    }
-
-    Result<void> check_application_id() const {
-        Result<std::int64_t> id =
-            query_int(db, "PRAGMA application_id", "reading the application id");
-        MONOPLANE_TRY(id);
-        if (*id != kStoreApplicationId)
-            return Error{"'" + db.path() +
-                         "' is a SQLite database of another program (application_id " +
-                         std::to_string(*id) + "); give a new file name."};
-        return Ok{};
-    }
-};
-
-StudyStore::StudyStore(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
-StudyStore::~StudyStore() = default;
-
-Result<std::unique_ptr<StudyStore>> StudyStore::open(const std::filesystem::path& path) {
-    return open(path, StoreOptions{});
-}
-
-Result<std::unique_ptr<StudyStore>> StudyStore::open(const std::filesystem::path& path,
-                                                     const StoreOptions& options) {
-    const std::string file = path.string();
-    if (file.empty()) return Error{"no study database file given"};
-    Result<bool> created = create_private_file(file);
-    MONOPLANE_TRY(created);
-
-    auto impl = std::make_unique<Impl>();
-    impl->file = path;
-    Result<void> opened = [&]() -> Result<void> {
-        sqlite3* raw = nullptr;
-        // No SQLITE_OPEN_CREATE: the file exists (with mode 0600) by now. FULLMUTEX: the
-        // experimenter window may read from another thread than the runner writes from.
-        const int rc = sqlite3_open_v2(file.c_str(), &raw,
-                                       SQLITE_OPEN_READWRITE | SQLITE_OPEN_FULLMUTEX, nullptr);
-        impl->db = Connection(raw, file, options.busy_timeout_ms);  // closes `raw` even on failure
-        if (rc != SQLITE_OK) return impl->db.error(rc, "opening it");
-        sqlite3_extended_result_codes(raw, 1);
-        sqlite3_busy_timeout(raw, options.busy_timeout_ms);
-        if (sqlite3_db_readonly(raw, "main") == 1)
-            return Error{"study database '" + file +
-                         "' can only be opened read-only; check its permissions."};
-
-        // The first read tells a database from another file (SQLITE_NOTADB) and sees locks.
-        Result<std::int64_t> version =
-            query_int(impl->db, "PRAGMA user_version", "reading the schema version");
-        MONOPLANE_TRY(version);
-        if (*version > kSchemaVersion) return impl->newer_schema(*version);
-
-        // WAL: readers (an export, the experimenter's view) never block the study's writes.
-        Result<void> wal = [&]() -> Result<void> {
-            Result<Statement> stmt = Statement::prepare(impl->db, "PRAGMA journal_mode = WAL");
-            MONOPLANE_TRY(stmt);
-            Result<bool> row = stmt.value().step("switching to WAL mode");
-            MONOPLANE_TRY(row);
-            if (!*row || stmt->text(0) != "wal")
-                return Error{"study database '" + file + "' could not be switched to WAL mode"};
-            return Ok{};
-        }();  // the statement is finalized here: an open one would block the migration
-        MONOPLANE_TRY(wal);
-
-        // FULL: the WAL is synced at every commit, so an event is on disk when append_event
-        // returns.
-        for (std::string_view pragma : {"PRAGMA synchronous = FULL", "PRAGMA foreign_keys = ON"})
-            MONOPLANE_TRY(impl->db.exec(pragma));
-        if (options.max_page_count > 0) {
-            MONOPLANE_TRY(query_int(
-                impl->db, "PRAGMA max_page_count = " + std::to_string(options.max_page_count),
-                "limiting the database size"));
-        }
-        return impl->migrate();
-    }();
-    if (!opened) {
-        impl.reset();  // close before removing what this call created: nothing half-written stays
-        if (*created) remove_files(file);
-        return opened.error();
-    }
-    restrict_sidecars(file);
-    return std::unique_ptr<StudyStore>(new StudyStore(std::move(impl)));
 }
 
 namespace {
@@ -537,8 +340,8 @@ Result<std::int64_t> insert_session(const Connection& db, std::int64_t participa
         db,
         "INSERT INTO sessions (participant_id, protocol_name, protocol_hash, protocol_text, "
         "seed, block_order, software_version, hmd, runtime, device, observer, started_utc, "
-        "status, render_anti_aliasing, render_ssao, render_detail, procedure, session_number) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        "status, render_anti_aliasing, render_ssao, render_detail, procedure, session_number, "
+        "session_uuid) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     MONOPLANE_TRY(session);
     Statement& s = session.value();
     s.bind(1, participant_id).bind(2, info.protocol_name).bind(3, hash_text(info.protocol_hash));
@@ -553,6 +356,7 @@ Result<std::int64_t> insert_session(const Connection& db, std::int64_t participa
     else
         s.bind(16, info.render.detail);
     s.bind(17, procedure_name(schedule_procedure(schedule))).bind(18, info.session_number);
+    s.bind(19, info.session_uuid.empty() ? random_session_uuid() : info.session_uuid);
     MONOPLANE_TRY(s.run("adding " + numbered(info.session_number) + " of participant '" +
                         info.participant_code + "'"));
     return sqlite3_last_insert_rowid(db.get());
@@ -577,6 +381,42 @@ Result<void> insert_trials(const Connection& db, std::int64_t session_id,
         MONOPLANE_TRY(s.run("storing the schedule"));
     }
     return Ok{};
+}
+
+}  // namespace
+
+namespace {
+
+// Ends an interrupted session for good (`study run --abandon`): status aborted, an end time, and
+// the reason as an event at the session's last known time (its time axis goes on there).
+Result<void> abandon_session(const Connection& db, std::int64_t session_id,
+                             const std::string& reason) {
+    Result<Statement> end = Statement::prepare(
+        db, "UPDATE sessions SET status = 'aborted', ended_utc = ? WHERE id = ?");
+    MONOPLANE_TRY(end);
+    end.value().bind(1, utc_now_iso8601()).bind(2, session_id);
+    MONOPLANE_TRY(end.value().run("ending session " + std::to_string(session_id) + " as abandoned"));
+    Result<Statement> event = Statement::prepare(
+        db,
+        "INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame, detail) "
+        "SELECT ?1, NULL, 'session_abandoned', 0, coalesce(max(time_ns), 0), -1, ?2 FROM events "
+        "WHERE session_id = ?1");
+    MONOPLANE_TRY(event);
+    event.value().bind(1, session_id).bind(2, reason);
+    return event.value().run("recording why session " + std::to_string(session_id) +
+                             " was abandoned");
+}
+
+// The new session's record of a change of protocol (admit_session), at its start.
+Result<void> record_protocol_event(const Connection& db, std::int64_t session_id,
+                                   const TrialEvent& e) {
+    Result<Statement> stmt = Statement::prepare(
+        db,
+        "INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame, detail) "
+        "VALUES (?, NULL, ?, 0, 0, -1, ?)");
+    MONOPLANE_TRY(stmt);
+    stmt.value().bind(1, session_id).bind(2, event_kind_name(e.kind)).bind(3, e.detail);
+    return stmt.value().run("recording the change of protocol");
 }
 
 }  // namespace
@@ -606,10 +446,28 @@ Result<std::int64_t> StudyStore::begin_session(
 
     Result<Transaction> tx = Transaction::begin(db, "starting a session");
     MONOPLANE_TRY(tx);
+    // Read again under the write lock: what plan_session saw may have changed since. First, so
+    // that a participant whose session another process just began hears that it is running.
+    Result<std::vector<EarlierSession>> earlier = earlier_sessions(info.participant_code);
+    MONOPLANE_TRY(earlier);
+    Result<Admission> admission = admit_session(
+        AdmissionContext{.database = impl_->file.string(),
+                         .participant_code = info.participant_code},
+        *earlier,
+        ProtocolVersion{.name = info.protocol_name,
+                        .text = info.protocol_text,
+                        .hash = info.protocol_hash},
+        info.decisions);
+    MONOPLANE_TRY(admission);
     Result<std::int64_t> participant_id = admit_participant(db, info, schedule);
     MONOPLANE_TRY(participant_id);
+    if (admission->abandon_id)
+        MONOPLANE_TRY(
+            abandon_session(db, *admission->abandon_id, info.decisions.abandon_reason));
     Result<std::int64_t> session_id = insert_session(db, *participant_id, info, schedule);
     MONOPLANE_TRY(session_id);
+    if (admission->protocol_event)
+        MONOPLANE_TRY(record_protocol_event(db, *session_id, *admission->protocol_event));
     MONOPLANE_TRY(insert_trials(db, *session_id, schedule));
     MONOPLANE_TRY(write_planned_trials(db, *session_id, schedule));
     MONOPLANE_TRY(write_scene_files(db, *session_id, info.scene_files));
@@ -621,14 +479,15 @@ Result<std::int64_t> StudyStore::begin_session(
 namespace {
 
 // The trial columns in the order read_trial() expects; the 17th says whether the row is a
-// started slot of a staircase (planned_trial_store.h), the 18th is the repetition.
+// started slot of a staircase (planned_trial_store.h), the 18th is the repetition, the 19th the
+// runs that showed the trial.
 constexpr std::string_view kTrialColumns =
     "t.trial_index, t.practice, t.block, t.scene, t.mono_plane, t.label1_alternative, "
     "t.label1_mode, t.label2_mode, t.decided, t.choice, t.chosen_mode, t.valid, t.switches, "
     "t.time_label1_ns, t.time_label2_ns, t.decision_time_ns, EXISTS (SELECT 1 FROM "
     "planned_trials pt WHERE pt.session_id = t.session_id AND pt.trial_index = t.trial_index), "
-    "t.repetition";
-constexpr int kTrialColumnCount = 18;
+    "t.repetition, t.runs";
+constexpr int kTrialColumnCount = 19;
 
 Result<RenderMode> read_mode(const Statement& stmt, int column, const std::string& file) {
     const std::string name = stmt.text(column);
@@ -669,6 +528,7 @@ Result<void> read_trial(const Statement& stmt, const std::string& file, Schedule
     outcome.time_on_label_ns[0] = stmt.int64(13);
     outcome.time_on_label_ns[1] = stmt.int64(14);
     outcome.decision_time_ns = stmt.int64(15);
+    outcome.runs = stmt.int32(18);
     return Ok{};
 }
 
@@ -740,7 +600,7 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
         "SELECT s.id, p.code, p.participant_index, s.protocol_name, s.protocol_hash, "
         "s.protocol_text, s.seed, s.software_version, s.hmd, s.runtime, s.device, s.observer, "
         "s.started_utc, s.status, s.render_anti_aliasing, s.render_ssao, s.render_detail, "
-        "s.procedure, p.participant_number, s.session_number, s.ended_utc, p.id "
+        "s.procedure, p.participant_number, s.session_number, s.ended_utc, p.id, s.session_uuid "
         "FROM sessions s JOIN participants p ON p.id = s.participant_id WHERE s.id = ?");
     MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
@@ -779,6 +639,7 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
     info.participant_number = stmt->int32(18);
     info.session_number = stmt->int32(19);
     info.ended_utc = stmt->is_null(20) ? "" : stmt->text(20);
+    info.session_uuid = stmt->text(22);
     Result<std::vector<VariableValue>> variables = read_variables(db, stmt->int64(21));
     MONOPLANE_TRY(variables);
     info.variables = std::move(variables).value();
@@ -844,17 +705,21 @@ bool is_instruction_event(EventKind kind) {
 // Refuses an event the events table's CHECKs would refuse, with words a developer can act on.
 Result<void> validate_event(const TrialEvent& event) {
     const auto kind = static_cast<std::size_t>(event.kind);
-    if (kind > static_cast<std::size_t>(EventKind::EndShown))
+    if (kind > static_cast<std::size_t>(EventKind::RunStarted))
         return Error{"unknown event kind " + std::to_string(kind)};
     const std::string name(event_kind_name(event.kind));
     if (event.label < 0 || event.label > 2)
         return Error{"event label " + std::to_string(event.label) + " is not 0, 1 or 2"};
     if (event.frame < -1)
         return Error{"event frame " + std::to_string(event.frame) + " is below -1"};
-    if (is_screen_event(event.kind) && event.trial_index != -1)
-        return Error{"a '" + name + "' event belongs to a screen, not to trial " +
+    if (!is_trial_event(event.kind) && event.trial_index != -1)
+        return Error{"a '" + name + "' event belongs to a screen or the session, not to trial " +
                      std::to_string(event.trial_index) + ": its trial index is -1"};
-    if (!is_screen_event(event.kind) && event.trial_index < 0)
+    if (has_detail(event.kind) && event.detail.find_first_not_of(" \t\n") == std::string::npos)
+        return Error{"a '" + name + "' event needs its reason"};
+    if (!has_detail(event.kind) && !event.detail.empty())
+        return Error{"a '" + name + "' event has no reason to record"};
+    if (is_trial_event(event.kind) && event.trial_index < 0)
         return Error{"a '" + name + "' event needs its trial (index " +
                      std::to_string(event.trial_index) + " given)"};
     if (is_instruction_event(event.kind) && event.page < 0)
@@ -877,10 +742,10 @@ Result<void> StudyStore::append_event(std::int64_t session_id, const TrialEvent&
     MONOPLANE_TRY(impl_->write_queued_frames());
     Result<Statement> stmt = Statement::prepare(
         impl_->db,
-        "INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame, page) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?)");
+        "INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame, page, detail) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?)");
     MONOPLANE_TRY(stmt);
-    const bool screen = is_screen_event(event.kind);
+    const bool screen = !is_trial_event(event.kind);
     Statement& s = stmt.value();
     s.bind(1, session_id);
     if (screen)
@@ -893,9 +758,13 @@ Result<void> StudyStore::append_event(std::int64_t session_id, const TrialEvent&
         s.bind(7, event.page);
     else
         s.bind_null(7);
+    if (has_detail(event.kind))
+        s.bind(8, event.detail);
+    else
+        s.bind_null(8);
     const std::string what =
         "appending a '" + std::string(event_kind_name(event.kind)) + "' event " +
-        (screen ? std::string("(a screen)") : "for trial " + std::to_string(event.trial_index)) +
+        (screen ? std::string("(no trial)") : "for trial " + std::to_string(event.trial_index)) +
         " of session " + std::to_string(session_id) + " (the session" +
         (screen ? "" : " and trial") + " must exist)";
     MONOPLANE_TRY(s.run(what));
@@ -913,6 +782,9 @@ Result<void> StudyStore::record_outcome(std::int64_t session_id, int trial_index
     if (outcome.switches < 0 || outcome.time_on_label_ns[0] < 0 ||
         outcome.time_on_label_ns[1] < 0 || outcome.decision_time_ns < 0)
         return Error{"outcome of " + trial_name + ": switches and times must not be negative"};
+    if (outcome.runs < 1)
+        return Error{"outcome of " + trial_name + ": " + std::to_string(outcome.runs) +
+                     " runs; the run that decided it is one"};
 
     Result<Transaction> tx = Transaction::begin(db, "recording the outcome of " + trial_name);
     MONOPLANE_TRY(tx);
@@ -936,8 +808,8 @@ Result<void> StudyStore::record_outcome(std::int64_t session_id, int trial_index
     Result<Statement> update = Statement::prepare(
         db,
         "UPDATE trials SET decided = 1, choice = ?, chosen_mode = ?, valid = ?, switches = ?, "
-        "time_label1_ns = ?, time_label2_ns = ?, decision_time_ns = ?, decided_utc = ? "
-        "WHERE session_id = ? AND trial_index = ?");
+        "time_label1_ns = ?, time_label2_ns = ?, decision_time_ns = ?, decided_utc = ?, "
+        "runs = ? WHERE session_id = ? AND trial_index = ?");
     MONOPLANE_TRY(update);
     update.value()
         .bind(1, outcome.choice)
@@ -948,8 +820,9 @@ Result<void> StudyStore::record_outcome(std::int64_t session_id, int trial_index
         .bind(6, outcome.time_on_label_ns[1])
         .bind(7, outcome.decision_time_ns)
         .bind(8, utc_now_iso8601())
-        .bind(9, session_id)
-        .bind(10, trial_index);
+        .bind(9, outcome.runs)
+        .bind(10, session_id)
+        .bind(11, trial_index);
     MONOPLANE_TRY(update.value().run("recording the outcome of " + trial_name));
     MONOPLANE_TRY(impl_->write_queued_frames());
     return impl_->commit_written(tx.value(), "recording the outcome of " + trial_name);
@@ -1043,6 +916,28 @@ Result<void> StudyStore::add_session_note(std::int64_t session_id, const std::st
     return add_note(session_id, note);
 }
 
+Result<RunStart> StudyStore::begin_run(std::int64_t session_id, const RunInfo& info) {
+    const RunRecord who{.started_utc = utc_now_iso8601(),
+                        .host = host_name(),
+                        .pid = static_cast<long>(::getpid()),
+                        .runtime = info.runtime};
+    Result<Transaction> tx = Transaction::begin(impl_->db, "beginning a run of a session");
+    MONOPLANE_TRY(tx);
+    MONOPLANE_TRY(impl_->require_session(session_id));
+    // The queued frames first: they are the earlier run's, and the new run's clock starts after
+    // them (write_run reads the latest time stored).
+    MONOPLANE_TRY(impl_->write_queued_frames());
+    Result<RunStart> start = write_run(impl_->db, session_id, info, who);
+    MONOPLANE_TRY(start);
+    MONOPLANE_TRY(impl_->commit_written(tx.value(), "beginning a run of a session"));
+    return start;
+}
+
+Result<std::vector<RunRecord>> StudyStore::runs(std::int64_t session_id) const {
+    MONOPLANE_TRY(impl_->require_session(session_id));
+    return read_runs(impl_->db, session_id);
+}
+
 const std::filesystem::path& StudyStore::path() const {
     return impl_->file;
 }
@@ -1081,7 +976,9 @@ constexpr std::string_view kRosterQuery =
     "(SELECT count(*) FROM planned_trials pt WHERE pt.session_id = s.id AND NOT EXISTS "
     "(SELECT 1 FROM trials t WHERE t.session_id = pt.session_id AND "
     "t.trial_index = pt.trial_index)), "
-    "s.started_utc, s.ended_utc, s.device, s.runtime, s.protocol_hash, s.protocol_name "
+    "s.started_utc, s.ended_utc, s.device, s.runtime, s.protocol_hash, s.protocol_name, "
+    "s.session_uuid, (SELECT e.detail FROM events e WHERE e.session_id = s.id AND "
+    "e.kind = 'session_abandoned' ORDER BY e.id DESC LIMIT 1) "
     "FROM sessions s JOIN participants p ON p.id = s.participant_id "
     "ORDER BY p.code, s.session_number";
 
@@ -1114,9 +1011,66 @@ Result<std::vector<RosterRow>> StudyStore::roster() const {
                                  .device = s.text(9),
                                  .runtime = s.text(10),
                                  .protocol_hash = *hash,
-                                 .protocol_name = s.text(12)});
+                                 .protocol_name = s.text(12),
+                                 .session_uuid = s.text(13),
+                                 .abandoned_reason = s.is_null(14)
+                                                         ? std::nullopt
+                                                         : std::optional<std::string>(s.text(14))});
     }
     return rows;
+}
+
+namespace {
+
+// A participant's sessions with the counts the roster shows (kRosterQuery's planned count).
+constexpr std::string_view kEarlierSessionsQuery =
+    "SELECT s.id, s.session_number, s.status, EXISTS (SELECT 1 FROM events e WHERE "
+    "e.session_id = s.id AND e.kind = 'session_abandoned'), "
+    "(SELECT count(*) FROM trials t WHERE t.session_id = s.id AND t.practice = 0 AND "
+    "t.decided = 1), "
+    "(SELECT count(*) FROM trials t WHERE t.session_id = s.id AND t.practice = 0) + "
+    "(SELECT count(*) FROM planned_trials pt WHERE pt.session_id = s.id AND NOT EXISTS "
+    "(SELECT 1 FROM trials t WHERE t.session_id = pt.session_id AND "
+    "t.trial_index = pt.trial_index)), "
+    "s.protocol_text, s.protocol_hash "
+    "FROM sessions s JOIN participants p ON p.id = s.participant_id WHERE p.code = ? "
+    "ORDER BY s.session_number";
+
+}  // namespace
+
+Result<std::vector<EarlierSession>> StudyStore::earlier_sessions(const std::string& code) const {
+    const Connection& db = impl_->db;
+    Result<Statement> stmt = Statement::prepare(db, kEarlierSessionsQuery);
+    MONOPLANE_TRY(stmt);
+    stmt.value().bind(1, code);
+    std::vector<EarlierSession> sessions;
+    for (;;) {
+        Result<bool> row = stmt.value().step("reading participant '" + code + "''s sessions");
+        MONOPLANE_TRY(row);
+        if (!*row) break;
+        const Statement& s = stmt.value();
+        const std::optional<SessionStatus> status = parse_status(s.text(2));
+        const std::optional<std::uint64_t> hash = parse_u64(s.text(7), 16);
+        if (!status || !hash)
+            return Error{"study database '" + db.path() +
+                         "' holds a bad status or hash in session " + std::to_string(s.int64(0))};
+        EarlierSession earlier{.id = s.int64(0),
+                               .session_number = s.int32(1),
+                               .status = *status,
+                               .abandoned = s.int64(3) != 0,
+                               .holder = std::nullopt,
+                               .trials_decided = s.int32(4),
+                               .trials_planned = s.int32(5),
+                               .protocol_text = s.text(6),
+                               .protocol_hash = *hash};
+        if (*status == SessionStatus::Running || *status == SessionStatus::Paused) {
+            Result<std::optional<SessionHolder>> holder = SessionHold::holder(impl_->file, earlier.id);
+            MONOPLANE_TRY(holder);
+            earlier.holder = *holder;
+        }
+        sessions.push_back(std::move(earlier));
+    }
+    return sessions;
 }
 
 Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> session_id) const {
@@ -1153,8 +1107,8 @@ Result<std::vector<TrialEvent>> StudyStore::events(std::int64_t session_id) cons
     MONOPLANE_TRY(impl_->require_session(session_id));
     Result<Statement> stmt = Statement::prepare(
         db,
-        "SELECT kind, trial_index, label, time_ns, frame, page FROM events WHERE session_id = ? "
-        "ORDER BY id");
+        "SELECT kind, trial_index, label, time_ns, frame, page, detail FROM events "
+        "WHERE session_id = ? ORDER BY id");
     MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
     std::vector<TrialEvent> events;
@@ -1172,7 +1126,8 @@ Result<std::vector<TrialEvent>> StudyStore::events(std::int64_t session_id) cons
                                     .label = stmt->int32(2),
                                     .time_ns = stmt->int64(3),
                                     .frame = stmt->int64(4),
-                                    .page = stmt->is_null(5) ? -1 : stmt->int32(5)});
+                                    .page = stmt->is_null(5) ? -1 : stmt->int32(5),
+                                    .detail = stmt->text(6)});
     }
     return events;
 }

@@ -19,6 +19,7 @@
 #include "study/participant_variables.h"
 #include "study/protocol.h"
 #include "study/scene_files.h"
+#include "study/session_admission.h"
 #include "study/schedule.h"
 #include "study/session_log.h"
 #include "study/session_note.h"
@@ -31,6 +32,10 @@ namespace monoplane::study {
 // resume went ahead with changed scene files (`study resume --accept-changed-scenes`).
 struct SessionInfo {
     std::int64_t id = 0;
+    // Globally unique, made when the session starts (begin_session makes a random version-4
+    // UUID when empty), so the session is known as one wherever its rows are copied. Sessions
+    // of schema versions before 8 carry one derived from what identifies them.
+    std::string session_uuid;
     std::string participant_code;
     int participant_index = 0;  // 0-based order of the participant's first session in this file
     // 0-based: the participant's number in the whole study, which picks the Latin square row
@@ -65,6 +70,9 @@ struct SessionInfo {
     // Read back by session(); begin_session records the procedure its schedule was made for
     // (staircase when it has adaptive trials). Sessions before schema version 5: constant.
     Procedure procedure = Procedure::Constant;
+    // begin_session only: the experimenter's decisions at the start (an interrupted session
+    // to abandon, the reason for a change of design), judged by admit_session.
+    StartDecisions decisions;
 };
 
 // One row of the export: a trial with its outcome (docs/data.md).
@@ -99,6 +107,9 @@ struct RosterRow {
     std::string runtime;
     std::uint64_t protocol_hash = 0;
     std::string protocol_name;
+    std::string session_uuid;
+    // The reason given when the session was abandoned (`study run --abandon`), or none.
+    std::optional<std::string> abandoned_reason;
 };
 
 // The participant as the database knows them (for --session's default, the launcher's form and
@@ -123,15 +134,40 @@ struct StoreOptions {
 
 class StudyStore final : public SessionLog {
   public:
-    // Opens or creates the database; creates it readable by its owner only (0600). Errors: an
-    // unwritable or locked file, a file that is no SQLite database, a schema newer than this
-    // build knows. Migrates older schemas forward.
+    // Three ways to open a study database, one per kind of command (docs/data.md, "Which
+    // commands write"). Each refuses, with one line naming the file and nothing written: a
+    // 0-byte, truncated or non-SQLite file (study_file_check.h), another program's SQLite
+    // database, a schema newer than this build knows, a damaged page (quick_check), a locked
+    // file (after StoreOptions::busy_timeout_ms).
+    //
+    // `study run`, the launcher's Create: opens or creates the database, creating it readable
+    // by its owner only (0600); a new file that fails to open is removed again. An older schema
+    // is migrated in place after a copy of the file is kept (schema_backup()). Refuses a file
+    // the user may not write.
     static Result<std::unique_ptr<StudyStore>> open(const std::filesystem::path& path);
     static Result<std::unique_ptr<StudyStore>> open(const std::filesystem::path& path,
                                                     const StoreOptions& options);
+    // `study resume`, `study note`, `study migrate`: as open(), but a missing file or an empty
+    // SQLite file is refused rather than made a study.
+    static Result<std::unique_ptr<StudyStore>> open_existing(const std::filesystem::path& path,
+                                                             const StoreOptions& options = {});
+    // `study list`, `study export`, `analyze`, the launcher's roster: reads a private snapshot
+    // of the file (store_snapshot.h), so not one byte of it, its -wal or its -shm changes, a
+    // file of mode 0444 or on a read-only mount reads as any other, and an older schema is read
+    // as it is (migrated in the copy only). Every write through this store fails.
+    static Result<std::unique_ptr<StudyStore>> open_read_only(const std::filesystem::path& path,
+                                                              const StoreOptions& options = {});
     ~StudyStore();
 
-    static constexpr int kSchemaVersion = 7;
+    // The schema version the file had when opened (0: a new file), before any migration.
+    int found_schema_version() const;
+    // The copy this open kept before migrating the file's older schema (FILE.schema<N>.bak),
+    // or none.
+    const std::optional<std::filesystem::path>& schema_backup() const;
+    // Opened with open_read_only.
+    bool read_only() const;
+
+    static constexpr int kSchemaVersion = 8;
 
     // The file this store was opened from (session holds lie beside it).
     const std::filesystem::path& path() const;
@@ -147,6 +183,10 @@ class StudyStore final : public SessionLog {
     // digests (info.scene_files, checked by validate_scene_files: each imported scene of the
     // schedule needs its record) in one transaction, before the first trial. A staircase's
     // adaptive trials are stored as plans without a mono plane (record_stimulus adds it).
+    // Judges info.decisions and the participant's earlier sessions with admit_session inside the
+    // transaction (so of two processes starting the same participant at once one is refused),
+    // then ends the session info.decisions abandons (status aborted, a session_abandoned event
+    // with the reason) and records a change of protocol as an event of the new session.
     // before_commit (optional): called with the new session's id inside the transaction, before
     // it commits; its error rolls the session back. `study run` takes the session's hold there,
     // so no other process can see the session running without a holder.
@@ -170,6 +210,9 @@ class StudyStore final : public SessionLog {
                                                      int session_number) const;
     // Every session, by participant code and session number (`study list`).
     Result<std::vector<RosterRow>> roster() const;
+    // The participant's sessions in this file, by session number, with who runs each unfinished
+    // one now (session holds beside the file): what admit_session judges.
+    Result<std::vector<EarlierSession>> earlier_sessions(const std::string& code) const;
 
     // The frame log: rows are queued in memory and written in the transaction of the next
     // durable write below (or of flush_frames), so every committed event has every frame
@@ -199,6 +242,14 @@ class StudyStore final : public SessionLog {
     Result<void> add_note(std::int64_t session_id, const SessionNote& note);
     // A note from the software (NoteSource::Software, no session time).
     Result<void> add_session_note(std::int64_t session_id, const std::string& text);
+    // A run of the session begins (SessionLog::begin_run): its row in session_runs, stamped with
+    // this process's host and pid and the UTC time, and its run_started event, in one
+    // transaction with the queued frames. Once per process that runs the session, before its
+    // first event (LiveSession::begin_run). Refuses an unknown session.
+    Result<RunStart> begin_run(std::int64_t session_id, const RunInfo& info) override;
+    // The session's runs (table session_runs), by run number. Sessions of schema 7 and before
+    // have none for their runs then. Any time.
+    Result<std::vector<RunRecord>> runs(std::int64_t session_id) const;
 
     // The trials shown or being shown (a staircase's slots once started), by session and index.
     Result<std::vector<TrialRecord>> trials(std::optional<std::int64_t> session_id = {}) const;
@@ -206,8 +257,11 @@ class StudyStore final : public SessionLog {
     // The questionnaire answers of a session, by item (the latest answer to each item).
     Result<std::vector<QuestionnaireAnswer>> answers(std::int64_t session_id) const;
 
-  private:
+    // The store's state, defined in store_impl.h for the store's own files only (named here so
+    // that the file that opens stores can build one).
     struct Impl;
+
+  private:
     explicit StudyStore(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };

@@ -26,8 +26,12 @@ constexpr NameTable<EventKind> kEventKindNames = {
     {EventKind::BreakStarted, "break_started"},
     {EventKind::BreakEnded, "break_ended"},
     {EventKind::EndShown, "end_shown"},
+    {EventKind::SessionAbandoned, "session_abandoned"},
+    {EventKind::ProtocolChanged, "protocol_changed"},
+    {EventKind::ProtocolTextChanged, "protocol_text_changed"},
+    {EventKind::RunStarted, "run_started"},
 };
-static_assert(kEventKindNames.size() == static_cast<std::size_t>(EventKind::EndShown) + 1,
+static_assert(kEventKindNames.size() == static_cast<std::size_t>(EventKind::RunStarted) + 1,
               "every EventKind needs its stored name");
 
 }  // namespace
@@ -42,10 +46,27 @@ std::optional<EventKind> parse_event_kind(std::string_view name) {
 }
 
 bool is_screen_event(EventKind kind) {
-    return kind >= EventKind::InstructionsShown;
+    return kind >= EventKind::InstructionsShown && kind <= EventKind::EndShown;
+}
+
+bool is_session_event(EventKind kind) {
+    return kind >= EventKind::SessionAbandoned;
+}
+
+bool is_trial_event(EventKind kind) {
+    return kind <= EventKind::Aborted;
+}
+
+bool has_detail(EventKind kind) {
+    return kind == EventKind::SessionAbandoned || kind == EventKind::ProtocolChanged ||
+           kind == EventKind::ProtocolTextChanged;
 }
 
 std::string describe(const TrialEvent& e) {
+    if (is_session_event(e.kind)) {
+        return "session " + std::string(event_kind_name(e.kind)) + " t " +
+               std::to_string(e.time_ns) + (e.detail.empty() ? "" : " reason " + e.detail);
+    }
     if (is_screen_event(e.kind)) {
         return "screen " + std::string(event_kind_name(e.kind)) + " page " +
                std::to_string(e.page) + " t " + std::to_string(e.time_ns) + " frame " +

@@ -26,10 +26,22 @@ enum class EventKind {
     BreakStarted,  // a break screen became visible; its countdown starts
     BreakEnded,    // the participant confirmed after the countdown
     EndShown,      // the end screen became visible
+    // Decisions about the whole session (trial_index -1, stored as NULL), with the reason the
+    // experimenter gave in `detail`:
+    SessionAbandoned,     // an interrupted session ended for good (`study run --abandon`)
+    ProtocolChanged,      // this session's design differs from the participant's earlier ones
+    ProtocolTextChanged,  // only the protocol's text (comments, instructions) differs
+    RunStarted,           // a run of the session began: its start, or a resume (no detail)
 };
 
 // True for the kinds above that belong to a screen, not to a trial.
 bool is_screen_event(EventKind kind);
+// True for the decisions about the whole session (SessionAbandoned and after).
+bool is_session_event(EventKind kind);
+// True for the kinds that belong to a trial (and name it); the others have trial index -1.
+bool is_trial_event(EventKind kind);
+// True for the kinds that carry a reason in `detail`.
+bool has_detail(EventKind kind);
 
 std::string_view event_kind_name(EventKind kind);
 // The kind a stored name stands for; none for a name no version wrote.
@@ -42,6 +54,7 @@ struct TrialEvent {
     std::int64_t time_ns = 0;  // monotonic clock
     std::int64_t frame = -1;   // frame index at which the change became visible; -1: none
     int page = -1;             // instruction events: the page, 0-based; else -1
+    std::string detail;        // has_detail kinds: the reason given; else empty
 };
 
 // One line for logs and traces: "trial 3 switched label 2 t 123 frame 11" (the crash test

@@ -57,9 +57,9 @@ Result<fs::path> export_beside(const fs::path& db) {
     const fs::path out = db.parent_path() / (db.stem().string() + ".csv");
     const study::ExportFormat format = study::ExportFormat::Csv;
     MONOPLANE_TRY(check_output_option(out, export_option_kind(format), {db}, false));
-    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(db);
+    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open_read_only(db);
     MONOPLANE_TRY(store);
-    MONOPLANE_TRY(study::export_trials(**store, format, out, false));
+    MONOPLANE_TRY(study::export_trials(**store, format, out, false, output_option_error));
     return out;
 }
 
@@ -113,7 +113,7 @@ std::string run_session(const lab::LaunchRequest& request, const LabOptions& lab
 // The summary's lines (summarize_session), or why there are none.
 std::vector<std::string> summary_lines(const lab::LauncherModel& model) {
     if (!model.summary() || model.summary()->session_id == 0) return {};
-    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(model.database());
+    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open_read_only(model.database());
     if (!store) return {store.error().message};
     Result<SessionSummary> summary = summarize_session(**store, model.summary()->session_id);
     if (!summary) return {summary.error().message};

@@ -1,6 +1,6 @@
-// `monoplane study run|resume|export|list|note`: the command line of 2AFC study sessions
+// `monoplane study run|resume|export|list|note|migrate`: the command line of 2AFC study sessions
 // (docs/study.md). This file declares the options; study_session.cpp runs and resumes sessions,
-// study_roster.cpp exports, lists and notes.
+// study_roster.cpp exports, lists and notes, study_migrate.cpp migrates.
 #include <memory>
 
 #include "app/commands/commands.h"
@@ -85,6 +85,14 @@ void add_run_command(CLI::App* study, const std::shared_ptr<StudyOptions>& optio
                     "The participant's number in the whole study, 1-based, which picks the "
                     "Latin-square row (default: their position in this database; give it when "
                     "a study runs on several PCs or sites)");
+    run->add_option("--abandon", options->abandon,
+                    "SESSION \"reason\": end the participant's interrupted session SESSION for good "
+                    "(recorded with the reason; study list shows it abandoned) and start their "
+                    "next. Without it an interrupted session must be resumed first");
+    run->add_option("--protocol-changed", options->protocol_changed,
+                    "\"reason\": start a session whose protocol's design (scenes, distances, "
+                    "alternatives, procedure, repetitions, ...) differs from the participant's "
+                    "earlier sessions'; the reason and the differences are recorded");
     run->add_option("--headset", options->headset, "none, simulated or openxr")
         ->capture_default_str();
     run->add_option("--observer", options->observer,
@@ -147,9 +155,9 @@ void add_export_command(CLI::App* study, const std::shared_ptr<StudyOptions>& op
 void add_list_command(CLI::App* study, const std::shared_ptr<StudyOptions>& options) {
     CLI::App* list = study->add_subcommand(
         "list", "The roster: every participant and session, with status and progress");
-    list->add_option("--db", options->dbs, "Study database(s) (SQLite; repeatable)")
-        ->required()
-        ->check(CLI::ExistingFile);
+    list->add_option("--db", options->dbs,
+                     "Study database(s) (SQLite; repeatable); read, never written")
+        ->required();
     list->add_flag("--json", options->json, "JSON instead of a table");
     list->callback([options] { list_study(*options); });
 }
@@ -157,12 +165,19 @@ void add_list_command(CLI::App* study, const std::shared_ptr<StudyOptions>& opti
 void add_note_command(CLI::App* study, const std::shared_ptr<StudyOptions>& options) {
     CLI::App* note = study->add_subcommand(
         "note", "Add an experimenter's note to a session (stored at once, with the time)");
-    note->add_option("--db", options->db, "Study database (SQLite)")
-        ->required()
-        ->check(CLI::ExistingFile);
+    note->add_option("--db", options->db, "Study database (SQLite)")->required();
     add_session_choice(note, *options, " (with --session: that session; else their latest)");
     note->add_option("text", options->note, "The note")->required();
     note->callback([options] { note_study(*options); });
+}
+
+void add_migrate_command(CLI::App* study, const std::shared_ptr<StudyOptions>& options) {
+    CLI::App* migrate = study->add_subcommand(
+        "migrate",
+        "Bring a study database of an older schema to this build's, keeping the original as "
+        "FILE.schema<N>.bak (list, export and analyze read older schemas without it)");
+    migrate->add_option("--db", options->db, "Study database (SQLite)")->required();
+    migrate->callback([options] { migrate_study(*options); });
 }
 
 }  // namespace
@@ -177,6 +192,7 @@ void add_study_command(CLI::App& root, const GlobalOptions& global) {
     add_export_command(study, options);
     add_list_command(study, options);
     add_note_command(study, options);
+    add_migrate_command(study, options);
 }
 
 }  // namespace monoplane::app

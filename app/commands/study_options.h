@@ -25,6 +25,9 @@ struct StudyOptions {
     std::optional<std::int64_t> session_id;  // --session-id ID: the database's session id
     std::optional<int> participant_number;   // --participant-number N (1-based)
     std::vector<std::string> variables;      // --var NAME=VALUE
+    // run: --abandon N "reason" (the participant's interrupted session N ends for good first)
+    std::optional<std::pair<int, std::string>> abandon;
+    std::string protocol_changed;  // run: --protocol-changed "reason"
     double pace_ms = 0.0;
     bool trace = false;
     bool accept_changed_scenes = false;  // resume: go on although scene files changed
@@ -50,5 +53,6 @@ void resume_study(const StudyOptions& o, const GlobalOptions& global);
 void export_study(const StudyOptions& o);
 void list_study(const StudyOptions& o);
 void note_study(const StudyOptions& o);
+void migrate_study(const StudyOptions& o);
 
 }  // namespace monoplane::app

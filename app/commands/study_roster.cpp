@@ -59,7 +59,12 @@ void write_roster_json(const std::vector<study::RosterEntry>& entries) {
         json.value("device", r.device)
             .value("runtime", r.runtime)
             .value("protocol", r.protocol_name)
-            .value("protocol_hash", study::hash_text(r.protocol_hash));
+            .value("protocol_hash", study::hash_text(r.protocol_hash))
+            .value("session_uuid", r.session_uuid);
+        if (r.abandoned_reason)
+            json.value("abandoned_reason", *r.abandoned_reason);
+        else
+            json.null("abandoned_reason");
         if (e.holder) {
             json.begin_object("held_by")
                 .value("pid", static_cast<std::int64_t>(e.holder->pid))
@@ -103,9 +108,7 @@ void export_study(const StudyOptions& o) {
     // Before the database is opened (which would create a missing one): a refused --out changes
     // nothing, and a study database is never overwritten by its own export.
     check_output_option(o.out, export_option_kind(format), {o.db}, o.force).value_or_throw();
-    if (!std::filesystem::is_regular_file(o.db))
-        throw UserError("no study database '" + o.db + "'");
-    auto store = study::StudyStore::open(o.db).value_or_throw();
+    auto store = study::StudyStore::open_read_only(o.db).value_or_throw();
     // Written to a temporary file and renamed: a failed export leaves no truncated file.
     study::export_trials(*store, format, std::filesystem::path(o.out), o.force).value_or_throw();
     std::cerr << "wrote " << o.out << "\n";
@@ -126,7 +129,7 @@ void list_study(const StudyOptions& o) {
 }
 
 void note_study(const StudyOptions& o) {
-    auto store = study::StudyStore::open(o.db).value_or_throw();
+    auto store = study::StudyStore::open_existing(o.db).value_or_throw();
     std::int64_t session_id = 0;
     if (o.session_id) {
         check_session_id_alone(o);

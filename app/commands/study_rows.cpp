@@ -98,12 +98,8 @@ double missed_frame_threshold(const study::SessionInfo& session) {
 }
 
 Result<analysis::Dataset> read_study_database(const std::filesystem::path& path) {
-    std::error_code ec;
-    // StudyStore::open creates a missing database; an analysis must not.
-    if (!std::filesystem::is_regular_file(path, ec)) {
-        return Error{"--db " + path.string() + ": no such file"};
-    }
-    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(path);
+    // A snapshot: an analysis changes no byte of the file, and reads an older schema as it is.
+    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open_read_only(path);
     if (!store) return Error{"--db " + path.string() + ": " + store.error().message};
     Result<study::ExportData> data = study::collect_export(*store.value());
     if (!data) return Error{"--db " + path.string() + ": " + data.error().message};

@@ -137,6 +137,11 @@ study::SessionStart plan(const StudyOptions& o, const study::Protocol& protocol,
     request.participant_number = o.participant_number;
     request.variables = o.variables;
     request.seed = o.seed ? *o.seed : std::random_device{}() * 0x100000001ull;
+    if (o.abandon) {
+        request.decisions.abandon_session = o.abandon->first;
+        request.decisions.abandon_reason = o.abandon->second;
+    }
+    request.decisions.protocol_change_reason = o.protocol_changed;
     return study::plan_session(store, protocol, request, study_run_option_names()).value_or_throw();
 }
 
@@ -241,7 +246,7 @@ std::int64_t session_to_resume(const StudyOptions& o, const study::StudyStore& s
 
 void resume_study(const StudyOptions& o, const GlobalOptions& global) {
     check_headset(o.headset);
-    auto store = study::StudyStore::open(o.db).value_or_throw();
+    auto store = study::StudyStore::open_existing(o.db).value_or_throw();
     const std::int64_t session_id = session_to_resume(o, *store);
     const study::SessionInfo info = store->session(session_id).value_or_throw();
     if (info.status == study::SessionStatus::Completed) {

@@ -107,10 +107,22 @@ Result<std::vector<ProtocolChoice>> list_protocols(const fs::path& folder) {
     return choices;
 }
 
+// The launcher reads the database through snapshots (StudyStore::open_read_only): Open, the
+// roster and the participant's form change no byte of it; sessions write through their own
+// store. Create makes a missing file a new study first.
+Result<std::unique_ptr<study::StudyStore>> open_for_launcher(const fs::path& path, bool create) {
+    std::error_code ec;
+    if (create && !fs::exists(path, ec)) {
+        Result<std::unique_ptr<study::StudyStore>> made = study::StudyStore::open(path);
+        MONOPLANE_TRY(made);
+    }
+    return study::StudyStore::open_read_only(path);
+}
+
 Result<std::vector<RosterLine>> read_launcher_roster(const fs::path& database) {
     Result<std::vector<study::RosterEntry>> entries = study::read_roster({database});
     MONOPLANE_TRY(entries);
-    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(database);
+    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open_read_only(database);
     MONOPLANE_TRY(store);
     std::vector<RosterLine> lines;
     for (study::RosterEntry& entry : entries.value()) {
@@ -197,7 +209,7 @@ Result<void> LauncherModel::open_database(const fs::path& path, bool create) {
         problem.message = "choose a study database file (.sqlite)";
     } else if (!create && !fs::exists(path, ec)) {
         problem.message = "no study database '" + path.string() + "': choose Create to start one";
-    } else if (Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(path);
+    } else if (Result<std::unique_ptr<study::StudyStore>> store = open_for_launcher(path, create);
                !store) {
         problem = store.error();
     } else {
@@ -219,6 +231,13 @@ Result<void> LauncherModel::open_database(const fs::path& path, bool create) {
 
 Result<void> LauncherModel::refresh_roster() {
     if (!store_) return Error{"open or create a study database first"};
+    // A new snapshot: the one taken before a session does not hold it.
+    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open_read_only(db_);
+    if (!store) {
+        db_message_ = store.error().message;
+        return store.error();
+    }
+    store_ = std::move(store).value();
     Result<std::vector<RosterLine>> roster = read_launcher_roster(db_);
     if (!roster) {
         db_message_ = roster.error().message;
@@ -457,13 +476,13 @@ Result<void> LauncherModel::session_ended(const std::string& error) {
     summary.participant = launched_->participant;
     summary.session_number = launched_session_number_;
     std::optional<std::int64_t> id = launched_->session_id;
-    if (!id) {
+    Result<void> fresh = refresh_roster();  // the session's rows are in the next snapshot
+    if (!id && store_) {
         Result<std::optional<std::int64_t>> found =
             store_->find_session(launched_->participant, launched_session_number_);
         MONOPLANE_TRY(found);
         id = *found;
     }
-    Result<void> fresh = refresh_roster();
     step_ = LauncherStep::Summary;
     set_participant_code(code_);  // their sessions and next number have changed
     summary_ = summary;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "study/session_hold.h"
 #include "study/store_schema.h"
 #include "study/study_store.h"
 
@@ -177,11 +178,11 @@ TEST_F(StudyStoreTest, UsesWalAndRecordsTheSchemaVersion) {
     RawDb raw(db_);
     EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
     EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
-    EXPECT_EQ(StudyStore::kSchemaVersion, 7);
+    EXPECT_EQ(StudyStore::kSchemaVersion, 8);
     EXPECT_EQ(raw.integer("PRAGMA application_id"), 0x4D505354);
     // Version 2 added frames, version 3 scene_files and session_notes, version 5 planned_trials,
-    // version 7 participant_variables.
-    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 10);
+    // version 7 participant_variables, version 8 session_runs.
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 11);
 }
 
 TEST_F(StudyStoreTest, FilesAreReadableByTheOwnerOnly) {
@@ -200,6 +201,8 @@ TEST_F(StudyStoreTest, FilesAreReadableByTheOwnerOnly) {
 TEST_F(StudyStoreTest, RefusesASecondSessionForAParticipant) {
     auto store = open_store();
     const std::int64_t first = begin(*store, "P01");
+    // Ended: an unfinished one is refused as interrupted (StudyIntegrityTest).
+    ASSERT_TRUE(store->set_status(first, SessionStatus::Completed).ok());
     const Result<std::int64_t> again =
         store->begin_session(make_info("P01"), make_test_schedule(1));
     ASSERT_FALSE(again.ok());
@@ -440,11 +443,11 @@ TEST_F(StudyStoreTest, RefusesANewerSchemaWithoutTouchingIt) {
     const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
     ASSERT_FALSE(store.ok());
     const std::string& message = store.error().message;
-    EXPECT_TRUE(contains(message, "schema version 8, newer than this build of monoplane knows (7)"))
+    EXPECT_TRUE(contains(message, "schema version 9, newer than this build of monoplane knows (8)"))
         << message;
     EXPECT_TRUE(contains(message, db_.string())) << message;
     RawDb raw(db_);
-    EXPECT_EQ(raw.integer("PRAGMA user_version"), 8);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 9);
     EXPECT_TRUE(fs::exists(db_));
 }
 
@@ -699,6 +702,95 @@ TEST_F(StudyStoreTest, AResumedRunsFramesContinueAfterEveryNumberUsed) {
     // Another session's numbers do not count.
     const std::int64_t other = begin(*store, "P02");
     EXPECT_EQ(*store->next_frame_number(other), 0);
+}
+
+// Each run of a session (its start, each resume) gets its row and a run_started event: numbered
+// on, with this process's host and pid, its frames after every number used and its clock after
+// the latest time stored, so a runtime whose clock started again near 0 continues the session's
+// axis. The frames still queued are the earlier run's and go first.
+TEST_F(StudyStoreTest, EachRunIsPlacedAfterEverythingStored) {
+    auto store = open_store();
+    const std::int64_t id = begin(*store, "P01");
+    EXPECT_TRUE(store->runs(id)->empty());
+    const Result<RunStart> first = store->begin_run(id, {.runtime = "", .clock_start_ns = 5'000});
+    ASSERT_TRUE(first.ok()) << first.error().message;
+    EXPECT_EQ(first->run, 1);
+    EXPECT_EQ(first->first_frame, 0);
+    EXPECT_EQ(first->clock_offset_ns, 0);  // the first run's clock is the session's axis
+    EXPECT_EQ(first->start_ns, 5'000);
+    ASSERT_TRUE(store->append_event(id, {EventKind::Shown, 0, 1, 6'000, 3, -1, ""}).ok());
+    FrameRecord late = make_frame(4, 0);
+    late.display_time_ns = 9'000;
+    store->queue_frame(id, late);
+
+    const Result<RunStart> second =
+        store->begin_run(id, {.runtime = "simulated", .clock_start_ns = 100});
+    ASSERT_TRUE(second.ok()) << second.error().message;
+    EXPECT_EQ(second->run, 2);
+    EXPECT_EQ(second->first_frame, 5);
+    EXPECT_EQ(second->start_ns, 9'001);
+    EXPECT_EQ(second->clock_offset_ns, 8'901);
+    EXPECT_EQ(second->session_time(200), 9'101);
+    EXPECT_EQ(second->session_time(50), 9'001);  // nothing of a run before its start
+    EXPECT_EQ(store->frames(id)->size(), 1u);
+
+    const std::vector<RunRecord> runs = store->runs(id).value_or_throw();
+    ASSERT_EQ(runs.size(), 2u);
+    EXPECT_EQ(runs[0].run, 1);
+    EXPECT_EQ(runs[0].runtime, "none");  // the session's
+    EXPECT_EQ(runs[1].runtime, "simulated");
+    for (const RunRecord& r : runs) {
+        EXPECT_EQ(r.host, host_name());
+        EXPECT_EQ(r.pid, static_cast<long>(::getpid()));
+        EXPECT_EQ(r.started_utc.size(), 20u);
+    }
+    EXPECT_EQ(runs[1].first_frame, 5);
+    EXPECT_EQ(runs[1].clock_offset_ns, 8'901);
+    std::vector<std::int64_t> started;
+    for (const TrialEvent& e : store->events(id).value_or_throw()) {
+        if (e.kind != EventKind::RunStarted) continue;
+        EXPECT_EQ(e.trial_index, -1);
+        EXPECT_EQ(e.frame, -1);
+        started.push_back(e.time_ns);
+    }
+    EXPECT_EQ(started, (std::vector<std::int64_t>{5'000, 9'001}));
+
+    // A session that logged before runs were recorded (schema 7) had its run 1 then.
+    const std::int64_t older = begin(*store, "P02");
+    ASSERT_TRUE(store->append_event(older, {EventKind::Shown, 0, 1, 70, 2, -1, ""}).ok());
+    const RunStart resumed = store->begin_run(older, {.clock_start_ns = 0}).value_or_throw();
+    EXPECT_EQ(resumed.run, 2);
+    EXPECT_EQ(resumed.first_frame, 3);
+    EXPECT_EQ(resumed.start_ns, 71);
+
+    const Result<RunStart> unknown = store->begin_run(id + 10, {});
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_TRUE(contains(unknown.error().message, "no session")) << unknown.error().message;
+    EXPECT_FALSE(store->runs(id + 10).ok());
+}
+
+// The outcome says how many runs showed its trial; an undecided trial reads as 1.
+TEST_F(StudyStoreTest, AnOutcomeKeepsTheRunsThatShowedItsTrial) {
+    auto store = open_store();
+    const std::int64_t id = begin(*store, "P01");
+    TrialOutcome outcome;
+    outcome.choice = 2;
+    outcome.chosen_mode = RenderMode::Hybrid;  // trial 0 shows hybrid under label 2
+    outcome.switches = 7;
+    outcome.runs = 3;
+    ASSERT_TRUE(store->record_outcome(id, 0, outcome).ok());
+    outcome.runs = 0;
+    const Result<void> none = store->record_outcome(id, 1, outcome);
+    ASSERT_FALSE(none.ok());
+    EXPECT_TRUE(contains(none.error().message, "0 runs")) << none.error().message;
+    const std::vector<TrialRecord> trials = store->trials(id).value_or_throw();
+    EXPECT_EQ(trials[0].outcome.runs, 3);
+    EXPECT_EQ(trials[0].outcome.switches, 7);
+    EXPECT_FALSE(trials[1].decided);
+    EXPECT_EQ(trials[1].outcome.runs, 1);
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("SELECT runs FROM trials WHERE trial_index = 0"), 3);
+    EXPECT_EQ(raw.integer("SELECT runs FROM trials WHERE trial_index = 1"), 1);
 }
 
 TEST_F(StudyStoreTest, StoresTheSessionsRenderSettings) {
