@@ -6,6 +6,7 @@
 #include <set>
 
 #include "common/json_writer.h"
+#include "study/export_source.h"
 #include "study/staircase_estimates.h"
 
 namespace monoplane::study {
@@ -564,15 +565,31 @@ Result<void> export_trials(const StudyStore& store, ExportFormat format, std::os
 }
 
 Result<void> export_trials(const StudyStore& store, ExportFormat format,
-                           const std::filesystem::path& path, bool force) {
+                           const std::filesystem::path& path, bool force,
+                           const OutputWording& wording) {
+    const OutputWording word = wording ? wording : output_error;
     // Checked before anything is read or written: a refusal changes nothing.
-    MONOPLANE_TRY(check_output(path, export_output_kind(format), {store.path()}, force));
+    if (std::optional<OutputProblem> problem =
+            export_output_problem(path, format, store.path(), force))
+        return word(*problem);
     // Collected before the file is begun: a database error leaves no file behind at all.
     Result<ExportData> data = collect_export(store, format);
     MONOPLANE_TRY(data);
-    return write_file_atomically(path, [&](std::ostream& out) -> Result<void> {
-        write_export(*data, format, out);
-        return Ok{};
+    // Only the sessions read tell whether an earlier export there is of this study.
+    const ExportSource source = export_source(*data, format, store.path());
+    if (std::optional<OutputProblem> problem = export_source_problem(path, source, force))
+        return word(*problem);
+    return write_files_atomically({
+        {path,
+         [&](std::ostream& out) -> Result<void> {
+             write_export(*data, format, out);
+             return Ok{};
+         }},
+        {export_source_path(path),
+         [&](std::ostream& out) -> Result<void> {
+             write_export_source(source, out);
+             return Ok{};
+         }},
     });
 }
 

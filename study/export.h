@@ -81,13 +81,16 @@ void write_frames_csv(const ExportData& data, std::ostream& out);
 // One row per note, sessions in id order, each session's notes in the order they were noted.
 void write_notes_csv(const ExportData& data, std::ostream& out);
 
-// Collects and writes. The path form first checks `path` with check_output (the store's own
-// file is an input), then writes a temporary file beside `path` and renames
-// it over `path` only when complete, so a failure never leaves a truncated export and a refusal
-// changes nothing.
+// Collects and writes. The path form first checks `path` and the record of its source beside
+// it (`path`.source, study/export_source.h) with check_output's rules (the store's own file is an
+// input), collects, refuses an existing export of another study (OtherSource) unless `force`,
+// then writes both files beside their places and renames them there only when both are
+// complete, so a failure never leaves a truncated export and a refusal changes nothing.
+// Refusals are worded by `wording` (default: output_error, the library's words).
 Result<void> export_trials(const StudyStore& store, ExportFormat format, std::ostream& out);
 Result<void> export_trials(const StudyStore& store, ExportFormat format,
-                           const std::filesystem::path& path, bool force = false);
+                           const std::filesystem::path& path, bool force = false,
+                           const OutputWording& wording = {});
 
 // Building blocks, exposed for tests and other writers.
 // RFC 4180: a field with a comma, double quote, CR or LF is quoted, inner quotes doubled.

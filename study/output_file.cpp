@@ -167,21 +167,26 @@ std::optional<OutputProblem> output_problem(const fs::path& out, const OutputKin
     return folder_problem(out);
 }
 
+Error output_error(const OutputProblem& problem) {
+    switch (problem.refusal) {
+        case OutputRefusal::NoName:
+            return Error{problem.what};
+        case OutputRefusal::IsAnInput:
+        case OutputRefusal::IsADatabase:
+            return Error{problem.what + ", even when forced. Nothing was written."};
+        case OutputRefusal::NotAnEarlierOutput:
+        case OutputRefusal::OtherSource:
+            return Error{problem.what + "; it is replaced only when forced. Nothing was written."};
+        default:
+            return Error{problem.what + ". Nothing was written."};
+    }
+}
+
 Result<void> check_output(const fs::path& out, const OutputKind& kind,
                           const std::vector<fs::path>& inputs, bool force) {
     const std::optional<OutputProblem> problem = output_problem(out, kind, inputs, force);
     if (!problem) return Ok{};
-    switch (problem->refusal) {
-        case OutputRefusal::NoName:
-            return Error{problem->what};
-        case OutputRefusal::IsAnInput:
-        case OutputRefusal::IsADatabase:
-            return Error{problem->what + ", even when forced. Nothing was written."};
-        case OutputRefusal::NotAnEarlierOutput:
-            return Error{problem->what + "; it is replaced only when forced. Nothing was written."};
-        default:
-            return Error{problem->what + ". Nothing was written."};
-    }
+    return output_error(*problem);
 }
 
 namespace {
@@ -275,34 +280,70 @@ void sync_folder(const fs::path& folder) {
     ::close(fd);
 }
 
-}  // namespace
+// A file written beside its place, complete and on disk, waiting to be renamed there.
+struct Staged {
+    fs::path target;     // where it goes (a symbolic link's file, not the link)
+    fs::path temporary;  // where it is now
+};
 
-Result<void> write_file_atomically(const fs::path& out,
-                                   const std::function<Result<void>(std::ostream&)>& write) {
+// Through a symbolic link to an existing file: that file is replaced, the link kept.
+fs::path replaced_target(const fs::path& out) {
     std::error_code ec;
-    // Through a symbolic link to an existing file: replace that file, keep the link.
-    const fs::path target = fs::is_symlink(fs::symlink_status(out, ec)) && fs::exists(out, ec)
-                                ? fs::canonical(out, ec)
-                                : out;
+    if (fs::is_symlink(fs::symlink_status(out, ec)) && fs::exists(out, ec))
+        return fs::canonical(out, ec);
+    return out;
+}
+
+// Writes one file beside its place; on failure nothing of it is left.
+Result<Staged> stage(const FileWrite& file) {
+    const fs::path target = replaced_target(file.out);
     Result<std::pair<int, fs::path>> temporary = create_temporary(target);
     MONOPLANE_TRY(temporary);
     const auto [fd, temporary_path] = *temporary;
     struct stat existing {};
     if (::stat(target.c_str(), &existing) == 0) ::fchmod(fd, existing.st_mode & 07777);
-    Result<void> filled = fill(fd, target, write);
+    Result<void> filled = fill(fd, target, file.write);
     if (::close(fd) != 0 && filled) {
         filled = Error{"writing " + quoted(target) + " failed: " + std::strerror(errno)};
     }
-    if (filled && std::rename(temporary_path.c_str(), target.c_str()) != 0) {
-        filled = Error{"cannot move the new file into place at " + quoted(target) + ": " +
-                       std::strerror(errno) + "; it was left as it was."};
-    }
     if (!filled) {
         ::unlink(temporary_path.c_str());
-        return filled;
+        return filled.error();
     }
-    sync_folder(target.parent_path());
-    return Ok{};
+    return Staged{target, temporary_path};
+}
+
+}  // namespace
+
+Result<void> write_file_atomically(const fs::path& out,
+                                   const std::function<Result<void>(std::ostream&)>& write) {
+    return write_files_atomically({FileWrite{out, write}});
+}
+
+Result<void> write_files_atomically(const std::vector<FileWrite>& files) {
+    std::vector<Staged> staged;
+    Result<void> done = Ok{};
+    for (const FileWrite& file : files) {
+        Result<Staged> one = stage(file);
+        if (!one) {
+            done = one.error();
+            break;
+        }
+        staged.push_back(*one);
+    }
+    for (std::size_t i = 0; done && i < staged.size(); ++i) {
+        if (std::rename(staged[i].temporary.c_str(), staged[i].target.c_str()) != 0) {
+            done = Error{"cannot move the new file into place at " + quoted(staged[i].target) +
+                         ": " + std::strerror(errno) + "; it was left as it was."};
+        } else {
+            sync_folder(staged[i].target.parent_path());
+            staged[i].temporary.clear();
+        }
+    }
+    // Whatever was not renamed is not wanted: no temporary file stays behind.
+    for (const Staged& s : staged)
+        if (!s.temporary.empty()) ::unlink(s.temporary.c_str());
+    return done;
 }
 
 }  // namespace monoplane::study

@@ -13,7 +13,9 @@
 //   header bytes, whatever its name); a folder or anything that is not a regular file;
 // - unless `force`: any other existing file that is not an earlier output of the same kind (a
 //   protocol, notes, another format's export), told by its first bytes;
-// and says so when the folder the output goes into does not exist. Its messages speak of the
+// and says so when the folder the output goes into does not exist. Whether an earlier output
+// came from the same inputs is the command's to tell (an export's is study/export_source.h),
+// after it has read them; it refuses with OutputRefusal::OtherSource. Its messages speak of the
 // output and of forcing; a command that names them otherwise (the CLI's --out and --force) asks
 // output_problem() and words the refusal itself.
 #pragma once
@@ -48,6 +50,7 @@ enum class OutputRefusal {
     NotAFile,            // a folder, or something else that is not a regular file
     Unreadable,          // it exists and cannot be read to tell what it is
     NotAnEarlierOutput,  // another file: replaced only when forced
+    OtherSource,         // an earlier output of other inputs (another study's): only when forced
     NoFolder,            // the folder it goes into does not exist
     FolderIsNoFolder,    // what should be its folder is something else
 };
@@ -67,8 +70,14 @@ std::optional<OutputProblem> output_problem(const std::filesystem::path& out,
                                             const std::vector<std::filesystem::path>& inputs,
                                             bool force);
 
-// output_problem() as an Error: its `what`, whether forcing would help, and that nothing was
-// written.
+// A refusal in the library's own words: its `what`, whether forcing would help, and that
+// nothing was written. Pure; any time.
+Error output_error(const OutputProblem& problem);
+
+// How a caller words a refusal for its users (the CLI's names --out and --force).
+using OutputWording = std::function<Error(const OutputProblem&)>;
+
+// output_problem() as an Error, worded by output_error().
 Result<void> check_output(const std::filesystem::path& out, const OutputKind& kind,
                           const std::vector<std::filesystem::path>& inputs, bool force);
 
@@ -84,5 +93,17 @@ bool is_sqlite_file(const std::filesystem::path& path);
 // it points to is replaced and the link stays.
 Result<void> write_file_atomically(const std::filesystem::path& out,
                                    const std::function<Result<void>(std::ostream&)>& write);
+
+// One file of write_files_atomically: where, and what goes in it.
+struct FileWrite {
+    std::filesystem::path out;
+    std::function<Result<void>(std::ostream&)> write;
+};
+
+// Several files that belong together (an export and the record of its source): each is written
+// whole beside its place and flushed as write_file_atomically does, and only when all of them
+// are complete are they renamed into place, in the order given. A failure before the renames
+// leaves every file as it was and no temporary file behind.
+Result<void> write_files_atomically(const std::vector<FileWrite>& files);
 
 }  // namespace monoplane::study

@@ -18,6 +18,7 @@ Error output_option_error(const study::OutputProblem& problem) {
         case OutputRefusal::NotAFile:
             return Error{what + "; --out must name a file." + nothing};
         case OutputRefusal::NotAnEarlierOutput:
+        case OutputRefusal::OtherSource:
             return Error{what + ". Give --force to replace it, or choose another --out." + nothing};
         case OutputRefusal::NoFolder:
             return Error{what + "; create it first or choose another --out." + nothing};
