@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "app/commands/option_wording.h"
-#include "app/commands/output_directory.h"
+#include "app/commands/output_folder.h"
 #include "app/commands/study_rows.h"
 #include "charts/png/svg_to_png.h"
 #include "study/export.h"
@@ -127,13 +127,32 @@ Result<analysis::Dataset> read_inputs(const AnalyzeRequest& r) {
     return merged;
 }
 
-// prepare_output_directory() reports by UserError, as the commands want; here it is a Result.
-Result<std::filesystem::path> output_directory(const std::filesystem::path& out) {
-    try {
-        return prepare_output_directory("--out", out.string());
-    } catch (const UserError& e) {
-        return Error{e.what()};
+// What analyze leaves in its output folder to say that the folder is its own.
+const FolderWriter kAnalysisFolder{".monoplane-analysis", "analyze"};
+
+// The report, the tables and the figures (SVG, and PNG at twice their size: sharp on slides and
+// in print) into `dir`.
+Result<void> write_outputs(AnalysisWritten& done, const std::filesystem::path& dir) {
+    const std::vector<analysis::report::Figure> figures =
+        analysis::report::report_figures(done.results);
+    Result<analysis::report::WrittenReport> written =
+        analysis::report::write_report(done.results, figures, dir);
+    MONOPLANE_TRY(written);
+    done.written = std::move(written).value();
+    for (const analysis::report::Figure& figure : figures) {
+        const std::filesystem::path png = dir / "figures" / (figure.name + ".png");
+        MONOPLANE_TRY(charts::write_svg_as_png(figure.svg, png, 2.0));
+        done.pngs.push_back(png);
     }
+    return Ok{};
+}
+
+// The written files' paths in the staged folder, as they are once it is in place.
+void move_paths(AnalysisWritten& done, const StagedFolder& staged) {
+    analysis::report::WrittenReport& w = done.written;
+    for (std::filesystem::path* path : {&w.html, &w.json}) *path = staged.final_path(*path);
+    for (auto* list : {&w.tables, &w.figures, &done.pngs})
+        for (std::filesystem::path& path : *list) path = staged.final_path(path);
 }
 
 }  // namespace
@@ -145,30 +164,23 @@ Result<AnalysisWritten> run_analysis(const AnalyzeRequest& request) {
             "--csv FILE (`monoplane study export --format csv`)"};
     }
     MONOPLANE_TRY(check_distinct(request));
-    // Inputs first: a refusal (a shared code, a bad file) leaves no output directory behind.
+    // A folder that may not be replaced is refused before the inputs are read.
+    MONOPLANE_TRY(check_output_folder(request.out, kAnalysisFolder, request.force));
+    // Inputs next: a refusal (a shared code, a bad file) leaves no output folder behind.
     Result<analysis::Dataset> data = read_inputs(request);
     MONOPLANE_TRY(data);
-    Result<std::filesystem::path> out = output_directory(request.out);
-    MONOPLANE_TRY(out);
+    Result<StagedFolder> staged = StagedFolder::create(request.out, kAnalysisFolder, request.force);
+    MONOPLANE_TRY(staged);
 
     analysis::report::ReportOptions options;
     options.logistic.log2_distance = request.log2_distance;
     options.logistic.scene_terms = !request.no_scene_terms;
     AnalysisWritten done;
-    done.out = *out;
+    done.out = request.out;
     done.results = analysis::report::analyse(*data, options);
-    const std::vector<analysis::report::Figure> figures =
-        analysis::report::report_figures(done.results);
-    Result<analysis::report::WrittenReport> written =
-        analysis::report::write_report(done.results, figures, *out);
-    MONOPLANE_TRY(written);
-    done.written = std::move(written).value();
-    for (const analysis::report::Figure& figure : figures) {
-        // Twice the SVG's size: sharp on slides and in print.
-        const std::filesystem::path png = *out / "figures" / (figure.name + ".png");
-        MONOPLANE_TRY(charts::write_svg_as_png(figure.svg, png, 2.0));
-        done.pngs.push_back(png);
-    }
+    MONOPLANE_TRY(write_outputs(done, staged->path()));
+    MONOPLANE_TRY(staged.value().commit());
+    move_paths(done, *staged);
     done.html = std::filesystem::absolute(done.written.html);
     return done;
 }

@@ -18,9 +18,12 @@ namespace monoplane::app {
 struct AnalyzeRequest {
     std::vector<std::filesystem::path> dbs;   // study databases (`--db`)
     std::vector<std::filesystem::path> csvs;  // CSV exports (`--csv`)
-    std::filesystem::path out;                // output directory, created if needed (`--out`)
-    bool log2_distance = false;               // `--log2-distance`
-    bool no_scene_terms = false;              // `--no-scene-terms`
+    // The output folder (`--out`): written beside its place and renamed there whole; an existing
+    // one only when it holds nothing but an earlier analysis (app/commands/output_folder.h).
+    std::filesystem::path out;
+    bool force = false;           // `--force`: write among files analyze did not write
+    bool log2_distance = false;   // `--log2-distance`
+    bool no_scene_terms = false;  // `--no-scene-terms`
     analysis::SharedCodes codes = analysis::SharedCodes::Refuse;  // `--codes`
     // Told each input as it is read ("read FILE: N trials, ..."); may be empty.
     std::function<void(const std::string&)> on_read;
@@ -35,11 +38,11 @@ struct AnalysisWritten {
 };
 
 // Runs the analysis of `request` and writes its files. May be called at any time, also while a
-// session writes to one of the databases (it reads what is committed). Inputs are read and
-// checked before anything is written, so a refusal leaves no output directory behind. Errors
-// (no input, a file given twice, a missing or unreadable file, a participant code several inputs
-// hold without `codes` saying what it means, an unwritable output directory) name the option
-// and the file.
+// session writes to one of the databases (it reads what is committed). The output folder and the
+// inputs are checked before anything is written, so a refusal leaves no output folder behind.
+// Errors (no input, a file given twice, a missing or unreadable file, a participant code several
+// inputs hold without `codes` saying what it means, an output folder that holds files analyze did
+// not write without `force`, one that cannot be written) name the option and the file.
 Result<AnalysisWritten> run_analysis(const AnalyzeRequest& request);
 
 }  // namespace monoplane::app

@@ -25,6 +25,7 @@ struct AnalyzeOptions {
     std::vector<std::string> dbs;
     std::vector<std::string> csvs;
     std::string out;
+    bool force = false;
     bool log2_distance = false;
     bool no_scene_terms = false;
     std::string codes;  // --codes: "" (refuse shared codes), same-person or per-database
@@ -57,6 +58,7 @@ void run_analyze(const AnalyzeOptions& o) {
     request.dbs.assign(o.dbs.begin(), o.dbs.end());
     request.csvs.assign(o.csvs.begin(), o.csvs.end());
     request.out = o.out;
+    request.force = o.force;
     request.log2_distance = o.log2_distance;
     request.no_scene_terms = o.no_scene_terms;
     request.codes = shared_codes_rule(o.codes);
@@ -107,7 +109,13 @@ void add_analyze_command(CLI::App& root, const GlobalOptions&) {
                     "Trial export of `monoplane study export --format csv`; "
                     "repeatable")
         ->take_all();
-    cmd->add_option("--out", o->out, "Output directory")->required();
+    cmd->add_option("--out", o->out,
+                    "Output folder: a new one, or an earlier analysis's, which is replaced whole "
+                    "(no file of it stays); one that holds other files is refused without --force")
+        ->required();
+    cmd->add_flag("--force", o->force,
+                  "Write into an --out that holds files analyze did not write: files of the same "
+                  "names are replaced, the others kept");
     cmd->add_flag("--log2-distance", o->log2_distance,
                   "Regress on log2 of the mono-plane distance instead of metres");
     cmd->add_flag("--no-scene-terms", o->no_scene_terms,
