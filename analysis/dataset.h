@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -90,6 +91,11 @@ struct SessionRow {
     // The participant's variables (protocol [[variables]]) as (name, value), in declaration
     // order; variables not given are left out.
     std::vector<std::pair<std::string, std::string>> variables;
+    // The variables' types where the input records them (a database: the protocol's
+    // declarations; a CSV export does not): true for integer and number, false for choice and
+    // text. summary.json writes a variable as a JSON number when no session records another type
+    // for it and every value is a number.
+    std::map<std::string, bool> variable_is_number;
     std::vector<NoteRow> notes;
 };
 

@@ -63,6 +63,18 @@ std::vector<ParticipantDetail> participant_details(const std::vector<SessionRow>
     return out;
 }
 
+// Whether summary.json writes the variable `name` as a number: no session records a type other
+// than integer or number for it, and every value it has is a number as JSON writes one.
+bool is_number_variable(const std::vector<SessionRow>& sessions, const std::string& name) {
+    for (const SessionRow& s : sessions) {
+        const auto type = s.variable_is_number.find(name);
+        if (type != s.variable_is_number.end() && !type->second) return false;
+        for (const auto& [variable, value] : s.variables)
+            if (variable == name && !is_json_number(value)) return false;
+    }
+    return true;
+}
+
 std::string numbers_text(const std::vector<int>& numbers) {
     std::string out;
     for (int n : numbers) out += (out.empty() ? "" : ", ") + std::to_string(n);
@@ -80,6 +92,8 @@ StudyDay study_day(const Dataset& data) {
         if (!s.notes.empty())
             day.notes.push_back({s.participant, s.session_number, s.source, s.notes});
     }
+    for (const std::string& name : day.variable_names)
+        day.variable_is_number.push_back(is_number_variable(data.sessions, name));
     day.participants = participant_details(data.sessions, day.variable_names);
     day.counterbalancing = counterbalancing(data.sessions);
     return day;
@@ -237,6 +251,8 @@ void participant_json(JsonWriter& json, const StudyDay& day, const ParticipantDe
     for (std::size_t i = 0; i < day.variable_names.size(); ++i) {
         if (p.values[i].empty()) {
             json.null(day.variable_names[i]);
+        } else if (day.variable_is_number[i] && is_json_number(p.values[i])) {
+            json.formatted_number(day.variable_names[i], p.values[i]);
         } else {
             json.value(day.variable_names[i], p.values[i]);
         }

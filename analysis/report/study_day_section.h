@@ -39,6 +39,9 @@ struct StudyDay {
     SharedCodes codes = SharedCodes::Refuse;  // the rule that joined the inputs' codes
     std::vector<std::string> shared_codes;    // codes held by more than one input (before prefixes)
     std::vector<std::string> variable_names;  // in the order the inputs declare them
+    // One per variable_names: written to summary.json as a JSON number (protocol type integer
+    // or number; from a CSV export, which does not record types, every value a number).
+    std::vector<bool> variable_is_number;
     std::vector<ParticipantDetail> participants;  // by code; empty without session information
     std::vector<SessionNotes> notes;              // sessions with notes, in reading order
     Counterbalancing counterbalancing;
@@ -57,7 +60,9 @@ std::string counterbalancing_html(const StudyDay& day);
 std::string codes_note_html(const StudyDay& day);
 
 // Writes "participant_codes", "counterbalancing", "participant_details" and "notes" into an
-// open JSON object (docs/analysis.md, summary.json); rows and participant numbers from 1.
+// open JSON object (docs/analysis.md, summary.json); rows and participant numbers from 1. A
+// variable of variable_is_number is a JSON number (as the value's text: every digit kept), any
+// other a string, one not given null.
 void study_day_json(JsonWriter& json, const StudyDay& day);
 
 }  // namespace monoplane::analysis::report

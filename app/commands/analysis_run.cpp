@@ -35,7 +35,11 @@ analysis::SessionRow session_row(const study::SessionInfo& info, const std::stri
         if (protocol->first_scene == study::FirstSceneBalance::LatinSquare && s.scenes > 0)
             s.latin_square_rows = study::balanced_latin_square_rows(s.scenes);
     }
-    for (const study::VariableValue& v : info.variables) s.variables.emplace_back(v.name, v.value);
+    for (const study::VariableValue& v : info.variables) {
+        s.variables.emplace_back(v.name, v.value);
+        s.variable_is_number[v.name] =
+            v.type == study::VariableType::Integer || v.type == study::VariableType::Number;
+    }
     for (const study::SessionNote& note : info.notes) {
         s.notes.push_back({note.noted_utc, note.trial_index,
                            std::string(study::note_source_name(note.source)), note.text});
