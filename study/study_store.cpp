@@ -885,7 +885,7 @@ Result<void> StudyStore::record_stimulus(std::int64_t session_id, const Schedule
     return impl_->commit_written(tx.value(), "recording a staircase's choice");
 }
 
-Result<void> StudyStore::add_note(std::int64_t session_id, const SessionNote& note) {
+Result<void> StudyStore::check_note(std::int64_t session_id, const SessionNote& note) const {
     const std::string where =
         "note for session " + std::to_string(session_id) + " in '" + impl_->db.path() + "'";
     if (note.text.find_first_not_of(" \t\r\n") == std::string::npos)
@@ -898,6 +898,11 @@ Result<void> StudyStore::add_note(std::int64_t session_id, const SessionNote& no
                      " ns is negative"};
     if (note.trial_index && *note.trial_index < 0)
         return Error{where + ": trial " + std::to_string(*note.trial_index) + " is negative"};
+    return impl_->require_session(session_id);
+}
+
+Result<void> StudyStore::add_note(std::int64_t session_id, const SessionNote& note) {
+    MONOPLANE_TRY(check_note(session_id, note));
     SessionNote stamped = note;
     if (stamped.noted_utc.empty()) stamped.noted_utc = utc_now_iso8601();
     // Durable at once, with the frames queued so far: the note is as safe as a decision.

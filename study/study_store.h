@@ -240,6 +240,8 @@ class StudyStore final : public SessionLog {
     // set), durable when it returns. Refuses an empty or blank note, one over 10,000 characters
     // and an unknown session.
     Result<void> add_note(std::int64_t session_id, const SessionNote& note);
+    // add_note's refusals without writing (also through a read-only store).
+    Result<void> check_note(std::int64_t session_id, const SessionNote& note) const;
     // A note from the software (NoteSource::Software, no session time).
     Result<void> add_session_note(std::int64_t session_id, const std::string& text);
     // A run of the session begins (SessionLog::begin_run): its row in session_runs, stamped with

@@ -128,25 +128,42 @@ void list_study(const StudyOptions& o) {
     print_roster_table(entries, databases.size() > 1);
 }
 
-void note_study(const StudyOptions& o) {
-    auto store = study::StudyStore::open_existing(o.db).value_or_throw();
+namespace {
+
+// Which session a note is for (--session-id, or --participant with --session).
+std::int64_t session_for_note(const study::StudyStore& store, const StudyOptions& o) {
     std::int64_t session_id = 0;
     if (o.session_id) {
         check_session_id_alone(o);
         session_id = *o.session_id;
-        store->session(session_id).value_or_throw();  // an unknown id is an error naming it
+        store.session(session_id).value_or_throw();  // an unknown id is an error naming it
     } else {
         if (o.participant.empty())
             throw UserError(
                 "say which session the note is for: --participant CODE [--session N] (N: "
                 "that participant's session number) or --session-id ID (study list shows both)");
-        const study::ParticipantRecord record = participant_record(*store, o);
+        const study::ParticipantRecord record = participant_record(store, o);
         session_id = participant_session_id(
             record, o, o.session_number.value_or(record.next_session_number() - 1));
     }
+    return session_id;
+}
+
+}  // namespace
+
+void note_study(const StudyOptions& o) {
     study::SessionNote note;
     note.text = o.note;
     note.source = study::NoteSource::Command;
+    // Judged on a snapshot first: a refused note writes nothing (an older schema is migrated
+    // only by a note that is stored).
+    const std::int64_t session_id = [&] {
+        auto snapshot = study::StudyStore::open_read_only(o.db).value_or_throw();
+        const std::int64_t id = session_for_note(*snapshot, o);
+        snapshot->check_note(id, note).value_or_throw();
+        return id;
+    }();
+    auto store = study::StudyStore::open_existing(o.db).value_or_throw();
     store->add_note(session_id, note).value_or_throw();
     std::cerr << "note stored for session " << session_id << "\n";
 }

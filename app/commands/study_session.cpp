@@ -160,7 +160,12 @@ void run_study(const StudyOptions& o, const GlobalOptions& global) {
     // session, and the digests go into the session's row with it.
     ImportedStudyScenes imported =
         load_imported_scenes(protocol.scene_files, protocol.source).value_or_throw();
-    if (!std::filesystem::exists(o.db)) plan(o, protocol, nullptr);  // refuse before creating
+    // Refused before anything is written: before a missing file is created, and before an
+    // existing one is opened for writing (which would migrate an older schema).
+    if (!std::filesystem::exists(o.db))
+        plan(o, protocol, nullptr);
+    else
+        plan(o, protocol, study::StudyStore::open_read_only(o.db).value_or_throw().get());
     auto store = study::StudyStore::open(o.db).value_or_throw();
     study::SessionStart start = plan(o, protocol, store.get());
     study::SessionInfo& info = start.info;
@@ -246,13 +251,20 @@ std::int64_t session_to_resume(const StudyOptions& o, const study::StudyStore& s
 
 void resume_study(const StudyOptions& o, const GlobalOptions& global) {
     check_headset(o.headset);
+    // Which session, judged on a snapshot first: a refused resume writes nothing (an older
+    // schema is migrated only by a resume that goes ahead).
+    const std::int64_t session_id = [&] {
+        auto snapshot = study::StudyStore::open_read_only(o.db).value_or_throw();
+        const std::int64_t id = session_to_resume(o, *snapshot);
+        const study::SessionInfo found = snapshot->session(id).value_or_throw();
+        if (found.status == study::SessionStatus::Completed) {
+            throw UserError("session " + std::to_string(id) + " (" + session_title(found) +
+                            ") is already completed");
+        }
+        return id;
+    }();
     auto store = study::StudyStore::open_existing(o.db).value_or_throw();
-    const std::int64_t session_id = session_to_resume(o, *store);
     const study::SessionInfo info = store->session(session_id).value_or_throw();
-    if (info.status == study::SessionStatus::Completed) {
-        throw UserError("session " + std::to_string(session_id) + " (" + session_title(info) +
-                        ") is already completed");
-    }
     // A session another process is running is never taken over: its participant is in the
     // headset. The hold is the operating system's, so a dead process's session resumes at once.
     study::SessionHold hold = study::SessionHold::acquire(o.db, session_id).value_or_throw();
