@@ -143,12 +143,13 @@ void add_export_command(CLI::App* study, const std::shared_ptr<StudyOptions>& op
                     "sessions) or notes-csv (the sessions' notes)")
         ->capture_default_str();
     exp->add_option("--out", options->out,
-                    "Output file: written beside and renamed into place; never a database, and "
-                    "an existing file only if it is an earlier export of the same format")
+                    "Output file: written beside and renamed into place, with FILE.source (the "
+                    "study it came from) beside it; never a database, and an existing file only "
+                    "if it is an earlier export of the same format and study")
         ->required();
     exp->add_flag("--force", options->force,
-                  "Replace an existing --out that is not an earlier export of this format "
-                  "(never a database)");
+                  "Replace an existing --out that is not an earlier export of this format, or "
+                  "is another study's (never a database)");
     exp->callback([options] { export_study(*options); });
 }
 
