@@ -563,6 +563,14 @@ Result<Protocol> parse_protocol(std::string_view toml_text, std::string_view sou
 Result<Protocol> load_protocol(const std::filesystem::path& path) {
     Result<std::string> text = read_text_file(path);
     MONOPLANE_TRY(text);
+    // The two files most often given by mistake, named as what they are rather than as TOML
+    // that lacks every key.
+    if (text->empty())
+        return Error{path.string() + " is 0 bytes: not a protocol (a TOML file, docs/protocols.md)"};
+    if (text->starts_with(std::string_view("SQLite format 3\0", 16)))
+        return Error{path.string() +
+                     " is a SQLite database (a study database?), not a protocol: give the "
+                     "protocol's .toml file"};
     return parse_protocol(*text, path.string(), path.parent_path());
 }
 

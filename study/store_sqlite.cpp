@@ -52,8 +52,9 @@ Error Connection::error(int rc, std::string_view what) const {
             return Error{file + " is not a SQLite database (" + detail +
                          "); give a new file name or an existing monoplane study database."};
         case SQLITE_CORRUPT:
-            return Error{"study database " + file + " is corrupt (" + detail + ") while " + doing +
-                         "; restore it from a backup."};
+            return Error{"study database " + file + " is damaged (" + detail + ") while " + doing +
+                         "; nothing was written. Restore it from a backup or the lab PC's "
+                         "original."};
         case SQLITE_READONLY:
             return Error{"study database " + file + " is read-only (" + detail + ") while " +
                          doing + "; check the file's and the directory's permissions."};

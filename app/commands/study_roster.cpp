@@ -110,7 +110,8 @@ void export_study(const StudyOptions& o) {
     check_output_option(o.out, export_option_kind(format), {o.db}, o.force).value_or_throw();
     auto store = study::StudyStore::open_read_only(o.db).value_or_throw();
     // Written to a temporary file and renamed: a failed export leaves no truncated file.
-    study::export_trials(*store, format, std::filesystem::path(o.out), o.force).value_or_throw();
+    study::export_trials(*store, format, std::filesystem::path(o.out), o.force, output_option_error)
+        .value_or_throw();
     std::cerr << "wrote " << o.out << "\n";
 }
 

@@ -238,7 +238,7 @@ TEST_F(OutputsCli, AnExportReplacesOnlyAnExportOfTheSameStudy) {
                        "' is a csv export of another study: 2 of its 2 sessions are not in this "
                        "database: " +
                        sessions[0] + ", " + sessions[1] +
-                       "; it is replaced only when forced. Nothing was written.\n");
+                       ". Give --force to replace it, or choose another --out. Nothing was written.\n");
     EXPECT_EQ(read_file(csv), csv_bytes);
     EXPECT_EQ(read_file(record), record_bytes);
     // The same study with a session more, and a copy of its database elsewhere: replaced.
@@ -274,7 +274,7 @@ TEST_F(OutputsCli, AJsonExportWithoutItsRecordIsReplacedOnlyWhenForced) {
                        "' is a json export that does not record which study it came from ('" +
                        json.string() +
                        ".source' is missing: it was written by an older monoplane, or copied "
-                       "without it); it is replaced only when forced. Nothing was written.\n");
+                       "without it). Give --force to replace it, or choose another --out. Nothing was written.\n");
     EXPECT_EQ(read_file(json), bytes);
     EXPECT_FALSE(fs::exists(dir_ / "site.json.source"));
     ASSERT_EQ(export_to("three.sqlite", "json", json.string(), true, &log), 0) << log;

@@ -224,7 +224,7 @@ TEST_F(StudyIntegrityTest, ADamagedPageIsRefusedBeforeAnythingReadsIt) {
         ASSERT_FALSE(store.ok());
         const std::string& message = store.error().message;
         EXPECT_TRUE(message.find("is damaged") != std::string::npos ||
-                    message.find("is corrupt") != std::string::npos)
+                    message.find("is damaged (") != std::string::npos)
             << message;
         EXPECT_EQ(fingerprint(db_), before);
     }
