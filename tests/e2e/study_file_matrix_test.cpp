@@ -91,7 +91,7 @@ std::vector<Row> rows() {
     return {
         {"missing", "no such file",
          with(all("refused: no study database"),
-              {{"run", "done"}, {"protocol check", "refused: cannot"}})},
+              {{"run", "done"}, {"protocol check", "refused: cannot open protocol file"}})},
         {"0 bytes", "an empty file (a failed copy)",
          with(all("refused: is 0 bytes: not a study database"),
               {{"protocol check", "refused: not a protocol"}})},

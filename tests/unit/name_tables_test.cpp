@@ -118,8 +118,8 @@ TEST(RenderModeNames, AntiAliasingRoundTripsThroughTheSharedTable) {
 // The stored event names: one per kind, each read back as its kind; screen kinds after trial kinds.
 TEST(EventKindNames, EveryKindRoundTrips) {
     using study::EventKind;
-    const int count = static_cast<int>(EventKind::EndShown) + 1;
-    EXPECT_EQ(count, 14);
+    const int count = static_cast<int>(EventKind::RunStarted) + 1;
+    EXPECT_EQ(count, 18);
     std::set<std::string_view> names;
     for (int k = 0; k < count; ++k) {
         const auto kind = static_cast<EventKind>(k);
@@ -132,6 +132,8 @@ TEST(EventKindNames, EveryKindRoundTrips) {
     EXPECT_EQ(study::event_kind_name(EventKind::InstructionsConfirmed), "instructions_confirmed");
     EXPECT_EQ(study::event_kind_name(EventKind::BreakStarted), "break_started");
     EXPECT_EQ(study::event_kind_name(EventKind::EndShown), "end_shown");
+    EXPECT_EQ(study::event_kind_name(EventKind::SessionAbandoned), "session_abandoned");
+    EXPECT_EQ(study::event_kind_name(EventKind::ProtocolTextChanged), "protocol_text_changed");
     EXPECT_EQ(study::event_kind_name(static_cast<EventKind>(count)), "unknown");
     EXPECT_EQ(study::parse_event_kind("Shown"), std::nullopt);
     EXPECT_EQ(study::parse_event_kind("unknown"), std::nullopt);
