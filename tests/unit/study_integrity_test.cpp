@@ -4,7 +4,9 @@
 // file with one line and nothing written; migration keeps a copy of the original; and a
 // participant has one live session, whoever races to start it.
 #include <gtest/gtest.h>
+#include <sched.h>
 #include <sqlite3.h>
+#include <sys/mount.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -290,6 +292,34 @@ TEST_F(StudyIntegrityTest, AFileOfMode0444InAFolderOfMode0555IsRead) {
         EXPECT_NE(writer.error().message.find("is read-only for you"), std::string::npos)
             << writer.error().message;
     }
+}
+
+// On a read-only mount (an archive, a CD) even root cannot write: the study reads, the writers
+// say why they cannot. In a child with its own mount namespace; skipped where none can be made.
+TEST_F(StudyIntegrityTest, AStudyOnAReadOnlyMountIsReadAndNotWritten) {
+    make_study(SessionStatus::Running);
+    const auto before = fingerprint(db_);
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        if (::unshare(CLONE_NEWNS) != 0 ||
+            ::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0 ||
+            ::mount(dir_.c_str(), dir_.c_str(), nullptr, MS_BIND, nullptr) != 0 ||
+            ::mount(nullptr, dir_.c_str(), nullptr, MS_REMOUNT | MS_BIND | MS_RDONLY, nullptr) != 0)
+            std::_Exit(77);
+        auto reader = StudyStore::open_read_only(db_);
+        if (!reader.ok() || (*reader)->roster()->size() != 1) std::_Exit(1);
+        auto writer = StudyStore::open_existing(db_);
+        if (writer.ok() || writer.error().message.find("is read-only for you") == std::string::npos)
+            std::_Exit(2);
+        std::_Exit(0);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status));
+    if (WEXITSTATUS(status) == 77) GTEST_SKIP() << "no mount namespace here (not root?)";
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "1: not read; 2: a writer not refused as read-only";
+    EXPECT_EQ(fingerprint(db_), before);
 }
 
 // --- Older schemas ----------------------------------------------------------------------------
