@@ -82,8 +82,20 @@ Result<std::unique_ptr<LiveSession>> LiveSession::begin(
         if (session->staircases_) session->staircases_->record(r->trial, r->outcome);
         session->last_trial_shown_ = r->trial.index;
     }
+    // A trial an interruption cut short keeps what its earlier runs showed.
+    for (const auto& [index, runs] : trial_runs(events, frames))
+        if (!session->decided_.contains(index)) session->earlier_runs_.emplace(index, runs);
     session->resume_screens(events, frames);
     return session;
+}
+
+Result<void> LiveSession::begin_run(const RunInfo& info) {
+    Result<RunStart> run = log_.begin_run(session_id_, info);
+    MONOPLANE_TRY(run);
+    run_ = *run;
+    committed("run " + std::to_string(run_.run) + " started t " + std::to_string(run_.start_ns) +
+              " frame " + std::to_string(run_.first_frame));
+    return Ok{};
 }
 
 LiveSession::LiveSession(SessionLog& log, std::int64_t session_id, const Protocol& protocol,
@@ -210,7 +222,10 @@ Result<void> LiveSession::start_next_trial(std::int64_t time_ns) {
         committed("questionnaire");
         return Ok{};
     }
-    machine_.emplace(schedule_.trials[next_trial_], protocol_.require_both_viewed);
+    const ScheduledTrial& trial = schedule_.trials[next_trial_];
+    const auto earlier = earlier_runs_.find(trial.index);
+    machine_.emplace(trial, protocol_.require_both_viewed,
+                     earlier == earlier_runs_.end() ? TrialRuns{} : earlier->second);
     ++next_trial_;
     trial_number_ = static_cast<int>(next_trial_);
     last_trial_shown_ = machine_->trial().index;

@@ -9,12 +9,20 @@
 // call that caused it, so it is durable before the next frame starts.
 //
 // Time: the caller passes the monotonic time of each request and of each presented frame (in a
-// headset session, the runtime's predicted display time). A requested change of label or screen
-// becomes visible with the next presented frame, whose index the events carry.
+// headset session, the runtime's predicted display time) on the session's time axis: the run's
+// clock through session_time() once begin_run() placed the run. A requested change of label or
+// screen becomes visible with the next presented frame, whose index the events carry; the run's
+// frames are numbered from run().first_frame on, after every frame an earlier run used.
+//
+// Resumed: a trial an interruption cut short is shown again from label 1, and its outcome counts
+// what every run showed of it (trial_runs.h); a break cut short is shown again, its start logged
+// again, for what is left of its minimum.
 #pragma once
 
 #include <cstdint>
 #include <functional>
+#include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -23,9 +31,11 @@
 
 #include "common/result.h"
 #include "study/protocol.h"
+#include "study/session_runs.h"
 #include "study/session_screens.h"
 #include "study/staircases.h"
 #include "study/study_store.h"
+#include "study/trial_runs.h"
 #include "study/trial_state_machine.h"
 
 namespace monoplane::study {
@@ -107,6 +117,18 @@ class LiveSession {
                                                       const std::vector<TrialEvent>& events = {},
                                                       const std::vector<FrameRecord>& frames = {});
 
+    // This process's run of the session begins (SessionLog::begin_run): numbered, its frames
+    // placed after every stored one and its clock on the session's axis, with a run_started
+    // event. Once, after open() or begin() and before the first request or frame; a session
+    // whose front end never calls it (a test, a simulation) runs on its caller's times as
+    // they are.
+    Result<void> begin_run(const RunInfo& info);
+    // The run begin_run() placed (before it: run 0, frames from 0, its clock as it is).
+    const RunStart& run() const { return run_; }
+    // A time of the run's clock on the session's axis, for every time the front end passes in
+    // and logs beside the session (its frame log). Any time.
+    std::int64_t session_time(std::int64_t clock_ns) const { return run_.session_time(clock_ns); }
+
     // The staircases of a staircase protocol (their estimates for the experimenter), else null.
     const Staircases* staircases() const { return staircases_ ? &*staircases_ : nullptr; }
 
@@ -175,7 +197,10 @@ class LiveSession {
     std::optional<TrialStateMachine> machine_;
     std::optional<Staircases> staircases_;  // procedure = "staircase" only
     std::set<int> decided_;                 // trial indices decided (this run and before)
-    std::int64_t neutral_since_ns_ = -1;    // -1: from the next frame
+    // What earlier runs showed of trials they left undecided, by trial index.
+    std::map<int, TrialRuns> earlier_runs_;
+    RunStart run_{.start_ns = std::numeric_limits<std::int64_t>::min()};
+    std::int64_t neutral_since_ns_ = -1;  // -1: from the next frame
     int trial_number_ = 0;
     std::int64_t trial_started_ns_ = -1;
     std::vector<int> answers_;  // per questionnaire item, 0: not yet answered
@@ -184,11 +209,10 @@ class LiveSession {
     int page_ = 0;                 // Instructions: the page on screen
     bool screen_visible_ = false;  // a screen's appearance was presented (and logged)
     // Break: the countdown's start (the minimum, or what a resumed break has left of it) and
-    // the time of the frame that first showed it; a resumed break logs no second start.
+    // the time of the frame that first showed it in this run.
     std::int64_t break_min_ns_ = 0;
     std::int64_t break_visible_ns_ = -1;
     std::int64_t break_remaining_ns_ = 0;
-    bool break_resumed_ = false;
     std::optional<int> last_trial_shown_;  // for notes: the trial on screen or last shown
     std::int64_t latest_ns_ = -1;          // the latest request or frame time (the session clock)
 };

@@ -54,7 +54,6 @@ std::optional<std::size_t> LiveSession::peek_next_trial() const {
 void LiveSession::show_screen(ScreenKind kind) {
     kind_ = kind;
     screen_visible_ = false;
-    break_resumed_ = false;
 }
 
 void LiveSession::enter_next(std::int64_t time_ns) {
@@ -98,10 +97,11 @@ void LiveSession::resume_screens(const std::vector<TrialEvent>& events,
         // The next trial had started: whatever came before it was passed.
         screens_.break_taken = true;
     } else if (resume.break_open && protocol_.day.breaks) {
-        // The same break goes on for what is left of its minimum, counted once in the log.
+        // The same break goes on for what is left of its minimum. Its start is logged again when
+        // it shows: each run's break_started has its break_ended or its interruption, and
+        // resume_screens() counts the two starts as one break.
         show_screen(ScreenKind::Break);
         screens_.break_taken = true;
-        break_resumed_ = true;
         break_min_ns_ = break_remaining_ns(*protocol_.day.breaks, resume.break_elapsed_ns);
         return;
     }
@@ -124,9 +124,7 @@ Result<void> LiveSession::screen_presented(std::int64_t frame, std::int64_t time
     if (!screen_visible_) {
         screen_visible_ = true;
         if (kind_ == ScreenKind::Break) break_visible_ns_ = time_ns;
-        if (!break_resumed_) {
-            MONOPLANE_TRY(log_screen(shown_event(kind_), time_ns, frame));
-        }
+        MONOPLANE_TRY(log_screen(shown_event(kind_), time_ns, frame));
         if (kind_ == ScreenKind::End) return finish(SessionStatus::Completed);
     }
     if (kind_ == ScreenKind::Break) {

@@ -26,10 +26,10 @@ Result<void> start_planned_trial(const sqlite::Connection& db, std::int64_t sess
                                  int trial_index, double m);
 
 // The slots of session ?1 not started yet, as the store's trial columns (study_store.cpp
-// kTrialColumns): no mono plane (NULL), undecided, a staircase's, repetition 1.
+// kTrialColumns): no mono plane (NULL), undecided, a staircase's, repetition 1, runs 1.
 inline constexpr std::string_view kUnstartedPlannedTrials =
     "SELECT pt.trial_index, 0, pt.block, pt.scene, NULL, pt.label1_alternative, "
-    "pt.label1_mode, pt.label2_mode, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL, 1, 1 "
+    "pt.label1_mode, pt.label2_mode, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL, 1, 1, 1 "
     "FROM planned_trials pt WHERE pt.session_id = ?1 AND NOT EXISTS (SELECT 1 FROM trials t "
     "WHERE t.session_id = pt.session_id AND t.trial_index = pt.trial_index)";
 

@@ -39,18 +39,6 @@ std::string utc_now_iso8601() {
     return text;
 }
 
-// The host name as one word of at most 64 characters (it goes into a fixed-width line).
-std::string host_name() {
-    std::array<char, 256> name{};
-    if (::gethostname(name.data(), name.size() - 1) != 0) return "unknown-host";
-    std::string host(name.data());
-    if (host.empty()) return "unknown-host";
-    if (host.size() > 64) host.resize(64);
-    for (char& c : host)
-        if (c <= ' ' || c == 0x7f) c = '?';
-    return host;
-}
-
 struct flock byte_lock(short type, std::int64_t session_id) {
     struct flock lock {};
     lock.l_type = type;
@@ -138,6 +126,18 @@ Result<void> take(int fd, const std::filesystem::path& database, std::int64_t se
 }
 
 }  // namespace
+
+// One word of at most 64 characters: it goes into a fixed-width line.
+std::string host_name() {
+    std::array<char, 256> name{};
+    if (::gethostname(name.data(), name.size() - 1) != 0) return "unknown-host";
+    std::string host(name.data());
+    if (host.empty()) return "unknown-host";
+    if (host.size() > 64) host.resize(64);
+    for (char& c : host)
+        if (c <= ' ' || c == 0x7f) c = '?';
+    return host;
+}
 
 std::string SessionHolder::describe() const {
     return "process " + std::to_string(pid) + " on " + host + " since " + since_utc;

@@ -27,6 +27,9 @@ struct SessionHolder {
     std::string describe() const;
 };
 
+// This machine's name as holds and a session's runs record it. Any time.
+std::string host_name();
+
 class SessionHold {
   public:
     // Takes the hold on `session_id` of the database at `database`, or says who has it:

@@ -1,5 +1,6 @@
 #include "study/session_log.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace monoplane::study {
@@ -47,6 +48,22 @@ Result<void> MemorySessionLog::add_note(std::int64_t, const SessionNote& note) {
     }
     notes_.push_back(note);
     return Ok{};
+}
+
+Result<RunStart> MemorySessionLog::begin_run(std::int64_t, const RunInfo& info) {
+    std::optional<std::int64_t> last_ns;
+    std::int64_t first_frame = 0;
+    for (const TrialEvent& e : events_) {
+        last_ns = std::max(last_ns.value_or(e.time_ns), e.time_ns);
+        first_frame = std::max(first_frame, e.frame + 1);
+    }
+    const RunStart start = plan_run(++runs_, last_ns, first_frame, info.clock_start_ns);
+    TrialEvent started;
+    started.kind = EventKind::RunStarted;
+    started.trial_index = -1;
+    started.time_ns = start.start_ns;
+    events_.push_back(started);
+    return start;
 }
 
 std::string_view note_source_name(NoteSource source) {

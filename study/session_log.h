@@ -11,6 +11,7 @@
 
 #include "common/result.h"
 #include "study/session_note.h"
+#include "study/session_runs.h"
 #include "study/trial_events.h"
 #include "study/trial_state_machine.h"
 
@@ -35,6 +36,11 @@ class SessionLog {
     virtual Result<void> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) = 0;
     // A note for whoever reviews the session (study_store.h SessionNote), durable on return.
     virtual Result<void> add_note(std::int64_t session_id, const SessionNote& note) = 0;
+    // A run of the session begins (its start, or a resume): numbered after the earlier runs,
+    // its frames after every frame number stored, its clock placed by plan_run; recorded with
+    // a run_started event at its start, durable on return. Once per run, before its first
+    // event.
+    virtual Result<RunStart> begin_run(std::int64_t session_id, const RunInfo& info) = 0;
 };
 
 // One session's log in memory. Refuses a second outcome for a trial, as the database does.
@@ -48,6 +54,7 @@ class MemorySessionLog final : public SessionLog {
                                int answer) override;
     Result<void> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) override;
     Result<void> add_note(std::int64_t session_id, const SessionNote& note) override;
+    Result<RunStart> begin_run(std::int64_t session_id, const RunInfo& info) override;
 
     const std::vector<TrialEvent>& events() const { return events_; }
     const std::vector<SessionNote>& notes() const { return notes_; }
@@ -64,6 +71,7 @@ class MemorySessionLog final : public SessionLog {
     std::map<int, int> answers_;
     std::map<int, ScheduledTrial> adaptive_trials_;
     SessionStatus status_ = SessionStatus::Running;
+    int runs_ = 0;
 };
 
 }  // namespace monoplane::study

@@ -26,17 +26,23 @@ LiveOptions live_options(const RunOptions& options) {
     return live;
 }
 
-// The virtual display: frame n is shown at n periods. Each frame, as on a headset: the observer
-// reacts to what is on screen, then the frame is presented and its changes logged.
+// The virtual display: a run of the session begins at 0 on its virtual clock, and its frame
+// k = 1, 2, ... is shown at k periods (frame 0, the clock's start, is not shown, as on the
+// simulated runtime), numbered first_frame + k (after every frame an earlier run used); its
+// times go on the session's axis (a resumed run's after the last time stored). Each frame, as on
+// a headset: the observer reacts to what is on screen, then the frame is presented and its
+// changes logged.
 Result<void> drive(LiveSession& session, ObserverInput& input, const RunOptions& options) {
     if (!(options.frame_rate_hz > 0.0)) return Error{"the virtual display's rate must be positive"};
     const auto period = static_cast<std::int64_t>(std::llround(1e9 / options.frame_rate_hz));
-    const auto last_frame = static_cast<std::int64_t>(kMaxVirtualSeconds * options.frame_rate_hz);
-    for (std::int64_t frame = 1; !session.finished(); ++frame) {
-        if (frame > last_frame) {
+    const auto last_k = static_cast<std::int64_t>(kMaxVirtualSeconds * options.frame_rate_hz);
+    MONOPLANE_TRY(session.begin_run(RunInfo{.runtime = "none", .clock_start_ns = 0}));
+    for (std::int64_t k = 1; !session.finished(); ++k) {
+        if (k > last_k) {
             return Error{"the simulated session did not finish within a day of virtual time"};
         }
-        const std::int64_t now = frame * period;
+        const std::int64_t frame = session.run().first_frame + k;
+        const std::int64_t now = session.session_time(k * period);
         for (LiveInput request : input.poll(session.screen(), session.progress(), now)) {
             MONOPLANE_TRY(session.request(request, now));
         }

@@ -53,10 +53,11 @@ std::vector<int> planned_breaks(const StudyDaySettings& day, const Schedule& sch
 
 namespace {
 
-// How long the frame log shows a break lasted in the run that started it: the frames from
-// break_started's on, in order, up to the first that belongs to another run (its time goes back,
-// or jumps by more than a second: a resumed run's clock has another origin, and its frames are
-// numbered on). A later run's share of the break is not counted: the break is never cut short.
+// How long the frame log shows a break lasted: the frames from break_started's on, in order, up
+// to the first whose time goes back or jumps by more than a second. Runs since schema 8 share one
+// time axis (session_runs.h), so a resumed run's frames continue the break's time and count;
+// a run before it had a clock of another origin, and its share is not counted: the break is
+// never cut short.
 std::int64_t frames_elapsed(const std::vector<FrameRecord>& frames, std::int64_t first_frame,
                             std::int64_t started_ns) {
     constexpr std::int64_t kRunGapNs = 1'000'000'000;
@@ -100,6 +101,9 @@ ScreenResume resume_screens(const std::vector<TrialEvent>& events, int instructi
                 resume.progress.ready_confirmed = true;
                 break;
             case EventKind::BreakStarted:
+                // A start while the break is open is the same break, shown again after a resume:
+                // its time counts from the first start.
+                if (resume.break_open) break;
                 resume.break_open = true;
                 resume.break_ended = false;
                 resume.break_elapsed_ns = 0;

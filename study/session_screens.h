@@ -43,11 +43,12 @@ struct ScreenResume {
     ScreenProgress progress;  // instructions read so far, ready confirmed; break_taken: below
     int last_trial = -1;      // the trial of the last trial event (-1: none)
     // After the last trial event: a break that started and has not ended (shown again, for the
-    // rest of its minimum time, without a second break_started), or one that ended.
+    // rest of its minimum time, its start logged again), or one that ended. Starts of one break
+    // in several runs (no break_ended or trial event between them) are one break.
     bool break_open = false;
     bool break_ended = false;
     // break_open: how long it lasted as far as the log tells: the latest time logged at or after
-    // break_started, minus break_started's time (times of one run share one clock).
+    // its first break_started, minus that start's time (the runs share one time axis).
     std::int64_t break_elapsed_ns = 0;
 };
 // `frames`: the session's frame log (headset sessions log a frame's display time at least every

@@ -2,7 +2,8 @@
 // takes effect with the frame that shows it, so a switch requested and taken back before the next
 // frame was never seen and is neither logged nor counted, and a confirmation applies to the label
 // on screen, not to one still pending. Times on the labels and the decision time leave out pauses,
-// during which the participant is not judging.
+// during which the participant is not judging. A trial interrupted and shown again in a resumed
+// run starts from what its earlier runs showed (trial_runs.h replays them by these rules).
 #include "study/trial_state_machine.h"
 
 #include <algorithm>
@@ -34,8 +35,16 @@ std::int64_t elapsed(std::int64_t from, std::int64_t to) {
 
 }  // namespace
 
-TrialStateMachine::TrialStateMachine(const ScheduledTrial& trial, bool require_both_viewed)
-    : trial_(trial), require_both_viewed_(require_both_viewed) {}
+TrialStateMachine::TrialStateMachine(const ScheduledTrial& trial, bool require_both_viewed,
+                                     const TrialRuns& earlier)
+    : trial_(trial),
+      require_both_viewed_(require_both_viewed),
+      earlier_viewing_ns_(earlier.viewing_ns) {
+    outcome_.switches = earlier.switches;
+    outcome_.time_on_label_ns[0] = earlier.time_on_label_ns[0];
+    outcome_.time_on_label_ns[1] = earlier.time_on_label_ns[1];
+    outcome_.runs = earlier.runs + 1;
+}
 
 Error TrialStateMachine::fail(const char* request, const char* why) const {
     return Error{"trial " + std::to_string(trial_.index) + ": cannot " + request + ": " + why +
@@ -93,7 +102,8 @@ Result<std::vector<TrialEvent>> TrialStateMachine::request_confirm(std::int64_t 
     outcome_.choice = visible_;
     outcome_.chosen_mode = visible_ == 1 ? trial_.label1_mode : trial_.label2_mode;
     outcome_.valid = both_seen;
-    outcome_.decision_time_ns = elapsed(first_visible_ns_, time_ns) - paused_total_ns_;
+    outcome_.decision_time_ns =
+        earlier_viewing_ns_ + elapsed(first_visible_ns_, time_ns) - paused_total_ns_;
     state_ = TrialState::Decided;
     return std::vector<TrialEvent>{event(EventKind::Confirmed, visible_, time_ns, -1)};
 }

@@ -16,6 +16,7 @@
 #include "common/result.h"
 #include "study/schedule.h"
 #include "study/trial_events.h"
+#include "study/trial_runs.h"
 
 namespace monoplane::study {
 
@@ -27,12 +28,20 @@ struct TrialOutcome {
     bool valid = false;  // both labels were viewed before the decision
     int switches = 0;
     std::int64_t time_on_label_ns[2] = {0, 0};  // visible time of label 1 and label 2
-    std::int64_t decision_time_ns = 0;          // first visibility to confirmation, pauses excluded
+    // First visibility to confirmation, pauses excluded. A trial shown in several runs (an
+    // interruption, then a resume) counts each run's share: its first visibility there to the
+    // confirmation or the end of its record (trial_runs.h); switches and the labels' times too.
+    std::int64_t decision_time_ns = 0;
+    int runs = 1;  // the runs that showed the trial: 1 + the interruptions it spanned
 };
 
 class TrialStateMachine {
   public:
-    TrialStateMachine(const ScheduledTrial& trial, bool require_both_viewed);
+    // `earlier`: what earlier runs of the session showed of this trial (an interrupted trial
+    // shown again after a resume; trial_runs()), counted into its outcome. Whether both labels
+    // were seen is this run's alone: a comparison does not span an interruption.
+    TrialStateMachine(const ScheduledTrial& trial, bool require_both_viewed,
+                      const TrialRuns& earlier = {});
 
     // Requests; the returned events (if any) must be logged before the next frame starts.
     // start(): label 1 is to be shown; it becomes visible at the next frame.
@@ -71,6 +80,7 @@ class TrialStateMachine {
     std::int64_t first_visible_ns_ = -1;
     std::int64_t paused_at_ns_ = 0;
     std::int64_t paused_total_ns_ = 0;
+    std::int64_t earlier_viewing_ns_ = 0;  // the decision time earlier runs contribute
     TrialOutcome outcome_;
     std::optional<TrialEvent> last_refusal_;
 

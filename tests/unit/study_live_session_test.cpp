@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -633,6 +634,8 @@ TEST_F(LiveSessionTest, WithoutQuestionnaireTheLastDecisionCompletesTheSession) 
 }
 
 // 7. A resumed session continues at its first undecided trial; decided trials stay as they were.
+// The trial the crash cut short starts over with label 1, and its outcome counts both runs: the
+// switch before the crash, and the time each label was visible up to the last event of it.
 TEST_F(LiveSessionTest, ResumedSessionStartsAtTheFirstUndecidedTrial) {
     const Protocol protocol = make_protocol();
     const std::int64_t id = begin(protocol);
@@ -664,7 +667,7 @@ TEST_F(LiveSessionTest, ResumedSessionStartsAtTheFirstUndecidedTrial) {
     EXPECT_EQ(s->screen().trial->index, 2);
     EXPECT_EQ(s->screen().label, 1);  // the trial starts over with label 1
     EXPECT_EQ(s->progress().trial_number, 3);
-    EXPECT_EQ(s->progress().switches, 0);
+    EXPECT_EQ(s->progress().switches, 1);  // the earlier run's
     present(*s, n);
     std::vector<TrialEvent> e = events(id);
     ASSERT_EQ(e.size(), logged + 1);
@@ -679,7 +682,20 @@ TEST_F(LiveSessionTest, ResumedSessionStartsAtTheFirstUndecidedTrial) {
         EXPECT_EQ(after[i].outcome.decision_time_ns, before[i].outcome.decision_time_ns);
         EXPECT_EQ(after[i].outcome.switches, before[i].outcome.switches);
     }
-    EXPECT_EQ(after[2].outcome.switches, 1);  // the switch before the crash is not counted
+    // Trial 2's events: shown and switched before the crash, shown, switched and confirmed after.
+    std::vector<TrialEvent> trial2;
+    for (const TrialEvent& event : events(id))
+        if (event.trial_index == 2) trial2.push_back(event);
+    ASSERT_EQ(trial2.size(), 5u);
+    EXPECT_EQ(trial2[2].kind, EventKind::Shown);
+    const TrialOutcome& o = after[2].outcome;
+    EXPECT_EQ(o.runs, 2);
+    EXPECT_EQ(o.switches, 2);
+    EXPECT_EQ(o.time_on_label_ns[0],
+              (trial2[1].time_ns - trial2[0].time_ns) + (trial2[3].time_ns - trial2[2].time_ns));
+    EXPECT_EQ(o.time_on_label_ns[1], trial2[4].time_ns - trial2[3].time_ns);
+    EXPECT_EQ(o.decision_time_ns, o.time_on_label_ns[0] + o.time_on_label_ns[1]);
+    for (int i = 0; i < 2; ++i) EXPECT_EQ(after[i].outcome.runs, 1);
     ASSERT_EQ(s->screen().kind, ScreenKind::Questionnaire);
 }
 
@@ -1159,8 +1175,9 @@ TEST_F(ScreenSessionTest, ResumeAfterInstructionsAndReadyShowsNeither) {
 }
 
 // Interrupted 12 s into a 30 s break (as far as the log tells: the latest time logged after
-// break_started): the break is shown again for 18 s, without a second break_started, and the
-// next trial follows.
+// break_started): the break is shown again for 18 s, its start logged again with the frame that
+// shows it (each run's break_started has its end or its interruption), and the next trial
+// follows.
 TEST_F(ScreenSessionTest, ResumeMidBreakShowsTheRestOfItsMinimum) {
     Protocol protocol = six_trial_protocol();
     protocol.day.breaks = break_settings(2, false, 30);
@@ -1182,7 +1199,8 @@ TEST_F(ScreenSessionTest, ResumeMidBreakShowsTheRestOfItsMinimum) {
     EXPECT_EQ(s->screen().break_remaining_ns, 18'000 * kMs);
     EXPECT_EQ(s->progress().trial_number, 2);
     present(*s, 0);  // the countdown restarts with the frame that shows it again
-    EXPECT_TRUE(log_.events().empty());
+    ASSERT_EQ(log_.events().size(), 1u);
+    expect_screen_event(log_.events()[0], EventKind::BreakStarted, -1, at(0), 0);
     present(*s, 1620);  // 1620 periods: 17'999'999'820 ns
     EXPECT_EQ(s->screen().break_remaining_ns, 180);
     EXPECT_EQ(request(*s, LiveInput::Confirm, 1620),
@@ -1193,9 +1211,9 @@ TEST_F(ScreenSessionTest, ResumeMidBreakShowsTheRestOfItsMinimum) {
     ASSERT_EQ(s->screen().kind, ScreenKind::Trial);
     EXPECT_EQ(s->screen().trial->index, 2);
     present(*s, 1622);
-    ASSERT_EQ(log_.events().size(), 2u);
-    expect_screen_event(log_.events()[0], EventKind::BreakEnded, -1, at(1621), -1);
-    expect_event(log_.events()[1], EventKind::Shown, 2, 1, at(1622), 1622);
+    ASSERT_EQ(log_.events().size(), 3u);
+    expect_screen_event(log_.events()[1], EventKind::BreakEnded, -1, at(1621), -1);
+    expect_event(log_.events()[2], EventKind::Shown, 2, 1, at(1622), 1622);
 
     // Nothing logged after its start (a kill during the break): all of its minimum again.
     before.pop_back();
@@ -1345,6 +1363,258 @@ TEST_F(LiveSessionTest, ResumeFromTheStoreContinuesTheInstructions) {
     s = open(id, protocol, 0);
     ASSERT_TRUE(s);
     EXPECT_EQ(s->screen().kind, ScreenKind::Neutral);
+}
+
+// --- Runs: an interrupted session resumed on a clock that starts again -------------------------
+
+// One run of a stored session, as a front end drives it: frame k = 1, 2, ... of the run at its
+// clock's base + k periods (a runtime that started again has a base of its own), numbered
+// run().first_frame + k, its times placed on the session's axis.
+struct RunDriver {
+    LiveSession& s;
+    std::int64_t clock_base_ns;
+
+    std::int64_t frame(std::int64_t k) const { return s.run().first_frame + k; }
+    std::int64_t time(std::int64_t k) const { return s.session_time(clock_base_ns + at(k)); }
+    void present(std::int64_t k) const {
+        const Result<void> ok = s.frame_presented(frame(k), time(k));
+        ASSERT_TRUE(ok.ok()) << ok.error().message;
+    }
+    std::string request(LiveInput input, std::int64_t k) const {
+        Result<std::string> r = s.request(input, time(k));
+        EXPECT_TRUE(r.ok()) << r.error().message;
+        return r.ok() ? *r : std::string();
+    }
+    // Presents frames from k on until `done`; returns the next k.
+    template <class Done>
+    std::int64_t until(std::int64_t k, Done done) const {
+        for (int i = 0; i < 100'000 && !done(); ++i) present(k++);
+        EXPECT_TRUE(done());
+        return k;
+    }
+};
+
+// Every run's times on one axis: event times never go back in the order logged, a run starts
+// after every event before it (and the frame log's last time: the tests check that), and no two
+// events name one frame.
+void expect_one_time_axis(const std::vector<TrialEvent>& events) {
+    std::int64_t latest = std::numeric_limits<std::int64_t>::min();
+    std::int64_t last_frame = -1;
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const TrialEvent& e = events[i];
+        EXPECT_GE(e.time_ns, latest) << i << " " << event_kind_name(e.kind);
+        if (e.kind == EventKind::RunStarted && i > 0) EXPECT_GT(e.time_ns, latest) << i;
+        latest = std::max(latest, e.time_ns);
+        if (e.frame < 0) continue;
+        EXPECT_GT(e.frame, last_frame) << i << " " << event_kind_name(e.kind);
+        last_frame = e.frame;
+    }
+}
+
+// What the trial's events say, counted here on their own: per run (split at run_started), each
+// label's time from the event that showed it to the next change, pause or the run's last event
+// of the trial; the switches.
+TrialRuns count_from_events(const std::vector<TrialEvent>& events, int trial) {
+    TrialRuns r;
+    int visible = 0;
+    std::int64_t since = 0, first = 0, paused = 0, last = 0;
+    bool is_paused = false;
+    const auto end_run = [&] {
+        if (visible == 0) return;
+        if (!is_paused) r.time_on_label_ns[visible - 1] += last - since;
+        r.viewing_ns += last - first - paused;
+        ++r.runs;
+        visible = 0;
+    };
+    for (const TrialEvent& e : events) {
+        if (e.kind == EventKind::RunStarted) end_run();
+        if (e.trial_index != trial) continue;
+        if (!is_paused) last = e.time_ns;
+        if (e.kind == EventKind::Shown) {
+            end_run();
+            visible = e.label;
+            since = first = last = e.time_ns;
+            paused = 0;
+            is_paused = false;
+        } else if (e.kind == EventKind::Switched || e.kind == EventKind::Confirmed) {
+            r.time_on_label_ns[visible - 1] += e.time_ns - since;
+            since = e.time_ns;
+            visible = e.kind == EventKind::Switched ? e.label : visible;
+            r.switches += e.kind == EventKind::Switched;
+        } else if (e.kind == EventKind::Paused) {
+            r.time_on_label_ns[visible - 1] += e.time_ns - since;
+            is_paused = true;
+            since = e.time_ns;
+        } else if (e.kind == EventKind::Resumed) {
+            paused += e.time_ns - since;
+            since = last = e.time_ns;
+            is_paused = false;
+        }
+    }
+    end_run();
+    return r;
+}
+
+// Issue 42: a trial interrupted after six switches and a pause, resumed in a new process whose
+// runtime clock starts again near 0 (21 s, after 1000 s): the resumed run continues the session's
+// time axis and frame numbers, and the outcome counts the six switches and the viewing time
+// before the interruption with the two after it.
+TEST_F(LiveSessionTest, ATrialCutShortKeepsItsSwitchesAndTimesAcrossARestartedClock) {
+    const Protocol protocol = make_protocol(true, 5, 0, 1);
+    const std::int64_t id = begin(protocol);
+    std::int64_t last_frame_of_run1 = 0;
+    {
+        auto s = open(id, protocol, 0);
+        ASSERT_TRUE(s);
+        ASSERT_TRUE(
+            s->begin_run({.runtime = "simulated", .clock_start_ns = 1000 * 1000 * kMs}).ok());
+        const RunDriver run{*s, 1000 * 1000 * kMs};
+        std::int64_t k = run.until(1, [&] { return s->progress().visible_label != 0; });
+        for (int i = 0; i < 6; ++i) {
+            k += 20;
+            run.request(LiveInput::Switch, k);
+            last_frame_of_run1 = run.frame(k);  // the last event's: later frames go unrecorded
+            run.present(k++);
+            if (i == 2) {
+                EXPECT_EQ(run.request(LiveInput::Pause, k), "pause");
+                k += 45;
+                EXPECT_EQ(run.request(LiveInput::Resume, k), "resume");
+            }
+        }
+        run.present(k + 30);
+        EXPECT_EQ(s->progress().switches, 6);
+    }  // killed: trial 0 undecided
+    auto s = open(id, protocol, 0);
+    ASSERT_TRUE(s);
+    EXPECT_EQ(s->progress().switches, 0);  // no trial on screen yet
+    ASSERT_TRUE(s->begin_run({.runtime = "simulated", .clock_start_ns = 21 * 1000 * kMs}).ok());
+    EXPECT_EQ(s->run().run, 2);
+    EXPECT_EQ(s->run().first_frame, last_frame_of_run1 + 1);
+    const RunDriver run{*s, 21 * 1000 * kMs};
+    std::int64_t k = run.until(1, [&] { return s->progress().visible_label != 0; });
+    EXPECT_EQ(s->progress().switches, 6);  // the trial's, from its earlier run
+    for (int i = 0; i < 2; ++i) {
+        k += 10;
+        run.request(LiveInput::Switch, k);
+        run.present(k++);
+    }
+    EXPECT_TRUE(contains(run.request(LiveInput::Confirm, k + 10), "decided: label 1"));
+
+    const std::vector<TrialEvent> e = events(id);
+    expect_one_time_axis(e);
+    const TrialRuns counted = count_from_events(e, 0);
+    const TrialRecord trial = trials(id)[0];
+    ASSERT_TRUE(trial.decided);
+    EXPECT_EQ(counted.runs, 2);
+    EXPECT_EQ(counted.switches, 8);
+    EXPECT_EQ(trial.outcome.runs, 2);
+    EXPECT_EQ(trial.outcome.switches, 8);
+    EXPECT_EQ(trial.outcome.time_on_label_ns[0], counted.time_on_label_ns[0]);
+    EXPECT_EQ(trial.outcome.time_on_label_ns[1], counted.time_on_label_ns[1]);
+    EXPECT_EQ(trial.outcome.decision_time_ns, counted.viewing_ns);
+    EXPECT_EQ(trial.outcome.decision_time_ns,
+              trial.outcome.time_on_label_ns[0] + trial.outcome.time_on_label_ns[1]);
+    // Run 1's record of the trial: label 1 at frame 2 to the sixth switch at frame 173, less
+    // the 45 frames' pause; run 2's: label 1 at frame 2 to the confirmation at 35.
+    EXPECT_EQ(trial.outcome.decision_time_ns, at(173 - 2 - 45) + at(35 - 2));
+    // Run 2's clock starts 1 ns after run 1's last event, the sixth switch.
+    const std::vector<RunRecord> runs = store_->runs(id).value_or_throw();
+    ASSERT_EQ(runs.size(), 2u);
+    EXPECT_EQ(runs[1].clock_offset_ns, s->run().clock_offset_ns);
+    EXPECT_EQ(runs[1].clock_offset_ns, 1000 * 1000 * kMs + at(173) + 1 - 21 * 1000 * kMs);
+}
+
+// A break interrupted 12 s into its 30 s (the frame log, as a headset writes it, shows 12 s) is
+// shown again in the resumed run, its start logged again, for the 18 s left; every break_ended
+// follows a break_started; the whole break lasts its minimum on the session's axis.
+TEST_F(LiveSessionTest, ABreakCutShortStartsAgainForWhatIsLeftOnOneAxis) {
+    Protocol protocol = make_protocol(true, 5, 0, 0);
+    protocol.day.breaks = break_settings(1, false, 30);
+    const std::int64_t id = begin(protocol);
+    std::int64_t break_started_ns = 0;
+    {
+        auto s = open(id, protocol, 0);
+        ASSERT_TRUE(s);
+        ASSERT_TRUE(s->begin_run({.clock_start_ns = 500 * 1000 * kMs}).ok());
+        const RunDriver run{*s, 500 * 1000 * kMs};
+        std::int64_t k = run.until(1, [&] { return s->progress().visible_label != 0; });
+        run.request(LiveInput::Switch, k);
+        run.present(k++);
+        run.request(LiveInput::Confirm, k);
+        run.present(k);  // the break shows
+        ASSERT_EQ(s->screen().kind, ScreenKind::Break);
+        break_started_ns = events(id).back().time_ns;
+        for (int i = 1; i <= 12 * 90; ++i) {  // the frame log goes on during the break
+            FrameRecord f;
+            f.frame = run.frame(k + i);
+            f.shown = "break";
+            f.display_time_ns = run.time(k + i);
+            run.present(k + i);
+            store_->queue_frame(id, f);
+        }
+        ASSERT_TRUE(store_->flush_frames().ok());
+    }
+    auto s = open(id, protocol, 0);
+    ASSERT_TRUE(s);
+    ASSERT_EQ(s->screen().kind, ScreenKind::Break);
+    ASSERT_TRUE(s->begin_run({.clock_start_ns = 0}).ok());
+    const RunDriver run{*s, 0};
+    run.present(1);
+    EXPECT_EQ(s->screen().break_remaining_ns, 30'000 * kMs - at(12 * 90));
+    std::int64_t k = 2;
+    while (s->screen().break_remaining_ns > 0 && k < 10'000) run.present(k++);
+    EXPECT_EQ(run.request(LiveInput::Confirm, k - 1), "break ended");
+
+    const std::vector<TrialEvent> e = events(id);
+    expect_one_time_axis(e);
+    std::vector<const TrialEvent*> breaks;
+    for (const TrialEvent& event : e)
+        if (event.kind == EventKind::BreakStarted || event.kind == EventKind::BreakEnded)
+            breaks.push_back(&event);
+    ASSERT_EQ(breaks.size(), 3u);
+    EXPECT_EQ(breaks[0]->kind, EventKind::BreakStarted);
+    EXPECT_EQ(breaks[1]->kind, EventKind::BreakStarted);
+    EXPECT_EQ(breaks[2]->kind, EventKind::BreakEnded);
+    EXPECT_EQ(breaks[0]->time_ns, break_started_ns);
+    // 12 s logged, the gap to the resumed run's first frame (1 ns and one period), 18 s more.
+    const std::int64_t whole = breaks[2]->time_ns - breaks[0]->time_ns;
+    EXPECT_GE(whole, 30'000 * kMs);
+    EXPECT_LE(whole, 30'000 * kMs + 2 * kPeriod + 1);
+    EXPECT_GE(breaks[2]->time_ns - breaks[1]->time_ns, 18'000 * kMs);
+}
+
+// Killed on the second instruction page: the resumed run shows that page again from its own
+// first frame, numbered after the killed run's, on the continued axis.
+TEST_F(LiveSessionTest, AnInstructionPageCutShortIsShownAgainOnOneAxis) {
+    Protocol protocol = make_protocol(true, 5, 0, 1);
+    protocol.day.instructions = {{"One"}, {"Two"}};
+    const std::int64_t id = begin(protocol);
+    {
+        auto s = open(id, protocol, 0);
+        ASSERT_TRUE(s);
+        ASSERT_TRUE(s->begin_run({.clock_start_ns = 80 * 1000 * kMs}).ok());
+        const RunDriver run{*s, 80 * 1000 * kMs};
+        run.present(1);
+        EXPECT_EQ(run.request(LiveInput::Confirm, 40), "instructions page 2");
+        run.present(40);
+        run.present(41);
+    }
+    auto s = open(id, protocol, 0);
+    ASSERT_TRUE(s);
+    ASSERT_TRUE(s->begin_run({.clock_start_ns = 0}).ok());
+    const RunDriver run{*s, 0};
+    run.present(1);
+    EXPECT_EQ(run.request(LiveInput::Confirm, 30), "instructions read");
+    const std::vector<TrialEvent> e = events(id);
+    expect_one_time_axis(e);
+    ASSERT_EQ(e.size(), 7u);
+    EXPECT_EQ(e[0].kind, EventKind::RunStarted);
+    expect_screen_event(e[3], EventKind::InstructionsShown, 1, 80 * 1000 * kMs + at(40), 40);
+    EXPECT_EQ(e[4].kind, EventKind::RunStarted);
+    expect_screen_event(e[5], EventKind::InstructionsShown, 1, run.time(1), run.frame(1));
+    EXPECT_EQ(run.frame(1), 41 + 1);  // numbered on after frame 40, the last one named
+    EXPECT_EQ(run.time(1), e[3].time_ns + 1 + kPeriod);
+    expect_screen_event(e[6], EventKind::InstructionsConfirmed, 1, run.time(30), -1);
 }
 
 // --- The simulated observer at the controls ----------------------------------------------------

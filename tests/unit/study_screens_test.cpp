@@ -211,6 +211,43 @@ TEST(SessionScreens, ResumeMidBreakCountsTheFramesLoggedDuringIt) {
     EXPECT_EQ(resume_screens(events, 0, twice).break_elapsed_ns, 269 * kS / 90);
 }
 
+// Since runs share one time axis (session_runs.h), a break shown in three runs, each killed
+// during it, is one break (its start logged in each run): it lasted from its first start to the
+// latest time logged, every run's frames included.
+TEST(SessionScreens, ABreakOverSeveralRunsOnOneAxisCountsEveryRun) {
+    const std::int64_t period = kS / 90;
+    std::vector<TrialEvent> events = {
+        trial(EventKind::Confirmed, 3, 50 * kS),
+        screen(EventKind::BreakStarted, 50 * kS, -1, 4500),
+    };
+    std::vector<FrameRecord> frames;
+    std::int64_t t = 50 * kS;
+    std::int64_t f = 4500;
+    for (int run = 0; run < 3; ++run) {
+        if (run > 0) {
+            // The run starts 1 ns after the last time stored, shows the break again one period
+            // later, and logs 2 s of its frames.
+            events.push_back(screen(EventKind::RunStarted, t + 1));
+            t += 1 + period;
+            events.push_back(screen(EventKind::BreakStarted, t, -1, ++f));
+        }
+        for (int i = 0; i < 180; ++i) {
+            FrameRecord r;
+            r.frame = ++f;
+            r.display_time_ns = (t += period);
+            frames.push_back(r);
+        }
+    }
+    const ScreenResume r = resume_screens(events, 0, frames);
+    EXPECT_TRUE(r.break_open);
+    EXPECT_FALSE(r.break_ended);
+    EXPECT_EQ(r.break_elapsed_ns, t - 50 * kS);
+    EXPECT_EQ(r.break_elapsed_ns, 540 * period + 2 * (1 + period));
+    // Its end closes it.
+    events.push_back(screen(EventKind::BreakEnded, t + kS));
+    EXPECT_TRUE(resume_screens(events, 0, frames).progress.break_taken);
+}
+
 TEST(SessionScreens, ResumeMidBreakTellsHowLongItLasted) {
     std::vector<TrialEvent> events = {
         trial(EventKind::Shown, 3, 40 * kS),

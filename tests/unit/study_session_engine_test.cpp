@@ -97,7 +97,8 @@ std::uint64_t fingerprint(const std::vector<std::string>& lines) {
 
 // A protocol without screens runs exactly as before they existed: every committed line of a
 // seeded simulated session (events with their times and frames, outcomes, answers, the status)
-// is what the engine wrote before (fingerprint and count recorded from that engine).
+// is what the engine wrote before (fingerprint and count recorded from that engine). The run's
+// start, a line since runs are recorded, comes first and is left out.
 TEST(SessionEngine, AProtocolWithoutScreensRunsAsBefore) {
     const Protocol protocol = parse_protocol(kProtocol, "engine.toml").value_or_throw();
     ASSERT_FALSE(protocol.day.has_screens());
@@ -110,6 +111,9 @@ TEST(SessionEngine, AProtocolWithoutScreensRunsAsBefore) {
     ASSERT_TRUE(
         run_simulated_session(memory, protocol, make_schedule(protocol, 77, 0), *observer, options)
             .ok());
+    ASSERT_FALSE(lines.empty());
+    EXPECT_EQ(lines.front(), "run 1 started t 0 frame 0");
+    lines.erase(lines.begin());
     ASSERT_EQ(lines.size(), 69u);
     EXPECT_EQ(fingerprint(lines), 8958072370625582265ull);
     EXPECT_EQ(lines.front(), "trial 0 shown label 1 t 1033333323 frame 93");
@@ -134,11 +138,12 @@ Protocol day_protocol() {
 }
 
 // The session as a list of steps: each screen event ("ready_shown", "instructions_shown 1"),
-// and each trial once ("trial 3").
+// and each trial once ("trial 3"); a run's start is none.
 std::vector<std::string> steps(const std::vector<TrialEvent>& events) {
     std::vector<std::string> out;
     int trial = -1;
     for (const TrialEvent& e : events) {
+        if (is_session_event(e.kind)) continue;
         if (is_screen_event(e.kind)) {
             out.push_back(std::string(event_kind_name(e.kind)) +
                           (e.page >= 0 ? " " + std::to_string(e.page) : ""));
@@ -269,8 +274,9 @@ TEST(SessionEngine, HeadlessSessionsStepThroughTheScreens) {
 struct Killed {};
 
 // Killed as the first break starts (the process dies after the write), the session resumes in
-// that break: for all of its 5 s, since nothing was logged after its start, without a second
-// break_started; the instructions read and the ready screen confirmed are not shown again.
+// that break: for all of its 5 s, since nothing was logged after its start, its start logged
+// again when the resumed run shows it; the instructions read and the ready screen confirmed are
+// not shown again. The resumed run's times go on 1 ns after the last one stored.
 TEST(SessionEngine, AHeadlessSessionKilledInABreakResumesInIt) {
     const Protocol protocol = day_protocol();
     const Schedule schedule = make_schedule(protocol, 5, 0);
@@ -300,6 +306,7 @@ TEST(SessionEngine, AHeadlessSessionKilledInABreakResumesInIt) {
                                                "trial 1",
                                                "trial 2",
                                                "break_started",
+                                               "break_started",
                                                "break_ended",
                                                "trial 3",
                                                "break_started",
@@ -311,13 +318,18 @@ TEST(SessionEngine, AHeadlessSessionKilledInABreakResumesInIt) {
                                                "trial 6",
                                                "end_shown"};
     EXPECT_EQ(steps(e), expected);
-    // The resumed run's first event ends the break: at least 5 s into its virtual clock, which
-    // starts at frame 1.
-    ASSERT_GT(e.size(), before);
+    // The resumed run starts 1 ns after the break's start, shows the break again with its first
+    // frame (one period later) and ends it at least 5 s after that.
+    ASSERT_GT(e.size(), before + 2);
     EXPECT_EQ(e[before - 1].kind, EventKind::BreakStarted);
-    EXPECT_EQ(e[before].kind, EventKind::BreakEnded);
-    EXPECT_GE(e[before].time_ns, 5'000'000'000);
-    EXPECT_LE(e[before].time_ns, 5'000'000'000 + 3 * 11'111'111);
+    EXPECT_EQ(e[before].kind, EventKind::RunStarted);
+    EXPECT_EQ(e[before].time_ns, e[before - 1].time_ns + 1);
+    EXPECT_EQ(e[before + 1].kind, EventKind::BreakStarted);
+    EXPECT_EQ(e[before + 1].time_ns, e[before].time_ns + 11'111'111);
+    EXPECT_GT(e[before + 1].frame, e[before - 1].frame);
+    EXPECT_EQ(e[before + 2].kind, EventKind::BreakEnded);
+    EXPECT_GE(e[before + 2].time_ns - e[before + 1].time_ns, 5'000'000'000);
+    EXPECT_LE(e[before + 2].time_ns - e[before + 1].time_ns, 5'000'000'000 + 3 * 11'111'111);
     for (const TrialRecord& r : store->trials(id).value_or_throw()) {
         EXPECT_TRUE(r.decided) << r.trial.index;
     }

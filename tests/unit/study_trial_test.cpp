@@ -2,9 +2,11 @@
 // how times are counted, and that every call in a wrong state is an error.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
+#include "study/trial_runs.h"
 #include "study/trial_state_machine.h"
 
 namespace monoplane::study {
@@ -265,5 +267,136 @@ TEST(Trial, CallsInTheWrongStateAreErrors) {
     EXPECT_EQ(m.state(), TrialState::Decided);
 }
 
+// --- A trial across runs (study/trial_runs.h) -------------------------------------------------
+
+TrialEvent logged(EventKind kind, int label, std::int64_t time_ns, std::int64_t frame = -1) {
+    TrialEvent e;
+    e.kind = kind;
+    e.trial_index = is_trial_event(kind) ? 7 : -1;
+    e.label = label;
+    e.time_ns = time_ns;
+    e.frame = frame;
+    return e;
+}
+
+FrameRecord frame_of_trial(std::int64_t frame, std::int64_t time_ns) {
+    FrameRecord f;
+    f.frame = frame;
+    f.trial_index = 7;
+    f.shown = "label1";
+    f.display_time_ns = time_ns;
+    return f;
+}
+
+// Replayed from its events, a trial decided in one run gives the outcome the machine recorded:
+// the same rules in both places.
+TEST(TrialRuns, ReplayingOneRunGivesTheMachinesOutcome) {
+    TrialStateMachine m(hybrid_is_label1(), true);
+    std::vector<TrialEvent> events;
+    const auto keep = [&](const std::vector<TrialEvent>& e) {
+        events.insert(events.end(), e.begin(), e.end());
+    };
+    keep(ok(m.start(0)));
+    keep(m.frame_presented(1, 10 * kMs));
+    keep(ok(m.request_switch(40 * kMs)));
+    keep(m.frame_presented(5, 50 * kMs));
+    keep(ok(m.pause(70 * kMs)));
+    keep(ok(m.resume(170 * kMs)));
+    keep(ok(m.request_switch(200 * kMs)));
+    keep(m.frame_presented(21, 210 * kMs));
+    keep(ok(m.request_confirm(260 * kMs)));
+    const std::map<int, TrialRuns> runs = trial_runs(events);
+    ASSERT_EQ(runs.size(), 1u);
+    const TrialRuns& r = runs.at(7);
+    const TrialOutcome& o = m.outcome();
+    EXPECT_EQ(r.runs, 1);
+    EXPECT_EQ(o.runs, 1);
+    EXPECT_EQ(r.switches, o.switches);
+    EXPECT_EQ(r.time_on_label_ns[0], o.time_on_label_ns[0]);
+    EXPECT_EQ(r.time_on_label_ns[1], o.time_on_label_ns[1]);
+    EXPECT_EQ(r.viewing_ns, o.decision_time_ns);
+    EXPECT_EQ(o.decision_time_ns, 150 * kMs);  // 10 to 260 ms, less the 100 ms pause
+}
+
+// An interrupted run's record of the trial ends at its last event or logged frame before the
+// next run started (a frame of a later run does not count); a run paused at the interruption
+// ends at the pause; an aborted one at the abort.
+TEST(TrialRuns, ARunCutShortEndsWithItsLastRecord) {
+    const std::vector<TrialEvent> events = {
+        logged(EventKind::RunStarted, 0, 0),
+        logged(EventKind::Shown, 1, 100 * kMs, 10),
+        logged(EventKind::Switched, 2, 300 * kMs, 30),
+        logged(EventKind::Switched, 1, 500 * kMs, 50),
+        logged(EventKind::RunStarted, 0, 2000 * kMs),
+        logged(EventKind::Shown, 1, 2100 * kMs, 200),
+        logged(EventKind::Paused, 0, 2200 * kMs),
+        logged(EventKind::RunStarted, 0, 2500 * kMs),
+        logged(EventKind::Shown, 1, 2600 * kMs, 300),
+        logged(EventKind::Switched, 2, 2650 * kMs, 305),
+        logged(EventKind::Aborted, 0, 2700 * kMs),
+    };
+    // Headless (no frame log): run 1 ends at its last switch, 500 ms.
+    TrialRuns r = trial_runs(events).at(7);
+    EXPECT_EQ(r.runs, 3);
+    EXPECT_EQ(r.switches, 3);
+    EXPECT_EQ(r.time_on_label_ns[0], (200 + 100 + 50) * kMs);
+    EXPECT_EQ(r.time_on_label_ns[1], (200 + 50) * kMs);
+    EXPECT_EQ(r.viewing_ns, (400 + 100 + 100) * kMs);
+    // With a frame log: run 1's frames of the trial reach 900 ms; the frame at 2300 ms belongs
+    // to run 2 (after its start) and the paused run 2 ends at its pause anyway.
+    const std::vector<FrameRecord> frames = {frame_of_trial(60, 600 * kMs),
+                                             frame_of_trial(90, 900 * kMs),
+                                             frame_of_trial(220, 2300 * kMs)};
+    r = trial_runs(events, frames).at(7);
+    EXPECT_EQ(r.time_on_label_ns[0], (200 + 400 + 100 + 50) * kMs);
+    EXPECT_EQ(r.viewing_ns, (800 + 100 + 100) * kMs);
+    EXPECT_EQ(r.time_on_label_ns[0] + r.time_on_label_ns[1], r.viewing_ns);
+}
+
+// Files from before runs were recorded have no run_started: the trial's second `shown` (logged
+// once per run) starts its next run.
+TEST(TrialRuns, WithoutRunStartedASecondShownIsTheNextRun) {
+    const std::vector<TrialEvent> events = {
+        logged(EventKind::Shown, 1, 100 * kMs, 10),
+        logged(EventKind::Switched, 2, 200 * kMs, 20),
+        logged(EventKind::Shown, 1, 5000 * kMs, 500),
+        logged(EventKind::Confirmed, 1, 5100 * kMs),
+    };
+    const TrialRuns r = trial_runs(events).at(7);
+    EXPECT_EQ(r.runs, 2);
+    EXPECT_EQ(r.switches, 1);
+    EXPECT_EQ(r.time_on_label_ns[0], 200 * kMs);
+    EXPECT_EQ(r.time_on_label_ns[1], 0);
+    EXPECT_EQ(r.viewing_ns, 200 * kMs);
+    EXPECT_TRUE(trial_runs({logged(EventKind::Paused, 0, 5)}).empty());  // never shown
+}
+
+// What earlier runs showed counts into the outcome of the run that decides; whether both labels
+// were seen is that run's own.
+TEST(TrialRuns, EarlierRunsCountIntoTheDecidingRunsOutcome) {
+    TrialRuns earlier;
+    earlier.runs = 2;
+    earlier.switches = 6;
+    earlier.time_on_label_ns[0] = 3000 * kMs;
+    earlier.time_on_label_ns[1] = 2000 * kMs;
+    earlier.viewing_ns = 5000 * kMs;
+    TrialStateMachine m(hybrid_is_label1(), true, earlier);
+    EXPECT_EQ(m.outcome().switches, 6);
+    ok(m.start(0));
+    m.frame_presented(1, 10 * kMs);
+    EXPECT_FALSE(m.request_confirm(20 * kMs).ok());  // label 2 not seen in this run
+    ok(m.request_switch(30 * kMs));
+    m.frame_presented(4, 40 * kMs);
+    ok(m.request_switch(50 * kMs));
+    m.frame_presented(6, 60 * kMs);
+    ok(m.request_confirm(100 * kMs));
+    const TrialOutcome& o = m.outcome();
+    EXPECT_EQ(o.runs, 3);
+    EXPECT_EQ(o.switches, 8);
+    EXPECT_EQ(o.time_on_label_ns[0], (3000 + 30 + 40) * kMs);
+    EXPECT_EQ(o.time_on_label_ns[1], (2000 + 20) * kMs);
+    EXPECT_EQ(o.decision_time_ns, (5000 + 90) * kMs);
+    EXPECT_TRUE(o.valid);
+}
 }  // namespace
 }  // namespace monoplane::study
