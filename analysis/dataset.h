@@ -21,6 +21,10 @@ namespace monoplane::analysis {
 struct TrialRow {
     std::string source;  // the file it came from (database or CSV path)
     std::int64_t session_id = 0;
+    // The session's globally unique id (the export's `session_uuid`): the same session found in
+    // two inputs (a copy, a backup) has the same one. "" when the input does not record it (an
+    // export of a monoplane from before the column).
+    std::string session_uuid;
     std::string participant;  // pseudonymous code: the cluster for repeated measures
     int session_number = 1;   // the participant's session, 1-based (the export's `session`)
     std::string protocol;
@@ -80,6 +84,12 @@ struct SessionRow {
     // 1: this is N - 1; exports without it: the participant's index within their database).
     int participant_number = 0;
     std::string protocol;
+    std::string session_uuid;  // as TrialRow::session_uuid
+    // The protocol version the session ran: its hash as the export writes it ("fnv1a64:" and 16
+    // hex digits; "" when the input does not record it) and its whole text (databases only: a
+    // CSV export does not hold it, so its design cannot be compared).
+    std::string protocol_hash;
+    std::string protocol_text;
     std::string started_utc;  // "" when unknown (CSV)
     // The protocol's `first_scene`: "latin-square", "random" or "fixed"; "" when the input does
     // not say (a CSV export).
@@ -106,6 +116,33 @@ enum class SharedCodes {
     PerDatabase,  // each input's codes are its own: every code gets its file's stem as prefix
 };
 
+// One protocol version the sessions ran, as list_protocol_versions() (protocol_versions.h) finds
+// it: versions are told apart by hash, their designs (scenes, distances, alternatives,
+// procedure, ...; not comments or wording) compared where the inputs hold the text.
+struct ProtocolVersion {
+    std::string name;
+    std::string hash;  // "" when the input did not record it (an older CSV export)
+    int sessions = 0;
+    std::vector<std::string> sources;  // the files its sessions came from, in reading order
+    // 1, 2, ...: versions with the same number share a design (design 1 is the first version's);
+    // 0: not known (no input holds the protocol's text: CSV exports only, or a text that no
+    // longer reads).
+    int design = 0;
+    // How the design differs from design 1, one line per field ("mono_planes: 3, 8 -> 2, 6");
+    // empty for design 1 and for a design not known.
+    std::vector<std::string> design_differences;
+};
+
+// A session that more than one input holds (the same session_uuid), counted once on request
+// (drop_duplicate_sessions, duplicate_sessions.h): the copies were identical.
+struct DroppedCopy {
+    std::string session_uuid;
+    std::string participant;  // the code as the inputs hold it (before any --codes prefix)
+    int session_number = 1;
+    std::string kept;                  // the input whose copy was counted (read first)
+    std::vector<std::string> dropped;  // the inputs whose copies were left out
+};
+
 struct Dataset {
     std::vector<TrialRow> trials;
     std::vector<AnswerRow> answers;
@@ -114,6 +151,12 @@ struct Dataset {
     // Set by join_participant_codes(): the rule applied and the codes more than one input held.
     SharedCodes codes = SharedCodes::Refuse;
     std::vector<std::string> shared_codes;
+    // Set by the checks of protocol_versions.h: every version the sessions ran, and whether
+    // sessions of different (or unknown) designs were pooled because the user asked.
+    std::vector<ProtocolVersion> protocol_versions;
+    bool pooled_protocols = false;
+    // Set by drop_duplicate_sessions(): the sessions several inputs held, counted once.
+    std::vector<DroppedCopy> dropped_copies;
 };
 
 // Reads the CSV of `monoplane study export --format csv` (columns: study/export.cpp
@@ -125,8 +168,9 @@ struct Dataset {
 // one, an export that has `repetition` numbers sessions in `session` too (sessions are then told
 // apart by participant and number), and an older export has the session id in `session` (one
 // session per participant). `sessions` gets one row per session, its variables from the
-// `var_<name>` columns. Text cells that the export guarded against spreadsheet formulas (a
-// leading apostrophe before =, +, -, @, tab or CR) come back as typed.
+// `var_<name>` columns, its session_uuid and protocol_hash (when the export has them; the
+// protocol's text is not in the export). Text cells that the export guarded against spreadsheet
+// formulas (a leading apostrophe before =, +, -, @, tab or CR) come back as typed.
 // Errors (a file that cannot be read, a missing column, a malformed field or record) name the
 // file, the line and, for a field, the column.
 Result<Dataset> read_export_csv(const std::filesystem::path& path);

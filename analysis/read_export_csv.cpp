@@ -184,6 +184,9 @@ Result<TrialRow> trial_row(const Row& row, SessionLayout layout) {
         MONOPLANE_ASSIGN(t.decision_time_s, row.number("decision_time_s"));
     }
     if (row.has("protocol")) t.protocol = row.raw_text("protocol");
+    // Exports before the column cannot be told from a copy of the same session: "" then.
+    if (row.has("session_uuid") && !row.is_na("session_uuid"))
+        t.session_uuid = row.raw_text("session_uuid");
     return t;
 }
 
@@ -196,6 +199,10 @@ Result<SessionRow> session_row(const Row& row, const TrialRow& t) {
     s.participant = t.participant;
     s.session_number = t.session_number;
     s.protocol = t.protocol;
+    s.session_uuid = t.session_uuid;
+    // The hash only: the export does not hold the protocol's text, so its design is not known.
+    if (row.has("protocol_hash") && !row.is_na("protocol_hash"))
+        s.protocol_hash = row.raw_text("protocol_hash");
     if (row.has("participant_number") && !row.is_na("participant_number")) {
         MONOPLANE_ASSIGN(s.participant_number, small_integer(row, "participant_number"));
         s.participant_number -= 1;  // the export's is 1-based, as --participant-number takes it

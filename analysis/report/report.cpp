@@ -161,6 +161,8 @@ std::string data_section_html(const AnalysisResults& r) {
              "session 1). " +
              codes_note_html(r.day) + "</p>\n";
     }
+    h += protocol_versions_html(r.inputs);
+    h += dropped_copies_html(r.inputs);
     {
         const Exclusions& e = r.exclusions;
         Table t;
@@ -322,6 +324,7 @@ AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
     r.switches = switches_by_scene(kept);
     r.questionnaire = questionnaire_summaries(data.answers);
     r.day = study_day(data);
+    r.inputs = input_records(data);
     return r;
 }
 
@@ -653,6 +656,7 @@ std::string summary_json(const AnalysisResults& r) {
     logistic_json(json, r);
     psychometric_json(json, r);
     study_day_json(json, r.day);
+    input_records_json(json, r.inputs);
 
     groups_json(json, r.decision_times, "decision_time_s");
     groups_json(json, r.switches, "switches");

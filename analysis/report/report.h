@@ -17,6 +17,7 @@
 #include "analysis/frame_timing.h"
 #include "analysis/logistic_regression.h"
 #include "analysis/psychometric_fits.h"
+#include "analysis/report/inputs_section.h"
 #include "analysis/report/study_day_section.h"
 #include "analysis/summaries.h"
 #include "common/result.h"
@@ -81,6 +82,8 @@ struct AnalysisResults {
     FrameTimingSummary frame_timing;  // headset sessions' frame logs
     // Participants with their sessions and variables, notes, counterbalancing.
     StudyDay day;
+    // The protocol versions the sessions ran and the sessions several files held.
+    InputRecords inputs;
 };
 
 // Runs every statistic. Never fails: a test that cannot be computed on these data (too few
