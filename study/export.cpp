@@ -101,6 +101,7 @@ std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s,
         integer(r.session_id),
         integer(t.repetition),
         integer(s.participant_number + 1),  // 1-based, as --participant-number takes it
+        d ? integer(o.runs) : na(),
     };
     append_variables(cells, s, variables);
     return cells;
@@ -270,6 +271,7 @@ const std::vector<std::string_view>& export_columns() {
         "session_id",
         "repetition",
         "participant_number",
+        "runs",
     };
     return columns;
 }

@@ -23,14 +23,14 @@ const std::string kHeader =
     "switches,time_label1_s,time_label2_s,decision_time_s,practice,decided,label2_mode,"
     "participant_index,protocol,protocol_hash,observer,runtime,hmd,session_status,"
     "anti_aliasing,ssao,detail,procedure,staircase_threshold_m,staircase_lower_m,staircase_upper_"
-    "m,session_id,repetition,participant_number\n";
+    "m,session_id,repetition,participant_number,runs\n";
 const std::string kPracticeRow =
     "P01,1,0,NA,landscape,5,stereo,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,hybrid,0,fink2019,"
-    "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,1,1\n";
+    "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,1,1,NA\n";
 const std::string kDecidedRow =
     "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,hybrid,0,"
     "fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,"
-    "1,1\n";
+    "1,1,2\n";
 
 SessionInfo known_session() {
     SessionInfo info;
@@ -71,6 +71,7 @@ ExportData known_data() {
     decided.outcome.time_on_label_ns[0] = 1'500'000'000;
     decided.outcome.time_on_label_ns[1] = 1'600'000'001;
     decided.outcome.decision_time_ns = 3'100'000'001;
+    decided.outcome.runs = 2;  // interrupted once while shown
     data.trials = {practice, decided};
     return data;
 }
@@ -119,7 +120,7 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"ssao\": \"off\", \"detail\": \"low\", \"procedure\": \"constant\", "
         "\"staircase_threshold_m\": null, \"staircase_lower_m\": null, "
         "\"staircase_upper_m\": null, \"session_id\": 1, \"repetition\": 1, "
-        "\"participant_number\": 1, \"scene_files\": [], \"session_notes\": []},\n"
+        "\"participant_number\": 1, \"runs\": null, \"scene_files\": [], \"session_notes\": []},\n"
         "  {\"participant\": \"P01\", \"session\": 1, \"trial_index\": 2, \"block\": 0, "
         "\"scene\": \"spheres\", \"mono_plane\": 1.6, \"label1_mode\": \"stereo\", \"choice\": 1, "
         "\"chosen_mode\": \"stereo\", \"valid\": true, \"switches\": 2, \"time_label1_s\": 1.5, "
@@ -131,7 +132,7 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"anti_aliasing\": \"taa\", \"ssao\": \"off\", \"detail\": \"low\", "
         "\"procedure\": \"constant\", \"staircase_threshold_m\": null, "
         "\"staircase_lower_m\": null, \"staircase_upper_m\": null, \"session_id\": 1, "
-        "\"repetition\": 1, \"participant_number\": 1, \"scene_files\": [], "
+        "\"repetition\": 1, \"participant_number\": 1, \"runs\": 2, \"scene_files\": [], "
         "\"session_notes\": []}\n"
         "]\n";
     EXPECT_EQ(out.str(), expected);
@@ -148,16 +149,16 @@ TEST(StudyExport, StaircaseTrialsCarryTheirStaircasesEstimate) {
     const std::string staircase_row =
         "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,"
         "hybrid,0,fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,"
-        "staircase,6.25,3,12.5,1,1,1\n";
+        "staircase,6.25,3,12.5,1,1,1,2\n";
     const std::string practice_row =
-        kPracticeRow.substr(0, kPracticeRow.size() - 24) + "staircase,NA,NA,NA,1,1,1\n";
+        kPracticeRow.substr(0, kPracticeRow.size() - 27) + "staircase,NA,NA,NA,1,1,1,NA\n";
     EXPECT_EQ(out.str(), kHeader + practice_row + staircase_row);
 
     data.staircase_estimates[1][2] =
         ThresholdEstimate{6.25, std::nullopt, std::nullopt, std::nullopt, 7};
     std::ostringstream up_down;
     write_csv(data, up_down);
-    EXPECT_NE(up_down.str().find(",staircase,6.25,NA,NA,1,1,1\n"), std::string::npos);
+    EXPECT_NE(up_down.str().find(",staircase,6.25,NA,NA,1,1,1,2\n"), std::string::npos);
 }
 
 // An imported scene's trial lists the files the scene was read from (only its own scene's), and
@@ -287,7 +288,8 @@ TEST(StudyExport, FormatNames) {
     EXPECT_EQ(export_format_name(ExportFormat::FramesCsv), "frames-csv");
     EXPECT_EQ(*parse_export_format("notes-csv"), ExportFormat::NotesCsv);
     EXPECT_EQ(export_format_name(ExportFormat::NotesCsv), "notes-csv");
-    EXPECT_EQ(export_columns().size(), 34u);
+    EXPECT_EQ(export_columns().size(), 35u);
+    EXPECT_EQ(export_columns().back(), "runs");
     EXPECT_EQ(export_columns().front(), "participant");
 }
 
@@ -337,8 +339,8 @@ TEST(StudyExport, SessionIsTheParticipantsNumberAndTheIdFollows) {
     std::ostringstream csv;
     write_csv(data, csv);
     EXPECT_NE(csv.str().find("\nP01,2,2,0,spheres,1.6,"), std::string::npos) << csv.str();
-    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,7,3,5\n"), std::string::npos) << csv.str();
-    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,1,1,1\n"), std::string::npos) << csv.str();
+    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,7,3,5,2\n"), std::string::npos) << csv.str();
+    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,1,1,1,NA\n"), std::string::npos) << csv.str();
     std::ostringstream json;
     write_json(data, json);
     EXPECT_NE(json.str().find("{\"participant\": \"P01\", \"session\": 2, \"trial_index\": 2, "),
@@ -384,17 +386,20 @@ TEST(StudyExport, EveryParticipantVariableIsAColumn) {
         text.substr(0, text.find('\n') + 1),
         kHeader.substr(0, kHeader.size() - 1) + ",var_age,var_vision,var_remark,var_offset_db\n");
     EXPECT_NE(text.find("\nP01,1,0,NA,landscape,5,"), std::string::npos);
-    EXPECT_NE(text.find(",1,1,1,34,corrected,\"'=1+1\",NA\nP01,1,2,"), std::string::npos) << text;
-    EXPECT_NE(text.find(",2,1,2,NA,\"'-\",NA,-5.5\n"), std::string::npos) << text;
+    EXPECT_NE(text.find(",1,1,1,NA,34,corrected,\"'=1+1\",NA\nP01,1,2,"), std::string::npos)
+        << text;
+    EXPECT_NE(text.find(",2,1,2,NA,NA,\"'-\",NA,-5.5\n"), std::string::npos) << text;
 
     std::ostringstream json;
     write_json(data, json);
-    EXPECT_NE(json.str().find("\"participant_number\": 1, \"var_age\": 34, \"var_vision\": "
+    EXPECT_NE(json.str().find("\"participant_number\": 1, \"runs\": null, \"var_age\": 34, "
+                              "\"var_vision\": "
                               "\"corrected\", \"var_remark\": \"=1+1\", \"var_offset_db\": null, "
                               "\"scene_files\""),
               std::string::npos)
         << json.str();
-    EXPECT_NE(json.str().find("\"participant_number\": 2, \"var_age\": null, \"var_vision\": "
+    EXPECT_NE(json.str().find("\"participant_number\": 2, \"runs\": null, \"var_age\": null, "
+                              "\"var_vision\": "
                               "\"-\", \"var_remark\": null, \"var_offset_db\": -5.5, "),
               std::string::npos)
         << json.str();
@@ -597,7 +602,7 @@ TEST(StudyExport, ExportsFromTheStoreToAFile) {
         const std::string beams =
             "P01,1,1,NA,beams,3,hybrid,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,stereo,0,fink2019,"
             "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,"
-            "1,1\n";
+            "1,1,NA\n";
         EXPECT_EQ(text, kHeader + kPracticeRow + beams + kDecidedRow);
         for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
             EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
@@ -661,14 +666,14 @@ TEST(StudyExport, ExportsSessionsVariablesAndNotesFromTheStore) {
 
         ASSERT_TRUE(export_trials(store, ExportFormat::Csv, dir / "trials.csv").ok());
         const std::string csv = read_file(dir / "trials.csv");
-        EXPECT_NE(csv.find(",participant_number,var_age,var_handedness\n"), std::string::npos)
+        EXPECT_NE(csv.find(",participant_number,runs,var_age,var_handedness\n"), std::string::npos)
             << csv;
         EXPECT_NE(csv.find("\nP01,1,1,0,spheres,1.6,hybrid,"), std::string::npos) << csv;
-        EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*first) + ",2,1,34,NA\n"),
+        EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*first) + ",2,1,NA,34,NA\n"),
                   std::string::npos)
             << csv;
         EXPECT_NE(csv.find("\nP01,2,1,0,spheres,1.6,hybrid,"), std::string::npos) << csv;
-        EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*second) + ",2,1,34,NA\n"),
+        EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*second) + ",2,1,NA,34,NA\n"),
                   std::string::npos)
             << csv;
 
