@@ -6,6 +6,8 @@
 #include <system_error>
 #include <utility>
 
+#include "analysis/duplicate_sessions.h"
+#include "analysis/protocol_versions.h"
 #include "app/commands/option_wording.h"
 #include "app/commands/output_folder.h"
 #include "app/commands/study_rows.h"
@@ -26,6 +28,9 @@ analysis::SessionRow session_row(const study::SessionInfo& info, const std::stri
     s.session_number = info.session_number;
     s.participant_number = info.participant_number;
     s.protocol = info.protocol_name;
+    s.session_uuid = info.session_uuid;
+    s.protocol_hash = study::hash_text(info.protocol_hash);  // as the export writes it
+    s.protocol_text = info.protocol_text;
     s.started_utc = info.started_utc;
     Result<study::Protocol> protocol =
         study::parse_protocol(info.protocol_text, "session " + std::to_string(info.id));
@@ -126,7 +131,13 @@ Result<analysis::Dataset> read_inputs(const AnalyzeRequest& r) {
         tell(r, "read " + csv.string() + ": " + std::to_string(one->trials.size()) + " trials");
         analysis::merge(merged, std::move(one).value());
     }
+    // Copies first: a copy's participant codes are the original's, which is no question of
+    // --codes. Then the versions of the sessions that count.
+    MONOPLANE_TRY(
+        analysis::drop_duplicate_sessions(merged, r.drop_duplicates, "--drop-duplicates"));
     analysis::derive_session_fields(merged.trials);
+    MONOPLANE_TRY(analysis::check_protocol_versions(merged, protocol_design_comparison(),
+                                                    r.pool_protocols, "--pool-protocols"));
     MONOPLANE_TRY(analysis::join_participant_codes(merged, r.codes, codes_option_names()));
     return merged;
 }

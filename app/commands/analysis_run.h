@@ -25,6 +25,12 @@ struct AnalyzeRequest {
     bool log2_distance = false;   // `--log2-distance`
     bool no_scene_terms = false;  // `--no-scene-terms`
     analysis::SharedCodes codes = analysis::SharedCodes::Refuse;  // `--codes`
+    // `--pool-protocols`: pool sessions of protocol versions whose designs differ (or cannot be
+    // compared) instead of refusing them.
+    bool pool_protocols = false;
+    // `--drop-duplicates`: count once a session several inputs hold in identical copies instead
+    // of refusing them (copies that differ are refused all the same).
+    bool drop_duplicates = false;
     // Told each input as it is read ("read FILE: N trials, ..."); may be empty.
     std::function<void(const std::string&)> on_read;
 };
@@ -40,9 +46,11 @@ struct AnalysisWritten {
 // Runs the analysis of `request` and writes its files. May be called at any time, also while a
 // session writes to one of the databases (it reads what is committed). The output folder and the
 // inputs are checked before anything is written, so a refusal leaves no output folder behind.
-// Errors (no input, a file given twice, a missing or unreadable file, a participant code several
-// inputs hold without `codes` saying what it means, an output folder that holds files analyze did
-// not write without `force`, one that cannot be written) name the option and the file.
+// Errors (no input, a file given twice, a missing or unreadable file, a session several inputs
+// hold (identical copies without `drop_duplicates`, copies that differ always), sessions of
+// protocol designs that differ without `pool_protocols`, a participant code several inputs hold
+// without `codes` saying what it means, an output folder that holds files analyze did not write
+// without `force`, one that cannot be written) name the option and the file.
 Result<AnalysisWritten> run_analysis(const AnalyzeRequest& request);
 
 }  // namespace monoplane::app

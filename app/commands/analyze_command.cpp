@@ -5,8 +5,11 @@
 // among them the psychometric functions per participant and scene (issue 21). A study day (issue
 // 30): several sessions per participant, repetitions, participant variables and notes in the
 // report, the Latin square's rows counted over all inputs, and participant codes that several
-// inputs hold joined only as `--codes` says. The work is run_analysis() (analysis_run.h), which
-// the launcher calls too; this file parses the options and prints.
+// inputs hold joined only as `--codes` says. Integrity (issue 42): the protocol versions the
+// sessions ran are listed, designs that differ pooled only with `--pool-protocols`, and a session
+// several files hold counted once only with `--drop-duplicates` (and only when the copies agree).
+// The work is run_analysis() (analysis_run.h), which the launcher calls too; this file parses the
+// options and prints.
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -29,12 +32,35 @@ struct AnalyzeOptions {
     bool log2_distance = false;
     bool no_scene_terms = false;
     std::string codes;  // --codes: "" (refuse shared codes), same-person or per-database
+    bool pool_protocols = false;
+    bool drop_duplicates = false;
 };
 
 analysis::SharedCodes shared_codes_rule(const std::string& codes) {
     if (codes == "same-person") return analysis::SharedCodes::SamePerson;
     if (codes == "per-database") return analysis::SharedCodes::PerDatabase;
     return analysis::SharedCodes::Refuse;
+}
+
+// The protocol versions on stderr, and what was pooled or counted once on request: a reader of
+// the log sees what the numbers rest on without opening the report.
+void print_inputs(const analysis::report::InputRecords& inputs) {
+    for (const analysis::ProtocolVersion& v : inputs.protocol_versions) {
+        std::cerr << "protocol " << v.name << " "
+                  << (v.hash.empty() ? "(hash not recorded)" : v.hash) << ": " << v.sessions
+                  << (v.sessions == 1 ? " session" : " sessions") << ", design "
+                  << (v.design == 0 ? "not known" : std::to_string(v.design)) << "\n";
+    }
+    if (inputs.pooled_protocols)
+        std::cerr << "pooled " << inputs.protocol_versions.size()
+                  << " protocol versions of different designs (--pool-protocols)\n";
+    for (const analysis::DroppedCopy& d : inputs.dropped_copies) {
+        std::cerr << "counted once: participant " << d.participant << ", session "
+                  << d.session_number << " (" << d.session_uuid << ") from " << d.kept
+                  << ", its identical copy in";
+        for (const std::string& source : d.dropped) std::cerr << " " << source;
+        std::cerr << " left out (--drop-duplicates)\n";
+    }
 }
 
 // The Latin square's rows on stderr, with a warning when they are unevenly filled (the case of
@@ -62,10 +88,13 @@ void run_analyze(const AnalyzeOptions& o) {
     request.log2_distance = o.log2_distance;
     request.no_scene_terms = o.no_scene_terms;
     request.codes = shared_codes_rule(o.codes);
+    request.pool_protocols = o.pool_protocols;
+    request.drop_duplicates = o.drop_duplicates;
     request.on_read = [](const std::string& line) { std::cerr << line << "\n"; };
     const AnalysisWritten written = run_analysis(request).value_or_throw();
     const analysis::report::AnalysisResults& results = written.results;
 
+    print_inputs(results.inputs);
     const analysis::Exclusions& e = results.exclusions;
     std::cerr << "merged " << results.sources.size() << " source(s): " << results.sessions
               << " sessions, " << results.participants << " participants, " << results.trials
@@ -127,6 +156,14 @@ void add_analyze_command(CLI::App& root, const GlobalOptions&) {
                     "(each file's codes are its own, e.g. two sites: each code is prefixed with "
                     "its file's name, site-a/a1)")
         ->check(CLI::IsMember({"same-person", "per-database"}));
+    cmd->add_flag("--pool-protocols", o->pool_protocols,
+                  "Pool sessions of protocol versions whose designs differ (scenes, distances, "
+                  "alternatives, procedure, ...) or cannot be compared (CSV exports hold only the "
+                  "protocol's hash); without it they are refused. The report lists the versions");
+    cmd->add_flag("--drop-duplicates", o->drop_duplicates,
+                  "Count once a session that several input files hold in identical copies (a "
+                  "copy, a backup of the database); without it they are refused. Copies that "
+                  "differ are refused all the same");
     cmd->callback([o] { run_analyze(*o); });
 }
 

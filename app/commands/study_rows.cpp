@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <optional>
 #include <system_error>
 
 #include "rig/error_budget.h"
 #include "rig/rig.h"
 #include "study/export.h"
+#include "study/protocol_design.h"
 #include "study/render_mode.h"
 
 namespace monoplane::app {
@@ -60,6 +62,7 @@ analysis::TrialRow trial_row(const study::TrialRecord& record, const study::Sess
     analysis::TrialRow row;
     row.source = source;
     row.session_id = record.session_id;
+    row.session_uuid = session.session_uuid;
     row.participant = record.participant_code;
     row.protocol = session.protocol_name;
     row.trial_index = record.trial.index;
@@ -95,6 +98,29 @@ double missed_frame_threshold(const study::SessionInfo& session) {
     Result<study::Protocol> protocol =
         study::parse_protocol(session.protocol_text, "session " + std::to_string(session.id));
     return protocol ? protocol->missed_frame_threshold : study::Protocol{}.missed_frame_threshold;
+}
+
+analysis::DesignComparison protocol_design_comparison() {
+    // Shared by the copies of the function: the analysis compares each version with each design.
+    auto parsed = std::make_shared<std::map<std::string, std::optional<study::Protocol>>>();
+    const auto protocol =
+        [parsed](const std::string& text) -> const std::optional<study::Protocol>& {
+        auto found = parsed->find(text);
+        if (found == parsed->end()) {
+            Result<study::Protocol> read = study::parse_protocol(text, "a session's protocol");
+            found =
+                parsed->emplace(text, read ? std::optional(std::move(read).value()) : std::nullopt)
+                    .first;
+        }
+        return found->second;
+    };
+    return [protocol](const std::string& earlier,
+                      const std::string& later) -> std::optional<std::vector<std::string>> {
+        const std::optional<study::Protocol>& a = protocol(earlier);
+        const std::optional<study::Protocol>& b = protocol(later);
+        if (!a || !b) return std::nullopt;
+        return study::design_differences(*a, *b);
+    };
 }
 
 Result<analysis::Dataset> read_study_database(const std::filesystem::path& path) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "analysis/dataset.h"
+#include "analysis/protocol_versions.h"
 #include "common/result.h"
 #include "hmd/profile.h"
 #include "study/protocol.h"
@@ -46,6 +47,11 @@ std::map<int, TrialFrameCounts> trial_frame_counts(const std::vector<study::Fram
 // missed_frame_threshold as the session ran it, or the protocol default when its stored text no
 // longer parses. Any time.
 double missed_frame_threshold(const study::SessionInfo& session);
+
+// The study library's rule for whether two protocol texts are one experiment
+// (study/protocol_design.h), for analysis::check_protocol_versions: each text is parsed once.
+// Any time.
+analysis::DesignComparison protocol_design_comparison();
 
 // Every trial and questionnaire answer of a study database, labelled with `path` as their
 // source, with derive_session_fields() applied. Opens the database for reading only in effect
