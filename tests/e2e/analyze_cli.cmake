@@ -89,12 +89,13 @@ execute_process(COMMAND ${MONOPLANE} analyze --db ${OUT}/missing.sqlite --out ${
 if(rc EQUAL 0 OR NOT log MATCHES "missing.sqlite" OR EXISTS ${OUT}/missing.sqlite)
   message(FATAL_ERROR "a missing database must fail naming it, and not be created (${rc}): ${log}")
 endif()
-# An empty file is an empty SQLite database: the store gives it its tables and no sessions.
+# A 0-byte file (a copy that failed) is no study database: refused, and left as it was.
 file(WRITE ${OUT}/empty.sqlite "")
 execute_process(COMMAND ${MONOPLANE} analyze --db ${OUT}/empty.sqlite --out ${OUT}/none
                 RESULT_VARIABLE rc ERROR_VARIABLE log)
-if(rc EQUAL 0 OR NOT log MATCHES "no sessions")
-  message(FATAL_ERROR "a database without sessions must be refused (${rc}): ${log}")
+file(SIZE ${OUT}/empty.sqlite empty_size)
+if(rc EQUAL 0 OR NOT log MATCHES "0 bytes: not a study database" OR NOT empty_size EQUAL 0)
+  message(FATAL_ERROR "a 0-byte database must be refused and stay 0 bytes (${rc}): ${log}")
 endif()
 file(WRITE ${OUT}/garbage.csv "this,is\nnot,an export\n")
 execute_process(COMMAND ${MONOPLANE} analyze --csv ${OUT}/garbage.csv --out ${OUT}/none
