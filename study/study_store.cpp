@@ -989,6 +989,33 @@ constexpr std::string_view kRosterQuery =
 
 }  // namespace
 
+namespace {
+
+// Where a query's row has a session's id, status and protocol hash.
+struct SessionColumns {
+    int id = 0;
+    int status = 0;
+    int hash = 0;
+};
+
+struct StatusAndHash {
+    SessionStatus status = SessionStatus::Running;
+    std::uint64_t hash = 0;
+};
+
+// The row's status and protocol hash, or an error naming the session whose row holds bad ones.
+Result<StatusAndHash> status_and_hash(const Connection& db, const Statement& s,
+                                      SessionColumns columns) {
+    const std::optional<SessionStatus> status = parse_status(s.text(columns.status));
+    const std::optional<std::uint64_t> hash = parse_u64(s.text(columns.hash), 16);
+    if (!status || !hash)
+        return Error{"study database '" + db.path() + "' holds a bad status or hash in session " +
+                     std::to_string(s.int64(columns.id))};
+    return StatusAndHash{*status, *hash};
+}
+
+}  // namespace
+
 Result<std::vector<RosterRow>> StudyStore::roster() const {
     const Connection& db = impl_->db;
     Result<Statement> stmt = Statement::prepare(db, kRosterQuery);
@@ -999,11 +1026,10 @@ Result<std::vector<RosterRow>> StudyStore::roster() const {
         MONOPLANE_TRY(row);
         if (!*row) break;
         const Statement& s = stmt.value();
-        const std::optional<SessionStatus> status = parse_status(s.text(4));
-        const std::optional<std::uint64_t> hash = parse_u64(s.text(11), 16);
-        if (!status || !hash)
-            return Error{"study database '" + db.path() +
-                         "' holds a bad status or hash in session " + std::to_string(s.int64(3))};
+        Result<StatusAndHash> checked = status_and_hash(db, s, {.id = 3, .status = 4, .hash = 11});
+        MONOPLANE_TRY(checked);
+        const std::optional<SessionStatus> status = checked->status;
+        const std::optional<std::uint64_t> hash = checked->hash;
         rows.push_back(RosterRow{.participant_code = s.text(0),
                                  .participant_number = s.int32(1),
                                  .session_number = s.int32(2),
@@ -1054,11 +1080,10 @@ Result<std::vector<EarlierSession>> StudyStore::earlier_sessions(const std::stri
         MONOPLANE_TRY(row);
         if (!*row) break;
         const Statement& s = stmt.value();
-        const std::optional<SessionStatus> status = parse_status(s.text(2));
-        const std::optional<std::uint64_t> hash = parse_u64(s.text(7), 16);
-        if (!status || !hash)
-            return Error{"study database '" + db.path() +
-                         "' holds a bad status or hash in session " + std::to_string(s.int64(0))};
+        Result<StatusAndHash> checked = status_and_hash(db, s, {.id = 0, .status = 2, .hash = 7});
+        MONOPLANE_TRY(checked);
+        const std::optional<SessionStatus> status = checked->status;
+        const std::optional<std::uint64_t> hash = checked->hash;
         EarlierSession earlier{.id = s.int64(0),
                                .session_number = s.int32(1),
                                .status = *status,

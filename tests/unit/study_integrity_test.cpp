@@ -259,12 +259,11 @@ TEST_F(StudyIntegrityTest, AReadingStoreSeesWhatALiveWriterCommittedAndLeavesIts
     ASSERT_TRUE(writer.ok());
     Result<std::int64_t> id = (*writer)->begin_session(info_for("k9", 1), two_trial_schedule(0));
     ASSERT_TRUE(id.ok());
-    ASSERT_TRUE(
-        (*writer)
-            ->append_event(
-                *id,
-                TrialEvent{.kind = EventKind::Shown, .trial_index = 0, .label = 1, .time_ns = 5})
-            .ok());
+    TrialEvent shown;
+    shown.kind = EventKind::Shown;
+    shown.label = 1;
+    shown.time_ns = 5;
+    ASSERT_TRUE((*writer)->append_event(*id, shown).ok());
     const auto before = fingerprint(db_);
     ASSERT_NE(before.at("-wal"), "absent");  // the writer's log holds the session
     auto reader = StudyStore::open_read_only(db_);
