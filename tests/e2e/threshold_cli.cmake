@@ -47,6 +47,14 @@ foreach(scene beams landscape spheres)
   endif()
 endforeach()
 list(REMOVE_AT lines 0)
+# The staircase columns counted from the end (the quoted observer holds commas; columns added
+# after them, such as runs, shift nothing here).
+string(REPLACE "," ";" header_fields "${header}")
+list(LENGTH header_fields header_length)
+list(FIND header_fields staircase_threshold_m estimate_column)
+math(EXPR estimate_from_end "${estimate_column} - ${header_length}")
+math(EXPR lower_from_end "${estimate_from_end} + 1")
+math(EXPR upper_from_end "${estimate_from_end} + 2")
 set(data 0)
 foreach(line IN LISTS lines)
   if(NOT line MATCHES ",staircase,[^,]+,[^,]+,[^,]+,")
@@ -55,11 +63,9 @@ foreach(line IN LISTS lines)
   string(REPLACE "," ";" fields "${line}")
   list(GET fields 5 m)
   list(GET fields 14 practice)
-  # From the end (the quoted observer holds commas), before session_id, repetition and
-  # participant_number.
-  list(GET fields -6 estimate)
-  list(GET fields -5 lower)
-  list(GET fields -4 upper)
+  list(GET fields ${estimate_from_end} estimate)
+  list(GET fields ${lower_from_end} lower)
+  list(GET fields ${upper_from_end} upper)
   # Data trials carry QUEST+'s estimate inside its interval and the distances' range; practice
   # trials none.
   if(practice STREQUAL "TRUE" AND NOT estimate STREQUAL "NA")
