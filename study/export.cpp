@@ -102,6 +102,7 @@ std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s,
         integer(t.repetition),
         integer(s.participant_number + 1),  // 1-based, as --participant-number takes it
         d ? integer(o.runs) : na(),
+        s.session_uuid.empty() ? na() : text(s.session_uuid),  // NA: a session made by hand
     };
     append_variables(cells, s, variables);
     return cells;
@@ -272,6 +273,7 @@ const std::vector<std::string_view>& export_columns() {
         "repetition",
         "participant_number",
         "runs",
+        "session_uuid",
     };
     return columns;
 }

@@ -18,19 +18,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The known session's id (a store makes one when a session begins; the export copies it).
+const std::string kUuid = "0b6e2c4a-5d1f-4e2a-9c3b-7a8d9e0f1a2b";
 const std::string kHeader =
     "participant,session,trial_index,block,scene,mono_plane,label1_mode,choice,chosen_mode,valid,"
     "switches,time_label1_s,time_label2_s,decision_time_s,practice,decided,label2_mode,"
     "participant_index,protocol,protocol_hash,observer,runtime,hmd,session_status,"
     "anti_aliasing,ssao,detail,procedure,staircase_threshold_m,staircase_lower_m,staircase_upper_"
-    "m,session_id,repetition,participant_number,runs\n";
+    "m,session_id,repetition,participant_number,runs,session_uuid\n";
 const std::string kPracticeRow =
     "P01,1,0,NA,landscape,5,stereo,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,hybrid,0,fink2019,"
-    "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,1,1,NA\n";
+    "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,1,1,NA," +
+    kUuid + "\n";
 const std::string kDecidedRow =
     "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,hybrid,0,"
     "fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,"
-    "1,1,2\n";
+    "1,1,2," +
+    kUuid + "\n";
 
 SessionInfo known_session() {
     SessionInfo info;
@@ -48,6 +52,7 @@ SessionInfo known_session() {
     info.observer = "default";
     info.started_utc = "2024-05-01T09:30:00Z";
     info.render = {"taa", "off", "low"};
+    info.session_uuid = kUuid;
     return info;
 }
 
@@ -120,7 +125,9 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"ssao\": \"off\", \"detail\": \"low\", \"procedure\": \"constant\", "
         "\"staircase_threshold_m\": null, \"staircase_lower_m\": null, "
         "\"staircase_upper_m\": null, \"session_id\": 1, \"repetition\": 1, "
-        "\"participant_number\": 1, \"runs\": null, \"scene_files\": [], \"session_notes\": []},\n"
+        "\"participant_number\": 1, \"runs\": null, \"session_uuid\": \"" +
+        kUuid +
+        "\", \"scene_files\": [], \"session_notes\": []},\n"
         "  {\"participant\": \"P01\", \"session\": 1, \"trial_index\": 2, \"block\": 0, "
         "\"scene\": \"spheres\", \"mono_plane\": 1.6, \"label1_mode\": \"stereo\", \"choice\": 1, "
         "\"chosen_mode\": \"stereo\", \"valid\": true, \"switches\": 2, \"time_label1_s\": 1.5, "
@@ -132,7 +139,9 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"anti_aliasing\": \"taa\", \"ssao\": \"off\", \"detail\": \"low\", "
         "\"procedure\": \"constant\", \"staircase_threshold_m\": null, "
         "\"staircase_lower_m\": null, \"staircase_upper_m\": null, \"session_id\": 1, "
-        "\"repetition\": 1, \"participant_number\": 1, \"runs\": 2, \"scene_files\": [], "
+        "\"repetition\": 1, \"participant_number\": 1, \"runs\": 2, \"session_uuid\": \"" +
+        kUuid +
+        "\", \"scene_files\": [], "
         "\"session_notes\": []}\n"
         "]\n";
     EXPECT_EQ(out.str(), expected);
@@ -149,16 +158,18 @@ TEST(StudyExport, StaircaseTrialsCarryTheirStaircasesEstimate) {
     const std::string staircase_row =
         "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,"
         "hybrid,0,fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,"
-        "staircase,6.25,3,12.5,1,1,1,2\n";
-    const std::string practice_row =
-        kPracticeRow.substr(0, kPracticeRow.size() - 27) + "staircase,NA,NA,NA,1,1,1,NA\n";
+        "staircase,6.25,3,12.5,1,1,1,2," +
+        kUuid + "\n";
+    const std::string practice_row = kPracticeRow.substr(0, kPracticeRow.find("constant,")) +
+                                     "staircase,NA,NA,NA,1,1,1,NA," + kUuid + "\n";
     EXPECT_EQ(out.str(), kHeader + practice_row + staircase_row);
 
     data.staircase_estimates[1][2] =
         ThresholdEstimate{6.25, std::nullopt, std::nullopt, std::nullopt, 7};
     std::ostringstream up_down;
     write_csv(data, up_down);
-    EXPECT_NE(up_down.str().find(",staircase,6.25,NA,NA,1,1,1,2\n"), std::string::npos);
+    EXPECT_NE(up_down.str().find(",staircase,6.25,NA,NA,1,1,1,2," + kUuid + "\n"),
+              std::string::npos);
 }
 
 // An imported scene's trial lists the files the scene was read from (only its own scene's), and
@@ -288,8 +299,8 @@ TEST(StudyExport, FormatNames) {
     EXPECT_EQ(export_format_name(ExportFormat::FramesCsv), "frames-csv");
     EXPECT_EQ(*parse_export_format("notes-csv"), ExportFormat::NotesCsv);
     EXPECT_EQ(export_format_name(ExportFormat::NotesCsv), "notes-csv");
-    EXPECT_EQ(export_columns().size(), 35u);
-    EXPECT_EQ(export_columns().back(), "runs");
+    EXPECT_EQ(export_columns().size(), 36u);
+    EXPECT_EQ(export_columns().back(), "session_uuid");
     EXPECT_EQ(export_columns().front(), "participant");
 }
 
@@ -339,8 +350,10 @@ TEST(StudyExport, SessionIsTheParticipantsNumberAndTheIdFollows) {
     std::ostringstream csv;
     write_csv(data, csv);
     EXPECT_NE(csv.str().find("\nP01,2,2,0,spheres,1.6,"), std::string::npos) << csv.str();
-    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,7,3,5,2\n"), std::string::npos) << csv.str();
-    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,1,1,1,NA\n"), std::string::npos) << csv.str();
+    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,7,3,5,2," + kUuid + "\n"), std::string::npos)
+        << csv.str();
+    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,1,1,1,NA," + kUuid + "\n"), std::string::npos)
+        << csv.str();
     std::ostringstream json;
     write_json(data, json);
     EXPECT_NE(json.str().find("{\"participant\": \"P01\", \"session\": 2, \"trial_index\": 2, "),
@@ -365,6 +378,7 @@ ExportData data_with_variables() {
     other.participant_code = "P02";
     other.participant_index = 1;
     other.participant_number = 1;
+    other.session_uuid.clear();  // a session made by hand: NA
     other.variables = {{"vision", VariableType::Choice, "-"},
                        {"offset_db", VariableType::Number, "-5.5"}};
     data.sessions.emplace(2, other);
@@ -386,19 +400,23 @@ TEST(StudyExport, EveryParticipantVariableIsAColumn) {
         text.substr(0, text.find('\n') + 1),
         kHeader.substr(0, kHeader.size() - 1) + ",var_age,var_vision,var_remark,var_offset_db\n");
     EXPECT_NE(text.find("\nP01,1,0,NA,landscape,5,"), std::string::npos);
-    EXPECT_NE(text.find(",1,1,1,NA,34,corrected,\"'=1+1\",NA\nP01,1,2,"), std::string::npos)
+    EXPECT_NE(text.find(",1,1,1,NA," + kUuid + ",34,corrected,\"'=1+1\",NA\nP01,1,2,"),
+              std::string::npos)
         << text;
-    EXPECT_NE(text.find(",2,1,2,NA,NA,\"'-\",NA,-5.5\n"), std::string::npos) << text;
+    EXPECT_NE(text.find(",2,1,2,NA,NA,NA,\"'-\",NA,-5.5\n"), std::string::npos) << text;
 
     std::ostringstream json;
     write_json(data, json);
-    EXPECT_NE(json.str().find("\"participant_number\": 1, \"runs\": null, \"var_age\": 34, "
-                              "\"var_vision\": "
-                              "\"corrected\", \"var_remark\": \"=1+1\", \"var_offset_db\": null, "
-                              "\"scene_files\""),
-              std::string::npos)
+    EXPECT_NE(
+        json.str().find("\"participant_number\": 1, \"runs\": null, \"session_uuid\": \"" + kUuid +
+                        "\", \"var_age\": 34, "
+                        "\"var_vision\": "
+                        "\"corrected\", \"var_remark\": \"=1+1\", \"var_offset_db\": null, "
+                        "\"scene_files\""),
+        std::string::npos)
         << json.str();
-    EXPECT_NE(json.str().find("\"participant_number\": 2, \"runs\": null, \"var_age\": null, "
+    EXPECT_NE(json.str().find("\"participant_number\": 2, \"runs\": null, \"session_uuid\": null, "
+                              "\"var_age\": null, "
                               "\"var_vision\": "
                               "\"-\", \"var_remark\": null, \"var_offset_db\": -5.5, "),
               std::string::npos)
@@ -602,7 +620,8 @@ TEST(StudyExport, ExportsFromTheStoreToAFile) {
         const std::string beams =
             "P01,1,1,NA,beams,3,hybrid,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,stereo,0,fink2019,"
             "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,"
-            "1,1,NA\n";
+            "1,1,NA," +
+            kUuid + "\n";
         EXPECT_EQ(text, kHeader + kPracticeRow + beams + kDecidedRow);
         for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
             EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
@@ -635,6 +654,7 @@ TEST(StudyExport, ExportsSessionsVariablesAndNotesFromTheStore) {
         ASSERT_TRUE(opened.ok()) << opened.error().message;
         StudyStore& store = **opened;
         SessionInfo info = known_session();
+        info.session_uuid.clear();  // begin_session makes each session its own
         info.protocol_text =
             "name = \"fink2019\"\nscenes = [\"spheres\"]\nmono_planes = [1.6, 5]\n"
             "alternatives = [\"stereo\", \"hybrid\"]\n"
@@ -652,6 +672,8 @@ TEST(StudyExport, ExportsSessionsVariablesAndNotesFromTheStore) {
         schedule.trials[1].repetition = 2;
         const Result<std::int64_t> first = store.begin_session(info, schedule);
         ASSERT_TRUE(first.ok()) << first.error().message;
+        // A participant's next session begins once the earlier one has ended.
+        ASSERT_TRUE(store.set_status(*first, SessionStatus::Completed).ok());
         info.session_number = schedule.session_number = 2;
         const Result<std::int64_t> second = store.begin_session(info, schedule);
         ASSERT_TRUE(second.ok()) << second.error().message;
@@ -666,14 +688,19 @@ TEST(StudyExport, ExportsSessionsVariablesAndNotesFromTheStore) {
 
         ASSERT_TRUE(export_trials(store, ExportFormat::Csv, dir / "trials.csv").ok());
         const std::string csv = read_file(dir / "trials.csv");
-        EXPECT_NE(csv.find(",participant_number,runs,var_age,var_handedness\n"), std::string::npos)
+        EXPECT_NE(csv.find(",participant_number,runs,session_uuid,var_age,var_handedness\n"),
+                  std::string::npos)
             << csv;
+        const auto uuid = [&](std::int64_t id) { return store.session(id).value().session_uuid; };
+        EXPECT_NE(uuid(*first), uuid(*second));
         EXPECT_NE(csv.find("\nP01,1,1,0,spheres,1.6,hybrid,"), std::string::npos) << csv;
-        EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*first) + ",2,1,NA,34,NA\n"),
+        EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*first) + ",2,1,NA," + uuid(*first) +
+                           ",34,NA\n"),
                   std::string::npos)
             << csv;
         EXPECT_NE(csv.find("\nP01,2,1,0,spheres,1.6,hybrid,"), std::string::npos) << csv;
-        EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*second) + ",2,1,NA,34,NA\n"),
+        EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*second) + ",2,1,NA," + uuid(*second) +
+                           ",34,NA\n"),
                   std::string::npos)
             << csv;
 
