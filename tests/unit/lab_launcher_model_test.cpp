@@ -250,6 +250,38 @@ TEST_F(LauncherModelTest, AKnownParticipantShowsTheirSessionsAndRecordedVariable
     EXPECT_TRUE(contains(m.start_message(), "already has session 1")) << m.start_message();
 }
 
+// One live session per participant, in the launcher as on the command line: Start stays off
+// with the library's message while the participant's earlier session is interrupted or running;
+// and opening the database, reading its roster and the participant's form write nothing.
+TEST_F(LauncherModelTest, StartStaysOffForAParticipantsUnfinishedSessionAndOpenWritesNothing) {
+    write_text(protocols_ / "two.toml", "sessions = 2\n" + demo_text_);
+    const std::int64_t interrupted = begin("two.toml", "P01", {}, SessionStatus::Running);
+    const std::int64_t held = begin("two.toml", "P02", {}, SessionStatus::Running);
+    Result<study::SessionHold> hold = study::SessionHold::acquire(db_, held);
+    ASSERT_TRUE(hold.ok()) << hold.error().message;
+    const std::string before = read_text(db_);
+    ASSERT_FALSE(fs::exists(db_.string() + "-wal"));
+
+    LauncherModel m = ready("two.toml");
+    m.set_participant_code("P01");
+    EXPECT_FALSE(m.start_enabled());
+    EXPECT_TRUE(contains(m.start_message(),
+                         "participant P01's session 1 in '" + db_.string() + "' was interrupted"))
+        << m.start_message();
+    EXPECT_TRUE(contains(m.start_message(), "(the launcher: Resume)")) << m.start_message();
+    m.set_participant_code("P02");
+    EXPECT_FALSE(m.start_enabled());
+    EXPECT_TRUE(
+        contains(m.start_message(), "is running: process " + std::to_string(::getpid()) + " on "))
+        << m.start_message();
+    m.set_participant_code("P03");  // a new participant starts beside them
+    EXPECT_TRUE(m.start_enabled()) << m.start_message();
+    EXPECT_EQ(read_text(db_), before);
+    EXPECT_FALSE(fs::exists(db_.string() + "-wal"));
+    EXPECT_FALSE(fs::exists(db_.string() + "-shm"));
+    (void)interrupted;
+}
+
 TEST_F(LauncherModelTest, TheRosterSaysWhichSessionsResumeAndWhyNot) {
     begin("demo.toml", "P01", {}, SessionStatus::Completed);
     const std::int64_t interrupted = begin("demo.toml", "P02", {}, SessionStatus::Running);
