@@ -85,10 +85,11 @@ void add_run_command(CLI::App* study, const std::shared_ptr<StudyOptions>& optio
                     "The participant's number in the whole study, 1-based, which picks the "
                     "Latin-square row (default: their position in this database; give it when "
                     "a study runs on several PCs or sites)");
-    run->add_option("--abandon", options->abandon,
-                    "SESSION \"reason\": end the participant's interrupted session SESSION for good "
-                    "(recorded with the reason; study list shows it abandoned) and start their "
-                    "next. Without it an interrupted session must be resumed first");
+    run->add_option(
+        "--abandon", options->abandon,
+        "SESSION \"reason\": end the participant's interrupted session SESSION for good "
+        "(recorded with the reason; study list shows it abandoned) and start their "
+        "next. Without it an interrupted session must be resumed first");
     run->add_option("--protocol-changed", options->protocol_changed,
                     "\"reason\": start a session whose protocol's design (scenes, distances, "
                     "alternatives, procedure, repetitions, ...) differs from the participant's "
@@ -185,7 +186,8 @@ void add_migrate_command(CLI::App* study, const std::shared_ptr<StudyOptions>& o
 
 void add_study_command(CLI::App& root, const GlobalOptions& global) {
     CLI::App* study = root.add_subcommand(
-        "study", "Run, resume, export, list and annotate 2AFC study sessions (docs/study.md)");
+        "study",
+        "Run, resume, export, list, annotate and migrate 2AFC study sessions (docs/study.md)");
     study->require_subcommand(1);
     auto options = std::make_shared<StudyOptions>();
     add_run_command(study, options, global);
