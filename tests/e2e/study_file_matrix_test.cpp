@@ -464,5 +464,44 @@ TEST_F(StudyFileMatrix, EveryCommandAgainstEveryStateDoesWhatTheDocSays) {
     check_doc_table(table.str());
 }
 
+// `study migrate`: an older file migrated on request with its original kept beside it; a file of
+// this version left alone; a refused file refused as by every command.
+TEST_F(StudyFileMatrix, MigrateKeepsTheOriginalAndLeavesACurrentFileAlone) {
+    const fs::path dir = root_ / "migrate";
+    fs::create_directories(dir);
+    const fs::path db = dir / "old.sqlite";
+    make_version7(root_ / "base.sqlite", db);
+    std::string out;
+    ASSERT_EQ(monoplane({"study", "migrate", "--db", db.string()}, &out, false), 0) << out;
+    EXPECT_NE(out.find(db.string() +
+                       ": migrated from schema version 7 to 8; the original is "
+                       "kept as " +
+                       db.string() + ".schema7.bak"),
+              std::string::npos)
+        << out;
+    const auto version = [](const fs::path& file) {
+        sqlite3* raw = nullptr;
+        sqlite3_open(file.c_str(), &raw);
+        sqlite3_stmt* stmt = nullptr;
+        sqlite3_prepare_v2(raw, "PRAGMA user_version", -1, &stmt, nullptr);
+        const int v = sqlite3_step(stmt) == SQLITE_ROW ? sqlite3_column_int(stmt, 0) : -1;
+        sqlite3_finalize(stmt);
+        sqlite3_close_v2(raw);
+        return v;
+    };
+    EXPECT_EQ(version(db), 8);
+    EXPECT_EQ(version(db.string() + ".schema7.bak"), 7);
+    const auto migrated = fingerprint(dir);
+    ASSERT_EQ(monoplane({"study", "migrate", "--db", db.string()}, &out, false), 0) << out;
+    EXPECT_NE(out.find("schema version 8, already this build's; unchanged"), std::string::npos)
+        << out;
+    EXPECT_EQ(fingerprint(dir), migrated);
+    const fs::path empty = dir / "empty.sqlite";
+    std::ofstream(empty).close();
+    EXPECT_EQ(monoplane({"study", "migrate", "--db", empty.string()}, &out, false), 1);
+    EXPECT_NE(out.find("is 0 bytes: not a study database"), std::string::npos) << out;
+    EXPECT_EQ(fs::file_size(empty), 0u);
+}
+
 }  // namespace
 }  // namespace monoplane
