@@ -59,7 +59,7 @@ Result<analysis::Dataset> read_database(const std::filesystem::path& path) {
     Result<analysis::Dataset> read = read_study_database(path);
     MONOPLANE_TRY(read);
     analysis::Dataset dataset = std::move(read).value();
-    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open(path);
+    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open_read_only(path);
     if (!store) return Error{"--db " + db + ": " + store.error().message};
     Result<study::ExportData> data = study::collect_export(*store.value());
     if (!data) return Error{"--db " + db + ": " + data.error().message};
