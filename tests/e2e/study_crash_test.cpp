@@ -5,6 +5,8 @@
 // random moments; sessions on the simulated headset (`--headset simulated`, the path participants
 // use) right after a varied number of committed writes, their resumed runs too, and there the
 // frame log (table frames) must hold every frame displayed before the last committed event.
+// Issue 42, item 5: on both paths the runs of a resumed session share one time axis and frame
+// numbering, and a trial, a break or an instruction page cut short keeps what its runs showed.
 #include <gtest/gtest.h>
 #include <sqlite3.h>
 
@@ -14,13 +16,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <map>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -247,35 +252,42 @@ constexpr std::int64_t kSimPeriodNs = 1'000'000'000 / kSimRateHz;
 
 // The frame log of a simulated-headset session, after a kill or at its end, against what the
 // runtime displayed and what was committed. Each run of the session (the first, and each resume)
-// is recognised by its rows' offset between the logged frame number and the runtime's frame n
-// (from the display time). In each run the rows must be exactly n = 1, 2, ..., L: every frame the
-// runtime displayed up to the run's last written frame, none lost or replaced. Every stored event
-// that names a frame has that frame's row, showing that event's trial (and, for shown and
-// switched, its label at the event's time): so the frames before the last committed event of
-// each run were committed with it. Returns "L1+L2+..." (rows per run) for the log.
+// starts the runtime's clock again and has its row in session_runs: its frames are numbered from
+// its first_frame, and its times are the runtime's plus its clock_offset_ns. So a run's logged
+// frame first_frame + n must carry the runtime's display time of its frame n, and in each run the
+// rows must be exactly n = 1, 2, ..., L: every frame the runtime displayed up to the run's last
+// written frame, none lost or replaced. Every stored event that names a frame has that frame's
+// row, showing that event's trial (and, for shown and switched, its label at the event's time):
+// so the frames before the last committed event of each run were committed with it. Returns
+// "L1+L2+..." (rows per run) for the log.
 std::string expect_frame_log_complete(const std::vector<study::FrameRecord>& frames,
-                                      const std::vector<study::TrialEvent>& events) {
+                                      const std::vector<study::TrialEvent>& events,
+                                      const std::vector<study::RunRecord>& runs) {
     std::map<std::int64_t, const study::FrameRecord*> by_frame;
-    std::vector<std::pair<std::int64_t, std::int64_t>> runs;  // offset, rows
+    std::map<int, std::int64_t> rows;  // per run
     std::int64_t expected_n = 0;
+    int current = 0;
     for (const study::FrameRecord& f : frames) {
         by_frame[f.frame] = &f;
         EXPECT_FALSE(f.missed) << "frame " << f.frame << ": the virtual clock misses no slot";
-        const std::int64_t since = f.display_time_ns - kSimBaseNs;
-        EXPECT_EQ(since % kSimPeriodNs, 0) << "frame " << f.frame << " at " << f.display_time_ns;
-        const std::int64_t n = since / kSimPeriodNs;
-        const std::int64_t offset = f.frame - n;
-        if (runs.empty() || runs.back().first != offset) {
-            // A new run: it cannot start inside an earlier one (frames are in order).
-            EXPECT_TRUE(runs.empty() || offset > runs.back().first)
-                << "frame " << f.frame << " (runtime frame " << n << ") belongs to no run";
-            runs.emplace_back(offset, 0);
+        const study::RunRecord* run = nullptr;
+        for (const study::RunRecord& r : runs)
+            if (r.first_frame <= f.frame) run = &r;
+        if (run == nullptr) {
+            ADD_FAILURE() << "frame " << f.frame << " belongs to no run";
+            continue;
+        }
+        const std::int64_t n = f.frame - run->first_frame;
+        EXPECT_EQ(f.display_time_ns - run->clock_offset_ns, kSimBaseNs + n * kSimPeriodNs)
+            << "frame " << f.frame << " (run " << run->run << ", runtime frame " << n << ")";
+        if (run->run != current) {
+            current = run->run;
             expected_n = 1;
         }
-        EXPECT_EQ(n, expected_n) << "the frame log of a run lacks runtime frame " << expected_n
-                                 << " (logged frame " << f.frame + expected_n - n << ")";
+        EXPECT_EQ(n, expected_n) << "the frame log of run " << run->run << " lacks runtime frame "
+                                 << expected_n;
         expected_n = n + 1;
-        ++runs.back().second;
+        ++rows[run->run];
     }
     for (const study::TrialEvent& e : events) {
         if (e.frame < 0) continue;
@@ -295,8 +307,8 @@ std::string expect_frame_log_complete(const std::vector<study::FrameRecord>& fra
         }
     }
     std::string summary;
-    for (const auto& [offset, rows] : runs)
-        summary += (summary.empty() ? "" : "+") + std::to_string(rows);
+    for (const auto& [run, count] : rows)
+        summary += (summary.empty() ? "" : "+") + std::to_string(count);
     return summary;
 }
 
@@ -362,9 +374,10 @@ TEST(StudyCrash, KilledHeadsetSessionsKeepEveryCommittedWriteAndFrameAndResume) 
         ASSERT_TRUE(store.ok()) << store.error().message;
         const auto frames = (*store)->frames(1);
         const auto events = (*store)->events(1);
-        ASSERT_TRUE(frames.ok() && events.ok());
+        const auto runs = (*store)->runs(1);
+        ASSERT_TRUE(frames.ok() && events.ok() && runs.ok());
         ASSERT_FALSE(frames->empty());
-        expect_frame_log_complete(*frames, *events);
+        expect_frame_log_complete(*frames, *events, *runs);
     }
 
     std::mt19937_64 random(20170318);
@@ -414,7 +427,9 @@ TEST(StudyCrash, KilledHeadsetSessionsKeepEveryCommittedWriteAndFrameAndResume) 
             const auto records = store->trials(1);
             const auto stored_answers = store->answers(1);
             const auto frames = store->frames(1);
-            ASSERT_TRUE(stored.ok() && records.ok() && stored_answers.ok() && frames.ok());
+            const auto session_runs = store->runs(1);
+            ASSERT_TRUE(stored.ok() && records.ok() && stored_answers.ok() && frames.ok() &&
+                        session_runs.ok());
             expect_events_kept(events, *stored);
             expect_outcomes_kept(outcomes, *records, 1);
             for (const auto& [item, value] : answers) {
@@ -423,7 +438,7 @@ TEST(StudyCrash, KilledHeadsetSessionsKeepEveryCommittedWriteAndFrameAndResume) 
                     found = found || (a.item == item - 1 && a.answer == value);
                 EXPECT_TRUE(found) << "lost answer " << value << " to item " << item;
             }
-            runs = expect_frame_log_complete(*frames, *stored);
+            runs = expect_frame_log_complete(*frames, *stored, *session_runs);
         }
 
         // The last resume, to the end.
@@ -442,7 +457,9 @@ TEST(StudyCrash, KilledHeadsetSessionsKeepEveryCommittedWriteAndFrameAndResume) 
         const auto records = (*store)->trials(1);
         const auto stored = (*store)->events(1);
         const auto frames = (*store)->frames(1);
-        ASSERT_TRUE(schedule.ok() && records.ok() && stored.ok() && frames.ok());
+        const auto session_runs = (*store)->runs(1);
+        ASSERT_TRUE(schedule.ok() && records.ok() && stored.ok() && frames.ok() &&
+                    session_runs.ok());
         EXPECT_EQ(records->size(), schedule->trials.size());
         for (const study::TrialRecord& r : *records) EXPECT_TRUE(r.decided) << r.trial.index;
         // Decisions made before a kill survived the resumes unchanged.
@@ -454,7 +471,7 @@ TEST(StudyCrash, KilledHeadsetSessionsKeepEveryCommittedWriteAndFrameAndResume) 
             }
         }
         expect_events_kept(events, *stored);
-        runs = expect_frame_log_complete(*frames, *stored);
+        runs = expect_frame_log_complete(*frames, *stored, *session_runs);
         std::cout << "database " << chain << ": frame log rows per run " << runs << "\n";
     }
     EXPECT_GE(killed_mid_session, 20);
@@ -487,6 +504,19 @@ min_s = 3
 [end]
 text = "Thank you."
 )";
+
+// Each break_ended closes a break whose start was logged (in its run, or again in the resumed
+// run that showed it).
+void expect_breaks_started_before_they_end(const std::vector<study::TrialEvent>& events) {
+    bool open = false;
+    for (const study::TrialEvent& e : events) {
+        if (e.kind == study::EventKind::BreakStarted) open = true;
+        if (e.kind == study::EventKind::BreakEnded) {
+            EXPECT_TRUE(open) << "break_ended at " << e.time_ns << " without a break_started";
+            open = false;
+        }
+    }
+}
 
 struct ScreenCount {
     std::map<std::pair<std::string, int>, int> shown;  // (kind, page) -> events
@@ -579,9 +609,14 @@ TEST(StudyCrash, KilledOnScreensAndAfterANoteResumeWhereTheyStood) {
         EXPECT_EQ(count("instructions_confirmed", 1), 1);
         EXPECT_EQ(count("instructions_shown", 0), 1);
         EXPECT_EQ(count("ready_confirmed", -1), 1);
-        // 6 data trials, a break after the 2nd and the 4th: each started and ended once.
-        EXPECT_EQ(count("break_started", -1), 2);
+        // 6 data trials, a break after the 2nd and the 4th: each ended once; one the kill cut
+        // short (the killed run's last write was its start) logged its start again when the
+        // resumed run showed it.
+        const bool cut_short = committed.last.starts_with("screen break_started");
+        EXPECT_EQ(count("break_started", -1), cut_short ? 3 : 2);
+        if (name == "break") EXPECT_TRUE(cut_short) << committed.last;
         EXPECT_EQ(count("break_ended", -1), 2);
+        expect_breaks_started_before_they_end(events);
         EXPECT_EQ(count("end_shown", -1), 1);
         if (name == "note") {
             ASSERT_EQ(info.notes.size(), 1u);
@@ -595,7 +630,8 @@ TEST(StudyCrash, KilledOnScreensAndAfterANoteResumeWhereTheyStood) {
 // On the simulated headset a break killed midway resumes for what is left of its minimum: no event
 // is logged during a break, but the frame log is (flushed every 30 frames), and the resumed run's
 // break lasts min_s minus the break time those frames show. The runtime's virtual clock starts
-// again at 10 s in the resumed run, so the two runs' times are compared within each run.
+// again at 10 s in the resumed run; its times go on the session's axis after the killed run's,
+// so the whole break, from its first start to its end, lasts its minimum there.
 TEST(StudyCrash, AHeadsetBreakKilledMidwayResumesForWhatIsLeftOfIt) {
     namespace fs = std::filesystem;
     const std::string exe = MONOPLANE_EXE;
@@ -665,7 +701,10 @@ TEST(StudyCrash, AHeadsetBreakKilledMidwayResumesForWhatIsLeftOfIt) {
     }
     ASSERT_GE(first_resumed_ns, 0);
     ASSERT_GE(ended_ns, 0);
-    EXPECT_EQ(starts, 1);  // one break, counted once
+    EXPECT_EQ(starts, 2);  // one break, its start logged again by the resumed run
+    // From its first start: 1800 s, the gap to the resumed run's first frame (1 s at 1 Hz) and
+    // up to two frames to the confirmation.
+    EXPECT_NEAR(static_cast<double>(ended_ns - started.time_ns) / 1e9, 1801.75, 1.75);
     // The observer confirms as soon as the countdown allows: the resumed run's share of the break
     // is the minimum less what was logged before the kill, to within two frames at 1 Hz.
     const double resumed_s = static_cast<double>(ended_ns - first_resumed_ns) / 1e9;
@@ -674,6 +713,328 @@ TEST(StudyCrash, AHeadsetBreakKilledMidwayResumesForWhatIsLeftOfIt) {
     std::cout << "the killed run logged " << static_cast<double>(logged_ns) / 1e9
               << " s of the break, the resumed run showed it for " << resumed_s << " s more\n";
     EXPECT_EQ(store->session(1).value_or_throw().status, study::SessionStatus::Completed);
+    if (!::testing::Test::HasFailure()) fs::remove_all(dir);
+}
+
+// Issue 42, item 5: resume keeps the whole truth. On both paths (headless and the simulated
+// headset, whose runtime clock starts again at 10 s in every run) a session is killed in a trial
+// after its second switch, in a break, or on its second instruction page, and resumed to its end.
+// Then the runs are on one time axis (no event time goes back, a run starts 1 ns after the last
+// time stored before it, no frame number is used twice), each break_ended follows a
+// break_started, and every trial's outcome and export count what all its runs showed: recounted
+// here from its events (and frames), the interrupted trial with 2 runs.
+constexpr const char* kTruthProtocol = R"(name = "truth"
+scenes = ["beams", "spheres"]
+mono_planes = [3, 8, 16]
+alternatives = ["stereo", "hybrid"]
+practice_trials = 0
+[[instructions]]
+text = "First page."
+[[instructions]]
+text = """The second page is long, so that the observer reads it for a while: it reads 40 ms a \
+character after 2 s, and the kill comes during that time, as it comes during the break's 20 s. \
+The second page is long, so that the observer reads it for a while: it reads 40 ms a character \
+after 2 s, and the kill comes during that time, as it comes during the break's 20 s."""
+[breaks]
+every_trials = 2
+min_s = 20
+)";
+
+// What a trial's events (and, on a headset, its logged frames) say, counted here on their own:
+// per run (runs split at run_started, frames by the runs' first frames), each label's time from
+// the event that showed it to the next change, pause, or the trial's last record in the run.
+struct Recount {
+    int runs = 0;
+    int switches = 0;
+    std::int64_t on_label_ns[2] = {0, 0};
+    std::int64_t viewing_ns = 0;
+};
+
+Recount recount(const std::vector<study::TrialEvent>& events,
+                const std::vector<study::FrameRecord>& frames,
+                const std::vector<study::RunRecord>& runs, int trial) {
+    using study::EventKind;
+    Recount r;
+    int visible = 0;
+    int run = 0;  // the run the events belong to: run_started events counted
+    std::int64_t since = 0, first = 0, paused = 0, last = 0;
+    bool is_paused = false;
+    const auto end_run = [&] {
+        if (visible == 0) return;
+        if (!is_paused) {
+            // The trial's frames in this run extend its record.
+            const std::int64_t from = runs.at(static_cast<std::size_t>(run - 1)).first_frame;
+            const std::int64_t to = static_cast<std::size_t>(run) < runs.size()
+                                        ? runs[static_cast<std::size_t>(run)].first_frame
+                                        : std::numeric_limits<std::int64_t>::max();
+            for (const study::FrameRecord& f : frames)
+                if (f.trial_index == trial && f.frame >= from && f.frame < to)
+                    last = std::max(last, f.display_time_ns);
+            r.on_label_ns[visible - 1] += last - since;
+        }
+        r.viewing_ns += last - first - paused;
+        ++r.runs;
+        visible = 0;
+    };
+    for (const study::TrialEvent& e : events) {
+        if (e.kind == EventKind::RunStarted) {
+            end_run();
+            ++run;
+        }
+        if (e.trial_index != trial) continue;
+        if (!is_paused) last = e.time_ns;
+        if (e.kind == EventKind::Shown) {
+            visible = e.label;
+            since = first = e.time_ns;
+            paused = 0;
+            is_paused = false;
+        } else if (e.kind == EventKind::Switched || e.kind == EventKind::Confirmed) {
+            r.on_label_ns[visible - 1] += e.time_ns - since;
+            since = e.time_ns;
+            if (e.kind == EventKind::Switched) visible = e.label;
+            r.switches += e.kind == EventKind::Switched;
+            if (e.kind == EventKind::Confirmed) {
+                last = e.time_ns;
+                r.viewing_ns += last - first - paused;
+                ++r.runs;
+                visible = 0;
+            }
+        } else if (e.kind == EventKind::Paused) {
+            r.on_label_ns[visible - 1] += e.time_ns - since;
+            is_paused = true;
+            since = e.time_ns;
+        } else if (e.kind == EventKind::Resumed) {
+            paused += e.time_ns - since;
+            since = last = e.time_ns;
+            is_paused = false;
+        }
+    }
+    end_run();
+    return r;
+}
+
+// The session's runs on one time axis: event times never go back in the order logged; a run's
+// run_started is 1 ns after the latest event or frame stored before it; frame numbers are never
+// used twice (events in logging order, then frames) and a run's frames follow every earlier one;
+// frame times rise with their numbers. `clock_start_ns`: where each run's clock starts (its
+// offset puts that at the run's start).
+void expect_one_axis(const std::vector<study::TrialEvent>& events,
+                     const std::vector<study::FrameRecord>& frames,
+                     const std::vector<study::RunRecord>& runs, std::int64_t clock_start_ns) {
+    std::int64_t latest = std::numeric_limits<std::int64_t>::min();
+    std::int64_t last_frame = -1;
+    std::size_t run = 0;
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const study::TrialEvent& e = events[i];
+        EXPECT_GE(e.time_ns, latest) << "event " << i << " goes back in time";
+        if (e.kind == study::EventKind::RunStarted) {
+            ASSERT_LT(run, runs.size());
+            const study::RunRecord& r = runs[run++];
+            for (const study::FrameRecord& f : frames)
+                if (f.frame < r.first_frame) latest = std::max(latest, f.display_time_ns);
+            if (r.run > 1) EXPECT_EQ(e.time_ns, latest + 1) << "run " << r.run;
+            EXPECT_EQ(e.time_ns - r.clock_offset_ns, clock_start_ns) << "run " << r.run;
+            EXPECT_GT(r.first_frame, last_frame) << "run " << r.run;
+        }
+        latest = std::max(latest, e.time_ns);
+        if (e.frame < 0) continue;
+        EXPECT_GT(e.frame, last_frame) << "event " << i << " repeats or goes back in frames";
+        last_frame = e.frame;
+    }
+    EXPECT_EQ(run, runs.size());
+    for (std::size_t i = 1; i < frames.size(); ++i) {
+        EXPECT_GT(frames[i].frame, frames[i - 1].frame);
+        EXPECT_GT(frames[i].display_time_ns, frames[i - 1].display_time_ns)
+            << "frame " << frames[i].frame;
+    }
+}
+
+// The exported CSV's cells by column name, one map per row.
+std::vector<std::map<std::string, std::string>> read_export(const std::string& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::vector<std::string> header;
+    std::vector<std::map<std::string, std::string>> rows;
+    while (std::getline(in, line)) {
+        std::vector<std::string> cells;
+        std::istringstream split(line);
+        for (std::string cell; std::getline(split, cell, ',');) cells.push_back(cell);
+        if (header.empty()) {
+            header = cells;
+            continue;
+        }
+        std::map<std::string, std::string>& row = rows.emplace_back();
+        for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i)
+            row[header[i]] = cells[i];
+    }
+    return rows;
+}
+
+// A committed line's trial and kind ("trial 3 switched ..."), or none.
+std::optional<std::pair<int, std::string>> trial_write(const std::string& what) {
+    std::istringstream words(what);
+    std::string first, kind;
+    int trial = 0;
+    words >> first >> trial >> kind;
+    if (first != "trial") return std::nullopt;
+    return std::make_pair(trial, kind);
+}
+
+// The committed line after which the session is killed, and how many committed lines come up
+// to it, from a whole run of the same session. In a trial: the second switch of the first trial
+// that has three at least, so the kill, which lands a frame or two later on a headset, still
+// finds it undecided.
+std::pair<int, std::string> kill_point(const std::string& output, const std::string& where) {
+    std::vector<std::string> committed;
+    std::istringstream lines(output);
+    for (std::string line; std::getline(lines, line);)
+        if (line.starts_with("committed ")) committed.push_back(line.substr(10));
+    std::map<int, int> switches;  // per trial, in the whole session
+    for (const std::string& what : committed)
+        if (const auto write = trial_write(what); write && write->second == "switched")
+            ++switches[write->first];
+    std::map<int, int> seen;
+    int k = 0;
+    for (const std::string& what : committed) {
+        ++k;
+        const auto write = trial_write(what);
+        if (where == "trial" && write && write->second == "switched" &&
+            switches[write->first] >= 3 && ++seen[write->first] == 2)
+            return {k, what};
+        if (where == "break" && what.starts_with("screen break_started")) return {k, what};
+        if (where == "instructions" && what.starts_with("screen instructions_shown page 1"))
+            return {k, what};
+    }
+    return {0, ""};
+}
+
+struct TruthPath {
+    std::string name;
+    std::vector<std::string> options;  // for run and resume alike
+    std::int64_t clock_start_ns;       // each run's clock's start
+};
+
+void expect_whole_truth(const std::string& db, const std::string& kill_where,
+                        const std::string& killed_line, const std::string& tmpdir,
+                        std::int64_t clock_start_ns) {
+    auto store = study::StudyStore::open(db).value_or_throw();
+    EXPECT_EQ(store->session(1).value_or_throw().status, study::SessionStatus::Completed);
+    const auto events = store->events(1).value_or_throw();
+    const auto frames = store->frames(1).value_or_throw();
+    const auto runs = store->runs(1).value_or_throw();
+    const auto trials = store->trials(1).value_or_throw();
+    ASSERT_EQ(runs.size(), 2u);
+    expect_one_axis(events, frames, runs, clock_start_ns);
+    expect_breaks_started_before_they_end(events);
+    if (!frames.empty()) expect_frame_log_complete(frames, events, runs);
+    store.reset();
+
+    const std::string csv = tmpdir + "/" + kill_where + ".csv";
+    ASSERT_EQ(run_to_end({MONOPLANE_EXE, "study", "export", "--db", db, "--format", "csv", "--out",
+                          csv, "--force"}),
+              0);
+    const auto rows = read_export(csv);
+    ASSERT_EQ(rows.size(), trials.size());
+    int interrupted = 0;
+    for (std::size_t i = 0; i < trials.size(); ++i) {
+        const study::TrialRecord& t = trials[i];
+        SCOPED_TRACE("trial " + std::to_string(t.trial.index));
+        ASSERT_TRUE(t.decided);
+        const Recount c = recount(events, frames, runs, t.trial.index);
+        EXPECT_EQ(t.outcome.runs, c.runs);
+        EXPECT_EQ(t.outcome.switches, c.switches);
+        EXPECT_EQ(t.outcome.time_on_label_ns[0], c.on_label_ns[0]);
+        EXPECT_EQ(t.outcome.time_on_label_ns[1], c.on_label_ns[1]);
+        EXPECT_EQ(t.outcome.decision_time_ns, c.viewing_ns);
+        EXPECT_EQ(rows[i].at("runs"), std::to_string(t.outcome.runs));
+        EXPECT_EQ(rows[i].at("switches"), std::to_string(t.outcome.switches));
+        if (t.outcome.runs > 1) ++interrupted;
+    }
+    const auto count = [&](study::EventKind kind, int page = -1) {
+        return std::ranges::count_if(
+            events, [&](const study::TrialEvent& e) { return e.kind == kind && e.page == page; });
+    };
+    using study::EventKind;
+    if (kill_where == "trial") {
+        // The trial killed after its second switch: both runs counted, switches before and after.
+        std::istringstream words(killed_line);
+        std::string word;
+        int trial = -1;
+        words >> word >> trial;
+        ASSERT_EQ(interrupted, 1);
+        const study::TrialRecord& t = trials.at(static_cast<std::size_t>(trial));
+        EXPECT_EQ(t.outcome.runs, 2);
+        EXPECT_GE(t.outcome.switches, 3);  // 2 before the kill, 1 at least to see label 2 again
+        EXPECT_EQ(count(EventKind::BreakStarted), count(EventKind::BreakEnded));
+    } else {
+        EXPECT_EQ(interrupted, 0);
+    }
+    if (kill_where == "break") {
+        // Its start again in the resumed run: one more start than ends; the whole break, from its
+        // first start, lasts at least its minimum on the session's axis.
+        EXPECT_EQ(count(EventKind::BreakStarted), count(EventKind::BreakEnded) + 1);
+        std::int64_t first_start = -1;
+        for (const study::TrialEvent& e : events) {
+            if (e.kind == EventKind::BreakStarted && first_start < 0) first_start = e.time_ns;
+            if (e.kind == EventKind::BreakEnded) {
+                EXPECT_GE(e.time_ns - first_start, 20'000'000'000);
+                break;
+            }
+        }
+    }
+    if (kill_where == "instructions") {
+        EXPECT_EQ(count(EventKind::InstructionsShown, 1), 2);  // again in the resumed run
+        EXPECT_EQ(count(EventKind::InstructionsConfirmed, 0), 1);
+        EXPECT_EQ(count(EventKind::InstructionsConfirmed, 1), 1);
+    }
+}
+
+TEST(StudyCrash, AResumedSessionKeepsTheWholeTruthOnBothPaths) {
+    namespace fs = std::filesystem;
+    const std::string exe = MONOPLANE_EXE;
+    const fs::path dir =
+        fs::temp_directory_path() / ("monoplane_crash_truth_" + std::to_string(getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string protocol = (dir / "truth.toml").string();
+    std::ofstream(protocol) << kTruthProtocol;
+    const std::vector<TruthPath> paths = {
+        {"headless", {"--headset", "none", "--pace-ms", "20", "--trace"}, 0},
+        {"headset",
+         {"--headset", "simulated", "--window", "off", "--resolution-scale", "0.05", "--sim-rate",
+          std::to_string(kSimRateHz), "--neutral-s", "0.2", "--observer", "default", "--detail",
+          "test", "--trace"},
+         kSimBaseNs - kSimPeriodNs},
+    };
+    for (const TruthPath& path : paths) {
+        SCOPED_TRACE(path.name);
+        const auto run_args = [&](const std::string& db) {
+            std::vector<std::string> args = {exe,      "study",  "run", "--protocol",
+                                             protocol, "--db",   db,    "--participant",
+                                             "T1",     "--seed", "11"};
+            args.insert(args.end(), path.options.begin(), path.options.end());
+            return args;
+        };
+        std::string whole;
+        const std::string reference = (dir / (path.name + "_whole.sqlite")).string();
+        ASSERT_EQ(run_to_end(run_args(reference), &whole, dir.string()), 0) << whole;
+        for (const std::string where : {"trial", "break", "instructions"}) {
+            SCOPED_TRACE(where);
+            const auto [k, line] = kill_point(whole, where);
+            ASSERT_GT(k, 0) << "the whole session has no kill point '" << where << "':\n" << whole;
+            const std::string db = (dir / (path.name + "_" + where + ".sqlite")).string();
+            const KilledRun killed = run_and_kill_after(run_args(db), k, dir.string());
+            ASSERT_TRUE(killed.killed) << killed.output;
+            // Seeded observer, virtual clocks: the same session up to the kill.
+            EXPECT_EQ(parse_committed(killed.output).last, line);
+            std::vector<std::string> resume = {exe, "study", "resume", "--db", db};
+            resume.insert(resume.end(), path.options.begin(), path.options.end());
+            std::string resumed;
+            ASSERT_EQ(run_to_end(resume, &resumed, dir.string()), 0) << resumed;
+            EXPECT_EQ(integrity_check(db), "ok");
+            expect_whole_truth(db, where, line, dir.string(), path.clock_start_ns);
+        }
+    }
     if (!::testing::Test::HasFailure()) fs::remove_all(dir);
 }
 
