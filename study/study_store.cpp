@@ -593,6 +593,37 @@ Result<int> StudyStore::first_undecided_trial(std::int64_t session_id) const {
     return stmt->int32(0);
 }
 
+namespace {
+
+// The decisions recorded about a session (events with a reason), in order.
+Result<std::vector<TrialEvent>> read_decisions(const Connection& db, std::int64_t session_id) {
+    Result<Statement> stmt = Statement::prepare(
+        db,
+        "SELECT kind, time_ns, detail FROM events WHERE session_id = ? AND detail IS NOT NULL "
+        "ORDER BY id");
+    MONOPLANE_TRY(stmt);
+    stmt.value().bind(1, session_id);
+    std::vector<TrialEvent> decisions;
+    for (;;) {
+        Result<bool> row = stmt.value().step("reading the decisions about a session");
+        MONOPLANE_TRY(row);
+        if (!*row) break;
+        const std::optional<EventKind> kind = parse_event_kind(stmt->text(0));
+        if (!kind)
+            return Error{"study database '" + db.path() + "' holds an unknown event kind '" +
+                         stmt->text(0) + "'"};
+        TrialEvent e;
+        e.kind = *kind;
+        e.trial_index = -1;
+        e.time_ns = stmt->int64(1);
+        e.detail = stmt->text(2);
+        decisions.push_back(std::move(e));
+    }
+    return decisions;
+}
+
+}  // namespace
+
 Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
     const Connection& db = impl_->db;
     Result<Statement> stmt = Statement::prepare(
@@ -649,6 +680,9 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
     Result<std::vector<SessionNote>> notes = read_session_notes(db, session_id);
     MONOPLANE_TRY(notes);
     info.notes = std::move(notes).value();
+    Result<std::vector<TrialEvent>> decisions = read_decisions(db, session_id);
+    MONOPLANE_TRY(decisions);
+    info.recorded_decisions = std::move(decisions).value();
     return info;
 }
 

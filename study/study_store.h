@@ -73,6 +73,9 @@ struct SessionInfo {
     // begin_session only: the experimenter's decisions at the start (an interrupted session
     // to abandon, the reason for a change of design), judged by admit_session.
     StartDecisions decisions;
+    // Read back by session(): the session's session_abandoned, protocol_changed and
+    // protocol_text_changed events, in order, with their reasons (schema 8; none before).
+    std::vector<TrialEvent> recorded_decisions;
 };
 
 // One row of the export: a trial with its outcome (docs/data.md).

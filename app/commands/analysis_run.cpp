@@ -18,6 +18,21 @@
 namespace monoplane::app {
 namespace {
 
+// The experimenter's decisions about the session (study run --abandon, --protocol-changed) and a
+// change of protocol text, among its notes: the report and summary.json show them with the
+// reason given, written by the command.
+void add_decisions(analysis::SessionRow& s, const study::SessionInfo& info) {
+    for (const study::TrialEvent& e : info.recorded_decisions) {
+        const bool abandoned = e.kind == study::EventKind::SessionAbandoned;
+        const std::string what = abandoned ? "session abandoned"
+                                 : e.kind == study::EventKind::ProtocolChanged
+                                     ? "protocol changed"
+                                     : "protocol text changed";
+        s.notes.push_back({abandoned ? info.ended_utc : info.started_utc, std::nullopt, "command",
+                           what + ": " + e.detail});
+    }
+}
+
 // A session as the analysis sees it: who, which of their sessions, the Latin-square row selector
 // and how the protocol it ran orders scenes, the variables and the notes.
 analysis::SessionRow session_row(const study::SessionInfo& info, const std::string& source) {
@@ -49,6 +64,7 @@ analysis::SessionRow session_row(const study::SessionInfo& info, const std::stri
         s.notes.push_back({note.noted_utc, note.trial_index,
                            std::string(study::note_source_name(note.source)), note.text});
     }
+    add_decisions(s, info);
     return s;
 }
 

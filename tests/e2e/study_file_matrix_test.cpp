@@ -341,7 +341,8 @@ class StudyFileMatrix : public ::testing::Test {
         const int n = counter_++;
         CellFiles cell{.dir = root_ / ("cell" + std::to_string(n)),
                        .db = root_ / ("cell" + std::to_string(n)) / "study.sqlite",
-                       .out = root_ / ("out" + std::to_string(n))};
+                       .out = root_ / ("out" + std::to_string(n)),
+                       .analysed = {}};
         for (const fs::path& d : {cell.dir, cell.out}) {
             fs::create_directories(d);
             fs::permissions(d, fs::perms::all);
@@ -387,11 +388,12 @@ class StudyFileMatrix : public ::testing::Test {
             return;
         }
         EXPECT_EQ(code, 0) << output;
-        if (reads_only(command))
+        if (reads_only(command)) {
             EXPECT_EQ(fingerprint(cell.dir), inputs) << "a reading command changed its input";
-        else
+        } else {
             EXPECT_NE(fingerprint(cell.dir), inputs)
                 << "a writing command that was done wrote nothing";
+        }
         if (expected.find("schema7.bak kept") != std::string::npos)
             EXPECT_TRUE(fs::exists(cell.db.string() + ".schema7.bak"));
     }
@@ -501,6 +503,37 @@ TEST_F(StudyFileMatrix, MigrateKeepsTheOriginalAndLeavesACurrentFileAlone) {
     EXPECT_EQ(monoplane({"study", "migrate", "--db", empty.string()}, &out, false), 1);
     EXPECT_NE(out.find("is 0 bytes: not a study database"), std::string::npos) << out;
     EXPECT_EQ(fs::file_size(empty), 0u);
+}
+
+// An abandoned session, as the lab will find it later: study list says so with the reason, and
+// the analysis report and summary.json carry the reason among the session's notes.
+TEST_F(StudyFileMatrix, AnAbandonedSessionIsShownWithItsReasonByTheRosterAndTheReport) {
+    const fs::path dir = root_ / "abandon";
+    fs::create_directories(dir);
+    const fs::path db = dir / "study.sqlite";
+    fs::copy_file(root_ / "base.sqlite", db);  // k10's session 1 is interrupted
+    std::string out;
+    ASSERT_EQ(
+        monoplane({"study", "run", "--protocol", protocol(), "--participant", "k10", "--db",
+                   db.string(), "--headset", "none", "--abandon", "1", "participant felt unwell"},
+                  &out, false),
+        0)
+        << out;
+    ASSERT_EQ(monoplane({"study", "list", "--db", db.string()}, &out, false), 0) << out;
+    EXPECT_NE(out.find("abandoned (participant felt unwell)"), std::string::npos) << out;
+    ASSERT_EQ(monoplane({"analyze", "--db", db.string(), "--out", (dir / "analysis").string()},
+                        &out, false),
+              0)
+        << out;
+    std::ifstream summary(dir / "analysis" / "summary.json");
+    const std::string json((std::istreambuf_iterator<char>(summary)),
+                           std::istreambuf_iterator<char>());
+    EXPECT_NE(json.find("\"text\": \"session abandoned: participant felt unwell\""),
+              std::string::npos);
+    std::ifstream report(dir / "analysis" / "report.html");
+    const std::string html((std::istreambuf_iterator<char>(report)),
+                           std::istreambuf_iterator<char>());
+    EXPECT_NE(html.find("session abandoned: participant felt unwell"), std::string::npos);
 }
 
 }  // namespace

@@ -418,6 +418,10 @@ TEST_F(StudyIntegrityTest, AnInterruptedSessionMustBeResumedOrAbandonedWithAReas
     ASSERT_EQ(events->size(), 1u);
     EXPECT_EQ((*events)[0].kind, EventKind::SessionAbandoned);
     EXPECT_EQ((*events)[0].detail, "headset cable broke");
+    Result<SessionInfo> first = (*store)->session((*roster)[0].session_id);
+    ASSERT_EQ(first->recorded_decisions.size(), 1u);
+    EXPECT_EQ(first->recorded_decisions[0].detail, "headset cable broke");
+    EXPECT_TRUE((*store)->session(*second)->recorded_decisions.empty());
 }
 
 TEST_F(StudyIntegrityTest, ASessionRunningInAnotherProcessIsNamedAndRefused) {
