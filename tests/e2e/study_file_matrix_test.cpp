@@ -394,8 +394,9 @@ class StudyFileMatrix : public ::testing::Test {
             EXPECT_NE(fingerprint(cell.dir), inputs)
                 << "a writing command that was done wrote nothing";
         }
-        if (expected.find("schema7.bak kept") != std::string::npos)
+        if (expected.find("schema7.bak kept") != std::string::npos) {
             EXPECT_TRUE(fs::exists(cell.db.string() + ".schema7.bak"));
+        }
     }
 
     // The table in docs/data.md between its markers is this test's table.
