@@ -505,8 +505,11 @@ TEST_F(LabWindowTest, SeededSessionIsTheCommandsSession) {
               0)
         << file_text(dir / "cli.log");
 
-    const std::set<std::string> times = {".started_utc", ".ended_utc",    ".decided_utc",
-                                         ".created_utc", ".answered_utc", ".noted_utc"};
+    // Also left out: what is made new for every session or process (the session's globally
+    // unique id, the process id of its run).
+    const std::set<std::string> times = {".started_utc",  ".ended_utc",    ".decided_utc",
+                                         ".created_utc",  ".answered_utc", ".noted_utc",
+                                         ".session_uuid", ".pid"};
     const auto from_lab = database_rows(dir / "lab.sqlite", times);
     const auto from_cli = database_rows(dir / "cli.sqlite", times);
     ASSERT_EQ(from_lab.size(), from_cli.size());

@@ -188,7 +188,9 @@ endif()
 # The study from the command line: a session with the simulated observer, its export in both
 # formats, a duplicate participant refused, a completed session not resumable, a bad protocol.
 set(db ${OUT}/study.sqlite)
-file(REMOVE ${db} ${db}-wal ${db}-shm)
+# A new database is a new study: its exports do not replace an earlier run's without --force.
+file(REMOVE ${db} ${db}-wal ${db}-shm ${db}-holds ${OUT}/study.csv ${OUT}/study.csv.source
+     ${OUT}/study.json ${OUT}/study.json.source)
 execute_process(COMMAND ${MONOPLANE} study run --protocol ${SOURCE}/protocols/demo.toml
                         --participant E2E1 --db ${db} --headset none --seed 11
                 RESULT_VARIABLE rc ERROR_VARIABLE log)
