@@ -27,5 +27,7 @@ struct RosterEntry {
 // Reads the roster of each database in turn (in the order given), sessions by participant code
 // and session number. Errors name the database. Any time, also while sessions run.
 Result<std::vector<RosterEntry>> read_roster(const std::vector<std::filesystem::path>& databases);
+// The roster of one database through a store the caller has open (the launcher's snapshot).
+Result<std::vector<RosterEntry>> read_roster(const StudyStore& store);
 
 }  // namespace monoplane::study

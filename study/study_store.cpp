@@ -20,9 +20,9 @@
 #include "study/scene_file_store.h"
 #include "study/session_hold.h"
 #include "study/session_run_store.h"
-#include "study/store_schema.h"
 #include "study/session_uuid.h"
 #include "study/store_impl.h"
+#include "study/store_schema.h"
 #include "study/store_sqlite.h"
 
 namespace monoplane::study {
@@ -395,7 +395,8 @@ Result<void> abandon_session(const Connection& db, std::int64_t session_id,
         db, "UPDATE sessions SET status = 'aborted', ended_utc = ? WHERE id = ?");
     MONOPLANE_TRY(end);
     end.value().bind(1, utc_now_iso8601()).bind(2, session_id);
-    MONOPLANE_TRY(end.value().run("ending session " + std::to_string(session_id) + " as abandoned"));
+    MONOPLANE_TRY(
+        end.value().run("ending session " + std::to_string(session_id) + " as abandoned"));
     Result<Statement> event = Statement::prepare(
         db,
         "INSERT INTO events (session_id, trial_index, kind, label, time_ns, frame, detail) "
@@ -454,16 +455,14 @@ Result<std::int64_t> StudyStore::begin_session(
         AdmissionContext{.database = impl_->file.string(),
                          .participant_code = info.participant_code},
         *earlier,
-        ProtocolVersion{.name = info.protocol_name,
-                        .text = info.protocol_text,
-                        .hash = info.protocol_hash},
+        ProtocolVersion{
+            .name = info.protocol_name, .text = info.protocol_text, .hash = info.protocol_hash},
         info.decisions);
     MONOPLANE_TRY(admission);
     Result<std::int64_t> participant_id = admit_participant(db, info, schedule);
     MONOPLANE_TRY(participant_id);
     if (admission->abandon_id)
-        MONOPLANE_TRY(
-            abandon_session(db, *admission->abandon_id, info.decisions.abandon_reason));
+        MONOPLANE_TRY(abandon_session(db, *admission->abandon_id, info.decisions.abandon_reason));
     Result<std::int64_t> session_id = insert_session(db, *participant_id, info, schedule);
     MONOPLANE_TRY(session_id);
     if (admission->protocol_event)
@@ -595,31 +594,35 @@ Result<int> StudyStore::first_undecided_trial(std::int64_t session_id) const {
 
 namespace {
 
-// The decisions recorded about a session (events with a reason), in order.
-Result<std::vector<TrialEvent>> read_decisions(const Connection& db, std::int64_t session_id) {
+// A session's events in logging order: all of them, or only the decisions recorded with a
+// reason (SessionInfo::recorded_decisions). One reader for both, so a row reads the same way.
+Result<std::vector<TrialEvent>> read_events(const Connection& db, std::int64_t session_id,
+                                            bool decisions_only) {
     Result<Statement> stmt = Statement::prepare(
-        db,
-        "SELECT kind, time_ns, detail FROM events WHERE session_id = ? AND detail IS NOT NULL "
-        "ORDER BY id");
+        db, std::string("SELECT kind, trial_index, label, time_ns, frame, page, detail FROM events "
+                        "WHERE session_id = ?") +
+                (decisions_only ? " AND detail IS NOT NULL" : "") + " ORDER BY id");
     MONOPLANE_TRY(stmt);
     stmt.value().bind(1, session_id);
-    std::vector<TrialEvent> decisions;
+    std::vector<TrialEvent> events;
     for (;;) {
-        Result<bool> row = stmt.value().step("reading the decisions about a session");
+        Result<bool> row = stmt.value().step("reading events");
         MONOPLANE_TRY(row);
         if (!*row) break;
         const std::optional<EventKind> kind = parse_event_kind(stmt->text(0));
         if (!kind)
             return Error{"study database '" + db.path() + "' holds an unknown event kind '" +
                          stmt->text(0) + "'"};
-        TrialEvent e;
-        e.kind = *kind;
-        e.trial_index = -1;
-        e.time_ns = stmt->int64(1);
-        e.detail = stmt->text(2);
-        decisions.push_back(std::move(e));
+        // NULL: a screen's event (no trial), an event that is not on an instruction page.
+        events.push_back(TrialEvent{.kind = *kind,
+                                    .trial_index = stmt->is_null(1) ? -1 : stmt->int32(1),
+                                    .label = stmt->int32(2),
+                                    .time_ns = stmt->int64(3),
+                                    .frame = stmt->int64(4),
+                                    .page = stmt->is_null(5) ? -1 : stmt->int32(5),
+                                    .detail = stmt->text(6)});
     }
-    return decisions;
+    return events;
 }
 
 }  // namespace
@@ -680,7 +683,7 @@ Result<SessionInfo> StudyStore::session(std::int64_t session_id) const {
     Result<std::vector<SessionNote>> notes = read_session_notes(db, session_id);
     MONOPLANE_TRY(notes);
     info.notes = std::move(notes).value();
-    Result<std::vector<TrialEvent>> decisions = read_decisions(db, session_id);
+    Result<std::vector<TrialEvent>> decisions = read_events(db, session_id, true);
     MONOPLANE_TRY(decisions);
     info.recorded_decisions = std::move(decisions).value();
     return info;
@@ -1007,15 +1010,20 @@ namespace {
 
 // Per session: data trials decided, and data trials planned (the trials rows that are not
 // practice, plus a staircase's slots not started yet: its most).
-constexpr std::string_view kRosterQuery =
-    "SELECT p.code, p.participant_number, s.session_number, s.id, s.status, "
+// A session's data trials decided, and planned (a staircase's slots not started yet counted):
+// what the roster and the rule of one live session (kEarlierSessionsQuery) show.
+constexpr std::string_view kTrialCounts =
     "(SELECT count(*) FROM trials t WHERE t.session_id = s.id AND t.practice = 0 AND "
     "t.decided = 1), "
     "(SELECT count(*) FROM trials t WHERE t.session_id = s.id AND t.practice = 0) + "
     "(SELECT count(*) FROM planned_trials pt WHERE pt.session_id = s.id AND NOT EXISTS "
     "(SELECT 1 FROM trials t WHERE t.session_id = pt.session_id AND "
-    "t.trial_index = pt.trial_index)), "
-    "s.started_utc, s.ended_utc, s.device, s.runtime, s.protocol_hash, s.protocol_name, "
+    "t.trial_index = pt.trial_index))";
+
+const std::string kRosterQuery =
+    "SELECT p.code, p.participant_number, s.session_number, s.id, s.status, " +
+    std::string(kTrialCounts) +
+    ", s.started_utc, s.ended_utc, s.device, s.runtime, s.protocol_hash, s.protocol_name, "
     "s.session_uuid, (SELECT e.detail FROM events e WHERE e.session_id = s.id AND "
     "e.kind = 'session_abandoned' ORDER BY e.id DESC LIMIT 1) "
     "FROM sessions s JOIN participants p ON p.id = s.participant_id "
@@ -1088,16 +1096,11 @@ Result<std::vector<RosterRow>> StudyStore::roster() const {
 namespace {
 
 // A participant's sessions with the counts the roster shows (kRosterQuery's planned count).
-constexpr std::string_view kEarlierSessionsQuery =
+const std::string kEarlierSessionsQuery =
     "SELECT s.id, s.session_number, s.status, EXISTS (SELECT 1 FROM events e WHERE "
-    "e.session_id = s.id AND e.kind = 'session_abandoned'), "
-    "(SELECT count(*) FROM trials t WHERE t.session_id = s.id AND t.practice = 0 AND "
-    "t.decided = 1), "
-    "(SELECT count(*) FROM trials t WHERE t.session_id = s.id AND t.practice = 0) + "
-    "(SELECT count(*) FROM planned_trials pt WHERE pt.session_id = s.id AND NOT EXISTS "
-    "(SELECT 1 FROM trials t WHERE t.session_id = pt.session_id AND "
-    "t.trial_index = pt.trial_index)), "
-    "s.protocol_text, s.protocol_hash "
+    "e.session_id = s.id AND e.kind = 'session_abandoned'), " +
+    std::string(kTrialCounts) +
+    ", s.protocol_text, s.protocol_hash "
     "FROM sessions s JOIN participants p ON p.id = s.participant_id WHERE p.code = ? "
     "ORDER BY s.session_number";
 
@@ -1128,7 +1131,8 @@ Result<std::vector<EarlierSession>> StudyStore::earlier_sessions(const std::stri
                                .protocol_text = s.text(6),
                                .protocol_hash = *hash};
         if (*status == SessionStatus::Running || *status == SessionStatus::Paused) {
-            Result<std::optional<SessionHolder>> holder = SessionHold::holder(impl_->file, earlier.id);
+            Result<std::optional<SessionHolder>> holder =
+                SessionHold::holder(impl_->file, earlier.id);
             MONOPLANE_TRY(holder);
             earlier.holder = *holder;
         }
@@ -1167,33 +1171,8 @@ Result<std::vector<TrialRecord>> StudyStore::trials(std::optional<std::int64_t> 
 }
 
 Result<std::vector<TrialEvent>> StudyStore::events(std::int64_t session_id) const {
-    const Connection& db = impl_->db;
     MONOPLANE_TRY(impl_->require_session(session_id));
-    Result<Statement> stmt = Statement::prepare(
-        db,
-        "SELECT kind, trial_index, label, time_ns, frame, page, detail FROM events "
-        "WHERE session_id = ? ORDER BY id");
-    MONOPLANE_TRY(stmt);
-    stmt.value().bind(1, session_id);
-    std::vector<TrialEvent> events;
-    for (;;) {
-        Result<bool> row = stmt.value().step("reading events");
-        MONOPLANE_TRY(row);
-        if (!*row) break;
-        const std::optional<EventKind> kind = parse_event_kind(stmt->text(0));
-        if (!kind)
-            return Error{"study database '" + db.path() + "' holds an unknown event kind '" +
-                         stmt->text(0) + "'"};
-        // NULL: a screen's event (no trial), an event that is not on an instruction page.
-        events.push_back(TrialEvent{.kind = *kind,
-                                    .trial_index = stmt->is_null(1) ? -1 : stmt->int32(1),
-                                    .label = stmt->int32(2),
-                                    .time_ns = stmt->int64(3),
-                                    .frame = stmt->int64(4),
-                                    .page = stmt->is_null(5) ? -1 : stmt->int32(5),
-                                    .detail = stmt->text(6)});
-    }
-    return events;
+    return read_events(impl_->db, session_id, false);
 }
 
 Result<std::vector<QuestionnaireAnswer>> StudyStore::answers(std::int64_t session_id) const {

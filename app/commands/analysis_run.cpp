@@ -72,13 +72,15 @@ analysis::SessionRow session_row(const study::SessionInfo& info, const std::stri
 // repetitions, participant numbers, variables, notes) come from the same database's export.
 Result<analysis::Dataset> read_database(const std::filesystem::path& path) {
     const std::string db = path.string();
-    Result<analysis::Dataset> read = read_study_database(path);
-    MONOPLANE_TRY(read);
-    analysis::Dataset dataset = std::move(read).value();
+    // One snapshot and one reading of it: an analysis changes no byte of the file, and reads an
+    // older schema as it is.
     Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open_read_only(path);
     if (!store) return Error{"--db " + db + ": " + store.error().message};
     Result<study::ExportData> data = study::collect_export(*store.value());
     if (!data) return Error{"--db " + db + ": " + data.error().message};
+    Result<analysis::Dataset> read = read_study_database(path, **store, *data);
+    MONOPLANE_TRY(read);
+    analysis::Dataset dataset = std::move(read).value();
     std::map<std::pair<std::int64_t, int>, const study::TrialRecord*> records;
     for (const study::TrialRecord& record : data->trials)
         records[{record.session_id, record.trial.index}] = &record;

@@ -123,13 +123,10 @@ analysis::DesignComparison protocol_design_comparison() {
     };
 }
 
-Result<analysis::Dataset> read_study_database(const std::filesystem::path& path) {
-    // A snapshot: an analysis changes no byte of the file, and reads an older schema as it is.
-    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open_read_only(path);
-    if (!store) return Error{"--db " + path.string() + ": " + store.error().message};
-    Result<study::ExportData> data = study::collect_export(*store.value());
-    if (!data) return Error{"--db " + path.string() + ": " + data.error().message};
-    if (data->sessions.empty()) {
+Result<analysis::Dataset> read_study_database(const std::filesystem::path& path,
+                                              const study::StudyStore& store,
+                                              const study::ExportData& data) {
+    if (data.sessions.empty()) {
         return Error{"--db " + path.string() +
                      ": the database holds no sessions (run one with "
                      "`monoplane study run`)"};
@@ -142,7 +139,7 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path)
     std::map<std::int64_t, double> missed_threshold;
     // Per session and trial: frames shown and missed, from the frame log (headset sessions).
     std::map<std::int64_t, std::map<int, TrialFrameCounts>> frame_counts;
-    for (const auto& [id, session] : data->sessions) {
+    for (const auto& [id, session] : data.sessions) {
         // The protocol as the session ran it: its first alternative is the reference.
         Result<study::Protocol> protocol =
             study::parse_protocol(session.protocol_text, "session " + std::to_string(id));
@@ -150,19 +147,19 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path)
                                  : std::string();
         scale_points[id] = protocol ? protocol->questionnaire.scale_points : 7;
         missed_threshold[id] = missed_frame_threshold(session);
-        Result<std::vector<study::FrameRecord>> frames = store.value()->frames(id);
+        Result<std::vector<study::FrameRecord>> frames = store.frames(id);
         if (!frames) return Error{"--db " + path.string() + ": " + frames.error().message};
         frame_counts[id] = trial_frame_counts(*frames);
-        Result<std::vector<study::QuestionnaireAnswer>> answers = store.value()->answers(id);
+        Result<std::vector<study::QuestionnaireAnswer>> answers = store.answers(id);
         if (!answers) return Error{"--db " + path.string() + ": " + answers.error().message};
         for (const study::QuestionnaireAnswer& a : *answers) {
             dataset.answers.push_back(analysis::AnswerRow{
                 source, id, session.participant_code, a.item, a.text, a.answer, scale_points[id]});
         }
     }
-    for (const study::TrialRecord& record : data->trials) {
-        const auto session = data->sessions.find(record.session_id);
-        if (session == data->sessions.end()) continue;  // collect_export pairs them
+    for (const study::TrialRecord& record : data.trials) {
+        const auto session = data.sessions.find(record.session_id);
+        if (session == data.sessions.end()) continue;  // collect_export pairs them
         analysis::TrialRow row =
             trial_row(record, session->second, source, reference[record.session_id]);
         row.missed_frame_threshold = missed_threshold[record.session_id];

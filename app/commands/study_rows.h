@@ -13,6 +13,7 @@
 #include "analysis/protocol_versions.h"
 #include "common/result.h"
 #include "hmd/profile.h"
+#include "study/export.h"
 #include "study/protocol.h"
 #include "study/schedule.h"
 #include "study/study_store.h"
@@ -54,9 +55,11 @@ double missed_frame_threshold(const study::SessionInfo& session);
 analysis::DesignComparison protocol_design_comparison();
 
 // Every trial and questionnaire answer of a study database, labelled with `path` as their
-// source, with derive_session_fields() applied. Opens the database for reading only in effect
-// (nothing is written). Errors: the file does not exist or is not a study database, or it holds
-// no sessions.
-Result<analysis::Dataset> read_study_database(const std::filesystem::path& path);
+// source, with derive_session_fields() applied: `data` is study::collect_export of `store`, which
+// the caller opened read-only (its frames and answers are read here). Errors: it holds no
+// sessions.
+Result<analysis::Dataset> read_study_database(const std::filesystem::path& path,
+                                              const study::StudyStore& store,
+                                              const study::ExportData& data);
 
 }  // namespace monoplane::app

@@ -119,17 +119,16 @@ Result<std::unique_ptr<study::StudyStore>> open_for_launcher(const fs::path& pat
     return study::StudyStore::open_read_only(path);
 }
 
-Result<std::vector<RosterLine>> read_launcher_roster(const fs::path& database) {
-    Result<std::vector<study::RosterEntry>> entries = study::read_roster({database});
+// The roster lines of the launcher's snapshot `store` (one copy of the file for all of it).
+Result<std::vector<RosterLine>> read_launcher_roster(const study::StudyStore& store) {
+    Result<std::vector<study::RosterEntry>> entries = study::read_roster(store);
     MONOPLANE_TRY(entries);
-    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open_read_only(database);
-    MONOPLANE_TRY(store);
     std::vector<RosterLine> lines;
     for (study::RosterEntry& entry : entries.value()) {
         RosterLine line;
         line.entry = std::move(entry);
         line.state = line.entry.state();
-        MONOPLANE_TRY(judge_resume(**store, line));
+        MONOPLANE_TRY(judge_resume(store, line));
         lines.push_back(std::move(line));
     }
     return lines;
@@ -216,7 +215,7 @@ Result<void> LauncherModel::open_database(const fs::path& path, bool create) {
         store_ = std::move(store).value();
         db_ = path;
         db_message_.clear();
-        (void)refresh_roster();       // its error becomes the database step's message
+        (void)read_roster_lines();    // its error becomes the database step's message
         set_participant_code(code_);  // a code known in one database may be new in another
         return Ok{};
     }
@@ -238,7 +237,11 @@ Result<void> LauncherModel::refresh_roster() {
         return store.error();
     }
     store_ = std::move(store).value();
-    Result<std::vector<RosterLine>> roster = read_launcher_roster(db_);
+    return read_roster_lines();
+}
+
+Result<void> LauncherModel::read_roster_lines() {
+    Result<std::vector<RosterLine>> roster = read_launcher_roster(*store_);
     if (!roster) {
         db_message_ = roster.error().message;
         return roster.error();

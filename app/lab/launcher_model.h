@@ -231,6 +231,10 @@ class LauncherModel {
     std::string state_json() const;
 
   private:
+    // The roster from the snapshot open now (store_); its error is kept as the database step's
+    // message.
+    Result<void> read_roster_lines();
+
     void revalidate();
     void rebuild_fields();
     Result<void> step_done(LauncherStep step) const;
