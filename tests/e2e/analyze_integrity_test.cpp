@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "tests/e2e/child_process.h"
+#include "tests/e2e/test_files.h"
 
 namespace monoplane {
 namespace {
@@ -27,11 +28,6 @@ namespace fs = std::filesystem;
 constexpr const char* kProtocol =
     "name = \"integrity\"\nscenes = [\"beams\", \"landscape\"]\nmono_planes = [3, 8]\n"
     "alternatives = [\"stereo\", \"hybrid\"]\npractice_trials = 1\n";
-
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;

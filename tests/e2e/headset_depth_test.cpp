@@ -23,18 +23,12 @@
 #include <vector>
 
 #include "study/study_store.h"
+#include "tests/e2e/test_files.h"
 
 namespace monoplane {
 namespace {
 
 namespace fs = std::filesystem;
-
-// ctest runs the tests of this file in parallel processes: each gets its own folder and log.
-fs::path test_folder() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return fs::temp_directory_path() /
-           ("monoplane_e2e_" + std::string(info->test_suite_name()) + "_" + info->name());
-}
 
 int run(const std::string& command, std::string* output) {
     fs::create_directories(test_folder());

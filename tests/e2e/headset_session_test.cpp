@@ -20,6 +20,7 @@
 #include <stb/stb_image.h>
 
 #include "study/study_store.h"
+#include "tests/e2e/test_files.h"
 
 namespace monoplane {
 namespace {
@@ -29,13 +30,6 @@ namespace fs = std::filesystem;
 std::string source_dir() {
     const char* dir = std::getenv("MONOPLANE_SOURCE_DIR");
     return dir ? dir : ".";
-}
-
-// ctest runs the tests of this file in parallel processes: each gets its own folder and log.
-fs::path test_folder() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return fs::temp_directory_path() /
-           ("monoplane_e2e_" + std::string(info->test_suite_name()) + "_" + info->name());
 }
 
 int run(const std::string& command, std::string* output = nullptr) {

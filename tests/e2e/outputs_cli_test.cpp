@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "tests/e2e/child_process.h"
+#include "tests/e2e/test_files.h"
 
 namespace monoplane {
 namespace {
@@ -35,11 +36,6 @@ std::string protocol(const std::string& scenes) {
            "[[variables]]\nname = \"vision\"\ntype = \"choice\"\n"
            "choices = [\"normal\", \"corrected\"]\n"
            "[[variables]]\nname = \"remark\"\ntype = \"text\"\n";
-}
-
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // Every file under `root`, relative, sorted (folders only where empty, as "name/").
@@ -234,11 +230,12 @@ TEST_F(OutputsCli, AnExportReplacesOnlyAnExportOfTheSameStudy) {
     const std::string record_bytes = read_file(record);
     // Another study's export of the same format: refused, both files as they were.
     EXPECT_EQ(export_to("two.sqlite", "csv", csv.string(), false, &log), 1);
-    EXPECT_EQ(log, "monoplane: '" + csv.string() +
-                       "' is a csv export of another study: 2 of its 2 sessions are not in this "
-                       "database: " +
-                       sessions[0] + ", " + sessions[1] +
-                       ". Give --force to replace it, or choose another --out. Nothing was written.\n");
+    EXPECT_EQ(log,
+              "monoplane: '" + csv.string() +
+                  "' is a csv export of another study: 2 of its 2 sessions are not in this "
+                  "database: " +
+                  sessions[0] + ", " + sessions[1] +
+                  ". Give --force to replace it, or choose another --out. Nothing was written.\n");
     EXPECT_EQ(read_file(csv), csv_bytes);
     EXPECT_EQ(read_file(record), record_bytes);
     // The same study with a session more, and a copy of its database elsewhere: replaced.
@@ -274,7 +271,8 @@ TEST_F(OutputsCli, AJsonExportWithoutItsRecordIsReplacedOnlyWhenForced) {
                        "' is a json export that does not record which study it came from ('" +
                        json.string() +
                        ".source' is missing: it was written by an older monoplane, or copied "
-                       "without it). Give --force to replace it, or choose another --out. Nothing was written.\n");
+                       "without it). Give --force to replace it, or choose another --out. Nothing "
+                       "was written.\n");
     EXPECT_EQ(read_file(json), bytes);
     EXPECT_FALSE(fs::exists(dir_ / "site.json.source"));
     ASSERT_EQ(export_to("three.sqlite", "json", json.string(), true, &log), 0) << log;

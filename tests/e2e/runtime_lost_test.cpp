@@ -20,23 +20,12 @@
 
 #include "study/study_store.h"
 #include "tests/e2e/child_process.h"
+#include "tests/e2e/test_files.h"
 
 namespace monoplane {
 namespace {
 
 namespace fs = std::filesystem;
-
-// ctest runs the tests of this file in parallel processes: each gets its own folder.
-fs::path test_folder() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return fs::temp_directory_path() /
-           ("monoplane_e2e_" + std::string(info->test_suite_name()) + "_" + info->name());
-}
-
-std::string read_file(const fs::path& path) {
-    std::ifstream in(path);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 int count(const std::string& text, const std::string& what) {
     int n = 0;

@@ -23,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include "study/study_store.h"
+#include "tests/e2e/test_files.h"
 #include "tests/unit/gltf_test_files.h"
 
 namespace monoplane {
@@ -33,13 +34,6 @@ using scenes::testing::TestGltf;
 
 // The scenes entry as the protocol writes it, relative to the protocol's folder.
 constexpr const char* kLabel = "models/tri.gltf";
-
-// ctest runs the tests of this file in parallel processes: each gets its own folder.
-fs::path test_folder() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return fs::temp_directory_path() /
-           ("monoplane_e2e_" + std::string(info->test_suite_name()) + "_" + info->name());
-}
 
 // Runs a shell command; returns its exit status and, in *output, stdout and stderr together.
 int run(const std::string& command, std::string* output = nullptr) {

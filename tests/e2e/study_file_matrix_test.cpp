@@ -24,6 +24,7 @@
 #include "study/session_hold.h"
 #include "study/store_schema.h"
 #include "tests/e2e/child_process.h"
+#include "tests/e2e/test_files.h"
 
 namespace monoplane {
 namespace {
@@ -402,8 +403,7 @@ class StudyFileMatrix : public ::testing::Test {
     // The table in docs/data.md between its markers is this test's table.
     static void check_doc_table(const std::string& table) {
         const fs::path doc = fs::path(source_dir()) / "docs" / "data.md";
-        std::ifstream in(doc);
-        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        std::string text = read_file(doc);
         const std::string begin = "<!-- file-matrix:begin -->\n";
         const std::string end = "<!-- file-matrix:end -->";
         const std::size_t from = text.find(begin);
@@ -526,14 +526,10 @@ TEST_F(StudyFileMatrix, AnAbandonedSessionIsShownWithItsReasonByTheRosterAndTheR
                         &out, false),
               0)
         << out;
-    std::ifstream summary(dir / "analysis" / "summary.json");
-    const std::string json((std::istreambuf_iterator<char>(summary)),
-                           std::istreambuf_iterator<char>());
+    const std::string json = read_file(dir / "analysis" / "summary.json");
     EXPECT_NE(json.find("\"text\": \"session abandoned: participant felt unwell\""),
               std::string::npos);
-    std::ifstream report(dir / "analysis" / "report.html");
-    const std::string html((std::istreambuf_iterator<char>(report)),
-                           std::istreambuf_iterator<char>());
+    const std::string html = read_file(dir / "analysis" / "report.html");
     EXPECT_NE(html.find("session abandoned: participant felt unwell"), std::string::npos);
 }
 
