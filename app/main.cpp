@@ -7,6 +7,7 @@
 
 #include "app/commands/commands.h"
 #include "app/commands/runtime_lost.h"
+#include "app/version/build_info.h"
 #include "common/result.h"
 #include "renderer/vk/vulkan.h"
 
@@ -20,6 +21,11 @@ int main(int argc, char** argv) {
     root.add_option("--device", global.device,
                     "Vulkan device: index or part of its name (default: discrete GPU, else "
                     "llvmpipe); see `monoplane devices`");
+    // Which build this is, for a lab's records and bug reports: version, git revision, the
+    // database schema it writes, build type.
+    root.set_version_flag(
+        "--version", [] { return version_text(); },
+        "Print the version, git revision, database schema and build type");
     root.add_flag("--validation", global.validation,
                   "Enable the Khronos validation layer, its synchronisation validation "
                   "included; any message is an error");

@@ -16,6 +16,7 @@
 #include "app/commands/study_options.h"
 #include "app/commands/study_rows.h"
 #include "app/commands/study_scenes.h"
+#include "app/version/build_info.h"
 #include "hmd/profile.h"
 #include "study/observer.h"
 #include "study/protocol.h"
@@ -170,7 +171,7 @@ void run_study(const StudyOptions& o, const GlobalOptions& global) {
     study::SessionStart start = plan(o, protocol, store.get());
     study::SessionInfo& info = start.info;
     const study::Schedule& schedule = start.schedule;
-    info.software_version = "monoplane 0.1.0";
+    info.software_version = software_version();
     info.hmd = hmd.name;
     const std::string observer_name = observer_for(o);
     info.observer = observer_name == "none" ? "" : observer_name;
