@@ -19,79 +19,11 @@
 #include "renderer/vk/context.h"
 #include "renderer/vk/frame_ring.h"
 
-#ifndef MONOPLANE_SIMXR_MANIFEST
-#error "MONOPLANE_SIMXR_MANIFEST must name the simulated runtime's manifest"
-#endif
-
 namespace monoplane::app {
 namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-// An environment variable's value (or its absence) at construction, put back by restore().
-class SavedVariable {
-  public:
-    explicit SavedVariable(const char* name) : name_(name) {
-        if (const char* value = std::getenv(name)) value_ = value;
-    }
-    void restore() const {
-        if (value_) {
-            setenv(name_, value_->c_str(), 1);
-        } else {
-            unsetenv(name_);
-        }
-    }
-
-  private:
-    const char* name_;
-    std::optional<std::string> value_;
-};
-
-// XR_RUNTIME_JSON as the program started. select_simulated_runtime points it at simxr for good
-// (right for a one-shot `study run`); the launcher probes simulated and openxr in turn, and
-// openxr must then reach the runtime the experimenter's machine selects, not simxr.
-const SavedVariable kStartupRuntime("XR_RUNTIME_JSON");
-
-bool simxr_selected() {
-    const char* runtime = std::getenv("XR_RUNTIME_JSON");
-    return runtime && std::string(runtime) == MONOPLANE_SIMXR_MANIFEST;
-}
-
-// The loader's runtime for one probe or check: simxr exactly as `study run --headset simulated`
-// selects it; for openxr, XR_RUNTIME_JSON as it is (the experimenter's choice), or as it was at
-// startup where a simulated session left it at simxr. The environment is as before once it goes.
-// Throws UserError for a bad simulated script.
-class RuntimeChoice {
-  public:
-    explicit RuntimeChoice(const HeadsetStudyOptions& options) {
-        if (options.headset == "simulated") {
-            script_ = select_simulated_runtime(options);
-        } else if (simxr_selected()) {
-            kStartupRuntime.restore();
-        }
-    }
-    ~RuntimeChoice() {
-        instance_created();
-        runtime_.restore();
-        script_variable_.restore();
-    }
-    RuntimeChoice(const RuntimeChoice&) = delete;
-    RuntimeChoice& operator=(const RuntimeChoice&) = delete;
-
-    // simxr has read its script in xrCreateInstance: the written file is not needed after it.
-    void instance_created() {
-        if (!script_) return;
-        std::error_code ignored;
-        fs::remove(*script_, ignored);
-        script_.reset();
-    }
-
-  private:
-    SavedVariable runtime_{"XR_RUNTIME_JSON"};
-    SavedVariable script_variable_{"SIMXR_SCRIPT"};
-    std::optional<fs::path> script_;
-};
 
 Result<void> check_headset_name(const std::string& headset) {
     if (headset == "simulated" || headset == "openxr") return Ok{};
@@ -352,7 +284,7 @@ Result<headset::HeadsetProbe> probe_headset(bool simulated, const HeadsetStudyOp
     HeadsetStudyOptions options = simulation;
     options.headset = simulated ? "simulated" : "openxr";
     try {
-        RuntimeChoice choice(options);
+        RuntimeSelection selection(options);
         return headset::probe_runtime(validation);
     } catch (const UserError& e) {
         return Error{e.what()};
@@ -362,10 +294,10 @@ Result<headset::HeadsetProbe> probe_headset(bool simulated, const HeadsetStudyOp
 Result<HeadsetCheck> run_headset_check(const HeadsetCheckOptions& options) {
     MONOPLANE_TRY(check_headset_name(options.headset.headset));
     try {
-        RuntimeChoice choice(options.headset);
+        RuntimeSelection selection(options.headset);
         Result<std::unique_ptr<headset::OpenXrHeadset>> created =
             headset::OpenXrHeadset::create(options.global.validation, false);
-        choice.instance_created();
+        selection.instance_created();
         MONOPLANE_TRY(created);
         return check_on(std::move(created).value(), options);
     } catch (const std::exception& e) {

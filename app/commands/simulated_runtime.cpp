@@ -1,7 +1,9 @@
-// select_simulated_runtime (study_headset.h) in a file of its own, so that what needs only to
-// point the loader at simxr (the launcher's headset probe and check) links without the study's
-// session loop.
+// RuntimeSelection (study_headset.h) in a file of its own, so that what needs only to point the
+// loader at a runtime (the launcher's headset probe and check) links without the study's session
+// loop.
 #include <unistd.h>
+
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -16,17 +18,22 @@ namespace monoplane::app {
 
 namespace fs = std::filesystem;
 
-std::optional<fs::path> select_simulated_runtime(const HeadsetStudyOptions& options) {
-    // The simulated runtime, whatever runtime the machine has active: a dry run must never
-    // reach a real headset.
-    setenv("XR_RUNTIME_JSON", MONOPLANE_SIMXR_MANIFEST, 1);
-    if (!options.sim_script.empty()) {
-        if (!fs::exists(options.sim_script)) {
-            throw UserError("--sim-script " + options.sim_script + ": no such file");
-        }
-        setenv("SIMXR_SCRIPT", fs::absolute(options.sim_script).c_str(), 1);
-        return std::nullopt;
-    }
+namespace {
+
+std::optional<std::string> variable(const char* name) {
+    const char* value = std::getenv(name);
+    return value ? std::optional<std::string>(value) : std::nullopt;
+}
+
+void put_back(const char* name, const std::optional<std::string>& value) {
+    if (value)
+        setenv(name, value->c_str(), 1);
+    else
+        unsetenv(name);
+}
+
+// simxr's script from the options, in the temporary folder; its path.
+fs::path write_simxr_script(const HeadsetStudyOptions& options) {
     // A built-in profile name stays a name; a file is made absolute, as the script's relative
     // paths are read against the script's folder.
     std::string hmd = options.hmd;
@@ -43,8 +50,39 @@ std::optional<fs::path> select_simulated_runtime(const HeadsetStudyOptions& opti
         out << "dump_dir = \"" << fs::absolute(options.dump_frames).string() << "\"\n";
     }
     if (!out) throw UserError("cannot write the simulated runtime's script " + script.string());
-    setenv("SIMXR_SCRIPT", script.c_str(), 1);
     return script;
+}
+
+}  // namespace
+
+RuntimeSelection::RuntimeSelection(const HeadsetStudyOptions& options)
+    : runtime_(variable("XR_RUNTIME_JSON")), script_variable_(variable("SIMXR_SCRIPT")) {
+    if (options.headset != "simulated") return;  // the machine's (or the caller's) runtime
+    if (!options.sim_script.empty() && !fs::exists(options.sim_script)) {
+        throw UserError("--sim-script " + options.sim_script + ": no such file");
+    }
+    setenv("XR_RUNTIME_JSON", MONOPLANE_SIMXR_MANIFEST, 1);
+    if (!options.sim_script.empty()) {
+        setenv("SIMXR_SCRIPT", fs::absolute(options.sim_script).c_str(), 1);
+        return;
+    }
+    written_ = write_simxr_script(options);
+    setenv("SIMXR_SCRIPT", written_->c_str(), 1);
+}
+
+RuntimeSelection::~RuntimeSelection() {
+    instance_created();
+}
+
+void RuntimeSelection::instance_created() {
+    if (restored_) return;
+    restored_ = true;
+    put_back("XR_RUNTIME_JSON", runtime_);
+    put_back("SIMXR_SCRIPT", script_variable_);
+    if (written_) {
+        std::error_code ignored;
+        fs::remove(*written_, ignored);
+    }
 }
 
 }  // namespace monoplane::app

@@ -667,14 +667,11 @@ bool want_window(const HeadsetStudyOptions& options, vk_core::ContextOptions& co
 // device it makes from `context_options`.
 headset::HeadsetDevice open_headset(const HeadsetStudyOptions& options, const GlobalOptions& global,
                                     const vk_core::ContextOptions& context_options) {
-    std::optional<fs::path> written_script;
-    if (options.headset == "simulated") written_script = select_simulated_runtime(options);
+    RuntimeSelection selection(options);
     auto created = headset::OpenXrHeadset::create(global.validation, options.layer_depth != "off");
-    // simxr has read its script (in xrCreateInstance): the temporary file is not needed.
-    if (written_script) {
-        std::error_code ignored;
-        fs::remove(*written_script, ignored);
-    }
+    // simxr has read its script (in xrCreateInstance): the environment goes back as it was, so
+    // the launcher's next session reaches the runtime it chooses.
+    selection.instance_created();
     std::unique_ptr<headset::OpenXrHeadset> openxr = std::move(created).value_or_throw();
     std::cerr << "OpenXR runtime: " << openxr->runtime_name() << ", system "
               << openxr->system_name() << "\n";

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include <cstdint>
 #include <functional>
@@ -42,10 +43,30 @@ struct HeadsetStudyOptions {
     std::string dump_frames;                 // folder for the submitted frames as PNG
 };
 
-// Points the OpenXR loader at monoplane's simulated runtime and writes its script. Call before
-// the headset is created. Returns the script it wrote (none with --sim-script): simxr reads it
-// in xrCreateInstance, after which the caller removes it.
-std::optional<std::filesystem::path> select_simulated_runtime(const HeadsetStudyOptions& options);
+// The OpenXR loader's runtime for one headset's instance (a probe, a check, a session): for
+// "simulated", monoplane's simulated runtime with a script written from the options (or
+// --sim-script), whatever runtime the machine has active, so a dry run never reaches a real
+// headset; for "openxr", the environment as the program was given it. The loader reads
+// XR_RUNTIME_JSON (and simxr SIMXR_SCRIPT) in xrCreateInstance: once the instance exists, or the
+// selection goes, both are put back as they were and the written script is removed, so one
+// choice never carries over to the next (the launcher offers simulated and openxr in turn).
+// Create it just before the instance, on the thread that creates it; throws UserError for a
+// --sim-script that does not exist or a script that cannot be written.
+class RuntimeSelection {
+  public:
+    explicit RuntimeSelection(const HeadsetStudyOptions& options);
+    ~RuntimeSelection();
+    RuntimeSelection(const RuntimeSelection&) = delete;
+    RuntimeSelection& operator=(const RuntimeSelection&) = delete;
+
+    // The instance was created (or refused): the environment is as before from here on.
+    void instance_created();
+
+  private:
+    std::optional<std::string> runtime_, script_variable_;  // as they were
+    std::optional<std::filesystem::path> written_;          // the script written, if any
+    bool restored_ = false;
+};
 
 // Runs the session's remaining trials and questionnaire on the headset. `begin` is called once
 // the headset and device are known (runtime name, device name) and returns the session id (a
