@@ -58,11 +58,40 @@ Result<void> judge_resume(const study::StudyStore& store, RosterLine& line) {
 }
 
 // The problem with a field's text, in check_variable_value's words; none while it is empty
-// (plan_session names a required one that is still missing).
+// (the Participant step names a required one that is still missing). A decimal comma is
+// refused as `study run --var` refuses it, never read as a thousands separator or dropped: the
+// message shows the number with a point, so "6,5" is never stored as 65.
 std::string field_message(const VariableField& field, const study::RequestNames& names) {
     if (field.text.empty()) return {};
     Result<std::string> value = study::check_variable_value(field.declaration, field.text, names);
-    return value ? std::string() : value.error().message;
+    if (value) return {};
+    std::string pointed = field.text;
+    std::ranges::replace(pointed, ',', '.');
+    if (field.declaration.type == study::VariableType::Number && pointed != field.text &&
+        study::check_variable_value(field.declaration, pointed, names)) {
+        return names.variable(field.declaration.name + "=" + field.text) + ": write " + pointed +
+               " (the decimal point is '.'; a comma is not read as one)";
+    }
+    return value.error().message;
+}
+
+// The folder's *.toml files with their times and sizes, or "missing": what changes when a
+// protocol is saved, added or removed, or the folder comes or goes.
+std::string folder_signature(const fs::path& folder) {
+    std::error_code ec;
+    if (!fs::is_directory(folder, ec)) return "missing";
+    std::vector<std::string> files;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+        if (it->path().extension() != ".toml") continue;
+        std::error_code ignored;
+        const auto time = fs::last_write_time(it->path(), ignored).time_since_epoch().count();
+        files.push_back(it->path().filename().string() + ":" + std::to_string(time) + ":" +
+                        std::to_string(it->file_size(ignored)));
+    }
+    std::ranges::sort(files);
+    std::string signature;
+    for (const std::string& file : files) signature += file + "\n";
+    return signature;
 }
 
 std::string running_message() {
@@ -153,10 +182,12 @@ std::vector<std::string> LaunchRequest::arguments() const {
     a.insert(a.end(), {"--headset", headset});
     if (!observer.empty()) a.insert(a.end(), {"--observer", observer});
     if (seed && command == Command::Run) a.insert(a.end(), {"--seed", std::to_string(*seed)});
+    a.insert(a.end(), session_arguments.begin(), session_arguments.end());
     return a;
 }
 
-LauncherModel::LauncherModel(LauncherSettings settings) : names_(std::move(settings.names)) {
+LauncherModel::LauncherModel(LauncherSettings settings)
+    : names_(std::move(settings.names)), session_arguments_(std::move(settings.session_arguments)) {
     // Failures stay as the steps' messages: the window shows them where the choice is made.
     if (!settings.protocols.empty()) (void)scan_protocols(settings.protocols);
     if (!settings.db.empty() && open_database(settings.db, true)) step_ = LauncherStep::Protocol;
@@ -253,6 +284,7 @@ Result<void> LauncherModel::read_roster_lines() {
 Result<void> LauncherModel::scan_protocols(const fs::path& folder) {
     if (step_ == LauncherStep::Session) return Error{running_message()};
     protocols_dir_ = folder;
+    protocols_signature_ = folder_signature(folder);
     Result<std::vector<ProtocolChoice>> choices = list_protocols(folder);
     protocols_ = choices ? std::move(choices).value() : std::vector<ProtocolChoice>{};
     protocols_message_ = choices ? std::string() : choices.error().message;
@@ -260,21 +292,27 @@ Result<void> LauncherModel::scan_protocols(const fs::path& folder) {
     return Ok{};
 }
 
+bool LauncherModel::rescan_protocols_if_changed() {
+    if (step_ == LauncherStep::Session || protocols_dir_.empty()) return false;
+    if (folder_signature(protocols_dir_) == protocols_signature_) return false;
+    (void)scan_protocols(protocols_dir_);  // a failure is the step's message
+    return true;
+}
+
 Result<void> LauncherModel::select_protocol(const fs::path& path) {
     if (step_ == LauncherStep::Session) return Error{running_message()};
-    const auto listed = std::ranges::find(protocols_, path, &ProtocolChoice::path);
-    if (listed == protocols_.end()) {
-        return Error{"'" + path.string() + "' is not a protocol of the folder '" +
-                     protocols_dir_.string() + "'"};
-    }
-    *listed = judge_protocol(path);  // the file as it is now
-    if (!listed->valid) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) return Error{"no protocol file '" + path.string() + "'"};
+    ProtocolChoice judged = judge_protocol(path);  // the file as it is now
+    auto listed = std::ranges::find(protocols_, path, &ProtocolChoice::path);
+    if (listed != protocols_.end()) *listed = judged;
+    if (!judged.valid) {
         // The experimenter chose this file: an earlier choice must not start in its place.
         protocol_.reset();
         protocol_path_.clear();
         rebuild_fields();
         revalidate();
-        return Error{listed->message};
+        return Error{judged.message};
     }
     protocol_ = study::load_protocol(path).value();
     protocol_path_ = path;
@@ -359,8 +397,30 @@ Result<void> LauncherModel::set_variable(const std::string& name, const std::str
 Result<void> LauncherModel::set_headset(const std::string& headset) {
     if (headset != "none" && headset != "simulated" && headset != "openxr")
         return Error{"headset '" + headset + "': choose none, simulated or openxr"};
+    if (headset != headset_) {
+        headset_report_ = HeadsetReport{};  // another runtime: probed again
+        headset_probed_ = false;
+    }
     headset_ = headset;
     revalidate();
+    return Ok{};
+}
+
+void LauncherModel::set_headset_report(HeadsetReport report) {
+    headset_report_ = std::move(report);
+    headset_probed_ = true;
+    revalidate();
+}
+
+Result<void> LauncherModel::next_participant() {
+    if (step_ == LauncherStep::Session) return Error{running_message()};
+    for (VariableField& field : fields_)
+        if (!field.recorded) field.text.clear();
+    session_number_.reset();
+    participant_number_.reset();
+    summary_.reset();
+    set_participant_code("");  // rebuilds the (now empty) form and revalidates
+    step_ = protocol_ ? LauncherStep::Participant : LauncherStep::Protocol;
     return Ok{};
 }
 
@@ -394,6 +454,7 @@ LaunchRequest LauncherModel::request() const {
     r.seed = seed_;
     r.headset = headset_;
     r.observer = observer_;
+    r.session_arguments = session_arguments_;
     return r;
 }
 
@@ -414,12 +475,23 @@ study::SessionRequest session_request(const LaunchRequest& r) {
 }  // namespace
 
 void LauncherModel::revalidate() {
+    find_participant_problems();
+    std::string problems;
+    for (const std::string& problem : participant_problems_)
+        problems += (problems.empty() ? "" : "\n") + problem;
     if (!store_) {
         start_message_ = "open or create a study database first";
     } else if (!protocol_) {
         start_message_ = "choose a valid protocol first";
     } else if (code_.empty()) {
         start_message_ = "enter the participant code";
+    } else if (!problems.empty()) {
+        start_message_ = problems;
+    } else if (headset_ != "none" && headset_probed_ && !headset_report_.runtime_available) {
+        start_message_ = "no runtime for the " + headset_ + " headset (" +
+                         (headset_report_.message.empty() ? std::string("no OpenXR runtime")
+                                                          : headset_report_.message) +
+                         "): choose another headset above";
     } else {
         Result<study::SessionStart> plan =
             study::plan_session(store_.get(), *protocol_, session_request(request()), names_);
@@ -456,8 +528,10 @@ Result<LaunchRequest> LauncherModel::resume(std::int64_t session_id, bool accept
     }
     const bool accepted = line->scene_files_changed && !line->entry.holder && accept_changed_scenes;
     if (!line->resume_offered && !accepted) return Error{line->resume_refusal};
+    if (!protocol_) choose_protocol_named(row.protocol_name);
     LaunchRequest r;
     r.command = LaunchRequest::Command::Resume;
+    r.session_arguments = session_arguments_;
     r.db = db_.string();
     r.session_id = session_id;
     r.accept_changed_scenes = accepted;

@@ -109,10 +109,22 @@ struct LaunchRequest {
     bool accept_changed_scenes = false;      // resume only
     std::string headset = "simulated";       // none, simulated or openxr
     std::string observer;                    // "": the command's default for the headset
+    // The sessions' other options as `study run` takes them ("--detail", "test", ...): what
+    // `monoplane lab` was given for its sessions, so the shown command is the session's.
+    std::vector<std::string> session_arguments;
 
     // The same request as a command line after `monoplane` ("study", "run", "--protocol", ...):
     // shown to the experimenter so the session can be repeated from a shell. Any time.
     std::vector<std::string> arguments() const;
+};
+
+// A control the window drew, where it drew it (window pixels): the state dump lists them so that
+// scripted checks click where a person would.
+struct ControlRect {
+    std::string name;
+    float x = 0, y = 0, width = 0, height = 0;
+    bool enabled = true;
+    bool visible = true;  // not scrolled out of its list
 };
 
 // A finished (or stopped) session, for the summary step.
@@ -133,7 +145,13 @@ struct LauncherSettings {
     // How the messages about the participant's request name its inputs: `monoplane lab` gives
     // `study run`'s option names (--var age=17), which its users read there too.
     study::RequestNames names = study::study_request_names();
+    // LaunchRequest::session_arguments of every request.
+    std::vector<std::string> session_arguments;
 };
+
+// How the launcher names the inputs of a request in its messages: the window's fields and
+// buttons ("the 'age' field", "session 2"), never command-line options.
+const study::RequestNames& launcher_request_names();
 
 class LauncherModel {
   public:
@@ -163,11 +181,15 @@ class LauncherModel {
 
     // Protocol step. Lists `folder` again (list_protocols). Any time but during a session.
     Result<void> scan_protocols(const std::filesystem::path& folder);
+    // Lists the folder again when its files changed (a file saved, added or removed, the folder
+    // made or removed) since the last listing; true when it did. Cheap (one directory listing):
+    // the window calls it every second. Any time but during a session.
+    bool rescan_protocols_if_changed();
     const std::vector<ProtocolChoice>& protocols() const { return protocols_; }
     const std::string& protocols_message() const { return protocols_message_; }
-    // Chooses one listed file; it is loaded again, so an edit since the listing counts. Refused:
-    // a file not listed, or one that is not valid (its problems; no protocol is chosen then).
-    // Rebuilds the variables form.
+    // Chooses a protocol file: one listed, or any other path (a protocol kept elsewhere); it is
+    // loaded again, so an edit since the listing counts. Refused: no such file, or one that is
+    // not valid (its problems; no protocol is chosen then). Rebuilds the variables form.
     // Any time but during a session.
     Result<void> select_protocol(const std::filesystem::path& path);
     const study::Protocol* protocol() const { return protocol_ ? &*protocol_ : nullptr; }
@@ -189,12 +211,23 @@ class LauncherModel {
     // Sets a form field's text; refused for an undeclared name or a recorded field.
     Result<void> set_variable(const std::string& name, const std::string& text);
     const std::vector<VariableField>& variables() const { return fields_; }
+    // What keeps this participant from starting that the Participant step can fix (a required
+    // field empty, their sessions all done, an unfinished earlier session), in the window's
+    // words; empty when nothing there stands in the way. Any time.
+    const std::vector<std::string>& participant_problems() const { return participant_problems_; }
+    // "Next participant": a new code and form for the same protocol (and database, headset):
+    // the code, the typed variables, the session and participant numbers and the summary are
+    // cleared, and the step is Participant (Protocol when none is chosen). Any time but during
+    // a session.
+    Result<void> next_participant();
 
     // Headset step. `headset`: none, simulated or openxr. `observer`: "" (the command's
     // default), none, or a simulated observer study::make_observer accepts.
     Result<void> set_headset(const std::string& headset);
     Result<void> set_observer(const std::string& observer);
-    void set_headset_report(HeadsetReport report) { headset_report_ = std::move(report); }
+    // The probe's (or check's) report for the headset chosen now: with no runtime, Start is
+    // disabled with the report's message.
+    void set_headset_report(HeadsetReport report);
     // How the window draws (its monitor's content scale and the font size that gives), for the
     // state dump: the window sets it when it opens. Any time.
     void set_window_scale(double content_scale, double font_pixels) {
@@ -204,6 +237,9 @@ class LauncherModel {
     const std::string& headset() const { return headset_; }
     const std::string& observer() const { return observer_; }
     const HeadsetReport& headset_report() const { return headset_report_; }
+    // Where the window drew its controls this frame (for the state dump). Any time.
+    void set_controls(std::vector<ControlRect> controls) { controls_ = std::move(controls); }
+    const std::vector<ControlRect>& controls() const { return controls_; }
     // A fixed seed (tests, a repeated session); none: drawn and recorded, as the command does.
     void set_seed(std::optional<std::uint64_t> seed);
 
@@ -236,7 +272,11 @@ class LauncherModel {
     Result<void> read_roster_lines();
 
     void revalidate();
+    void find_participant_problems();
     void rebuild_fields();
+    // After a Resume from a step before Protocol: the folder's protocol of the resumed session's
+    // name, so that Next participant goes on with it.
+    void choose_protocol_named(const std::string& name);
     Result<void> step_done(LauncherStep step) const;
 
     study::RequestNames names_;  // LauncherSettings::names
@@ -248,6 +288,7 @@ class LauncherModel {
     std::filesystem::path protocols_dir_;
     std::vector<ProtocolChoice> protocols_;
     std::string protocols_message_;
+    std::string protocols_signature_;  // the folder's files when last listed
     std::filesystem::path protocol_path_;
     std::optional<study::Protocol> protocol_;
     std::string code_;
@@ -256,6 +297,10 @@ class LauncherModel {
     std::optional<int> session_number_;
     std::optional<int> participant_number_;
     std::vector<VariableField> fields_;
+    std::vector<std::string> participant_problems_;
+    std::vector<std::string> session_arguments_;
+    std::vector<ControlRect> controls_;
+    bool headset_probed_ = false;  // headset_report_ is the chosen headset's
     std::string headset_ = "simulated";
     std::string observer_;
     HeadsetReport headset_report_;

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "app/lab/launcher_model.h"
+#include "app/lab/shell_words.h"
 #include "common/json_writer.h"
 
 namespace monoplane::lab {
@@ -64,7 +65,9 @@ void write_participant(JsonWriter& w, const LauncherModel& m) {
     w.end_array().value("next_session_number", m.next_session_number());
     optional_int(w, "session_number", m.session_number());
     optional_int(w, "participant_number", m.participant_number());
-    w.end_object();
+    w.begin_array("problems");
+    for (const std::string& problem : m.participant_problems()) w.value({}, problem);
+    w.end_array().end_object();
 }
 
 void write_variables(JsonWriter& w, const LauncherModel& m) {
@@ -114,9 +117,26 @@ void write_headset(JsonWriter& w, const LauncherModel& m) {
 
 void write_start(JsonWriter& w, const LauncherModel& m) {
     w.begin_object("start").value("enabled", m.start_enabled()).value("message", m.start_message());
+    const std::vector<std::string> arguments = m.request().arguments();
     w.begin_array("arguments");
-    for (const std::string& a : m.request().arguments()) w.value({}, a);
-    w.end_array().end_object();
+    for (const std::string& a : arguments) w.value({}, a);
+    w.end_array().value("command_line", shell_command_line(arguments)).end_object();
+}
+
+// Each control as {"x", "y", "width", "height", "enabled"} under its name, in window pixels.
+void write_controls(JsonWriter& w, const LauncherModel& m) {
+    w.begin_object("controls");
+    for (const ControlRect& c : m.controls()) {
+        w.begin_object(c.name)
+            .value("x", c.x)
+            .value("y", c.y)
+            .value("width", c.width)
+            .value("height", c.height)
+            .value("enabled", c.enabled)
+            .value("visible", c.visible)
+            .end_object();
+    }
+    w.end_object();
 }
 
 void write_roster(JsonWriter& w, const LauncherModel& m) {
@@ -182,6 +202,7 @@ std::string LauncherModel::state_json() const {
         .value("content_scale", content_scale_)
         .value("font_pixels", font_pixels_)
         .end_object();
+    write_controls(w, *this);
     w.end_object();
     return w.str();
 }

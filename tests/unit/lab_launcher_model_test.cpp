@@ -14,7 +14,9 @@
 #include <tuple>
 #include <vector>
 
+#include "app/lab/lab_config.h"
 #include "app/lab/launcher_model.h"
+#include "app/lab/shell_words.h"
 #include "study/file_digest.h"
 #include "study/participant_variables.h"
 #include "study/session_hold.h"
@@ -221,10 +223,11 @@ TEST_F(LauncherModelTest, AMissingRequiredVariableKeepsStartDisabledWithTheMessa
     ASSERT_TRUE(m.set_variable("age", "30").ok());
     EXPECT_EQ(m.variables()[1].message, "");  // an empty field is not yet an error...
     EXPECT_FALSE(m.start_enabled());          // ...but Start says what is missing
-    const std::string expected =
-        study::check_variables(m.protocol()->day.variables, {"age=30"}).error().message;
+    // In the Participant step's words, where the field is: not `study run`'s --var advice.
+    const std::string expected = "fill in 'vision' above: it is required";
     EXPECT_EQ(m.start_message(), expected);
-    EXPECT_TRUE(contains(m.start_message(), "vision")) << m.start_message();
+    EXPECT_EQ(m.participant_problems(), std::vector<std::string>{expected});
+    EXPECT_FALSE(contains(m.start_message(), "--var")) << m.start_message();
     const Result<LaunchRequest> refused = m.start();
     ASSERT_FALSE(refused.ok());
     EXPECT_EQ(refused.error().message, expected);
@@ -245,7 +248,9 @@ TEST_F(LauncherModelTest, AKnownParticipantShowsTheirSessionsAndRecordedVariable
     EXPECT_FALSE(m.set_variable("age", "31").ok());
     // demo.toml-like protocols have sessions = 1: a second session is refused, as by the command.
     EXPECT_FALSE(m.start_enabled());
-    EXPECT_TRUE(contains(m.start_message(), "already has 1 session(s)")) << m.start_message();
+    EXPECT_TRUE(contains(m.start_message(), "P01 has had all 1 session(s) of protocol"))
+        << m.start_message();
+    EXPECT_FALSE(contains(m.start_message(), "study resume")) << m.start_message();
     m.set_session_number(1);
     EXPECT_TRUE(contains(m.start_message(), "already has session 1")) << m.start_message();
 }
@@ -265,14 +270,14 @@ TEST_F(LauncherModelTest, StartStaysOffForAParticipantsUnfinishedSessionAndOpenW
     LauncherModel m = ready("two.toml");
     m.set_participant_code("P01");
     EXPECT_FALSE(m.start_enabled());
-    EXPECT_TRUE(contains(m.start_message(),
-                         "participant P01's session 1 in '" + db_.string() + "' was interrupted"))
+    EXPECT_TRUE(contains(m.start_message(), "P01's session 1 was interrupted (0 of "))
         << m.start_message();
-    EXPECT_TRUE(contains(m.start_message(), "(the launcher: Resume)")) << m.start_message();
+    EXPECT_TRUE(contains(m.start_message(), "press Resume on its line")) << m.start_message();
+    EXPECT_FALSE(contains(m.start_message(), "study resume")) << m.start_message();
     m.set_participant_code("P02");
     EXPECT_FALSE(m.start_enabled());
     EXPECT_TRUE(
-        contains(m.start_message(), "is running: process " + std::to_string(::getpid()) + " on "))
+        contains(m.start_message(), "is running (process " + std::to_string(::getpid()) + " on "))
         << m.start_message();
     m.set_participant_code("P03");  // a new participant starts beside them
     EXPECT_TRUE(m.start_enabled()) << m.start_message();
@@ -496,6 +501,127 @@ TEST_F(LauncherModelTest, StateJsonShowsTheHeadsetReportAndTheCheck) {
     EXPECT_TRUE(none["ipd_m"].is_null());
     EXPECT_EQ(none["check"], "");
     EXPECT_EQ(none["check_frames"], 0);
+}
+
+// A decimal comma is refused with the number written with a point, in the launcher as by
+// `study run --var` (which refuses it too): "6,5" is never stored as 65 or 6.5 unseen.
+TEST_F(LauncherModelTest, ADecimalCommaIsRefusedWithTheNumberWrittenWithAPoint) {
+    write_text(protocols_ / "ipd.toml", demo_text_ + R"(
+[[variables]]
+name = "ipd_mm"
+type = "number"
+min = 50
+max = 80
+required = true
+)");
+    LauncherModel m(LauncherSettings{db_, protocols_, launcher_request_names()});
+    ASSERT_TRUE(m.select_protocol(protocols_ / "ipd.toml").ok());
+    m.set_participant_code("P01");
+    ASSERT_TRUE(m.set_variable("ipd_mm", "63,5").ok());
+    EXPECT_EQ(m.variables()[0].message,
+              "the 'ipd_mm' field: write 63.5 (the decimal point is '.'; a comma is not read as "
+              "one)");
+    EXPECT_FALSE(m.start_enabled());
+    // The command refuses the same text.
+    EXPECT_FALSE(study::check_variable_value(m.variables()[0].declaration, "63,5").ok());
+    ASSERT_TRUE(m.set_variable("ipd_mm", "63.5").ok());
+    EXPECT_EQ(m.variables()[0].message, "");
+    EXPECT_TRUE(m.start_enabled()) << m.start_message();
+    EXPECT_EQ(m.request().variables, std::vector<std::string>{"ipd_mm=63.5"});
+    // Not a number in any reading: the library's message, in the window's names.
+    ASSERT_TRUE(m.set_variable("ipd_mm", "6,5,1").ok());
+    EXPECT_TRUE(contains(m.variables()[0].message, "the 'ipd_mm' field: not a number"))
+        << m.variables()[0].message;
+}
+
+TEST_F(LauncherModelTest, NextParticipantClearsTheCodeAndFormAndKeepsTheProtocol) {
+    LauncherModel m = ready("vars.toml");
+    m.set_participant_code("P03");
+    ASSERT_TRUE(m.set_variable("age", "30").ok());
+    ASSERT_TRUE(m.set_variable("vision", "normal").ok());
+    m.set_session_number(1);
+    ASSERT_TRUE(m.go_to(LauncherStep::Headset).ok());
+    ASSERT_TRUE(m.next_participant().ok());
+    EXPECT_EQ(m.step(), LauncherStep::Participant);
+    EXPECT_EQ(m.participant_code(), "");
+    EXPECT_FALSE(m.session_number().has_value());
+    ASSERT_NE(m.protocol(), nullptr);
+    EXPECT_EQ(m.protocol_path(), protocols_ / "vars.toml");
+    for (const VariableField& field : m.variables())
+        EXPECT_EQ(field.text, "") << field.declaration.name;
+    EXPECT_FALSE(m.start_enabled());
+}
+
+TEST_F(LauncherModelTest, TheProtocolsFolderIsListedAgainWhenItChanges) {
+    const fs::path later = dir_ / "later";
+    LauncherModel m(LauncherSettings{db_, later});
+    EXPECT_TRUE(m.protocols().empty());
+    EXPECT_TRUE(contains(m.protocols_message(), "does not exist")) << m.protocols_message();
+    EXPECT_FALSE(m.rescan_protocols_if_changed());  // still missing: nothing new
+    fs::create_directory(later);
+    write_text(later / "demo.toml", demo_text_);
+    EXPECT_TRUE(m.rescan_protocols_if_changed());
+    ASSERT_EQ(m.protocols().size(), 1u);
+    EXPECT_TRUE(m.protocols()[0].valid) << m.protocols()[0].message;
+    EXPECT_EQ(m.protocols_message(), "");
+    EXPECT_FALSE(m.rescan_protocols_if_changed());
+    write_text(later / "x.toml", "name = \"x\"\nscenes = [\"beams\"]\n");  // saved meanwhile
+    EXPECT_TRUE(m.rescan_protocols_if_changed());
+    EXPECT_EQ(m.protocols().size(), 2u);
+    // A protocol kept outside the folder is chosen by its full path.
+    EXPECT_TRUE(m.select_protocol(protocols_ / "vars.toml").ok());
+    EXPECT_EQ(m.protocol_path(), protocols_ / "vars.toml");
+    EXPECT_FALSE(m.select_protocol(dir_ / "none.toml").ok());
+}
+
+TEST_F(LauncherModelTest, TheCommandLineHasEverySessionOptionShellQuoted) {
+    LauncherSettings settings{db_, protocols_};
+    settings.session_arguments = {"--detail", "test", "--sim-script", "/tmp/a b/it's.toml"};
+    LauncherModel m(settings);
+    ASSERT_TRUE(m.select_protocol(protocols_ / "demo.toml").ok());
+    m.set_participant_code("P01");
+    const std::vector<std::string> a = m.request().arguments();
+    ASSERT_GE(a.size(), 4u);
+    EXPECT_EQ(std::vector<std::string>(a.end() - 4, a.end()), settings.session_arguments);
+    EXPECT_EQ(shell_quoted("/tmp/a b/it's.toml"), "'/tmp/a b/it'\\''s.toml'");
+    EXPECT_EQ(shell_quoted("--var"), "--var");
+    EXPECT_EQ(shell_quoted("age=30"), "age=30");
+    EXPECT_EQ(shell_quoted(""), "''");
+    EXPECT_EQ(shell_command_line({"study", "run", "--var", "note=a b"}),
+              "monoplane study run --var 'note=a b'");
+}
+
+TEST_F(LauncherModelTest, StartIsDisabledWhenTheChosenHeadsetHasNoRuntime) {
+    LauncherModel m = ready("demo.toml");
+    m.set_participant_code("P01");
+    ASSERT_TRUE(m.set_headset("openxr").ok());
+    EXPECT_TRUE(m.start_enabled()) << m.start_message();  // not probed yet: the session says
+    HeadsetReport none;
+    none.message = "no OpenXR runtime is active";
+    m.set_headset_report(none);
+    EXPECT_FALSE(m.start_enabled());
+    EXPECT_TRUE(contains(m.start_message(), "no runtime for the openxr headset"))
+        << m.start_message();
+    EXPECT_TRUE(contains(m.start_message(), "no OpenXR runtime is active")) << m.start_message();
+    ASSERT_TRUE(m.set_headset("none").ok());
+    EXPECT_TRUE(m.start_enabled()) << m.start_message();
+}
+
+TEST_F(LauncherModelTest, TheLastDatabaseAndProtocolsFolderAreRemembered) {
+    const fs::path file = dir_ / "config" / "monoplane" / "lab.toml";
+    Result<LabConfig> none = read_lab_config(file);
+    ASSERT_TRUE(none.ok());
+    EXPECT_TRUE(none->db.empty());
+    ASSERT_TRUE(write_lab_config(file, LabConfig{db_, protocols_}).ok());
+    Result<LabConfig> read = read_lab_config(file);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    EXPECT_EQ(read->db, db_);
+    EXPECT_EQ(read->protocols, protocols_);
+    write_text(file, "db = [\n");
+    EXPECT_FALSE(read_lab_config(file).ok());
+    ::setenv("XDG_CONFIG_HOME", (dir_ / "config").c_str(), 1);
+    EXPECT_EQ(lab_config_file(), file);
+    ::unsetenv("XDG_CONFIG_HOME");
 }
 
 }  // namespace
