@@ -3,13 +3,15 @@
 # Does nothing when they are all present, so repeated runs are fast.
 set -euo pipefail
 
+# fonts-wqy-microhei: a CJK font for protocols in Chinese, Japanese or Korean (tests and
+# docs/protocols.md, "Languages"): 1.6 MB against fonts-noto-cjk's 57 MB download, Latin included.
 packages=(
   build-essential cmake ninja-build pkg-config lld
   libvulkan-dev glslc mesa-vulkan-drivers vulkan-validationlayers vulkan-tools
   libglm-dev libstb-dev libcli11-dev libtomlplusplus-dev libboost-math-dev
   libgtest-dev libgmock-dev libbenchmark-dev libsqlite3-dev libssl-dev
   libopenxr-dev libopenxr-loader1 libopenxr-utils openxr-layer-corevalidation libglfw3-dev libimgui-dev libx11-dev xvfb xauth xdotool
-  librsvg2-dev fonts-dejavu-core
+  librsvg2-dev fonts-dejavu-core libfreetype-dev fonts-wqy-microhei
   libtinygltf-dev nlohmann-json3-dev libmeshoptimizer-dev assimp-testmodels
   python3 python3-pandas r-base-core r-cran-jsonlite r-cran-dbi r-cran-rsqlite
   libeigen3-dev libnlopt-dev chromium

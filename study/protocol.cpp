@@ -25,19 +25,20 @@
 #include "common/toml/toml_keys.h"
 #include "common/toml/toml_problems.h"
 #include "study/condition.h"
+#include "study/protocol_font.h"
 #include "study/protocol_study_day_parse.h"
 #include "study/scene_files.h"
 
 namespace monoplane::study {
 namespace {
 
-constexpr std::array<std::string_view, 25> kTopLevelKeys = {
+constexpr std::array<std::string_view, 26> kTopLevelKeys = {
     "name", "scenes", "mono_planes", "alternatives", "order", "first_scene", "require_both_viewed",
     "practice_trials", "near", "far", "questionnaire", "render", "missed_frame_threshold", "auto",
     "procedure", "staircase",
     // A study day (protocol_study_day_parse.h).
     "sessions", "repetitions", "blocking", "text_height_deg", "instructions", "ready", "breaks",
-    "end", "variables"};
+    "end", "variables", "text"};
 static_assert(std::ranges::all_of(kStudyDayKeys, [](std::string_view key) {
     return std::ranges::find(kTopLevelKeys, key) != kTopLevelKeys.end();
 }));
@@ -571,7 +572,10 @@ Result<Protocol> load_protocol(const std::filesystem::path& path) {
         return Error{path.string() +
                      " is a SQLite database (a study database?), not a protocol: give the "
                      "protocol's .toml file"};
-    return parse_protocol(*text, path.string(), path.parent_path());
+    Result<Protocol> protocol = parse_protocol(*text, path.string(), path.parent_path());
+    MONOPLANE_TRY(protocol);
+    MONOPLANE_TRY(check_protocol_font(protocol.value(), path.parent_path()));
+    return protocol;
 }
 
 }  // namespace monoplane::study

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "text/font.h"
+
 namespace monoplane::study {
 
 // How the data trials of a constant-procedure session are grouped.
@@ -64,6 +66,10 @@ struct StudyDaySettings {
     std::vector<ParticipantVariable> variables;
     // The height of a capital letter on the screens, degrees of visual angle.
     double text_height_deg = 1.0;
+    // [text] font: the font file the screens and questionnaire are drawn with in the headset
+    // (docs/protocols.md, "Languages"); as written, until load_protocol resolves a relative
+    // path against the protocol file's folder.
+    std::string font = text::kDefaultFontPath;
 
     bool has_screens() const {
         return !instructions.empty() || ready || (breaks && breaks->enabled()) || end;

@@ -11,10 +11,14 @@
 #include <utility>
 #include <vector>
 
+#include "text/complex_scripts.h"
+#include "text/utf8.h"
+
 namespace monoplane::study {
 namespace {
 
 constexpr std::array<std::string_view, 1> kPageKeys = {"text"};
+constexpr std::array<std::string_view, 1> kTextKeys = {"font"};
 constexpr std::array<std::string_view, 4> kBreakKeys = {"every_trials", "between_blocks", "min_s",
                                                         "text"};
 constexpr std::array<std::string_view, 7> kVariableKeys = {"name",    "type",     "min", "max",
@@ -66,60 +70,34 @@ const toml::table* find_table(const TomlScope& root, std::string_view key,
     return table;
 }
 
-// The non-ASCII characters the headset's text panel draws as an ASCII look-alike (typographic
-// quotes, dashes, ellipsis, no-break and thin spaces, the multiplication sign; the list of
-// ascii_for in app/headset/text_panel.cpp); its font has printable ASCII only, and any other
-// character would reach the participant as '?'.
-constexpr std::array<char32_t, 22> kLookAlikes = {
-    0x2018, 0x2019, 0x201A, 0x201B, 0x2032, 0x201C, 0x201D, 0x201E, 0x2033, 0x00AB, 0x00BB,
-    0x2010, 0x2011, 0x2012, 0x2013, 0x2014, 0x2212, 0x2026, 0x00A0, 0x2009, 0x202F, 0x00D7};
-
-// The UTF-8 sequence at text[i]: its code point and length (0: not a valid sequence).
-std::pair<char32_t, std::size_t> decode_utf8(std::string_view text, std::size_t i) {
-    const auto lead = static_cast<unsigned char>(text[i]);
-    if (lead < 0x80) return {lead, 1};
-    const std::size_t size = (lead >> 5) == 0x6    ? 2
-                             : (lead >> 4) == 0xe  ? 3
-                             : (lead >> 3) == 0x1e ? 4
-                                                   : 0;
-    if (size == 0 || i + size > text.size()) return {0, 0};
-    char32_t code = lead & (0x7f >> size);
-    for (std::size_t k = 1; k < size; ++k) {
-        const auto next = static_cast<unsigned char>(text[i + k]);
-        if ((next & 0xc0) != 0x80) return {0, 0};
-        code = (code << 6) | (next & 0x3f);
-    }
-    return {code, size};
-}
-
-bool shown_in_headset(char32_t code) {
-    return (code >= 0x20 && code <= 0x7e) || code == '\n' || code == '\t' ||
-           std::ranges::find(kLookAlikes, code) != kLookAlikes.end();
-}
-
-// The problem with a screen's text, or nothing: blank, too long, or a character that the
-// headset cannot show (named with its position and the text before it, to find it).
+// The problem with a screen's text, or nothing: blank, too long, not UTF-8, a control
+// character, or one the headset cannot draw whatever the font (it draws one glyph per
+// character, left to right: no text shaping); named with its position and the text before it.
 std::optional<std::string> screen_text_problem(std::string_view text) {
     if (is_blank(text)) return "is empty; a screen needs text to read";
-    std::size_t characters = 0;
-    for (std::size_t i = 0; i < text.size(); ++characters) {
-        const auto [code, size] = decode_utf8(text, i);
-        if (size == 0 || !shown_in_headset(code)) {
-            std::size_t from = i > 12 ? i - 12 : 0;
-            while (from > 0 && (static_cast<unsigned char>(text[from]) & 0xc0) == 0x80) --from;
-            const std::string what = size == 0 || code < 0x20 || code == 0x7f
-                                         ? "a control character"
-                                         : in_quotes(text.substr(i, size));
-            return "character " + std::to_string(characters + 1) + " (" + what + ", after " +
-                   in_quotes(text.substr(from, i - from)) +
-                   ") cannot be shown in the headset: its font draws ASCII only (typographic "
-                   "quotes, dashes and ellipses become their ASCII look-alikes); rephrase it in "
-                   "ASCII";
-        }
-        i += size;
+    if (const std::optional<std::size_t> invalid = text::first_invalid_utf8(text)) {
+        return "is not UTF-8 text (byte " + std::to_string(*invalid + 1) +
+               "); save the protocol as UTF-8";
     }
-    if (characters > kMaxPageCharacters) {
-        return "has " + std::to_string(characters) + " characters; a page holds at most " +
+    const std::u32string characters = text::decode_utf8_lenient(text);
+    for (std::size_t i = 0; i < characters.size(); ++i) {
+        const char32_t c = characters[i];
+        const bool control = (c < 0x20 && c != U'\n' && c != U'\t') || (c >= 0x7F && c < 0xA0);
+        std::optional<std::string> reason = text::needs_shaping(c);
+        if (!control && !reason) continue;
+        const std::size_t from = i > 12 ? i - 12 : 0;
+        const std::string what =
+            control ? "a control character"
+                    : in_quotes(text::encode_utf8(c)) + " " + text::code_point_label(c);
+        return "character " + std::to_string(i + 1) + " (" + what + ", after " +
+               in_quotes(text::encode_utf8(characters.substr(from, i - from))) +
+               ") cannot be shown in the headset: " +
+               (control ? std::string("remove it")
+                        : "it is " + *reason +
+                              "; the headset draws one glyph per character, left to right");
+    }
+    if (characters.size() > kMaxPageCharacters) {
+        return "has " + std::to_string(characters.size()) + " characters; a page holds at most " +
                std::to_string(kMaxPageCharacters) + " (split it into pages)";
     }
     return std::nullopt;
@@ -534,6 +512,32 @@ void read_variables(const TomlScope& root, StudyDaySettings& day, TomlProblems& 
     }
 }
 
+// [text]: the font the screens are drawn with. Whether it opens and has the screens'
+// characters is checked when the file is loaded (protocol_font.h).
+void read_text(const TomlScope& root, StudyDaySettings& day, TomlProblems& problems) {
+    const toml::table* table =
+        find_table(root, "text", "a table ([text] with font = \"/path/to/font.ttf\")", problems);
+    if (table == nullptr) return;
+    const TomlScope scope{*table, "text"};
+    report_unknown_keys(scope, kTextKeys, problems);
+    const toml::node* node = table->get("font");
+    if (node == nullptr) return;
+    const auto* font = node->as_string();
+    if (font == nullptr) {
+        report_wrong_type(*node, "text.font",
+                          "a string, the path of a TrueType or OpenType font file", problems);
+        return;
+    }
+    if (is_blank(font->get())) {
+        problems.add(node->source(), toml_key_prefix("text.font") +
+                                         "is empty; give the path of a font file, or leave the "
+                                         "key out for the default (" +
+                                         std::string(text::kDefaultFontPath) + ")");
+        return;
+    }
+    day.font = font->get();
+}
+
 }  // namespace
 
 void read_study_day(const TomlScope& root, Procedure procedure, StudyDaySettings& day,
@@ -545,6 +549,7 @@ void read_study_day(const TomlScope& root, Procedure procedure, StudyDaySettings
     read_breaks(root, procedure, day, problems);
     read_single_page(root, "end", day.end, problems);
     read_variables(root, day, problems);
+    read_text(root, day, problems);
 }
 
 void check_break_interval(const TomlScope& root, const StudyDaySettings& day,

@@ -16,9 +16,9 @@
 namespace monoplane::study {
 
 // The study-day keys of a protocol's top level (for its list of known keys).
-inline constexpr std::array<std::string_view, 9> kStudyDayKeys = {
-    "sessions", "repetitions", "blocking", "text_height_deg", "instructions",
-    "ready",    "breaks",      "end",      "variables"};
+inline constexpr std::array<std::string_view, 10> kStudyDayKeys = {
+    "sessions", "repetitions", "blocking",  "text_height_deg", "instructions",
+    "ready",    "breaks",      "end",       "variables",       "text"};
 
 // Limits the readers enforce; the fuzz harness and the tests check accepted protocols against
 // them.
@@ -39,10 +39,11 @@ inline constexpr std::size_t kMaxVariableHelp = 200;
 // and interleave their scenes, so repetitions other than 1, blocking and between-block breaks are
 // refused with one. Reports, located: wrong types; sessions outside 1..20, repetitions outside
 // 1..50, an unknown blocking, text_height_deg outside [0.5, 10]; unknown keys in every table;
-// a page without text, blank, longer than 2000 characters or with a character the headset's font
-// cannot show (it draws printable ASCII, line breaks, tabs, and typographic quotes, dashes,
-// ellipses and spaces as their ASCII look-alikes; a 'ü' would be a '?'); more than 50
-// instruction pages;
+// a page without text, blank, longer than 2000 characters, not UTF-8, with a control character
+// or with one that needs text shaping (text/complex_scripts.h: Arabic, Hebrew, the Indic
+// scripts, combining marks; whether the font has each character is checked when the file is
+// loaded, protocol_font.h); more than 50 instruction pages; [text] with a font that is not a
+// non-empty string;
 // [breaks] with neither every_trials > 0 nor between_blocks = true, every_trials outside
 // 0..1000, min_s outside [0, 1800], between_blocks with blocking = "none"; variables without a
 // name or type, a name that is not [a-z][a-z0-9_]* of at most 32 characters or is declared

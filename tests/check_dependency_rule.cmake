@@ -24,6 +24,8 @@ check(renderer/plan "${gpu}|scenes/|hmd/|study/|analysis/")
 check(renderer/quality "${gpu}|scenes/|hmd/|study/|analysis/")
 check(charts "${gpu}|renderer/|scenes/|hmd/|study/|analysis/")
 check(study "${gpu}|renderer/|analysis/|hmd/|scenes/")
+# text/ (fonts, line breaking, glyph coverage) serves the study's checks and the headset alike.
+check(text "${gpu}|renderer/|scenes/|hmd/|study/|analysis/")
 check(analysis "${gpu}|renderer/|hmd/|scenes/|study/")
 if(violations)
   list(JOIN violations "\n  " text)

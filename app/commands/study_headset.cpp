@@ -168,11 +168,12 @@ class HeadsetLoop {
           compositor_(ctx),
           compositor_frames_(ctx),
           frame_log_(store, session_id),
-          pages_(headset::TextPanelOptions{protocol.day.text_height_deg}),
+          pages_(headset::TextPanelOptions{.text_height_deg = protocol.day.text_height_deg,
+                                           .font = protocol.day.font}),
           window_answers_(protocol.questionnaire.items.size(), 0) {
         headset::TextStyle label_style;
-        label_style.scale = 2;
-        label_style.padding = 2;
+        label_style.capital_px = 14.0;
+        label_style.padding_px = 4;
         compositor_.set_overlay("label1", headset::render_text({"1"}, label_style));
         compositor_.set_overlay("label2", headset::render_text({"2"}, label_style));
         compositor_.set_overlay("paused", headset::render_text({"Paused"}, {}));
@@ -498,7 +499,8 @@ class HeadsetLoop {
         if (!compositor_.has_overlay(key)) {
             compositor_.set_overlay(
                 key, headset::render_text(
-                         questionnaire_lines(protocol_, screen.question, screen.selection), {}));
+                         questionnaire_lines(protocol_, screen.question, screen.selection),
+                         headset::TextStyle{.font = protocol_.day.font}));
         }
         return {{key, kPanelPlacement}};
     }

@@ -35,7 +35,7 @@ Phase window_phase(const study::LiveScreen& screen) {
 
 void mirror_page(const study::LiveScreen& screen, window::ExperimenterView& view) {
     const bool page = is_page_screen(screen.kind);
-    view.page_text = page && screen.text ? headset::headset_ascii(*screen.text) : std::string();
+    view.page_text = page && screen.text ? headset::shown_text(*screen.text) : std::string();
     view.page = page ? screen.page : 0;
     view.page_count = page ? screen.page_count : 0;
     view.break_countdown = screen.kind == ScreenKind::Break && screen.break_remaining_ns > 0

@@ -1,6 +1,7 @@
 // Text for the headset (the trial's label, the questionnaire, pages of text): lines rasterised on
-// the CPU into an RGBA image with stb_easy_font's quads, then shown by blitting that image into
-// the eyes. Made only when the text changes, so it costs nothing per frame.
+// the CPU with FreeType (text/glyph_raster.h) into an RGBA image, the ink blended over the
+// background by each pixel's glyph coverage, then shown by blitting that image into the eyes.
+// Made only when the text changes, so it costs nothing per frame.
 #pragma once
 
 #include <array>
@@ -9,31 +10,33 @@
 #include <vector>
 
 #include "renderer/modes/view_setup.h"
+#include "text/font.h"
+#include "text/glyph_raster.h"
 
 namespace monoplane::headset {
 
 using Rgba8 = std::array<std::uint8_t, 4>;
 
-// stb_easy_font's metrics, in font units: a capital letter's height and the line spacing.
-constexpr int kCapitalUnits = 7;
-constexpr int kLineUnits = 12;
-
 struct TextStyle {
-    // Pixels per font unit. Fractional scales serve text sized in degrees of visual angle, drawn
-    // 1:1 into the eye (a stroke is then 1 or 2 pixels wide, as the display's resolution allows).
-    double scale = 4.0;
-    int padding = 3;  // font units of background around the text
+    // The font file (a protocol's [text] font); the default draws Latin, Greek and Cyrillic.
+    std::string font = text::kDefaultFontPath;
+    // The height of a capital letter (the font's cap height), pixels. Fractional sizes serve
+    // text sized in degrees of visual angle, drawn 1:1 into the eye.
+    double capital_px = 28.0;
+    int padding_px = 12;  // background around the text
     Rgba8 ink{220, 220, 220, 255};
     Rgba8 background{40, 40, 40, 255};
 };
 
-// Lines top to bottom, left-aligned; the image is just large enough: round(units * scale) pixels
-// each way for the text's width and height in font units plus the padding. Characters outside
-// printable ASCII are drawn as '?'.
-modes::RgbaImage render_text(const std::vector<std::string>& lines, const TextStyle& style);
+// The style's font, opened once per process; the default font if the style's cannot be opened
+// (a protocol's font was checked when it was loaded), an exception if neither opens.
+const text::Font& style_font(const TextStyle& style);
 
-// A line's width in font units (what render_text makes it), characters outside printable ASCII
-// counted as '?'.
-int text_width_units(const std::string& line);
+// Where render_text puts the lines: the font at capital_px / cap height pixels per em.
+text::LineGeometry text_geometry(const TextStyle& style);
+
+// Lines top to bottom, left-aligned (text/glyph_raster.h's layout): each pixel is the background
+// blended toward the ink by its coverage c, background + (ink - background) * c / 255, rounded.
+modes::RgbaImage render_text(const std::vector<std::string>& lines, const TextStyle& style);
 
 }  // namespace monoplane::headset

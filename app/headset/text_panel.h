@@ -1,6 +1,7 @@
 // Pages of text in the headset (instructions, breaks, the end of a session): the text wrapped to
-// a panel straight ahead, its letters sized in degrees of visual angle at the headset's
-// resolution (docs/headsets.md, "What the participant sees"). Pure: no GPU.
+// a panel straight ahead (text/line_break.h: at spaces, and between CJK characters), its capital
+// letters sized in degrees of visual angle at the headset's resolution (docs/headsets.md, "What
+// the participant sees"), in the protocol's font. Pure: no GPU.
 //
 // The panel lies on the eyes' image plane (tangent space, at infinity like every overlay): a
 // capital letter straight ahead subtends the asked angle; toward the panel's edges a flat panel's
@@ -16,18 +17,13 @@
 #include "app/headset/eye_compositor.h"
 #include "app/headset/overlay_text.h"
 #include "rig/tangents.h"
+#include "text/font.h"
 
 namespace monoplane::headset {
 
-// The text as the headset's ASCII font can draw it: typographic punctuation (curly quotes,
-// dashes, ellipsis, no-break space) as its ASCII look-alike, any other non-ASCII character as
-// one '?', tabs as spaces, carriage returns dropped. Line breaks are kept.
-std::string headset_ascii(std::string_view utf8);
-
-// `text` broken into lines no wider than max_units font units (text_width_units): at spaces, so
-// words stay whole; explicit line breaks are kept, empty lines too. Only a word wider than a whole
-// line is split, at the last character that fits.
-std::vector<std::string> wrap_text(const std::string& text, int max_units);
+// The text as the headset draws it: tabs as spaces, carriage returns dropped, bytes that are not
+// UTF-8 as U+FFFD; line breaks kept. (The experimenter window mirrors pages in this form.)
+std::string shown_text(std::string_view utf8);
 
 // Pixels per degree of visual angle straight ahead, vertically, in an eye image of this frustum
 // and size: the rows a degree centred on tangent 0 spans (the image spans the tangents linearly).
@@ -41,11 +37,12 @@ struct TextPanelOptions {
     double text_height_deg = 1.0;  // the height of a capital letter, degrees of visual angle
     double max_width_deg = 40.0;   // the panel's widest, centred straight ahead
     double top_tan = 0.18;         // the panel's upper edge (tan 10 degrees up); it grows down
+    std::string font = text::kDefaultFontPath;  // the protocol's [text] font
 };
 
 struct TextPanel {
     std::vector<std::string> lines;  // wrapped, the footer's after a blank line
-    TextStyle style;                 // style.scale: the eye's pixels per font unit
+    TextStyle style;                 // style.capital_px: a capital's height in the eye's pixels
     OverlayPlacement placement;      // for EyeCompositor, from the rasterised image's size
     // The angle a capital letter subtends straight ahead, degrees: text_height_deg, unless shrunk.
     double capital_deg = 0.0;

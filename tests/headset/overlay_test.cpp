@@ -45,45 +45,52 @@ TEST(OverlayRect, ClampedToTheImage) {
     EXPECT_EQ(huge.y1, 1512);
 }
 
-std::size_t ink_pixels(const modes::RgbaImage& image, const Rgba8& ink) {
+std::size_t inked_pixels(const modes::RgbaImage& image, const Rgba8& background) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < image.pixels.size(); i += 4) {
-        n += image.pixels[i] == ink[0] && image.pixels[i + 1] == ink[1] &&
-             image.pixels[i + 2] == ink[2];
+        n += image.pixels[i] != background[0] || image.pixels[i + 1] != background[1] ||
+             image.pixels[i + 2] != background[2];
     }
     return n;
 }
 
-TEST(RenderText, SizeFollowsTheLinesAndScale) {
+TEST(RenderText, SizeFollowsTheLinesAndTheFontsMetrics) {
+    // DejaVu Sans (its head, hhea, glyf and hmtx tables): 2048 units per em, 'H' 1493 high,
+    // lines 1901 + 483 apart, '1' advances 1303. A capital of 1493 / 2048 * 20 pixels sets the
+    // font at 20 pixels per em: lines round(2384 / 2048 * 20) = round(23.28) = 23 pixels apart,
+    // '1' ceil(1303 / 2048 * 20) = ceil(12.72) = 13 pixels wide.
     TextStyle style;
-    style.scale = 1;
-    style.padding = 2;
+    style.capital_px = 1493.0 / 2048.0 * 20.0;
+    style.padding_px = 2;
     const modes::RgbaImage one = render_text({"1"}, style);
-    // One line is 12 font units tall (stb_easy_font's spacing) plus the padding above and below.
-    EXPECT_EQ(one.height, 12u + 4u);
+    EXPECT_EQ(one.height, 23u + 4u);
+    EXPECT_EQ(one.width, 13u + 4u);
     const modes::RgbaImage two_lines = render_text({"1", "1"}, style);
-    EXPECT_EQ(two_lines.height, 24u + 4u);
+    EXPECT_EQ(two_lines.height, 46u + 4u);
     EXPECT_EQ(two_lines.width, one.width);
-    style.scale = 3;
-    const modes::RgbaImage scaled = render_text({"1"}, style);
-    EXPECT_EQ(scaled.width, one.width * 3);
-    EXPECT_EQ(scaled.height, one.height * 3);
-    EXPECT_GT(render_text({"1234"}, {}).width, render_text({"1"}, {}).width);
+    // "11": 2 * 12.72 = 25.45 -> 26 pixels.
+    EXPECT_EQ(render_text({"11"}, style).width, 26u + 4u);
+    style.capital_px *= 3.0;  // 60 pixels per em: lines round(69.84) = 70 apart
+    EXPECT_EQ(render_text({"1"}, style).height, 70u + 4u);
 }
 
 TEST(RenderText, InkOnBackgroundAndDistinctGlyphs) {
     const TextStyle style;
     const modes::RgbaImage one = render_text({"1"}, style);
     const modes::RgbaImage two = render_text({"2"}, style);
-    const std::size_t ink1 = ink_pixels(one, style.ink);
+    const std::size_t ink1 = inked_pixels(one, style.background);
     EXPECT_GT(ink1, 0u);
     EXPECT_LT(ink1, one.pixels.size() / 4 / 2);  // mostly background
-    // The corner is background (the padding).
+    // The corner is background (the padding); somewhere inside a stem is fully ink.
     EXPECT_EQ(one.pixels[0], style.background[0]);
+    bool full_ink = false;
+    for (std::size_t i = 0; i < one.pixels.size(); i += 4)
+        full_ink |= one.pixels[i] == style.ink[0];
+    EXPECT_TRUE(full_ink);
     // "2" has more strokes than "1".
-    EXPECT_GT(ink_pixels(two, style.ink), ink1);
-    // Unprintable characters become '?', not nothing.
-    EXPECT_GT(ink_pixels(render_text({"\x01"}, style), style.ink), 0u);
+    EXPECT_GT(inked_pixels(two, style.background), ink1);
+    // A character the font lacks is its missing-glyph box, not nothing.
+    EXPECT_GT(inked_pixels(render_text({"\u4e2d"}, style), style.background), 0u);
 }
 
 TEST(ControllerBindings, EveryProfileBindsEveryControl) {

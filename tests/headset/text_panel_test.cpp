@@ -11,83 +11,27 @@
 #include "app/headset/overlay_text.h"
 #include "app/headset/text_panel.h"
 #include "hmd/profile.h"
+#include "tests/text/freetype_reference.h"
+#include "text/line_break.h"
 
 namespace monoplane::headset {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::vector<std::string> words_of(const std::string& text) {
-    std::istringstream in(text);
-    std::vector<std::string> words;
-    for (std::string w; in >> w;) words.push_back(w);
-    return words;
-}
-
-std::string joined(const std::vector<std::string>& lines) {
-    std::string text;
-    for (const std::string& line : lines) text += line + "\n";
-    return text;
-}
-
 const std::string kParagraph =
     "You will see two versions of each scene, one after the other. Press SWITCH to change between "
     "them as often as you like, then press CONFIRM to choose the one that looked more natural. "
     "There are no right or wrong answers; please answer as you see it.";
 
-TEST(HeadsetAscii, TypographyBecomesItsAsciiLookAlike) {
-    EXPECT_EQ(headset_ascii("\xe2\x80\x9cHi\xe2\x80\x9d \xe2\x80\x94 it\xe2\x80\x99s\xe2\x80\xa6"),
-              "\"Hi\" - it's...");
-    EXPECT_EQ(headset_ascii("caf\xc3\xa9\tend\r\n"), "caf? end\n");  // one '?' per character
-    EXPECT_EQ(headset_ascii("a\xff"
-                            "b"),
-              "a?b");  // not UTF-8: '?' per byte
-    EXPECT_EQ(headset_ascii("plain ASCII"), "plain ASCII");
-}
-
-TEST(WrapText, NoLineWiderThanAskedAndWordsKeptWhole) {
-    for (const int max_units : {60, 120, 250, 400}) {
-        const std::vector<std::string> lines = wrap_text(kParagraph, max_units);
-        ASSERT_GT(lines.size(), 1u);
-        for (const std::string& line : lines) {
-            EXPECT_LE(text_width_units(line), max_units) << line;
-            EXPECT_FALSE(line.empty());
-            EXPECT_NE(line.front(), ' ');
-            EXPECT_NE(line.back(), ' ');
-        }
-        // Every word whole and in order: the lines' words are the paragraph's.
-        EXPECT_EQ(words_of(joined(lines)), words_of(kParagraph)) << max_units;
-        // Greedy: a line's next word would not have fitted on it.
-        for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
-            const std::string next = words_of(lines[i + 1]).front();
-            EXPECT_GT(text_width_units(lines[i] + " " + next), max_units);
-        }
-    }
-}
-
-TEST(WrapText, ExplicitLineBreaksAndEmptyLinesAreKept) {
-    EXPECT_EQ(wrap_text("First line.\n\nThird line.", 1000),
-              (std::vector<std::string>{"First line.", "", "Third line."}));
-    EXPECT_EQ(wrap_text("", 1000), std::vector<std::string>{""});
-    EXPECT_EQ(wrap_text("end\n", 1000), (std::vector<std::string>{"end", ""}));
-    // A break in the middle of a long paragraph starts a new line there.
-    const std::vector<std::string> lines = wrap_text("aaa bbb\nccc ddd eee fff", 1000);
-    EXPECT_EQ(lines, (std::vector<std::string>{"aaa bbb", "ccc ddd eee fff"}));
-}
-
-TEST(WrapText, OnlyAWordWiderThanALineIsSplit) {
-    const std::string word(60, 'W');
-    const int max_units = text_width_units("WWWWWWWWWW");  // ten of them fit
-    const std::vector<std::string> lines = wrap_text("a " + word + " b", max_units);
-    std::string rejoined;
-    for (const std::string& line : lines) {
-        EXPECT_LE(text_width_units(line), max_units) << line;
-        rejoined += line;
-    }
-    EXPECT_EQ(lines.front(), "a");
-    EXPECT_EQ(rejoined, "a" + word + "b");
-    // Even a line narrower than one character makes progress, a character a line.
-    EXPECT_EQ(wrap_text("abc", 1).size(), 3u);
+TEST(ShownText, TabsAsSpacesCarriageReturnsDroppedInvalidBytesReplaced) {
+    EXPECT_EQ(shown_text("caf\xc3\xa9\tend\r\n"), "caf\xc3\xa9 end\n");
+    EXPECT_EQ(shown_text("a\xff"
+                         "b"),
+              "a\xef\xbf\xbd"
+              "b");  // not UTF-8: U+FFFD per byte
+    EXPECT_EQ(shown_text("\u201cHi\u201d \u2014 \u4e2d\u6587"),
+              "\u201cHi\u201d \u2014 \u4e2d\u6587");
 }
 
 class VivePanel : public ::testing::Test {
@@ -115,8 +59,34 @@ class VivePanel : public ::testing::Test {
         return std::acos(std::min(1.0, dot / (na * nb))) * 180.0 / kPi;
     }
 
+    // The panel's image is FreeType's rendering of its lines, blended ink over background:
+    // pixel for pixel, with no difference tolerated.
+    void expect_reference_image(const modes::RgbaImage& image, const TextPanel& panel) {
+        expect_reference_image(image, panel, reference_);
+    }
+    static void expect_reference_image(const modes::RgbaImage& image, const TextPanel& panel,
+                                       testing::FreeTypeReference& reference) {
+        const double em_px = panel.style.capital_px / reference.cap_height_em();
+        const testing::FreeTypeReference::Image expected =
+            reference.render(panel.lines, em_px, panel.style.padding_px);
+        ASSERT_EQ(image.width, static_cast<std::uint32_t>(expected.width));
+        ASSERT_EQ(image.height, static_cast<std::uint32_t>(expected.height));
+        std::size_t differing = 0;
+        for (std::size_t p = 0; p < expected.coverage.size(); ++p) {
+            for (std::size_t k = 0; k < 4; ++k) {
+                const double from = panel.style.background[k];
+                const double to = panel.style.ink[k];
+                const auto want = static_cast<std::uint8_t>(
+                    std::lround(from + (to - from) * expected.coverage[p] / 255.0));
+                differing += image.pixels[p * 4 + k] != want;
+            }
+        }
+        EXPECT_EQ(differing, 0u);
+    }
+
     std::array<rig::Tangents, 2> eyes_;
     vk::Extent2D extent_;
+    testing::FreeTypeReference reference_{testing::kDejaVuSans};
 };
 
 TEST_F(VivePanel, PixelsPerDegreeStraightAhead) {
@@ -141,9 +111,14 @@ TEST_F(VivePanel, CapitalsSubtendTheAskedHeightStraightAhead) {
         // pixels are not quite square in tangent units).
         EXPECT_EQ(rect.y1 - rect.y0, static_cast<int>(image.height));
         EXPECT_NEAR(rect.x1 - rect.x0, static_cast<int>(image.width), 1);
-        // A capital is 7 font units: `degrees` times 8.998 pixels of the eye.
-        const double capital_px = kCapitalUnits * panel.style.scale;
-        EXPECT_NEAR(capital_px, degrees * n, 0.01);
+        // A capital letter is `degrees` times 8.998 pixels of the eye; the font is drawn at
+        // that over its cap height (DejaVu Sans: 'H' is 1493 of 2048 units), to 1/64 pixel.
+        const double capital_px = panel.style.capital_px;
+        EXPECT_NEAR(capital_px, degrees * n, 0.001);  // n from the profile's tangents to 6 digits
+        const double em_px = capital_px / reference_.cap_height_em();
+        EXPECT_NEAR(text_geometry(panel.style).em_px, em_px, 1.0 / 128.0);
+        // What the headset draws is FreeType's rasterisation of the lines at that size.
+        expect_reference_image(image, panel);
         EXPECT_FALSE(panel.shrunk);
         EXPECT_DOUBLE_EQ(panel.capital_deg, degrees);
         // Centred straight ahead (tangent 0: column 1344 * 1.391937 / 2.639346, row
@@ -191,8 +166,11 @@ TEST_F(VivePanel, ALongPageGrowsDownwardsAndStaysInView) {
     EXPECT_GT(l.x0, 0);
     EXPECT_LT(l.x1, static_cast<int>(extent_.width));
     EXPECT_LT(l.y1, static_cast<int>(extent_.height));
+    const double em_px = long_page.style.capital_px / reference_.cap_height_em();
     for (const std::string& line : long_page.lines) {
-        EXPECT_LE(text_width_units(line) * long_page.style.scale, l.x1 - l.x0) << line;
+        double advances = 0.0;  // FreeType's own advances of the line
+        for (const char32_t c : testing::utf32(line)) advances += reference_.advance_em(c) * em_px;
+        EXPECT_LE(advances + 2 * long_page.style.padding_px, l.x1 - l.x0 + 1) << line;
     }
 }
 
@@ -208,6 +186,48 @@ TEST_F(VivePanel, TextTooLongForTheViewIsDrawnSmallerAndSaysSo) {
     EXPECT_GT(r.y0, 0);
     EXPECT_LT(r.y1, static_cast<int>(extent_.height));
     EXPECT_EQ(r.y1 - r.y0, static_cast<int>(image.height));
+}
+
+// Pages in the participant's language: a German page in the default font and a Chinese one in
+// a CJK font, wrapped to the Vive's panel and drawn as FreeType draws them.
+TEST_F(VivePanel, GermanAndChinesePagesAreFreeTypesGlyphs) {
+    const std::string german =
+        "Dr\u00fccken Sie SWITCH, um zwischen Version 1 und Version 2 zu wechseln. Wechseln Sie "
+        "so oft Sie m\u00f6chten und lassen Sie sich Zeit: Es gibt kein Zeitlimit. Gr\u00f6\u00dfe "
+        "und Schl\u00fcssel, \u00c4pfel und \u00d6l.";
+    TextPanelOptions options;
+    const TextPanel de = layout_text_panel(german, {"Page 2 of 3 - CONFIRM: next, SWITCH: back"},
+                                           eyes_, extent_, options);
+    EXPECT_GT(de.lines.size(), 3u);
+    expect_reference_image(render_text(de.lines, de.style), de);
+    testing::FreeTypeReference wqy(testing::kWqyMicroHei);
+    if (!wqy.ok()) GTEST_SKIP() << testing::kWqyMicroHei << " missing (fonts-wqy-microhei)";
+    const std::string chinese =
+        "\u6bcf\u4e2a\u573a\u666f\u90fd\u4f1a\u4ee5\u4e24\u4e2a\u7248\u672c\u663e\u793a"
+        "\u3002\u6309 SWITCH \u952e\u5728\u4e24\u4e2a\u7248\u672c\u4e4b\u95f4\u5207\u6362"
+        "\uff0c\u6b21\u6570\u4e0d\u9650\u3002\u6309 CONFIRM \u952e\u9009\u62e9\u5f53\u524d"
+        "\u663e\u793a\u7684\u7248\u672c\u3002\u7b2c\u4e00\u6b21\u8bd5\u9a8c\u662f\u7ec3"
+        "\u4e60\uff08\u4e0d\u8ba1\u5165\u7ed3\u679c\uff09\u3002";
+    options.font = testing::kWqyMicroHei;
+    options.max_width_deg = 20.0;  // narrow: several lines without a space to break at
+    const TextPanel zh = layout_text_panel(chinese, {}, eyes_, extent_, options);
+    ASSERT_GT(zh.lines.size(), 2u);
+    for (std::size_t i = 1; i < zh.lines.size(); ++i) {
+        const char32_t first = testing::utf32(zh.lines[i]).front();
+        EXPECT_EQ(std::u32string(U"\u3002\uff0c\uff09").find(first), std::u32string::npos)
+            << zh.lines[i];
+    }
+    // Every character kept (spaces at a break are dropped).
+    const auto without_spaces = [](std::string text) {
+        std::erase(text, ' ');
+        return text;
+    };
+    std::string rejoined;
+    for (const std::string& line : zh.lines) rejoined += line;
+    EXPECT_EQ(without_spaces(rejoined), without_spaces(chinese));
+    // A capital letter is as high as in the Latin font: the sizing rule holds for every font.
+    EXPECT_NEAR(zh.style.capital_px, de.style.capital_px, 1e-9);
+    expect_reference_image(render_text(zh.lines, zh.style), zh, wqy);
 }
 
 }  // namespace

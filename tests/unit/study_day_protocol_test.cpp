@@ -154,7 +154,23 @@ alternatives = ["stereo", "hybrid"]
     EXPECT_EQ(p->trials_per_session(), 2u);
 }
 
-// The headset draws typographic punctuation as ASCII look-alikes and tabs as spaces: accepted.
+// Pages in the participant's language: Latin with diacritics, Greek, Cyrillic and CJK parse
+// (whether the font draws them is load_protocol's check, study_protocol_font_test).
+TEST(StudyDayProtocol, PagesInOtherLanguagesAreAccepted) {
+    for (const std::string page :
+         {"Dr\u00fccken Sie SCHALTER, um zu wechseln. Gr\u00fc\u00dfe!",
+          "\u03a0\u03b1\u03c4\u03ae\u03c3\u03c4\u03b5 \u0395\u039d\u0391\u039b\u039b\u0391\u0393\u0397",
+          "\u041d\u0430\u0436\u043c\u0438\u0442\u0435 \u041f\u0415\u0420\u0415\u041a\u041b",
+          "\u8bf7\u6309\u786e\u8ba4\u952e\u5f00\u59cb\u3002"}) {
+        const Result<Protocol> p = parse_protocol(
+            replaced(kDayProtocol, "text = \"Page one.\"", "text = \"" + page + "\""), "day.toml");
+        ASSERT_TRUE(p.ok()) << p.error().message;
+        EXPECT_EQ(p->day.instructions[0].text, page);
+        EXPECT_EQ(p->day.font, "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf");  // the default
+    }
+}
+
+// Typographic punctuation and tabs: accepted, as written.
 TEST(StudyDayProtocol, TypographicPunctuationIsAccepted) {
     const std::string page = "\u201cSWITCH\u201d \u2013 compare\u2026\tthen CONFIRM";
     const Result<Protocol> p = parse_protocol(
@@ -333,11 +349,35 @@ const DayCase kDayCases[] = {
      "text = \"Page one.\"",
      kLongPage,
      {"day.toml:11:", "'instructions.text'", "2001 characters", "at most 2000"}},
-    {"page not ASCII",
+    {"page in Hebrew",
      "text = \"Page one.\"",
-     "text = \"Bitte dr\u00fccken Sie\"",
-     {"day.toml:11:8: key 'instructions.text': character 9 ('\xc3\xbc', after 'Bitte dr') cannot "
-      "be shown in the headset: its font draws ASCII only"}},
+     "text = \"Press \u05e9\u05dc\u05d5\u05dd\"",
+     {"day.toml:11:8: key 'instructions.text': character 7 ('\xd7\xa9' U+05E9, after 'Press ') "
+      "cannot be shown in the headset: it is Hebrew script, which needs shaping and "
+      "right-to-left layout; the headset draws one glyph per character, left to right"}},
+    {"page in Devanagari",
+     "text = \"Page one.\"",
+     "text = \"\u0928\u092e\u0938\u094d\u0924\u0947\"",
+     {"day.toml:11:8: key 'instructions.text': character 1 ('\xe0\xa4\xa8' U+0928, after '') "
+      "cannot be shown in the headset: it is Devanagari script, which needs shaping (letters "
+      "change form and order)"}},
+    {"page with a combining mark",
+     "text = \"Page one.\"",
+     "text = \"Caf\u0065\u0301\"",
+     {"day.toml:11:8:", "character 5 ('\xcc\x81' U+0301, after 'Cafe')",
+      "a combining mark: write the precomposed letter instead"}},
+    {"text font not a string",
+     "text_height_deg = 1.5",
+     "text_height_deg = 1.5\n[text]\nfont = 3",
+     {"'text.font'", "the path of a TrueType or OpenType font file", "integer"}},
+    {"text font empty",
+     "text_height_deg = 1.5",
+     "text_height_deg = 1.5\n[text]\nfont = \"\"",
+     {"key 'text.font': is empty; give the path of a font file"}},
+    {"text with an unknown key",
+     "text_height_deg = 1.5",
+     "text_height_deg = 1.5\n[text]\nfonts = \"a.ttf\"",
+     {"key 'text.fonts': unknown key (did you mean 'text.font'?)"}},
     {"page with a control character",
      "text = \"Page one.\"",
      "text = \"Page\\rone.\"",
@@ -554,6 +594,7 @@ TEST(StudyDayProtocol, TheReferenceDocumentsEveryKeyTheParserKnows) {
         {"breaks", base + "[breaks]\nevery_trials = 1" + junk},
         {"end", base + "[end]\ntext = \"a\"" + junk},
         {"variables", base + "[[variables]]\nname = \"a\"\ntype = \"text\"" + junk},
+        {"text", base + "[text]" + junk},
     };
     std::size_t count = 0;
     for (const auto& [table, text] : tables) {

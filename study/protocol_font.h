@@ -1,0 +1,28 @@
+// The font a protocol's screens are drawn with ([text] font, docs/protocols.md "Languages"):
+// the headset draws each character with it, so a character the font lacks would reach the
+// participant as an empty box. Checked when a protocol file is loaded (protocol check, study
+// run, the launcher), not when a session's stored protocol is read back: the file was checked
+// on the machine that ran the session, and reading results needs no fonts.
+#pragma once
+
+#include <filesystem>
+
+#include "common/result.h"
+#include "study/protocol.h"
+
+namespace monoplane::study {
+
+// The characters of the headset's own prompts and counters ("Press CONFIRM to begin", "Page 1
+// of 2", "Break: 0:30", the questionnaire's scale): every font a protocol names must draw them.
+inline constexpr std::string_view kPromptCharacters =
+    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789 :/.,()[]-=";
+
+// Resolves protocol.day.font (a relative path against `folder`, the protocol file's) and checks
+// that the font opens and draws every character of the pages ([[instructions]], [ready],
+// [breaks], [end]), the questionnaire's items and kPromptCharacters. Each missing character is
+// one located problem "FILE:LINE:COL: key 'K': 'ä' (U+00E4) is not in the font ..." at the line
+// where it is written; a questionnaire item that needs text shaping is refused too (pages are
+// refused so when parsed). May be called on a protocol parse_protocol accepted.
+Result<void> check_protocol_font(Protocol& protocol, const std::filesystem::path& folder);
+
+}  // namespace monoplane::study
