@@ -6,6 +6,7 @@
 #include "app/commands/commands.h"
 #include "app/commands/runtime_lost.h"
 #include "app/commands/study_options.h"
+#include "app/commands/study_probe_command.h"
 
 namespace monoplane::app {
 namespace {
@@ -196,6 +197,7 @@ void add_study_command(CLI::App& root, const GlobalOptions& global) {
     add_list_command(study, options);
     add_note_command(study, options);
     add_migrate_command(study, options);
+    add_study_probe_command(study, global);
 }
 
 }  // namespace monoplane::app

@@ -6,16 +6,21 @@
 //
 // What is rendered: every scene of the protocol in each of its two alternatives at its nearest
 // mono plane (hybrid's most expensive m: the most content drawn per eye), seen from the scene's
-// seat with the HMD profile's frusta, IPD and cant. Condition by condition, one warm-up frame
-// (pipelines, the scene's shadow map, TAA's first frame) and then frames_per_condition measured
-// ones; a later round adds the remaining measured frames only while the time budget lasts.
+// seat with the HMD profile's frusta, IPD and cant; the reference alternative (the protocol's
+// first, usually the dearer) of every scene before the other. Condition by condition, one
+// warm-up frame (pipelines, the scene's shadow map, TAA's first frame) and one measured frame;
+// then more rounds of one measured frame per condition up to frames_per_condition, all only while
+// the budget lasts.
 //
 // How long it takes: setup (generating the scenes at the preset's detail, uploading them, building
-// the renderers: about 1 to 2 s for three scenes at low detail on llvmpipe, far less on a GPU)
-// plus the frames. New frames start only while budget_s lasts, but at least the first condition
-// gets its warm-up and one measured frame, so a device that needs seconds per frame takes two
-// such frames (the verdict is then clear anyway). The caller's progress callback runs before
-// each frame and may cancel there; a frame in flight is not interrupted.
+// the renderers: about 1.7 s for fink2019's three scenes on llvmpipe on 2 cores, far less on a
+// GPU), then frames for budget_s, counted from the end of setup, plus the frame in flight when it
+// runs out. At least the first condition gets its warm-up and one measured frame whatever the
+// budget, so a device that needs seconds per frame takes two such frames (the verdict is then
+// clear anyway). On llvmpipe the default 2 s cover the first two or three conditions at the
+// cheapest preset (complete false, the estimate from those measured); on a GPU, whose frames take
+// milliseconds, every condition completes well within it. The caller's progress callback runs
+// before each frame and may cancel there; a frame in flight is not interrupted.
 #pragma once
 
 #include <cstdint>
@@ -39,7 +44,7 @@ struct FrameTimeProbeRequest {
     // width and height where no runtime reported one; scaled by the preset (scaled_eye_size).
     int recommended_width = 0;
     int recommended_height = 0;
-    double budget_s = 2.0;         // no new frame starts after this, the minimum above aside
+    double budget_s = 2.0;  // from the end of setup: no frame starts later (the minimum aside)
     int frames_per_condition = 3;  // measured frames per condition, after its warm-up frame
 };
 
