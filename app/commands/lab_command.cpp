@@ -18,6 +18,7 @@
 #include "app/commands/session_summary.h"
 #include "app/commands/study_options.h"
 #include "app/commands/validation_report.h"
+#include "app/lab/lab_config.h"
 #include "app/lab/launcher_model.h"
 #include "app/lab/launcher_window.h"
 #include "app/window/desktop_window.h"
@@ -40,6 +41,10 @@ struct LabOptions {
     std::string initial_headset;
     std::string initial_observer;
     std::optional<std::uint64_t> seed;
+    // The sessions' options given on the command line, as `study run` takes them: shown in the
+    // window's command line, which is then the session's command.
+    std::vector<std::string> session_arguments;
+    bool protocols_given = false;  // --protocols: not the remembered folder
 };
 
 // <source>/protocols of the tree this executable was built from, when it is there (a build
@@ -113,7 +118,8 @@ std::string run_session(const lab::LaunchRequest& request, const LabOptions& lab
 // The summary's lines (summarize_session), or why there are none.
 std::vector<std::string> summary_lines(const lab::LauncherModel& model) {
     if (!model.summary() || model.summary()->session_id == 0) return {};
-    Result<std::unique_ptr<study::StudyStore>> store = study::StudyStore::open_read_only(model.database());
+    Result<std::unique_ptr<study::StudyStore>> store =
+        study::StudyStore::open_read_only(model.database());
     if (!store) return {store.error().message};
     Result<SessionSummary> summary = summarize_session(**store, model.summary()->session_id);
     if (!summary) return {summary.error().message};
@@ -153,17 +159,26 @@ lab::HeadsetReport report_of(const HeadsetCheck& check) {
     return r;
 }
 
+// On the simulated headset the simulated observer answers the check, as it answers the
+// session's trials: it confirms once the calibration screen has been shown for this many frames.
+constexpr std::int64_t kObserverConfirmFrames = 10;
+
 // The headset check (run_headset_check), the launcher answering each turn. Never throws.
 Result<lab::HeadsetReport> check_for_lab(
-    const std::string& headset,
+    const std::string& headset, bool observer_answers,
     const std::function<lab::CheckAnswer(const lab::HeadsetCheckTurn&)>& turn, const LabOptions& o,
     const GlobalOptions& global) {
     HeadsetCheckOptions options;
     options.headset = o.headset;
     options.headset.headset = headset;
     options.global = global;
-    options.on_turn = [&turn](const HeadsetCheckProgress& p) {
-        switch (turn({p.frames_shown, p.refresh_hz, p.ipd_m, p.interaction_profile})) {
+    options.on_turn = [&turn, observer_answers](const HeadsetCheckProgress& p) {
+        const lab::CheckAnswer answer =
+            turn({p.frames_shown, p.refresh_hz, p.ipd_m, p.interaction_profile});
+        if (observer_answers && answer == lab::CheckAnswer::Continue &&
+            p.frames_shown >= kObserverConfirmFrames)
+            return CheckRequest::Confirm;
+        switch (answer) {
             case lab::CheckAnswer::Confirm:
                 return CheckRequest::Confirm;
             case lab::CheckAnswer::Cancel:
@@ -176,7 +191,12 @@ Result<lab::HeadsetReport> check_for_lab(
     try {
         Result<HeadsetCheck> check = run_headset_check(options);
         MONOPLANE_TRY(check);
-        return report_of(*check);
+        lab::HeadsetReport report = report_of(*check);
+        if (observer_answers && check->end == CheckEnd::Confirmed &&
+            check->frames_shown >= kObserverConfirmFrames)
+            report.check_message = "the simulated observer pressed CONFIRM after " +
+                                   std::to_string(check->frames_shown) + " frames";
+        return report;
     } catch (const std::exception& e) {
         return Error{std::string("the headset check stopped: ") + e.what()};
     }
@@ -196,8 +216,11 @@ lab::LauncherExit open_launcher(lab::LauncherModel& model, lab::LauncherUi& ui, 
     actions.probe_headset = [&o, &global](const std::string& headset) {
         return probe_for_lab(headset, o, global);
     };
-    actions.check_headset = [&o, &global](const std::string& headset, const auto& turn) {
-        return check_for_lab(headset, turn, o, global);
+    actions.check_headset = [&o, &global, &model](const std::string& headset, const auto& turn) {
+        // With the simulated headset an observer answers unless told none (a script's
+        // controller, or the experimenter's Fits, answers then).
+        const bool observer = headset == "simulated" && model.observer() != "none";
+        return check_for_lab(headset, observer, turn, o, global);
     };
     auto window = lab::LauncherWindow::create(*ctx, model, ui, actions).value_or_throw();
     const lab::LauncherExit exit = window->run();
@@ -208,8 +231,38 @@ lab::LauncherExit open_launcher(lab::LauncherModel& model, lab::LauncherUi& ui, 
     return exit;
 }
 
+// The launcher remembers the database and protocols folder it last used; what the command
+// line gives goes first. An unreadable settings file is said and ignored.
+lab::LabConfig remembered_or_given(const LabOptions& o) {
+    Result<lab::LabConfig> remembered = lab::read_lab_config(lab::lab_config_file());
+    if (!remembered) std::cerr << "monoplane lab: " << remembered.error().message << "\n";
+    lab::LabConfig config = remembered ? *remembered : lab::LabConfig{};
+    std::error_code ec;
+    if (!config.db.empty() && !fs::exists(config.db, ec)) config.db.clear();  // moved or gone
+    if (!o.db.empty()) config.db = o.db;
+    if (o.protocols_given || config.protocols.empty()) config.protocols = o.protocols;
+    return config;
+}
+
+// What the window has open now becomes what the next launch opens.
+void remember(const lab::LauncherModel& model, lab::LabConfig& saved) {
+    lab::LabConfig now = saved;
+    if (model.database_open()) now.db = model.database();
+    if (!model.protocols_folder().empty()) now.protocols = model.protocols_folder();
+    if (now.db == saved.db && now.protocols == saved.protocols) return;
+    if (Result<void> written = lab::write_lab_config(lab::lab_config_file(), now); !written)
+        std::cerr << "monoplane lab: not remembered: " << written.error().message << "\n";
+    saved = now;
+}
+
 void run_lab(const LabOptions& o, const GlobalOptions& global) {
-    lab::LauncherModel model(lab::LauncherSettings{o.db, o.protocols, study_run_option_names()});
+    lab::LabConfig config = remembered_or_given(o);
+    lab::LauncherSettings settings;
+    settings.db = config.db;
+    settings.protocols = config.protocols;
+    settings.names = lab::launcher_request_names();
+    settings.session_arguments = o.session_arguments;
+    lab::LauncherModel model(std::move(settings));
     if (!o.initial_headset.empty())
         if (Result<void> ok = model.set_headset(o.initial_headset); !ok)
             throw UserError("--headset: " + ok.error().message);
@@ -220,9 +273,12 @@ void run_lab(const LabOptions& o, const GlobalOptions& global) {
     lab::LauncherUi ui;
     ui.state_file = o.state_file;
     ui.screenshot_dir = o.screenshot_dir;
-    ui.database_text = o.db;
+    ui.database_text = config.db.string();
+    lab::LabConfig saved;  // what the file holds: written when it changes
+    if (Result<lab::LabConfig> read = lab::read_lab_config(lab::lab_config_file())) saved = *read;
     for (;;) {
         const lab::LauncherExit exit = open_launcher(model, ui, o, global);
+        remember(model, saved);
         if (!exit.launch) return;
         const std::string error = run_session(*exit.launch, o, global);
         if (!error.empty()) std::cerr << "monoplane lab: the session stopped: " << error << "\n";
@@ -230,6 +286,21 @@ void run_lab(const LabOptions& o, const GlobalOptions& global) {
             ui.action_message = ended.error().message;
         ui.summary_lines = summary_lines(model);
     }
+}
+
+// The sessions' options as given ("--detail", "test", ...), in the order --help lists them; a
+// script's path made absolute, so the shown command runs from any folder.
+std::vector<std::string> given_session_options(const CLI::App& cmd) {
+    std::vector<std::string> given;
+    for (const char* name : {"--detail", "--resolution-scale", "--neutral-s", "--end-s",
+                             "--sim-script", "--sim-rate"}) {
+        const CLI::Option* option = cmd.get_option(name);
+        if (option->count() == 0) continue;
+        std::string value = option->results().back();
+        if (std::string_view(name) == "--sim-script") value = fs::absolute(value).string();
+        given.insert(given.end(), {name, value});
+    }
+    return given;
 }
 
 }  // namespace
@@ -273,7 +344,11 @@ void add_lab_command(CLI::App& root, const GlobalOptions& global) {
                     "Sessions on the simulated headset: its display rate in Hz (virtual clock)")
         ->capture_default_str()
         ->check(CLI::Range(1.0, 1000.0));
-    cmd->callback([o, &global] { run_lab(*o, global); });
+    cmd->callback([o, cmd, &global] {
+        o->protocols_given = cmd->count("--protocols") > 0;
+        o->session_arguments = given_session_options(*cmd);
+        run_lab(*o, global);
+    });
 }
 
 }  // namespace monoplane::app

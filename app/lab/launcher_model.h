@@ -124,7 +124,8 @@ struct ControlRect {
     std::string name;
     float x = 0, y = 0, width = 0, height = 0;
     bool enabled = true;
-    bool visible = true;  // not scrolled out of its list
+    bool visible = true;   // not scrolled out of its list
+    bool focused = false;  // has the keyboard
 };
 
 // A finished (or stopped) session, for the summary step.
@@ -240,6 +241,8 @@ class LauncherModel {
     // Where the window drew its controls this frame (for the state dump). Any time.
     void set_controls(std::vector<ControlRect> controls) { controls_ = std::move(controls); }
     const std::vector<ControlRect>& controls() const { return controls_; }
+    // The footer's message (the last refused action), for the state dump. Any time.
+    void set_window_message(std::string message) { window_message_ = std::move(message); }
     // A fixed seed (tests, a repeated session); none: drawn and recorded, as the command does.
     void set_seed(std::optional<std::uint64_t> seed);
 
@@ -300,6 +303,7 @@ class LauncherModel {
     std::vector<std::string> participant_problems_;
     std::vector<std::string> session_arguments_;
     std::vector<ControlRect> controls_;
+    std::string window_message_;
     bool headset_probed_ = false;  // headset_report_ is the chosen headset's
     std::string headset_ = "simulated";
     std::string observer_;

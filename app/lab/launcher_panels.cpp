@@ -12,6 +12,8 @@
 #include <string>
 #include <utility>
 
+#include "app/lab/shell_words.h"
+
 namespace monoplane::lab {
 namespace {
 
@@ -24,6 +26,20 @@ void error_text(const std::string& message) {
     ImGui::PushStyleColor(ImGuiCol_Text, kError);
     ImGui::TextWrapped("%s", message.c_str());
     ImGui::PopStyleColor();
+}
+
+// A message's line, kept (empty) when there is none: the controls under it stay where they are
+// when a message comes or goes, so a click aimed at one never lands on the message.
+void message_line(const std::string& message) {
+    if (message.empty())
+        ImGui::TextUnformatted(" ");
+    else
+        error_text(message);
+}
+
+bool enter_pressed() {
+    return ImGui::IsKeyPressed(GLFW_KEY_ENTER, false) ||
+           ImGui::IsKeyPressed(GLFW_KEY_KP_ENTER, false);
 }
 
 void dim_text(const std::string& text) {
@@ -56,16 +72,6 @@ const char* step_title(LauncherStep step) {
     return "";
 }
 
-std::string joined(const std::vector<std::string>& words) {
-    std::string line;
-    for (const std::string& word : words) {
-        if (!line.empty()) line += ' ';
-        const bool quote = word.find_first_of(" \t'\"") != std::string::npos;
-        line += quote ? "'" + word + "'" : word;
-    }
-    return line;
-}
-
 }  // namespace
 
 bool LauncherPanels::note(const Result<void>& result) {
@@ -74,6 +80,8 @@ bool LauncherPanels::note(const Result<void>& result) {
 }
 
 void LauncherPanels::key(const window::KeyPress& press) {
+    if (press.key == GLFW_KEY_TAB && (press.mods & GLFW_MOD_CONTROL) == 0)
+        controls_.tab((press.mods & GLFW_MOD_SHIFT) != 0);
     if ((press.mods & GLFW_MOD_CONTROL) == 0) return;
     switch (press.key) {
         case GLFW_KEY_RIGHT:
@@ -125,11 +133,18 @@ void LauncherPanels::next_step() {
             start();
             break;
         case LauncherStep::Summary:
-            go_to(LauncherStep::Participant);
+            next_participant();
             break;
         case LauncherStep::Session:
             break;
     }
+}
+
+void LauncherPanels::next_participant() {
+    if (!note(model_.next_participant())) return;
+    ui_.summary_lines.clear();
+    ui_.export_message.clear();
+    ui_.analysis_message.clear();
 }
 
 void LauncherPanels::start() {
@@ -176,12 +191,22 @@ void LauncherPanels::draw() {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(viewport->WorkPos);
     ImGui::SetNextWindowSize(viewport->WorkSize);
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                   ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings |
+    // A scroll bar only when a step is taller than the window (the roster scrolls on its own).
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoCollapse |
+                                   ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                   ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::Begin("monoplane lab", nullptr, flags);
+    controls_.begin_frame();
+    if (drawn_step_ != model_.step()) {
+        // A refusal belongs to the step it was made in.
+        if (drawn_step_) ui_.action_message.clear();
+        drawn_step_ = model_.step();
+        if (model_.step() == LauncherStep::Protocol) model_.rescan_protocols_if_changed();
+    }
     if (model_.step() != LauncherStep::Headset) probed_choice_.reset();  // probe on entry
     draw_steps();
+    draw_protocol_line();
     ImGui::Separator();
     switch (model_.step()) {
         case LauncherStep::Database:
@@ -207,7 +232,23 @@ void LauncherPanels::draw() {
     ImGui::Separator();
     draw_roster();
     draw_footer();
+    controls_.end_frame();
+    std::vector<ControlRect> rects = controls_.rects();
+    rects.push_back({"window", viewport->Pos.x, viewport->Pos.y, viewport->Size.x, viewport->Size.y,
+                     true, true});
+    model_.set_controls(std::move(rects));
+    model_.set_window_message(ui_.action_message);
     ImGui::End();
+}
+
+void LauncherPanels::draw_protocol_line() {
+    if (const study::Protocol* protocol = model_.protocol()) {
+        ImGui::Text("Protocol: %s (%s)", protocol->name.c_str(),
+                    model_.protocol_path().filename().string().c_str());
+    } else {
+        ImGui::TextColored(kDim, "Protocol: none chosen yet");
+    }
+    controls_.mark("protocol-line", false, false);
 }
 
 void LauncherPanels::draw_steps() {
@@ -225,19 +266,25 @@ void LauncherPanels::draw_database() {
         "Study database (a .sqlite file; every session of the study goes in it)");
     if (ui_.database_text.empty()) ui_.database_text = model_.database().string();
     focus_on_entry();
+    controls_.before_text("database");
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.7f);
     const bool enter =
         ImGui::InputText("##database", &ui_.database_text, ImGuiInputTextFlags_EnterReturnsTrue);
+    controls_.mark("database", true);
     ImGui::SameLine();
-    const bool open = ImGui::Button("Open") || enter;
+    bool open = ImGui::Button("Open") || enter;
+    controls_.mark("open");
     ImGui::SameLine();
     const bool create = ImGui::Button("Create");
+    controls_.mark("create");
     if (open || create) {
         if (note(model_.open_database(ui_.database_text, create))) go_to(LauncherStep::Protocol);
     }
     if (model_.database_open())
         ImGui::TextColored(kGood, "open: %s", model_.database().string().c_str());
-    error_text(model_.database_message());
+    else
+        ImGui::TextUnformatted(" ");
+    message_line(model_.database_message());
     dim_text("Enter opens an existing file; Create starts a new one.");
 }
 
@@ -245,27 +292,39 @@ void LauncherPanels::choose_protocol(const std::filesystem::path& path) {
     if (note(model_.select_protocol(path))) go_to(LauncherStep::Participant);
 }
 
+// A listed file or protocol name, or a path to a protocol anywhere.
+void LauncherPanels::choose_typed_protocol() {
+    const auto& list = model_.protocols();
+    const auto found = std::find_if(list.begin(), list.end(), [&](const ProtocolChoice& c) {
+        return c.file == ui_.protocol_text || c.name == ui_.protocol_text;
+    });
+    if (found != list.end()) {
+        choose_protocol(found->path);
+    } else if (ui_.protocol_text.find('/') != std::string::npos) {
+        choose_protocol(ui_.protocol_text);
+    } else {
+        ui_.action_message = "no protocol '" + ui_.protocol_text + "' in the folder " +
+                             model_.protocols_folder().string() +
+                             " (type a file name of the list, or a full path to a .toml file)";
+    }
+}
+
 void LauncherPanels::draw_protocol() {
     ImGui::Text("Protocols in %s", model_.protocols_folder().string().c_str());
-    error_text(model_.protocols_message());
-    ImGui::TextUnformatted("File name (Enter chooses it):");
+    message_line(model_.protocols_message());
+    ImGui::TextUnformatted("File name or path (Enter chooses it):");
     ImGui::SameLine();
     focus_on_entry();
-    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    controls_.before_text("protocol");
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.6f);
     // Enter leaves the field: a refused name is focused again, selected, to be typed over.
     const ImGuiInputTextFlags flags =
         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll;
     if (ImGui::InputText("##protocol", &ui_.protocol_text, flags)) {
         ImGui::SetKeyboardFocusHere(-1);
-        const auto& list = model_.protocols();
-        const auto found = std::find_if(list.begin(), list.end(), [&](const ProtocolChoice& c) {
-            return c.file == ui_.protocol_text || c.name == ui_.protocol_text;
-        });
-        if (found == list.end())
-            ui_.action_message = "no protocol '" + ui_.protocol_text + "' in the folder";
-        else
-            choose_protocol(found->path);
+        choose_typed_protocol();
     }
+    controls_.mark("protocol", true);
     for (const ProtocolChoice& choice : model_.protocols()) {
         const bool chosen = model_.protocol() != nullptr && model_.protocol_path() == choice.path;
         const std::string label =
@@ -273,6 +332,7 @@ void LauncherPanels::draw_protocol() {
         ImGui::PushStyleColor(ImGuiCol_Text,
                               choice.valid ? ImGui::GetStyleColorVec4(ImGuiCol_Text) : kError);
         if (ImGui::Selectable(label.c_str(), chosen)) choose_protocol(choice.path);
+        controls_.mark("protocol:" + choice.file);
         ImGui::PopStyleColor();
         // Errors in place, with file and line, as `protocol check` prints them.
         if (!choice.valid) {
@@ -287,12 +347,14 @@ void LauncherPanels::draw_participant() {
     ImGui::TextUnformatted("Participant code:");
     ImGui::SameLine();
     focus_on_entry();
+    controls_.before_text("code");
     std::string code = model_.participant_code();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14.0f);
     const bool enter = ImGui::InputText("##code", &code, ImGuiInputTextFlags_EnterReturnsTrue);
+    controls_.mark("code", true);
     if (code != model_.participant_code()) model_.set_participant_code(code);
     if (enter) next_step();
-    error_text(model_.code_message());
+    message_line(model_.code_message());
     if (const auto& known = model_.participant()) {
         std::string sessions;
         for (const auto& [number, id] : known->sessions)
@@ -301,6 +363,8 @@ void LauncherPanels::draw_participant() {
                     known->participant_number + 1, sessions.c_str());
     } else if (!code.empty() && model_.code_message().empty()) {
         ImGui::TextUnformatted("New participant.");
+    } else {
+        ImGui::TextUnformatted(" ");
     }
     ImGui::Text("This will be session %d.", model_.next_session_number());
     if (!model_.variables().empty()) {
@@ -308,8 +372,44 @@ void LauncherPanels::draw_participant() {
         ImGui::TextUnformatted("Participant variables (* required):");
         for (const VariableField& field : model_.variables()) draw_variable(field);
     }
+    draw_participant_problems();
     if (ImGui::Button("Next (Ctrl+Right)")) next_step();
+    controls_.mark("next");
 }
+
+void LauncherPanels::draw_participant_problems() {
+    std::string problems;
+    for (const std::string& problem : model_.participant_problems())
+        problems += (problems.empty() ? "" : "\n") + problem;
+    message_line(problems);
+}
+
+namespace {
+
+// A combo box that Enter opens and Enter picks in, as Space does (Dear ImGui 1.86 takes only
+// Space).
+void draw_choice(ControlRing& controls, const std::string& name, const std::string& label,
+                 const std::vector<std::string>& choices, std::string& text) {
+    const ImGuiID id = ImGui::GetID(label.c_str());
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    controls.mark_at(name, id, at.x, at.y, ImGui::CalcItemWidth(), ImGui::GetFrameHeight());
+    if (ImGui::BeginCombo(label.c_str(), text.empty() ? "(choose)" : text.c_str())) {
+        for (const std::string& choice : choices) {
+            const bool chosen = choice == text;
+            if (ImGui::Selectable(choice.c_str(), chosen)) text = choice;
+            if (chosen) ImGui::SetItemDefaultFocus();
+            if (ImGui::IsItemFocused() && enter_pressed()) {
+                text = choice;
+                ImGui::CloseCurrentPopup();
+            }
+        }
+        ImGui::EndCombo();
+    } else if (ImGui::IsItemFocused() && enter_pressed()) {
+        ImGui::OpenPopupEx(ImHashStr("##ComboPopup", 0, id));
+    }
+}
+
+}  // namespace
 
 void LauncherPanels::draw_variable(const VariableField& field) {
     const study::ParticipantVariable& v = field.declaration;
@@ -319,17 +419,13 @@ void LauncherPanels::draw_variable(const VariableField& field) {
     const std::string label = v.name + (v.required ? " *" : "");
     std::string text = field.text;
     if (v.type == study::VariableType::Choice) {
-        if (ImGui::BeginCombo(label.c_str(), text.empty() ? "(choose)" : text.c_str())) {
-            for (const std::string& choice : v.choices) {
-                if (ImGui::Selectable(choice.c_str(), choice == text)) text = choice;
-            }
-            ImGui::EndCombo();
-        }
+        draw_choice(controls_, "var:" + v.name, label, v.choices, text);
     } else {
-        ImGuiInputTextFlags flags = 0;
-        if (v.type == study::VariableType::Integer) flags = ImGuiInputTextFlags_CharsDecimal;
-        if (v.type == study::VariableType::Number) flags = ImGuiInputTextFlags_CharsScientific;
-        ImGui::InputText(label.c_str(), &text, flags);
+        // No character filter: Dear ImGui's numeric filters drop what they do not take (a
+        // decimal comma: "6,5" became 65); the field's message says what is wrong instead.
+        controls_.before_text("var:" + v.name);
+        ImGui::InputText(label.c_str(), &text);
+        controls_.mark("var:" + v.name, true);
     }
     ImGui::EndDisabled();
     if (text != field.text) note(model_.set_variable(v.name, text));
@@ -338,7 +434,7 @@ void LauncherPanels::draw_variable(const VariableField& field) {
         dim_text("(recorded with the participant)");
     }
     dim_text(v.help);
-    error_text(field.message);
+    message_line(field.message);
     ImGui::PopID();
 }
 
@@ -397,6 +493,7 @@ void LauncherPanels::draw_headset() {
             note(model_.set_headset(headset));
             probe_if_needed();
         }
+        controls_.mark(std::string("headset:") + headset);
     }
     draw_headset_report();
     if (model_.headset() == "openxr") {
@@ -416,9 +513,12 @@ void LauncherPanels::draw_headset_report() {
     }
     if (!report.runtime_available) {
         error_text(report.message.empty() ? "no OpenXR runtime" : report.message);
-        if (model_.headset() != "simulated" && ImGui::Button("Use the simulated headset")) {
-            note(model_.set_headset("simulated"));
-            probe_if_needed();
+        if (model_.headset() != "simulated") {
+            if (ImGui::Button("Use the simulated headset")) {
+                note(model_.set_headset("simulated"));
+                probe_if_needed();
+            }
+            controls_.mark("use-simulated");
         }
         return;
     }
@@ -430,6 +530,7 @@ void LauncherPanels::draw_headset_report() {
     if (!report.interaction_profile.empty())
         ImGui::Text("Controllers: %s", report.interaction_profile.c_str());
     if (ImGui::Button("Check the headset (Ctrl+H)")) request_check();
+    controls_.mark("check");
     ImGui::SameLine();
     dim_text("shows the participant a calibration screen until CONFIRM");
     draw_check_result();
@@ -509,30 +610,82 @@ CheckAnswer LauncherPanels::draw_check(const HeadsetCheckTurn& turn) {
 
 void LauncherPanels::draw_start() {
     ImGui::Spacing();
-    ImGui::BeginDisabled(!model_.start_enabled());
-    if (ImGui::Button("Start (Ctrl+Enter)")) start();
-    ImGui::EndDisabled();
+    draw_start_button();
     focus_item_on_entry();  // no text here: Space on the focused Start begins
-    error_text(model_.start_message());
-    if (model_.start_enabled()) dim_text("monoplane " + joined(model_.request().arguments()));
+    if (model_.start_enabled())
+        draw_command_line();
+    else
+        message_line(model_.start_message());
 }
 
+// Disabled, Start is drawn grey on a dark button, not merely a little fainter: it must not look
+// like a button that would start.
+void LauncherPanels::draw_start_button() {
+    const bool enabled = model_.start_enabled();
+    if (enabled) {
+        ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.16f, 0.55f, 0.24f, 1.0f));
+        ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ImVec4(0.2f, 0.65f, 0.3f, 1.0f));
+    } else {
+        ImGui::PushStyleColor(ImGuiCol_Button, ImVec4(0.2f, 0.2f, 0.22f, 1.0f));
+        ImGui::PushStyleColor(ImGuiCol_ButtonHovered, ImVec4(0.2f, 0.2f, 0.22f, 1.0f));
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.45f, 0.45f, 0.48f, 1.0f));
+    }
+    ImGui::BeginDisabled(!enabled);
+    if (ImGui::Button("Start (Ctrl+Enter)")) start();
+    ImGui::EndDisabled();
+    ImGui::PopStyleColor(enabled ? 2 : 3);
+    controls_.mark("start");
+}
+
+// The equivalent command, wrapped only between words (a path is never split), and a button that
+// copies it whole.
+void LauncherPanels::draw_command_line() {
+    const std::vector<std::string> arguments = model_.request().arguments();
+    if (ImGui::SmallButton("Copy the command")) {
+        ImGui::SetClipboardText(shell_command_line(arguments).c_str());
+    }
+    controls_.mark("copy-command");
+    ImGui::PushStyleColor(ImGuiCol_Text, kDim);
+    const float right = ImGui::GetContentRegionMax().x;
+    const float space = ImGui::CalcTextSize(" ").x;
+    ImGui::TextUnformatted("monoplane");
+    for (const std::string& argument : arguments) {
+        const std::string word = shell_quoted(argument);
+        const float width = ImGui::CalcTextSize(word.c_str()).x;
+        ImGui::SameLine(0.0f, space);
+        if (ImGui::GetCursorPosX() + width > right) ImGui::NewLine();
+        ImGui::TextUnformatted(word.c_str());
+    }
+    ImGui::PopStyleColor();
+}
+
+// The first line is the roster's word for the session (an interrupted session is "interrupted"
+// there and here, where summarize_session's first line says its stored status, "running"); the
+// rest are summarize_session's. A session that never began has no number to show.
 void LauncherPanels::draw_summary() {
     if (const auto& outcome = model_.summary()) {
-        if (ui_.summary_lines.empty())  // summarize_session's first line says the same
+        if (outcome->session_id == 0) {
+            ImGui::Text("The session for participant %s did not start.",
+                        outcome->participant.c_str());
+        } else {
             ImGui::Text("Session %lld: participant %s, session %d, %s",
                         static_cast<long long>(outcome->session_id), outcome->participant.c_str(),
                         outcome->session_number, outcome->state.c_str());
+        }
         error_text(outcome->error);
     }
-    for (const std::string& line : ui_.summary_lines) ImGui::TextUnformatted(line.c_str());
+    for (std::size_t i = 1; i < ui_.summary_lines.size(); ++i)
+        ImGui::TextUnformatted(ui_.summary_lines[i].c_str());
     ImGui::Spacing();
     if (ImGui::Button("Export (Ctrl+E)")) export_data();
     focus_item_on_entry();
+    controls_.mark("export");
     ImGui::SameLine();
     if (ImGui::Button("Analyse (Ctrl+R)")) analyse();
+    controls_.mark("analyse");
     ImGui::SameLine();
-    if (ImGui::Button("Next participant")) go_to(LauncherStep::Participant);
+    if (ImGui::Button("Next participant")) next_participant();
+    controls_.mark("next-participant");
     if (!ui_.export_message.empty()) ImGui::TextWrapped("%s", ui_.export_message.c_str());
     if (!ui_.analysis_message.empty()) ImGui::TextWrapped("%s", ui_.analysis_message.c_str());
 }
@@ -544,51 +697,64 @@ void LauncherPanels::draw_roster() {
         dim_text("no sessions yet");
         return;
     }
-    const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
-    if (!ImGui::BeginTable("roster", 5, flags)) return;
+    // The table scrolls in what the window leaves above the footer (at least a few lines), so
+    // a long day's roster never pushes Resume or the footer off the window.
+    const float rows = ImGui::GetTextLineHeightWithSpacing() * 6.0f;
+    const float height = std::max(rows, ImGui::GetContentRegionAvail().y - footer_height_);
+    const ImGuiTableFlags flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollY;
+    if (!ImGui::BeginTable("roster", 5, flags, ImVec2(0.0f, height))) return;
+    ImGui::TableSetupScrollFreeze(0, 1);
     for (const char* heading : {"participant", "session", "state", "trials", ""})
         ImGui::TableSetupColumn(heading);
     ImGui::TableHeadersRow();
-    for (const RosterLine& line : model_.roster()) {
-        const study::RosterRow& row = line.entry.row;
-        ImGui::PushID(static_cast<int>(row.session_id));
-        ImGui::TableNextRow();
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row.participant_code.c_str());
-        ImGui::TableNextColumn();
-        ImGui::Text("%d", row.session_number);
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(line.state.c_str());
-        ImGui::TableNextColumn();
-        ImGui::Text("%d / %d", row.trials_decided, row.trials_planned);
-        ImGui::TableNextColumn();
-        if (line.state != "completed") {
-            ImGui::BeginDisabled(!line.resume_offered);
-            if (ImGui::Button("Resume")) {
-                Result<LaunchRequest> request = model_.resume(row.session_id, false);
-                if (request)
-                    launch_ = std::move(request).value();
-                else
-                    ui_.action_message = request.error().message;
-            }
-            ImGui::EndDisabled();
-            if (!line.resume_refusal.empty()) {
-                ImGui::SameLine();
-                ImGui::TextColored(kError, "%s", line.resume_refusal.c_str());
-            }
-        }
-        ImGui::PopID();
-    }
+    for (const RosterLine& line : model_.roster()) draw_roster_line(line);
     ImGui::EndTable();
 }
 
+void LauncherPanels::draw_roster_line(const RosterLine& line) {
+    const study::RosterRow& row = line.entry.row;
+    ImGui::PushID(static_cast<int>(row.session_id));
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(row.participant_code.c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%d", row.session_number);
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(line.state.c_str());
+    ImGui::TableNextColumn();
+    ImGui::Text("%d / %d", row.trials_decided, row.trials_planned);
+    ImGui::TableNextColumn();
+    if (line.state != "completed") {
+        ImGui::BeginDisabled(!line.resume_offered);
+        if (ImGui::Button("Resume")) {
+            Result<LaunchRequest> request = model_.resume(row.session_id, false);
+            if (request)
+                launch_ = std::move(request).value();
+            else
+                ui_.action_message = request.error().message;
+        }
+        ImGui::EndDisabled();
+        controls_.mark("resume:" + std::to_string(row.session_id));
+        if (!line.resume_refusal.empty()) {
+            ImGui::SameLine();
+            ImGui::TextColored(kError, "%s", line.resume_refusal.c_str());
+        }
+    }
+    ImGui::PopID();
+}
+
+// The footer's height is measured as drawn, for the next frame's roster to leave it room.
 void LauncherPanels::draw_footer() {
+    const float top = ImGui::GetCursorPosY();
     ImGui::Spacing();
     ImGui::Separator();
-    error_text(ui_.action_message);
+    message_line(ui_.action_message);
     dim_text(
-        "Keys: Tab / arrows move, Space or Enter acts, Ctrl+Right next step, Ctrl+Left back, "
+        "Keys: Tab / Shift+Tab move, Space or Enter acts, Ctrl+Right next step, Ctrl+Left back, "
         "Ctrl+H check the headset, Ctrl+Enter Start, Ctrl+Q quit");
+    controls_.mark("footer", false, false);
+    footer_height_ = ImGui::GetCursorPosY() - top + ImGui::GetStyle().WindowPadding.y;
 }
 
 }  // namespace monoplane::lab

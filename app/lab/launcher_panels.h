@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "app/lab/launcher_controls.h"
 #include "app/lab/launcher_model.h"
 #include "app/lab/launcher_window.h"
 #include "app/window/desktop_window.h"
@@ -52,6 +53,15 @@ class LauncherPanels {
 
   private:
     void draw_steps();
+    // The chosen protocol, under the steps on every step.
+    void draw_protocol_line();
+    void choose_typed_protocol();
+    void draw_participant_problems();
+    // Start, greyed when disabled, with the reason or the command line under it.
+    void draw_start_button();
+    void draw_command_line();
+    void draw_roster_line(const RosterLine& line);
+    void next_participant();
     void draw_database();
     void draw_protocol();
     void draw_participant();
@@ -89,6 +99,9 @@ class LauncherPanels {
     bool check_requested_ = false;
     bool check_focused_ = false;                        // Fits has the keyboard focus
     CheckAnswer check_answer_ = CheckAnswer::Continue;  // the experimenter's, for the next turn
+    ControlRing controls_;
+    std::optional<LauncherStep> drawn_step_;  // the step of the last frame (stale messages go)
+    float footer_height_ = 0.0f;              // as the last frame drew it
 };
 
 }  // namespace monoplane::lab

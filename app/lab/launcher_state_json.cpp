@@ -134,6 +134,7 @@ void write_controls(JsonWriter& w, const LauncherModel& m) {
             .value("height", c.height)
             .value("enabled", c.enabled)
             .value("visible", c.visible)
+            .value("focused", c.focused)
             .end_object();
     }
     w.end_object();
@@ -201,6 +202,7 @@ std::string LauncherModel::state_json() const {
     w.begin_object("window")
         .value("content_scale", content_scale_)
         .value("font_pixels", font_pixels_)
+        .value("message", window_message_)
         .end_object();
     write_controls(w, *this);
     w.end_object();

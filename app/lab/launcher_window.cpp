@@ -46,6 +46,7 @@ struct LauncherWindow::Impl {
     bool screenshot_taken = false;
     std::chrono::steady_clock::time_point last_check_frame;
     int check_frames_drawn = 0;
+    std::chrono::steady_clock::time_point last_rescan;
 
     void frame();
     // One turn of the headset check: input, and a frame of the check's panel at most every
@@ -58,6 +59,12 @@ struct LauncherWindow::Impl {
 };
 
 void LauncherWindow::Impl::frame() {
+    // A protocol saved (or the folder made) while the window is open is listed within a second.
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_rescan >= std::chrono::seconds(1)) {
+        last_rescan = now;
+        model.rescan_protocols_if_changed();
+    }
     desktop->poll_events();
     for (const window::KeyPress& press : desktop->take_key_presses()) panels.key(press);
     desktop->new_frame();
@@ -132,24 +139,51 @@ void LauncherWindow::Impl::save_screenshot(const std::string& name) {
     }
 }
 
+namespace {
+
+// The window's size and text for the primary monitor's work area: three quarters of it (at
+// least 1280 x 800 where it is larger, never more than it), and 16-pixel text on a 1080-line
+// display, proportionally more on a taller one (a 3840 x 2160 monitor gets 32 pixels), so the
+// text keeps its size relative to the screen where the desktop sets no content scale. The
+// content scale (DesktopWindow's scale_with_monitor) multiplies the text further on top.
+window::DesktopWindowOptions fitted_to_monitor() {
+    window::DesktopWindowOptions options;
+    options.font_pixels = 16.0f;
+    if (glfwInit() != GLFW_TRUE) return options;  // DesktopWindow::create says why
+    GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+    if (monitor == nullptr) return options;
+    int x = 0, y = 0, width = 0, height = 0;
+    glfwGetMonitorWorkarea(monitor, &x, &y, &width, &height);
+    if (width <= 0 || height <= 0) return options;
+    options.width = std::min(width, std::max(1280, width * 3 / 4));
+    options.height = std::min(height, std::max(800, height * 3 / 4));
+    float xscale = 1.0f, yscale = 1.0f;
+    glfwGetMonitorContentScale(monitor, &xscale, &yscale);
+    const float content = std::max(1.0f, std::max(xscale, yscale));
+    // Physical pixels per content-scaled pixel: the lines the monitor has at scale 1.
+    const float lines = static_cast<float>(height) / content;
+    options.font_pixels = 16.0f * std::max(1.0f, lines / 1080.0f);
+    return options;
+}
+
+}  // namespace
+
 LauncherWindow::LauncherWindow(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 LauncherWindow::~LauncherWindow() = default;
 
 Result<std::unique_ptr<LauncherWindow>> LauncherWindow::create(const vk_core::Context& ctx,
                                                                LauncherModel& model, LauncherUi& ui,
                                                                LauncherActions actions) {
-    window::DesktopWindowOptions options;
+    window::DesktopWindowOptions options = fitted_to_monitor();
     options.title = "monoplane lab";
     options.what = "launcher window";
-    // 16 pixels stay legible on a 1280 x 800 display; a dense monitor multiplies them.
-    options.font_pixels = 16.0f;
     options.scale_with_monitor = true;
     options.hold_taps = true;  // keyboard-only use includes scripted keys (xdotool, XTest)
     auto desktop = window::DesktopWindow::create(ctx, options);
     MONOPLANE_TRY(desktop);
     auto impl = std::make_unique<Impl>(model, ui, std::move(actions));
     impl->desktop = std::move(desktop).value();
-    // As DesktopWindow scales it: never below 16 pixels, more on a dense monitor.
+    // As DesktopWindow scales it: the monitor's size's font, times the content scale.
     const float scale = std::max(1.0f, impl->desktop->content_scale());
     model.set_window_scale(impl->desktop->content_scale(), options.font_pixels * scale);
     // Arrow keys, Space and Enter reach every button, list entry and field.
