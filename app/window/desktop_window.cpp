@@ -14,6 +14,7 @@
 
 #include "app/window/screenshot.h"
 #include "app/window/swapchain.h"
+#include "app/window/text_fonts.h"
 #include "renderer/vk/buffer.h"
 
 namespace monoplane::window {
@@ -226,11 +227,10 @@ void DesktopWindow::Impl::init_imgui() {
         scale = std::max(1.0f, std::max(x, y));
         ImGui::GetStyle().ScaleAllSizes(scale);
     }
-    if (options.font_pixels * scale != 13.0f) {
-        ImFontConfig font;
-        font.SizePixels = options.font_pixels * scale;
-        io.Fonts->AddFontDefault(&font);
-    }
+    ImFontConfig font;
+    font.SizePixels = options.font_pixels * scale;
+    io.Fonts->AddFontDefault(&font);
+    merge_text_fonts(*io.Fonts, font.SizePixels);  // pages in the participant's language
 
     // Installed before Dear ImGui's, which then chains to it.
     glfwSetWindowUserPointer(window, this);

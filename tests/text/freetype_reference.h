@@ -28,6 +28,7 @@ class FreeTypeReference {
     // The top of 'H''s unscaled outline over units per em.
     double cap_height_em() const;
     double ascender_em() const { return double(face_->ascender) / face_->units_per_EM; }
+    double descender_em() const { return double(face_->descender) / face_->units_per_EM; }
     double line_spacing_em() const { return double(face_->height) / face_->units_per_EM; }
     // The character's unscaled advance over units per em.
     double advance_em(char32_t c) const {
