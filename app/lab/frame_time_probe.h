@@ -13,14 +13,14 @@
 // the budget lasts.
 //
 // How long it takes: setup (generating the scenes at the preset's detail, uploading them, building
-// the renderers: about 1.7 s for fink2019's three scenes on llvmpipe on 2 cores, far less on a
-// GPU), then frames for budget_s, counted from the end of setup, plus the frame in flight when it
-// runs out. At least the first condition gets its warm-up and one measured frame whatever the
-// budget, so a device that needs seconds per frame takes two such frames (the verdict is then
-// clear anyway). On llvmpipe the default 2 s cover the first two or three conditions at the
-// cheapest preset (complete false, the estimate from those measured); on a GPU, whose frames take
-// milliseconds, every condition completes well within it. The caller's progress callback runs
-// before each frame and may cancel there; a frame in flight is not interrupted.
+// the renderers: about 1.7 s for fink2019's three scenes on llvmpipe on 2 cores), then frames for
+// budget_s, counted from the end of setup, plus the frame in flight when it runs out. At least the
+// first condition gets its warm-up and one measured frame whatever the budget, so a device that
+// needs seconds per frame takes two such frames (the verdict is then clear anyway). On llvmpipe the
+// default 2 s cover the first two or three conditions at the cheapest preset (complete false, the
+// estimate from those measured); on a GPU, whose frames take milliseconds, every condition should
+// complete within it (not measured on one yet). The caller's progress callback runs before each
+// frame and may cancel there; a frame in flight is not interrupted.
 #pragma once
 
 #include <cstdint>

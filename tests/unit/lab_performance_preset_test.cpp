@@ -116,6 +116,19 @@ TEST(FrameTimeVerdict, AdviceNamesTheMostFaithfulPresetEstimatedToFit) {
               "(about 9.8 ms per frame)");
 }
 
+TEST(FrameTimeVerdict, TheDocumentedExamplesAt90Hz) {
+    // docs/lab-session-settings.md quotes these. 41 / 11.11 = 3.69.
+    const std::vector<PresetEstimate> estimates = {{"balanced", 20.0}, {"fast", 9.8}};
+    EXPECT_EQ(judge_frame_time("full", 41.0, 90.0, estimates).text,
+              "cannot reach 90 Hz: about 41.0 ms per frame, 3.7x too slow; choose 'fast' (about "
+              "9.8 ms per frame)");
+    const std::vector<PresetEstimate> slow = {{"minimal", 25.0}};
+    EXPECT_EQ(judge_frame_time("fast", 60.0, 90.0, slow).text,
+              "cannot reach 90 Hz: about 60.0 ms per frame, 5.4x too slow; even 'minimal' needs "
+              "about 25.0 ms per frame; this device cannot keep 90 Hz with this protocol: the "
+              "headset will show frames late (the session's frame log counts each missed one)");
+}
+
 TEST(FrameTimeVerdict, WhenNothingCheaperFitsItSaysTheDeviceCannotKeepTheRate) {
     const std::vector<PresetEstimate> estimates = {{"fast", 60.0}, {"minimal", 25.0}};
     const FrameTimeVerdict v = judge_frame_time("fast", 60.0, 90.0, estimates);
