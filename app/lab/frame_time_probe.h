@@ -72,7 +72,8 @@ struct FrameTimeEstimate {
     std::string device;      // the Vulkan device it ran on
 };
 
-// Before each frame: how far the probe is; the callback returns false to cancel.
+// Before the setup and before each frame: how far the probe is. The callback runs on the probing
+// thread (the launcher's worker) and returns false to cancel.
 struct ProbeProgress {
     int frames_done = 0;
     int frames_planned = 0;  // warm-ups and measured frames of every condition
