@@ -301,6 +301,23 @@ Result<void> LiveSession::note(const std::string& text, NoteSource source) {
     return Ok{};
 }
 
+Result<void> LiveSession::record_press(PressSource source, PressAction action,
+                                       const std::string& key, std::int64_t time_ns) {
+    const LiveScreen shown = screen();
+    ResponsePress press;
+    press.source = source;
+    press.action = action;
+    press.key = key;
+    press.screen = std::string(screen_kind_name(shown.kind));
+    if (shown.trial) press.trial_index = shown.trial->index;
+    press.time_ns = time_ns;
+    MONOPLANE_TRY(log_.record_press(session_id_, press));
+    committed("press " + std::string(press_source_name(source)) + " " +
+              std::string(press_action_name(action)) + (key.empty() ? "" : " key " + key) + " t " +
+              std::to_string(time_ns));
+    return Ok{};
+}
+
 Result<std::string> LiveSession::abort_session(std::int64_t time_ns) {
     if (machine_ && kind_ == ScreenKind::Trial) {
         Result<std::vector<TrialEvent>> events = machine_->abort(time_ns);

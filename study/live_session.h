@@ -148,6 +148,11 @@ class LiveSession {
     // (of its latest presented frame or request; none before either) and the trial on screen or
     // the last one shown (none before the first). Refuses a blank note.
     Result<void> note(const std::string& text, NoteSource source = NoteSource::Window);
+    // A press of the participant's controller or keys, logged (SessionLog::record_press) with the
+    // screen shown and the trial on it, before the caller requests what it asks for: every press
+    // is in the log, whatever it changes. `key`: the key's name (keyboard, device), else empty.
+    Result<void> record_press(PressSource source, PressAction action, const std::string& key,
+                              std::int64_t time_ns);
     // Frame `frame` became visible at time_ns: pending changes take effect and are logged; the
     // neutral screen ends and the next trial starts when its time is up.
     Result<void> frame_presented(std::int64_t frame, std::int64_t time_ns);

@@ -32,10 +32,10 @@
 namespace monoplane::study {
 namespace {
 
-constexpr std::array<std::string_view, 26> kTopLevelKeys = {
+constexpr std::array<std::string_view, 27> kTopLevelKeys = {
     "name", "scenes", "mono_planes", "alternatives", "order", "first_scene", "require_both_viewed",
     "practice_trials", "near", "far", "questionnaire", "render", "missed_frame_threshold", "auto",
-    "procedure", "staircase",
+    "procedure", "staircase", "responses",
     // A study day (protocol_study_day_parse.h).
     "sessions", "repetitions", "blocking", "text_height_deg", "instructions", "ready", "breaks",
     "end", "variables", "text"};
@@ -526,6 +526,7 @@ Result<Protocol> parse(std::string_view toml_text, std::string_view source_name,
     read_auto_plane(root, std::ranges::count(protocol.alternatives, RenderMode::HybridAuto) > 0,
                     protocol.auto_plane, problems);
     read_study_day(root, protocol.procedure, protocol.day, problems);  // after the procedure
+    read_responses(root, protocol.responses, problems);
     // Only for a protocol whose scenes and distances all read: the count is the session's.
     if (problems.empty()) {
         check_break_interval(root, protocol.day, protocol.trials_per_session(), problems);

@@ -13,6 +13,7 @@
 
 #include "common/result.h"
 #include "study/protocol_auto.h"
+#include "study/protocol_responses.h"
 #include "study/protocol_staircase.h"
 #include "study/protocol_study_day.h"
 #include "study/render_mode.h"
@@ -84,6 +85,8 @@ struct Protocol {
     // Sessions, repetitions, blocking, the participant's screens and variables
     // (study/protocol_study_day.h).
     StudyDaySettings day;
+    // [responses]: answers from keys, besides the controller (study/protocol_responses.h).
+    ResponseSettings responses;
     std::string source;           // file path or "<text>"
     std::string text;             // the file's text, stored with every session
     std::uint64_t text_hash = 0;  // FNV-1a 64 of text: identifies the protocol version

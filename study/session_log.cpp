@@ -50,6 +50,12 @@ Result<void> MemorySessionLog::add_note(std::int64_t, const SessionNote& note) {
     return Ok{};
 }
 
+Result<void> MemorySessionLog::record_press(std::int64_t, const ResponsePress& press) {
+    MONOPLANE_TRY(check_press(press));
+    presses_.push_back(press);
+    return Ok{};
+}
+
 Result<RunStart> MemorySessionLog::begin_run(std::int64_t, const RunInfo& info) {
     std::optional<std::int64_t> last_ns;
     std::int64_t first_frame = 0;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/result.h"
+#include "study/response_press.h"
 #include "study/session_note.h"
 #include "study/session_runs.h"
 #include "study/trial_events.h"
@@ -41,6 +42,10 @@ class SessionLog {
     // a run_started event at its start, durable on return. Once per run, before its first
     // event.
     virtual Result<RunStart> begin_run(std::int64_t session_id, const RunInfo& info) = 0;
+    // A press of the participant's controller or keys (study/response_press.h), durable on
+    // return, whatever it changed. Refuses a key press without its key name and a controller
+    // press with one.
+    virtual Result<void> record_press(std::int64_t session_id, const ResponsePress& press) = 0;
 };
 
 // One session's log in memory. Refuses a second outcome for a trial, as the database does.
@@ -55,8 +60,10 @@ class MemorySessionLog final : public SessionLog {
     Result<void> record_stimulus(std::int64_t session_id, const ScheduledTrial& trial) override;
     Result<void> add_note(std::int64_t session_id, const SessionNote& note) override;
     Result<RunStart> begin_run(std::int64_t session_id, const RunInfo& info) override;
+    Result<void> record_press(std::int64_t session_id, const ResponsePress& press) override;
 
     const std::vector<TrialEvent>& events() const { return events_; }
+    const std::vector<ResponsePress>& presses() const { return presses_; }
     const std::vector<SessionNote>& notes() const { return notes_; }
     // The adaptive trials started, with their mono planes, by trial index.
     const std::map<int, ScheduledTrial>& adaptive_trials() const { return adaptive_trials_; }
@@ -67,6 +74,7 @@ class MemorySessionLog final : public SessionLog {
   private:
     std::vector<TrialEvent> events_;
     std::vector<SessionNote> notes_;
+    std::vector<ResponsePress> presses_;
     std::map<int, TrialOutcome> outcomes_;
     std::map<int, int> answers_;
     std::map<int, ScheduledTrial> adaptive_trials_;

@@ -303,9 +303,30 @@ ALTER TABLE events_v8 RENAME TO events;
 CREATE INDEX events_by_session ON events(session_id, id);
 )sql";
 
-constexpr std::array<std::string_view, 8> kMigrations = {kVersion1, kVersion2, kVersion3,
+// Version 9 (issue 43, answers from keys): every press of the participant's answer channels, the
+// controller's buttons and the [responses] keys (from the experimenter window or an evdev
+// device), with its source, whatever it changed. A table of its own rather than event kinds:
+// presses are input, not changes of what was shown, and the events keep their meaning for every
+// reader that replays them. Older sessions have no rows.
+constexpr std::string_view kVersion9 = R"sql(
+CREATE TABLE presses (
+    id          INTEGER PRIMARY KEY,
+    session_id  INTEGER NOT NULL REFERENCES sessions(id),
+    trial_index INTEGER,
+    source      TEXT NOT NULL CHECK (source IN ('controller', 'keyboard', 'device')),
+    action      TEXT NOT NULL CHECK (action IN ('switch', 'confirm', 'pause')),
+    key         TEXT,
+    screen      TEXT NOT NULL,
+    time_ns     INTEGER NOT NULL,
+    FOREIGN KEY (session_id, trial_index) REFERENCES trials(session_id, trial_index),
+    CHECK ((key IS NULL) = (source = 'controller'))
+);
+CREATE INDEX presses_by_session ON presses(session_id, id);
+)sql";
+
+constexpr std::array<std::string_view, 9> kMigrations = {kVersion1, kVersion2, kVersion3,
                                                          kVersion4, kVersion5, kVersion6,
-                                                         kVersion7, kVersion8};
+                                                         kVersion7, kVersion8, kVersion9};
 
 }  // namespace
 

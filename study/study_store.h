@@ -170,7 +170,7 @@ class StudyStore final : public SessionLog {
     // Opened with open_read_only.
     bool read_only() const;
 
-    static constexpr int kSchemaVersion = 8;
+    static constexpr int kSchemaVersion = 9;
 
     // The file this store was opened from (session holds lie beside it).
     const std::filesystem::path& path() const;
@@ -252,6 +252,11 @@ class StudyStore final : public SessionLog {
     // transaction with the queued frames. Once per process that runs the session, before its
     // first event (LiveSession::begin_run). Refuses an unknown session.
     Result<RunStart> begin_run(std::int64_t session_id, const RunInfo& info) override;
+    // The press into table `presses` (schema 9) with the queued frames, durable on return
+    // (SessionLog::record_press; study/press_store.cpp). Refuses an unknown session.
+    Result<void> record_press(std::int64_t session_id, const ResponsePress& press) override;
+    // The session's presses in the order logged (none for sessions before schema 9). Any time.
+    Result<std::vector<ResponsePress>> presses(std::int64_t session_id) const;
     // The session's runs (table session_runs), by run number. Sessions of schema 7 and before
     // have none for their runs then. Any time.
     Result<std::vector<RunRecord>> runs(std::int64_t session_id) const;

@@ -477,7 +477,7 @@ TEST_F(StudyFileMatrix, MigrateKeepsTheOriginalAndLeavesACurrentFileAlone) {
     std::string out;
     ASSERT_EQ(monoplane({"study", "migrate", "--db", db.string()}, &out, false), 0) << out;
     EXPECT_NE(out.find(db.string() +
-                       ": migrated from schema version 7 to 8; the original is "
+                       ": migrated from schema version 7 to 9; the original is "
                        "kept as " +
                        db.string() + ".schema7.bak"),
               std::string::npos)
@@ -492,11 +492,11 @@ TEST_F(StudyFileMatrix, MigrateKeepsTheOriginalAndLeavesACurrentFileAlone) {
         sqlite3_close_v2(raw);
         return v;
     };
-    EXPECT_EQ(version(db), 8);
+    EXPECT_EQ(version(db), 9);
     EXPECT_EQ(version(db.string() + ".schema7.bak"), 7);
     const auto migrated = fingerprint(dir);
     ASSERT_EQ(monoplane({"study", "migrate", "--db", db.string()}, &out, false), 0) << out;
-    EXPECT_NE(out.find("schema version 8, already this build's; unchanged"), std::string::npos)
+    EXPECT_NE(out.find("schema version 9, already this build's; unchanged"), std::string::npos)
         << out;
     EXPECT_EQ(fingerprint(dir), migrated);
     const fs::path empty = dir / "empty.sqlite";

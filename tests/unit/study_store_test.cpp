@@ -178,11 +178,11 @@ TEST_F(StudyStoreTest, UsesWalAndRecordsTheSchemaVersion) {
     RawDb raw(db_);
     EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
     EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
-    EXPECT_EQ(StudyStore::kSchemaVersion, 8);
+    EXPECT_EQ(StudyStore::kSchemaVersion, 9);
     EXPECT_EQ(raw.integer("PRAGMA application_id"), 0x4D505354);
     // Version 2 added frames, version 3 scene_files and session_notes, version 5 planned_trials,
-    // version 7 participant_variables, version 8 session_runs.
-    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 11);
+    // version 7 participant_variables, version 8 session_runs, version 9 presses.
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 12);
 }
 
 TEST_F(StudyStoreTest, FilesAreReadableByTheOwnerOnly) {
@@ -443,11 +443,12 @@ TEST_F(StudyStoreTest, RefusesANewerSchemaWithoutTouchingIt) {
     const Result<std::unique_ptr<StudyStore>> store = StudyStore::open(db_);
     ASSERT_FALSE(store.ok());
     const std::string& message = store.error().message;
-    EXPECT_TRUE(contains(message, "schema version 9, newer than this build of monoplane knows (8)"))
+    EXPECT_TRUE(
+        contains(message, "schema version 10, newer than this build of monoplane knows (9)"))
         << message;
     EXPECT_TRUE(contains(message, db_.string())) << message;
     RawDb raw(db_);
-    EXPECT_EQ(raw.integer("PRAGMA user_version"), 9);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 10);
     EXPECT_TRUE(fs::exists(db_));
 }
 
