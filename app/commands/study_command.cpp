@@ -55,6 +55,15 @@ void add_headset_options(CLI::App* cmd, StudyOptions& o) {
         ->check(CLI::IsMember({"seated", "still"}));
     cmd->add_option("--dump-frames", h.dump_frames,
                     "simulated: write every submitted frame's eyes as PNG into this folder");
+    cmd->add_option("--keys", h.keys,
+                    "The participant's answer keys over the protocol's [responses]: default "
+                    "(Left/Right switch, Return confirms), none, or switch=KEY,confirm=KEY with X "
+                    "key names (an action named twice gets two keys); read from the experimenter "
+                    "window, or from --response-device (docs/study.md)");
+    cmd->add_option("--response-device", h.response_device,
+                    "Read the answer keys from this evdev device (a response box seen as a "
+                    "keyboard), e.g. /dev/input/by-id/usb-...-event-kbd; needs read access "
+                    "(the 'input' group)");
 }
 
 // Which session: the participant's number, or the database's id (study list shows both).

@@ -11,6 +11,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/commands/headset_frame_log.h"
+#include "app/commands/participant_answers.h"
 #include "app/commands/runtime_lost.h"
 #include "app/commands/screen_pages.h"
 #include "app/commands/study_renderers.h"
@@ -155,7 +156,8 @@ class HeadsetLoop {
                 study::StudyStore& store, std::int64_t session_id, headset::OpenXrHeadset& headset,
                 const vk_core::Context& ctx, window::ExperimenterWindow* experimenter,
                 StudyRenderers& renderers, study::Observer* observer,
-                const std::function<double(const study::ScheduledTrial&)>& trial_error_px)
+                const std::function<double(const study::ScheduledTrial&)>& trial_error_px,
+                ParticipantAnswers& answers)
         : options_(options),
           protocol_(protocol),
           info_(store.session(session_id).value_or_throw()),
@@ -170,7 +172,8 @@ class HeadsetLoop {
           frame_log_(store, session_id),
           pages_(headset::TextPanelOptions{.text_height_deg = protocol.day.text_height_deg,
                                            .font = protocol.day.font}),
-          window_answers_(protocol.questionnaire.items.size(), 0) {
+          window_answers_(protocol.questionnaire.items.size(), 0),
+          answers_(answers) {
         headset::TextStyle label_style;
         label_style.capital_px = 14.0;
         label_style.padding_px = 4;
@@ -323,26 +326,56 @@ class HeadsetLoop {
             .value_or_throw();
     }
 
-    // The controller, then the experimenter's window, then a simulated observer.
+    // The controller, then the experimenter's window (the participant's keys among its
+    // commands), then a response device, then a simulated observer. Every press of the
+    // participant is logged with its source before what it asks for is requested.
     void handle_inputs(std::int64_t now) {
         // A lost runtime has no presses; the frame then ends at its next OpenXR call.
         const std::vector<headset::ControlPress> presses =
             unless_lost(headset_.sync_controls()).value_or(std::vector<headset::ControlPress>{});
         charge(headset::FrameStep::kOpenXrBegin);
+        watch_binding();
         for (const headset::ControlPress& press : presses) {
-            const std::int64_t pressed = live_->session_time(press.time_ns);
-            if (press.control == headset::Control::Switch) request(LiveInput::Switch, pressed);
-            if (press.control == headset::Control::Confirm) request(LiveInput::Confirm, pressed);
-            if (press.control == headset::Control::Pause) {
-                request(live_->screen().paused ? LiveInput::Resume : LiveInput::Pause, pressed);
+            answer(controller_press(press.control), live_->session_time(press.time_ns));
+        }
+        for (const window::Command& c : window_commands_) {
+            // A key's time is the frame's: when the session saw it (docs/data.md, presses).
+            if (const std::optional<AnswerPress> press = keyboard_press(c)) {
+                answer(*press, now);
+            } else {
+                window_command(c, now);
             }
         }
-        for (const window::Command& c : window_commands_) window_command(c, now);
         window_commands_.clear();
+        for (const AnswerPress& press : answers_.device_presses()) answer(press, now);
         if (observer_input_) {
             for (LiveInput input : observer_input_->poll(live_->screen(), live_->progress(), now)) {
                 request(input, now);
             }
+        }
+    }
+
+    // One press of the participant: logged, then requested as the controller's would be.
+    void answer(const AnswerPress& press, std::int64_t time_ns) {
+        live_->record_press(press.source, press.action, press.key, time_ns).value_or_throw();
+        switch (press.action) {
+            case study::PressAction::Switch:
+                return request(LiveInput::Switch, time_ns);
+            case study::PressAction::Confirm:
+                return request(LiveInput::Confirm, time_ns);
+            case study::PressAction::Pause:
+                return request(live_->screen().paused ? LiveInput::Resume : LiveInput::Pause,
+                               time_ns);
+        }
+    }
+
+    // Whether anyone can answer, once the runtime had its syncs to bind a controller: a change
+    // goes to stderr and the log tail; while nobody can, the window's status line says so.
+    void watch_binding() {
+        const bool focused = headset_.phase() == headset::SessionPhase::Focused;
+        if (const std::optional<std::string> change = answers_.after_sync(headset_, focused)) {
+            std::cerr << *change << "\n";
+            log_tail_.push_back(*change);
         }
     }
 
@@ -571,6 +604,7 @@ class HeadsetLoop {
         view.note_status = note_status_;
         view.status_line =
             std::string("session ") + std::string(headset::session_phase_name(headset_.phase()));
+        if (answers_.cannot_answer()) view.status_line = *answers_.cannot_answer();
         return view;
     }
 
@@ -648,6 +682,7 @@ class HeadsetLoop {
     std::string note_status_;  // the last note's outcome, for the note field
     bool unblinded_ = false;
     bool screenshot_saved_ = false;
+    ParticipantAnswers& answers_;  // keys, a response device, the controller's binding
 };
 
 // The experimenter window when wanted and possible, and the instance and device extensions it
@@ -687,8 +722,19 @@ study::SessionStatus run_headset_session(
     const study::Protocol& protocol, ImportedStudyScenes imported, study::Observer* observer,
     const std::function<double(const study::ScheduledTrial&)>& trial_error_px,
     const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
+    // The answer keys first: a bad option or an unreadable device stops before the headset.
+    const study::ResponseSettings responses =
+        resolve_responses(protocol.responses, options.keys, options.response_device);
     vk_core::ContextOptions context_options = global.context_options();
     const bool window = want_window(options, context_options);
+    ParticipantAnswers answers(responses, window, observer != nullptr);
+    if (responses.enabled) {
+        std::cerr << "answers: " << study::describe_responses(responses) << "\n";
+        if (!window && responses.device.empty()) {
+            std::cerr << "the answer keys are read from the experimenter window, and there is "
+                         "none (--window off, or no display): only the controller answers\n";
+        }
+    }
     // OpenXR goes before Vulkan on every way out (headset_device.h); what renders is declared
     // after the device, so it goes before both.
     const headset::HeadsetDevice device = open_headset(options, global, context_options);
@@ -700,6 +746,7 @@ study::SessionStatus run_headset_session(
     std::cerr << "eye swapchains: " << extent.width << " x " << extent.height << "\n";
     std::unique_ptr<window::ExperimenterWindow> experimenter;
     if (window) experimenter = window::ExperimenterWindow::create(ctx, {}, extent).value_or_throw();
+    if (experimenter) experimenter->set_response_keys(window_bindings(responses));
 
     const std::int64_t session_id = begin(headset.runtime_name(), ctx.device_info().name);
     // Sessions of schema version 1 recorded no detail: they rendered at the default, low.
@@ -710,7 +757,7 @@ study::SessionStatus run_headset_session(
     std::string loss;  // the lost runtime's message; empty if it was not lost
     {
         HeadsetLoop loop(options, protocol, store, session_id, headset, ctx, experimenter.get(),
-                         renderers, observer, trial_error_px);
+                         renderers, observer, trial_error_px, answers);
         loop.run();
         finished = loop.finished();
         if (headset.lost()) loss = loop.loss_message();

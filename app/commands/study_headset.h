@@ -35,6 +35,11 @@ struct HeadsetStudyOptions {
     // auto: each eye's depth goes with its colour when the runtime offers
     // XR_KHR_composition_layer_depth; off: never (docs/headsets.md, "Depth submission").
     std::string layer_depth = "auto";
+    // The participant's answer keys over the protocol's [responses] (docs/study.md, "Answers from
+    // a keyboard or response box"): --keys (default, none or switch=KEY,confirm=KEY) and
+    // --response-device (an evdev device). Empty: the protocol's.
+    std::string keys;
+    std::string response_device;
     // Simulated runtime only:
     std::string sim_script;    // a simxr script; empty: one is written from the options below
     std::string hmd = "vive";  // the simulated headset's profile

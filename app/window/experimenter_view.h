@@ -58,7 +58,9 @@ struct ExperimenterView {
 
 // One request of the experimenter (or of the keyboard in a desktop dry run). Answer carries
 // `item` (0-based) and `value` (1..scale_points); Unblind carries value 1 (show the modes) or 0
-// (hide them again); Note carries the note's `text`, to be stored at once.
+// (hide them again); Note carries the note's `text`, to be stored at once. Switch and Confirm
+// from one of the participant's answer keys ([responses], app/window/response_key_input.h) carry
+// the key's X name in `key`; the experimenter's own keys and buttons leave it empty.
 struct Command {
     enum class Kind {
         Switch,
@@ -74,6 +76,7 @@ struct Command {
     int item = 0;
     int value = 0;
     std::string text;
+    std::string key;
 };
 
 }  // namespace monoplane::window

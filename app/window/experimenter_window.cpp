@@ -17,6 +17,7 @@ struct ExperimenterWindow::Impl {
     std::unique_ptr<DesktopWindow> desktop;
     std::unique_ptr<MirrorTexture> mirror;
     PanelState panels;
+    std::vector<ResponseKeyBinding> response_keys;
 
     static void bind_mirror(const ImDrawList* list, const ImDrawCmd* command);
 };
@@ -83,6 +84,10 @@ std::vector<Command> ExperimenterWindow::frame(const ExperimenterView& view) {
     const bool typing = ImGui::GetIO().WantTextInput;
     for (const KeyPress& press : s.desktop->take_key_presses()) {
         if (typing) break;
+        if (const ResponseKeyBinding* binding = find_binding(s.response_keys, press.key)) {
+            commands.push_back(Command{.kind = binding->kind, .key = binding->name});
+            continue;
+        }
         if (auto command = command_for_key(press.key, view.phase)) commands.push_back(*command);
     }
 
@@ -99,6 +104,10 @@ std::vector<Command> ExperimenterWindow::frame(const ExperimenterView& view) {
     commands.insert(commands.end(), clicked.begin(), clicked.end());
     s.desktop->end_frame();
     return commands;
+}
+
+void ExperimenterWindow::set_response_keys(std::vector<ResponseKeyBinding> bindings) {
+    impl_->response_keys = std::move(bindings);
 }
 
 bool ExperimenterWindow::close_requested() const {

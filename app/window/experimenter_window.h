@@ -14,6 +14,7 @@
 #include "app/window/experimenter_view.h"
 #include "app/window/key_commands.h"
 #include "app/window/mirror_texture.h"
+#include "app/window/response_key_input.h"
 #include "common/result.h"
 #include "renderer/vk/context.h"
 
@@ -56,6 +57,12 @@ class ExperimenterWindow {
     // app's frame commands were submitted and waited for (same queue, single-threaded). While
     // minimised it draws nothing but still returns commands.
     std::vector<Command> frame(const ExperimenterView& view);
+
+    // The participant's answer keys ([responses]): from then on a press of one of them is a
+    // Switch or Confirm carrying the key's name, in any phase (the session decides what it
+    // changes), instead of the experimenter's own command for that key. Like every key, they are
+    // not read while a text field has the focus. Any time.
+    void set_response_keys(std::vector<ResponseKeyBinding> bindings);
 
     // Whether the experimenter closed the window (the app decides what that means).
     bool close_requested() const;
