@@ -25,7 +25,8 @@ std::string countdown_text(std::int64_t remaining_ns);
 // The lines under a page's text: what the controller's buttons do there. Instructions
 // "Page 2 of 3 - CONFIRM: next, SWITCH: back" (no SWITCH on the first page; a single page
 // "Press CONFIRM to begin"); ready "Press CONFIRM to begin"; a break "Break: 0:23", then
-// "Press CONFIRM to continue"; the end screen none. ASCII: the headset's font has no more.
+// "Press CONFIRM to continue"; the end screen none. In English and ASCII: every protocol's font
+// must draw them (study/protocol_font.h, kPromptCharacters).
 std::vector<std::string> page_footer(const study::LiveScreen& screen);
 
 // Everything a page's image shows, as one string: a different one needs a new image (a break's
