@@ -632,9 +632,9 @@ void LauncherPanels::draw_start_button() {
     }
     ImGui::BeginDisabled(!enabled);
     if (ImGui::Button("Start (Ctrl+Enter)")) start();
+    controls_.mark("start");  // inside BeginDisabled: recorded as disabled
     ImGui::EndDisabled();
     ImGui::PopStyleColor(enabled ? 2 : 3);
-    controls_.mark("start");
 }
 
 // The equivalent command, wrapped only between words (a path is never split), and a button that
@@ -734,8 +734,8 @@ void LauncherPanels::draw_roster_line(const RosterLine& line) {
             else
                 ui_.action_message = request.error().message;
         }
-        ImGui::EndDisabled();
         controls_.mark("resume:" + std::to_string(row.session_id));
+        ImGui::EndDisabled();
         if (!line.resume_refusal.empty()) {
             ImGui::SameLine();
             ImGui::TextColored(kError, "%s", line.resume_refusal.c_str());

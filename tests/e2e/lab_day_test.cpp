@@ -306,7 +306,8 @@ TEST_F(LabDayTest, TheProtocolsFolderIsWatchedAndAFullPathIsAccepted) {
     const fs::path dir = prepare({});
     fs::create_directories(dir / "elsewhere");
     std::ofstream(dir / "elsewhere" / "far.toml") << "name = \"far\"\n" << kTiny.substr(14);
-    Lab lab(dir, {"--protocols", (dir / "later").string()});
+    Lab lab(dir, {"--db", (dir / "lab.sqlite").string(), "--protocols", (dir / "later").string()},
+            LabStart{false, {}});
     ASSERT_TRUE(lab.focus()) << lab.log();
     ASSERT_TRUE(lab.wait_step("protocol")) << lab.log();
     EXPECT_NE(lab.state()["protocols"]["message"], "") << lab.state().dump(1);
@@ -401,7 +402,8 @@ TEST_F(LabDayTest, TabReachesEveryControlAndEnterPicksInACombo) {
     for (int i = 0; i < 3; ++i) {
         xdo("key Tab");
         std::this_thread::sleep_for(std::chrono::milliseconds(300));
-        for (const auto& [name, c] : lab.state()["controls"].items())
+        const json controls = lab.state()["controls"];
+        for (const auto& [name, c] : controls.items())
             if (c["focused"] == true) reached.push_back(name);
     }
     EXPECT_EQ(reached, (std::vector<std::string>{"open", "create", "database"}));
@@ -447,8 +449,8 @@ TEST_F(LabDayTest, TheShownCommandIsTheSessionsAndAFailedStartSaysSo) {
     const std::vector<std::string> arguments = start["arguments"];
     const std::vector<std::string> tail(arguments.end() - 12, arguments.end());
     EXPECT_EQ(tail, (std::vector<std::string>{"--detail", "test", "--resolution-scale", "0.1",
-                                              "--neutral-s", "0.3", "--end-s", "0", "--sim-rate",
-                                              "5", "--sim-script", script.string()}))
+                                              "--neutral-s", "0.3", "--end-s", "0", "--sim-script",
+                                              script.string(), "--sim-rate", "5"}))
         << start.dump(1);
     EXPECT_EQ(start["command_line"], lab::shell_command_line(arguments));
     EXPECT_NE(start["command_line"].get<std::string>().find("'" + script.string() + "'"),
