@@ -166,6 +166,18 @@ TEST_F(HeadsetSessionTest, DemoSessionThroughTheSimulatedRuntime) {
     for (const auto& t : *trials) counted += t.outcome.switches;
     EXPECT_EQ(switched, counted);
     EXPECT_GT(refused, 0);  // the script confirms too early in some trials
+    // Every button press is logged with its source, whatever it changed: a switch that showed
+    // the other label was a press, and so were the refused ones.
+    const auto presses = (*store)->presses(1);
+    ASSERT_TRUE(presses) << presses.error().message;
+    int switch_presses = 0;
+    for (const auto& p : *presses) {
+        EXPECT_EQ(p.source, study::PressSource::Controller);
+        EXPECT_EQ(p.key, "");
+        switch_presses += p.action == study::PressAction::Switch;
+    }
+    EXPECT_GE(switch_presses, switched);
+    EXPECT_GT(presses->size(), static_cast<std::size_t>(switched + refused));
 
     // A data trial comparing stereo with hybrid at m = 3: its label 1 and label 2 frames.
     const study::TrialRecord* chosen = nullptr;
