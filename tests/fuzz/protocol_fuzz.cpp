@@ -13,11 +13,10 @@
 namespace monoplane {
 namespace {
 
-// A screen's text: not blank, at most kMaxPageCharacters (every accepted character but the
-// typographic ones is one byte, and those are 2 or 3).
+// A screen's text: not blank, at most kMaxPageCharacters (UTF-8: at most 4 bytes each).
 bool page_ok(const std::string& text) {
     return !text.empty() && text.find_first_not_of(" \t\n") != std::string::npos &&
-           text.size() <= 3 * study::kMaxPageCharacters;
+           text.size() <= 4 * study::kMaxPageCharacters;
 }
 
 bool variable_ok(const study::ParticipantVariable& v) {
@@ -60,6 +59,7 @@ std::string broken_day_promise(const study::Protocol& p) {
             (day.blocking == study::Blocking::None || p.procedure == study::Procedure::Staircase))
             return "breaks between blocks without blocks";
     }
+    if (day.font.find_first_not_of(" \t\n") == std::string::npos) return "a blank [text] font";
     if (day.variables.size() > study::kMaxVariables) return "too many variables";
     for (const study::ParticipantVariable& v : day.variables) {
         if (!variable_ok(v)) return "a bad variable " + v.name;
@@ -104,7 +104,8 @@ sessions repetitions blocking text_height_deg [[instructions]] [ready] [breaks] 
 [[variables]] text every_trials between_blocks min_s name type min max choices required help
 "scene" "integer" "number" "choice" "text" true false 0 1 1800 1801 -1 0.4 50 51 ["a","a"]
 """multi
-line""" "\u00fc" "\u2013"
+line""" "\u00fc" "\u2013" "\u4e2d\u3002" "\u05e9" "e\u0301" "\U0001F600" [text] font
+"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
 )");
     for (const study::RenderMode mode : study::all_render_modes())
         dictionary.push_back("\"" + std::string(study::render_mode_name(mode)) + "\"");
