@@ -153,6 +153,9 @@ void write_export(const ExportData& data, ExportFormat format, std::ostream& out
         case ExportFormat::NotesCsv:
             write_notes_csv(data, out);
             return;
+        case ExportFormat::PressesCsv:
+            write_presses_csv(data, out);
+            return;
     }
 }
 
@@ -202,6 +205,8 @@ std::string_view export_format_name(ExportFormat format) {
             return "frames-csv";
         case ExportFormat::NotesCsv:
             return "notes-csv";
+        case ExportFormat::PressesCsv:
+            return "presses-csv";
     }
     return "csv";
 }
@@ -211,9 +216,10 @@ Result<ExportFormat> parse_export_format(std::string_view name) {
     if (name == "json") return ExportFormat::Json;
     if (name == "frames-csv") return ExportFormat::FramesCsv;
     if (name == "notes-csv") return ExportFormat::NotesCsv;
+    if (name == "presses-csv") return ExportFormat::PressesCsv;
     return Error{"unknown export format '" + std::string(name) +
-                 "'; use csv, json, frames-csv (the frame and head log) or notes-csv (the "
-                 "sessions' notes)"};
+                 "'; use csv, json, frames-csv (the frame and head log), notes-csv (the "
+                 "sessions' notes) or presses-csv (the participant's presses)"};
 }
 
 OutputKind export_output_kind(ExportFormat format) {
@@ -231,6 +237,10 @@ OutputKind export_output_kind(ExportFormat format) {
         case ExportFormat::NotesCsv:
             return {"notes-csv export", [](std::string_view head) {
                         return csv_header_starts_with(head, notes_export_columns(), 7);
+                    }};
+        case ExportFormat::PressesCsv:
+            return {"presses-csv export", [](std::string_view head) {
+                        return csv_header_starts_with(head, presses_export_columns(), 8);
                     }};
     }
     return {"export", [](std::string_view) { return false; }};
@@ -324,6 +334,7 @@ std::vector<std::string> declared_variables(const std::map<std::int64_t, Session
 
 Result<ExportData> collect_export(const StudyStore& store, ExportFormat format) {
     if (format == ExportFormat::NotesCsv) return collect_notes(store);
+    if (format == ExportFormat::PressesCsv) return collect_presses(store);
     Result<std::vector<TrialRecord>> trials = store.trials();
     MONOPLANE_TRY(trials);
     ExportData data;

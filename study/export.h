@@ -26,22 +26,24 @@
 namespace monoplane::study {
 
 // Csv and Json: the trials; FramesCsv: the frame and head log of every headset session;
-// NotesCsv: the notes of every session.
-enum class ExportFormat { Csv, Json, FramesCsv, NotesCsv };
+// NotesCsv: the notes of every session; PressesCsv: every press of the participant's controller
+// and keys, with its source (study/response_press.h).
+enum class ExportFormat { Csv, Json, FramesCsv, NotesCsv, PressesCsv };
 
-// "csv", "json", "frames-csv" or "notes-csv", as the CLI's --format takes them.
+// "csv", "json", "frames-csv", "notes-csv" or "presses-csv", as the CLI's --format takes them.
 std::string_view export_format_name(ExportFormat format);
 Result<ExportFormat> parse_export_format(std::string_view name);
 
 // What an export holds: the trials and the sessions they belong to, keyed by session id.
 struct ExportData {
     std::vector<TrialRecord> trials;
-    // The trials' sessions; for NotesCsv every session of the database, trials or not.
+    // The trials' sessions; for NotesCsv and PressesCsv every session of the database.
     std::map<std::int64_t, SessionInfo> sessions;
     // The participant variables the sessions' protocols declare, in first-seen declaration order
     // (sessions in id order); variable_columns() adds any a session has a value for.
     std::vector<std::string> variable_names;
     std::map<std::int64_t, std::vector<FrameRecord>> frames;  // FramesCsv only, per session
+    std::map<std::int64_t, std::vector<ResponsePress>> presses;  // PressesCsv only, per session
     // Staircase sessions: each scene's staircase estimate after each decided adaptive trial, by
     // session and trial index (replayed from the stored decisions; study/staircase_estimates.h).
     std::map<std::int64_t, std::map<int, ThresholdEstimate>> staircase_estimates;
@@ -67,6 +69,8 @@ std::vector<std::string> variable_columns(const ExportData& data);
 const std::vector<std::string_view>& frame_export_columns();
 // The notes' columns (notes-csv), in order.
 const std::vector<std::string_view>& notes_export_columns();
+// The presses' columns (presses-csv), in order (study/press_export.cpp).
+const std::vector<std::string_view>& presses_export_columns();
 
 // How an earlier export of `format` is recognised, for check_output (study/output_file.h): a
 // CSV by the start of its header line, the JSON export by its shape (an array of objects whose
@@ -80,6 +84,10 @@ void write_json(const ExportData& data, std::ostream& out);
 void write_frames_csv(const ExportData& data, std::ostream& out);
 // One row per note, sessions in id order, each session's notes in the order they were noted.
 void write_notes_csv(const ExportData& data, std::ostream& out);
+// One row per press, sessions in id order, each session's presses in the order logged.
+void write_presses_csv(const ExportData& data, std::ostream& out);
+// Every session of the database with its presses (what PressesCsv writes).
+Result<ExportData> collect_presses(const StudyStore& store);
 
 // Collects and writes. The path form first checks `path` and the record of its source beside
 // it (`path`.source, study/export_source.h) with check_output's rules (the store's own file is an

@@ -147,11 +147,13 @@ void add_resume_command(CLI::App* study, const std::shared_ptr<StudyOptions>& op
 }
 
 void add_export_command(CLI::App* study, const std::shared_ptr<StudyOptions>& options) {
-    CLI::App* exp = study->add_subcommand("export", "Export the trials, frames or notes");
+    CLI::App* exp =
+        study->add_subcommand("export", "Export the trials, frames, notes or presses");
     exp->add_option("--db", options->db, "Study database (SQLite)")->required();
     exp->add_option("--format", options->format,
                     "csv or json (the trials), frames-csv (the frame and head log of headset "
-                    "sessions) or notes-csv (the sessions' notes)")
+                    "sessions), notes-csv (the sessions' notes) or presses-csv (every press of "
+                    "the participant's controller and keys, with its source)")
         ->capture_default_str();
     exp->add_option("--out", options->out,
                     "Output file: written beside and renamed into place, with FILE.source (the "

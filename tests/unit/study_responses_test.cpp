@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 #include <string>
 
+#include "study/export.h"
 #include "study/live_session.h"
 #include "study/protocol.h"
 #include "study/response_keys.h"
@@ -258,6 +260,31 @@ TEST(ResponsePresses, TheStoreKeepsEachPressWithItsSource) {
     EXPECT_EQ((*presses)[2].source, PressSource::Controller);
     EXPECT_EQ((*presses)[2].action, PressAction::Pause);
     EXPECT_EQ((*presses)[2].key, "");
+}
+
+TEST(PressesExport, OneRowPerPressWithItsSource) {
+    EXPECT_EQ(*parse_export_format("presses-csv"), ExportFormat::PressesCsv);
+    EXPECT_EQ(export_format_name(ExportFormat::PressesCsv), "presses-csv");
+    EXPECT_NE(parse_export_format("press").error().message.find("presses-csv"), std::string::npos);
+    ExportData data;
+    SessionInfo info;
+    info.participant_code = "P7";
+    info.session_number = 2;
+    data.sessions.emplace(4, info);
+    data.presses[4] = {{PressSource::Controller, PressAction::Switch, "", "neutral", -1, 5},
+                       {PressSource::Keyboard, PressAction::Confirm, "Return", "trial", 3, 70},
+                       {PressSource::Device, PressAction::Switch, "Left", "trial", 3, 90}};
+    std::ostringstream out;
+    write_presses_csv(data, out);
+    EXPECT_EQ(out.str(),
+              "participant,session,trial,screen,source,action,key,time_ns\n"
+              "P7,2,NA,neutral,controller,switch,NA,5\n"
+              "P7,2,3,trial,keyboard,confirm,Return,70\n"
+              "P7,2,3,trial,device,switch,Left,90\n");
+    // An earlier presses export is recognised by its header.
+    EXPECT_TRUE(
+        export_output_kind(ExportFormat::PressesCsv)
+            .is_earlier_output("participant,session,trial,screen,source,action,key,time_ns\n"));
 }
 
 }  // namespace

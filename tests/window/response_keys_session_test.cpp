@@ -219,6 +219,27 @@ TEST_F(ResponseKeysSession, KeysInTheWindowAnswerWithoutAController) {
     EXPECT_GE(in_trial, 2);
     // Every switch the trial counts came from a logged key press.
     EXPECT_LE((*trials)[0].outcome.switches, switches);
+
+    // The export shows each press with its source.
+    const fs::path csv = dir_ / "presses.csv";
+    ASSERT_EQ(std::system((std::string(MONOPLANE_EXE) + " study export --db " +
+                           (dir_ / "k.sqlite").string() + " --format presses-csv --out " +
+                           csv.string() + " > /dev/null 2>&1")
+                              .c_str()),
+              0);
+    std::ifstream rows(csv);
+    std::string line;
+    std::getline(rows, line);
+    EXPECT_EQ(line, "participant,session,trial,screen,source,action,key,time_ns");
+    std::size_t exported = 0;
+    while (std::getline(rows, line)) {
+        ++exported;
+        EXPECT_TRUE(line.starts_with("K1,1,")) << line;
+        EXPECT_TRUE(line.find(",keyboard,switch,Left,") != std::string::npos ||
+                    line.find(",keyboard,confirm,Return,") != std::string::npos)
+            << line;
+    }
+    EXPECT_EQ(exported, presses->size());
 }
 
 TEST_F(ResponseKeysSession, WithoutControllerOrKeysTheExperimenterIsToldAtOnce) {
