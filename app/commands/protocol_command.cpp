@@ -57,6 +57,7 @@ void print_study_day(const study::Protocol& p) {
     std::cout << "  screens:       " << d.instructions.size() << " instruction page(s)"
               << (d.ready ? ", a ready screen" : "") << (d.end ? ", an end screen" : "")
               << "; text " << number(d.text_height_deg) << " degrees high\n";
+    std::cout << "  font:          " << d.font << "\n";  // [text] font, every character checked
     if (d.breaks) {
         std::cout << "  breaks:        ";
         if (d.breaks->every_trials > 0)
