@@ -159,7 +159,8 @@ alternatives = ["stereo", "hybrid"]
 TEST(StudyDayProtocol, PagesInOtherLanguagesAreAccepted) {
     for (const std::string page :
          {"Dr\u00fccken Sie SCHALTER, um zu wechseln. Gr\u00fc\u00dfe!",
-          "\u03a0\u03b1\u03c4\u03ae\u03c3\u03c4\u03b5 \u0395\u039d\u0391\u039b\u039b\u0391\u0393\u0397",
+          "\u03a0\u03b1\u03c4\u03ae\u03c3\u03c4\u03b5 "
+          "\u0395\u039d\u0391\u039b\u039b\u0391\u0393\u0397",
           "\u041d\u0430\u0436\u043c\u0438\u0442\u0435 \u041f\u0415\u0420\u0415\u041a\u041b",
           "\u8bf7\u6309\u786e\u8ba4\u952e\u5f00\u59cb\u3002"}) {
         const Result<Protocol> p = parse_protocol(
