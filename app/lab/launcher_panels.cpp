@@ -744,8 +744,11 @@ void LauncherPanels::draw_roster_line(const RosterLine& line) {
     ImGui::PopID();
 }
 
-// The footer's height is measured as drawn, for the next frame's roster to leave it room.
+// The footer sits at the bottom of the window, whatever its size; its height is measured as
+// drawn, for the next frame's roster to leave it room.
 void LauncherPanels::draw_footer() {
+    const float bottom = ImGui::GetWindowHeight() - footer_height_;
+    if (footer_height_ > 0.0f && ImGui::GetCursorPosY() < bottom) ImGui::SetCursorPosY(bottom);
     const float top = ImGui::GetCursorPosY();
     ImGui::Spacing();
     ImGui::Separator();

@@ -386,7 +386,8 @@ TEST_F(LabWindowTest, HeadsetCheckConfirmedShowsTheRuntimesMeasurements) {
         write_check_script(dir,
                            "[[input]]\nt = 0.3\npath = \"/user/hand/right/input/trackpad/click\"\n"
                            "duration = 0.05\n");
-    Lab lab(dir, {"--sim-script", script.string()});
+    // --observer none: the script's controller answers, not the simulated observer.
+    Lab lab(dir, {"--sim-script", script.string(), "--observer", "none"});
     const json probed = reach_headset_step(lab, "P05");
     EXPECT_EQ(probed["runtime"].get<std::string>().rfind("monoplane simxr ", 0), 0u) << probed;
     EXPECT_GT(probed["width"], 0);
@@ -420,7 +421,7 @@ TEST_F(LabWindowTest, HeadsetCheckConfirmedShowsTheRuntimesMeasurements) {
 TEST_F(LabWindowTest, HeadsetCheckRuntimeLostShowsTheMessage) {
     const fs::path dir = prepare({});
     const fs::path script = write_check_script(dir, "lose_session_at_s = 0.2\n");
-    Lab lab(dir, {"--sim-script", script.string()});
+    Lab lab(dir, {"--sim-script", script.string(), "--observer", "none"});
     reach_headset_step(lab, "P06");
     xdo("key ctrl+h");
     ASSERT_TRUE(wait_for([&] { return lab.state()["headset"]["check"] != ""; }, 120))
