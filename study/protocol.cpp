@@ -575,7 +575,7 @@ Result<Protocol> load_protocol(const std::filesystem::path& path) {
                      "protocol's .toml file"};
     Result<Protocol> protocol = parse_protocol(*text, path.string(), path.parent_path());
     MONOPLANE_TRY(protocol);
-    MONOPLANE_TRY(check_protocol_font(protocol.value(), path.parent_path()));
+    MONOPLANE_TRY(check_protocol_font(protocol.value()));
     return protocol;
 }
 

@@ -94,11 +94,8 @@ void check_text(const ShownText& shown, const text::Font& font, std::string_view
 
 }  // namespace
 
-Result<void> check_protocol_font(Protocol& protocol, const std::filesystem::path& folder) {
-    std::filesystem::path path = protocol.day.font;
-    if (path.is_relative()) path = folder / path;
-    protocol.day.font = path.string();
-    Result<std::shared_ptr<const text::Font>> font = text::cached_font(path);
+Result<void> check_protocol_font(const Protocol& protocol) {
+    Result<std::shared_ptr<const text::Font>> font = text::cached_font(protocol.day.font);
     if (!font.ok()) {
         return Error{protocol.source + ": [text] font: " + font.error().message +
                      " (docs/protocols.md, \"Languages\")"};

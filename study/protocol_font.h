@@ -5,8 +5,6 @@
 // on the machine that ran the session, and reading results needs no fonts.
 #pragma once
 
-#include <filesystem>
-
 #include "common/result.h"
 #include "study/protocol.h"
 
@@ -17,12 +15,12 @@ namespace monoplane::study {
 inline constexpr std::string_view kPromptCharacters =
     "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789 :/.,()[]-=";
 
-// Resolves protocol.day.font (a relative path against `folder`, the protocol file's) and checks
-// that the font opens and draws every character of the pages ([[instructions]], [ready],
-// [breaks], [end]), the questionnaire's items and kPromptCharacters. Each missing character is
-// one located problem "FILE:LINE:COL: key 'K': 'ä' (U+00E4) is not in the font ..." at the line
-// where it is written; a questionnaire item that needs text shaping is refused too (pages are
-// refused so when parsed). May be called on a protocol parse_protocol accepted.
-Result<void> check_protocol_font(Protocol& protocol, const std::filesystem::path& folder);
+// Checks that protocol.day.font (an absolute path) opens and draws every character of the pages
+// ([[instructions]], [ready], [breaks], [end]), the questionnaire's items and kPromptCharacters.
+// Each missing character is one located problem "FILE:LINE:COL: key 'K': 'ä' (U+00E4) is not in the
+// font ..." at the line where it is written; a questionnaire item that needs text shaping is
+// refused too (pages are refused so when parsed). May be called on a protocol parse_protocol
+// accepted.
+Result<void> check_protocol_font(const Protocol& protocol);
 
 }  // namespace monoplane::study

@@ -67,8 +67,7 @@ struct StudyDaySettings {
     // The height of a capital letter on the screens, degrees of visual angle.
     double text_height_deg = 1.0;
     // [text] font: the font file the screens and questionnaire are drawn with in the headset
-    // (docs/protocols.md, "Languages"); as written, until load_protocol resolves a relative
-    // path against the protocol file's folder.
+    // (docs/protocols.md, "Languages"); an absolute path.
     std::string font = text::kDefaultFontPath;
 
     bool has_screens() const {

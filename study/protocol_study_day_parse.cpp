@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
@@ -533,6 +534,14 @@ void read_text(const TomlScope& root, StudyDaySettings& day, TomlProblems& probl
                                          "is empty; give the path of a font file, or leave the "
                                          "key out for the default (" +
                                          std::string(text::kDefaultFontPath) + ")");
+        return;
+    }
+    // Absolute: a resumed session reads its stored protocol text, away from the file's folder.
+    if (!std::filesystem::path(font->get()).is_absolute()) {
+        problems.add(node->source(), toml_key_prefix("text.font") + in_quotes(font->get()) +
+                                         " is a relative path; give the font file's absolute "
+                                         "path (fc-list lists them), so that a resumed session "
+                                         "finds it too");
         return;
     }
     day.font = font->get();

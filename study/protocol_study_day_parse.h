@@ -43,7 +43,7 @@ inline constexpr std::size_t kMaxVariableHelp = 200;
 // or with one that needs text shaping (text/complex_scripts.h: Arabic, Hebrew, the Indic
 // scripts, combining marks; whether the font has each character is checked when the file is
 // loaded, protocol_font.h); more than 50 instruction pages; [text] with a font that is not a
-// non-empty string;
+// non-empty absolute path;
 // [breaks] with neither every_trials > 0 nor between_blocks = true, every_trials outside
 // 0..1000, min_s outside [0, 1800], between_blocks with blocking = "none"; variables without a
 // name or type, a name that is not [a-z][a-z0-9_]* of at most 32 characters or is declared

@@ -89,22 +89,26 @@ TEST_F(ProtocolFont, ACjkFontDrawsTheChinesePage) {
               std::string::npos);
 }
 
-TEST_F(ProtocolFont, ARelativeFontIsTheProtocolFoldersAndAMissingOneIsNamed) {
-    fs::create_directories(dir_ / "fonts");
-    fs::copy_file(text::kDefaultFontPath, dir_ / "fonts" / "sans.ttf");
-    const Result<Protocol> p =
-        load_protocol(write("rel.toml", kProtocol.substr(0, kProtocol.find("\nChinese")) +
-                                            "\"\"\"\n[text]\nfont = \"fonts/sans.ttf\"\n"));
-    ASSERT_TRUE(p.ok()) << p.error().message;
-    EXPECT_EQ(p->day.font, (dir_ / "fonts" / "sans.ttf").string());
-    const fs::path file = write("missing.toml", kProtocol + "[text]\nfont = \"nowhere.ttf\"\n");
+TEST_F(ProtocolFont, ARelativeFontIsRefusedAndAMissingOneIsNamed) {
+    // A resumed session reads the stored protocol away from its folder: absolute paths only.
+    const fs::path relative = write("rel.toml", kProtocol + "[text]\nfont = \"fonts/sans.ttf\"\n");
+    const Result<Protocol> p = load_protocol(relative);
+    ASSERT_FALSE(p.ok());
+    EXPECT_EQ(p.error().message, relative.string() +
+                                     ":11:8: key 'text.font': 'fonts/sans.ttf' is a relative path; "
+                                     "give the font file's absolute path (fc-list lists them), so "
+                                     "that a resumed session finds it too");
+    const fs::path nowhere = dir_ / "nowhere.ttf";
+    const fs::path file =
+        write("missing.toml", kProtocol + "[text]\nfont = \"" + nowhere.string() + "\"\n");
     const Result<Protocol> missing = load_protocol(file);
     ASSERT_FALSE(missing.ok());
     EXPECT_EQ(missing.error().message, file.string() + ": [text] font: no font file '" +
-                                           (dir_ / "nowhere.ttf").string() +
+                                           nowhere.string() +
                                            "' (docs/protocols.md, \"Languages\")");
     // Not a font at all: the protocol itself.
-    const fs::path self = write("self.toml", kProtocol + "[text]\nfont = \"self.toml\"\n");
+    const fs::path self = dir_ / "self.toml";
+    write("self.toml", kProtocol + "[text]\nfont = \"" + self.string() + "\"\n");
     const Result<Protocol> not_font = load_protocol(self);
     ASSERT_FALSE(not_font.ok());
     EXPECT_NE(not_font.error().message.find("is not a font FreeType can read"), std::string::npos)
