@@ -111,7 +111,7 @@ std::vector<Row> rows() {
          with(usable(), {{"run", "done (migrated; FILE.schema7.bak kept)"},
                          {"resume", "done (migrated; FILE.schema7.bak kept)"},
                          {"note", "done (migrated; FILE.schema7.bak kept)"}})},
-        {"newer schema", "schema version 9",
+        {"newer schema", "schema version 10",
          with(all("refused: newer than this build of monoplane knows"),
               {{"protocol check", "refused: not a protocol"}})},
         {"live session", "k9's session 1 held by a running process",
@@ -204,7 +204,7 @@ std::vector<std::string> make_state(const std::string& state, const fs::path& ba
         make_version7(base, db);
     } else if (state == "newer schema") {
         copy_base();
-        sql(db, "PRAGMA user_version = 9");
+        sql(db, "PRAGMA user_version = 10");
     } else if (state == "live session" || state == "interrupted") {
         copy_base();
         sql(db, "UPDATE sessions SET status = 'running', ended_utc = NULL WHERE id = 1");
