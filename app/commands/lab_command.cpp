@@ -347,6 +347,11 @@ void add_lab_command(CLI::App& root, const GlobalOptions& global) {
     cmd->callback([o, cmd, &global] {
         o->protocols_given = cmd->count("--protocols") > 0;
         o->session_arguments = given_session_options(*cmd);
+        // The program's own options go with every session too (they may follow the command).
+        std::vector<std::string> program;
+        if (!global.device.empty()) program = {"--device", global.device};
+        if (global.validation) program.push_back("--validation");
+        o->session_arguments.insert(o->session_arguments.begin(), program.begin(), program.end());
         run_lab(*o, global);
     });
 }

@@ -144,7 +144,7 @@ struct LauncherSettings {
     std::filesystem::path db;         // --db FILE; empty: chosen in the window
     std::filesystem::path protocols;  // --protocols DIR
     // How the messages about the participant's request name its inputs: `monoplane lab` gives
-    // `study run`'s option names (--var age=17), which its users read there too.
+    // launcher_request_names() (the window's fields), so a problem is said where it is fixed.
     study::RequestNames names = study::study_request_names();
     // LaunchRequest::session_arguments of every request.
     std::vector<std::string> session_arguments;

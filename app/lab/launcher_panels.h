@@ -20,9 +20,9 @@ class LauncherPanels {
     LauncherPanels(LauncherModel& model, LauncherUi& ui, LauncherActions actions)
         : model_(model), ui_(ui), actions_(std::move(actions)) {}
 
-    // A key press of the frame about to be drawn: the shortcuts (Ctrl+Right next step, Ctrl+Left
-    // back, Ctrl+Enter Start, Ctrl+H check the headset, Ctrl+E Export, Ctrl+R Analyse, Ctrl+Q
-    // quit). Between
+    // A key press of the frame about to be drawn: Tab and Shift+Tab (the next or previous
+    // control) and the shortcuts (Ctrl+Right next step, Ctrl+Left back, Ctrl+Enter Start, Ctrl+H
+    // check the headset, Ctrl+E Export, Ctrl+R Analyse, Ctrl+Q quit). Between
     // DesktopWindow::poll_events() and new_frame().
     void key(const window::KeyPress& press);
     // Draws the whole window for the model as it stands, acting on what was clicked. Between

@@ -452,10 +452,12 @@ TEST_F(LabDayTest, TheShownCommandIsTheSessionsAndAFailedStartSaysSo) {
         << lab.state().dump(1);
     const json start = lab.state()["start"];
     const std::vector<std::string> arguments = start["arguments"];
-    const std::vector<std::string> tail(arguments.end() - 12, arguments.end());
-    EXPECT_EQ(tail, (std::vector<std::string>{"--detail", "test", "--resolution-scale", "0.1",
-                                              "--neutral-s", "0.3", "--end-s", "0", "--sim-script",
-                                              script.string(), "--sim-rate", "5"}))
+    const std::vector<std::string> tail(arguments.end() - 13, arguments.end());
+    // The launcher runs with --validation (as every test): its sessions do too.
+    EXPECT_EQ(tail,
+              (std::vector<std::string>{"--validation", "--detail", "test", "--resolution-scale",
+                                        "0.1", "--neutral-s", "0.3", "--end-s", "0", "--sim-script",
+                                        script.string(), "--sim-rate", "5"}))
         << start.dump(1);
     EXPECT_EQ(start["command_line"], lab::shell_command_line(arguments));
     EXPECT_NE(start["command_line"].get<std::string>().find("'" + script.string() + "'"),
