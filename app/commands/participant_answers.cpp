@@ -51,19 +51,24 @@ std::vector<window::ResponseKeyBinding> window_bindings(const study::ResponseSet
     return bindings;
 }
 
-std::optional<AnswerPress> keyboard_press(const window::Command& command) {
+timespec monotonic_now() {
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return now;
+}
+
+std::optional<AnswerPress> keyboard_press(const window::Command& command,
+                                          std::optional<timespec> read) {
     if (command.key.empty()) return std::nullopt;
-    if (command.kind == window::Command::Kind::Switch) {
-        return AnswerPress{study::PressSource::Keyboard, study::PressAction::Switch, command.key};
-    }
-    if (command.kind == window::Command::Kind::Confirm) {
-        return AnswerPress{study::PressSource::Keyboard, study::PressAction::Confirm, command.key};
-    }
+    AnswerPress press{study::PressSource::Keyboard, study::PressAction::Switch, command.key, read};
+    if (command.kind == window::Command::Kind::Switch) return press;
+    press.action = study::PressAction::Confirm;
+    if (command.kind == window::Command::Kind::Confirm) return press;
     return std::nullopt;
 }
 
 AnswerPress controller_press(headset::Control control) {
-    AnswerPress press{study::PressSource::Controller, study::PressAction::Switch, ""};
+    AnswerPress press{study::PressSource::Controller, study::PressAction::Switch, "", {}};
     if (control == headset::Control::Confirm) press.action = study::PressAction::Confirm;
     if (control == headset::Control::Pause) press.action = study::PressAction::Pause;
     return press;
@@ -83,12 +88,13 @@ ParticipantAnswers::ParticipantAnswers(const study::ResponseSettings& responses,
 std::vector<AnswerPress> ParticipantAnswers::device_presses() {
     std::vector<AnswerPress> presses;
     if (!device_) return presses;
-    for (const int code : device_->take_presses().value_or_throw()) {
-        const std::optional<std::string_view> name = study::response_key_name(code);
+    for (const headset::DeviceKeyPress& down : device_->take_presses().value_or_throw()) {
+        const std::optional<std::string_view> name = study::response_key_name(down.code);
         if (!name) continue;
         const std::optional<study::ResponseAction> action = responses_.action_of(*name);
         if (!action) continue;  // the device's other keys answer nothing
-        presses.push_back({study::PressSource::Device, press_action(*action), std::string(*name)});
+        presses.push_back(
+            {study::PressSource::Device, press_action(*action), std::string(*name), down.time});
     }
     return presses;
 }

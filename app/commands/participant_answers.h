@@ -23,7 +23,14 @@ struct AnswerPress {
     study::PressSource source = study::PressSource::Keyboard;
     study::PressAction action = study::PressAction::Switch;
     std::string key;  // the X key name; empty for the controller
+    // Keys: when the key went down (a device's event) or was read (the window's poll), on
+    // CLOCK_MONOTONIC, for the runtime to convert; none for the controller (its time is the
+    // runtime's own).
+    std::optional<timespec> monotonic;
 };
+
+// CLOCK_MONOTONIC now. Any time.
+timespec monotonic_now();
 
 // The protocol's [responses] with `study run|resume --keys` and `--response-device` over it
 // (empty: not given). Throws UserError with the option's message. Pure.
@@ -35,9 +42,10 @@ study::ResponseSettings resolve_responses(const study::ResponseSettings& protoco
 // Every name of study/response_keys.h has a GLFW key (tested). Pure.
 std::vector<window::ResponseKeyBinding> window_bindings(const study::ResponseSettings& responses);
 
-// A Switch or Confirm the window read from an answer key (Command::key set) as a press; none for
-// the experimenter's own commands. Pure.
-std::optional<AnswerPress> keyboard_press(const window::Command& command);
+// A Switch or Confirm the window read from an answer key (Command::key set) as a press, read at
+// `read` (CLOCK_MONOTONIC); none for the experimenter's own commands. Pure.
+std::optional<AnswerPress> keyboard_press(const window::Command& command,
+                                          std::optional<timespec> read = std::nullopt);
 
 // The controller's press as one of the participant's.
 AnswerPress controller_press(headset::Control control);

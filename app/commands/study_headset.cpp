@@ -339,20 +339,30 @@ class HeadsetLoop {
             answer(controller_press(press.control), live_->session_time(press.time_ns));
         }
         for (const window::Command& c : window_commands_) {
-            // A key's time is the frame's: when the session saw it (docs/data.md, presses).
-            if (const std::optional<AnswerPress> press = keyboard_press(c)) {
-                answer(*press, now);
+            if (const std::optional<AnswerPress> press = keyboard_press(c, window_read_)) {
+                answer(*press, key_time(*press, now));
             } else {
                 window_command(c, now);
             }
         }
         window_commands_.clear();
-        for (const AnswerPress& press : answers_.device_presses()) answer(press, now);
+        for (const AnswerPress& press : answers_.device_presses()) {
+            answer(press, key_time(press, now));
+        }
         if (observer_input_) {
             for (LiveInput input : observer_input_->poll(live_->screen(), live_->progress(), now)) {
                 request(input, now);
             }
         }
+    }
+
+    // A key's time on the session's axis: its CLOCK_MONOTONIC time converted by the runtime
+    // (XR_KHR_convert_timespec_time), else the time of the frame that read it (docs/data.md,
+    // presses).
+    std::int64_t key_time(const AnswerPress& press, std::int64_t frame_ns) const {
+        if (!press.monotonic) return frame_ns;
+        const std::optional<std::int64_t> runtime = headset_.runtime_time(*press.monotonic);
+        return runtime ? live_->session_time(*runtime) : frame_ns;
     }
 
     // One press of the participant: logged, then requested as the controller's would be.
@@ -551,6 +561,7 @@ class HeadsetLoop {
 
     void update_window(const headset::HeadsetFrame& frame, const study::LiveScreen& screen,
                        std::int64_t now) {
+        window_read_ = monotonic_now();  // the window polls its keys first thing
         window_commands_ = experimenter_->frame(window_view(frame, screen, now));
         if (!options_.screenshot.empty() && frame.index == options_.screenshot_frame) {
             save_screenshot();
@@ -678,6 +689,7 @@ class HeadsetLoop {
     // The experimenter window's state.
     std::deque<std::string> log_tail_;
     std::vector<window::Command> window_commands_;
+    timespec window_read_{};  // when the window last polled its keys (CLOCK_MONOTONIC)
     std::vector<int> window_answers_;
     std::string note_status_;  // the last note's outcome, for the note field
     bool unblinded_ = false;

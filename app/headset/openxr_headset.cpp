@@ -3,6 +3,10 @@
 #include <vulkan/vulkan.h>
 // openxr_platform.h declares the Vulkan binding only when asked to and after vulkan.h.
 #define XR_USE_GRAPHICS_API_VULKAN
+// And XR_KHR_convert_timespec_time only with timespec asked for.
+#define XR_USE_TIMESPEC
+#include <time.h>
+
 #include <openxr/openxr.h>
 #include <openxr/openxr_platform.h>
 
@@ -189,6 +193,9 @@ struct OpenXrHeadset::Impl {
     PFN_xrCreateVulkanInstanceKHR create_vk_instance = nullptr;
     PFN_xrGetVulkanGraphicsDevice2KHR get_vk_device = nullptr;
     PFN_xrCreateVulkanDeviceKHR create_vk_device = nullptr;
+    // XR_KHR_convert_timespec_time, where offered: the runtime's time of a CLOCK_MONOTONIC time
+    // (an answer key's press).
+    PFN_xrConvertTimespecTimeToTimeKHR timespec_to_time = nullptr;
 
     Result<void> check(const char* call, XrResult result) const {
         if (!XR_FAILED(result)) return Ok{};
@@ -291,6 +298,9 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bo
     impl->depth_extension =
         layer_depth && offers(*extensions, XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
     if (impl->depth_extension) enabled.push_back(XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME);
+    // Optional: without it an answer key's time is that of the frame which read it.
+    const bool timespec = offers(*extensions, XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME);
+    if (timespec) enabled.push_back(XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME);
     for (const char* name : impl->validation.extensions()) enabled.push_back(name);
     MONOPLANE_TRY(impl->create_instance(enabled));
 
@@ -310,6 +320,11 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bo
     XrSystemProperties system_properties{XR_TYPE_SYSTEM_PROPERTIES};
     xrGetSystemProperties(impl->instance, impl->system, &system_properties);
     MONOPLANE_TRY(impl->load_vulkan_functions());
+    if (timespec && XR_FAILED(xrGetInstanceProcAddr(
+                        impl->instance, "xrConvertTimespecTimeToTimeKHR",
+                        reinterpret_cast<PFN_xrVoidFunction*>(&impl->timespec_to_time)))) {
+        impl->timespec_to_time = nullptr;
+    }
 
     std::unique_ptr<OpenXrHeadset> headset(new OpenXrHeadset(std::move(impl)));
     headset->runtime_name_ = std::string(properties.runtimeName) + " " +
@@ -761,6 +776,14 @@ Result<std::string> OpenXrHeadset::interaction_profile() const {
         return std::string(text);
     }
     return std::string();
+}
+
+std::optional<std::int64_t> OpenXrHeadset::runtime_time(const timespec& monotonic) const {
+    const Impl& x = *impl_;
+    if (x.timespec_to_time == nullptr || x.lost) return std::nullopt;
+    XrTime time = 0;
+    if (XR_FAILED(x.timespec_to_time(x.instance, &monotonic, &time))) return std::nullopt;
+    return time;
 }
 
 Result<void> OpenXrHeadset::request_exit() {

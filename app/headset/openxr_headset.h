@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <ctime>
 #include <memory>
 #include <optional>
 #include <string>
@@ -136,6 +137,10 @@ class OpenXrHeadset {
     // in an xrSyncActions of the running session. Only between create_session and
     // destroy_session.
     Result<std::string> interaction_profile() const;
+    // The runtime's time (XrTime) of a CLOCK_MONOTONIC time, through
+    // XR_KHR_convert_timespec_time (enabled when the runtime offers it: Monado and SteamVR do,
+    // simxr does not); none without it or once the runtime is lost. Any time after create().
+    std::optional<std::int64_t> runtime_time(const timespec& monotonic) const;
     // Asks the runtime to end the session (it answers with STOPPING).
     Result<void> request_exit();
     // Ends the session (unless the runtime is lost) and destroys it with its swapchains, after

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <linux/input.h>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -26,6 +27,10 @@ std::string response_device_error(const std::string& path, int error) {
 Result<ResponseDevice> ResponseDevice::open(const std::string& path) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) return Error{response_device_error(path, errno)};
+    // Event times on the clock the runtime converts (XR_KHR_convert_timespec_time), not the
+    // wall clock the kernel stamps by default.
+    int clock = CLOCK_MONOTONIC;
+    static_cast<void>(::ioctl(fd, EVIOCSCLOCKID, &clock));
     return ResponseDevice(fd, path);
 }
 
@@ -50,8 +55,8 @@ ResponseDevice::~ResponseDevice() {
     if (fd_ >= 0) ::close(fd_);
 }
 
-Result<std::vector<int>> ResponseDevice::take_presses() {
-    std::vector<int> presses;
+Result<std::vector<DeviceKeyPress>> ResponseDevice::take_presses() {
+    std::vector<DeviceKeyPress> presses;
     input_event events[64];
     for (;;) {
         const ssize_t n = ::read(fd_, events, sizeof events);
@@ -61,7 +66,9 @@ Result<std::vector<int>> ResponseDevice::take_presses() {
         if (n == 0) break;  // a pipe's writer closed (tests); a device never ends
         // The kernel hands out whole events only.
         for (std::size_t i = 0; i < static_cast<std::size_t>(n) / sizeof(input_event); ++i) {
-            if (events[i].type == EV_KEY && events[i].value == 1) presses.push_back(events[i].code);
+            const input_event& e = events[i];
+            if (e.type != EV_KEY || e.value != 1) continue;
+            presses.push_back({e.code, timespec{e.input_event_sec, e.input_event_usec * 1000}});
         }
     }
     return presses;

@@ -4,12 +4,21 @@
 // the session's frame loop polls it once a frame.
 #pragma once
 
+#include <ctime>
 #include <string>
 #include <vector>
 
 #include "common/result.h"
 
 namespace monoplane::headset {
+
+// A key going down on the device: its code (KEY_*) and the kernel's time of the event, on
+// CLOCK_MONOTONIC (asked for when the device is opened; a descriptor that is no evdev device
+// keeps what its writer put there).
+struct DeviceKeyPress {
+    int code = 0;
+    timespec time{};
+};
 
 class ResponseDevice {
   public:
@@ -27,10 +36,10 @@ class ResponseDevice {
     ResponseDevice& operator=(const ResponseDevice&) = delete;
     ~ResponseDevice();
 
-    // The keys pressed since the last call, as evdev codes (KEY_*), in order: EV_KEY events with
-    // value 1; releases (0) and autorepeats (2) are not presses. An error (the device was
-    // unplugged) names the path. Once a frame, from the thread that opened it.
-    Result<std::vector<int>> take_presses();
+    // The keys pressed since the last call, in order: EV_KEY events with value 1; releases (0)
+    // and autorepeats (2) are not presses. An error (the device was unplugged) names the path.
+    // Once a frame, from the thread that opened it.
+    Result<std::vector<DeviceKeyPress>> take_presses();
 
     const std::string& path() const { return path_; }
 

@@ -93,6 +93,11 @@ TEST(ParticipantAnswers, OnlyAnswerKeysArePresses) {
     EXPECT_EQ(press->source, study::PressSource::Keyboard);
     EXPECT_EQ(press->action, study::PressAction::Confirm);
     EXPECT_EQ(press->key, "Return");
+    EXPECT_FALSE(press->monotonic);  // no read time given
+    const timespec read{5, 6};
+    EXPECT_EQ(app::keyboard_press(Command{.kind = Command::Kind::Switch, .key = "Left"}, read)
+                  ->monotonic->tv_nsec,
+              6);
     // The experimenter's Enter, and a pause, are the experimenter's commands.
     EXPECT_FALSE(app::keyboard_press(Command{Command::Kind::Confirm}));
     EXPECT_FALSE(app::keyboard_press(Command{.kind = Command::Kind::Pause, .key = "p"}));
@@ -138,6 +143,8 @@ TEST(ResponseDevice, ReadsKeyPressesAndNothingElse) {
     EXPECT_TRUE(device.take_presses()->empty());  // nothing yet, and no wait
     const auto send = [&](int type, int code, int value) {
         input_event event{};
+        event.input_event_sec = 12;
+        event.input_event_usec = 345 + code;
         event.type = static_cast<__u16>(type);
         event.code = static_cast<__u16>(code);
         event.value = value;
@@ -151,7 +158,12 @@ TEST(ResponseDevice, ReadsKeyPressesAndNothingElse) {
     send(EV_KEY, KEY_ENTER, 1);
     const auto presses = device.take_presses();
     ASSERT_TRUE(presses) << presses.error().message;
-    EXPECT_EQ(*presses, (std::vector<int>{KEY_LEFT, KEY_ENTER}));
+    ASSERT_EQ(presses->size(), 2u);
+    EXPECT_EQ((*presses)[0].code, KEY_LEFT);
+    EXPECT_EQ((*presses)[1].code, KEY_ENTER);
+    // The event's own time, to the microsecond, for the runtime to convert.
+    EXPECT_EQ((*presses)[1].time.tv_sec, 12);
+    EXPECT_EQ((*presses)[1].time.tv_nsec, (345 + KEY_ENTER) * 1000);
     EXPECT_TRUE(device.take_presses()->empty());
     close(fds[1]);
 }
