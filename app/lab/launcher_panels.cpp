@@ -496,7 +496,10 @@ void LauncherPanels::draw_headset() {
         controls_.mark(std::string("headset:") + headset);
     }
     draw_headset_report();
-    if (model_.headset() == "openxr") {
+    // As run_study decides: a named observer answers on any headset; "none", or openxr without
+    // one, leaves the answers to the controller.
+    const std::string& observer = model_.observer();
+    if (observer == "none" || (model_.headset() == "openxr" && observer.empty())) {
         ImGui::TextUnformatted("Answers: the participant, with the controller.");
     } else {
         ImGui::Text("Answers: the simulated observer (%s).",
