@@ -159,8 +159,11 @@ void read_responses(const TomlScope& root, ResponseSettings& r, TomlProblems& pr
             report_wrong_type(*device, "responses.device", "a path", problems);
         }
     }
+    // At the keys' line where they were written, else at the table's (the defaults are fine).
+    const toml::node* keys = table->get("keys");
     for (const std::string& problem : response_problems(r)) {
-        problems.add(table->source(), toml_key_prefix("responses.keys") + problem);
+        problems.add(keys ? keys->source() : table->source(),
+                     toml_key_prefix("responses.keys") + problem);
     }
 }
 

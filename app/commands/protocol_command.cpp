@@ -12,6 +12,7 @@
 
 #include "app/commands/commands.h"
 #include "app/commands/study_scenes.h"
+#include "app/headset/response_device.h"
 #include "common/result.h"
 #include "study/protocol.h"
 
@@ -109,6 +110,17 @@ void print_summary(const study::Protocol& p) {
     print_study_day(p);
 }
 
+// Who answers: the controller, and the [responses] keys. A device that cannot be read now is
+// said here already (it may still be plugged in before the session, which refuses it otherwise).
+void print_responses(const study::Protocol& p) {
+    std::cout << "  answers:       controller"
+              << (p.responses.enabled ? "; " + study::describe_responses(p.responses) : "") << "\n";
+    if (!p.responses.enabled || p.responses.device.empty()) return;
+    if (const auto device = headset::ResponseDevice::open(p.responses.device); !device) {
+        std::cout << "  warning:       " << device.error().message << "\n";
+    }
+}
+
 // What each imported scene holds and every file it was read from, digests as `sha256sum`
 // prints them, so the experimenter can compare them with the files they meant to use.
 void print_imported(const ImportedStudyScenes& imported) {
@@ -127,6 +139,7 @@ void run_check(const std::string& file) {
     const ImportedStudyScenes imported =
         load_imported_scenes(protocol.scene_files, protocol.source).value_or_throw();
     print_summary(protocol);
+    print_responses(protocol);
     print_imported(imported);
 }
 

@@ -108,7 +108,7 @@ TEST(ProtocolResponses, AnActionLeftOutKeepsItsDefault) {
 
 TEST(ProtocolResponses, AnUnknownKeyNameIsRefusedWithASuggestion) {
     const std::string error = problems("[responses]\nkeys = { switch = \"left\" }\n");
-    EXPECT_NE(error.find("keys.toml:6:1: key 'responses.keys': 'left' is no key name monoplane "
+    EXPECT_NE(error.find("keys.toml:7:8: key 'responses.keys': 'left' is no key name monoplane "
                          "knows (did you mean 'Left'?)"),
               std::string::npos)
         << error;
