@@ -272,7 +272,7 @@ void LauncherPanels::draw_database() {
         ImGui::InputText("##database", &ui_.database_text, ImGuiInputTextFlags_EnterReturnsTrue);
     controls_.mark("database", true);
     ImGui::SameLine();
-    bool open = ImGui::Button("Open") || enter;
+    const bool open = ImGui::Button("Open") || enter;
     controls_.mark("open");
     ImGui::SameLine();
     const bool create = ImGui::Button("Create");
