@@ -38,6 +38,20 @@ struct Capture {
         for (double& s : sum) s /= std::max(n, 1);
         return sum;
     }
+    // Pixels within 40 of `colour` in every channel, in the region.
+    int pixels_near(const std::array<int, 3>& colour, double x, double y, double w,
+                    double h) const {
+        int count = 0;
+        for (int j = std::max(0, int(y)); j < std::min(height, int(y + h)); ++j) {
+            for (int i = std::max(0, int(x)); i < std::min(width, int(x + w)); ++i) {
+                const unsigned char* p = &rgb[(std::size_t(j) * width + i) * 3];
+                bool near = true;
+                for (int c = 0; c < 3; ++c) near = near && std::abs(p[c] - colour[c]) <= 40;
+                count += near ? 1 : 0;
+            }
+        }
+        return count;
+    }
     // Pixels drawn in the launcher's error colour (a light red), in the region.
     int error_pixels(double x, double y, double w, double h) const {
         int count = 0;
@@ -92,6 +106,10 @@ Capture capture(const std::string& id, const fs::path& dir, const std::string& n
                    c.width * 3);
     return c;
 }
+
+// Dear ImGui's keyboard-focus frame (NavHighlight) and the launcher's green for what went well.
+constexpr std::array<int, 3> kFocusFrame{66, 150, 250};
+constexpr std::array<int, 3> kGreenText{127, 229, 127};
 
 // A control's rectangle in the state dump, as (x, y, width, height).
 std::array<double, 4> rect_of(const json& control) {
@@ -316,7 +334,13 @@ TEST_F(LabDayTest, TheProtocolsFolderIsWatchedAndAFullPathIsAccepted) {
     ASSERT_TRUE(lab.wait_state([](const json& j) {
         return j["protocols"]["files"].size() == 1 && j["protocols"]["message"] == "";
     })) << lab.state().dump(1);
-    capture(lab.window(), dir, "protocol-listed");
+    // The new file's line is drawn (its text on the background), where the state says.
+    const std::array<double, 4> entry = rect_of(lab.control("protocol:new.toml"));
+    const Capture listed = capture(lab.window(), dir, "protocol-listed");
+    const std::array<double, 3> text = listed.mean(entry[0], entry[1], entry[2] / 4, entry[3]);
+    const std::array<double, 3> below =
+        listed.mean(entry[0], entry[1] + 3 * entry[3], entry[2] / 4, entry[3]);
+    EXPECT_GT(text[0] + text[1] + text[2], below[0] + below[1] + below[2] + 5);
     ASSERT_TRUE(lab.click("protocol:new.toml")) << lab.state().dump(1);
     ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
     EXPECT_EQ(lab.state()["protocol"]["name"], "tiny");
@@ -376,7 +400,11 @@ TEST_F(LabDayTest, ALongRosterScrollsAndResumeIsReached) {
     xdo("mousemove --window " + lab.window() + " 200 " + std::to_string(int(first[1] - 60)));
     for (int i = 0; i < 40 && lab.control(resume)["visible"] != true; ++i) xdo("click 5");
     ASSERT_EQ(lab.control(resume)["visible"], true) << lab.state()["controls"].dump(1);
-    capture(lab.window(), dir, "roster-scrolled");
+    // The Resume button is drawn where the state says, on the roster's scrolled view.
+    const std::array<double, 4> button = rect_of(lab.control(resume));
+    const Capture scrolled = capture(lab.window(), dir, "roster-scrolled");
+    const std::array<double, 3> face = scrolled.mean(button[0], button[1], button[2], button[3]);
+    EXPECT_GT(face[2], face[0] + 20) << "no (blue) Resume button at its place";
     EXPECT_EQ(rect_of(lab.control("footer")), footer);  // the footer did not move
     ASSERT_TRUE(lab.click(resume));
     ASSERT_TRUE(lab.wait_step("summary", 300)) << lab.log();
@@ -410,6 +438,16 @@ TEST_F(LabDayTest, TabReachesEveryControlAndEnterPicksInACombo) {
         const json controls = lab.state()["controls"];
         for (const auto& [name, c] : controls.items())
             if (c["focused"] == true) reached.push_back(name);
+        // The focused button shows Dear ImGui's focus frame around it, the others do not.
+        if (reached.size() == 2 && reached.back() == "create") {
+            const Capture shot = capture(lab.window(), dir, "tab-create");
+            const std::array<double, 4> create = rect_of(controls["create"]);
+            const std::array<double, 4> open = rect_of(controls["open"]);
+            EXPECT_GT(shot.pixels_near(kFocusFrame, create[0] - 4, create[1] - 4, create[2] + 8,
+                                       create[3] + 8),
+                      20);
+            EXPECT_LT(shot.pixels_near(kFocusFrame, open[0] - 4, open[1] - 4, open[2] + 8, 4), 5);
+        }
     }
     EXPECT_EQ(reached, (std::vector<std::string>{"open", "create", "database"}));
     type((dir / "lab.sqlite").string());
@@ -496,6 +534,11 @@ TEST_F(LabDayTest, TheSimulatedObserverAnswersTheHeadsetCheck) {
     EXPECT_EQ(h["check"], "confirmed") << h.dump(1);
     EXPECT_NE(h["check_message"].get<std::string>().find("simulated observer"), std::string::npos)
         << h.dump(1);
+    // "Headset check: confirmed ..." is drawn in green under the Check button.
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const Capture shot = capture(lab.window(), dir, "check-confirmed");
+    const std::array<double, 4> check = rect_of(lab.control("check"));
+    EXPECT_GT(shot.pixels_near(kGreenText, 0, check[1] + check[3], shot.width, 3 * check[3]), 30);
     quit(lab);
 }
 
