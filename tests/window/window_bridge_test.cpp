@@ -46,7 +46,9 @@ TEST(MirrorPage, ThePageAsTheHeadsetShowsIt) {
     window::ExperimenterView view;
     view.phase = window_phase(screen);
     mirror_page(screen, view);
-    EXPECT_EQ(view.page_text, "Take a short break - remove the headset if you like.");
+    // The headset draws the protocol's characters as written (its font has the dash), and the
+    // window mirrors them so.
+    EXPECT_EQ(view.page_text, "Take a short break \xe2\x80\x94 remove the headset if you like.");
     EXPECT_EQ(view.break_countdown, "0:23");
     EXPECT_EQ(window::page_heading(view), "Break: 0:23 until CONFIRM continues");
     screen.break_remaining_ns = 0;
@@ -54,7 +56,7 @@ TEST(MirrorPage, ThePageAsTheHeadsetShowsIt) {
     EXPECT_EQ(view.break_countdown, "");
     EXPECT_EQ(window::page_heading(view), "Break over: waiting for CONFIRM to continue");
 
-    const std::string page2 = "Second page.";
+    const std::string page2 = "Second page.\tZweite Seite.\r";
     screen = LiveScreen{};
     screen.kind = ScreenKind::Instructions;
     screen.text = &page2;
@@ -62,7 +64,7 @@ TEST(MirrorPage, ThePageAsTheHeadsetShowsIt) {
     screen.page_count = 3;
     view.phase = window_phase(screen);
     mirror_page(screen, view);
-    EXPECT_EQ(view.page_text, "Second page.");
+    EXPECT_EQ(view.page_text, "Second page. Zweite Seite.");  // a tab as a space, no CR
     EXPECT_EQ(window::page_heading(view).rfind("Instructions, page 2 of 3", 0), 0u);
     EXPECT_TRUE(window::shows_page(view.phase));
 
