@@ -362,6 +362,12 @@ Result<ExportData> collect_export(const StudyStore& store, ExportFormat format) 
     return data;
 }
 
+std::string csv_header(const std::vector<std::string_view>& columns) {
+    std::string line;
+    for (std::string_view column : columns) line += (line.empty() ? "" : ",") + std::string(column);
+    return line;
+}
+
 std::string csv_field(std::string_view value) {
     if (value.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(value);
     std::string quoted = "\"";
@@ -442,9 +448,7 @@ std::string csv_cell(const Cell& cell) {
 }  // namespace
 
 void write_csv(const ExportData& data, std::ostream& out) {
-    std::string line;
-    for (std::string_view column : export_columns())
-        line += (line.empty() ? "" : ",") + std::string(column);
+    std::string line = csv_header(export_columns());
     for (const std::string& column : variable_columns(data)) line += "," + column;
     out << line << '\n';
     for_each_row(data, [&](const std::vector<Cell>& cells) {
@@ -465,9 +469,7 @@ const std::vector<std::string_view>& notes_export_columns() {
 
 void write_notes_csv(const ExportData& data, std::ostream& out) {
     std::string line;
-    for (std::string_view column : notes_export_columns())
-        line += (line.empty() ? "" : ",") + std::string(column);
-    out << line << '\n';
+    out << csv_header(notes_export_columns()) << '\n';
     for (const auto& [id, session] : data.sessions) {
         for (const SessionNote& note : session.notes) {
             line = csv_text(session.participant_code) + ',' +

@@ -42,7 +42,7 @@ struct ExportData {
     // The participant variables the sessions' protocols declare, in first-seen declaration order
     // (sessions in id order); variable_columns() adds any a session has a value for.
     std::vector<std::string> variable_names;
-    std::map<std::int64_t, std::vector<FrameRecord>> frames;  // FramesCsv only, per session
+    std::map<std::int64_t, std::vector<FrameRecord>> frames;     // FramesCsv only, per session
     std::map<std::int64_t, std::vector<ResponsePress>> presses;  // PressesCsv only, per session
     // Staircase sessions: each scene's staircase estimate after each decided adaptive trial, by
     // session and trial index (replayed from the stored decisions; study/staircase_estimates.h).
@@ -113,6 +113,9 @@ std::string csv_text(std::string_view value);
 // apostrophe removed where apostrophes are followed by one of those characters, as docs/data.md
 // shows for R and pandas.
 std::string csv_text_original(std::string_view cell);
+// A CSV header line of these column names, comma-separated (no line break): the names are
+// identifiers, never quoted.
+std::string csv_header(const std::vector<std::string_view>& columns);
 // Integer nanoseconds as exact decimal seconds, '.' as the point regardless of locale:
 // 1500000000 -> "1.5", 0 -> "0.0", 1 -> "0.000000001".
 std::string seconds_text(std::int64_t ns);

@@ -30,9 +30,7 @@ Result<ExportData> collect_presses(const StudyStore& store) {
 
 void write_presses_csv(const ExportData& data, std::ostream& out) {
     std::string line;
-    for (std::string_view column : presses_export_columns())
-        line += (line.empty() ? "" : ",") + std::string(column);
-    out << line << '\n';
+    out << csv_header(presses_export_columns()) << '\n';
     for (const auto& [id, presses] : data.presses) {
         const auto session = data.sessions.find(id);
         if (session == data.sessions.end()) continue;
