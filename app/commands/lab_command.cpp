@@ -18,6 +18,7 @@
 #include "app/commands/session_summary.h"
 #include "app/commands/study_options.h"
 #include "app/commands/validation_report.h"
+#include "app/lab/frame_time_probe.h"
 #include "app/lab/lab_config.h"
 #include "app/lab/launcher_model.h"
 #include "app/lab/launcher_window.h"
@@ -45,6 +46,10 @@ struct LabOptions {
     // window's command line, which is then the session's command.
     std::vector<std::string> session_arguments;
     bool protocols_given = false;  // --protocols: not the remembered folder
+    // --detail / --resolution-scale as given: they choose the window's performance preset, which
+    // then passes them to the session (and shows them in its command line).
+    std::optional<std::string> detail_given;
+    std::optional<double> scale_given;
 };
 
 // <source>/protocols of the tree this executable was built from, when it is there (a build
@@ -92,6 +97,13 @@ StudyOptions study_options(const lab::LaunchRequest& r, const LabOptions& lab) {
     o.headset = r.headset;
     o.observer = r.observer;
     o.headset_options = lab.headset;  // window "auto", as the command
+    // The session settings' preset stands for --detail and --resolution-scale (run only: a
+    // resumed session renders at the detail it began with).
+    if (r.preset) {
+        if (r.command == lab::LaunchRequest::Command::Run)
+            o.headset_options.detail = r.preset->protocol_detail ? "" : r.preset->detail;
+        o.headset_options.resolution_scale = r.preset->resolution_scale;
+    }
     return o;
 }
 
@@ -202,6 +214,23 @@ Result<lab::HeadsetReport> check_for_lab(
     }
 }
 
+// The session settings' probe on a device of its own (the launcher's device and validation
+// options), with the HMD profile of the sessions' simulated headset; its eye size where no
+// runtime recommended one.
+Result<lab::FrameTimeEstimate> probe_for_settings(lab::FrameTimeProbeRequest request,
+                                                  const lab::ProbeCallback& progress,
+                                                  const LabOptions& o,
+                                                  const GlobalOptions& global) {
+    Result<hmd::HmdProfile> profile = hmd::load_hmd_profile(o.headset.hmd);
+    MONOPLANE_TRY(profile);
+    request.hmd = std::move(profile).value();
+    if (request.recommended_width <= 0 || request.recommended_height <= 0) {
+        request.recommended_width = request.hmd.width;
+        request.recommended_height = request.hmd.height;
+    }
+    return lab::probe_frame_time(global.context_options(), request, progress);
+}
+
 // One opening of the launcher window, on a Context of its own that goes with it (the session
 // creates its own, with the headset's requirements).
 lab::LauncherExit open_launcher(lab::LauncherModel& model, lab::LauncherUi& ui, const LabOptions& o,
@@ -215,6 +244,10 @@ lab::LauncherExit open_launcher(lab::LauncherModel& model, lab::LauncherUi& ui, 
     actions.analyse = [&model] { return analyse_beside(model.database()); };
     actions.probe_headset = [&o, &global](const std::string& headset) {
         return probe_for_lab(headset, o, global);
+    };
+    actions.probe_frame_time = [&o, &global](const lab::FrameTimeProbeRequest& request,
+                                             const lab::ProbeCallback& progress) {
+        return probe_for_settings(request, progress, o, global);
     };
     actions.check_headset = [&o, &global, &model](const std::string& headset, const auto& turn) {
         // With the simulated headset an observer answers unless told none (a script's
@@ -262,6 +295,8 @@ void run_lab(const LabOptions& o, const GlobalOptions& global) {
     settings.protocols = config.protocols;
     settings.names = lab::launcher_request_names();
     settings.session_arguments = o.session_arguments;
+    settings.detail = o.detail_given;
+    settings.resolution_scale = o.scale_given;
     lab::LauncherModel model(std::move(settings));
     if (!o.initial_headset.empty())
         if (Result<void> ok = model.set_headset(o.initial_headset); !ok)
@@ -292,8 +327,8 @@ void run_lab(const LabOptions& o, const GlobalOptions& global) {
 // script's path made absolute, so the shown command runs from any folder.
 std::vector<std::string> given_session_options(const CLI::App& cmd) {
     std::vector<std::string> given;
-    for (const char* name : {"--detail", "--resolution-scale", "--neutral-s", "--end-s",
-                             "--sim-script", "--sim-rate"}) {
+    // --detail and --resolution-scale are the performance preset's (LabOptions::detail_given).
+    for (const char* name : {"--neutral-s", "--end-s", "--sim-script", "--sim-rate"}) {
         const CLI::Option* option = cmd.get_option(name);
         if (option->count() == 0) continue;
         std::string value = option->results().back();
@@ -347,6 +382,8 @@ void add_lab_command(CLI::App& root, const GlobalOptions& global) {
     cmd->callback([o, cmd, &global] {
         o->protocols_given = cmd->count("--protocols") > 0;
         o->session_arguments = given_session_options(*cmd);
+        if (cmd->count("--detail") > 0) o->detail_given = o->headset.detail;
+        if (cmd->count("--resolution-scale") > 0) o->scale_given = o->headset.resolution_scale;
         // The program's own options go with every session too (they may follow the command).
         std::vector<std::string> program;
         if (!global.device.empty()) program = {"--device", global.device};

@@ -18,7 +18,35 @@ void swallow_key(int key) {
     io.KeysDownDuration[key] = -1.0f;
 }
 
+bool enter_pressed() {
+    return ImGui::IsKeyPressed(GLFW_KEY_ENTER, false) ||
+           ImGui::IsKeyPressed(GLFW_KEY_KP_ENTER, false);
+}
+
 }  // namespace
+
+// A combo box that Enter opens and Enter picks in, as Space does (Dear ImGui 1.86 takes only
+// Space).
+void draw_choice(ControlRing& controls, const std::string& name, const std::string& label,
+                 const std::vector<std::string>& choices, std::string& text) {
+    const ImGuiID id = ImGui::GetID(label.c_str());
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    controls.mark_at(name, id, at.x, at.y, ImGui::CalcItemWidth(), ImGui::GetFrameHeight());
+    if (ImGui::BeginCombo(label.c_str(), text.empty() ? "(choose)" : text.c_str())) {
+        for (const std::string& choice : choices) {
+            const bool chosen = choice == text;
+            if (ImGui::Selectable(choice.c_str(), chosen)) text = choice;
+            if (chosen) ImGui::SetItemDefaultFocus();
+            if (ImGui::IsItemFocused() && enter_pressed()) {
+                text = choice;
+                ImGui::CloseCurrentPopup();
+            }
+        }
+        ImGui::EndCombo();
+    } else if (ImGui::IsItemFocused() && enter_pressed()) {
+        ImGui::OpenPopupEx(ImHashStr("##ComboPopup", 0, id));
+    }
+}
 
 void ControlRing::begin_frame() {
     ImGuiContext& g = *ImGui::GetCurrentContext();

@@ -46,4 +46,9 @@ class ControlRing {
     std::optional<std::string> target_;
 };
 
+// A combo box of `choices` with `text` chosen, recorded in `controls` as `name`: Enter opens it
+// and Enter picks in it, as Space does (Dear ImGui 1.86 takes only Space). Inside a window.
+void draw_choice(ControlRing& controls, const std::string& name, const std::string& label,
+                 const std::vector<std::string>& choices, std::string& text);
+
 }  // namespace monoplane::lab

@@ -183,11 +183,21 @@ std::vector<std::string> LaunchRequest::arguments() const {
     if (!observer.empty()) a.insert(a.end(), {"--observer", observer});
     if (seed && command == Command::Run) a.insert(a.end(), {"--seed", std::to_string(*seed)});
     a.insert(a.end(), session_arguments.begin(), session_arguments.end());
+    if (preset) {
+        const std::vector<std::string> chosen = study_run_arguments(*preset);
+        for (std::size_t i = 0; i + 1 < chosen.size(); i += 2) {
+            if (command == Command::Resume && chosen[i] == "--detail") continue;
+            a.insert(a.end(), {chosen[i], chosen[i + 1]});
+        }
+    }
     return a;
 }
 
 LauncherModel::LauncherModel(LauncherSettings settings)
-    : names_(std::move(settings.names)), session_arguments_(std::move(settings.session_arguments)) {
+    : names_(std::move(settings.names)),
+      session_arguments_(std::move(settings.session_arguments)),
+      detail_option_(std::move(settings.detail)),
+      scale_option_(settings.resolution_scale) {
     // Failures stay as the steps' messages: the window shows them where the choice is made.
     if (!settings.protocols.empty()) (void)scan_protocols(settings.protocols);
     if (!settings.db.empty() && open_database(settings.db, true)) step_ = LauncherStep::Protocol;
@@ -311,12 +321,14 @@ Result<void> LauncherModel::select_protocol(const fs::path& path) {
         protocol_.reset();
         protocol_path_.clear();
         rebuild_fields();
+        rebuild_presets();
         revalidate();
         return Error{judged.message};
     }
     protocol_ = study::load_protocol(path).value();
     protocol_path_ = path;
     rebuild_fields();
+    rebuild_presets();
     revalidate();
     return Ok{};
 }
@@ -407,6 +419,9 @@ Result<void> LauncherModel::set_headset(const std::string& headset) {
 }
 
 void LauncherModel::set_headset_report(HeadsetReport report) {
+    // The estimates were of the eyes the last report recommended.
+    if (report.width != headset_report_.width || report.height != headset_report_.height)
+        estimates_.clear();
     headset_report_ = std::move(report);
     headset_probed_ = true;
     revalidate();
@@ -455,6 +470,7 @@ LaunchRequest LauncherModel::request() const {
     r.headset = headset_;
     r.observer = observer_;
     r.session_arguments = session_arguments_;
+    if (const PerformancePreset* chosen = preset()) r.preset = *chosen;
     return r;
 }
 
@@ -537,6 +553,7 @@ Result<LaunchRequest> LauncherModel::resume(std::int64_t session_id, bool accept
     r.accept_changed_scenes = accepted;
     r.headset = headset_;
     r.observer = observer_;
+    if (const PerformancePreset* chosen = preset()) r.preset = *chosen;
     launched_session_number_ = row.session_number;
     launched_ = r;
     summary_.reset();

@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/lab/performance_preset.h"
 #include "common/result.h"
 #include "study/protocol.h"
 #include "study/roster.h"
@@ -85,6 +86,9 @@ struct HeadsetReport {
     std::optional<double> ipd_m;      // the IPD the runtime reports
     std::string interaction_profile;  // once bound
     std::string message;              // e.g. "no OpenXR runtime"; empty when available
+    // Set by the window from the last check: "no controller bound: ..." when the check found no
+    // controller bound and neither [responses] keys nor a simulated observer answer; else "".
+    std::string answer_warning;
     // The last headset check: how it ended ("" none yet, "confirmed", "cancelled", "timed out",
     // "runtime ended the session", "runtime lost", "failed": it could not run), what it said,
     // and the frames it showed the participant.
@@ -112,6 +116,10 @@ struct LaunchRequest {
     // The sessions' other options as `study run` takes them ("--detail", "test", ...): what
     // `monoplane lab` was given for its sessions, so the shown command is the session's.
     std::vector<std::string> session_arguments;
+    // The session settings' performance preset (none: the command's defaults): run gets its
+    // detail and resolution scale, resume its resolution scale only (a resumed session renders
+    // at the detail it began with).
+    std::optional<PerformancePreset> preset;
 
     // The same request as a command line after `monoplane` ("study", "run", "--protocol", ...):
     // shown to the experimenter so the session can be repeated from a shell. Any time.
@@ -140,6 +148,15 @@ struct SessionOutcome {
     std::string error;  // what run_study reported when it stopped with an error; empty if none
 };
 
+// The session settings' frame-time measurement as the window runs it (frame_time_job.h).
+struct FrameTimeMeasurement {
+    std::string state;    // "" none yet, "running", "done", "failed", "cancelled"
+    std::string preset;   // the preset measured
+    std::string message;  // running: the condition drawn next; failed: why
+    int frames_done = 0;
+    int frames_planned = 0;
+};
+
 struct LauncherSettings {
     std::filesystem::path db;         // --db FILE; empty: chosen in the window
     std::filesystem::path protocols;  // --protocols DIR
@@ -148,6 +165,10 @@ struct LauncherSettings {
     study::RequestNames names = study::study_request_names();
     // LaunchRequest::session_arguments of every request.
     std::vector<std::string> session_arguments;
+    // `monoplane lab --detail / --resolution-scale`: they choose the performance preset of the
+    // same detail and scale, else a preset "custom" of them (docs/lab.md, "Session settings").
+    std::optional<std::string> detail;
+    std::optional<double> resolution_scale;
 };
 
 // How the launcher names the inputs of a request in its messages: the window's fields and
@@ -246,6 +267,27 @@ class LauncherModel {
     // A fixed seed (tests, a repeated session); none: drawn and recorded, as the command does.
     void set_seed(std::optional<std::uint64_t> seed);
 
+    // Session settings (Headset step). The presets for the chosen protocol (presets_for, plus
+    // "custom" when the command line's --detail / --resolution-scale match none); empty with no
+    // protocol. The chosen one: the command line's match, else "full", until set_preset.
+    const std::vector<PerformancePreset>& presets() const { return presets_; }
+    const PerformancePreset* preset() const;
+    Result<void> set_preset(const std::string& name);
+    // A measured estimate (kept per preset until the protocol or the eye size changes).
+    void set_frame_time_estimate(PresetEstimate estimate);
+    std::optional<double> estimate_ms(const std::string& preset) const;
+    const std::vector<PresetEstimate>& estimates() const { return estimates_; }
+    // judge_frame_time of the chosen preset's estimate at the headset's refresh rate; none
+    // before it was measured.
+    std::optional<FrameTimeVerdict> frame_time_verdict() const;
+    void set_measurement(FrameTimeMeasurement measurement) {
+        measurement_ = std::move(measurement);
+    }
+    const FrameTimeMeasurement& measurement() const { return measurement_; }
+    // Whether a simulated observer answers the sessions, as run_study decides: a named observer
+    // on any headset; "none", or openxr without one, leaves the answers to the participant.
+    bool observer_answers() const;
+
     // Whether study::plan_session accepts the request as it stands (with a database open and a
     // protocol chosen); otherwise the message says why, one problem per line.
     bool start_enabled() const { return start_message_.empty(); }
@@ -275,6 +317,8 @@ class LauncherModel {
     Result<void> read_roster_lines();
 
     void revalidate();
+    // The presets for protocol_ and the command line's options (launcher_session_settings.cpp).
+    void rebuild_presets();
     void find_participant_problems();
     void rebuild_fields();
     // After a Resume from a step before Protocol: the folder's protocol of the resumed session's
@@ -315,6 +359,13 @@ class LauncherModel {
     std::optional<LaunchRequest> launched_;
     int launched_session_number_ = 0;  // the participant's session Start planned
     std::optional<SessionOutcome> summary_;
+    std::optional<std::string> detail_option_;  // LauncherSettings::detail
+    std::optional<double> scale_option_;        // LauncherSettings::resolution_scale
+    std::vector<PerformancePreset> presets_;
+    std::string preset_name_;
+    bool preset_chosen_ = false;  // set_preset was called: the experimenter's choice stays
+    std::vector<PresetEstimate> estimates_;
+    FrameTimeMeasurement measurement_;
 };
 
 }  // namespace monoplane::lab

@@ -37,11 +37,6 @@ void message_line(const std::string& message) {
         error_text(message);
 }
 
-bool enter_pressed() {
-    return ImGui::IsKeyPressed(GLFW_KEY_ENTER, false) ||
-           ImGui::IsKeyPressed(GLFW_KEY_KP_ENTER, false);
-}
-
 void dim_text(const std::string& text) {
     if (text.empty()) return;
     ImGui::PushStyleColor(ImGuiCol_Text, kDim);
@@ -148,6 +143,7 @@ void LauncherPanels::next_participant() {
 }
 
 void LauncherPanels::start() {
+    if (measuring_refuses("starting the session")) return;
     Result<LaunchRequest> request = model_.start();
     if (!request) {
         ui_.action_message = request.error().message;
@@ -384,33 +380,6 @@ void LauncherPanels::draw_participant_problems() {
     message_line(problems);
 }
 
-namespace {
-
-// A combo box that Enter opens and Enter picks in, as Space does (Dear ImGui 1.86 takes only
-// Space).
-void draw_choice(ControlRing& controls, const std::string& name, const std::string& label,
-                 const std::vector<std::string>& choices, std::string& text) {
-    const ImGuiID id = ImGui::GetID(label.c_str());
-    const ImVec2 at = ImGui::GetCursorScreenPos();
-    controls.mark_at(name, id, at.x, at.y, ImGui::CalcItemWidth(), ImGui::GetFrameHeight());
-    if (ImGui::BeginCombo(label.c_str(), text.empty() ? "(choose)" : text.c_str())) {
-        for (const std::string& choice : choices) {
-            const bool chosen = choice == text;
-            if (ImGui::Selectable(choice.c_str(), chosen)) text = choice;
-            if (chosen) ImGui::SetItemDefaultFocus();
-            if (ImGui::IsItemFocused() && enter_pressed()) {
-                text = choice;
-                ImGui::CloseCurrentPopup();
-            }
-        }
-        ImGui::EndCombo();
-    } else if (ImGui::IsItemFocused() && enter_pressed()) {
-        ImGui::OpenPopupEx(ImHashStr("##ComboPopup", 0, id));
-    }
-}
-
-}  // namespace
-
 void LauncherPanels::draw_variable(const VariableField& field) {
     const study::ParticipantVariable& v = field.declaration;
     ImGui::PushID(v.name.c_str());
@@ -472,6 +441,7 @@ void LauncherPanels::request_check() {
         ui_.action_message = "the headset check is in the Headset step";
         return;
     }
+    if (measuring_refuses("checking the headset")) return;
     if (!actions_.check_headset || model_.headset() == "none") {
         ui_.action_message = "choose the simulated or the OpenXR headset to check it";
         return;
@@ -500,11 +470,20 @@ void LauncherPanels::draw_headset() {
     // one, leaves the answers to the controller.
     const std::string& observer = model_.observer();
     if (observer == "none" || (model_.headset() == "openxr" && observer.empty())) {
-        ImGui::TextUnformatted("Answers: the participant, with the controller.");
+        const bool keys = model_.protocol() != nullptr && model_.protocol()->responses.enabled;
+        ImGui::TextUnformatted(keys ? "Answers: the participant, with the controller or the "
+                                      "protocol's [responses] keys."
+                                    : "Answers: the participant, with the controller.");
     } else {
         ImGui::Text("Answers: the simulated observer (%s).",
                     model_.observer().empty() ? "default" : model_.observer().c_str());
     }
+    // The check's verdict on the controller, judged again as the protocol or observer changes.
+    judge_answers(model_.headset_report().interaction_profile,
+                  model_.headset_report().check_frames);
+    message_line(model_.headset_report().answer_warning);
+    controls_.mark("answer-warning", false, false);
+    draw_session_settings();
     draw_start();
 }
 
@@ -558,7 +537,14 @@ void LauncherPanels::run_check(const std::function<CheckAnswer(const HeadsetChec
     HeadsetReport report = model_.headset_report();
     Result<HeadsetReport> checked = actions_.check_headset(model_.headset(), turn);
     if (checked) {
+        const HeadsetReport probed = std::move(report);
         report = std::move(checked).value();
+        // The check's eyes are at the session's scale: the step keeps the runtime's recommended
+        // size, which the presets scale (and the estimates were measured for).
+        if (probed.runtime_available && probed.width > 0) {
+            report.width = probed.width;
+            report.height = probed.height;
+        }
     } else {
         // It could not run (no Vulkan device, the runtime refused a session): the probe's
         // report stays, with why.
@@ -599,6 +585,9 @@ CheckAnswer LauncherPanels::draw_check(const HeadsetCheckTurn& turn) {
         "profile %s",
         static_cast<long long>(turn.frames_shown), ipd, turn.refresh_hz,
         turn.interaction_profile.empty() ? "none yet" : turn.interaction_profile.c_str());
+    // Said at once, while the participant waits for an answer they cannot give.
+    judge_answers(turn.interaction_profile, turn.frames_shown);
+    message_line(model_.headset_report().answer_warning);
     if (ImGui::Button("Fits (Ctrl+F)")) check_answer_ = CheckAnswer::Confirm;
     if (!check_focused_) {
         check_focused_ = true;
@@ -730,7 +719,7 @@ void LauncherPanels::draw_roster_line(const RosterLine& line) {
     ImGui::TableNextColumn();
     if (line.state != "completed") {
         ImGui::BeginDisabled(!line.resume_offered);
-        if (ImGui::Button("Resume")) {
+        if (ImGui::Button("Resume") && !measuring_refuses("resuming a session")) {
             Result<LaunchRequest> request = model_.resume(row.session_id, false);
             if (request)
                 launch_ = std::move(request).value();

@@ -3,11 +3,13 @@
 // reads as the model's steps, and the window as its frame loop.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
 #include <utility>
 
+#include "app/lab/frame_time_job.h"
 #include "app/lab/launcher_controls.h"
 #include "app/lab/launcher_model.h"
 #include "app/lab/launcher_window.h"
@@ -69,6 +71,20 @@ class LauncherPanels {
     void draw_headset();
     void draw_headset_report();
     void draw_check_result();
+    // The session settings (session_settings_panel.cpp): the performance preset, its frame-time
+    // estimate with the verdict, and Measure / Cancel.
+    void draw_session_settings();
+    void draw_estimates();
+    void draw_verdict();
+    void draw_measurement();
+    void measure_frame_time();
+    // Takes a finished measurement's outcome into the model. Each frame.
+    void poll_measurement();
+    // Whether anyone can answer, from what the check saw of the controller (`profile` bound
+    // after `frames` frames), into the headset report's answer_warning.
+    void judge_answers(const std::string& profile, std::int64_t frames);
+    // Refuses (with the footer's message) what must not run beside the measurement.
+    bool measuring_refuses(const char* what);
     // Probes the chosen headset when the step is entered or the choice changed.
     void probe_if_needed();
     void request_check();
@@ -100,6 +116,8 @@ class LauncherPanels {
     bool check_focused_ = false;                        // Fits has the keyboard focus
     CheckAnswer check_answer_ = CheckAnswer::Continue;  // the experimenter's, for the next turn
     ControlRing controls_;
+    // After actions_: destroyed (cancelled and joined) before the probe it runs.
+    FrameTimeJob frame_time_job_;
     std::optional<LauncherStep> drawn_step_;  // the step of the last frame (stale messages go)
     float footer_height_ = 0.0f;              // as the last frame drew it
 };

@@ -108,11 +108,61 @@ void write_headset(JsonWriter& w, const LauncherModel& m) {
     else
         w.null("ipd_m");
     w.value("interaction_profile", h.interaction_profile)
+        .value("answer_warning", h.answer_warning)
         .value("message", h.message)
         .value("check", h.check)
         .value("check_message", h.check_message)
         .value("check_frames", h.check_frames)
         .end_object();
+}
+
+void optional_ms(JsonWriter& w, std::string_view key, std::optional<double> ms) {
+    if (ms)
+        w.value(key, *ms);
+    else
+        w.null(key);
+}
+
+// The session settings: every preset with what it passes to `study run` and its estimate (null
+// until measured), the chosen one, its verdict and the measurement as it stands.
+void write_settings(JsonWriter& w, const LauncherModel& m) {
+    w.begin_object("settings");
+    if (const PerformancePreset* p = m.preset())
+        w.value("preset", p->name);
+    else
+        w.null("preset");
+    w.begin_array("presets");
+    for (const PerformancePreset& p : m.presets()) {
+        w.begin_object().value("name", p.name).value("description", p.description);
+        w.value("detail", p.detail).value("resolution_scale", p.resolution_scale);
+        w.begin_array("arguments");
+        for (const std::string& a : study_run_arguments(p)) w.value({}, a);
+        w.end_array();
+        optional_ms(w, "estimate_ms", m.estimate_ms(p.name));
+        w.end_object();
+    }
+    w.end_array();
+    optional_ms(w, "estimate_ms", m.preset() ? m.estimate_ms(m.preset()->name) : std::nullopt);
+    if (const std::optional<FrameTimeVerdict> v = m.frame_time_verdict()) {
+        w.begin_object("verdict")
+            .value("text", v->text)
+            .value("fits", v->fits)
+            .value("tight", v->tight)
+            .value("refresh_hz", v->refresh_hz)
+            .value("ratio", v->ratio)
+            .end_object();
+    } else {
+        w.null("verdict");
+    }
+    const FrameTimeMeasurement& f = m.measurement();
+    w.begin_object("measurement")
+        .value("state", f.state)
+        .value("preset", f.preset)
+        .value("message", f.message)
+        .value("frames_done", f.frames_done)
+        .value("frames_planned", f.frames_planned)
+        .end_object();
+    w.end_object();
 }
 
 void write_start(JsonWriter& w, const LauncherModel& m) {
@@ -196,6 +246,7 @@ std::string LauncherModel::state_json() const {
     write_participant(w, *this);
     write_variables(w, *this);
     write_headset(w, *this);
+    write_settings(w, *this);
     write_start(w, *this);
     write_roster(w, *this);
     write_summary(w, *this);

@@ -83,6 +83,7 @@ CheckAnswer LauncherWindow::Impl::check_turn(const HeadsetCheckTurn& turn) {
     desktop->new_frame();
     const CheckAnswer answer = panels.draw_check(turn);
     desktop->end_frame();
+    write_state();  // the check's answer warning, while it runs
     // The check as the experimenter sees it, once it shows the runtime's measurements.
     if (++check_frames_drawn == 10) save_screenshot("headset-check");
     return answer;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "app/lab/frame_time_job.h"
 #include "app/lab/launcher_model.h"
 #include "app/window/desktop_window.h"
 #include "common/result.h"
@@ -46,6 +47,11 @@ struct LauncherActions {
         const std::string& headset,
         const std::function<CheckAnswer(const HeadsetCheckTurn&)>& turn)>
         check_headset;
+    // The session settings' frame-time probe (lab::probe_frame_time on a device of its own, with
+    // the program's device and validation options); the app fills in the HMD profile, and the
+    // profile's eye size where the request has none. Runs on the window's worker thread.
+    // Unset: no measurement offered.
+    FrameTimeProbe probe_frame_time;
     // `study export` of the open database; returns the file written.
     std::function<Result<std::filesystem::path>()> export_data;
     // `analyze` of the open database; returns the report written.

@@ -491,12 +491,13 @@ TEST_F(LabDayTest, TheShownCommandIsTheSessionsAndAFailedStartSaysSo) {
     const json start = lab.state()["start"];
     const std::vector<std::string> arguments = start["arguments"];
     const std::vector<std::string> tail(arguments.end() - 13, arguments.end());
-    // The launcher runs with --validation (as every test): its sessions do too.
-    EXPECT_EQ(tail,
-              (std::vector<std::string>{"--validation", "--detail", "test", "--resolution-scale",
-                                        "0.1", "--neutral-s", "0.3", "--end-s", "0", "--sim-script",
-                                        script.string(), "--sim-rate", "5"}))
+    // The launcher runs with --validation (as every test): its sessions do too. --detail and
+    // --resolution-scale match no preset: they are the "custom" preset's, passed last.
+    EXPECT_EQ(tail, (std::vector<std::string>{"--validation", "--neutral-s", "0.3", "--end-s", "0",
+                                              "--sim-script", script.string(), "--sim-rate", "5",
+                                              "--detail", "test", "--resolution-scale", "0.1"}))
         << start.dump(1);
+    EXPECT_EQ(lab.state()["settings"]["preset"], "custom");
     EXPECT_EQ(start["command_line"], lab::shell_command_line(arguments));
     EXPECT_NE(start["command_line"].get<std::string>().find("'" + script.string() + "'"),
               std::string::npos);
@@ -641,6 +642,191 @@ TEST_F(LabDayTest, TheLastDatabaseAndProtocolsFolderAreRemembered) {
     EXPECT_EQ(j["database"]["path"], (dir / "lab.sqlite").string());
     EXPECT_EQ(j["protocols"]["folder"], (dir / "protocols").string());
     quit(again);
+}
+
+// Short sessions without --detail and --resolution-scale, which the preset chooses.
+const std::vector<std::string> kShortPresetSessions = {"--neutral-s", "0.3",        "--end-s",
+                                                       "0",           "--sim-rate", "5"};
+
+// The verdict line is drawn in the colour of its verdict: red when the preset cannot reach the
+// refresh rate, yellow when only just, green when it does.
+void expect_verdict_colour(const Capture& shot, const json& settings, const json& verdict_rect) {
+    const std::array<double, 4> r = rect_of(verdict_rect);
+    const json v = settings["verdict"];
+    if (!v["fits"].get<bool>()) {
+        EXPECT_GT(shot.error_pixels(r[0], r[1], shot.width, r[3]), 30) << settings.dump(1);
+    } else if (v["tight"].get<bool>()) {
+        EXPECT_GT(shot.pixels_near({255, 217, 76}, r[0], r[1], shot.width, r[3]), 30);
+    } else {
+        EXPECT_GT(shot.pixels_near(kGreenText, r[0], r[1], shot.width, r[3]), 30);
+    }
+}
+
+// Item 3: the Headset step's performance preset. --detail test preselects a "custom" preset;
+// the experimenter picks "minimal" in the combo (click, Up, Enter), the command line shows its
+// options; Measure runs the probe on a worker while the window keeps drawing, and the estimate
+// and the verdict against the refresh rate are shown (in the verdict's colour) and dumped; the
+// session then renders at the preset's detail, as stored.
+TEST_F(LabDayTest, ThePerformancePresetIsMeasuredAndChoosesTheSessionsSettings) {
+    const fs::path dir = prepare({{"tiny.toml", kTiny}});
+    std::vector<std::string> options = kShortPresetSessions;
+    options.insert(options.end(), {"--detail", "test"});
+    Lab lab(dir, options);
+    choose(lab, "tiny.toml", "P01");
+    ASSERT_FALSE(HasFailure());
+    xdo("key Return");
+    ASSERT_TRUE(lab.wait_step("headset")) << lab.state().dump(1);
+    ASSERT_TRUE(lab.wait_state([](const json& j) { return j["headset"]["runtime_available"]; }))
+        << lab.state().dump(1) << lab.log();
+    EXPECT_EQ(lab.state()["settings"]["preset"], "custom") << lab.state()["settings"].dump(1);
+    ASSERT_TRUE(lab.click("preset"));
+    xdo("key Up");
+    xdo("key Return");
+    ASSERT_TRUE(lab.wait_state([](const json& j) { return j["settings"]["preset"] == "minimal"; }))
+        << lab.state()["settings"].dump(1);
+    json j = lab.state();
+    const std::vector<std::string> arguments = j["start"]["arguments"];
+    const std::vector<std::string> tail(arguments.end() - 4, arguments.end());
+    EXPECT_EQ(tail, (std::vector<std::string>{"--detail", "test", "--resolution-scale", "0.25"}))
+        << j["start"].dump(1);
+    EXPECT_EQ(j["start"]["command_line"], lab::shell_command_line(arguments));
+    EXPECT_TRUE(j["settings"]["estimate_ms"].is_null());
+    EXPECT_TRUE(j["settings"]["verdict"].is_null());
+    ASSERT_TRUE(lab.click("measure"));
+    // The window keeps drawing while the probe renders: the state says it is measuring (or,
+    // on a fast device, has measured already).
+    ASSERT_TRUE(lab.wait_state([](const json& s) {
+        return s["settings"]["measurement"]["state"] != "";
+    })) << lab.state()["settings"].dump(1);
+    ASSERT_TRUE(lab.wait_state(
+        [](const json& s) { return s["settings"]["measurement"]["state"] == "done"; }, 300))
+        << lab.state()["settings"].dump(1) << lab.log();
+    j = lab.state();
+    const json settings = j["settings"];
+    EXPECT_EQ(settings["measurement"]["preset"], "minimal");
+    ASSERT_TRUE(settings["estimate_ms"].is_number()) << settings.dump(1);
+    const double ms = settings["estimate_ms"].get<double>();
+    EXPECT_GT(ms, 0.0);
+    ASSERT_TRUE(settings["verdict"].is_object()) << settings.dump(1);
+    // No check yet: the refresh rate is assumed, 90 Hz, and the verdict says so.
+    EXPECT_EQ(settings["verdict"]["refresh_hz"], 90.0);
+    EXPECT_EQ(settings["verdict"]["fits"].get<bool>(), ms <= 1000.0 / 90.0);
+    const std::string text = settings["verdict"]["text"];
+    EXPECT_EQ(text.rfind(ms <= 1000.0 / 90.0 ? "" : "cannot reach 90 Hz", 0), 0u) << text;
+    EXPECT_NE(text.find("assumed"), std::string::npos) << text;
+    for (const json& p : settings["presets"]) {
+        if (p["name"] == "minimal")
+            EXPECT_EQ(p["estimate_ms"], settings["estimate_ms"]);
+        else
+            EXPECT_TRUE(p["estimate_ms"].is_null()) << p.dump(1);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const Capture shot = capture(lab.window(), dir, "preset-measured");
+    expect_verdict_colour(shot, settings, j["controls"]["verdict"]);
+    start_and_wait(lab, 600);
+    ASSERT_FALSE(HasFailure());
+    j = lab.state();
+    EXPECT_EQ(j["summary"]["state"], "completed") << j["summary"].dump(1) << lab.log();
+    quit(lab);
+    auto store = study::StudyStore::open_read_only(dir / "lab.sqlite").value_or_throw();
+    const auto session = store->session(j["summary"]["session_id"].get<std::int64_t>());
+    ASSERT_TRUE(session.ok()) << session.error().message;
+    EXPECT_EQ(session->render.detail, "test");
+}
+
+// Cancel stops a measurement before its next frame; the state says so and Start works again.
+TEST_F(LabDayTest, AFrameTimeMeasurementCanBeCancelled) {
+    const fs::path dir = prepare({{"tiny.toml", kTiny}});
+    Lab lab(dir, kShortPresetSessions);
+    choose(lab, "tiny.toml", "P01");
+    ASSERT_FALSE(HasFailure());
+    xdo("key Return");
+    ASSERT_TRUE(lab.wait_state([](const json& j) {
+        return j["step"] == "headset" && j["headset"]["runtime_available"] == true;
+    })) << lab.state().dump(1);
+    EXPECT_EQ(lab.state()["settings"]["preset"], "full");
+    ASSERT_TRUE(lab.click("measure"));
+    // "full" on a CPU renderer takes seconds a frame: Cancel is there while it runs.
+    if (!lab.wait_state([](const json& s) { return s["controls"].contains("cancel-measure"); },
+                        10)) {
+        GTEST_SKIP() << "the measurement ended before it could be cancelled (a fast device)";
+    }
+    ASSERT_TRUE(lab.click("cancel-measure"));
+    ASSERT_TRUE(lab.wait_state(
+        [](const json& s) { return s["settings"]["measurement"]["state"] == "cancelled"; }, 300))
+        << lab.state()["settings"].dump(1) << lab.log();
+    EXPECT_TRUE(lab.state()["settings"]["estimate_ms"].is_null());
+    EXPECT_TRUE(lab.state()["controls"].contains("measure"));
+    quit(lab);
+}
+
+// A simxr script whose controllers are of a profile the app suggests no bindings for (simxr's
+// default, khr/simple_controller, binds), so the runtime binds none: a still head, 72 Hz.
+fs::path write_unbound_script(const fs::path& dir) {
+    const fs::path path = dir / "unbound.toml";
+    std::ofstream(path) << "hmd = \"vive\"\ndisplay_rate_hz = 72\nhead_motion = \"still\"\n"
+                        << "interaction_profile = "
+                           "\"/interaction_profiles/microsoft/motion_controller\"\n";
+    return path;
+}
+
+// Item 5: the headset check finds no controller bound, the protocol has no [responses] keys and
+// no simulated observer answers (--observer none): the Headset step says at once that the
+// participant cannot answer, while the check runs and after it, in red; with a protocol that
+// enables keys, nothing is said.
+TEST_F(LabDayTest, NoControllerBoundIsSaidAtOnce) {
+    const fs::path dir =
+        prepare({{"tiny.toml", kTiny},
+                 {"keys.toml",
+                  kTiny + "\n[responses]\nkeys = { switch = \"Left\", confirm = \"Return\" }\n"}});
+    const fs::path script = write_unbound_script(dir);
+    std::vector<std::string> options = kShortSessions;
+    options.insert(options.end(), {"--sim-script", script.string(), "--observer", "none"});
+    Lab lab(dir, options);
+    choose(lab, "tiny.toml", "P01");
+    ASSERT_FALSE(HasFailure());
+    xdo("key Return");
+    ASSERT_TRUE(lab.wait_state([](const json& j) {
+        return j["step"] == "headset" && j["headset"]["runtime_available"] == true;
+    })) << lab.state().dump(1);
+    EXPECT_EQ(lab.state()["headset"]["answer_warning"], "");
+    xdo("key ctrl+h");
+    const std::string message =
+        "no controller bound: the participant cannot answer; connect one or enable keys";
+    // Said while the check still runs (it has not ended: no CONFIRM can come).
+    ASSERT_TRUE(lab.wait_state(
+        [&](const json& j) { return j["headset"]["answer_warning"] == message; }, 120))
+        << lab.state()["headset"].dump(1) << lab.log();
+    EXPECT_EQ(lab.state()["headset"]["check"], "");
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const Capture during = capture(lab.window(), dir, "no-controller-during-check");
+    EXPECT_GT(during.error_pixels(0, 0, during.width, during.height / 2), 50);
+    xdo("key Escape");
+    ASSERT_TRUE(lab.wait_state([](const json& j) { return j["headset"]["check"] != ""; }, 120))
+        << lab.state().dump(1);
+    json h = lab.state()["headset"];
+    EXPECT_EQ(h["check"], "cancelled") << h.dump(1);
+    EXPECT_EQ(h["interaction_profile"], "");
+    EXPECT_EQ(h["answer_warning"], message);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const Capture after = capture(lab.window(), dir, "no-controller");
+    const std::array<double, 4> line = rect_of(lab.control("answer-warning"));
+    EXPECT_GT(after.error_pixels(0, line[1], after.width, line[3]), 30)
+        << lab.state()["controls"].dump(1);
+    // The same check's finding with a protocol whose keys answer: nothing to say.
+    xdo("key ctrl+Left");
+    xdo("key ctrl+Left");
+    ASSERT_TRUE(lab.wait_step("protocol")) << lab.state().dump(1);
+    ASSERT_TRUE(lab.click("protocol:keys.toml"));
+    ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
+    xdo("key ctrl+Right");
+    ASSERT_TRUE(lab.wait_step("headset")) << lab.state().dump(1);
+    ASSERT_TRUE(lab.wait_state([](const json& j) { return j["headset"]["answer_warning"] == ""; }))
+        << lab.state()["headset"].dump(1);
+    h = lab.state()["headset"];
+    EXPECT_EQ(h["check"], "cancelled") << h.dump(1);
+    EXPECT_EQ(h["interaction_profile"], "");
+    quit(lab);
 }
 
 // On a 3840 x 2160 screen (its own ctest, with Xvfb at that size) the window opens at three
