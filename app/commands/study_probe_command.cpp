@@ -118,7 +118,7 @@ void add_study_probe_command(CLI::App* study, const GlobalOptions& global) {
         "probe",
         "Estimate a session's frame time on this device for each performance preset (a short "
         "render of the protocol's scenes in both alternatives at its nearest mono plane), with "
-        "the verdict against the headset's refresh rate, as JSON (docs/lab-session-settings.md)");
+        "the verdict against the headset's refresh rate, as JSON (docs/lab.md, Session settings)");
     probe->add_option("--protocol", o->protocol, "Protocol file (TOML)")->required();
     probe->add_option("--hmd", o->hmd, "HMD profile: the eyes' frusta, IPD and default eye size")
         ->capture_default_str();

@@ -1,5 +1,5 @@
 // `monoplane study probe`: the launcher's frame-time probe from the command line
-// (docs/lab-session-settings.md), printing each performance preset's estimate and verdict as
+// (docs/lab.md, "Session settings"), printing each performance preset's estimate and verdict as
 // JSON, for whoever chooses a session's settings in a shell and for the end-to-end tests.
 #pragma once
 

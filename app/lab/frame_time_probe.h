@@ -1,8 +1,8 @@
 // An estimate of a session's frame time on this device before the session starts (`monoplane
-// lab`'s session settings, docs/lab-session-settings.md): a short probe render of the protocol's
-// conditions with the renderers a headset session builds (app/commands/study_renderers.h: the
-// protocol's [render] table, the preset's detail, eyes of the recommended size times the
-// preset's scale), timed with the renderer's GPU timestamps.
+// lab`'s session settings, docs/lab.md "Session settings"): a short probe render of the
+// protocol's conditions with the renderers a headset session builds
+// (app/commands/study_renderers.h: the protocol's [render] table, the preset's detail, eyes of
+// the recommended size times the preset's scale), timed with the renderer's GPU timestamps.
 //
 // What is rendered: every scene of the protocol in each of its two alternatives at its nearest
 // mono plane (hybrid's most expensive m: the most content drawn per eye), seen from the scene's

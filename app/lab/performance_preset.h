@@ -1,4 +1,4 @@
-// The launcher's session settings (`monoplane lab`, docs/lab-session-settings.md): named
+// The launcher's session settings (`monoplane lab`, docs/lab.md, "Session settings"): named
 // performance presets, the `study run` options each stands for, and the verdict on an estimated
 // frame time against the headset's refresh rate, worded for the experimenter.
 //

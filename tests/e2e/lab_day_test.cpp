@@ -662,6 +662,16 @@ void expect_verdict_colour(const Capture& shot, const json& settings, const json
     }
 }
 
+// With MONOPLANE_WRITE_DOCS=1, a capture kept in screens/ becomes docs/images/lab-<name>.png.
+void write_doc_image(const fs::path& dir, const std::string& capture, const std::string& name) {
+    const char* write = std::getenv("MONOPLANE_WRITE_DOCS");
+    if (write == nullptr || std::string(write) != "1") return;
+    const fs::path to = fs::path(source_dir()) / "docs/images" / ("lab-" + name + ".png");
+    fs::copy_file(dir / "screens" / (capture + ".png"), to, fs::copy_options::overwrite_existing);
+    // docs/lab.md shows these: each stays small in the repository.
+    EXPECT_LT(fs::file_size(to), 150u * 1024u) << to;
+}
+
 // Item 3: the Headset step's performance preset. --detail test preselects a "custom" preset;
 // the experimenter picks "minimal" in the combo (click, Up, Enter), the command line shows its
 // options; Measure runs the probe on a worker while the window keeps drawing, and the estimate
@@ -732,6 +742,71 @@ TEST_F(LabDayTest, ThePerformancePresetIsMeasuredAndChoosesTheSessionsSettings) 
     const auto session = store->session(j["summary"]["session_id"].get<std::int64_t>());
     ASSERT_TRUE(session.ok()) << session.error().message;
     EXPECT_EQ(session->render.detail, "test");
+}
+
+// The day as docs/lab.md shows it, one capture per step (MONOPLANE_WRITE_DOCS=1 writes them to
+// docs/images/lab-*.png): the protocols with a broken one's error in red, the participant's form,
+// the Headset step with the "minimal" preset measured and its verdict, and the summary.
+TEST_F(LabDayTest, TheDayAsTheDocsShowIt) {
+    const fs::path dir =
+        prepare({{"tiny.toml", with_variable(kTiny,
+                                             "name = \"age\"\ntype = \"integer\"\n"
+                                             "required = true\nhelp = \"Age in years\"\n")},
+                 {"broken.toml",
+                  "name = \"broken\"\nscenes = [\"beams\"]\nmono_planes = [3]\n"
+                  "alternatives = [\"stereo\", \"holo\"]\n"}});
+    std::vector<std::string> options = kShortPresetSessions;
+    options.insert(options.end(), {"--detail", "test"});
+    Lab lab(dir, options);
+    ASSERT_TRUE(lab.focus()) << lab.log();
+    ASSERT_TRUE(lab.wait_step("protocol")) << lab.log();
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const Capture protocols = capture(lab.window(), dir, "doc-protocol");
+    const std::array<double, 4> broken = rect_of(lab.control("protocol:broken.toml"));
+    EXPECT_GT(protocols.error_pixels(0, broken[1], protocols.width, 3 * broken[3]), 50);
+    write_doc_image(dir, "doc-protocol", "protocol");
+    type("tiny.toml");
+    xdo("key Return");
+    ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
+    type("P01");
+    ASSERT_TRUE(lab.click("var:age"));
+    type("34");
+    ASSERT_TRUE(lab.wait_state([](const json& j) { return j["start"]["enabled"] == true; }))
+        << lab.state().dump(1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const Capture participant = capture(lab.window(), dir, "doc-participant");
+    EXPECT_EQ(participant.error_pixels(0, 0, participant.width, participant.height), 0);
+    write_doc_image(dir, "doc-participant", "participant");
+    xdo("key ctrl+Right");
+    ASSERT_TRUE(lab.wait_state([](const json& j) {
+        return j["step"] == "headset" && j["headset"]["runtime_available"] == true;
+    })) << lab.state().dump(1);
+    ASSERT_TRUE(lab.click("preset"));
+    xdo("key Up");
+    xdo("key Return");
+    ASSERT_TRUE(lab.wait_state([](const json& j) { return j["settings"]["preset"] == "minimal"; }))
+        << lab.state()["settings"].dump(1);
+    ASSERT_TRUE(lab.click("measure"));
+    ASSERT_TRUE(lab.wait_state(
+        [](const json& s) { return s["settings"]["measurement"]["state"] == "done"; }, 300))
+        << lab.state()["settings"].dump(1) << lab.log();
+    EXPECT_GT(lab.state()["settings"]["estimate_ms"].get<double>(), 0.0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const json j = lab.state();
+    const Capture headset = capture(lab.window(), dir, "doc-headset");
+    expect_verdict_colour(headset, j["settings"], j["controls"]["verdict"]);
+    write_doc_image(dir, "doc-headset", "headset");
+    start_and_wait(lab, 600);
+    ASSERT_FALSE(HasFailure());
+    EXPECT_EQ(lab.state()["summary"]["state"], "completed") << lab.log();
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const Capture summary = capture(lab.window(), dir, "doc-summary");
+    const std::array<double, 4> line = rect_of(lab.control("protocol-line"));
+    const std::array<double, 3> text = summary.mean(0, line[1] + line[3], summary.width, 120);
+    const std::array<double, 3> empty = summary.mean(0, summary.height - 200, summary.width, 40);
+    EXPECT_GT(text[0] + text[1] + text[2], empty[0] + empty[1] + empty[2] + 3);
+    write_doc_image(dir, "doc-summary", "summary");
+    quit(lab);
 }
 
 // Cancel stops a measurement before its next frame; the state says so and Start works again.
@@ -810,6 +885,7 @@ TEST_F(LabDayTest, NoControllerBoundIsSaidAtOnce) {
     EXPECT_EQ(h["answer_warning"], message);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     const Capture after = capture(lab.window(), dir, "no-controller");
+    write_doc_image(dir, "no-controller", "no-controller");
     const std::array<double, 4> line = rect_of(lab.control("answer-warning"));
     EXPECT_GT(after.error_pixels(0, line[1], after.width, line[3]), 30)
         << lab.state()["controls"].dump(1);

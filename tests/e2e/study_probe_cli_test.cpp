@@ -1,4 +1,4 @@
-// `monoplane study probe` (docs/lab-session-settings.md) end to end: the executable probes a
+// `monoplane study probe` (docs/lab.md, "Session settings") end to end: the executable probes a
 // protocol it is given, with validation on, and prints each preset's options, eye size, estimate,
 // conditions and verdict as JSON; presets are compared by fragment counts, never by time.
 #include <gtest/gtest.h>

@@ -117,7 +117,7 @@ TEST(FrameTimeVerdict, AdviceNamesTheMostFaithfulPresetEstimatedToFit) {
 }
 
 TEST(FrameTimeVerdict, TheDocumentedExamplesAt90Hz) {
-    // docs/lab-session-settings.md quotes these. 41 / 11.11 = 3.69.
+    // docs/lab.md (Session settings) quotes these. 41 / 11.11 = 3.69.
     const std::vector<PresetEstimate> estimates = {{"balanced", 20.0}, {"fast", 9.8}};
     EXPECT_EQ(judge_frame_time("full", 41.0, 90.0, estimates).text,
               "cannot reach 90 Hz: about 41.0 ms per frame, 3.7x too slow; choose 'fast' (about "
