@@ -96,7 +96,8 @@ StudyOptions study_options(const lab::LaunchRequest& r, const LabOptions& lab) {
     o.accept_changed_scenes = r.accept_changed_scenes;
     o.headset = r.headset;
     o.observer = r.observer;
-    o.headset_options = lab.headset;  // window "auto", as the command
+    o.headset_options = lab.headset;                       // window "auto", as the command
+    if (!r.keys.empty()) o.headset_options.keys = r.keys;  // the window's Keys choice
     // The session settings' preset stands for --detail and --resolution-scale (run only: a
     // resumed session renders at the detail it began with).
     if (r.preset) {

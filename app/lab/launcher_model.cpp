@@ -181,6 +181,7 @@ std::vector<std::string> LaunchRequest::arguments() const {
     }
     a.insert(a.end(), {"--headset", headset});
     if (!observer.empty()) a.insert(a.end(), {"--observer", observer});
+    if (!keys.empty()) a.insert(a.end(), {"--keys", keys});
     if (seed && command == Command::Run) a.insert(a.end(), {"--seed", std::to_string(*seed)});
     a.insert(a.end(), session_arguments.begin(), session_arguments.end());
     if (preset) {
@@ -471,6 +472,7 @@ LaunchRequest LauncherModel::request() const {
     r.observer = observer_;
     r.session_arguments = session_arguments_;
     if (const PerformancePreset* chosen = preset()) r.preset = *chosen;
+    r.keys = keys_;
     return r;
 }
 
@@ -554,6 +556,7 @@ Result<LaunchRequest> LauncherModel::resume(std::int64_t session_id, bool accept
     r.headset = headset_;
     r.observer = observer_;
     if (const PerformancePreset* chosen = preset()) r.preset = *chosen;
+    r.keys = keys_;
     launched_session_number_ = row.session_number;
     launched_ = r;
     summary_.reset();

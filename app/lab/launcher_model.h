@@ -120,6 +120,9 @@ struct LaunchRequest {
     // detail and resolution scale, resume its resolution scale only (a resumed session renders
     // at the detail it began with).
     std::optional<PerformancePreset> preset;
+    // The participant's answer keys as `study run --keys` takes them: "" the protocol's
+    // [responses], "default" (Left/Right switch, Return confirms) or "none".
+    std::string keys;
 
     // The same request as a command line after `monoplane` ("study", "run", "--protocol", ...):
     // shown to the experimenter so the session can be repeated from a shell. Any time.
@@ -284,6 +287,12 @@ class LauncherModel {
         measurement_ = std::move(measurement);
     }
     const FrameTimeMeasurement& measurement() const { return measurement_; }
+    // The Headset step's answer keys (LaunchRequest::keys): "", "default" or "none"; refused as
+    // `study run --keys` refuses it. Any time.
+    Result<void> set_keys(const std::string& keys);
+    const std::string& keys() const { return keys_; }
+    // Whether keys answer: the protocol's [responses] with the keys choice over it.
+    bool answer_keys_enabled() const;
     // Whether a simulated observer answers the sessions, as run_study decides: a named observer
     // on any headset; "none", or openxr without one, leaves the answers to the participant.
     bool observer_answers() const;
@@ -366,6 +375,7 @@ class LauncherModel {
     bool preset_chosen_ = false;  // set_preset was called: the experimenter's choice stays
     std::vector<PresetEstimate> estimates_;
     FrameTimeMeasurement measurement_;
+    std::string keys_;  // LaunchRequest::keys
 };
 
 }  // namespace monoplane::lab

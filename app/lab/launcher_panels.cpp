@@ -470,10 +470,9 @@ void LauncherPanels::draw_headset() {
     // one, leaves the answers to the controller.
     const std::string& observer = model_.observer();
     if (observer == "none" || (model_.headset() == "openxr" && observer.empty())) {
-        const bool keys = model_.protocol() != nullptr && model_.protocol()->responses.enabled;
-        ImGui::TextUnformatted(keys ? "Answers: the participant, with the controller or the "
-                                      "protocol's [responses] keys."
-                                    : "Answers: the participant, with the controller.");
+        ImGui::TextUnformatted(model_.answer_keys_enabled()
+                                   ? "Answers: the participant, with the controller or the keys."
+                                   : "Answers: the participant, with the controller.");
     } else {
         ImGui::Text("Answers: the simulated observer (%s).",
                     model_.observer().empty() ? "default" : model_.observer().c_str());
@@ -483,6 +482,7 @@ void LauncherPanels::draw_headset() {
                   model_.headset_report().check_frames);
     message_line(model_.headset_report().answer_warning);
     controls_.mark("answer-warning", false, false);
+    draw_keys_choice();
     draw_session_settings();
     draw_start();
 }

@@ -74,6 +74,8 @@ class LauncherPanels {
     // The session settings (session_settings_panel.cpp): the performance preset, its frame-time
     // estimate with the verdict, and Measure / Cancel.
     void draw_session_settings();
+    // The answer keys (--keys): the protocol's, default or none.
+    void draw_keys_choice();
     void draw_estimates();
     void draw_verdict();
     void draw_measurement();

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "app/lab/launcher_model.h"
+#include "study/protocol_responses.h"
 
 namespace monoplane::lab {
 namespace {
@@ -92,6 +93,26 @@ std::optional<FrameTimeVerdict> LauncherModel::frame_time_verdict() const {
     const std::optional<double> ms = estimate_ms(preset_name_);
     if (!ms || !(*ms > 0.0)) return std::nullopt;
     return judge_frame_time(preset_name_, *ms, headset_report_.refresh_hz, estimates_);
+}
+
+Result<void> LauncherModel::set_keys(const std::string& keys) {
+    if (!keys.empty()) {
+        Result<study::ResponseSettings> parsed = study::parse_keys_option(
+            keys, protocol_ ? protocol_->responses : study::ResponseSettings{});
+        MONOPLANE_TRY(parsed);
+    }
+    keys_ = keys;
+    revalidate();
+    return Ok{};
+}
+
+// As the session resolves them (study::parse_keys_option over the protocol's [responses]).
+bool LauncherModel::answer_keys_enabled() const {
+    const study::ResponseSettings protocol =
+        protocol_ ? protocol_->responses : study::ResponseSettings{};
+    if (keys_.empty()) return protocol.enabled;
+    Result<study::ResponseSettings> parsed = study::parse_keys_option(keys_, protocol);
+    return parsed && parsed->enabled;
 }
 
 bool LauncherModel::observer_answers() const {

@@ -109,6 +109,8 @@ void write_headset(JsonWriter& w, const LauncherModel& m) {
         w.null("ipd_m");
     w.value("interaction_profile", h.interaction_profile)
         .value("answer_warning", h.answer_warning)
+        .value("keys", m.keys())
+        .value("keys_answer", m.answer_keys_enabled())
         .value("message", h.message)
         .value("check", h.check)
         .value("check_message", h.check_message)

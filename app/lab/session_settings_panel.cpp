@@ -28,6 +28,22 @@ void coloured_text(const ImVec4& colour, const std::string& text) {
 
 }  // namespace
 
+// "protocol" is the protocol's [responses] (no --keys); the others are --keys' own words.
+void LauncherPanels::draw_keys_choice() {
+    ImGui::TextUnformatted("Answer keys:");
+    ImGui::SameLine();
+    std::string chosen = model_.keys().empty() ? "protocol" : model_.keys();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 10.0f);
+    draw_choice(controls_, "keys", "##keys", {"protocol", "default", "none"}, chosen);
+    const std::string keys = chosen == "protocol" ? "" : chosen;
+    if (keys != model_.keys()) note(model_.set_keys(keys));
+    ImGui::SameLine();
+    coloured_text(kDim, model_.answer_keys_enabled()
+                            ? "keys answer too, in the session's window (Left/Right switch, "
+                              "Return confirms, unless the protocol names others)"
+                            : "no keys: only the controller (or a simulated observer) answers");
+}
+
 bool LauncherPanels::measuring_refuses(const char* what) {
     if (!frame_time_job_.running()) return false;
     ui_.action_message = std::string(
@@ -151,7 +167,7 @@ void LauncherPanels::judge_answers(const std::string& profile, std::int64_t fram
         headset::AnswerChannels channels;
         channels.interaction_profile = profile;
         channels.focused_syncs = static_cast<int>(std::min<std::int64_t>(frames, INT_MAX));
-        channels.keys = model_.protocol()->responses.enabled;
+        channels.keys = model_.answer_keys_enabled();
         channels.observer = model_.observer_answers();
         warning = headset::cannot_answer_message(channels).value_or("");
     }

@@ -902,6 +902,21 @@ TEST_F(LabDayTest, NoControllerBoundIsSaidAtOnce) {
     h = lab.state()["headset"];
     EXPECT_EQ(h["check"], "cancelled") << h.dump(1);
     EXPECT_EQ(h["interaction_profile"], "");
+    EXPECT_EQ(h["keys_answer"], true);
+    // Keys "none" in the window (the third choice: Down, Down, Enter) leaves nobody again, and
+    // the session's command says --keys none.
+    ASSERT_TRUE(lab.click("keys"));
+    xdo("key Down");
+    xdo("key Down");
+    xdo("key Return");
+    ASSERT_TRUE(lab.wait_state([&](const json& j) {
+        return j["headset"]["keys"] == "none" && j["headset"]["answer_warning"] == message;
+    })) << lab.state()["headset"].dump(1);
+    const std::vector<std::string> arguments = lab.state()["start"]["arguments"];
+    const std::vector<std::string> keys_none = {"--keys", "none"};
+    EXPECT_NE(std::search(arguments.begin(), arguments.end(), keys_none.begin(), keys_none.end()),
+              arguments.end())
+        << lab.state()["start"].dump(1);
     quit(lab);
 }
 
