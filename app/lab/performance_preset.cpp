@@ -89,7 +89,10 @@ std::string advice(std::string_view preset, double budget_ms, const std::string&
     const auto chosen = std::find(kNames.begin(), kNames.end(), preset);
     std::vector<std::string_view> untried;
     const PresetEstimate* cheapest_known = nullptr;
-    for (auto name = chosen == kNames.end() ? chosen : chosen + 1; name != kNames.end(); ++name) {
+    // A preset of no such name (the launcher's "custom", from the command line) is compared with
+    // all four: any of them may be the cheaper.
+    for (auto name = chosen == kNames.end() ? kNames.begin() : chosen + 1; name != kNames.end();
+         ++name) {
         const PresetEstimate* e = estimate_of(*name, estimates);
         if (e && e->frame_ms <= budget_ms) {
             return "choose '" + e->preset + "' (about " + format_frame_time(e->frame_ms) +

@@ -87,7 +87,8 @@ struct FrameTimeVerdict {
 // `refresh_hz` (<= 0: not reported, kAssumedRefreshHz assumed and the text says so). When it does
 // not fit, the text names the most faithful lower preset whose estimate in `estimates` fits;
 // without such estimates it names the lower presets to try; for the cheapest preset, or when
-// every lower estimate misses too, it says the device cannot keep the rate.
+// every lower estimate misses too, it says the device cannot keep the rate. A preset of another
+// name (the launcher's "custom") counts every preset as lower.
 FrameTimeVerdict judge_frame_time(std::string_view preset, double frame_ms, double refresh_hz,
                                   std::span<const PresetEstimate> estimates = {});
 
