@@ -363,7 +363,9 @@ void add_lab_command(CLI::App& root, const GlobalOptions& global) {
                     "Sessions started here use this seed (as `study run --seed`); default: drawn "
                     "and recorded");
     HeadsetStudyOptions& h = o->headset;
-    cmd->add_option("--detail", h.detail, "Sessions: scene detail instead of the protocol's");
+    cmd->add_option("--detail", h.detail,
+                    "Sessions: scene detail instead of the protocol's; with --resolution-scale it "
+                    "chooses the window's performance preset (docs/lab.md)");
     cmd->add_option("--resolution-scale", h.resolution_scale,
                     "Sessions: eye size relative to the runtime's recommendation")
         ->capture_default_str()
