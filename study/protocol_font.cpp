@@ -40,7 +40,21 @@ std::vector<ShownText> shown_texts(const toml::table& root) {
     if (const toml::array* items = root.at_path("questionnaire.items").as_array()) {
         for (const toml::node& item : *items) add_string(&item, "questionnaire.items", out);
     }
+    for (const PromptKey& key : prompt_keys()) {
+        const std::string path = "text.prompts." + std::string(key.key);
+        add_string(root.at_path(path).node(), path, out);
+    }
     return out;
+}
+
+// The characters of `text` that `font` lacks, each once, line breaks aside.
+std::string missing_characters(std::string_view text, const text::Font& font) {
+    std::u32string missing;
+    for (const char32_t c : text::decode_utf8_lenient(text)) {
+        if (c == U'\n' || missing.find(c) != std::u32string::npos) continue;
+        if (!font.has_glyph(c)) missing += c;
+    }
+    return text::encode_utf8(missing);
 }
 
 // Where `character` is first written in the file at or after the value's start: the line and
@@ -92,6 +106,27 @@ void check_text(const ShownText& shown, const text::Font& font, std::string_view
     }
 }
 
+// The prompts the protocol leaves in English (those it gives were checked where written), and
+// what the headset fills into them: digits and the countdown's colon.
+void check_prompts(const HeadsetPrompts& prompts, const text::Font& font, TomlProblems& problems) {
+    const HeadsetPrompts english;
+    for (const PromptKey& key : prompt_keys()) {
+        const std::string& prompt = prompts.*key.member;
+        if (prompt != english.*key.member) continue;
+        const std::string missing = missing_characters(prompt, font);
+        if (missing.empty()) continue;
+        problems.add("[text] font: " + font_words(font) + " lacks '" + missing +
+                     "', which the headset's prompt '" + std::string(key.key) + "' uses (\"" +
+                     prompt + "\"); give [text.prompts] " + std::string(key.key) +
+                     " in the protocol's language, or choose a font that has them");
+    }
+    if (const std::string missing = missing_characters(kFilledCharacters, font); !missing.empty()) {
+        problems.add("[text] font: " + font_words(font) + " lacks '" + missing +
+                     "', which the headset's page numbers and countdowns use; choose a font "
+                     "with digits");
+    }
+}
+
 }  // namespace
 
 Result<void> check_protocol_font(const Protocol& protocol) {
@@ -105,15 +140,7 @@ Result<void> check_protocol_font(const Protocol& protocol) {
     TomlProblems problems(protocol.source);
     for (const ShownText& shown : shown_texts(root.value()))
         check_text(shown, *font.value(), protocol.text, problems);
-    std::string missing;
-    for (const char c : kPromptCharacters) {
-        if (!font.value()->has_glyph(static_cast<unsigned char>(c))) missing += c;
-    }
-    if (!missing.empty()) {
-        problems.add("[text] font: " + font_words(*font.value()) + " lacks '" + missing +
-                     "', which the headset's prompts use (\"Press CONFIRM to begin\"); choose a "
-                     "font with Latin letters and digits too");
-    }
+    check_prompts(protocol.day.prompts, *font.value(), problems);
     if (!problems.empty()) return problems.error();
     return Ok{};
 }

@@ -10,13 +10,12 @@
 
 namespace monoplane::study {
 
-// The characters of the headset's own prompts and counters ("Press CONFIRM to begin", "Page 1
-// of 2", "Break: 0:30", the questionnaire's scale): every font a protocol names must draw them.
-inline constexpr std::string_view kPromptCharacters =
-    "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789 :/.,()[]-=";
+// What the headset fills into its prompts' placeholders: page numbers, counts, a countdown.
+inline constexpr std::string_view kFilledCharacters = "0123456789:";
 
 // Checks that protocol.day.font (an absolute path) opens and draws every character of the pages
-// ([[instructions]], [ready], [breaks], [end]), the questionnaire's items and kPromptCharacters.
+// ([[instructions]], [ready], [breaks], [end]), the questionnaire's items, the headset's prompts
+// ([text.prompts], or the English ones it leaves out) and kFilledCharacters.
 // Each missing character is one located problem "FILE:LINE:COL: key 'K': 'ä' (U+00E4) is not in the
 // font ..." at the line where it is written; a questionnaire item that needs text shaping is
 // refused too (pages are refused so when parsed). May be called on a protocol parse_protocol

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "study/headset_prompts.h"
 #include "text/font.h"
 
 namespace monoplane::study {
@@ -69,6 +70,9 @@ struct StudyDaySettings {
     // [text] font: the font file the screens and questionnaire are drawn with in the headset
     // (docs/protocols.md, "Languages"); an absolute path.
     std::string font = text::kDefaultFontPath;
+    // [text.prompts]: the headset's own words (page footers, the break countdown, the
+    // questionnaire's scale), in the participant's language.
+    HeadsetPrompts prompts;
 
     bool has_screens() const {
         return !instructions.empty() || ready || (breaks && breaks->enabled()) || end;

@@ -19,7 +19,7 @@ namespace monoplane::study {
 namespace {
 
 constexpr std::array<std::string_view, 1> kPageKeys = {"text"};
-constexpr std::array<std::string_view, 1> kTextKeys = {"font"};
+constexpr std::array<std::string_view, 2> kTextKeys = {"font", "prompts"};
 constexpr std::array<std::string_view, 4> kBreakKeys = {"every_trials", "between_blocks", "min_s",
                                                         "text"};
 constexpr std::array<std::string_view, 7> kVariableKeys = {"name",    "type",     "min", "max",
@@ -513,14 +513,55 @@ void read_variables(const TomlScope& root, StudyDaySettings& day, TomlProblems& 
     }
 }
 
+// [text.prompts]: each given prompt replaces the English one; empty leaves that part out. The
+// characters are judged as a page's (screen_text_problem), the placeholders against the
+// prompt's own.
+void read_prompts(const toml::table& text, HeadsetPrompts& prompts, TomlProblems& problems) {
+    const toml::node* node = text.get("prompts");
+    if (node == nullptr) return;
+    const toml::table* table = node->as_table();
+    if (table == nullptr) {
+        report_wrong_type(*node, "text.prompts",
+                          "a table ([text.prompts] with page = \"...\", next = \"...\", ...)",
+                          problems);
+        return;
+    }
+    const TomlScope scope{*table, "text.prompts"};
+    std::vector<std::string_view> known;
+    for (const PromptKey& key : prompt_keys()) known.push_back(key.key);
+    report_unknown_keys(scope, known, problems);
+    for (const PromptKey& key : prompt_keys()) {
+        const toml::node* value = table->get(key.key);
+        if (value == nullptr) continue;
+        const std::string qualified = scope.qualified(key.key);
+        const auto* text_value = value->as_string();
+        if (text_value == nullptr) {
+            report_wrong_type(*value, qualified, "a string, the prompt as the participant reads it",
+                              problems);
+            continue;
+        }
+        const std::string& prompt = text_value->get();
+        std::optional<std::string> problem =
+            is_blank(prompt) ? std::nullopt : screen_text_problem(prompt);
+        if (!problem) problem = prompt_placeholder_problem(prompt, key.placeholders);
+        if (problem) {
+            problems.add(value->source(), toml_key_prefix(qualified) + *problem);
+            continue;
+        }
+        prompts.*key.member = is_blank(prompt) ? std::string() : prompt;
+    }
+}
+
 // [text]: the font the screens are drawn with. Whether it opens and has the screens'
 // characters is checked when the file is loaded (protocol_font.h).
 void read_text(const TomlScope& root, StudyDaySettings& day, TomlProblems& problems) {
-    const toml::table* table =
-        find_table(root, "text", "a table ([text] with font = \"/path/to/font.ttf\")", problems);
+    const toml::table* table = find_table(
+        root, "text", "a table ([text] with font = \"/path/to/font.ttf\" and [text.prompts])",
+        problems);
     if (table == nullptr) return;
     const TomlScope scope{*table, "text"};
     report_unknown_keys(scope, kTextKeys, problems);
+    read_prompts(*table, day.prompts, problems);
     const toml::node* node = table->get("font");
     if (node == nullptr) return;
     const auto* font = node->as_string();

@@ -17,8 +17,8 @@ namespace monoplane::study {
 
 // The study-day keys of a protocol's top level (for its list of known keys).
 inline constexpr std::array<std::string_view, 10> kStudyDayKeys = {
-    "sessions", "repetitions", "blocking",  "text_height_deg", "instructions",
-    "ready",    "breaks",      "end",       "variables",       "text"};
+    "sessions", "repetitions", "blocking", "text_height_deg", "instructions",
+    "ready",    "breaks",      "end",      "variables",       "text"};
 
 // Limits the readers enforce; the fuzz harness and the tests check accepted protocols against
 // them.

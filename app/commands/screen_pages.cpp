@@ -47,33 +47,56 @@ std::string countdown_text(std::int64_t remaining_ns) {
     return text;
 }
 
-std::vector<std::string> page_footer(const study::LiveScreen& screen) {
-    switch (screen.kind) {
-        case ScreenKind::Instructions: {
-            if (screen.page_count <= 1) return {"Press CONFIRM to begin"};
-            const bool first = screen.page == 0;
-            const bool last = screen.page + 1 >= screen.page_count;
-            return {"Page " + std::to_string(screen.page + 1) + " of " +
-                    std::to_string(screen.page_count) + " - CONFIRM: " + (last ? "begin" : "next") +
-                    (first ? "" : ", SWITCH: back")};
-        }
-        case ScreenKind::Ready:
-            return {"Press CONFIRM to begin"};
-        case ScreenKind::Break:
-            if (screen.break_remaining_ns > 0) {
-                return {"Break: " + countdown_text(screen.break_remaining_ns)};
-            }
-            return {"Press CONFIRM to continue"};
-        default:
-            return {};
-    }
+namespace {
+
+// The instructions' footer: the page, then the action, then going back, as far as each is given.
+std::string instructions_footer(const study::LiveScreen& screen,
+                                const study::HeadsetPrompts& prompts) {
+    if (screen.page_count <= 1) return prompts.begin;
+    const bool first = screen.page == 0;
+    const bool last = screen.page + 1 >= screen.page_count;
+    const std::pair<std::string_view, std::string> numbers[] = {
+        {"page", std::to_string(screen.page + 1)}, {"pages", std::to_string(screen.page_count)}};
+    std::string actions = last ? prompts.last : prompts.next;
+    if (!first && !prompts.back.empty()) actions += (actions.empty() ? "" : ", ") + prompts.back;
+    const std::string page = study::fill_prompt(prompts.page, numbers);
+    return page + (page.empty() || actions.empty() ? "" : " - ") + actions;
 }
 
-std::string page_key(const study::LiveScreen& screen) {
+std::string break_footer(const study::LiveScreen& screen, const study::HeadsetPrompts& prompts) {
+    if (screen.break_remaining_ns <= 0) return prompts.resume;
+    const std::pair<std::string_view, std::string> time[] = {
+        {"time", countdown_text(screen.break_remaining_ns)}};
+    return study::fill_prompt(prompts.countdown, time);
+}
+
+}  // namespace
+
+std::vector<std::string> page_footer(const study::LiveScreen& screen,
+                                     const study::HeadsetPrompts& prompts) {
+    std::string line;
+    switch (screen.kind) {
+        case ScreenKind::Instructions:
+            line = instructions_footer(screen, prompts);
+            break;
+        case ScreenKind::Ready:
+            line = prompts.begin;
+            break;
+        case ScreenKind::Break:
+            line = break_footer(screen, prompts);
+            break;
+        default:
+            break;
+    }
+    if (line.empty()) return {};
+    return {line};
+}
+
+std::string page_key(const study::LiveScreen& screen, const study::HeadsetPrompts& prompts) {
     std::string key = std::to_string(static_cast<int>(screen.kind)) + "|" +
                       std::to_string(screen.page) + "|" +
                       std::to_string(std::hash<std::string>{}(screen.text ? *screen.text : ""));
-    for (const std::string& line : page_footer(screen)) key += "|" + line;
+    for (const std::string& line : page_footer(screen, prompts)) key += "|" + line;
     return key;
 }
 
@@ -83,7 +106,7 @@ headset::EyeCompositor::Overlay PagePanels::overlay(const study::LiveScreen& scr
                                                     vk::Extent2D extent) {
     // The frusta too: a page first drawn in a frame without located views is drawn again for
     // the runtime's own once they come.
-    std::string key = page_key(screen);
+    std::string key = page_key(screen, prompts_);
     for (const rig::Tangents& t : eyes) {
         for (const double v : {t.left, t.right, t.down, t.up}) key += "|" + std::to_string(v);
     }
@@ -91,7 +114,7 @@ headset::EyeCompositor::Overlay PagePanels::overlay(const study::LiveScreen& scr
     if (key != shown_ || !compositor.has_overlay(kOverlayKey)) {
         const headset::TextPanel panel =
             headset::layout_text_panel(screen.text ? *screen.text : std::string(),
-                                       page_footer(screen), eyes, extent, options_);
+                                       page_footer(screen, prompts_), eyes, extent, options_);
         const std::string page = page_name(screen);
         if (panel.shrunk && warned_.insert(page).second) {
             std::cerr << "warning: the " << page << "'s text does not fit the headset's view "

@@ -7,10 +7,12 @@
 #include <cstdint>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/headset/eye_compositor.h"
 #include "app/headset/text_panel.h"
+#include "study/headset_prompts.h"
 #include "study/live_session.h"
 
 namespace monoplane::app {
@@ -22,21 +24,23 @@ bool is_page_screen(study::ScreenKind kind);
 // seconds rounded up, so that it reads 0:01, never 0:00, while confirm does not yet continue.
 std::string countdown_text(std::int64_t remaining_ns);
 
-// The lines under a page's text: what the controller's buttons do there. Instructions
-// "Page 2 of 3 - CONFIRM: next, SWITCH: back" (no SWITCH on the first page; a single page
-// "Press CONFIRM to begin"); ready "Press CONFIRM to begin"; a break "Break: 0:23", then
-// "Press CONFIRM to continue"; the end screen none. In English and ASCII: every protocol's font
-// must draw them (study/protocol_font.h, kPromptCharacters).
-std::vector<std::string> page_footer(const study::LiveScreen& screen);
+// The lines under a page's text: what the controller's buttons do there, in the protocol's
+// words (study::HeadsetPrompts; English by default). Instructions "Page 2 of 3 - CONFIRM: next,
+// SWITCH: back" (no back on the first page, last instead of next on the last; a single page
+// "Press CONFIRM to begin"); ready "Press CONFIRM to begin"; a break "Break: 0:23", then "Press
+// CONFIRM to continue"; the end screen none. A prompt the protocol left empty is left out.
+std::vector<std::string> page_footer(const study::LiveScreen& screen,
+                                     const study::HeadsetPrompts& prompts = {});
 
 // Everything a page's image shows, as one string: a different one needs a new image (a break's
 // changes once a second, not every frame).
-std::string page_key(const study::LiveScreen& screen);
+std::string page_key(const study::LiveScreen& screen, const study::HeadsetPrompts& prompts = {});
 
 // The page panel of the eyes: one overlay, its image made again only when page_key changes.
 class PagePanels {
   public:
-    explicit PagePanels(const headset::TextPanelOptions& options) : options_(options) {}
+    PagePanels(const headset::TextPanelOptions& options, study::HeadsetPrompts prompts)
+        : options_(options), prompts_(std::move(prompts)) {}
 
     // The overlay that shows `screen` (a page) in eyes of these frusta and swapchain size.
     headset::EyeCompositor::Overlay overlay(const study::LiveScreen& screen,
@@ -48,6 +52,7 @@ class PagePanels {
 
   private:
     headset::TextPanelOptions options_;
+    study::HeadsetPrompts prompts_;
     std::string shown_;  // page_key (and the eyes') of the image under kOverlayKey
     headset::OverlayPlacement placement_;
     std::set<std::string> warned_;  // pages said to be too long for the view

@@ -127,17 +127,22 @@ modes::StereoViewInputs view_inputs(const headset::HeadsetFrame& frame, const Lo
 std::vector<std::string> questionnaire_lines(const study::Protocol& protocol, int question,
                                              int selection) {
     const study::Questionnaire& q = protocol.questionnaire;
+    const study::HeadsetPrompts& prompts = protocol.day.prompts;
     std::string scale;
     for (int v = 1; v <= q.scale_points; ++v) {
         scale += v == selection ? "[" + std::to_string(v) + "] " : " " + std::to_string(v) + "  ";
     }
-    return {"Question " + std::to_string(question + 1) + " of " + std::to_string(q.items.size()),
+    const std::pair<std::string_view, std::string> counts[] = {
+        {"question", std::to_string(question + 1)},
+        {"questions", std::to_string(q.items.size())},
+        {"points", std::to_string(q.scale_points)}};
+    return {study::fill_prompt(prompts.question, counts),
             q.items[static_cast<std::size_t>(question)],
             "",
-            "1 = disagree ... " + std::to_string(q.scale_points) + " = agree",
+            study::fill_prompt(prompts.scale, counts),
             scale,
             "",
-            "trigger: next value    confirm button: choose"};
+            prompts.answer};
 }
 
 bool has_display() {
@@ -171,7 +176,8 @@ class HeadsetLoop {
           compositor_frames_(ctx),
           frame_log_(store, session_id),
           pages_(headset::TextPanelOptions{.text_height_deg = protocol.day.text_height_deg,
-                                           .font = protocol.day.font}),
+                                           .font = protocol.day.font},
+                 protocol.day.prompts),
           window_answers_(protocol.questionnaire.items.size(), 0),
           answers_(answers) {
         headset::TextStyle label_style;
@@ -179,7 +185,9 @@ class HeadsetLoop {
         label_style.padding_px = 4;
         compositor_.set_overlay("label1", headset::render_text({"1"}, label_style));
         compositor_.set_overlay("label2", headset::render_text({"2"}, label_style));
-        compositor_.set_overlay("paused", headset::render_text({"Paused"}, {}));
+        compositor_.set_overlay(
+            "paused", headset::render_text({protocol.day.prompts.paused},
+                                           headset::TextStyle{.font = protocol.day.font}));
         if (headset.depth_format() != vk::Format::eUndefined) {
             depth_writer_.emplace(ctx, headset.depth_format());
         }

@@ -75,7 +75,9 @@ struct Page {
     const char* name;
     fs::path protocol;
     const char* font;
-    std::vector<std::string> footer;  // the headset's prompt under the first of its pages
+    // The headset's prompt under the first of its pages, as the protocol words it
+    // ([text.prompts]): written out here, not taken from the program.
+    std::vector<std::string> footer;
 };
 
 class HeadsetPageLanguage : public ::testing::TestWithParam<Page> {};
@@ -157,11 +159,11 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(Page{"de",
                            source_dir() / "protocols" / "fink2019-de.toml",
                            testing::kDejaVuSans,
-                           {"Page 1 of 3 - CONFIRM: next"}},
+                           {"Seite 1 von 3 - CONFIRM: weiter"}},
                       Page{"zh",
                            source_dir() / "tests" / "fixtures" / "text" / "demo-zh.toml",
                            testing::kWqyMicroHei,
-                           {"Press CONFIRM to begin"}}),
+                           {"\u6309 CONFIRM \u952e\u5f00\u59cb"}}),
     [](const ::testing::TestParamInfo<Page>& info) { return std::string(info.param.name); });
 
 }  // namespace

@@ -53,6 +53,43 @@ TEST(PageFooter, ABreakCountsDownThenAsksForConfirm) {
     EXPECT_EQ(countdown_text(3725 * kSecond), "1:02:05");
 }
 
+// The protocol's own words ([text.prompts]): the footer composed of the given parts, a part
+// left empty left out with its separator, the countdown filled into its template.
+TEST(PageFooter, ThePromptsOfTheProtocolsLanguage) {
+    study::HeadsetPrompts de;
+    de.page = "Seite {page} von {pages}";
+    de.next = "CONFIRM: weiter";
+    de.last = "CONFIRM: anfangen";
+    de.back = "SWITCH: zur\u00fcck";
+    de.begin = "Zum Beginnen CONFIRM dr\u00fccken";
+    de.resume = "Weiter mit CONFIRM";
+    de.countdown = "Pause: noch {time}";
+    const std::string text = "Lies mich.";
+    EXPECT_EQ(page_footer(page(ScreenKind::Instructions, &text, 0, 3), de),
+              std::vector<std::string>{"Seite 1 von 3 - CONFIRM: weiter"});
+    EXPECT_EQ(page_footer(page(ScreenKind::Instructions, &text, 2, 3), de),
+              std::vector<std::string>{"Seite 3 von 3 - CONFIRM: anfangen, SWITCH: zur\u00fcck"});
+    EXPECT_EQ(page_footer(page(ScreenKind::Instructions, &text, 0, 1), de),
+              std::vector<std::string>{"Zum Beginnen CONFIRM dr\u00fccken"});
+    LiveScreen pause = page(ScreenKind::Break, &text);
+    pause.break_remaining_ns = 95 * kSecond;
+    EXPECT_EQ(page_footer(pause, de), std::vector<std::string>{"Pause: noch 1:35"});
+    pause.break_remaining_ns = 0;
+    EXPECT_EQ(page_footer(pause, de), std::vector<std::string>{"Weiter mit CONFIRM"});
+    // Parts left empty: no back, then no page number either, then nothing at all.
+    de.back.clear();
+    EXPECT_EQ(page_footer(page(ScreenKind::Instructions, &text, 1, 3), de),
+              std::vector<std::string>{"Seite 2 von 3 - CONFIRM: weiter"});
+    de.page.clear();
+    EXPECT_EQ(page_footer(page(ScreenKind::Instructions, &text, 1, 3), de),
+              std::vector<std::string>{"CONFIRM: weiter"});
+    de.next.clear();
+    EXPECT_TRUE(page_footer(page(ScreenKind::Instructions, &text, 1, 3), de).empty());
+    // Another wording is another image.
+    EXPECT_NE(page_key(page(ScreenKind::Ready, &text), de),
+              page_key(page(ScreenKind::Ready, &text)));
+}
+
 TEST(PageKey, ABreaksImageChangesOncePerSecond) {
     // 30 s of break at 90 Hz: one image per second of countdown and one for "press confirm".
     const std::string text = "Take a short break.";

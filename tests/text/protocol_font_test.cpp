@@ -129,6 +129,64 @@ TEST_F(ProtocolFont, AQuestionnaireItemInArabicIsRefusedForShaping) {
                   "headset draws one glyph per character, left to right");
 }
 
+// The headset's own words in the participant's language: each given prompt replaces the English
+// one, an empty one is left out, the rest stay English; each is checked where it is written.
+const std::string kGermanPrompts = R"([text.prompts]
+page = "Seite {page} von {pages}"
+next = "CONFIRM: weiter"
+back = ""
+break = "Pause: noch {time}"
+)";
+
+TEST_F(ProtocolFont, PromptsInTheParticipantsLanguage) {
+    const std::string european = kProtocol.substr(0, kProtocol.find("\nChinese")) + "\"\"\"\n";
+    const Result<Protocol> p = load_protocol(write("de.toml", european + kGermanPrompts));
+    ASSERT_TRUE(p.ok()) << p.error().message;
+    const HeadsetPrompts& prompts = p->day.prompts;
+    EXPECT_EQ(prompts.page, "Seite {page} von {pages}");
+    EXPECT_EQ(prompts.next, "CONFIRM: weiter");
+    EXPECT_EQ(prompts.back, "");
+    EXPECT_EQ(prompts.countdown, "Pause: noch {time}");
+    EXPECT_EQ(prompts.begin, "Press CONFIRM to begin");  // not given: English
+    EXPECT_EQ(prompts.paused, "Paused");
+}
+
+TEST_F(ProtocolFont, APromptIsCheckedWhereItIsWritten) {
+    const std::string european = kProtocol.substr(0, kProtocol.find("\nChinese")) + "\"\"\"\n";
+    // Line 9: [text.prompts]; 10: page, 11: next, 12: paused, 13: an unknown prompt.
+    const fs::path file = write("bad.toml", european +
+                                                "[text.prompts]\n"
+                                                "page = \"Seite {seite}\"\n"
+                                                "next = \"\u7ee7\u7eed\"\n"
+                                                "paused = 3\n"
+                                                "pause = \"Pause\"\n");
+    const Result<Protocol> p = load_protocol(file);
+    ASSERT_FALSE(p.ok());
+    const std::string& m = p.error().message;
+    EXPECT_NE(m.find(file.string() +
+                     ":10:8: key 'text.prompts.page': uses {seite}; this prompt knows {page}, "
+                     "{pages}"),
+              std::string::npos)
+        << m;
+    EXPECT_NE(m.find(file.string() + ":12:10: key 'text.prompts.paused': "), std::string::npos)
+        << m;
+    EXPECT_NE(m.find(file.string() + ":13:1: key 'text.prompts.pause': unknown key (did you mean "
+                                     "'text.prompts.paused'?)"),
+              std::string::npos)
+        << m;
+    // Parsed without those, the font is judged: the Chinese prompt's characters, at their column.
+    const fs::path chinese =
+        write("zh-prompt.toml", european + "[text.prompts]\nnext = \"\u7ee7\u7eed\"\n");
+    const Result<Protocol> q = load_protocol(chinese);
+    ASSERT_FALSE(q.ok());
+    EXPECT_EQ(q.error().message.substr(0, q.error().message.find('\n')),
+              chinese.string() +
+                  ":10:9: key 'text.prompts.next': '\u7ee7' (U+7EE7) is not in the font "
+                  "'DejaVu Sans Book' (" +
+                  std::string(text::kDefaultFontPath) +
+                  ", [text] font); choose a font that has it (docs/protocols.md, \"Languages\")");
+}
+
 TEST(ShippedProtocols, Fink2019InGermanHasFink2019sDesign) {
     const Result<Protocol> en = load_protocol(source_dir() / "protocols" / "fink2019.toml");
     const Result<Protocol> de = load_protocol(source_dir() / "protocols" / "fink2019-de.toml");
@@ -146,6 +204,13 @@ TEST(ShippedProtocols, Fink2019InGermanHasFink2019sDesign) {
     EXPECT_EQ(de->day.breaks->min_s, en->day.breaks->min_s);
     EXPECT_NE(de->day.instructions[1].text.find("Dr\u00fccken Sie SWITCH"), std::string::npos);
     EXPECT_NE(de->day.breaks->text.find("schlie\u00dfen"), std::string::npos);
+    // The headset's own words are German too: no English reaches the participant.
+    const HeadsetPrompts english;
+    for (const PromptKey& key : prompt_keys()) {
+        EXPECT_NE(de->day.prompts.*key.member, english.*key.member) << key.key;
+        EXPECT_EQ(en->day.prompts.*key.member, english.*key.member) << key.key;
+    }
+    EXPECT_EQ(de->day.prompts.page, "Seite {page} von {pages}");
 }
 
 }  // namespace

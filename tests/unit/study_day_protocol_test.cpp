@@ -8,11 +8,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "study/headset_prompts.h"
 #include "study/protocol.h"
 
 namespace monoplane::study {
@@ -596,6 +598,7 @@ TEST(StudyDayProtocol, TheReferenceDocumentsEveryKeyTheParserKnows) {
         {"end", base + "[end]\ntext = \"a\"" + junk},
         {"variables", base + "[[variables]]\nname = \"a\"\ntype = \"text\"" + junk},
         {"text", base + "[text]" + junk},
+        {"text.prompts", base + "[text.prompts]" + junk},
     };
     std::size_t count = 0;
     for (const auto& [table, text] : tables) {
@@ -665,6 +668,37 @@ TEST(StudyDayProtocol, DemoShowsOneShortPageAndThresholdTakesBreaks) {
     EXPECT_GT(threshold->day.breaks->every_trials, 0);
     EXPECT_LT(static_cast<std::size_t>(threshold->day.breaks->every_trials),
               threshold->trials_per_session());
+}
+
+// A prompt's placeholders filled in, and the problems a template can have.
+TEST(HeadsetPrompts, PlaceholdersAreFilledAndCheckedPerPrompt) {
+    const std::pair<std::string_view, std::string> values[] = {{"page", "2"}, {"pages", "3"}};
+    EXPECT_EQ(fill_prompt("Seite {page} von {pages}", values), "Seite 2 von 3");
+    EXPECT_EQ(fill_prompt("{pages}/{page}", values), "3/2");
+    EXPECT_EQ(fill_prompt("\u7b2c{page}\u9875", values), "\u7b2c2\u9875");
+    EXPECT_EQ(fill_prompt("no placeholder", values), "no placeholder");
+    EXPECT_EQ(fill_prompt("{time} left", values), "{time} left");  // no value: as written
+    EXPECT_EQ(fill_prompt("open { brace", values), "open { brace");
+
+    const std::string_view page[] = {"page", "pages"};
+    EXPECT_EQ(prompt_placeholder_problem("Seite {page} von {pages}", page), std::nullopt);
+    EXPECT_EQ(prompt_placeholder_problem("Seite {seite}", page),
+              "uses {seite}; this prompt knows {page}, {pages}");
+    EXPECT_EQ(prompt_placeholder_problem("Seite {page", page),
+              "has a '{' without its '}'; this prompt knows {page}, {pages}");
+    EXPECT_EQ(prompt_placeholder_problem("Seite page}", page),
+              "has a '}' without its '{'; this prompt knows {page}, {pages}");
+    EXPECT_EQ(prompt_placeholder_problem("Weiter {page}", {}),
+              "uses {page}; this prompt has no placeholders");
+    // Every prompt is listed once, each with a default that uses only its own placeholders.
+    const HeadsetPrompts english;
+    std::set<std::string_view> keys;
+    for (const PromptKey& key : prompt_keys()) {
+        EXPECT_TRUE(keys.insert(key.key).second) << key.key;
+        EXPECT_EQ(prompt_placeholder_problem(english.*key.member, key.placeholders), std::nullopt)
+            << key.key;
+    }
+    EXPECT_EQ(keys.size(), 11u);
 }
 
 }  // namespace
