@@ -7,10 +7,12 @@
 #include <imgui_impl_vulkan.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <thread>
 
 #include "app/window/screenshot.h"
 #include "app/window/swapchain.h"
@@ -30,8 +32,18 @@ void on_glfw_error(int code, const char* description) {
     last_glfw_error() = std::to_string(code) + ": " + (description ? description : "?");
 }
 
+// A few tries a moment apart: an X server may refuse a new connection for a moment (one failure
+// in a loaded test run opened no experimenter window, where the same display served the
+// launcher before and after), and a session that starts without its window runs to its end
+// without the experimenter's view and controls. A display that is not there fails each try
+// within a second in all.
 bool init_glfw() {
     glfwSetErrorCallback(&on_glfw_error);
+    constexpr int kTries = 5;
+    for (int attempt = 1; attempt < kTries; ++attempt) {
+        if (glfwInit() == GLFW_TRUE) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    }
     return glfwInit() == GLFW_TRUE;
 }
 
