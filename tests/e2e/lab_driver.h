@@ -34,6 +34,7 @@
 #undef Status
 
 namespace monoplane {
+// The tests' own helpers (inline: each test file uses some of them).
 namespace {
 
 namespace fs = std::filesystem;
@@ -44,7 +45,7 @@ inline std::string source_dir() {
     return dir ? dir : ".";
 }
 
-fs::path test_folder() {
+inline fs::path test_folder() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     const fs::path dir =
         fs::temp_directory_path() /
@@ -53,14 +54,14 @@ fs::path test_folder() {
 }
 
 // Why the test cannot run here; empty when it can.
-std::string missing_prerequisite() {
+inline std::string missing_prerequisite() {
     if (std::getenv("DISPLAY") == nullptr) return "no X server (DISPLAY unset; run under xvfb-run)";
     if (std::system("xdotool version > /dev/null 2>&1") != 0)
         return "xdotool is not installed (scripts/install-deps.sh installs it)";
     return {};
 }
 
-std::string xdo_output(const std::string& args) {
+inline std::string xdo_output(const std::string& args) {
     std::string text;
     if (FILE* pipe = popen(("xdotool " + args + " 2>/dev/null").c_str(), "r")) {
         char buffer[256];
@@ -70,13 +71,13 @@ std::string xdo_output(const std::string& args) {
     return text;
 }
 
-void xdo(const std::string& args) {
+inline void xdo(const std::string& args) {
     ASSERT_EQ(std::system(("xdotool " + args).c_str()), 0) << "xdotool " << args;
     // The launcher draws at about 60 frames a second: a few frames for each event to land.
     std::this_thread::sleep_for(std::chrono::milliseconds(150));
 }
 
-bool wait_for(const std::function<bool()>& done, int seconds) {
+inline bool wait_for(const std::function<bool()>& done, int seconds) {
     const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
     while (std::chrono::steady_clock::now() < until) {
         if (done()) return true;
@@ -219,7 +220,7 @@ class Lab {
 };
 
 // Runs `monoplane ARGS` in the background with stdout and stderr into `log`; its pid.
-pid_t spawn_monoplane(std::vector<std::string> args, const fs::path& log) {
+inline pid_t spawn_monoplane(std::vector<std::string> args, const fs::path& log) {
     args.insert(args.begin(), MONOPLANE_EXE);
     const pid_t pid = fork();
     if (pid == 0) {
@@ -235,14 +236,14 @@ pid_t spawn_monoplane(std::vector<std::string> args, const fs::path& log) {
 }
 
 // Runs `monoplane ARGS` to its end; its exit status.
-int run_monoplane(const std::vector<std::string>& args, const fs::path& log) {
+inline int run_monoplane(const std::vector<std::string>& args, const fs::path& log) {
     const pid_t pid = spawn_monoplane(args, log);
     int status = 0;
     waitpid(pid, &status, 0);
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-std::string file_text(const fs::path& file) {
+inline std::string file_text(const fs::path& file) {
     std::ifstream in(file);
     std::stringstream text;
     text << in.rdbuf();
@@ -252,7 +253,7 @@ std::string file_text(const fs::path& file) {
 // Asks the top-level windows named `name` to close as a window manager's close button does: a
 // WM_DELETE_WINDOW client message (xdotool's windowclose destroys the window instead, which no
 // experimenter can do). The number of windows asked.
-int close_windows_named(const std::string& name) {
+inline int close_windows_named(const std::string& name) {
     Display* display = XOpenDisplay(nullptr);
     if (display == nullptr) return 0;
     const Atom protocols = XInternAtom(display, "WM_PROTOCOLS", False);
@@ -274,7 +275,7 @@ int close_windows_named(const std::string& name) {
     return asked;
 }
 
-fs::path prepare(const std::vector<std::pair<std::string, std::string>>& protocols) {
+inline fs::path prepare(const std::vector<std::pair<std::string, std::string>>& protocols) {
     const fs::path dir = test_folder();
     fs::remove_all(dir);
     fs::create_directories(dir / "protocols");
@@ -284,7 +285,7 @@ fs::path prepare(const std::vector<std::pair<std::string, std::string>>& protoco
 }
 
 // A screenshot that shows something: its pixels vary (a blank window is one colour).
-double pixel_stddev(const fs::path& png) {
+inline double pixel_stddev(const fs::path& png) {
     int width = 0, height = 0, channels = 0;
     unsigned char* data = stbi_load(png.c_str(), &width, &height, &channels, 1);
     if (data == nullptr) return 0.0;
@@ -301,7 +302,7 @@ double pixel_stddev(const fs::path& png) {
 
 // Whether the window has saved its screenshot of a step ("NN-<step>.png"): it takes it on the
 // step's third frame, so a test that moves on at once could outrun it on a loaded machine.
-bool has_shot(const fs::path& dir, const std::string& step) {
+inline bool has_shot(const fs::path& dir, const std::string& step) {
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(dir / "shots", ec)) {
         const std::string name = entry.path().stem().string();
@@ -312,7 +313,7 @@ bool has_shot(const fs::path& dir, const std::string& step) {
 
 // From the launcher's start to the Headset step of demo.toml with participant `code`, waiting on
 // each step for its screenshot before moving on.
-void walk_to_headset_step(Lab& lab, const std::string& code) {
+inline void walk_to_headset_step(Lab& lab, const std::string& code) {
     EXPECT_TRUE(lab.focus()) << lab.log();
     EXPECT_TRUE(lab.wait_step("protocol")) << lab.log();  // --db opened it: Database is done
     EXPECT_TRUE(wait_for([&] { return has_shot(lab.dir(), "protocol"); }, 30));
