@@ -410,7 +410,9 @@ TEST_F(LabDayTest, ALongRosterScrollsAndResumeIsReached) {
     ASSERT_TRUE(lab.wait_step("summary", 300)) << lab.log();
     j = lab.state();
     for (const json& line : j["roster"])
-        if (line["participant"] == "P41") EXPECT_EQ(j["summary"]["state"], line["state"]);
+        if (line["participant"] == "P41") {
+            EXPECT_EQ(j["summary"]["state"], line["state"]);
+        }
     EXPECT_EQ(j["summary"]["state"], "completed") << j.dump(1);
     ASSERT_TRUE(lab.focus());
     ASSERT_TRUE(lab.click("next-participant"));
