@@ -294,11 +294,7 @@ std::vector<std::string> variable_columns(const ExportData& data) {
     return columns;
 }
 
-namespace {
-
-// Every session of the database, trials or not (a session may have notes before its first
-// trial started), for the notes export.
-Result<ExportData> collect_notes(const StudyStore& store) {
+Result<ExportData> collect_sessions(const StudyStore& store) {
     Result<std::vector<RosterRow>> roster = store.roster();
     MONOPLANE_TRY(roster);
     ExportData data;
@@ -309,6 +305,8 @@ Result<ExportData> collect_notes(const StudyStore& store) {
     }
     return data;
 }
+
+namespace {
 
 // The variables the sessions' protocols declare, so that a column exists for a variable no
 // participant has been given yet. A stored protocol this build cannot parse any more declares
@@ -333,7 +331,7 @@ std::vector<std::string> declared_variables(const std::map<std::int64_t, Session
 }  // namespace
 
 Result<ExportData> collect_export(const StudyStore& store, ExportFormat format) {
-    if (format == ExportFormat::NotesCsv) return collect_notes(store);
+    if (format == ExportFormat::NotesCsv) return collect_sessions(store);
     if (format == ExportFormat::PressesCsv) return collect_presses(store);
     Result<std::vector<TrialRecord>> trials = store.trials();
     MONOPLANE_TRY(trials);

@@ -86,6 +86,9 @@ void write_frames_csv(const ExportData& data, std::ostream& out);
 void write_notes_csv(const ExportData& data, std::ostream& out);
 // One row per press, sessions in id order, each session's presses in the order logged.
 void write_presses_csv(const ExportData& data, std::ostream& out);
+// Every session of the database, trials or not (a session may have notes or presses before its
+// first trial started): what NotesCsv writes, and what collect_presses adds the presses to.
+Result<ExportData> collect_sessions(const StudyStore& store);
 // Every session of the database with its presses (what PressesCsv writes).
 Result<ExportData> collect_presses(const StudyStore& store);
 

@@ -14,16 +14,13 @@ const std::vector<std::string_view>& presses_export_columns() {
 }
 
 Result<ExportData> collect_presses(const StudyStore& store) {
-    Result<std::vector<RosterRow>> roster = store.roster();
-    MONOPLANE_TRY(roster);
-    ExportData data;
-    for (const RosterRow& row : *roster) {
-        Result<SessionInfo> info = store.session(row.session_id);
-        MONOPLANE_TRY(info);
-        Result<std::vector<ResponsePress>> presses = store.presses(row.session_id);
+    Result<ExportData> sessions = collect_sessions(store);
+    MONOPLANE_TRY(sessions);
+    ExportData data = std::move(sessions).value();
+    for (const auto& [id, session] : data.sessions) {
+        Result<std::vector<ResponsePress>> presses = store.presses(id);
         MONOPLANE_TRY(presses);
-        data.sessions.emplace(row.session_id, std::move(info).value());
-        data.presses.emplace(row.session_id, std::move(presses).value());
+        data.presses.emplace(id, std::move(presses).value());
     }
     return data;
 }
