@@ -14,7 +14,7 @@ Buffer::Buffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFlags usa
         use == MemoryUse::kHostVisible
             ? vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent
             : vk::MemoryPropertyFlags(vk::MemoryPropertyFlagBits::eDeviceLocal);
-    memory_ = allocate_memory(ctx, buffer_.getMemoryRequirements(), properties);
+    memory_ = allocate_memory(ctx, buffer_.getMemoryRequirements(), properties, MemoryKind::kBuffer);
     buffer_.bindMemory(*memory_, 0);
     if (use == MemoryUse::kHostVisible) {
         mapped_ = static_cast<std::byte*>(memory_.map());
