@@ -67,6 +67,13 @@ class ResourceTracker {
   public:
     ResourceTracker(ResourceState state, bool is_image) : state_(state), image_(is_image) {}
 
+    // The memory is taken over from a resource in state `before`: this one's contents and layout
+    // are gone, and its first use waits for that one's accesses.
+    void take_over(const ResourceState& before) {
+        state_ = ResourceState{Layout::kUndefined, before.write_stages, before.write_access,
+                               Stage::kNone,       Access::kNone,       before.read_stages};
+    }
+
     std::optional<Barrier> apply(const MergedUse& use) {
         const UseScope& u = use.scope;
         const bool relayout = image_ && state_.layout != u.layout;
@@ -118,8 +125,12 @@ class ResourceTracker {
 
 class Compiler {
   public:
-    Compiler(const ResourceTable& resources, const std::vector<ResourceState>& initial)
-        : resources_(resources), written_(resources.size(), false) {
+    Compiler(const ResourceTable& resources, const std::vector<ResourceState>& initial,
+             const Aliasing& aliasing)
+        : resources_(resources),
+          written_(resources.size(), false),
+          used_(resources.size(), false),
+          aliasing_(aliasing) {
         if (initial.size() != resources.size()) {
             throw std::invalid_argument("graph: " + std::to_string(initial.size()) +
                                         " initial states for " + std::to_string(resources.size()) +
@@ -129,14 +140,18 @@ class Compiler {
             trackers_.emplace_back(
                 initial[r], resources[static_cast<std::uint16_t>(r)].kind == ResourceKind::kImage);
         }
+        check_aliasing();
+        for (const MemoryHolder& holder : aliasing_.initial) holders_.push_back(holder.resource);
     }
 
     std::vector<Barrier> step(const std::string& where, const std::vector<ResourceUse>& uses) {
         std::vector<Barrier> barriers;
         for (const MergedUse& use : merge_uses(resources_, where, uses)) {
             check_produced(where, use);
+            const bool takes_over = take_memory(where, use.resource);
             if (auto barrier = trackers_[use.resource].apply(use)) {
                 barrier->resource = use.resource;
+                barrier->aliasing = takes_over;
                 barriers.push_back(*barrier);
             }
             if (use.scope.writes) written_[use.resource] = true;
@@ -150,7 +165,70 @@ class Compiler {
         return states;
     }
 
+    const std::vector<std::int32_t>& holders() const { return holders_; }
+
+    // What shares memory must be neither read after the frame nor carried to the next.
+    void check_not_shared(const std::vector<ResourceUse>& exports) const {
+        for (const ResourceUse& use : exports) {
+            if (memory_of(use.resource) >= 0) {
+                throw std::invalid_argument("graph: " + resources_[use.resource].name +
+                                            " is exported and shares memory");
+            }
+        }
+    }
+
   private:
+    std::int32_t memory_of(std::uint16_t resource) const {
+        return aliasing_.memory.empty() ? -1 : aliasing_.memory[resource];
+    }
+
+    void check_aliasing() const {
+        if (aliasing_.memory.empty()) return;
+        if (aliasing_.memory.size() != resources_.size()) {
+            throw std::invalid_argument("graph: aliasing names the memory of " +
+                                        std::to_string(aliasing_.memory.size()) + " of " +
+                                        std::to_string(resources_.size()) + " resources");
+        }
+        for (std::size_t r = 0; r < resources_.size(); ++r) {
+            const std::int32_t memory = aliasing_.memory[r];
+            if (memory < 0) continue;
+            const ResourceDesc& desc = resources_[static_cast<std::uint16_t>(r)];
+            if (static_cast<std::size_t>(memory) >= aliasing_.initial.size()) {
+                throw std::invalid_argument("graph: " + desc.name + " is bound to memory " +
+                                            std::to_string(memory) + " of " +
+                                            std::to_string(aliasing_.initial.size()));
+            }
+            if (desc.lifetime != Lifetime::kTransient) {
+                throw std::invalid_argument("graph: " + desc.name +
+                                            " is persistent and shares memory");
+            }
+        }
+    }
+
+    // Before a use of `resource`: whether the use takes its memory over from another resource
+    // that accessed it (what its barrier must wait for). Its first use in the frame takes over
+    // when another one used the memory last; a later use finds itself the holder unless the uses
+    // of two resources sharing memory interleave.
+    bool take_memory(const std::string& where, std::uint16_t resource) {
+        const std::int32_t memory = memory_of(resource);
+        if (memory < 0) return false;
+        std::int32_t& holder = holders_[static_cast<std::size_t>(memory)];
+        const bool first_use = !used_[resource];
+        used_[resource] = true;
+        if (holder == resource) return false;
+        if (!first_use) {
+            throw std::invalid_argument(where + " uses " + resources_[resource].name + " after " +
+                                        resources_[static_cast<std::uint16_t>(holder)].name +
+                                        ", which shares its memory, took it over");
+        }
+        const ResourceState before =
+            holder >= 0 ? trackers_[static_cast<std::size_t>(holder)].state()
+                        : aliasing_.initial[static_cast<std::size_t>(memory)].state;
+        trackers_[resource].take_over(before);
+        holder = resource;
+        return any(before.write_stages) || any(before.read_stages);
+    }
+
     // A transient resource holds nothing until a step of this frame writes it.
     void check_produced(const std::string& where, const MergedUse& use) const {
         const ResourceDesc& desc = resources_[use.resource];
@@ -163,6 +241,9 @@ class Compiler {
     const ResourceTable& resources_;
     std::vector<ResourceTracker> trackers_;
     std::vector<bool> written_;
+    std::vector<bool> used_;
+    const Aliasing& aliasing_;
+    std::vector<std::int32_t> holders_;  // per shared memory: the resource that used it last
 };
 
 }  // namespace
@@ -201,13 +282,16 @@ std::string describe(const Barrier& b, const ResourceTable& resources) {
     if (resources[b.resource].kind == ResourceKind::kImage) {
         text += ", " + layout_name(b.old_layout) + " -> " + layout_name(b.new_layout);
     }
+    if (b.aliasing) text += " (takes over shared memory)";
     return text;
 }
 
 CompiledFrame compile(const ResourceTable& resources, const std::vector<GraphPass>& passes,
                       const std::vector<ResourceUse>& exports,
-                      const std::vector<ResourceState>& initial_states) {
-    Compiler compiler(resources, initial_states);
+                      const std::vector<ResourceState>& initial_states,
+                      const Aliasing& aliasing) {
+    Compiler compiler(resources, initial_states, aliasing);
+    compiler.check_not_shared(exports);
     CompiledFrame frame;
     for (const GraphPass& pass : passes) {
         auto& per_step = frame.steps.emplace_back();
@@ -221,6 +305,7 @@ CompiledFrame compile(const ResourceTable& resources, const std::vector<GraphPas
     }
     frame.final_barriers = compiler.step("the frame's exports", exports);
     frame.final_states = compiler.final_states();
+    frame.final_holders = compiler.holders();
     return frame;
 }
 

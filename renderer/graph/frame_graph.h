@@ -11,10 +11,17 @@
 // the barriers before each step and keeps each physical image's state from frame to frame, so the
 // first barrier of a frame orders it after the previous frames' accesses (frames in flight).
 //
+// Aliasing (transient_aliasing.h): resources may share memory with others. The first use in a
+// frame of one that takes the memory over from another (used earlier in the frame, or last in the
+// previous one) waits for that one's accesses and transitions from the undefined layout: its own
+// earlier contents and layout are gone.
+//
 // Refusals (std::invalid_argument, a programming error in the plan, never a user's input):
 // a transient resource read before any step of the frame wrote it; one step using a resource in
 // two layouts; a buffer-only use (indirect, conditional, host) of an image; an image-only use
-// (attachment, transfer of layouts) of a buffer is allowed only for transfer and storage uses.
+// (attachment, transfer of layouts) of a buffer is allowed only for transfer and storage uses;
+// a persistent or exported resource that shares memory, and two resources sharing memory whose
+// uses interleave.
 //
 // When may this be called: any time; pure, no device.
 #pragma once
@@ -115,6 +122,8 @@ struct Barrier {
     Access dst_access = Access::kNone;
     Layout old_layout = Layout::kUndefined;  // images: equal to new_layout when nothing changes
     Layout new_layout = Layout::kUndefined;
+    // The resource takes over memory another one held: the source is that one's accesses.
+    bool aliasing = false;
     bool operator==(const Barrier&) const = default;
 };
 // "left.hdr: color-attachment-output/color-attachment-write -> fragment-shader/shader-sampled-read,
@@ -133,6 +142,22 @@ struct CompiledStep {
     std::vector<Barrier> between_repeats;  // before each later recording (Step::repeats)
 };
 
+// Memory that several resources share (transient_aliasing.h), as the frame begins: which resource
+// used it last.
+struct MemoryHolder {
+    // That resource's index in this frame's table, or -1: none, or one this frame's table lacks
+    // (a resource of another plan), whose final state is then `state`.
+    std::int32_t resource = -1;
+    ResourceState state;
+    bool operator==(const MemoryHolder&) const = default;
+};
+
+struct Aliasing {
+    std::vector<std::int32_t> memory;  // per resource: the shared memory it is bound to, or -1
+    std::vector<MemoryHolder> initial;  // per shared memory
+    bool operator==(const Aliasing&) const = default;
+};
+
 struct CompiledFrame {
     // steps[p][s]: step s of pass p (no steps for passes that do not run).
     std::vector<std::vector<CompiledStep>> steps;
@@ -140,14 +165,18 @@ struct CompiledFrame {
     std::vector<Barrier> final_barriers;
     // Every resource's state after the frame: the next frame's initial state.
     std::vector<ResourceState> final_states;
+    // Per shared memory (Aliasing::initial): the resource that used it last (-1 as there).
+    std::vector<std::int32_t> final_holders;
 };
 
 // initial_states: one per resource (the previous frame's final state of the physical resource
 // now bound to it; default-constructed for one never used). exports: uses after the last pass
-// (read-backs by the host, images another component reads next).
+// (read-backs by the host, images another component reads next). aliasing: empty, or which
+// resources share memory and who held each memory before the frame.
 CompiledFrame compile(const ResourceTable& resources, const std::vector<GraphPass>& passes,
                       const std::vector<ResourceUse>& exports,
-                      const std::vector<ResourceState>& initial_states);
+                      const std::vector<ResourceState>& initial_states,
+                      const Aliasing& aliasing = {});
 
 // Culling from the dataflow: for each pass, whether something needs it: it writes a resource an
 // export, a persistent resource or a later needed pass reads. Passes with runs == false are
