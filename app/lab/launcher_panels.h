@@ -1,6 +1,7 @@
 // The launcher window's contents (Dear ImGui calls): one panel per step of the model, the roster
 // and the keyboard shortcuts. Separate from the window (launcher_window.cpp) so that the drawing
-// reads as the model's steps, and the window as its frame loop.
+// reads as the model's steps, and the window as its frame loop. The frame, the keys and the
+// footer are in launcher_panels.cpp, each step's panel in its launcher_panels_<step>.cpp.
 #pragma once
 
 #include <cstdint>
