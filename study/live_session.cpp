@@ -2,47 +2,44 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+
+#include "common/name_table.h"
 
 namespace monoplane::study {
 
+namespace {
+
+// Logged, printed and stored with each key press (response_press.h: the screen seen).
+constexpr NameTable<LiveInput> kLiveInputNames = {
+    {LiveInput::Switch, "switch"}, {LiveInput::Confirm, "confirm"}, {LiveInput::Pause, "pause"},
+    {LiveInput::Resume, "resume"}, {LiveInput::Abort, "abort"},
+};
+static_assert(kLiveInputNames.size() == static_cast<std::size_t>(LiveInput::Abort) + 1,
+              "every LiveInput needs its name");
+
+constexpr NameTable<ScreenKind> kScreenKindNames = {
+    {ScreenKind::Neutral, "neutral"},
+    {ScreenKind::Trial, "trial"},
+    {ScreenKind::Questionnaire, "questionnaire"},
+    {ScreenKind::Finished, "finished"},
+    {ScreenKind::Aborted, "aborted"},
+    {ScreenKind::Instructions, "instructions"},
+    {ScreenKind::Ready, "ready"},
+    {ScreenKind::Break, "break"},
+    {ScreenKind::End, "end"},
+};
+static_assert(kScreenKindNames.size() == static_cast<std::size_t>(ScreenKind::End) + 1,
+              "every ScreenKind needs its name");
+
+}  // namespace
+
 std::string_view live_input_name(LiveInput input) {
-    switch (input) {
-        case LiveInput::Switch:
-            return "switch";
-        case LiveInput::Confirm:
-            return "confirm";
-        case LiveInput::Pause:
-            return "pause";
-        case LiveInput::Resume:
-            return "resume";
-        case LiveInput::Abort:
-            return "abort";
-    }
-    return "invalid";
+    return find_name(kLiveInputNames, input, "invalid");
 }
 
 std::string_view screen_kind_name(ScreenKind kind) {
-    switch (kind) {
-        case ScreenKind::Neutral:
-            return "neutral";
-        case ScreenKind::Trial:
-            return "trial";
-        case ScreenKind::Questionnaire:
-            return "questionnaire";
-        case ScreenKind::Finished:
-            return "finished";
-        case ScreenKind::Aborted:
-            return "aborted";
-        case ScreenKind::Instructions:
-            return "instructions";
-        case ScreenKind::Ready:
-            return "ready";
-        case ScreenKind::Break:
-            return "break";
-        case ScreenKind::End:
-            return "end";
-    }
-    return "invalid";
+    return find_name(kScreenKindNames, kind, "invalid");
 }
 
 Result<std::unique_ptr<LiveSession>> LiveSession::open(StudyStore& store, std::int64_t session_id,

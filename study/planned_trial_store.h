@@ -25,7 +25,7 @@ Result<void> write_planned_trials(const sqlite::Connection& db, std::int64_t ses
 Result<void> start_planned_trial(const sqlite::Connection& db, std::int64_t session_id,
                                  int trial_index, double m);
 
-// The slots of session ?1 not started yet, as the store's trial columns (study_store.cpp
+// The slots of session ?1 not started yet, as the store's trial columns (store_reads.cpp
 // kTrialColumns): no mono plane (NULL), undecided, a staircase's, repetition 1, runs 1.
 inline constexpr std::string_view kUnstartedPlannedTrials =
     "SELECT pt.trial_index, 0, pt.block, pt.scene, NULL, pt.label1_alternative, "

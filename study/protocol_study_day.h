@@ -5,10 +5,13 @@
 // them behaves as one session of one repetition, no screens, no variables.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "common/result.h"
 #include "study/headset_prompts.h"
 #include "text/font.h"
 
@@ -81,6 +84,15 @@ struct StudyDaySettings {
 
 // Names as protocols and messages spell them.
 std::string_view variable_type_name(VariableType type);
+std::optional<VariableType> parse_variable_type(std::string_view name);
 std::string_view blocking_name(Blocking blocking);
+
+inline constexpr std::size_t kMaxVariableName = 32;
+
+// A participant variable's name: `[a-z][a-z0-9_]*`, at most 32 characters, since it becomes an
+// export column (var_<name>) and a --var NAME=VALUE argument. The one rule for names, whether a
+// protocol declares one or the store is given one; the message names it and says what a name may
+// hold. Pure; any time.
+Result<void> check_variable_name(std::string_view name);
 
 }  // namespace monoplane::study

@@ -298,13 +298,6 @@ std::string variable_label(const ParticipantVariable& variable) {
     return variable.name.empty() ? "this variable" : in_quotes(variable.name);
 }
 
-bool is_variable_name(std::string_view name) {
-    return !name.empty() && name.size() <= kMaxVariableName && name[0] >= 'a' && name[0] <= 'z' &&
-           std::ranges::all_of(name, [](char c) {
-               return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
-           });
-}
-
 // Names become export columns (var_<name>) and --var NAME=VALUE arguments: lower case, unique.
 void read_variable_name(const TomlScope& scope, const std::vector<ParticipantVariable>& earlier,
                         ParticipantVariable& variable, TomlProblems& problems) {
@@ -313,11 +306,8 @@ void read_variable_name(const TomlScope& scope, const std::vector<ParticipantVar
     const auto* name = node->as_string();
     if (name == nullptr) {
         report_wrong_type(*node, "variables.name", "a string, e.g. \"age\"", problems);
-    } else if (!is_variable_name(name->get())) {
-        problems.add(node->source(), toml_key_prefix("variables.name") + in_quotes(name->get()) +
-                                         " is not a variable name: a lower-case letter, then "
-                                         "lower-case letters, digits or '_', at most " +
-                                         std::to_string(kMaxVariableName) + " characters");
+    } else if (Result<void> valid = check_variable_name(name->get()); !valid) {
+        problems.add(node->source(), toml_key_prefix("variables.name") + valid.error().message);
     } else if (std::ranges::find(earlier, name->get(), &ParticipantVariable::name) !=
                earlier.end()) {
         problems.add(node->source(), toml_key_prefix("variables.name") + "variable " +
@@ -336,10 +326,7 @@ std::optional<VariableType> read_variable_type(const TomlScope& scope, TomlProbl
     if (node == nullptr) return std::nullopt;
     const auto name = read_one_of(*node, "variables.type", kVariableTypes, problems);
     if (!name) return std::nullopt;
-    constexpr std::array<VariableType, 4> kTypes = {VariableType::Integer, VariableType::Number,
-                                                    VariableType::Choice, VariableType::Text};
-    return kTypes[static_cast<std::size_t>(std::ranges::find(kVariableTypes, *name) -
-                                           kVariableTypes.begin())];
+    return parse_variable_type(*name);
 }
 
 // One end of an integer or number variable's range; integers only for an integer variable.

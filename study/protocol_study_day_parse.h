@@ -30,7 +30,6 @@ inline constexpr int kMaxBreakInterval = 1000;
 inline constexpr double kMaxBreakSeconds = 1800.0;
 inline constexpr double kMinTextHeightDeg = 0.5;
 inline constexpr double kMaxTextHeightDeg = 10.0;
-inline constexpr std::size_t kMaxVariableName = 32;
 inline constexpr std::size_t kMaxVariables = 50;
 inline constexpr std::size_t kMaxVariableHelp = 200;
 

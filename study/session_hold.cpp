@@ -9,8 +9,9 @@
 #include <climits>
 #include <cstdio>
 #include <cstring>
-#include <ctime>
 #include <utility>
+
+#include "common/utc_time.h"
 
 namespace monoplane::study {
 namespace {
@@ -28,15 +29,6 @@ std::string lock_file(const std::filesystem::path& database) {
     std::error_code error;
     const std::filesystem::path real = std::filesystem::weakly_canonical(database, error);
     return (error ? database : real).string() + "-holds";
-}
-
-std::string utc_now_iso8601() {
-    const std::time_t now = std::time(nullptr);
-    std::tm tm{};
-    gmtime_r(&now, &tm);
-    char text[32];
-    std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &tm);
-    return text;
 }
 
 struct flock byte_lock(short type, std::int64_t session_id) {

@@ -3,7 +3,28 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/name_table.h"
+
 namespace monoplane::study {
+namespace {
+
+// Stored in files: never change one (docs/data.md).
+constexpr NameTable<SessionStatus> kSessionStatusNames = {
+    {SessionStatus::Running, "running"},
+    {SessionStatus::Paused, "paused"},
+    {SessionStatus::Completed, "completed"},
+    {SessionStatus::Aborted, "aborted"},
+};
+
+}  // namespace
+
+std::string_view session_status_name(SessionStatus status) {
+    return find_name(kSessionStatusNames, status, "unknown");
+}
+
+std::optional<SessionStatus> parse_session_status(std::string_view name) {
+    return parse_name(kSessionStatusNames, name);
+}
 
 Result<void> MemorySessionLog::append_event(std::int64_t, const TrialEvent& event) {
     events_.push_back(event);

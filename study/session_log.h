@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,7 +20,10 @@
 namespace monoplane::study {
 
 enum class SessionStatus { Running, Paused, Completed, Aborted };
+// The database's names for a session's status ("running", ...), read both ways: parsing gives none
+// for a name the table lacks.
 std::string_view session_status_name(SessionStatus status);
+std::optional<SessionStatus> parse_session_status(std::string_view name);
 
 class SessionLog {
   public:

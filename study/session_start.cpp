@@ -147,16 +147,6 @@ std::string joined(const std::vector<std::string>& problems) {
 
 }  // namespace
 
-Result<void> check_participant_code(const std::string& code) {
-    const bool ok = !code.empty() && code.size() <= 64 && std::ranges::all_of(code, [](char c) {
-        return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
-               c == '_' || c == '-';
-    });
-    if (ok) return Ok{};
-    return Error{"participant code '" + code +
-                 "': use 1 to 64 letters, digits, '_' or '-' (a pseudonym, never a name)"};
-}
-
 Result<SessionStart> plan_session(const StudyStore* store, const Protocol& protocol,
                                   const SessionRequest& r, const RequestNames& names) {
     MONOPLANE_TRY(check_participant_code(r.participant_code));
@@ -186,8 +176,9 @@ Result<SessionStart> plan_session(const StudyStore* store, const Protocol& proto
         MONOPLANE_TRY(earlier);
         Result<Admission> admitted = admit_session(
             AdmissionContext{.database = known->database, .participant_code = r.participant_code},
-            *earlier, ProtocolVersion{.name = protocol.name, .text = protocol.text,
-                                      .hash = protocol.text_hash},
+            *earlier,
+            ProtocolVersion{
+                .name = protocol.name, .text = protocol.text, .hash = protocol.text_hash},
             r.decisions);
         if (!admitted) problems.push_back(admitted.error().message);
     } else if (r.decisions.abandon_session || !r.decisions.protocol_change_reason.empty()) {

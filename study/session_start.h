@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/result.h"
+#include "study/participant_code.h"  // check_participant_code, which plan_session applies
 #include "study/protocol.h"
 #include "study/request_names.h"
 #include "study/schedule.h"
@@ -41,13 +42,10 @@ struct SessionStart {
 // or different from the one a returning participant has; variables (check_variables: unknown,
 // out of range, not a choice, required but missing) for a new participant, and for a returning
 // one any value that differs from the recorded one; an earlier session of theirs that is running
-// or interrupted, or a change of design without a reason (admit_session). The messages name the request's inputs as
-// `names` says them. Writes nothing. Any time.
+// or interrupted, or a change of design without a reason (admit_session). The messages name the
+// request's inputs as `names` says them. Writes nothing. Any time.
 Result<SessionStart> plan_session(const StudyStore* store, const Protocol& protocol,
                                   const SessionRequest& request,
                                   const RequestNames& names = study_request_names());
-
-// `[A-Za-z0-9_-]{1,64}`, the database's rule for codes; the message says what is wrong.
-Result<void> check_participant_code(const std::string& code);
 
 }  // namespace monoplane::study

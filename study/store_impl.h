@@ -1,6 +1,6 @@
 // Private to the study store: the state behind StudyStore, shared by the file that opens it
-// (store_open.cpp: creating, checking, migrating, read-only snapshots) and the one that reads
-// and writes sessions (study_store.cpp).
+// (store_open.cpp: creating, checking, migrating, read-only snapshots) and those that read and
+// write sessions (store_begin_session.cpp, store_writes.cpp, store_reads.cpp, store_roster.cpp).
 #pragma once
 
 #include <filesystem>

@@ -237,9 +237,9 @@ TEST_F(StudyDayStoreTest, RefusesSessionNumbersNumbersAndVariablesThatDoNotFit) 
     SessionInfo a1 = make_info("A1", 4);
     a1.variables = variables();
     // Ended: an unfinished session is refused as interrupted first (StudyIntegrityTest).
-    ASSERT_TRUE(store->set_status(begin(*store, a1, make_schedule_for(4, 1)),
-                                  SessionStatus::Completed)
-                    .ok());
+    ASSERT_TRUE(
+        store->set_status(begin(*store, a1, make_schedule_for(4, 1)), SessionStatus::Completed)
+            .ok());
     refused(*store, make_info("A1", 4, 1), make_schedule_for(4, 1),
             "participant 'A1' already has session 1 in '" + db_.string() +
                 "'; use `monoplane study resume --db " + db_.string() +
@@ -262,7 +262,7 @@ TEST_F(StudyDayStoreTest, RefusesSessionNumbersNumbersAndVariablesThatDoNotFit) 
     refused(*store, make_info("A1", 4, 0), make_schedule_for(4, 0), "sessions are numbered from 1");
     SessionInfo bad_name = make_info("C1", 7);
     bad_name.variables = {{"Age", VariableType::Integer, "3"}};
-    refused(*store, bad_name, make_schedule_for(7, 1), "participant variable name 'Age'");
+    refused(*store, bad_name, make_schedule_for(7, 1), "'Age' is not a variable name");
     bad_name.variables = {{"age", VariableType::Integer, "3"}, {"age", VariableType::Integer, "4"}};
     refused(*store, bad_name, make_schedule_for(7, 1), "participant variable 'age' is given twice");
     Schedule repetition = make_schedule_for(7, 1);
