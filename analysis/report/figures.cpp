@@ -1,10 +1,14 @@
 #include "analysis/report/figures.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 
 #include "analysis/report/box_chart.h"
+#include "analysis/report/html_format.h"
+#include "analysis/report/psychometric_figure.h"
+#include "analysis/report/report.h"
 #include "charts/line_chart.h"
 #include "charts/palette.h"
 
@@ -35,6 +39,18 @@ BoxChart boxes(const std::vector<GroupSummary>& groups) {
     chart.layout.height = 440;
     chart.layout.legend_width = 170;
     return chart;
+}
+
+// A scene name as part of a file name under figures/: scene names may be glTF files' paths
+// ("models/room.glb"), whose '/' would name a folder. Letters, digits, '-', '_' and '.' stay.
+std::string file_stem_of(const std::string& scene) {
+    std::string stem = scene;
+    for (char& c : stem) {
+        const bool safe =
+            std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '_' || c == '.';
+        if (!safe) c = '_';
+    }
+    return stem;
 }
 
 }  // namespace
@@ -110,6 +126,34 @@ std::string switches_svg(const std::vector<GroupSummary>& by_scene, const std::s
     chart.y_axis.label = "switches per trial";
     chart.color = "#D55E00";
     return render_svg(chart);
+}
+
+std::vector<Figure> report_figures(const AnalysisResults& r) {
+    const std::string counts = std::to_string(r.exclusions.kept) + " valid decisions of " +
+                               std::to_string(r.participants) + " participants (" +
+                               std::to_string(r.sessions) + " sessions)";
+    std::vector<Figure> figures;
+    figures.push_back({"choices",
+                       "Decisions for " + r.test_mode +
+                           " per scene over the mono-plane distance m, as "
+                           "papers/000 Fig. 7; the line marks 50 % (no preference).",
+                       choices_svg(r.by_scene_distance, r.test_mode, r.reference_mode, counts)});
+    figures.push_back({"decision_times",
+                       "Decision time per scene: quartile boxes, median line, mean diamond, "
+                       "whiskers from minimum to maximum.",
+                       decision_times_svg(r.decision_times, counts)});
+    figures.push_back({"switches", "Switches between the two alternatives per trial, per scene.",
+                       switches_svg(r.switches, counts)});
+    for (const PsychometricFit& f : r.psychometric) {
+        if (f.participant != "all") continue;
+        figures.push_back({"psychometric_" + file_stem_of(f.scene),
+                           "Choices of " + r.reference_mode + " in " + upper_case(f.scene) +
+                               " over the mono-plane distance m with the fitted psychometric "
+                               "functions: the group's (green, with its threshold and 95 % "
+                               "interval) and each participant's (grey).",
+                           psychometric_svg(r.psychometric, f.scene, r.reference_mode)});
+    }
+    return figures;
 }
 
 }  // namespace monoplane::analysis::report
