@@ -140,9 +140,11 @@ void type(const std::string& text) {
 void choose(Lab& lab, const std::string& protocol, const std::string& code) {
     ASSERT_TRUE(lab.focus()) << lab.log();
     ASSERT_TRUE(lab.wait_step("protocol")) << lab.log();
+    ASSERT_TRUE(lab.wait_focused("protocol")) << lab.state().dump(1);
     type(protocol);
     xdo("key Return");
     ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
+    ASSERT_TRUE(lab.wait_focused("code")) << lab.state().dump(1);
     type(code);
     ASSERT_TRUE(lab.wait_state([&](const json& j) { return j["participant"]["code"] == code; }))
         << lab.state().dump(1);
@@ -296,6 +298,7 @@ TEST_F(LabDayTest, EachSessionReachesTheHeadsetChosenForIt) {
         } else {
             ASSERT_TRUE(lab.click("next-participant")) << lab.state().dump(1);
             ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
+            ASSERT_TRUE(lab.wait_focused("code")) << lab.state().dump(1);
             type(code);
         }
         ASSERT_FALSE(HasFailure());
@@ -383,7 +386,9 @@ TEST_F(LabDayTest, ALongRosterScrollsAndResumeIsReached) {
     Lab lab(dir, {"--headset", "none"});
     ASSERT_TRUE(lab.focus()) << lab.log();
     ASSERT_TRUE(lab.wait_step("protocol")) << lab.log();
+    // The footer laid out: its first frames can place it before the roster's height is known.
     ASSERT_TRUE(lab.wait_state([](const json& j) { return j["controls"].contains("footer"); }));
+    lab.wait_state([](const json& j) { return j["controls"]["footer"]["visible"] == true; });
     json j = lab.state();
     ASSERT_EQ(j["roster"].size(), 41u);
     json interrupted;
@@ -457,9 +462,11 @@ TEST_F(LabDayTest, TabReachesEveryControlAndEnterPicksInACombo) {
     xdo("key Tab");
     xdo("key space");  // Create
     ASSERT_TRUE(lab.wait_step("protocol")) << lab.state().dump(1);
+    ASSERT_TRUE(lab.wait_focused("protocol")) << lab.state().dump(1);
     type("vision.toml");
     xdo("key Return");
     ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
+    ASSERT_TRUE(lab.wait_focused("code")) << lab.state().dump(1);
     type("P01");
     xdo("key Tab");
     ASSERT_TRUE(wait_for([&] { return lab.control("var:vision")["focused"] == true; }, 10))
@@ -770,6 +777,7 @@ TEST_F(LabDayTest, TheDayAsTheDocsShowIt) {
     type("tiny.toml");
     xdo("key Return");
     ASSERT_TRUE(lab.wait_step("participant")) << lab.state().dump(1);
+    ASSERT_TRUE(lab.wait_focused("code")) << lab.state().dump(1);
     type("P01");
     ASSERT_TRUE(lab.click("var:age"));
     type("34");

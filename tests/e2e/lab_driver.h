@@ -138,15 +138,29 @@ class Lab {
     const std::string& window() const { return window_; }
 
     // Clicks the middle of the control `name` where the state dump says the window drew it;
-    // false when the state names no such control.
-    bool click(const std::string& name) {
-        const json c = state()["controls"][name];
+    // false when the state names no such control within `seconds`. A control shows in the dump
+    // a frame or more after the step that draws it, which on a loaded machine can be a while:
+    // the click waits for the control (visible, where the dump says so) instead of racing it.
+    bool click(const std::string& name, int seconds = 30) {
+        json c;
+        wait_for(
+            [&] {
+                c = state()["controls"][name];
+                return c.is_object() && c.value("visible", true);
+            },
+            seconds);
         if (!c.is_object()) return false;
         const int x = static_cast<int>(c["x"].get<double>() + c["width"].get<double>() / 2);
         const int y = static_cast<int>(c["y"].get<double>() + c["height"].get<double>() / 2);
         xdo("mousemove --window " + window_ + " " + std::to_string(x) + " " + std::to_string(y));
         xdo("click 1");
         return true;
+    }
+    // Waits until the control `name` has the keyboard. A step's field takes it a frame or more
+    // after the step shows (slow frames on a loaded machine): keys typed before then are lost.
+    bool wait_focused(const std::string& name, int seconds = 30) {
+        return wait_state([&](const json& j) { return j["controls"][name]["focused"] == true; },
+                          seconds);
     }
     // The control `name` of the state dump (null when it is not drawn).
     json control(const std::string& name) { return state()["controls"][name]; }
