@@ -1,10 +1,11 @@
 #include "analysis/linear_algebra.h"
 
-#include <cassert>
 #include <cmath>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+
+#include "common/programming_error.h"
 
 namespace monoplane::analysis {
 namespace {
@@ -22,14 +23,14 @@ Eigen::Map<RowMajor> view(Matrix& m) {
 }  // namespace
 
 Matrix operator*(const Matrix& a, const Matrix& b) {
-    assert(a.columns() == b.rows());
+    MONOPLANE_EXPECTS(a.columns() == b.rows());
     Matrix product(a.rows(), b.columns());
     view(product).noalias() = view(a) * view(b);
     return product;
 }
 
 std::optional<Matrix> inverse_positive_definite(const Matrix& a) {
-    assert(a.rows() == a.columns());
+    MONOPLANE_EXPECTS(a.rows() == a.columns());
     const Eigen::LLT<RowMajor> llt(view(a));
     if (llt.info() != Eigen::Success) return std::nullopt;
     // Eigen refuses only pivots at or below zero; a pivot (L_jj^2) tiny next to its diagonal

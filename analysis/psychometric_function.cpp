@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -10,6 +9,8 @@
 #include <nlopt.h>
 #include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/tools/roots.hpp>
+
+#include "common/programming_error.h"
 
 namespace monoplane::analysis {
 namespace {
@@ -101,7 +102,7 @@ double minimize(Objective& objective, const PsychometricBounds& bounds, std::vec
     const bool profile = objective.log_threshold.has_value();
     const unsigned dimension = profile ? 2 : 3;
     Optimizer opt(nlopt_create(NLOPT_LD_LBFGS, dimension), &nlopt_destroy);
-    assert(opt != nullptr);
+    MONOPLANE_EXPECTS(opt != nullptr);
     std::vector<double> lower = {std::log(bounds.threshold_min), std::log(bounds.slope_min),
                                  bounds.lapse_min};
     std::vector<double> upper = {std::log(bounds.threshold_max), std::log(bounds.slope_max),
@@ -121,7 +122,7 @@ double minimize(Objective& objective, const PsychometricBounds& bounds, std::vec
     // Stopping short (round-off near the optimum, evaluation limit) still leaves the best point
     // found in x, which is what is wanted; only a failure to start leaves x unusable.
     const nlopt_result result = nlopt_optimize(opt.get(), x.data(), &value);
-    assert(result != NLOPT_INVALID_ARGS && result != NLOPT_OUT_OF_MEMORY);
+    MONOPLANE_EXPECTS(result != NLOPT_INVALID_ARGS && result != NLOPT_OUT_OF_MEMORY);
     (void)result;
     return value;
 }
@@ -142,13 +143,13 @@ Range tested_range(const std::vector<StimulusLevel>& levels) {
 }  // namespace
 
 double reference_probability(const PsychometricParameters& parameters, double m) {
-    assert(m > 0.0 && parameters.threshold > 0.0 && parameters.slope > 0.0);
-    assert(parameters.lapse >= 0.0 && parameters.lapse < 0.5);
+    MONOPLANE_EXPECTS(m > 0.0 && parameters.threshold > 0.0 && parameters.slope > 0.0);
+    MONOPLANE_EXPECTS(parameters.lapse >= 0.0 && parameters.lapse < 0.5);
     return evaluate_point(std::log(parameters.threshold), parameters.slope, parameters.lapse, m).p;
 }
 
 PsychometricBounds bounds_for(const std::vector<StimulusLevel>& levels) {
-    assert(!levels.empty());
+    MONOPLANE_EXPECTS(!levels.empty());
     const Range tested = tested_range(levels);
     PsychometricBounds bounds;
     bounds.threshold_min = tested.min / 10.0;
@@ -167,11 +168,11 @@ double psychometric_log_likelihood(const std::vector<StimulusLevel>& levels,
 PsychometricMaximum maximize_psychometric_likelihood(const std::vector<StimulusLevel>& levels,
                                                      const PsychometricBounds& bounds,
                                                      std::optional<double> fixed_threshold) {
-    assert(!levels.empty());
+    MONOPLANE_EXPECTS(!levels.empty());
     Objective objective{&levels, std::nullopt};
     if (fixed_threshold) {
-        assert(*fixed_threshold >= bounds.threshold_min &&
-               *fixed_threshold <= bounds.threshold_max);
+        MONOPLANE_EXPECTS(*fixed_threshold >= bounds.threshold_min &&
+                          *fixed_threshold <= bounds.threshold_max);
         objective.log_threshold = std::log(*fixed_threshold);
     }
     const Range tested = tested_range(levels);
@@ -195,9 +196,9 @@ ThresholdInterval profile_threshold_interval(const std::vector<StimulusLevel>& l
                                              const PsychometricBounds& bounds,
                                              const PsychometricMaximum& maximum, double search_min,
                                              double search_max, double confidence) {
-    assert(confidence > 0.0 && confidence < 1.0);
+    MONOPLANE_EXPECTS(confidence > 0.0 && confidence < 1.0);
     const double estimate = maximum.parameters.threshold;
-    assert(search_min <= estimate && estimate <= search_max);
+    MONOPLANE_EXPECTS(search_min <= estimate && estimate <= search_max);
     const boost::math::chi_squared_distribution<double> chi_square(1.0);
     const double drop = boost::math::quantile(chi_square, confidence) / 2.0;
     // Positive inside the interval, negative outside; searched over log threshold.

@@ -1,9 +1,10 @@
 #include "analysis/small_sample_covariance.h"
 
-#include <cassert>
 #include <cmath>
 
 #include <Eigen/Dense>
+
+#include "common/programming_error.h"
 
 namespace monoplane::analysis {
 namespace {
@@ -80,12 +81,12 @@ double satterthwaite_df(const std::vector<ClusterTerms>& terms, const Eigen::Mat
 SmallSampleCovariance cr2_covariance(const ClusteredLogisticFit& fit) {
     const std::size_t n = fit.y.size();
     const std::size_t k = fit.x.columns();
-    assert(fit.x.rows() == n && fit.mu.size() == n && fit.cluster.size() == n);
-    assert(fit.bread.rows() == k && fit.bread.columns() == k && fit.clusters >= 2);
+    MONOPLANE_EXPECTS(fit.x.rows() == n && fit.mu.size() == n && fit.cluster.size() == n);
+    MONOPLANE_EXPECTS(fit.bread.rows() == k && fit.bread.columns() == k && fit.clusters >= 2);
     std::vector<std::vector<Eigen::Index>> rows_of(static_cast<std::size_t>(fit.clusters));
     for (std::size_t i = 0; i < n; ++i) {
-        assert(fit.cluster[i] >= 0 && fit.cluster[i] < fit.clusters);
-        assert(fit.mu[i] > 0.0 && fit.mu[i] < 1.0);
+        MONOPLANE_EXPECTS(fit.cluster[i] >= 0 && fit.cluster[i] < fit.clusters);
+        MONOPLANE_EXPECTS(fit.mu[i] > 0.0 && fit.mu[i] < 1.0);
         rows_of[static_cast<std::size_t>(fit.cluster[i])].push_back(static_cast<Eigen::Index>(i));
     }
     const Eigen::MatrixXd x = to_eigen(fit.x);
@@ -95,7 +96,7 @@ SmallSampleCovariance cr2_covariance(const ClusteredLogisticFit& fit) {
     Eigen::MatrixXd meat =
         Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k));
     for (const std::vector<Eigen::Index>& rows : rows_of) {
-        assert(!rows.empty());
+        MONOPLANE_EXPECTS(!rows.empty());
         const auto size = static_cast<Eigen::Index>(rows.size());
         Eigen::MatrixXd xg(size, x.cols());
         Eigen::VectorXd residual(size), variance(size);

@@ -1,12 +1,12 @@
 #include "analysis/summaries.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <map>
 #include <numeric>
 
 #include "analysis/exclusions.h"
+#include "common/programming_error.h"
 
 namespace monoplane::analysis {
 namespace {
@@ -24,7 +24,7 @@ std::vector<GroupSummary> by_scene(const std::vector<TrialRow>& trials, ValueOf 
 }  // namespace
 
 double quantile_sorted(const std::vector<double>& sorted, double p) {
-    assert(!sorted.empty() && p >= 0.0 && p <= 1.0);
+    MONOPLANE_EXPECTS(!sorted.empty() && p >= 0.0 && p <= 1.0);
     const double position = (static_cast<double>(sorted.size()) - 1.0) * p;
     const auto below = static_cast<std::size_t>(std::floor(position));
     const std::size_t above = std::min(below + 1, sorted.size() - 1);

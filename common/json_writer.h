@@ -6,7 +6,6 @@
 // Output keys written with it are part of the public interface.
 #pragma once
 
-#include <cassert>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
@@ -15,6 +14,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "common/programming_error.h"
 
 namespace monoplane {
 
@@ -162,7 +163,7 @@ class JsonWriter {
     // A number its caller has already formatted as JSON writes one (is_json_number), for digits a
     // double would not keep: exact decimal seconds of integer nanoseconds, stored text.
     JsonWriter& formatted_number(std::string_view key, std::string_view json_number) {
-        assert(is_json_number(json_number));
+        MONOPLANE_EXPECTS(is_json_number(json_number));
         prefix(key);
         out_ += json_number;
         return *this;

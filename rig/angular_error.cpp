@@ -1,12 +1,13 @@
 #include "rig/angular_error.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <optional>
 #include <vector>
+
+#include "common/programming_error.h"
 
 namespace monoplane::rig {
 namespace {
@@ -187,7 +188,7 @@ double disparity_error(const Rig& rig, double depth) {
 }  // namespace
 
 AngularError angular_error_at_depth(const Rig& rig, double depth) {
-    assert(!std::isnan(depth));
+    MONOPLANE_EXPECTS(!std::isnan(depth));
     if (rig.mono_skipped || !(depth > rig.inputs.mono_plane)) return {};
     AngularError error;
     for (int eye : {kLeft, kRight}) {

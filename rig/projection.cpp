@@ -1,11 +1,11 @@
 #include "rig/projection.h"
 
-#include <cassert>
+#include "common/programming_error.h"
 
 namespace monoplane::rig {
 
 glm::dmat4 projection_reversed_z(const Tangents& t, double near, double far) {
-    assert(t.left < t.right && t.down < t.up && 0.0 < near && near < far);
+    MONOPLANE_EXPECTS(t.left < t.right && t.down < t.up && 0.0 < near && near < far);
     // ndc_x = (2 tan_x - (r + l)) / (r - l) with tan_x = x / -z, so that tan_left -> -1.
     // ndc_y flips sign because Vulkan's y points down: tan_up -> -1.
     // depth = (n z / (f - n) + n f / (f - n)) / -z: 1 at z = -n, 0 at z = -f.

@@ -4,7 +4,6 @@
 #include "rig/rig.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -16,6 +15,7 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/ext/vector_int2.hpp>
 
+#include "common/programming_error.h"
 #include "rig/projection.h"
 
 namespace monoplane::rig {
@@ -538,7 +538,7 @@ bool is_canted(const RigInputs& inputs) {
 }
 
 glm::dmat3 eye_rotation(const RigInputs& inputs, int eye) {
-    assert(eye == kLeft || eye == kRight);
+    MONOPLANE_EXPECTS(eye == kLeft || eye == kRight);
     const double a = inputs.cant[eye];
     if (a == 0.0) return glm::dmat3(1.0);
     // Ry(a), column-major: +a turns -z towards -x (left).
@@ -606,7 +606,7 @@ Result<Rig> build_rig(const RigInputs& inputs) {
 }
 
 PixelError error_at_depth(const Rig& rig, double depth) {
-    assert(!std::isnan(depth));
+    MONOPLANE_EXPECTS(!std::isnan(depth));
     const double m = rig.inputs.mono_plane;
     if (rig.mono_skipped || !(depth > m)) return {};
     if (is_canted(rig.inputs)) return canted_error_at_depth(rig, depth);
@@ -616,10 +616,10 @@ PixelError error_at_depth(const Rig& rig, double depth) {
 }
 
 glm::dvec2 eye_pixel_stereo(const Rig& rig, int eye, const glm::dvec3& point) {
-    assert(eye == kLeft || eye == kRight);
+    MONOPLANE_EXPECTS(eye == kLeft || eye == kRight);
     const glm::dvec3 view =
         glm::transpose(eye_rotation(rig.inputs, eye)) * (point - rig.eye_positions[eye]);
-    assert(view.z < 0.0);
+    MONOPLANE_EXPECTS(view.z < 0.0);
     const Tangents& t = rig.inputs.eyes[eye];
     const double tan_x = view.x / -view.z;
     const double tan_y = view.y / -view.z;
@@ -632,14 +632,14 @@ glm::dvec2 eye_pixel_hybrid(const Rig& rig, int eye, const glm::dvec3& point) {
     // Central projection from C onto the mono plane z = -m (Fig. 2, centre right: p -> p_C).
     const glm::dvec3 c = rig.mono_position;
     const double distance_from_mono = c.z - point.z;
-    assert(distance_from_mono > 0.0);
+    MONOPLANE_EXPECTS(distance_from_mono > 0.0);
     const double to_plane = (rig.inputs.mono_plane + c.z) / distance_from_mono;
     const glm::dvec3 on_plane = c + (point - c) * to_plane;
     return eye_pixel_stereo(rig, eye, on_plane);
 }
 
 glm::dmat3 mono_pixel_to_eye_pixel(const Rig& rig, int eye) {
-    assert(eye == kLeft || eye == kRight);
+    MONOPLANE_EXPECTS(eye == kLeft || eye == kRight);
     if (rig.mono_skipped) return glm::dmat3(1.0);
     const double w_c = rig.mono.viewport_width;
     const double h_c = rig.mono.viewport_height;
@@ -662,7 +662,7 @@ glm::dmat3 mono_pixel_to_eye_pixel(const Rig& rig, int eye) {
 }
 
 glm::dvec2 mono_velocity_to_eye(const Rig& rig, int eye) {
-    assert(eye == kLeft || eye == kRight);
+    MONOPLANE_EXPECTS(eye == kLeft || eye == kRight);
     if (rig.mono_skipped) return glm::dvec2(1.0);
     const double z = rig.mono.mono_plane_ndc_depth;
     auto mapped = [&](double x, double y) {

@@ -1,12 +1,13 @@
 #include "scenes/beam_mesh.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+
+#include "common/programming_error.h"
 
 namespace monoplane::scenes {
 namespace {
@@ -45,7 +46,7 @@ std::size_t add_beam(ChunkBuilder& builder, const Beam& beam,
                      const BeamTessellation& tessellation) {
     const glm::vec3 span = beam.end - beam.start;
     const float length = glm::length(span);
-    assert(length > 0.0f && tessellation.segment_length > 0.0f);
+    MONOPLANE_EXPECTS(length > 0.0f && tessellation.segment_length > 0.0f);
     const Frame frame = frame_of(beam);
     const std::vector<glm::vec2> profile =
         cross_section(beam.width, beam.height, tessellation.chamfered);

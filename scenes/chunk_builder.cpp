@@ -1,11 +1,12 @@
 #include "scenes/chunk_builder.h"
 
 #include <algorithm>
-#include <cassert>
 #include <limits>
 #include <numeric>
 
 #include <glm/geometric.hpp>
+
+#include "common/programming_error.h"
 
 namespace monoplane::scenes {
 
@@ -25,7 +26,7 @@ Aabb merge(const Aabb& a, const Aabb& b) {
 
 ChunkBuilder::ChunkBuilder(std::uint32_t target_max_triangles)
     : target_max_triangles_(std::min(target_max_triangles, kMaxChunkTriangles)) {
-    assert(target_max_triangles_ > 0);
+    MONOPLANE_EXPECTS(target_max_triangles_ > 0);
 }
 
 void ChunkBuilder::begin_piece(std::uint32_t flags) {
@@ -39,7 +40,7 @@ void ChunkBuilder::begin_piece(std::uint32_t flags) {
 }
 
 std::uint32_t ChunkBuilder::piece_vertex_count() const {
-    assert(piece_open_);
+    MONOPLANE_EXPECTS(piece_open_);
     return static_cast<std::uint32_t>(vertices_.size()) - pieces_.back().first_vertex;
 }
 
@@ -50,9 +51,9 @@ std::uint32_t ChunkBuilder::add_vertex(const Vertex& vertex) {
 }
 
 void ChunkBuilder::add_triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    assert(piece_open_);
+    MONOPLANE_EXPECTS(piece_open_);
     const std::uint32_t base = pieces_.back().first_vertex;
-    assert(base + std::max({a, b, c}) < vertices_.size());
+    MONOPLANE_EXPECTS(base + std::max({a, b, c}) < vertices_.size());
     const Vertex& va = vertices_[base + a];
     const Vertex& vb = vertices_[base + b];
     const Vertex& vc = vertices_[base + c];
@@ -68,7 +69,7 @@ void ChunkBuilder::close_piece() {
     Piece& piece = pieces_.back();
     piece.vertex_count = static_cast<std::uint32_t>(vertices_.size()) - piece.first_vertex;
     piece.index_count = static_cast<std::uint32_t>(indices_.size()) - piece.first_index;
-    assert(piece.index_count / 3 <= kMaxChunkTriangles);
+    MONOPLANE_EXPECTS(piece.index_count / 3 <= kMaxChunkTriangles);
     if (piece.index_count == 0) {  // nothing to draw: forget its vertices too
         vertices_.resize(piece.first_vertex);
         pieces_.pop_back();

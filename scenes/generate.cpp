@@ -1,9 +1,9 @@
 #include "scenes/generate.h"
 
 #include <array>
-#include <cassert>
 #include <utility>
 
+#include "common/programming_error.h"
 #include "scenes/beams.h"
 #include "scenes/landscape.h"
 #include "scenes/spheres.h"
@@ -41,7 +41,7 @@ Scene generate_scene(SceneId id, Detail detail, std::uint64_t seed) {
             break;
         case SceneId::Imported:
             // Imported scenes come from scenes/gltf/load_gltf.h, which needs a file.
-            assert(false && "generate_scene() cannot make an imported scene");
+            MONOPLANE_EXPECTS(false && "generate_scene() cannot make an imported scene");
             break;
     }
     scene.name = std::string(scene_name(id));

@@ -1,17 +1,18 @@
 #include "scenes/icosphere.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <map>
 #include <utility>
 
 #include <glm/geometric.hpp>
 
+#include "common/programming_error.h"
+
 namespace monoplane::scenes {
 
 IcosphereMesh make_icosphere(int subdivisions) {
-    assert(subdivisions >= 0 && subdivisions <= 6);
+    MONOPLANE_EXPECTS(subdivisions >= 0 && subdivisions <= 6);
     const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
     IcosphereMesh mesh;
     mesh.directions = {{-1, t, 0},  {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},

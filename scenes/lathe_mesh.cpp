@@ -1,15 +1,16 @@
 #include "scenes/lathe_mesh.h"
 
-#include <cassert>
 #include <cmath>
 #include <numbers>
 
 #include <glm/geometric.hpp>
 
+#include "common/programming_error.h"
+
 namespace monoplane::scenes {
 
 void add_frustum(ChunkBuilder& builder, const Frustum& f) {
-    assert(f.sides >= 3 && f.height > 0.0f && f.bottom_radius > 0.0f);
+    MONOPLANE_EXPECTS(f.sides >= 3 && f.height > 0.0f && f.bottom_radius > 0.0f);
     Vertex vertex{};
     vertex.albedo_rgba8 = f.albedo_rgba8;
     vertex.material_packed = f.material_packed;

@@ -1,17 +1,19 @@
 #include "scenes/polar_grid.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "common/programming_error.h"
+
 namespace monoplane::scenes {
 
 std::vector<float> polar_ring_radii(const PolarGrid& grid) {
-    assert(grid.inner_radius > 0.0f && grid.outer_radius > grid.inner_radius && grid.sectors >= 3);
+    MONOPLANE_EXPECTS(grid.inner_radius > 0.0f && grid.outer_radius > grid.inner_radius &&
+                      grid.sectors >= 3);
     const double growth = 1.0 + 2.0 * std::numbers::pi / grid.sectors;
     std::vector<float> radii;
     for (double r = grid.inner_radius; r < grid.outer_radius; r *= growth) {

@@ -1,8 +1,9 @@
 #include "scenes/random.h"
 
-#include <cassert>
 #include <cmath>
 #include <numbers>
+
+#include "common/programming_error.h"
 
 namespace monoplane::scenes {
 namespace {
@@ -50,7 +51,7 @@ float Random::uniform(float low, float high) {
 }
 
 int Random::uniform_int(int low, int high) {
-    assert(low <= high);
+    MONOPLANE_EXPECTS(low <= high);
     const std::uint64_t range = static_cast<std::uint64_t>(high - low) + 1;
     // Rejection from the largest multiple of range keeps every value equally likely.
     const std::uint64_t limit = UINT64_MAX - UINT64_MAX % range;

@@ -1,8 +1,9 @@
 #include "scenes/sphere_mesh.h"
 
-#include <cassert>
 #include <cmath>
 #include <numbers>
+
+#include "common/programming_error.h"
 
 namespace monoplane::scenes {
 
@@ -11,7 +12,7 @@ void add_sphere(ChunkBuilder& builder, glm::vec3 centre, float radius,
                 std::uint32_t material_packed) {
     const int segments = tessellation.segments;
     const int rings = tessellation.rings;
-    assert(segments >= 3 && rings >= 2);
+    MONOPLANE_EXPECTS(segments >= 3 && rings >= 2);
     builder.begin_piece();
     Vertex vertex{};
     vertex.albedo_rgba8 = albedo_rgba8;

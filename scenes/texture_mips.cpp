@@ -1,8 +1,8 @@
 #include "scenes/texture_mips.h"
 
 #include <algorithm>
-#include <cassert>
 
+#include "common/programming_error.h"
 #include "scenes/texture_resample.h"
 
 namespace monoplane::scenes {
@@ -14,7 +14,7 @@ std::uint32_t mip_level_count(std::uint32_t width, std::uint32_t height) {
 }
 
 std::vector<MipLevel> make_mip_chain(const SceneTexture& texture) {
-    assert(texture.rgba8_srgb.size() == std::size_t{texture.width} * texture.height * 4);
+    MONOPLANE_EXPECTS(texture.rgba8_srgb.size() == std::size_t{texture.width} * texture.height * 4);
     std::vector<MipLevel> chain;
     chain.reserve(mip_level_count(texture.width, texture.height));
     chain.push_back({texture.width, texture.height, texture.rgba8_srgb});

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <cmath>
+
+#include "common/programming_error.h"
 
 namespace monoplane::scenes {
 namespace {
@@ -97,7 +98,7 @@ AxisTaps axis_taps(std::uint32_t source, std::uint32_t destination, TextureWrap 
 }  // namespace
 
 LinearImage decode_srgb(const SceneTexture& texture) {
-    assert(texture.rgba8_srgb.size() == std::size_t{texture.width} * texture.height * 4);
+    MONOPLANE_EXPECTS(texture.rgba8_srgb.size() == std::size_t{texture.width} * texture.height * 4);
     const auto& table = srgb_decode_table();
     LinearImage image{texture.width, texture.height, std::vector<float>(texture.rgba8_srgb.size())};
     for (std::size_t i = 0; i < image.rgba.size(); ++i) {
@@ -117,8 +118,8 @@ std::vector<std::uint8_t> encode_srgb(const LinearImage& image) {
 
 LinearImage resample(const LinearImage& image, std::uint32_t width, std::uint32_t height,
                      TextureWrap wrap_u, TextureWrap wrap_v) {
-    assert(width > 0 && height > 0);
-    assert(image.rgba.size() == std::size_t{image.width} * image.height * 4);
+    MONOPLANE_EXPECTS(width > 0 && height > 0);
+    MONOPLANE_EXPECTS(image.rgba.size() == std::size_t{image.width} * image.height * 4);
     const AxisTaps taps_x = axis_taps(image.width, width, wrap_u);
     const AxisTaps taps_y = axis_taps(image.height, height, wrap_v);
     LinearImage out{width, height, std::vector<float>(std::size_t{width} * height * 4, 0.0f)};

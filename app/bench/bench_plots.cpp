@@ -7,6 +7,7 @@
 #include "charts/bar_chart.h"
 #include "charts/line_chart.h"
 #include "charts/svg_writer.h"
+#include "renderer/plan/frame_plan.h"
 
 namespace monoplane::app {
 namespace {
@@ -15,17 +16,30 @@ double thousands(std::uint64_t count) {
     return static_cast<double>(count) / 1000.0;
 }
 
-// Pass names grouped as the paper's Fig. 5 labels its bars.
+// Passes grouped as the paper's Fig. 5 labels its bars (bench.json keys them by pass name).
 std::string pass_group(const std::string& pass) {
-    if (pass == "culling" || pass == "depth_pyramid" || pass == "occlusion_culling") {
-        return "Culling + depth pyramid";
+    using plan::PassKind;
+    using plan::ViewId;
+    const auto parsed = plan::parse_pass_name(pass);
+    if (!parsed) return pass;
+    const auto [kind, view] = *parsed;
+    switch (kind) {
+        case PassKind::kCulling:
+        case PassKind::kDepthPyramid:
+        case PassKind::kOcclusionCulling:
+            return "Culling + depth pyramid";
+        case PassKind::kForward:
+            if (view == ViewId::kLeft) return "L (left eye)";
+            if (view == ViewId::kRight) return "R (right eye)";
+            if (view == ViewId::kMono) return "C (mono camera)";
+            return pass;
+        case PassKind::kComposite:
+            return "C to R,L (composite)";
+        case PassKind::kTonemap:
+            return "TM (tone mapping)";
+        default:
+            return pass;  // shadow and anything new
     }
-    if (pass == "left.forward") return "L (left eye)";
-    if (pass == "right.forward") return "R (right eye)";
-    if (pass == "mono.forward") return "C (mono camera)";
-    if (pass.ends_with(".composite")) return "C to R,L (composite)";
-    if (pass.ends_with(".tonemap")) return "TM (tone mapping)";
-    return pass;  // shadow and anything new
 }
 
 std::string plane_label(const BenchRun& run) {
@@ -100,8 +114,12 @@ std::string time_chart(const BenchReport& report, const std::string& scene,
     chart.layout.legend_width = 300.0;
     // Bottom-up in the order the frame runs them; anything unknown on top.
     std::vector<std::string> groups = {
-        "Culling + depth pyramid", "shadow",          "L (left eye)",
-        "R (right eye)",           "C (mono camera)", "C to R,L (composite)",
+        "Culling + depth pyramid",
+        plan::pass_name(plan::PassKind::kShadow, plan::ViewId::kNone),
+        "L (left eye)",
+        "R (right eye)",
+        "C (mono camera)",
+        "C to R,L (composite)",
         "TM (tone mapping)"};
     for (const BenchRun* run : stacked) {
         chart.categories.push_back(plane_label(*run));

@@ -198,7 +198,8 @@ void write_run(JsonWriter& j, const BenchRun& run) {
     j.value("mono_plane_auto", run.mono_plane_auto);
     if (run.mono_plane_auto) write_auto_plane(j, run);
     write_times_and_counts(j, run);
-    modes::write_plan_json(j, run.plan);
+    write_device_memory_json(j, run.device_memory);
+    plan::write_plan_json(j, run.plan);
     write_comparison_with_stereo(j, run);
     if (run.turning_frames > 0) write_turning(j, run);
     if (run.max_channel_difference) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/commands/device_memory_json.h"
 #include "renderer/plan/frame_plan.h"
 
 namespace monoplane::app {
@@ -104,7 +105,10 @@ struct BenchRun {
     // runs of a few frames differ by noise; this says which dominations survive it.
     std::vector<std::string> dominated_beyond_spread_by;
     // The plan of the last measured frame (renderer/plan/frame_plan.h).
-    modes::FramePlan plan;
+    plan::FramePlan plan;
+    // The device memory the process held after the run's frames: the scene's resources, the
+    // run's renderer and, where one renders beside it, the stereo reference's.
+    DeviceMemoryFigures device_memory;
 };
 
 struct BenchReport {

@@ -25,7 +25,7 @@ void add_auto_mono_plane_flags(CLI::App& cmd, AutoMonoPlaneFlags& flags) {
         ->capture_default_str();
 }
 
-modes::AutoMonoPlaneParams auto_mono_plane_params(const AutoMonoPlaneFlags& flags) {
+plan::AutoMonoPlaneParams auto_mono_plane_params(const AutoMonoPlaneFlags& flags) {
     auto positive = [](double value) { return std::isfinite(value) && value > 0.0; };
     if (!positive(flags.error_budget_arcmin)) {
         throw UserError("--error-budget-arcmin must be a positive number of arcminutes");
@@ -36,7 +36,7 @@ modes::AutoMonoPlaneParams auto_mono_plane_params(const AutoMonoPlaneFlags& flag
     if (flags.time_budget_ms && !positive(*flags.time_budget_ms)) {
         throw UserError("--time-budget-ms must be a positive number of milliseconds");
     }
-    modes::AutoMonoPlaneParams params;
+    plan::AutoMonoPlaneParams params;
     params.error_budget_arcmin = flags.error_budget_arcmin;
     params.measure = flags.disparity ? rig::ErrorMeasure::kDisparity : rig::ErrorMeasure::kEye;
     params.time_budget_ms = flags.time_budget_ms;
@@ -55,7 +55,7 @@ std::optional<double> parse_mono_plane_value(const std::string& flag, const std:
     return metres;
 }
 
-void write_auto_mono_plane_json(JsonWriter& j, const modes::AutoMonoPlaneParams& params,
+void write_auto_mono_plane_json(JsonWriter& j, const plan::AutoMonoPlaneParams& params,
                                 const std::vector<profile::FrameStats>& frames) {
     std::vector<double> planes;
     for (const profile::FrameStats& f : frames) {

@@ -27,7 +27,7 @@ void add_auto_mono_plane_flags(CLI::App& cmd, AutoMonoPlaneFlags& flags);
 
 // The chooser's parameters from the flags. Throws UserError naming the flag for a budget or step
 // that is not a positive number.
-modes::AutoMonoPlaneParams auto_mono_plane_params(const AutoMonoPlaneFlags& flags);
+plan::AutoMonoPlaneParams auto_mono_plane_params(const AutoMonoPlaneFlags& flags);
 
 // A --mono-plane value: "auto", or metres. Nothing for "auto"; throws UserError naming `flag`
 // for anything else that is not a positive number.
@@ -37,7 +37,7 @@ std::optional<double> parse_mono_plane_value(const std::string& flag, const std:
 // (null: none), "step_arcmin", "mono_plane_median", "mono_plane_min", "mono_plane_max" (metres;
 // the far plane for frames drawn as stereo), "stereo_frames", "frames": [{"mono_plane",
 // "reason"}, ...]} over the measured frames, for render's and bench's JSON.
-void write_auto_mono_plane_json(JsonWriter& j, const modes::AutoMonoPlaneParams& params,
+void write_auto_mono_plane_json(JsonWriter& j, const plan::AutoMonoPlaneParams& params,
                                 const std::vector<profile::FrameStats>& frames);
 
 }  // namespace monoplane::app

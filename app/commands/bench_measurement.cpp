@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "app/commands/frame_summary.h"
+#include "renderer/plan/frame_plan.h"
 #include "renderer/profile/driver_compiles.h"
+#include "renderer/vk/memory.h"
 #include "rig/pose_path.h"
 
 namespace monoplane::app::bench {
@@ -19,15 +21,20 @@ namespace {
 std::uint64_t view_pixels(const modes::ModeRenderer& renderer, const std::string& view) {
     const vk::Extent2D eye = renderer.eye_extent();
     const std::uint64_t eye_pixels = std::uint64_t{eye.width} * eye.height;
-    if (view == "left" || view == "right" || view.ends_with(".composite") ||
-        view.ends_with(".transparency")) {
-        return eye_pixels;
-    }
-    if (view == "eyes") return 2 * eye_pixels;
-    if (view == "mono" && renderer.last_rig()) {
-        const rig::MonoCamera& mono = renderer.last_rig()->mono;
-        return static_cast<std::uint64_t>(mono.viewport_width) *
-               static_cast<std::uint64_t>(mono.viewport_height);
+    const auto pass = plan::statistics_scope_pass(view);
+    if (!pass) return 0;
+    switch (pass->second) {
+        case plan::ViewId::kLeft:
+        case plan::ViewId::kRight:
+            return eye_pixels;  // an eye's forward, composite or transparency pass
+        case plan::ViewId::kEyes:
+            return 2 * eye_pixels;
+        case plan::ViewId::kMono:
+            if (!renderer.last_rig()) return 0;
+            return static_cast<std::uint64_t>(renderer.last_rig()->mono.viewport_width) *
+                   static_cast<std::uint64_t>(renderer.last_rig()->mono.viewport_height);
+        case plan::ViewId::kNone:
+            break;
     }
     return 0;
 }
@@ -90,7 +97,9 @@ void add_frame_summary(const modes::ModeRenderer& renderer, const FrameSummary& 
             run.view_fragments_per_pixel[v.view] =
                 static_cast<double>(v.fragment_invocations) / static_cast<double>(pixels);
         }
-        if (v.view.ends_with(".composite")) continue;  // not scene work (transparency is)
+        // A composite is not scene work (transparency is).
+        const auto pass = plan::statistics_scope_pass(v.view);
+        if (pass && pass->first == plan::PassKind::kComposite) continue;
         run.primitives += v.clipping_invocations;
         run.vertex_invocations += v.vertex_invocations;
         run.geometry_invocations += v.geometry_invocations;
@@ -146,6 +155,9 @@ BenchRun measure(modes::ModeRenderer& renderer, const modes::FrameInputs& inputs
         run.stereo_frame_ms_median = percentile(reference_ms, 0.5);
     }
     run.plan = renderer.last_plan();
+    run.device_memory =
+        DeviceMemoryFigures::from_bytes(vk_core::live_device_bytes(vk_core::MemoryKind::kImage),
+                                        vk_core::live_device_bytes(vk_core::MemoryKind::kBuffer));
     run.frame_mono_planes = std::move(frame_mono_planes);
     if (o.turning_frames > 0) measure_turning(renderer, inputs, o.turning_frames, run);
     return run;

@@ -4,7 +4,7 @@ namespace monoplane::app {
 
 void apply_image_quality_flags(const std::string& anti_aliasing, const std::string& ssao,
                                modes::RendererOptions& options) {
-    const auto aa = modes::parse_anti_aliasing(anti_aliasing);
+    const auto aa = plan::parse_anti_aliasing(anti_aliasing);
     if (!aa) {
         throw UserError("--anti-aliasing " + anti_aliasing +
                         ": use none, taa, msaa2, msaa4 or msaa8");
@@ -16,8 +16,8 @@ void apply_image_quality_flags(const std::string& anti_aliasing, const std::stri
     if (!options.ssao) throw UserError("--ssao " + ssao + ": use off, per-eye or stereo");
 }
 
-modes::StereoPass parse_stereo_pass_flag(const std::string& stereo_pass) {
-    const auto pass = modes::parse_stereo_pass(stereo_pass);
+plan::StereoPass parse_stereo_pass_flag(const std::string& stereo_pass) {
+    const auto pass = plan::parse_stereo_pass(stereo_pass);
     if (!pass) {
         throw UserError("--stereo-pass " + stereo_pass + ": use two, multiview, gs or instanced");
     }

@@ -13,6 +13,6 @@ void apply_image_quality_flags(const std::string& anti_aliasing, const std::stri
                                modes::RendererOptions& options);
 
 // --stereo-pass's value ("two|multiview|gs"); throws UserError naming the flag for any other.
-modes::StereoPass parse_stereo_pass_flag(const std::string& stereo_pass);
+plan::StereoPass parse_stereo_pass_flag(const std::string& stereo_pass);
 
 }  // namespace monoplane::app

@@ -21,8 +21,8 @@ void add_lod_flags(CLI::App& cmd, LodFlags& flags, bool list) {
         ->capture_default_str();
 }
 
-modes::LodOptions parse_lod_flags(const std::string& lod, double error_px) {
-    const auto enabled = modes::parse_lod_mode(lod);
+plan::LodOptions parse_lod_flags(const std::string& lod, double error_px) {
+    const auto enabled = plan::parse_lod_mode(lod);
     if (!enabled) throw UserError("--lod " + lod + ": use auto or off");
     if (!(error_px > 0.0 && std::isfinite(error_px))) {
         throw UserError("--lod-error-px must be a positive number of pixels");
@@ -30,14 +30,14 @@ modes::LodOptions parse_lod_flags(const std::string& lod, double error_px) {
     return {*enabled, error_px};
 }
 
-std::vector<modes::LodOptions> parse_lod_list(const LodFlags& flags) {
-    std::vector<modes::LodOptions> sweep;
+std::vector<plan::LodOptions> parse_lod_list(const LodFlags& flags) {
+    std::vector<plan::LodOptions> sweep;
     std::stringstream stream(flags.lod);
     std::string item;
     while (std::getline(stream, item, ',')) {
-        const modes::LodOptions options = parse_lod_flags(item, flags.error_px);
+        const plan::LodOptions options = parse_lod_flags(item, flags.error_px);
         bool seen = false;
-        for (const modes::LodOptions& earlier : sweep)
+        for (const plan::LodOptions& earlier : sweep)
             seen = seen || earlier.enabled == options.enabled;
         if (!seen) sweep.push_back(options);
     }

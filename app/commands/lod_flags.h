@@ -21,8 +21,8 @@ void add_lod_flags(CLI::App& cmd, LodFlags& flags, bool list);
 
 // The options one --lod value asks for; throws UserError naming the flag for a bad value or a
 // budget that is not a positive number of pixels.
-modes::LodOptions parse_lod_flags(const std::string& lod, double error_px);
+plan::LodOptions parse_lod_flags(const std::string& lod, double error_px);
 // Every entry of a comma-separated --lod, in order, without repeats.
-std::vector<modes::LodOptions> parse_lod_list(const LodFlags& flags);
+std::vector<plan::LodOptions> parse_lod_list(const LodFlags& flags);
 
 }  // namespace monoplane::app

@@ -14,6 +14,7 @@
 #include "app/commands/auto_mono_plane_options.h"
 #include "app/commands/commands.h"
 #include "app/commands/depth_profile_json.h"
+#include "app/commands/device_memory_json.h"
 #include "app/commands/frame_summary.h"
 #include "app/commands/image_quality_options.h"
 #include "app/commands/lod_flags.h"
@@ -27,6 +28,7 @@
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/plan/frame_plan_json.h"
 #include "renderer/vk/context.h"
+#include "renderer/vk/memory.h"
 #include "rig/pose_path.h"
 #include "scenes/generate.h"
 
@@ -85,23 +87,24 @@ struct RenderResults {
     const std::optional<StereoComparison>& comparison;   // --compare-stereo
     const std::optional<quality::InconsistencyMap>& ao;  // --ssao
     std::filesystem::path out;
+    DeviceMemoryFigures device_memory;  // after the frames, before the stereo reference's
 };
 
 // The configuration rendered: the options as given, with what they resolved to.
 void write_configuration(JsonWriter& j, const RenderOptions& o,
-                         const modes::RenderModeChoice& choice, const RenderResults& r) {
+                         const plan::RenderModeChoice& choice, const RenderResults& r) {
     j.value("command", "render").value("scene", r.scene.name).value("mode", o.mode);
     j.value("detail", o.detail).value("seed", static_cast<std::uint64_t>(o.seed));
     j.value("view", o.view)
         .value("hmd", r.profile.name)
         .value("ipd", o.ipd.value_or(r.profile.ipd));
     j.value("width", r.width).value("height", r.height);
-    j.value("stereo_pass", modes::stereo_pass_name(choice.stereo_pass));
-    if (choice.mode != modes::Mode::kStereo) j.value("debug_view", o.debug_view);
-    if (choice.mode == modes::Mode::kHybrid) {
+    j.value("stereo_pass", plan::stereo_pass_name(choice.stereo_pass));
+    if (choice.mode != plan::Mode::kStereo) j.value("debug_view", o.debug_view);
+    if (choice.mode == plan::Mode::kHybrid) {
         j.value("variant", o.mono_culling);
         // auto: the variant it resolved to
-        j.value("variant_used", modes::mono_culling_name(r.renderer.last_variant()));
+        j.value("variant_used", plan::mono_culling_name(r.renderer.last_variant()));
     }
     j.value("anti_aliasing", o.anti_aliasing).value("ssao", o.ssao);
     j.value("lod", o.lod.lod).value("lod_error_px", o.lod.error_px);
@@ -190,7 +193,7 @@ void write_files(JsonWriter& j, const RenderResults& r) {
     j.end_object();
 }
 
-std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& choice,
+std::string summary_json(const RenderOptions& o, const plan::RenderModeChoice& choice,
                          const RenderResults& r,
                          const std::function<void(JsonWriter&)>& depth_profile,
                          const std::function<void(JsonWriter&)>& auto_mono_plane) {
@@ -212,9 +215,10 @@ std::string summary_json(const RenderOptions& o, const modes::RenderModeChoice& 
     if (r.comparison) write_comparison(j, *r.comparison);
     if (r.ao) write_ao_inconsistency(j, *r.ao);
     j.value("depth_prepass", o.depth_prepass);
+    write_device_memory_json(j, r.device_memory);
     if (depth_profile) depth_profile(j);
     auto_mono_plane(j);
-    modes::write_plan_json(j, r.renderer.last_plan());  // the last frame's
+    plan::write_plan_json(j, r.renderer.last_plan());  // the last frame's
     write_files(j, r);
     j.end_object();
     return j.str();
@@ -238,11 +242,11 @@ void warn_if_beyond_far_plane(const scenes::Scene& scene, const scenes::Viewpoin
 
 // The options checked and parsed; nothing loaded yet.
 struct RenderSetup {
-    modes::RenderModeChoice choice;
+    plan::RenderModeChoice choice;
     std::optional<double> fixed_plane;  // --mono-plane in metres
     bool auto_plane = false;            // --mono-plane auto
-    modes::MonoCulling mono_culling = modes::MonoCulling::kOcclusionCull;
-    modes::DebugView debug_view = modes::DebugView::kNone;
+    plan::MonoCulling mono_culling = plan::MonoCulling::kOcclusionCull;
+    plan::DebugView debug_view = plan::DebugView::kNone;
     SceneSource scene_source;
     scenes::Detail detail{};
     rig::PosePath pose_path;
@@ -251,16 +255,16 @@ struct RenderSetup {
 };
 
 // --mode with --stereo-pass, which may name the single-pass stereo a mode already implies.
-modes::RenderModeChoice parse_mode_flags(const RenderOptions& o) {
-    auto choice = modes::parse_render_mode(o.mode);
+plan::RenderModeChoice parse_mode_flags(const RenderOptions& o) {
+    auto choice = plan::parse_render_mode(o.mode);
     if (!choice) {
         throw UserError("--mode " + o.mode +
                         ": unknown; use stereo, stereo-multiview, stereo-gs, stereo-instanced, "
                         "hybrid or hybrid-farfield");
     }
     if (!o.stereo_pass.empty()) {
-        const modes::StereoPass pass = parse_stereo_pass_flag(o.stereo_pass);
-        if (choice->stereo_pass != modes::StereoPass::kTwoPasses && pass != choice->stereo_pass) {
+        const plan::StereoPass pass = parse_stereo_pass_flag(o.stereo_pass);
+        if (choice->stereo_pass != plan::StereoPass::kTwoPasses && pass != choice->stereo_pass) {
             throw UserError("--stereo-pass " + o.stereo_pass + " contradicts --mode " + o.mode);
         }
         choice->stereo_pass = pass;
@@ -271,23 +275,23 @@ modes::RenderModeChoice parse_mode_flags(const RenderOptions& o) {
 // --mono-plane (which the hybrid modes need and stereo cannot use as auto), --variant and
 // --debug-view.
 void parse_hybrid_flags(const RenderOptions& o, RenderSetup& setup) {
-    const modes::Mode mode = setup.choice.mode;
-    if (mode != modes::Mode::kStereo && o.mono_plane.empty()) {
+    const plan::Mode mode = setup.choice.mode;
+    if (mode != plan::Mode::kStereo && o.mono_plane.empty()) {
         throw UserError("--mode " + o.mode + " needs --mono-plane M (metres) or auto");
     }
     setup.fixed_plane = o.mono_plane.empty() ? std::optional<double>()
                                              : parse_mono_plane_value("--mono-plane", o.mono_plane);
     setup.auto_plane = !o.mono_plane.empty() && !setup.fixed_plane;
-    if (setup.auto_plane && mode == modes::Mode::kStereo) {
+    if (setup.auto_plane && mode == plan::Mode::kStereo) {
         throw UserError("--mono-plane auto needs a hybrid mode: stereo has no mono plane");
     }
-    const auto mono_culling = modes::parse_mono_culling(o.mono_culling);
+    const auto mono_culling = plan::parse_mono_culling(o.mono_culling);
     if (!mono_culling) {
         throw UserError("--variant " + o.mono_culling +
                         " is not one of no-opt, discard, occlusion-cull, auto");
     }
     setup.mono_culling = *mono_culling;
-    const auto debug_view = modes::parse_debug_view(o.debug_view);
+    const auto debug_view = plan::parse_debug_view(o.debug_view);
     if (!debug_view) {
         throw UserError("--debug-view " + o.debug_view +
                         ": use none, tint-mono, stereo-only, mono-only or routing");
@@ -466,6 +470,9 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
     modes::FrameInputs inputs = first_frame_inputs(o, setup, profile, viewpoint);
     const std::vector<profile::FrameStats> measured =
         render_frames(o, setup.pose_path, viewpoint, renderer, inputs);
+    const DeviceMemoryFigures device_memory =
+        DeviceMemoryFigures::from_bytes(vk_core::live_device_bytes(vk_core::MemoryKind::kImage),
+                                        vk_core::live_device_bytes(vk_core::MemoryKind::kBuffer));
 
     // Auto: the comparisons below look at the last frame, rendered with the chooser's m.
     if (setup.auto_plane && renderer.last_rig())
@@ -479,8 +486,8 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
                   << ao->compared << " pixels\n";
     }
     std::optional<StereoComparison> comparison;
-    if (o.compare_stereo && (setup.choice.mode != modes::Mode::kStereo ||
-                             setup.choice.stereo_pass != modes::StereoPass::kTwoPasses)) {
+    if (o.compare_stereo && (setup.choice.mode != plan::Mode::kStereo ||
+                             setup.choice.stereo_pass != plan::StereoPass::kTwoPasses)) {
         std::cerr << "rendering the stereo reference for SSIM\n";
         comparison =
             compare_with_stereo(*ctx, scene, extent, renderer_options, inputs, renderer, out);
@@ -491,7 +498,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         }
     };
     const RenderResults results{profile,  scene, *ctx,       width, height, summarize(measured),
-                                renderer, mono,  comparison, ao,    out};
+                                renderer, mono,  comparison, ao,    out, device_memory};
     const std::string json = summary_json(
         o, setup.choice, results, depth_profile_section(o, scene, inputs, renderer), auto_json);
     std::ofstream(out / "stats.json") << json << "\n";

@@ -15,8 +15,8 @@ StereoComparison compare_with_stereo(const vk_core::Context& ctx, const scenes::
     modes::RendererOptions reference_options = options;
     reference_options.read_back = true;
     reference_options.read_back_depth = true;
-    reference_options.stereo_pass = modes::StereoPass::kTwoPasses;
-    modes::ModeRenderer stereo(ctx, scene, modes::Mode::kStereo, extent, reference_options);
+    reference_options.stereo_pass = plan::StereoPass::kTwoPasses;
+    modes::ModeRenderer stereo(ctx, scene, plan::Mode::kStereo, extent, reference_options);
     stereo.render_frame(inputs);
 
     StereoComparison result;

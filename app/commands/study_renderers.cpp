@@ -12,9 +12,9 @@
 
 namespace monoplane::app {
 
-modes::RenderModeChoice renderer_mode(study::RenderMode mode) {
-    if (mode == study::RenderMode::HybridAuto) return {modes::Mode::kHybrid};
-    const auto parsed = modes::parse_render_mode(std::string(study::render_mode_name(mode)));
+plan::RenderModeChoice renderer_mode(study::RenderMode mode) {
+    if (mode == study::RenderMode::HybridAuto) return {plan::Mode::kHybrid};
+    const auto parsed = plan::parse_render_mode(std::string(study::render_mode_name(mode)));
     if (!parsed) {
         throw UserError("render mode " + std::string(study::render_mode_name(mode)) +
                         " is not implemented; use stereo, stereo-multiview, stereo-gs, "
@@ -23,8 +23,8 @@ modes::RenderModeChoice renderer_mode(study::RenderMode mode) {
     return *parsed;
 }
 
-modes::AutoMonoPlaneParams auto_mono_plane_params(const study::AutoPlaneSettings& settings) {
-    modes::AutoMonoPlaneParams params;
+plan::AutoMonoPlaneParams auto_mono_plane_params(const study::AutoPlaneSettings& settings) {
+    plan::AutoMonoPlaneParams params;
     params.error_budget_arcmin = settings.error_budget_arcmin;
     params.measure =
         settings.measure == "disparity" ? rig::ErrorMeasure::kDisparity : rig::ErrorMeasure::kEye;
@@ -80,7 +80,7 @@ StudyRenderers::StudyRenderers(const vk_core::Context& ctx, const study::Protoco
         for (study::RenderMode mode : protocol.alternatives) {
             const auto key = std::make_pair(name, mode);
             if (renderers_.count(key)) continue;
-            const modes::RenderModeChoice choice = renderer_mode(mode);
+            const plan::RenderModeChoice choice = renderer_mode(mode);
             modes::RendererOptions mode_options = options;
             mode_options.stereo_pass = choice.stereo_pass;
             if (mode == study::RenderMode::HybridAuto) {

@@ -18,10 +18,10 @@ namespace monoplane::app {
 
 // The renderer's mode and stereo pass for a protocol's mode name (stereo-multiview, stereo-gs and
 // stereo-instanced are stereo drawn in one pass).
-modes::RenderModeChoice renderer_mode(study::RenderMode mode);
+plan::RenderModeChoice renderer_mode(study::RenderMode mode);
 
 // The chooser's parameters of a protocol's [auto] table (hybrid-auto alternatives).
-modes::AutoMonoPlaneParams auto_mono_plane_params(const study::AutoPlaneSettings& settings);
+plan::AutoMonoPlaneParams auto_mono_plane_params(const study::AutoPlaneSettings& settings);
 
 // The scenes and a renderer per (scene, mode) of the protocol, made before the first trial so
 // that no trial waits for one.

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 
+#include "common/programming_error.h"
 #include "study/scene_files.h"
 
 namespace monoplane::lab {
@@ -30,7 +30,7 @@ bool has_built_in_scene(const study::Protocol& protocol) {
 std::string shortest(double value) {
     std::array<char, 32> text{};
     const auto [end, ec] = std::to_chars(text.data(), text.data() + text.size(), value);
-    assert(ec == std::errc());
+    MONOPLANE_EXPECTS(ec == std::errc());
     return std::string(text.data(), end);
 }
 
@@ -149,7 +149,7 @@ std::vector<std::string> study_run_arguments(const PerformancePreset& preset) {
 }
 
 EyeSize scaled_eye_size(int recommended_width, int recommended_height, double scale) {
-    assert(recommended_width > 0 && recommended_height > 0 && scale > 0.0);
+    MONOPLANE_EXPECTS(recommended_width > 0 && recommended_height > 0 && scale > 0.0);
     const auto scaled = [scale](int size) {
         return std::max(16, static_cast<int>(std::lround(size * scale)));
     };
@@ -167,7 +167,7 @@ std::string format_frame_time(double ms) {
 
 FrameTimeVerdict judge_frame_time(std::string_view preset, double frame_ms, double refresh_hz,
                                   std::span<const PresetEstimate> estimates) {
-    assert(std::isfinite(frame_ms) && frame_ms > 0.0);
+    MONOPLANE_EXPECTS(std::isfinite(frame_ms) && frame_ms > 0.0);
     FrameTimeVerdict v;
     const bool assumed = !(refresh_hz > 0.0);
     v.refresh_hz = assumed ? kAssumedRefreshHz : refresh_hz;

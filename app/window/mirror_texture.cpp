@@ -1,9 +1,9 @@
 #include "app/window/mirror_texture.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
+#include "common/programming_error.h"
 #include "renderer/vk/memory.h"
 
 namespace monoplane::window {
@@ -79,7 +79,8 @@ MirrorTexture::MirrorTexture(const vk_core::Context& ctx, vk::Extent2D extent,
 
 void MirrorTexture::record_copy(const vk::raii::CommandBuffer& cmd, vk::Image source,
                                 vk::ImageLayout source_layout, vk::Extent2D source_extent) const {
-    assert(source_layout != Layout::eUndefined && source_layout != Layout::ePreinitialized);
+    MONOPLANE_EXPECTS(source_layout != Layout::eUndefined &&
+                      source_layout != Layout::ePreinitialized);
     if (source_extent.width == 0 || source_extent.height == 0) return;
     const FitRect fit = fit_aspect(
         static_cast<float>(extent_.width), static_cast<float>(extent_.height),

@@ -5,14 +5,15 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>
 
-#include <cassert>
 #include <system_error>
+
+#include "common/programming_error.h"
 
 namespace monoplane::window {
 
 Result<void> write_rgba_png(const std::filesystem::path& png, std::uint32_t width,
                             std::uint32_t height, const std::vector<std::uint8_t>& rgba) {
-    assert(rgba.size() == std::size_t{width} * height * 4);
+    MONOPLANE_EXPECTS(rgba.size() == std::size_t{width} * height * 4);
     if (png.has_parent_path()) {
         std::error_code error;
         std::filesystem::create_directories(png.parent_path(), error);

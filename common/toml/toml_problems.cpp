@@ -1,9 +1,10 @@
 #include "common/toml/toml_problems.h"
 
 #include <algorithm>
-#include <cassert>
 #include <charconv>
 #include <iterator>
+
+#include "common/programming_error.h"
 
 namespace monoplane {
 namespace {
@@ -46,7 +47,7 @@ void TomlProblems::add(std::string_view message) {
 }
 
 Error TomlProblems::error() const {
-    assert(!problems_.empty());
+    MONOPLANE_EXPECTS(!problems_.empty());
     std::vector<Problem> sorted = problems_;
     std::ranges::stable_sort(sorted, [](const Problem& a, const Problem& b) {
         return a.position.line != b.position.line ? a.position.line < b.position.line
@@ -89,7 +90,7 @@ std::string_view toml_type_phrase(toml::node_type type) {
 std::string format_number(double value) {
     char buffer[32];
     const auto [end, error] = std::to_chars(std::begin(buffer), std::end(buffer), value);
-    assert(error == std::errc{});
+    MONOPLANE_EXPECTS(error == std::errc{});
     return std::string(buffer, end);
 }
 

@@ -1,9 +1,13 @@
 #include "renderer/executor/graph_executor.h"
 
-#include <cassert>
-#include <stdexcept>
+#include <algorithm>
+#include <string>
+#include <string_view>
 
-namespace monoplane::modes {
+#include "common/programming_error.h"
+#include "renderer/executor/image_layouts.h"
+
+namespace monoplane::executor {
 namespace {
 
 using graph::Access;
@@ -56,28 +60,6 @@ vk::AccessFlags2 vk_access(Access access) {
     return flags;
 }
 
-vk::ImageLayout vk_layout(Layout layout) {
-    switch (layout) {
-        case Layout::kUndefined:
-            return vk::ImageLayout::eUndefined;
-        case Layout::kGeneral:
-            return vk::ImageLayout::eGeneral;
-        case Layout::kColorAttachment:
-            return vk::ImageLayout::eColorAttachmentOptimal;
-        case Layout::kDepthAttachment:
-            return vk::ImageLayout::eDepthAttachmentOptimal;
-        case Layout::kDepthReadOnly:
-            return vk::ImageLayout::eDepthReadOnlyOptimal;
-        case Layout::kShaderReadOnly:
-            return vk::ImageLayout::eShaderReadOnlyOptimal;
-        case Layout::kTransferSrc:
-            return vk::ImageLayout::eTransferSrcOptimal;
-        case Layout::kTransferDst:
-            return vk::ImageLayout::eTransferDstOptimal;
-    }
-    return vk::ImageLayout::eUndefined;
-}
-
 // The graph's name for a layout an image was made in.
 Layout graph_layout(vk::ImageLayout layout) {
     for (Layout l : {Layout::kGeneral, Layout::kColorAttachment, Layout::kDepthAttachment,
@@ -96,23 +78,38 @@ vk::PipelineStageFlags2 source_stages(const graph::Barrier& b) {
 
 }  // namespace
 
+namespace {
+
+// A pass records the step its plan declares next, or the two disagree: a programming error.
+void expect_declared(const plan::PlannedPass& pass, const std::string& declared,
+                     std::string_view recorded) {
+    if (recorded == declared) return;
+    programming_error(pass.name + " recorded step '" + std::string(recorded) +
+                      "' where its plan declares '" + declared + "'");
+}
+
+}  // namespace
+
 // The steps of the pass being recorded, in the plan's order.
 class GraphExecutor::PassSync : public passes::StepSync {
   public:
     PassSync(GraphExecutor& executor, std::size_t pass) : executor_(executor), pass_(pass) {}
 
-    void next(const vk::raii::CommandBuffer& cmd) override {
+    void next(const vk::raii::CommandBuffer& cmd, std::string_view step) override {
         const auto& steps = executor_.compiled_.steps[pass_];
-        const auto& declared = executor_.plan_->passes[pass_].steps;
+        const plan::PlannedPass& pass = executor_.plan_->passes[pass_];
+        const auto& declared = pass.steps;
         if (next_ < steps.size()) {
+            expect_declared(pass, declared[next_].name, step);
             executor_.record(cmd, steps[next_].before);
             ++next_;
             return;
         }
         if (next_ == 0 || !declared[next_ - 1].repeats) {
-            throw std::logic_error(executor_.plan_->passes[pass_].name +
-                                   " recorded more steps than its plan declares");
+            programming_error(pass.name + " recorded step '" + std::string(step) +
+                              "' after the last step its plan declares");
         }
+        expect_declared(pass, declared[next_ - 1].name, step);
         executor_.record(cmd, steps[next_ - 1].between_repeats);
     }
 
@@ -123,6 +120,8 @@ class GraphExecutor::PassSync : public passes::StepSync {
         return next_ + 1 == declared.size() && declared.back().repeats;
     }
 
+    std::size_t pass() const { return pass_; }
+
   private:
     GraphExecutor& executor_;
     std::size_t pass_;
@@ -132,16 +131,20 @@ class GraphExecutor::PassSync : public passes::StepSync {
 GraphExecutor::GraphExecutor() = default;
 GraphExecutor::~GraphExecutor() = default;
 
-void GraphExecutor::begin_frame(const FramePlan& plan, std::vector<BoundResource> bindings) {
-    assert(bindings.size() == plan.resources.size());
+void GraphExecutor::begin_frame(const plan::FramePlan& plan, std::vector<BoundResource> bindings) {
+    MONOPLANE_EXPECTS(bindings.size() == plan.resources.size());
     plan_ = &plan;
     bindings_ = std::move(bindings);
     // Consecutive frames of one plan start from the same states (TAA's two history images swap
     // roles and states together): compile only when either changed.
     std::vector<graph::ResourceState> initial = initial_states();
-    if (plan_generation_ != compiled_generation_ || initial != compiled_initial_) {
-        compiled_ = graph::compile(plan.resources, plan.graph_passes(), plan.exports, initial);
+    graph::Aliasing aliasing = this->aliasing();
+    if (plan_generation_ != compiled_generation_ || initial != compiled_initial_ ||
+        aliasing != compiled_aliasing_) {
+        compiled_ =
+            graph::compile(plan.resources, plan.graph_passes(), plan.exports, initial, aliasing);
         compiled_initial_ = std::move(initial);
+        compiled_aliasing_ = std::move(aliasing);
         compiled_generation_ = plan_generation_;
     }
     keep_final_states(compiled_.final_states);
@@ -149,14 +152,18 @@ void GraphExecutor::begin_frame(const FramePlan& plan, std::vector<BoundResource
 
 passes::StepSync& GraphExecutor::begin_pass(const vk::raii::CommandBuffer& cmd, std::size_t pass) {
     sync_ = std::make_unique<PassSync>(*this, pass);
-    if (plan_->passes[pass].steps.size() == 1) sync_->next(cmd);
+    // A pass of one step is begun here: the pass records that step and nothing else.
+    const std::vector<graph::Step>& steps = plan_->passes[pass].steps;
+    if (steps.size() == 1) sync_->next(cmd, steps.front().name);
     return *sync_;
 }
 
 void GraphExecutor::end_pass() {
     // A pass and its plan disagree: a programming error the GPU tests must see in any build.
-    if (!sync_ || !sync_->complete()) {
-        throw std::logic_error("a pass recorded fewer steps than its plan declares");
+    MONOPLANE_EXPECTS(sync_ != nullptr);
+    if (!sync_->complete()) {
+        programming_error(plan_->passes[sync_->pass()].name +
+                          " recorded fewer steps than its plan declares");
     }
     sync_.reset();
 }
@@ -171,15 +178,21 @@ vk::ImageLayout GraphExecutor::layout_of(const vk_core::ImageRange& image) const
 }
 
 void GraphExecutor::forget(const vk_core::ImageRange& image) {
-    image_states_.erase({image.handle, image.base_layer});
+    const ImageId id{image.handle, image.base_layer};
+    image_states_.erase(id);
+    std::erase_if(memory_holders_, [&](const auto& holder) { return holder.second == id; });
 }
 
 void GraphExecutor::record(const vk::raii::CommandBuffer& cmd,
                            const std::vector<graph::Barrier>& barriers) {
     std::vector<vk::MemoryBarrier2> memory;
     std::vector<vk::ImageMemoryBarrier2> images;
-    for (const graph::Barrier& b : barriers) {
-        if (drop_ && drop_(b, *plan_)) continue;
+    for (graph::Barrier b : barriers) {
+        if (drop_ && drop_(b, *plan_)) {
+            if (b.old_layout == b.new_layout) continue;
+            b.src_stages = Stage::kNone;
+            b.src_access = Access::kNone;
+        }
         const vk::PipelineStageFlags2 src = source_stages(b);
         const vk::PipelineStageFlags2 dst = vk_stages(b.dst_stages);
         if (plan_->resources[b.resource].kind == graph::ResourceKind::kBuffer) {
@@ -225,7 +238,46 @@ std::vector<graph::ResourceState> GraphExecutor::initial_states() const {
     return states;
 }
 
+graph::Aliasing GraphExecutor::aliasing() {
+    graph::Aliasing aliasing;
+    memories_.clear();
+    for (const BoundResource& bound : bindings_) {
+        const vk::DeviceMemory memory =
+            bound.images.empty() ? vk::DeviceMemory{} : bound.images.front().shared_memory;
+        std::int32_t index = -1;
+        if (memory) {
+            const auto it = std::find(memories_.begin(), memories_.end(), memory);
+            index = static_cast<std::int32_t>(it - memories_.begin());
+            if (it == memories_.end()) memories_.push_back(memory);
+        }
+        aliasing.memory.push_back(index);
+    }
+    if (memories_.empty()) return {};
+    for (const vk::DeviceMemory memory : memories_) {
+        graph::MemoryHolder& holder = aliasing.initial.emplace_back();
+        const auto last = memory_holders_.find(memory);
+        if (last == memory_holders_.end()) continue;  // no frame has used it
+        for (std::size_t r = 0; r < bindings_.size(); ++r) {
+            const std::vector<vk_core::ImageRange>& images = bindings_[r].images;
+            if (!images.empty() &&
+                ImageId{images.front().handle, images.front().base_layer} == last->second) {
+                holder.resource = static_cast<std::int32_t>(r);
+            }
+        }
+        // An image this plan does not bind: its accesses, as it left them.
+        const auto state = image_states_.find(last->second);
+        if (holder.resource < 0 && state != image_states_.end()) holder.state = state->second;
+    }
+    return aliasing;
+}
+
 void GraphExecutor::keep_final_states(const std::vector<graph::ResourceState>& states) {
+    for (std::size_t m = 0; m < memories_.size(); ++m) {
+        const std::int32_t r = compiled_.final_holders.at(m);
+        if (r < 0) continue;
+        const vk_core::ImageRange& image = bindings_[static_cast<std::size_t>(r)].images.front();
+        memory_holders_[memories_[m]] = {image.handle, image.base_layer};
+    }
     for (std::size_t r = 0; r < states.size(); ++r) {
         const graph::ResourceDesc& desc = plan_->resources[static_cast<std::uint16_t>(r)];
         if (desc.kind == graph::ResourceKind::kBuffer) {
@@ -242,4 +294,4 @@ void GraphExecutor::keep_final_states(const std::vector<graph::ResourceState>& s
     }
 }
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::executor

@@ -20,7 +20,7 @@
 #include "renderer/plan/frame_plan.h"
 #include "renderer/vk/image.h"
 
-namespace monoplane::modes {
+namespace monoplane::executor {
 
 // What one of the plan's resources is on the device this frame: its images (several for SSAO's
 // scratch images, one layer of a two-layer image for an eye of single-pass stereo), or nothing
@@ -42,7 +42,7 @@ class GraphExecutor {
 
     // Compiles the frame (or reuses the last compilation: same plan, same initial states).
     // bindings[r]: resource r of plan.resources.
-    void begin_frame(const FramePlan& plan, std::vector<BoundResource> bindings);
+    void begin_frame(const plan::FramePlan& plan, std::vector<BoundResource> bindings);
     // The plan passed to begin_frame is a new one (its owner remade it): compile it afresh.
     void plan_changed() { ++plan_generation_; }
     // Records the first step's barriers of plan.passes[pass] (a pass of one step), and returns
@@ -61,8 +61,10 @@ class GraphExecutor {
     void forget(const vk_core::ImageRange& image);
 
     // Tests only: drops the compiled barriers for which `drop` returns true (to show that the
-    // synchronisation validation layer reports the hazard left behind).
-    using BarrierFilter = std::function<bool(const graph::Barrier&, const FramePlan&)>;
+    // synchronisation validation layer reports the hazard left behind). A barrier that changes an
+    // image's layout keeps its transition with nothing before it to wait for, so that the layer
+    // reports the missing dependency rather than an image in the wrong layout.
+    using BarrierFilter = std::function<bool(const graph::Barrier&, const plan::FramePlan&)>;
     void drop_barriers_for_test(BarrierFilter drop) { drop_ = std::move(drop); }
 
   private:
@@ -71,19 +73,25 @@ class GraphExecutor {
 
     void record(const vk::raii::CommandBuffer& cmd, const std::vector<graph::Barrier>& barriers);
     std::vector<graph::ResourceState> initial_states() const;
+    // Which of this frame's resources share memory (vk_core::ImageRange::shared_memory), and
+    // which image used each memory last.
+    graph::Aliasing aliasing();
     void keep_final_states(const std::vector<graph::ResourceState>& states);
 
-    const FramePlan* plan_ = nullptr;
+    const plan::FramePlan* plan_ = nullptr;
     std::vector<BoundResource> bindings_;
     graph::CompiledFrame compiled_;
     // What compiled_ was made from: the plan's generation and the initial states.
     std::uint64_t plan_generation_ = 1;
     std::uint64_t compiled_generation_ = 0;
     std::vector<graph::ResourceState> compiled_initial_;
+    graph::Aliasing compiled_aliasing_;
+    std::vector<vk::DeviceMemory> memories_;              // this frame's, Aliasing's order
+    std::map<VkDeviceMemory, ImageId> memory_holders_;  // the image that used it last
     std::map<ImageId, graph::ResourceState> image_states_;
     std::map<std::string, graph::ResourceState> buffer_states_;  // by the resource's name
     std::unique_ptr<PassSync> sync_;
     BarrierFilter drop_;
 };
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::executor

@@ -6,26 +6,18 @@
 
 #include "common/result.h"
 #include "renderer/modes/content_depth.h"
+#include "renderer/plan/frame_plan.h"
 #include "renderer/vk/frame_ring.h"
 
 namespace monoplane::modes {
 namespace {
 
-// The passes a stereo frame would not run (the chooser's "hybrid only" cost).
-bool hybrid_only(const std::string& pass) {
-    return pass == "depth_pyramid" || pass == "occlusion_culling" || pass == "left.composite" ||
-           pass == "right.composite" || pass == "mono.tonemap";
-}
-
-FrameCost cost_of(const profile::FrameStats& stats) {
-    FrameCost cost;
+plan::FrameCost cost_of(const profile::FrameStats& stats) {
+    plan::FrameCost cost;
     cost.frame_ms = stats.gpu_frame_ms;
     for (const profile::PassTime& pass : stats.passes) {
-        if (pass.name == "mono.forward") {
-            cost.hybrid = true;
-            cost.mono_forward_ms += pass.gpu_ms;
-        } else if (hybrid_only(pass.name)) {
-            cost.hybrid_only_ms += pass.gpu_ms;
+        if (const auto parsed = plan::parse_pass_name(pass.name)) {
+            plan::add_pass_time(cost, parsed->first, parsed->second, pass.gpu_ms);
         }
     }
     return cost;
@@ -34,12 +26,12 @@ FrameCost cost_of(const profile::FrameStats& stats) {
 }  // namespace
 
 AutoMonoPlane::AutoMonoPlane(const vk_core::Context& ctx, const scenes::Scene& scene,
-                             AutoMonoPlaneParams params)
+                             plan::AutoMonoPlaneParams params)
     : scene_(scene), chooser_(std::move(params)), ctx_(ctx) {}
 
-const MonoPlaneDecision& AutoMonoPlane::choose(const StereoViewInputs& views,
-                                               vk::Extent2D eye_extent,
-                                               std::optional<double> nearest) {
+const plan::MonoPlaneDecision& AutoMonoPlane::choose(const StereoViewInputs& views,
+                                                     vk::Extent2D eye_extent,
+                                                     std::optional<double> nearest) {
     const rig::RigInputs eyes = rig_inputs_for(views, static_cast<int>(eye_extent.width),
                                                static_cast<int>(eye_extent.height));
     const double depth = farthest_content_depth(scene_, views);

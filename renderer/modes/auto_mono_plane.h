@@ -23,15 +23,15 @@ class AutoMonoPlane {
   public:
     // The scene must outlive this.
     AutoMonoPlane(const vk_core::Context& ctx, const scenes::Scene& scene,
-                  AutoMonoPlaneParams params);
+                  plan::AutoMonoPlaneParams params);
 
     // This frame's decision for the eyes and head in `views` at the renderer's eye size, with
     // overlap k and grazing angle as the frame's rig will have them. Throws UserError for eyes
     // the rig refuses.
     // nearest: the nearest m allowed (FrameInputs::nearest_auto_plane).
-    const MonoPlaneDecision& choose(const StereoViewInputs& views, vk::Extent2D eye_extent,
-                                    std::optional<double> nearest);
-    const MonoPlaneDecision& last() const { return decision_; }
+    const plan::MonoPlaneDecision& choose(const StereoViewInputs& views, vk::Extent2D eye_extent,
+                                          std::optional<double> nearest);
+    const plan::MonoPlaneDecision& last() const { return decision_; }
 
     // The eyes' linear depth images the histogram counts (before the first record, and again
     // whenever they change).
@@ -43,17 +43,17 @@ class AutoMonoPlane {
     void complete(std::uint32_t slot, bool histogram_recorded, const profile::FrameStats& stats);
     // The histogram of the last completed frame that recorded one (tests: its counts against the
     // read-back depth).
-    const std::optional<DepthHistogram>& last_histogram() const { return last_histogram_; }
+    const std::optional<plan::DepthHistogram>& last_histogram() const { return last_histogram_; }
 
   private:
     const scenes::Scene& scene_;
-    MonoPlaneChooser chooser_;
+    plan::MonoPlaneChooser chooser_;
     std::unique_ptr<passes::DepthHistogramPass> histogram_;
     const vk_core::Context& ctx_;
     std::optional<std::array<vk::ImageView, 2>> eye_depths_;
     vk::Extent2D eye_extent_{0, 0};
-    MonoPlaneDecision decision_;
-    std::optional<DepthHistogram> last_histogram_;
+    plan::MonoPlaneDecision decision_;
+    std::optional<plan::DepthHistogram> last_histogram_;
 };
 
 }  // namespace monoplane::modes

@@ -2,6 +2,7 @@
 // records a barrier: the executor (graph_executor.h) places the compiled ones before each step.
 #include <algorithm>
 
+#include "renderer/executor/image_layouts.h"
 #include "renderer/modes/mode_renderer_internals.h"
 #include "renderer/passes/culling/cull_constants.h"
 #include "rig/temporal_jitter.h"
@@ -13,40 +14,21 @@ namespace {
 void copy_to_buffer(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image,
                     vk::Extent2D extent, const vk_core::Buffer& buffer) {
     cmd.copyImageToBuffer(
-        image.handle(), vk::ImageLayout::eTransferSrcOptimal, buffer.handle(),
+        image.handle(), executor::layout_for(graph::Use::kTransferSrc), buffer.handle(),
         vk::BufferImageCopy(
             0, 0, 0,
             vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, image.base_layer(), 1),
             {0, 0, 0}, vk::Extent3D(extent, 1)));
 }
 
-// The forward pass's step for a planned draw (one to one).
-passes::ForwardStep forward_step(DrawStep step) {
-    switch (step) {
-        case DrawStep::kMaskHidden:
-            return passes::ForwardStep::kMaskHidden;
-        case DrawStep::kDepthPrepass:
-            return passes::ForwardStep::kDepthPrepass;
-        case DrawStep::kChunks:
-            return passes::ForwardStep::kChunks;
-        case DrawStep::kChunksShowRouting:
-            return passes::ForwardStep::kChunksShowRouting;
-        case DrawStep::kSky:
-            return passes::ForwardStep::kSky;
-        case DrawStep::kBlended:
-            return passes::ForwardStep::kBlended;
-    }
-    return passes::ForwardStep::kChunks;
-}
-
 }  // namespace
 
 void ModeRenderer::record_pass(const vk::raii::CommandBuffer& cmd, std::size_t index,
                                const FrameState& frame) {
-    const PlannedPass& pass = last_plan_.passes[index];
+    const plan::PlannedPass& pass = last_plan_.passes[index];
     // The barriers into the pass first, outside its timed scope, as its own commands' cost is.
     passes::StepSync& sync = executor_.begin_pass(cmd, index);
-    const bool timed = pass.kind != PassKind::kReadback;  // read-backs are not GPU frame time
+    const bool timed = pass.kind != plan::PassKind::kReadback;  // read-backs are not GPU frame time
     if (timed) profiler_.begin_pass(cmd, pass.name);
     if (!pass.statistics_scope.empty()) profiler_.begin_view(cmd, pass.statistics_scope);
     record_planned(cmd, pass, frame, sync);
@@ -55,87 +37,89 @@ void ModeRenderer::record_pass(const vk::raii::CommandBuffer& cmd, std::size_t i
     executor_.end_pass();
 }
 
-std::optional<passes::Predicate> ModeRenderer::predicate(GpuPredicate when) const {
+std::optional<passes::Predicate> ModeRenderer::predicate(plan::GpuPredicate when) const {
     switch (when) {
-        case GpuPredicate::kAlways:
+        case plan::GpuPredicate::kAlways:
             return std::nullopt;
-        case GpuPredicate::kMonoAny:
+        case plan::GpuPredicate::kMonoAny:
             return culling_.predicate(MONOPLANE_PRED_MONO_ANY, false);
-        case GpuPredicate::kMonoNone:
+        case plan::GpuPredicate::kMonoNone:
             return culling_.predicate(MONOPLANE_PRED_MONO_ANY, true);
-        case GpuPredicate::kMonoDepthTested:
+        case plan::GpuPredicate::kMonoDepthTested:
             return culling_.predicate(MONOPLANE_PRED_MONO_DEPTH_TESTED, false);
     }
     return std::nullopt;
 }
 
-void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                                   const FrameState& frame, passes::StepSync& sync) {
     switch (pass.kind) {
-        case PassKind::kCulling:
+        case plan::PassKind::kCulling:
             culling_.record_frustum_phase(cmd);
             break;
-        case PassKind::kShadow:
+        case plan::PassKind::kShadow:
             resources_->record_shadow(cmd, frame.light_view_proj);
             break;
-        case PassKind::kForward:
+        case plan::PassKind::kForward:
             record_forward(cmd, pass);
             break;
-        case PassKind::kDepthPyramid:
+        case plan::PassKind::kDepthPyramid:
             record_pyramid(cmd, pass, frame, sync);
             break;
-        case PassKind::kOcclusionCulling:
+        case plan::PassKind::kOcclusionCulling:
             passes::with_predicate(cmd, predicate(pass.when),
                                    [&] { culling_.record_occlusion_phase(cmd); });
             break;
-        case PassKind::kMonoSsao:
+        case plan::PassKind::kComposite:
+            record_composite(cmd, pass, frame);
+            break;
+        case plan::PassKind::kTransparency:
+            record_transparency(cmd, pass);
+            break;
+        case plan::PassKind::kSsao:
+            if (pass.view != plan::ViewId::kMono) {
+                record_ssao(cmd, frame, sync);
+                break;
+            }
             // The far region's AO, computed once for both eyes (C alone sees it).
             passes::with_predicate(cmd, predicate(pass.when), [&] {
                 ssao_->record_view(cmd, sync, *mono_->ssao, mono_->area);
                 ssao_->record_apply(cmd, sync, *mono_->ssao, mono_->hdr, mono_->area);
             });
             break;
-        case PassKind::kComposite:
-            record_composite(cmd, pass, frame);
+        case plan::PassKind::kTaa:
+            record_taa(cmd, *eyes_[plan::eye_index(pass.view)]);
             break;
-        case PassKind::kTransparency:
-            record_transparency(cmd, pass);
-            break;
-        case PassKind::kSsao:
-            record_ssao(cmd, frame, sync);
-            break;
-        case PassKind::kTaa:
-            record_taa(cmd, *eyes_[eye_index(pass.view)]);
-            break;
-        case PassKind::kTonemap:
+        case plan::PassKind::kTonemap:
             record_tonemap(cmd, pass, frame);
             break;
-        case PassKind::kDepthHistogram:
+        case plan::PassKind::kDepthHistogram:
             auto_mono_plane_->record(cmd, sync, frame.slot);
             break;
-        case PassKind::kReadback:
+        case plan::PassKind::kReadback:
             record_readback(cmd, frame);
             break;
     }
 }
 
-void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass) {
+void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd,
+                                  const plan::PlannedPass& pass) {
     std::vector<passes::ForwardDraw> draws;
-    for (const PlannedDraw& draw : pass.draws) {
-        draws.push_back({forward_step(draw.step), predicate(draw.when)});
+    for (const plan::PlannedDraw& draw : pass.draws) {
+        draws.push_back({draw.step, predicate(draw.when)});
     }
-    if (pass.view == ViewId::kEyes) {
+    if (pass.view == plan::ViewId::kEyes) {
         // Both eyes in one pass, from the list of chunks either eye needs.
         eyes_forward_->record(cmd, eye_layers_->forward_targets(eye_extent_), *eye_pair_set_,
                               *merged_depth_set_, resources_->geometry(), resources_->textures(),
                               culling_.chunk_draws(passes::CullView::kBothEyes), draws);
         return;
     }
-    if (pass.view == ViewId::kMono) {
+    if (pass.view == plan::ViewId::kMono) {
         // Pixels hidden in both eyes stay unwritten; C's image read back shows them black,
         // and C's SSAO must not read stale depths there.
         const bool masked = std::any_of(pass.draws.begin(), pass.draws.end(), [](const auto& d) {
-            return d.step == DrawStep::kMaskHidden;
+            return d.step == plan::DrawStep::kMaskHidden;
         });
         const bool clear_color = masked && (options_.read_back || ssao_);
         forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,
@@ -143,16 +127,16 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd, const Plan
                         culling_.chunk_draws(passes::CullView::kMono), draws);
         return;
     }
-    const int e = eye_index(pass.view);
+    const int e = plan::eye_index(pass.view);
     forward_.record(cmd, eyes_[e]->forward_targets(), *eyes_[e]->forward_set, *merged_depth_set_,
                     resources_->geometry(), resources_->textures(),
                     culling_.chunk_draws(static_cast<passes::CullView>(e)), draws);
 }
 
 void ModeRenderer::record_transparency(const vk::raii::CommandBuffer& cmd,
-                                       const PlannedPass& pass) {
+                                       const plan::PlannedPass& pass) {
     // One eye at a time in every stereo form: the eye's own list holds its blended chunks.
-    const int e = eye_index(pass.view);
+    const int e = plan::eye_index(pass.view);
     View& eye = *eyes_[e];
     forward_.record_after_composite(
         cmd, passes::AfterCompositeTargets{eye.hdr, eye_extent_}, *eye.forward_set,
@@ -160,7 +144,7 @@ void ModeRenderer::record_transparency(const vk::raii::CommandBuffer& cmd,
         culling_.draws(static_cast<passes::CullView>(e), MONOPLANE_CLASS_BLENDED));
 }
 
-void ModeRenderer::record_pyramid(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+void ModeRenderer::record_pyramid(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                                   const FrameState& frame, passes::StepSync& sync) {
     std::array<glm::dmat3, 2> mono_to_eye;
     for (int e = 0; e < 2; ++e) {
@@ -177,17 +161,19 @@ void ModeRenderer::record_ssao(const vk::raii::CommandBuffer& cmd, const FrameSt
                        frame.use_mono
                            ? static_cast<float>(frame.inputs->mono_plane) + ssao_->skip_margin()
                            : passes::SsaoPass::kEveryPixel);
-    for (const auto& eye : eyes_) {
+    for (int e = 0; e < 2; ++e) {
         // In hybrid the far region already carries C's AO: only the near content takes the eyes'.
-        ssao_->record_apply(cmd, sync, *eye->ssao, eye->hdr, eye_extent_,
-                            frame.use_mono ? &eye->depth : nullptr);
+        const View& eye = *eyes_[e];
+        ssao_->record_apply(cmd, sync, *eye.ssao, eye.hdr, eye_extent_,
+                            frame.use_mono ? &eye.depth : nullptr,
+                            plan::view_name(plan::eye_view(e)));
     }
 }
 
-void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
-                                    const FrameState& frame) {
+void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd,
+                                    const plan::PlannedPass& pass, const FrameState& frame) {
     const FrameInputs& inputs = *frame.inputs;
-    const int e = eye_index(pass.view);
+    const int e = plan::eye_index(pass.view);
     const View& view = *eyes_[e];
     passes::CompositeParams params;
     params.mono_allocation = glm::vec2(static_cast<float>(mono_->extent.width),
@@ -211,9 +197,10 @@ void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd, const Pl
                                     static_cast<float>(mono_->area.height)) /
                           params.mono_allocation;
     }
-    if (inputs.debug == DebugView::kTintMono) params.tint = 1.0f;
-    if (inputs.debug == DebugView::kStereoOnly) params.mapping = passes::CompositeMapping::kNothing;
-    params.cover_all_pixels = inputs.debug == DebugView::kMonoOnly;
+    if (inputs.debug == plan::DebugView::kTintMono) params.tint = 1.0f;
+    if (inputs.debug == plan::DebugView::kStereoOnly)
+        params.mapping = passes::CompositeMapping::kNothing;
+    params.cover_all_pixels = inputs.debug == plan::DebugView::kMonoOnly;
     params.when = predicate(pass.when);
     if (pass.writes_display) {
         composite_.record_display(cmd, {view.display, view.linear_depth, view.depth},
@@ -226,13 +213,13 @@ void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd, const Pl
         *mono_->composite_set, params);
 }
 
-void ModeRenderer::record_tonemap(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+void ModeRenderer::record_tonemap(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                                   const FrameState& frame) {
-    if (pass.view == ViewId::kMono) {
+    if (pass.view == plan::ViewId::kMono) {
         tonemap_.record(cmd, mono_->display, *mono_->tonemap_set, options_.tonemap);
         return;
     }
-    const View& view = *eyes_[eye_index(pass.view)];
+    const View& view = *eyes_[plan::eye_index(pass.view)];
     const vk::DescriptorSet input =
         frame.taa ? *view.tonemap_taa_sets[history_parity_] : *view.tonemap_set;
     // Predicated (if mono-none) where the composite writes the display image otherwise.

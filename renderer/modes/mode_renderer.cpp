@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <utility>
 
+#include "common/programming_error.h"
 #include "common/result.h"
 #include "renderer/modes/frustum_culling.h"
 #include "renderer/modes/mode_renderer_internals.h"
@@ -33,13 +34,13 @@ glm::dvec3 to_world(const rig::Pose& head, const glm::dvec3& in_head) {
 
 }  // namespace
 
-vk::SampleCountFlagBits msaa_samples(AntiAliasing aa) {
+vk::SampleCountFlagBits msaa_samples(plan::AntiAliasing aa) {
     switch (aa) {
-        case AntiAliasing::kMsaa2:
+        case plan::AntiAliasing::kMsaa2:
             return vk::SampleCountFlagBits::e2;
-        case AntiAliasing::kMsaa4:
+        case plan::AntiAliasing::kMsaa4:
             return vk::SampleCountFlagBits::e4;
-        case AntiAliasing::kMsaa8:
+        case plan::AntiAliasing::kMsaa8:
             return vk::SampleCountFlagBits::e8;
         default:
             return vk::SampleCountFlagBits::e1;
@@ -60,12 +61,12 @@ std::shared_ptr<SceneResources> checked(std::shared_ptr<SceneResources> resource
 }
 
 // Refuses option combinations the renderer does not implement, with the reason.
-const RendererOptions& checked(const vk_core::Context& ctx, Mode mode,
+const RendererOptions& checked(const vk_core::Context& ctx, plan::Mode mode,
                                const RendererOptions& options) {
     const vk::SampleCountFlagBits samples = msaa_samples(options.anti_aliasing);
     if (samples != vk::SampleCountFlagBits::e1) {
-        if (mode != Mode::kStereo) {
-            throw UserError("MSAA (" + anti_aliasing_name(options.anti_aliasing) +
+        if (mode != plan::Mode::kStereo) {
+            throw UserError("MSAA (" + plan::anti_aliasing_name(options.anti_aliasing) +
                             ") is available in stereo mode only: in the hybrid modes C's image "
                             "is mapped into the eyes after the resolve would have happened "
                             "(papers/000 Sect. 4.5; docs/hybrid.md). Use --anti-aliasing taa.");
@@ -74,40 +75,24 @@ const RendererOptions& checked(const vk_core::Context& ctx, Mode mode,
         const vk::SampleCountFlags supported =
             limits.framebufferColorSampleCounts & limits.framebufferDepthSampleCounts;
         if (!(supported & samples)) {
-            throw UserError(anti_aliasing_name(options.anti_aliasing) + " is not supported by " +
-                            ctx.device_info().name);
+            throw UserError(plan::anti_aliasing_name(options.anti_aliasing) +
+                            " is not supported by " + ctx.device_info().name);
         }
     }
     if (options.read_back_ao && !options.ssao) {
         throw UserError("reading back ambient occlusion needs SSAO switched on");
     }
-    if (options.auto_mono_plane && mode == Mode::kStereo) {
+    if (options.auto_mono_plane && mode == plan::Mode::kStereo) {
         throw UserError("--mono-plane auto needs a hybrid mode: stereo has no mono plane");
     }
     return options;
 }
 
-// The forward pass's form of a single-pass StereoPass.
-passes::StereoDuplication stereo_duplication(StereoPass pass) {
-    switch (pass) {
-        case StereoPass::kMultiview:
-            return passes::StereoDuplication::kMultiview;
-        case StereoPass::kGeometryShader:
-            return passes::StereoDuplication::kGeometryShader;
-        case StereoPass::kInstanced:
-            return passes::StereoDuplication::kInstanced;
-        case StereoPass::kTwoPasses:
-            break;
-    }
-    return passes::StereoDuplication::kNone;
-}
-
 // The forward pass's configuration: anti-aliasing, the stereo form, and the pipelines of the
 // alpha classes the scene has.
-passes::ForwardConfig forward_config(const RendererOptions& options,
-                                     passes::StereoDuplication stereo,
+passes::ForwardConfig forward_config(const RendererOptions& options, plan::StereoPass stereo,
                                      const SceneResources& resources) {
-    passes::ForwardConfig config{options.anti_aliasing == AntiAliasing::kTaa,
+    passes::ForwardConfig config{options.anti_aliasing == plan::AntiAliasing::kTaa,
                                  msaa_samples(options.anti_aliasing), stereo, options.vertex_work};
     const auto& classes = resources.alpha_classes();
     config.masked_chunks = classes[MONOPLANE_CLASS_MASKED] > 0;
@@ -115,35 +100,47 @@ passes::ForwardConfig forward_config(const RendererOptions& options,
     return config;
 }
 
+// The culling pass's draw list of a view.
+std::uint32_t cull_list(plan::ViewId view) {
+    switch (view) {
+        case plan::ViewId::kLeft:
+            return MONOPLANE_CULL_LEFT;
+        case plan::ViewId::kRight:
+            return MONOPLANE_CULL_RIGHT;
+        case plan::ViewId::kEyes:
+            return MONOPLANE_CULL_BOTH_EYES;
+        case plan::ViewId::kMono:
+            return MONOPLANE_CULL_MONO;
+        case plan::ViewId::kNone:
+            break;
+    }
+    programming_error("cull_list: a pass over every view has no draw list of its own");
+}
+
 // Whether a frame's plan may have the composite write the display image (PlannedPass::
 // writes_display), asked of the plan itself: the composite's pipelines for it are made with the
 // renderer, never mid-run, and only when some frame will use them.
-bool composite_may_write_display(const vk_core::Context& ctx, Mode mode,
+bool composite_may_write_display(const vk_core::Context& ctx, plan::Mode mode,
                                  const RendererOptions& renderer, bool blended_chunks) {
-    PlanOptions options;
-    options.blended = blended_chunks;
-    options.mode = mode;
-    options.stereo_pass = renderer.stereo_pass;
-    options.anti_aliasing = renderer.anti_aliasing;
-    options.ssao = renderer.ssao.has_value();
-    options.separate_tonemap = renderer.separate_tonemap;
-    PlanDevice device;
+    const plan::PlanOptions options =
+        plan_options_of(mode, renderer, blended_chunks, renderer.auto_mono_plane.has_value());
+    plan::PlanDevice device;
     device.independent_blend = ctx.capabilities().independent_blend;
-    const FramePlan plan = plan_frame(options, PlanFrame{}, device);
-    const PlannedPass* composite = plan.find("left.composite");
+    const plan::FramePlan plan = plan::plan_frame(options, plan::PlanFrame{}, device);
+    const plan::PlannedPass* composite = plan.find(plan::PassKind::kComposite, plan::ViewId::kLeft);
     return composite != nullptr && composite->writes_display;
 }
 
 }  // namespace
 
-ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& scene, Mode mode,
+ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& scene, plan::Mode mode,
                            vk::Extent2D eye_extent, const RendererOptions& options,
                            double nearest_mono_plane)
     : ModeRenderer(ctx, std::make_shared<SceneResources>(ctx, scene, options.shadow), mode,
                    eye_extent, options, nearest_mono_plane) {}
 
 ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneResources> resources,
-                           Mode mode, vk::Extent2D eye_extent, const RendererOptions& options,
+                           plan::Mode mode, vk::Extent2D eye_extent, const RendererOptions& options,
                            double nearest_mono_plane)
     : ctx_(ctx),
       resources_(checked(std::move(resources), options)),
@@ -154,9 +151,9 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       nearest_mono_plane_(nearest_mono_plane),
       blended_chunks_(resources_->alpha_classes()[MONOPLANE_CLASS_BLENDED] > 0),
       forward_(ctx, resources_->textures().layout(),
-               forward_config(options, passes::StereoDuplication::kNone, *resources_)),
+               forward_config(options, plan::StereoPass::kTwoPasses, *resources_)),
       tonemap_(ctx),
-      composite_(ctx, options.anti_aliasing == AntiAliasing::kTaa,
+      composite_(ctx, options.anti_aliasing == plan::AntiAliasing::kTaa,
                  composite_may_write_display(ctx, mode, options, blended_chunks_)),
       culling_(ctx, scene_, resources_->chunk_table(), resources_->level_table()),
       pyramid_(ctx),
@@ -165,14 +162,13 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       ring_(ctx) {
     if (options.ssao) ssao_ = std::make_unique<passes::SsaoPass>(ctx, options.ssao_params);
     merged_depth_set_ = forward_.make_merged_depth_set();
-    const bool taa = options.anti_aliasing == AntiAliasing::kTaa;
+    const bool taa = options.anti_aliasing == plan::AntiAliasing::kTaa;
     const ViewFeatures eye_features{taa, taa, msaa_samples(options.anti_aliasing)};
-    if (options.stereo_pass != StereoPass::kTwoPasses) {
+    if (options.stereo_pass != plan::StereoPass::kTwoPasses) {
         eye_layers_ = std::make_unique<ForwardImages>(ctx, eye_extent, eye_features, 2);
-        const passes::StereoDuplication duplication = stereo_duplication(options.stereo_pass);
         eyes_forward_ = std::make_unique<passes::ForwardPass>(
             ctx, resources_->textures().layout(),
-            forward_config(options, duplication, *resources_));
+            forward_config(options, options.stereo_pass, *resources_));
         eye_pair_constants_.emplace(ctx, 2 * sizeof(passes::ViewConstants),
                                     vk::BufferUsageFlagBits::eUniformBuffer,
                                     vk_core::MemoryUse::kDeviceLocal);
@@ -190,7 +186,7 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
             eye->composite_hdr_set = composite_.make_eye_input(eye->hdr);
         }
         if (taa) make_taa_sets(*eye);
-        if (blended_chunks_ && mode != Mode::kStereo) {
+        if (blended_chunks_ && mode != plan::Mode::kStereo) {
             eye->composite_depth_set =
                 forward_.make_composite_depth_set(eye->linear_depth.view(), pyramid_.sampler());
         }
@@ -255,7 +251,7 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     drain_frames();
     if (mono_) forget_images(*mono_);
     mono_.reset();
-    const bool taa = options_.anti_aliasing == AntiAliasing::kTaa;
+    const bool taa = options_.anti_aliasing == plan::AntiAliasing::kTaa;
     mono_ = std::make_unique<MonoView>(ctx_, needed, ViewFeatures{taa, false});
     make_view_sets(*mono_);
     mono_->composite_set =
@@ -341,7 +337,7 @@ ModeRenderer::FrameState ModeRenderer::prepare_frame(const FrameInputs& inputs) 
 
     // TAA: this frame's jitter, and whether the history continues (consecutive frames of the
     // same configuration; a study switching between renderers restarts it).
-    frame.taa = options_.anti_aliasing == AntiAliasing::kTaa;
+    frame.taa = options_.anti_aliasing == plan::AntiAliasing::kTaa;
     const std::uint64_t frame_index = inputs.frame_index.value_or(next_frame_index_);
     history_valid_ = frame.taa && frame_index == next_frame_index_ && frame_index > 0 &&
                      history_continues_at(inputs.mono_plane);
@@ -383,10 +379,10 @@ bool ModeRenderer::history_continues_at(double mono_plane) const {
 
 void ModeRenderer::resolve_variant(const FrameInputs& inputs, FrameState& frame) {
     frame.mono_culling = inputs.mono_culling;
-    if (inputs.mono_culling != MonoCulling::kAuto) return;
+    if (inputs.mono_culling != plan::MonoCulling::kAuto) return;
     // Only monoplane's hybrid drawing C has variants to tell apart.
-    if (mode_ != Mode::kHybrid || !frame.use_mono) {
-        frame.mono_culling = MonoCulling::kNoOpt;
+    if (mode_ != plan::Mode::kHybrid || !frame.use_mono) {
+        frame.mono_culling = plan::MonoCulling::kNoOpt;
         return;
     }
     // Another m changes what the pyramid saves: measure again. Under --mono-plane auto m moves a
@@ -403,7 +399,7 @@ void ModeRenderer::resolve_variant(const FrameInputs& inputs, FrameState& frame)
 void ModeRenderer::build_frame_rig(const FrameInputs& inputs, FrameState& frame) {
     // The rig (hybrid modes). m >= f leaves C out and hybrid records the stereo pass list.
     rig_.reset();
-    if (mode_ == Mode::kStereo) return;
+    if (mode_ == plan::Mode::kStereo) return;
     const StereoViewInputs& views = inputs.views;
     rig::RigInputs rig_inputs = rig_inputs_for(views, static_cast<int>(eye_extent_.width),
                                                static_cast<int>(eye_extent_.height));
@@ -415,7 +411,7 @@ void ModeRenderer::build_frame_rig(const FrameInputs& inputs, FrameState& frame)
     }
     rig_ = rig::build_rig(rig_inputs).value_or_throw();
     frame.use_mono = !rig_->mono_skipped;
-    if (frame.use_mono && mode_ == Mode::kHybridFarfield) {
+    if (frame.use_mono && mode_ == plan::Mode::kHybridFarfield) {
         if (rig::is_canted(rig_inputs)) {
             // papers/003's copy moves C's pixels by one constant offset per eye, which only eyes
             // parallel to C allow; a canted eye needs the projective mapping of `hybrid`.
@@ -435,13 +431,12 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
     const bool use_mono = frame.use_mono;
     const auto& farfield = frame.farfield;
     // C's work saved by the merged depth pyramid: the plan decides.
-    const PlannedPass* pyramid = last_plan_.find("depth_pyramid");
-    const bool depth_tested = pyramid != nullptr && !pyramid->skipped;
+    const bool depth_tested = last_plan_.runs(plan::PassKind::kDepthPyramid);
     passes::CullFrame cull;
     // Hybrid: C draws the blended chunks wholly beyond m, the eyes the others.
     cull.split_blended = use_mono;
     // Instanced stereo draws each chunk of the both-eyes list once per eye, as two instances.
-    cull.both_eyes_instances = options_.stereo_pass == StereoPass::kInstanced ? 2u : 1u;
+    cull.both_eyes_instances = options_.stereo_pass == plan::StereoPass::kInstanced ? 2u : 1u;
     const glm::dvec3 mono_in_head = farfield || !use_mono ? glm::dvec3(0.0) : rig_->mono_position;
     const glm::dvec3 mono_position = to_world(views.head, mono_in_head);
     for (Eye eye : {Eye::kLeft, Eye::kRight}) {
@@ -455,8 +450,8 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
                     to_world(views.head, offset), inputs, mono_position, band,
                     frame.light_view_proj);
         cull.view_proj[e] = view_proj;  // a sub-pixel jitter changes no chunk's visibility
-        cull.lod_views[e] = lod_view_of(view_proj, to_world(views.head, offset),
-                                        glm::dvec2(eye_extent_.width, eye_extent_.height));
+        cull.lod_views[e] = plan::lod_view_of(view_proj, to_world(views.head, offset),
+                                              glm::dvec2(eye_extent_.width, eye_extent_.height));
     }
     if (options_.lod.enabled) cull.lod_error_px = options_.lod.error_px;
     if (use_mono) {
@@ -485,7 +480,7 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
         cull.mono_viewport = glm::dvec2(mono_->area.width, mono_->area.height);
         // C's own pixels (eq. 8): its viewport over its field.
         cull.lod_views[MONOPLANE_CULL_MONO] =
-            lod_view_of(mono_view_proj, mono_position, cull.mono_viewport);
+            plan::lod_view_of(mono_view_proj, mono_position, cull.mono_viewport);
         cull.hidden_depth_threshold = threshold;
         decide_routing(inputs, cull);
         if (depth_tested) {
@@ -508,30 +503,18 @@ void ModeRenderer::update_frame_views(const FrameInputs& inputs, FrameState& fra
 }
 
 void ModeRenderer::update_plan(const FrameInputs& inputs, const FrameState& frame) {
-    PlanOptions options;
-    options.mode = mode_;
-    options.stereo_pass = options_.stereo_pass;
-    options.anti_aliasing = options_.anti_aliasing;
-    options.ssao = options_.ssao.has_value();
-    options.ssao_stereo = options_.ssao == passes::SsaoVariant::kStereoConsistent;
-    options.depth_prepass = options_.depth_prepass;
-    options.read_back = options_.read_back;
-    options.read_back_depth = options_.read_back_depth;
-    options.read_back_ao = options_.read_back_ao;
-    options.read_back_draw_lists = options_.read_back_draw_lists;
-    options.depth_histogram = auto_mono_plane_ != nullptr;
-    options.separate_tonemap = options_.separate_tonemap;
-    options.blended = blended_chunks_;
-    PlanFrame planned;
+    const plan::PlanOptions options =
+        plan_options_of(mode_, options_, blended_chunks_, auto_mono_plane_ != nullptr);
+    plan::PlanFrame planned;
     planned.mono_skipped = !frame.use_mono;
     planned.mono_culling = frame.mono_culling;
     planned.debug = inputs.debug;
     planned.shadow_needed = frame.shadow_needed;
-    const PlanDevice device{frame.predicated, ctx_.capabilities().independent_blend};
+    const plan::PlanDevice device{frame.predicated, ctx_.capabilities().independent_blend};
     // Consecutive frames of one configuration share their plan: make it only when that changes.
     const PlanInputs key{options, planned, device};
     if (last_plan_inputs_ == key) return;
-    last_plan_ = plan_frame(options, planned, device);
+    last_plan_ = plan::plan_frame(options, planned, device);
     last_plan_inputs_ = key;
     executor_.plan_changed();
 }
@@ -558,9 +541,8 @@ void ModeRenderer::submit_frame(
     if (record_after) record_after(cmd);
     ring_.submit(frame.slot);
     PendingFrame pending{record_ms, frame.measuring_variant};
-    const PlannedPass* histogram = last_plan_.find("depth_histogram");
-    pending.depth_histogram = histogram != nullptr && !histogram->skipped;
-    if (mode_ != Mode::kStereo) pending.mono_plane = frame.inputs->mono_plane;
+    pending.depth_histogram = last_plan_.runs(plan::PassKind::kDepthHistogram);
+    if (mode_ != plan::Mode::kStereo) pending.mono_plane = frame.inputs->mono_plane;
     if (auto_mono_plane_) pending.mono_plane_reason = auto_mono_plane_->last().reason;
     pending_[frame.slot] = std::move(pending);
     mono_rendered_ = frame.use_mono && options_.read_back;
@@ -621,26 +603,26 @@ profile::FrameStats ModeRenderer::collect_frame(std::uint32_t slot, double recor
     };
     // This slot's frame had transparency passes if its statistics have their scopes (the plan
     // may since have changed).
+    const std::pair<plan::PassKind, plan::ViewId> left_transparency{plan::PassKind::kTransparency,
+                                                                    plan::ViewId::kLeft};
     const bool transparency =
-        std::any_of(stats.views.begin(), stats.views.end(),
-                    [](const profile::ViewStatistics& v) { return v.view == "left.transparency"; });
+        std::any_of(stats.views.begin(), stats.views.end(), [&](const profile::ViewStatistics& v) {
+            return plan::statistics_scope_pass(v.view) == left_transparency;
+        });
     const auto forward_draws = [&](std::uint32_t list) {
         const std::uint32_t blended = drawn(list, MONOPLANE_CLASS_BLENDED);
         return drawn(list, MONOPLANE_CLASS_OPAQUE) + drawn(list, MONOPLANE_CLASS_MASKED) +
                (transparency && list != MONOPLANE_CULL_MONO ? 0u : blended);
     };
     for (profile::ViewStatistics& view : stats.views) {
-        if (view.view == "left") view.draws = forward_draws(MONOPLANE_CULL_LEFT);
-        if (view.view == "right") view.draws = forward_draws(MONOPLANE_CULL_RIGHT);
-        if (view.view == "eyes") view.draws = forward_draws(MONOPLANE_CULL_BOTH_EYES);
-        if (view.view == "left.transparency") {
-            view.draws = drawn(MONOPLANE_CULL_LEFT, MONOPLANE_CLASS_BLENDED);
+        const auto pass = plan::statistics_scope_pass(view.view);
+        if (!pass) continue;
+        const auto [kind, view_id] = *pass;
+        if (kind == plan::PassKind::kForward) view.draws = forward_draws(cull_list(view_id));
+        if (kind == plan::PassKind::kTransparency) {
+            view.draws = drawn(cull_list(view_id), MONOPLANE_CLASS_BLENDED);
         }
-        if (view.view == "right.transparency") {
-            view.draws = drawn(MONOPLANE_CULL_RIGHT, MONOPLANE_CLASS_BLENDED);
-        }
-        if (view.view == "mono") {
-            view.draws = forward_draws(MONOPLANE_CULL_MONO);
+        if (kind == plan::PassKind::kForward && view_id == plan::ViewId::kMono) {
             view.draws_before_occlusion_culling = counts[MONOPLANE_COUNT_MONO_CANDIDATES];
         }
     }
@@ -705,6 +687,25 @@ const std::vector<float>& ModeRenderer::eye_ao(Eye eye) const {
 
 const EyeFrameGeometry& ModeRenderer::eye_geometry(Eye eye) const {
     return eyes_[static_cast<int>(eye)]->geometry;
+}
+
+plan::PlanOptions plan_options_of(plan::Mode mode, const RendererOptions& options,
+                                  bool blended_chunks, bool depth_histogram) {
+    plan::PlanOptions plan;
+    plan.mode = mode;
+    plan.stereo_pass = options.stereo_pass;
+    plan.anti_aliasing = options.anti_aliasing;
+    plan.ssao = options.ssao.has_value();
+    plan.ssao_stereo = options.ssao == passes::SsaoVariant::kStereoConsistent;
+    plan.depth_prepass = options.depth_prepass;
+    plan.read_back = options.read_back;
+    plan.read_back_depth = options.read_back_depth;
+    plan.read_back_ao = options.read_back_ao;
+    plan.read_back_draw_lists = options.read_back_draw_lists;
+    plan.depth_histogram = depth_histogram;
+    plan.separate_tonemap = options.separate_tonemap;
+    plan.blended = blended_chunks;
+    return plan;
 }
 
 }  // namespace monoplane::modes

@@ -40,15 +40,15 @@
 namespace monoplane::modes {
 
 // MSAA's sample count for Vulkan: e1 for none and TAA.
-vk::SampleCountFlagBits msaa_samples(AntiAliasing aa);
+vk::SampleCountFlagBits msaa_samples(plan::AntiAliasing aa);
 
 struct RendererOptions {
-    StereoPass stereo_pass = StereoPass::kTwoPasses;
+    plan::StereoPass stereo_pass = plan::StereoPass::kTwoPasses;
     // The benchmark's vertex-heavy configuration (passes::ForwardConfig::vertex_work).
     std::uint32_t vertex_work = 0;
     passes::ShadowParams shadow;
     passes::TonemapParams tonemap;
-    AntiAliasing anti_aliasing = AntiAliasing::kNone;
+    plan::AntiAliasing anti_aliasing = plan::AntiAliasing::kNone;
     passes::TaaParams taa;
     std::optional<passes::SsaoVariant> ssao;  // none: no ambient occlusion
     passes::SsaoParams ssao_params;
@@ -66,11 +66,17 @@ struct RendererOptions {
     // `--mono-plane auto` (hybrid modes): every frame's m is chosen by the renderer within this
     // budget (renderer/plan/mono_plane_chooser.h) and FrameInputs::mono_plane is ignored; each
     // frame's FrameStats carry the m chosen and why.
-    std::optional<AutoMonoPlaneParams> auto_mono_plane;
+    std::optional<plan::AutoMonoPlaneParams> auto_mono_plane;
     // Level of detail (`--lod`, `--lod-error-px`): each view draws each chunk at the coarsest
     // level whose projected error stays within error_px (renderer/plan/lod_selection.h).
-    LodOptions lod;
+    plan::LodOptions lod;
 };
+
+// The frame plan's options for a renderer of `mode` built with `options` (one rule for the
+// renderer, its benchmarks and its memory planning): blended_chunks, the scene has alphaMode
+// BLEND chunks; depth_histogram, `--mono-plane auto` counts the eyes' depths.
+plan::PlanOptions plan_options_of(plan::Mode mode, const RendererOptions& options,
+                                  bool blended_chunks, bool depth_histogram);
 
 struct FrameInputs {
     StereoViewInputs views;
@@ -79,8 +85,8 @@ struct FrameInputs {
     // Grazing surfaces down to this angle (radians) show no cutting line: rig::RigInputs.
     double grazing_angle = 0.017453292519943295;
     double view_blend_band = 0.3;  // metres below m over which view vectors blend (Sect. 4.3)
-    DebugView debug = DebugView::kNone;
-    MonoCulling mono_culling = MonoCulling::kOcclusionCull;
+    plan::DebugView debug = plan::DebugView::kNone;
+    plan::MonoCulling mono_culling = plan::MonoCulling::kOcclusionCull;
     // Drives TAA's jitter and tells whether the history continues: a frame whose index does not
     // follow the renderer's previous one starts the history anew. Unset: the next index.
     std::optional<std::uint64_t> frame_index{};
@@ -108,13 +114,13 @@ class ModeRenderer {
     // The scene must outlive the renderer. nearest_mono_plane sizes C's render target once
     // (eq. 8 allocation); 0 sizes it for the first frame's m and grows it if a later m needs more.
     // Uploads the scene for this renderer alone.
-    ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& scene, Mode mode,
+    ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& scene, plan::Mode mode,
                  vk::Extent2D eye_extent, const RendererOptions& options,
                  double nearest_mono_plane = 0.0);
     // The same over a scene's shared GPU resources (geometry, chunk table, shadow map), made with
     // options.shadow; refuses (UserError) resources made with other shadow parameters.
-    ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneResources> resources, Mode mode,
-                 vk::Extent2D eye_extent, const RendererOptions& options,
+    ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneResources> resources,
+                 plan::Mode mode, vk::Extent2D eye_extent, const RendererOptions& options,
                  double nearest_mono_plane = 0.0);
     ~ModeRenderer();
 
@@ -137,7 +143,7 @@ class ModeRenderer {
         const FrameInputs& inputs,
         const std::function<void(const vk::raii::CommandBuffer&)>& record_after = {});
 
-    Mode mode() const { return mode_; }
+    plan::Mode mode() const { return mode_; }
     vk::Extent2D eye_extent() const { return eye_extent_; }
     // Display images to the host from the next frame on (or not: timed benchmark frames).
     void set_read_back(bool read_back) { options_.read_back = read_back; }
@@ -175,22 +181,22 @@ class ModeRenderer {
     // The scene's shared resources: its levels of detail, their build time.
     const SceneResources& scene_resources() const { return *resources_; }
     // The plan the last frame executed (render --json, bench.json).
-    const FramePlan& last_plan() const { return last_plan_; }
+    const plan::FramePlan& last_plan() const { return last_plan_; }
     // Tests only: frames from now on leave out the compiled barriers `drop` selects (what the
     // synchronisation validation layer must then report).
-    void drop_barriers_for_test(GraphExecutor::BarrierFilter drop) {
+    void drop_barriers_for_test(executor::GraphExecutor::BarrierFilter drop) {
         executor_.drop_barriers_for_test(std::move(drop));
     }
     // The variant the last hybrid frame used (FrameInputs::mono_culling resolved: with kAuto,
     // the one the measurement chose or is trying).
-    MonoCulling last_variant() const { return last_variant_; }
+    plan::MonoCulling last_variant() const { return last_variant_; }
     // With RendererOptions::auto_mono_plane: the last submitted frame's choice of m.
-    const MonoPlaneDecision* last_mono_plane_decision() const {
+    const plan::MonoPlaneDecision* last_mono_plane_decision() const {
         return auto_mono_plane_ ? &auto_mono_plane_->last() : nullptr;
     }
     // With RendererOptions::auto_mono_plane: the depth histogram of the last completed frame
     // that counted one (null before), which with read_back_depth is eye_linear_depth's frame.
-    const DepthHistogram* last_depth_histogram() const {
+    const plan::DepthHistogram* last_depth_histogram() const {
         if (!auto_mono_plane_ || !auto_mono_plane_->last_histogram()) return nullptr;
         return &*auto_mono_plane_->last_histogram();
     }
@@ -228,25 +234,25 @@ class ModeRenderer {
     // Makes last_plan_ this frame's plan (kept when nothing it depends on changed).
     void update_plan(const FrameInputs& inputs, const FrameState& frame);
     // The device images the plan's resources are this frame (resource_bindings.cpp).
-    std::vector<BoundResource> bind_resources();
-    std::vector<vk_core::ImageRange> view_images(const ResourceKey& key) const;
+    std::vector<executor::BoundResource> bind_resources();
+    std::vector<vk_core::ImageRange> view_images(const plan::ResourceKey& key) const;
     // Before a view's images go: the executor must not take their states for new ones.
     void forget_images(const View& view);
-    std::optional<passes::Predicate> predicate(GpuPredicate when) const;
+    std::optional<passes::Predicate> predicate(plan::GpuPredicate when) const;
     // The pass's barriers (the executor's), its profiler scopes, and its commands.
     void record_pass(const vk::raii::CommandBuffer& cmd, std::size_t pass, const FrameState& frame);
-    void record_planned(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+    void record_planned(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                         const FrameState& frame, passes::StepSync& sync);
-    void record_forward(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass);
-    void record_pyramid(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+    void record_forward(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass);
+    void record_pyramid(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                         const FrameState& frame, passes::StepSync& sync);
     void record_ssao(const vk::raii::CommandBuffer& cmd, const FrameState& frame,
                      passes::StepSync& sync);
-    void record_composite(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+    void record_composite(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                           const FrameState& frame);
-    void record_transparency(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass);
+    void record_transparency(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass);
     void record_taa(const vk::raii::CommandBuffer& cmd, View& view);
-    void record_tonemap(const vk::raii::CommandBuffer& cmd, const PlannedPass& pass,
+    void record_tonemap(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                         const FrameState& frame);
     void record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame);
     // Waits for the slot's frame (if one is in flight) and queues its statistics.
@@ -263,7 +269,7 @@ class ModeRenderer {
     const vk_core::Context& ctx_;
     std::shared_ptr<SceneResources> resources_;
     const scenes::Scene& scene_;
-    Mode mode_;
+    plan::Mode mode_;
     vk::Extent2D eye_extent_;
     RendererOptions options_;
     double nearest_mono_plane_;
@@ -287,22 +293,22 @@ class ModeRenderer {
     std::unique_ptr<MonoView> mono_;
     bool mono_rendered_ = false;
     std::optional<rig::Rig> rig_;
-    FramePlan last_plan_;
+    plan::FramePlan last_plan_;
     // Owns every frame's synchronisation: compiles the plan's barriers and records them.
-    GraphExecutor executor_;
+    executor::GraphExecutor executor_;
     struct PlanInputs {
-        PlanOptions options;
-        PlanFrame frame;
-        PlanDevice device;
+        plan::PlanOptions options;
+        plan::PlanFrame frame;
+        plan::PlanDevice device;
         bool operator==(const PlanInputs&) const = default;
     };
     std::optional<PlanInputs> last_plan_inputs_;  // what last_plan_ was made from
     // Where the draw order the culling pass holds was sorted from (front_to_back_order).
     std::optional<glm::dvec3> draw_order_viewer_;
     // --variant auto: measures the variants on this renderer's frames (reset when m changes).
-    VariantChooser variant_chooser_;
+    plan::VariantChooser variant_chooser_;
     double variant_mono_plane_ = -1.0;
-    MonoCulling last_variant_ = MonoCulling::kNoOpt;
+    plan::MonoCulling last_variant_ = plan::MonoCulling::kNoOpt;
     // --mono-plane auto: the chooser, and the inputs of the frame being recorded with its m.
     std::unique_ptr<AutoMonoPlane> auto_mono_plane_;
     FrameInputs auto_inputs_;

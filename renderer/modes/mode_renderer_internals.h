@@ -9,6 +9,7 @@
 
 #include "renderer/modes/farfield_rig.h"
 #include "renderer/modes/mode_renderer.h"
+#include "renderer/modes/transient_memory.h"
 
 namespace monoplane::modes {
 
@@ -37,39 +38,51 @@ struct ModeRenderer::ForwardImages {
     std::optional<vk_core::Image> depth_samples;
     std::optional<passes::MultisampleTargets> multisample;
 
-    ForwardImages(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features,
-                  std::uint32_t layers)
-        : hdr(ctx, {size, passes::ForwardPass::kHdrFormat, kColorTarget, layers}),
-          // Sampled: the merged depth pyramid reads the eyes' depth.
-          depth(ctx,
-                {size, passes::ForwardPass::kDepthFormat,
-                 vk::ImageUsageFlagBits::eDepthStencilAttachment | vk::ImageUsageFlagBits::eSampled,
-                 layers}),
-          linear_depth(ctx, {size, passes::ForwardPass::kLinearDepthFormat, kColorTarget, layers}) {
+    // The images of one camera's forward targets with their descriptions, by role: what the
+    // constructor makes, and what may share memory (TransientMemory).
+    static std::vector<TransientImage> images(plan::ViewId view, vk::Extent2D size,
+                                              const ViewFeatures& features, std::uint32_t layers) {
+        using plan::ImageRole;
+        const auto image = [&](ImageRole role, vk::Format format, vk::ImageUsageFlags usage,
+                               vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1) {
+            return TransientImage{{view, false, role, plan::BufferRole::kDrawLists},
+                                  vk_core::ImageDesc{size, format, usage, layers, samples}};
+        };
+        std::vector<TransientImage> images = {
+            image(ImageRole::kHdr, passes::ForwardPass::kHdrFormat, kColorTarget),
+            // Sampled: the merged depth pyramid reads the eyes' depth.
+            image(ImageRole::kDepth, passes::ForwardPass::kDepthFormat,
+                  vk::ImageUsageFlagBits::eDepthStencilAttachment |
+                      vk::ImageUsageFlagBits::eSampled),
+            image(ImageRole::kLinearDepth, passes::ForwardPass::kLinearDepthFormat, kColorTarget)};
         if (features.velocity) {
-            velocity.emplace(ctx, vk_core::ImageDesc{size, passes::ForwardPass::kVelocityFormat,
-                                                     vk::ImageUsageFlagBits::eColorAttachment |
-                                                         vk::ImageUsageFlagBits::eSampled,
-                                                     layers});
+            images.push_back(image(
+                ImageRole::kVelocity, passes::ForwardPass::kVelocityFormat,
+                vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled));
         }
         if (features.samples != vk::SampleCountFlagBits::e1) {
             // Transient: only their resolve is kept.
             const vk::ImageUsageFlags usage = vk::ImageUsageFlagBits::eColorAttachment |
                                               vk::ImageUsageFlagBits::eTransientAttachment;
-            hdr_samples.emplace(ctx, vk_core::ImageDesc{size, passes::ForwardPass::kHdrFormat,
-                                                        usage, layers, features.samples});
-            linear_depth_samples.emplace(
-                ctx, vk_core::ImageDesc{size, passes::ForwardPass::kLinearDepthFormat, usage,
-                                        layers, features.samples});
-            depth_samples.emplace(
-                ctx, vk_core::ImageDesc{size, passes::ForwardPass::kDepthFormat,
-                                        vk::ImageUsageFlagBits::eDepthStencilAttachment |
-                                            vk::ImageUsageFlagBits::eTransientAttachment,
-                                        layers, features.samples});
-            multisample.emplace(
-                passes::MultisampleTargets{*hdr_samples, *linear_depth_samples, *depth_samples});
+            images.push_back(image(ImageRole::kHdrSamples, passes::ForwardPass::kHdrFormat, usage,
+                                   features.samples));
+            images.push_back(image(ImageRole::kLinearDepthSamples,
+                                   passes::ForwardPass::kLinearDepthFormat, usage,
+                                   features.samples));
+            images.push_back(image(ImageRole::kDepthSamples, passes::ForwardPass::kDepthFormat,
+                                   vk::ImageUsageFlagBits::eDepthStencilAttachment |
+                                       vk::ImageUsageFlagBits::eTransientAttachment,
+                                   features.samples));
         }
+        return images;
     }
+
+    // `memory` places some of them in memory they share (nullptr: each its own); `view` is the
+    // camera whose images they are.
+    ForwardImages(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features,
+                  std::uint32_t layers, const TransientMemory* memory = nullptr,
+                  plan::ViewId view = plan::ViewId::kNone)
+        : ForwardImages(ctx, images(view, size, features, layers), memory) {}
 
     // One layer of `both` (which must outlive it): what an eye's later passes read and write. The
     // multisampled images are not viewed per layer: only the single pass draws into them.
@@ -82,6 +95,51 @@ struct ModeRenderer::ForwardImages {
 
     ForwardImages(const ForwardImages&) = delete;
     ForwardImages& operator=(const ForwardImages&) = delete;
+
+  private:
+    ForwardImages(const vk_core::Context& ctx, const std::vector<TransientImage>& images,
+                  const TransientMemory* memory)
+        : hdr(make(ctx, images, memory, plan::ImageRole::kHdr)),
+          depth(make(ctx, images, memory, plan::ImageRole::kDepth)),
+          linear_depth(make(ctx, images, memory, plan::ImageRole::kLinearDepth)) {
+        for (const TransientImage& image : images) {
+            std::optional<vk_core::Image>* optional = nullptr;
+            switch (image.key.image) {
+                case plan::ImageRole::kVelocity:
+                    optional = &velocity;
+                    break;
+                case plan::ImageRole::kHdrSamples:
+                    optional = &hdr_samples;
+                    break;
+                case plan::ImageRole::kLinearDepthSamples:
+                    optional = &linear_depth_samples;
+                    break;
+                case plan::ImageRole::kDepthSamples:
+                    optional = &depth_samples;
+                    break;
+                default:
+                    continue;
+            }
+            optional->emplace(make(ctx, images, memory, image.key.image));
+        }
+        if (hdr_samples) {
+            multisample.emplace(
+                passes::MultisampleTargets{*hdr_samples, *linear_depth_samples, *depth_samples});
+        }
+    }
+
+    static vk_core::Image make(const vk_core::Context& ctx,
+                               const std::vector<TransientImage>& images,
+                               const TransientMemory* memory, plan::ImageRole role) {
+        for (const TransientImage& image : images) {
+            if (image.key.image == role) {
+                return make_view_image(ctx, memory, image.key.view, role, image.desc);
+            }
+        }
+        throw std::logic_error("ForwardImages: no " + plan::image_role_name(role));
+    }
+
+  public:
 
     passes::ForwardTargets forward_targets(vk::Extent2D area, bool clear_color = false) const {
         return {hdr,
@@ -103,8 +161,14 @@ struct ViewOutputs {
     vk_core::Buffer depth_readback;
     std::array<std::optional<vk_core::Image>, 2> history;
 
-    ViewOutputs(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
-        : display(ctx, {size, passes::TonemapPass::kDisplayFormat, kColorTarget}),
+    static vk_core::ImageDesc display_desc(vk::Extent2D size) {
+        return {size, passes::TonemapPass::kDisplayFormat, kColorTarget};
+    }
+
+    ViewOutputs(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features,
+                const TransientMemory* memory = nullptr, plan::ViewId view = plan::ViewId::kNone)
+        : display(make_view_image(ctx, memory, view, plan::ImageRole::kDisplay,
+                                  display_desc(size))),
           // Filled through the frame's uploads (vk_core::FrameUploads), not a mapping.
           constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
                     vk_core::MemoryUse::kDeviceLocal),
@@ -145,10 +209,12 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     std::vector<float> ao;
     EyeFrameGeometry geometry;
 
-    // A camera with forward images of its own (C, and the eyes of two-pass stereo).
-    View(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features)
-        : ForwardImages(ctx, size, features, 1),
-          ViewOutputs(ctx, size, features),
+    // A camera with forward images of its own (C, and the eyes of two-pass stereo). `memory`
+    // places some of its images in memory they share with others (TransientMemory).
+    View(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features,
+         const TransientMemory* memory = nullptr, plan::ViewId view = plan::ViewId::kNone)
+        : ForwardImages(ctx, size, features, 1, memory, view),
+          ViewOutputs(ctx, size, features, memory, view),
           extent(size),
           area(size) {}
 
@@ -163,11 +229,57 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     passes::ForwardTargets forward_targets(bool clear_color = false) const {
         return ForwardImages::forward_targets(area, clear_color);
     }
+
+    // The eyes' images of two-pass stereo that may share memory (single-pass stereo's two-layer
+    // images share none), placed over `plans`: every plan the renderer may run.
+    static std::unique_ptr<TransientMemory> eye_memory(const vk_core::Context& ctx,
+                                                       vk::Extent2D size,
+                                                       const ViewFeatures& features,
+                                                       const std::vector<plan::FramePlan>& plans) {
+        std::vector<TransientImage> images;
+        for (int eye = 0; eye < 2; ++eye) {
+            for (TransientImage& image :
+                 ForwardImages::images(plan::eye_view(eye), size, features, 1)) {
+                images.push_back(std::move(image));
+            }
+        }
+        return std::make_unique<TransientMemory>(ctx, images, plans);
+    }
 };
 
-struct ModeRenderer::MonoView : View {
+// C's images that share memory, made before them (MonoView's first base).
+struct MonoMemory {
+    TransientMemory memory;
+};
+
+// C: its images that may share memory are its depth and its display image (its colour, linear
+// depth and velocity are sampled by the composite near the edge of its viewport, beyond which no
+// pass writes them: texels there must stay as they are). `plans`: every plan the renderer may run.
+struct ModeRenderer::MonoView : MonoMemory, View {
     vk_core::DescriptorSet composite_set;
-    using View::View;
+
+    MonoView(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features,
+             const std::vector<plan::FramePlan>& plans = {})
+        : MonoMemory{plans.empty() ? TransientMemory()
+                                   : TransientMemory(ctx, transient_images(size, features), plans)},
+          View(ctx, size, features, &memory, plan::ViewId::kMono) {}
+
+    static std::vector<TransientImage> transient_images(vk::Extent2D size,
+                                                        const ViewFeatures& features) {
+        std::vector<TransientImage> images;
+        for (TransientImage& image : images_of(size, features)) {
+            if (image.key.image == plan::ImageRole::kDepth) images.push_back(std::move(image));
+        }
+        images.push_back({{plan::ViewId::kMono, false, plan::ImageRole::kDisplay,
+                           plan::BufferRole::kDrawLists},
+                          display_desc(size)});
+        return images;
+    }
+
+  private:
+    static std::vector<TransientImage> images_of(vk::Extent2D size, const ViewFeatures& features) {
+        return ForwardImages::images(plan::ViewId::kMono, size, features, 1);
+    }
 };
 
 // This frame's decisions and matrices, made before anything is recorded and read by every pass
@@ -184,7 +296,7 @@ struct ModeRenderer::FrameState {
     bool shadow_needed = false;
     bool predicated = false;  // GPU predicates (VK_EXT_conditional_rendering)
     // FrameInputs::mono_culling resolved (kAuto: the chooser's pick for this frame).
-    MonoCulling mono_culling = MonoCulling::kNoOpt;
+    plan::MonoCulling mono_culling = plan::MonoCulling::kNoOpt;
     bool measuring_variant = false;  // this frame's time goes to the chooser
     std::uint32_t slot = 0;          // the frame-in-flight slot it is recorded into
 };

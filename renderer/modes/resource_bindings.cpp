@@ -1,7 +1,7 @@
 // ModeRenderer's side of the render graph: which device image each of the plan's resources is
 // this frame (the executor records the barriers; renderer/executor/graph_executor.h).
-#include <stdexcept>
 
+#include "common/programming_error.h"
 #include "renderer/modes/mode_renderer_internals.h"
 
 namespace monoplane::modes {
@@ -17,40 +17,41 @@ vk_core::ImageRange layer_of(const vk_core::Image& both, std::uint32_t layer) {
 
 }  // namespace
 
-std::vector<vk_core::ImageRange> ModeRenderer::view_images(const ResourceKey& key) const {
-    const View* view = key.view == ViewId::kMono ? mono_.get() : eyes_[eye_index(key.view)].get();
+std::vector<vk_core::ImageRange> ModeRenderer::view_images(const plan::ResourceKey& key) const {
+    const View* view =
+        key.view == plan::ViewId::kMono ? mono_.get() : eyes_[plan::eye_index(key.view)].get();
     if (view == nullptr) return {};  // C not made yet: only passes the frame leaves out use it
     const auto samples = [&](const std::optional<vk_core::Image>& own,
                              const std::optional<vk_core::Image> ForwardImages::*both)
         -> std::vector<vk_core::ImageRange> {
         if (own) return {own->range()};
         // Single-pass stereo draws both eyes' samples into two-layer images.
-        if (eye_layers_ && key.view != ViewId::kMono && (*eye_layers_).*both) {
-            return {
-                layer_of(*((*eye_layers_).*both), static_cast<std::uint32_t>(eye_index(key.view)))};
+        if (eye_layers_ && key.view != plan::ViewId::kMono && (*eye_layers_).*both) {
+            return {layer_of(*((*eye_layers_).*both),
+                             static_cast<std::uint32_t>(plan::eye_index(key.view)))};
         }
         return {};
     };
     switch (key.image) {
-        case ImageRole::kHdr:
+        case plan::ImageRole::kHdr:
             return {view->hdr.range()};
-        case ImageRole::kDepth:
+        case plan::ImageRole::kDepth:
             return {view->depth.range()};
-        case ImageRole::kLinearDepth:
+        case plan::ImageRole::kLinearDepth:
             return {view->linear_depth.range()};
-        case ImageRole::kVelocity:
+        case plan::ImageRole::kVelocity:
             return view->velocity ? std::vector{view->velocity->range()}
                                   : std::vector<vk_core::ImageRange>{};
-        case ImageRole::kHdrSamples:
+        case plan::ImageRole::kHdrSamples:
             return samples(view->hdr_samples, &ForwardImages::hdr_samples);
-        case ImageRole::kLinearDepthSamples:
+        case plan::ImageRole::kLinearDepthSamples:
             return samples(view->linear_depth_samples, &ForwardImages::linear_depth_samples);
-        case ImageRole::kDepthSamples:
+        case plan::ImageRole::kDepthSamples:
             return samples(view->depth_samples, &ForwardImages::depth_samples);
-        case ImageRole::kAo:
+        case plan::ImageRole::kAo:
             return view->ssao ? std::vector{view->ssao->ao().range()}
                               : std::vector<vk_core::ImageRange>{};
-        case ImageRole::kAoScratch: {
+        case plan::ImageRole::kAoScratch: {
             std::vector<vk_core::ImageRange> scratch;
             if (view->ssao) {
                 for (const vk_core::Image* image : view->ssao->scratch())
@@ -58,31 +59,31 @@ std::vector<vk_core::ImageRange> ModeRenderer::view_images(const ResourceKey& ke
             }
             return scratch;
         }
-        case ImageRole::kHistory:
+        case plan::ImageRole::kHistory:
             return {view->history[history_parity_]->range()};
-        case ImageRole::kHistoryPrevious:
+        case plan::ImageRole::kHistoryPrevious:
             return {view->history[1 - history_parity_]->range()};
-        case ImageRole::kDisplay:
+        case plan::ImageRole::kDisplay:
             return {view->display.range()};
         default:
-            throw std::logic_error("bind: " + resource_name(key) + " is not a view's image");
+            programming_error("bind: " + plan::resource_name(key) + " is not a view's image");
     }
 }
 
-std::vector<BoundResource> ModeRenderer::bind_resources() {
-    std::vector<BoundResource> bindings;
-    for (const ResourceKey& key : last_plan_.keys) {
-        BoundResource& bound = bindings.emplace_back();
+std::vector<executor::BoundResource> ModeRenderer::bind_resources() {
+    std::vector<executor::BoundResource> bindings;
+    for (const plan::ResourceKey& key : last_plan_.keys) {
+        executor::BoundResource& bound = bindings.emplace_back();
         if (key.is_buffer) continue;  // buffers take memory barriers
         switch (key.image) {
-            case ImageRole::kShadowMap:
+            case plan::ImageRole::kShadowMap:
                 bound.images = {resources_->shadow().map().range()};
                 bound.shared_state = &resources_->shadow_map_state();
                 break;
-            case ImageRole::kPyramidBlocks:
+            case plan::ImageRole::kPyramidBlocks:
                 bound.images = {pyramid_.blocks_image()};
                 break;
-            case ImageRole::kMergedDepth:
+            case plan::ImageRole::kMergedDepth:
                 bound.images = {pyramid_.pyramid_image()};
                 break;
             default:

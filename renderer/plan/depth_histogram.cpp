@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 int DepthHistogram::bin_of(double depth) const {
     if (!(depth > near)) return 0;
@@ -23,4 +23,4 @@ double DepthHistogram::share_beyond(double depth) const {
     return static_cast<double>(beyond) / static_cast<double>(all);
 }
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -11,7 +11,7 @@
 
 #include "renderer/plan/depth_histogram_constants.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 struct DepthHistogram {
     static constexpr int kBins = MONOPLANE_DEPTH_HISTOGRAM_BINS;
@@ -33,4 +33,4 @@ struct DepthHistogram {
     double share_beyond(double depth) const;
 };
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

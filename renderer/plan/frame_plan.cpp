@@ -2,22 +2,20 @@
 
 #include <algorithm>
 #include <array>
-#include <stdexcept>
+#include <utility>
 
-#include "renderer/plan/name_table.h"
+#include "common/name_table.h"
+#include "common/programming_error.h"
 #include "renderer/plan/pass_steps.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 namespace {
-
-constexpr std::array<ViewId, 2> kEyes = {ViewId::kLeft, ViewId::kRight};
 
 constexpr NameTable<PassKind> kPassKindNames = {{PassKind::kCulling, "culling"},
                                                 {PassKind::kShadow, "shadow"},
                                                 {PassKind::kForward, "forward"},
                                                 {PassKind::kDepthPyramid, "depth_pyramid"},
                                                 {PassKind::kOcclusionCulling, "occlusion_culling"},
-                                                {PassKind::kMonoSsao, "mono_ssao"},
                                                 {PassKind::kComposite, "composite"},
                                                 {PassKind::kTransparency, "transparency"},
                                                 {PassKind::kSsao, "ssao"},
@@ -95,10 +93,10 @@ class PlanBuilder {
         return s_.predicated ? predicate : GpuPredicate::kAlways;
     }
 
-    PlannedPass& add(PassKind kind, std::string name, ViewId view = ViewId::kNone) {
+    PlannedPass& add(PassKind kind, ViewId view = ViewId::kNone) {
         PlannedPass pass;
         pass.kind = kind;
-        pass.name = std::move(name);
+        pass.name = pass_name(kind, view);
         pass.view = view;
         plan_.passes.push_back(std::move(pass));
         return plan_.passes.back();
@@ -123,12 +121,12 @@ class PlanBuilder {
     }
 
     void add_culling() {
-        PlannedPass& pass = add(PassKind::kCulling, "culling");
+        PlannedPass& pass = add(PassKind::kCulling);
         pass.steps = culling_steps(r_);
     }
 
     void add_shadow() {
-        PlannedPass& pass = add(PassKind::kShadow, "shadow");
+        PlannedPass& pass = add(PassKind::kShadow);
         pass.steps = shadow_steps(r_);
         if (!frame_.shadow_needed) {
             pass.skipped = "light region unchanged: the shadow map is reused";
@@ -153,14 +151,14 @@ class PlanBuilder {
 
     void add_eye_forward() {
         if (s_.single_pass) {
-            PlannedPass& pass = add(PassKind::kForward, "eyes.forward", ViewId::kEyes);
-            pass.statistics_scope = "eyes";
+            PlannedPass& pass = add(PassKind::kForward, ViewId::kEyes);
+            pass.statistics_scope = view_name(ViewId::kEyes);
             pass.draws = eye_draws();
-            pass.steps = forward_steps_of(pass, {kEyes.begin(), kEyes.end()});
+            pass.steps = forward_steps_of(pass, {kEyeViews.begin(), kEyeViews.end()});
             return;
         }
-        for (ViewId eye : kEyes) {
-            PlannedPass& pass = add(PassKind::kForward, view_name(eye) + ".forward", eye);
+        for (ViewId eye : kEyeViews) {
+            PlannedPass& pass = add(PassKind::kForward, eye);
             pass.statistics_scope = view_name(eye);
             pass.draws = eye_draws();
             pass.steps = forward_steps_of(pass, {eye});
@@ -189,34 +187,34 @@ class PlanBuilder {
                 ? std::nullopt
                 : std::optional<std::string>("m >= far: nothing lies beyond the mono plane, no C");
         {
-            PlannedPass& pass = add(PassKind::kDepthPyramid, "depth_pyramid");
+            PlannedPass& pass = add(PassKind::kDepthPyramid);
             pass.steps = depth_pyramid_steps(r_);
             pass.when = when(GpuPredicate::kMonoDepthTested);
             pass.skipped = no_mono ? no_mono : pyramid_skip_reason();
         }
         {
-            PlannedPass& pass = add(PassKind::kOcclusionCulling, "occlusion_culling");
+            PlannedPass& pass = add(PassKind::kOcclusionCulling);
             pass.steps = occlusion_culling_steps(r_);
             pass.when = when(GpuPredicate::kMonoDepthTested);
             pass.skipped = no_mono ? no_mono : occlusion_skip_reason();
         }
         {
-            PlannedPass& pass = add(PassKind::kForward, "mono.forward", ViewId::kMono);
-            pass.statistics_scope = "mono";
+            PlannedPass& pass = add(PassKind::kForward, ViewId::kMono);
+            pass.statistics_scope = view_name(ViewId::kMono);
             pass.draws = mono_draws();
             pass.steps = forward_steps_of(pass, {ViewId::kMono});
             pass.skipped = no_mono;
         }
         if (options_.ssao) {
             // The far region's AO, computed once for both eyes (C alone sees it).
-            PlannedPass& pass = add(PassKind::kMonoSsao, "mono.ssao", ViewId::kMono);
+            PlannedPass& pass = add(PassKind::kSsao, ViewId::kMono);
             pass.steps = mono_ssao_steps(r_);
             pass.when = when(GpuPredicate::kMonoAny);
             pass.skipped = no_mono;
         }
-        for (ViewId eye : kEyes) {
-            PlannedPass& pass = add(PassKind::kComposite, view_name(eye) + ".composite", eye);
-            pass.statistics_scope = view_name(eye) + ".composite";
+        for (ViewId eye : kEyeViews) {
+            PlannedPass& pass = add(PassKind::kComposite, eye);
+            pass.statistics_scope = pass.name;
             pass.steps = composite_steps(r_, eye, s_.taa);
             pass.when = when(GpuPredicate::kMonoAny);
             pass.skipped = no_mono;
@@ -228,9 +226,9 @@ class PlanBuilder {
     // blended surface has no single depth, so it cannot be mapped through the mono plane; drawn
     // over the composite and tested against its depth, each is drawn once into each eye.
     void add_transparency() {
-        for (ViewId eye : kEyes) {
-            PlannedPass& pass = add(PassKind::kTransparency, view_name(eye) + ".transparency", eye);
-            pass.statistics_scope = view_name(eye) + ".transparency";
+        for (ViewId eye : kEyeViews) {
+            PlannedPass& pass = add(PassKind::kTransparency, eye);
+            pass.statistics_scope = pass.name;
             pass.steps = transparency_steps(r_, eye);
         }
     }
@@ -250,32 +248,29 @@ class PlanBuilder {
 
     void add_post_processing() {
         if (options_.ssao) {
-            PlannedPass& pass = add(PassKind::kSsao, "ssao");
+            PlannedPass& pass = add(PassKind::kSsao);
             // In hybrid the far region already carries C's AO: the eye's depth tells which.
             pass.steps = ssao_steps(r_, options_.ssao_stereo, s_.use_mono);
         }
-        for (ViewId eye : kEyes) {
+        for (ViewId eye : kEyeViews) {
             if (s_.taa) {
-                PlannedPass& pass = add(PassKind::kTaa, view_name(eye) + ".taa", eye);
+                PlannedPass& pass = add(PassKind::kTaa, eye);
                 pass.steps = taa_steps(r_, eye);
             }
-            PlannedPass& pass = add(PassKind::kTonemap, view_name(eye) + ".tonemap", eye);
+            PlannedPass& pass = add(PassKind::kTonemap, eye);
             pass.steps = tonemap_steps(r_, eye, s_.taa ? ImageRole::kHistory : ImageRole::kHdr);
         }
         if (s_.hybrid) {
             // C's own tone-mapped image exists only to be looked at (mono.png): without a
             // read-back nothing reads it, and the culling drops the pass.
-            PlannedPass& pass = add(PassKind::kTonemap, "mono.tonemap", ViewId::kMono);
+            PlannedPass& pass = add(PassKind::kTonemap, ViewId::kMono);
             pass.steps = tonemap_steps(r_, ViewId::kMono, ImageRole::kHdr);
             if (!s_.use_mono) pass.skipped = "m >= far: nothing lies beyond the mono plane, no C";
         }
     }
 
-    PlannedPass* find_pass(const std::string& name) {
-        for (PlannedPass& pass : plan_.passes) {
-            if (pass.name == name) return &pass;
-        }
-        return nullptr;
+    PlannedPass* find_pass(PassKind kind, ViewId view) {
+        return const_cast<PlannedPass*>(std::as_const(plan_).find(kind, view));
     }
 
     // Whether `tonemap` reads the eye's HDR image and no pass after `composite` but it uses that
@@ -306,9 +301,9 @@ class PlanBuilder {
     // composite wrote otherwise; without them C always draws and the tonemap is not needed.
     void fuse_tonemaps() {
         if (!s_.use_mono || options_.separate_tonemap || !s_.independent_blend) return;
-        for (ViewId eye : kEyes) {
-            PlannedPass* composite = find_pass(view_name(eye) + ".composite");
-            PlannedPass* tonemap = find_pass(view_name(eye) + ".tonemap");
+        for (ViewId eye : kEyeViews) {
+            PlannedPass* composite = find_pass(PassKind::kComposite, eye);
+            PlannedPass* tonemap = find_pass(PassKind::kTonemap, eye);
             if (composite == nullptr || tonemap == nullptr ||
                 !hdr_read_only_by_tonemap(eye, *composite, *tonemap)) {
                 continue;
@@ -327,14 +322,14 @@ class PlanBuilder {
 
     // The eyes' final depth (C's where it shows through), counted for `--mono-plane auto`.
     void add_depth_histogram() {
-        PlannedPass& pass = add(PassKind::kDepthHistogram, "depth_histogram");
+        PlannedPass& pass = add(PassKind::kDepthHistogram);
         pass.steps = depth_histogram_steps(r_);
         plan_.exports.push_back(
             {r_.shared(BufferRole::kDepthHistogram).index, graph::Use::kHostRead});
     }
 
     void add_readback() {
-        PlannedPass& pass = add(PassKind::kReadback, "readback");
+        PlannedPass& pass = add(PassKind::kReadback);
         ReadbackUses uses;
         uses.color = options_.read_back;
         uses.depth = options_.read_back_depth;
@@ -353,7 +348,7 @@ class PlanBuilder {
     // What other components read between frames: a headset's compositor copies the display
     // images into its swapchain and samples the eyes' linear depth for its depth layer.
     void add_exports() {
-        for (ViewId eye : kEyes) {
+        for (ViewId eye : kEyeViews) {
             plan_.exports.push_back(
                 {r_.image(eye, ImageRole::kDisplay).index, graph::Use::kTransferSrc});
             plan_.exports.push_back(
@@ -406,6 +401,46 @@ std::string pass_kind_name(PassKind kind) {
     return name_of(kPassKindNames, kind);
 }
 
+std::string pass_name(PassKind kind, ViewId view) {
+    const std::string kind_name = pass_kind_name(kind);
+    return view == ViewId::kNone ? kind_name : view_name(view) + "." + kind_name;
+}
+
+std::optional<std::pair<PassKind, ViewId>> parse_pass_name(const std::string& name) {
+    const std::size_t dot = name.find('.');
+    const std::optional<ViewId> view =
+        dot == std::string::npos ? ViewId::kNone : parse_view(name.substr(0, dot));
+    const std::optional<PassKind> kind =
+        parse_name(kPassKindNames, dot == std::string::npos ? name : name.substr(dot + 1));
+    if (!view || !kind || (dot != std::string::npos && *view == ViewId::kNone)) return std::nullopt;
+    return std::make_pair(*kind, *view);
+}
+
+std::optional<std::pair<PassKind, ViewId>> statistics_scope_pass(const std::string& scope) {
+    if (const auto view = parse_view(scope); view && *view != ViewId::kNone) {
+        return std::make_pair(PassKind::kForward, *view);
+    }
+    const auto pass = parse_pass_name(scope);
+    if (!pass || pass->second == ViewId::kNone) return std::nullopt;
+    return pass;
+}
+
+bool runs_only_in_hybrid(PassKind kind, ViewId view) {
+    switch (kind) {
+        case PassKind::kDepthPyramid:
+        case PassKind::kOcclusionCulling:
+        case PassKind::kComposite:
+        case PassKind::kTransparency:
+            return true;
+        case PassKind::kForward:
+        case PassKind::kSsao:
+        case PassKind::kTonemap:
+            return view == ViewId::kMono;
+        default:
+            return false;
+    }
+}
+
 std::string gpu_predicate_name(GpuPredicate predicate) {
     return name_of(kPredicateNames, predicate);
 }
@@ -428,11 +463,16 @@ std::vector<std::string> FramePlan::executed_names() const {
     return names;
 }
 
-const PlannedPass* FramePlan::find(const std::string& name) const {
+const PlannedPass* FramePlan::find(PassKind kind, ViewId view) const {
     for (const PlannedPass& pass : passes) {
-        if (pass.name == name) return &pass;
+        if (pass.kind == kind && pass.view == view) return &pass;
     }
     return nullptr;
+}
+
+bool FramePlan::runs(PassKind kind, ViewId view) const {
+    const PlannedPass* pass = find(kind, view);
+    return pass != nullptr && !pass->skipped;
 }
 
 namespace {
@@ -480,11 +520,10 @@ std::vector<graph::GraphPass> FramePlan::graph_passes() const {
 }
 
 FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device) {
-    if (frame.mono_culling == MonoCulling::kAuto) {
-        throw std::invalid_argument("plan_frame: resolve MonoCulling::kAuto to a variant first");
-    }
+    // The renderer resolves kAuto to this frame's variant first.
+    MONOPLANE_EXPECTS(frame.mono_culling != MonoCulling::kAuto);
     const FrameShape shape = shape_of(options, frame, device);
     return PlanBuilder(options, frame, shape).build();
 }
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -29,13 +29,14 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "renderer/graph/frame_graph.h"
 #include "renderer/plan/frame_resources.h"
 #include "renderer/plan/render_choices.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 // What a pass does; the executor records each kind with one function.
 enum class PassKind {
@@ -44,16 +45,30 @@ enum class PassKind {
     kForward,           // a view's forward pass (draws below): left, right, eyes or mono
     kDepthPyramid,      // the merged depth pyramid of both eyes (papers/000 Sect. 4.4)
     kOcclusionCulling,  // C's list re-sorted against the pyramid
-    kMonoSsao,          // C's ambient occlusion, once for both eyes (hybrid)
     kComposite,         // C mapped into an eye (eq. 5) or offset-copied (hybrid-farfield)
     kTransparency,      // hybrid: an eye's blended chunks nearer than m, after the composite
-    kSsao,              // the eyes' ambient occlusion (near content only in hybrid)
-    kTaa,               // an eye's temporal anti-aliasing resolve
-    kTonemap,           // an eye's (or C's) tone mapping into its display image
-    kDepthHistogram,    // both eyes' final depth counted into bins (--mono-plane auto)
-    kReadback,          // images, depths, AO and draw lists to the host; not part of GPU time
+    // Ambient occlusion: view kMono is C's, once for both eyes (hybrid); view kNone the eyes'
+    // (near content only in hybrid).
+    kSsao,
+    kTaa,             // an eye's temporal anti-aliasing resolve
+    kTonemap,         // an eye's (or C's) tone mapping into its display image
+    kDepthHistogram,  // both eyes' final depth counted into bins (--mono-plane auto)
+    kReadback,        // images, depths, AO and draw lists to the host; not part of GPU time
 };
-std::string pass_kind_name(PassKind kind);
+std::string pass_kind_name(PassKind kind);  // "culling", "forward", "ssao", ...
+// The one name of a planned pass: its kind's name, after its view's for a pass of one view
+// ("shadow", "left.forward", "mono.ssao", "right.tonemap"). It keys the profiler's scopes,
+// bench.json's "passes" and `render --json`'s plan; code compares kinds and views, never names.
+std::string pass_name(PassKind kind, ViewId view);
+// The pass of that name, or nullopt: what reads a name back (bench.json, a command's option).
+std::optional<std::pair<PassKind, ViewId>> parse_pass_name(const std::string& name);
+// The pass a pipeline-statistics scope (PlannedPass::statistics_scope) counts: a view's forward
+// pass, whose scope is the view's name ("left", "eyes", "mono"), or another pass of one view,
+// whose scope is its name ("left.composite", "right.transparency"); nullopt for anything else.
+std::optional<std::pair<PassKind, ViewId>> statistics_scope_pass(const std::string& scope);
+// A pass a stereo frame never runs: what hybrid adds (C's forward pass, the pyramid, occlusion
+// culling, C's SSAO, the composites, the eyes' transparency after them, C's tone mapping).
+bool runs_only_in_hybrid(PassKind kind, ViewId view);
 
 // A predicate the GPU evaluates from the culling pass's words (VK_EXT_conditional_rendering):
 // the plan cannot know, the GPU skips. Without conditional rendering every predicate is kAlways.
@@ -65,14 +80,22 @@ enum class GpuPredicate {
 };
 std::string gpu_predicate_name(GpuPredicate predicate);  // "always", "mono-any", ...
 
-// One draw of a forward pass, in order (passes::ForwardStep, one to one).
+// What a forward pass draws, in order; each step may run under a GPU predicate.
+// With kDepthPrepass first, the chunk steps after it test depth for equality and write none, so
+// each visible pixel is shaded about once whatever the draw order (docs/benchmarks.md measures
+// the fragments it saves); without it they test and write as usual. The chunk steps draw the
+// opaque chunks, then the masked ones (alphaMode MASK: fragments below the cut-off dropped, with
+// MSAA alpha to coverage); kBlended draws the blended ones last.
 enum class DrawStep {
-    kMaskHidden,         // C: pixels hidden in both eyes set to the nearest depth first
-    kDepthPrepass,       // the view's chunks, depth only; later chunk steps test for equality
-    kChunks,             // the view's chunk list, shaded
-    kChunksShowRouting,  // debug view "routing"
+    kMaskHidden,         // C only, before the pre-pass: pixels hidden in both eyes at depth 1
+    kDepthPrepass,       // the view's chunk list, depth only (no fragment shader)
+    kChunks,             // the view's chunk list, every fragment shaded
+    kChunksShowRouting,  // the debug view "routing": chunks coloured by the lists they are in
     kSky,                // the sky where nothing was drawn
-    kBlended,            // the view's blended chunks (alphaMode BLEND), back to front
+    // The view's blended chunks (alphaMode BLEND) in the list's order, back to front, over what
+    // the steps before drew: depth tested, not written; colour blended by the base colour's
+    // alpha (glTF: straight alpha, "over"); linear depth and velocity keep what lies behind.
+    kBlended,
 };
 std::string draw_step_name(DrawStep step);  // "mask-hidden", "depth-prepass", "chunks", ...
 
@@ -84,10 +107,7 @@ struct PlannedDraw {
 
 struct PlannedPass {
     PassKind kind = PassKind::kCulling;
-    // The profiler's scope and the key of bench.json's "passes": "culling", "shadow",
-    // "left.forward", "eyes.forward", "mono.forward", "depth_pyramid", "occlusion_culling",
-    // "mono.ssao", "left.composite", "left.transparency", "ssao", "left.taa", "left.tonemap",
-    // "mono.tonemap", "readback".
+    // pass_name(kind, view): the profiler's scope and the key of bench.json's "passes".
     std::string name;
     // The camera it draws for; kNone for passes over every view (culling, shadow, pyramid, ssao,
     // read-back).
@@ -124,8 +144,10 @@ struct FramePlan {
     std::vector<const PlannedPass*> executed() const;
     // The names of the passes that run, in order (what tests compare).
     std::vector<std::string> executed_names() const;
-    // The pass of that name, or nullptr.
-    const PlannedPass* find(const std::string& name) const;
+    // The pass of that kind for that view (kNone: the pass over every view), or nullptr.
+    const PlannedPass* find(PassKind kind, ViewId view = ViewId::kNone) const;
+    // Whether this frame runs that pass (planned and not skipped).
+    bool runs(PassKind kind, ViewId view = ViewId::kNone) const;
     // The names of the resources a pass reads (a read-modify-write included) or writes, in the
     // order its steps first use them: what tests and `render --json` show.
     std::vector<std::string> reads(const PlannedPass& pass) const;
@@ -184,4 +206,4 @@ struct PlanDevice {
 
 FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device);
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

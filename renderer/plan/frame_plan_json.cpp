@@ -1,6 +1,6 @@
 #include "renderer/plan/frame_plan_json.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 void write_plan_json(JsonWriter& j, const FramePlan& plan, std::string_view key) {
     j.begin_array(key);
@@ -31,4 +31,4 @@ void write_plan_json(JsonWriter& j, const FramePlan& plan, std::string_view key)
     j.end_array();
 }
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -9,9 +9,9 @@
 #include "common/json_writer.h"
 #include "renderer/plan/frame_plan.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 // Writes the array under `key` into the open object of `j`.
 void write_plan_json(JsonWriter& j, const FramePlan& plan, std::string_view key = "plan");
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -1,10 +1,9 @@
 #include "renderer/plan/frame_resources.h"
 
-#include <stdexcept>
+#include "common/name_table.h"
+#include "common/programming_error.h"
 
-#include "renderer/plan/name_table.h"
-
-namespace monoplane::modes {
+namespace monoplane::plan {
 namespace {
 
 constexpr NameTable<ViewId> kViewNames = {{ViewId::kLeft, "left"},
@@ -54,7 +53,7 @@ std::optional<ViewId> parse_view(const std::string& name) {
 int eye_index(ViewId view) {
     if (view == ViewId::kLeft) return 0;
     if (view == ViewId::kRight) return 1;
-    throw std::invalid_argument("eye_index: view \"" + view_name(view) + "\" is not an eye");
+    programming_error("eye_index: view \"" + view_name(view) + "\" is not an eye");
 }
 
 ViewId eye_view(int eye) {
@@ -75,4 +74,4 @@ std::string resource_name(const ResourceKey& key) {
     return key.view == ViewId::kNone ? role : view_name(key.view) + "." + role;
 }
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

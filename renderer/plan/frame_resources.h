@@ -7,20 +7,23 @@
 // When may this be called: any time; pure values.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 // The camera a pass draws for. kEyes: both eyes in one pass (single-pass stereo); kNone: a pass
 // over every view (culling, shadow, the pyramid, the eyes' SSAO, the read-back).
 enum class ViewId : std::uint8_t { kLeft, kRight, kEyes, kMono, kNone };
 std::string view_name(ViewId view);  // "left", "right", "eyes", "mono", ""
 std::optional<ViewId> parse_view(const std::string& name);
-// The eye of kLeft or kRight (0 or 1); refuses the others (std::invalid_argument).
+// The eye of kLeft or kRight (0 or 1); the others are a programming error.
 int eye_index(ViewId view);
 ViewId eye_view(int eye);  // 0 -> kLeft, 1 -> kRight
+// The two eyes in order (left, right): what per-eye passes and resources iterate over.
+constexpr std::array<ViewId, 2> kEyeViews = {ViewId::kLeft, ViewId::kRight};
 
 // A view's images (per camera) and the frame's shared images.
 enum class ImageRole : std::uint8_t {
@@ -66,4 +69,4 @@ struct ResourceKey {
 // "left.hdr", "shadow_map", "mono.readback": the graph's name for a key.
 std::string resource_name(const ResourceKey& key);
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
-namespace monoplane::modes {
+#include "common/programming_error.h"
+
+namespace monoplane::plan {
 namespace {
 
 // The coarsest level whose projected error in every view stays within the budget.
@@ -44,7 +45,7 @@ LodView lod_view_of(const glm::dmat4& view_proj, const glm::dvec3& position,
     // Clip w is the distance along the view axis (scaled): its gradient is the axis.
     const glm::dvec3 w_gradient(rows[3]);
     const double w_scale = glm::length(w_gradient);
-    if (!(w_scale > 0.0)) throw std::invalid_argument("lod_view_of: not a perspective projection");
+    if (!(w_scale > 0.0)) programming_error("lod_view_of: not a perspective projection");
     LodView view;
     view.position = position;
     view.forward = w_gradient / w_scale;
@@ -97,4 +98,4 @@ std::uint32_t choose_lod_level(std::span<const float> level_errors_m,
     return std::clamp(previous_level, comfortably, within);
 }
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

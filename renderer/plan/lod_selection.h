@@ -33,7 +33,7 @@
 #include <glm/ext/vector_double2.hpp>
 #include <glm/ext/vector_double3.hpp>
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 // --lod off|auto and --lod-error-px (default 0.5).
 struct LodOptions {
@@ -55,7 +55,7 @@ struct LodView {
 
 // From a world -> clip perspective matrix (any handedness, reversed Z or not, off-axis frusta
 // included), the camera's position and the viewport the clip space maps to. Throws
-// std::invalid_argument for a matrix with no perspective row (an orthographic projection).
+// a programming error (common/programming_error.h) for a matrix with no perspective row (an orthographic projection).
 LodView lod_view_of(const glm::dmat4& view_proj, const glm::dvec3& position,
                     const glm::dvec2& viewport_px);
 
@@ -76,4 +76,4 @@ std::uint32_t choose_lod_level(std::span<const float> level_errors_m,
                                std::span<const LodView> views, const LodBox& box, double error_px,
                                std::uint32_t previous_level);
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 namespace {
 
 // Exponential averaging of the frames' costs: about the last ten frames count.
@@ -203,4 +203,13 @@ void MonoPlaneChooser::record(const std::optional<DepthHistogram>& histogram,
     }
 }
 
-}  // namespace monoplane::modes
+void add_pass_time(FrameCost& cost, PassKind kind, ViewId view, double gpu_ms) {
+    if (kind == PassKind::kForward && view == ViewId::kMono) {
+        cost.hybrid = true;
+        cost.mono_forward_ms += gpu_ms;
+    } else if (runs_only_in_hybrid(kind, view) && kind != PassKind::kTransparency) {
+        cost.hybrid_only_ms += gpu_ms;
+    }
+}
+
+}  // namespace monoplane::plan

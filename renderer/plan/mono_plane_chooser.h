@@ -33,9 +33,10 @@
 
 #include "common/result.h"
 #include "renderer/plan/depth_histogram.h"
+#include "renderer/plan/frame_plan.h"
 #include "rig/error_budget.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 struct AutoMonoPlaneParams {
     double error_budget_arcmin = 6.0;
@@ -64,8 +65,14 @@ struct FrameCost {
     bool hybrid = false;           // C was drawn
     double frame_ms = 0.0;         // the whole frame
     double mono_forward_ms = 0.0;  // C's forward pass
-    double hybrid_only_ms = 0.0;   // pyramid, occlusion culling, composites, C's tone mapping
+    // Pyramid, occlusion culling, C's SSAO, composites, C's tone mapping.
+    double hybrid_only_ms = 0.0;
 };
+
+// Adds one completed pass's GPU time to the frame's cost: C's forward pass, or work only hybrid
+// does (a pass runs_only_in_hybrid, less the eyes' transparency passes: their blended chunks a
+// stereo frame draws in its forward passes). Any other pass adds nothing.
+void add_pass_time(FrameCost& cost, PassKind kind, ViewId view, double gpu_ms);
 
 struct MonoPlaneDecision {
     double mono_plane = 0.0;     // this frame's m; far: stereo
@@ -117,4 +124,4 @@ class MonoPlaneChooser {
     int stereo_frames_ = 0;
 };
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -1,15 +1,11 @@
 #include "renderer/plan/pass_steps.h"
 
-#include <array>
-
-namespace monoplane::modes {
+namespace monoplane::plan {
 namespace {
 
 using graph::Step;
 using graph::StepBuilder;
 using graph::Use;
-
-constexpr std::array<ViewId, 2> kEyeViews = {ViewId::kLeft, ViewId::kRight};
 
 // Resources carried from frame to frame: read before this frame writes them, or kept for the next.
 graph::Lifetime lifetime_of(const ResourceKey& key) {
@@ -261,4 +257,4 @@ std::vector<Step> readback_steps(PlanResources& r, const ReadbackUses& uses) {
     return steps;
 }
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

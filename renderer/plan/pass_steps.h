@@ -10,7 +10,7 @@
 
 #include "renderer/plan/frame_plan.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 // Handles by key, created on first use: the plan's resource table.
 class PlanResources {
@@ -70,4 +70,4 @@ struct ReadbackUses {
 };
 std::vector<graph::Step> readback_steps(PlanResources& r, const ReadbackUses& uses);
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -1,8 +1,8 @@
 #include "renderer/plan/render_choices.h"
 
-#include "renderer/plan/name_table.h"
+#include "common/name_table.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 namespace {
 
@@ -100,4 +100,4 @@ std::string anti_aliasing_name(AntiAliasing aa) {
     return name_of(kAntiAliasingNames, static_cast<NamedAntiAliasing>(aa));
 }
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -9,7 +9,7 @@
 
 #include "common/render_mode_names.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 enum class Mode { kStereo, kHybrid, kHybridFarfield };
 
@@ -67,4 +67,4 @@ enum class AntiAliasing {
 std::optional<AntiAliasing> parse_anti_aliasing(const std::string& name);  // "none", "taa", "msaa4"
 std::string anti_aliasing_name(AntiAliasing aa);
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <limits>
-#include <stdexcept>
 
-namespace monoplane::modes {
+#include "common/programming_error.h"
+
+namespace monoplane::plan {
 namespace {
 
 double median(std::vector<double> values) {
@@ -16,9 +17,7 @@ double median(std::vector<double> values) {
 }  // namespace
 
 VariantChooser::VariantChooser(VariantChooserParams params) : params_(params) {
-    if (params_.rounds_per_trial < 2 || params_.exploit_frames < 1) {
-        throw std::invalid_argument("VariantChooser: rounds_per_trial >= 2, exploit_frames >= 1");
-    }
+    MONOPLANE_EXPECTS(params_.rounds_per_trial >= 2 && params_.exploit_frames >= 1);
 }
 
 MonoCulling VariantChooser::next() const {
@@ -58,4 +57,4 @@ void VariantChooser::reset() {
     for (auto& s : samples_) s.clear();
 }
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -22,7 +22,7 @@
 
 #include "renderer/plan/render_choices.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 struct VariantChooserParams {
     int rounds_per_trial = 4;  // at least 2: the first round is not counted
@@ -53,4 +53,4 @@ class VariantChooser {
     std::optional<MonoCulling> chosen_;
 };
 
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

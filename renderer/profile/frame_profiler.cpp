@@ -1,7 +1,8 @@
 #include "renderer/profile/frame_profiler.h"
 
 #include <array>
-#include <cassert>
+
+#include "common/programming_error.h"
 
 namespace monoplane::profile {
 namespace {
@@ -47,7 +48,7 @@ FrameProfiler::FrameProfiler(const vk_core::Context& ctx, std::uint32_t slots)
 }
 
 void FrameProfiler::begin_frame(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) {
-    assert(slot < slots_.size());
+    MONOPLANE_EXPECTS(slot < slots_.size());
     recording_ = &slots_[slot];
     recording_->pass_names.clear();
     recording_->view_names.clear();
@@ -56,7 +57,7 @@ void FrameProfiler::begin_frame(const vk::raii::CommandBuffer& cmd, std::uint32_
 }
 
 void FrameProfiler::begin_pass(const vk::raii::CommandBuffer& cmd, const std::string& name) {
-    assert(recording_ && !pass_open_ && recording_->pass_names.size() < kMaxPasses);
+    MONOPLANE_EXPECTS(recording_ && !pass_open_ && recording_->pass_names.size() < kMaxPasses);
     const auto index = static_cast<std::uint32_t>(2 * recording_->pass_names.size());
     cmd.writeTimestamp2(vk::PipelineStageFlagBits2::eTopOfPipe, *recording_->timestamps, index);
     recording_->pass_names.push_back(name);
@@ -64,14 +65,14 @@ void FrameProfiler::begin_pass(const vk::raii::CommandBuffer& cmd, const std::st
 }
 
 void FrameProfiler::end_pass(const vk::raii::CommandBuffer& cmd) {
-    assert(pass_open_);
+    MONOPLANE_EXPECTS(pass_open_);
     const auto index = static_cast<std::uint32_t>(2 * recording_->pass_names.size() - 1);
     cmd.writeTimestamp2(vk::PipelineStageFlagBits2::eBottomOfPipe, *recording_->timestamps, index);
     pass_open_ = false;
 }
 
 void FrameProfiler::begin_view(const vk::raii::CommandBuffer& cmd, const std::string& view) {
-    assert(recording_ && !view_open_ && recording_->view_names.size() < kMaxViews);
+    MONOPLANE_EXPECTS(recording_ && !view_open_ && recording_->view_names.size() < kMaxViews);
     recording_->view_names.push_back(view);
     view_open_ = true;
     const auto index = static_cast<std::uint32_t>(recording_->view_names.size() - 1);
@@ -79,14 +80,14 @@ void FrameProfiler::begin_view(const vk::raii::CommandBuffer& cmd, const std::st
 }
 
 void FrameProfiler::end_view(const vk::raii::CommandBuffer& cmd) {
-    assert(view_open_);
+    MONOPLANE_EXPECTS(view_open_);
     view_open_ = false;
     const auto index = static_cast<std::uint32_t>(recording_->view_names.size() - 1);
     if (*recording_->statistics) cmd.endQuery(*recording_->statistics, index);
 }
 
 FrameStats FrameProfiler::collect(std::uint32_t slot_index) const {
-    assert(!pass_open_ && !view_open_ && slot_index < slots_.size());
+    MONOPLANE_EXPECTS(!pass_open_ && !view_open_ && slot_index < slots_.size());
     const Slot& slot = slots_[slot_index];
     FrameStats stats;
     if (!slot.pass_names.empty()) {
@@ -94,7 +95,7 @@ FrameStats FrameProfiler::collect(std::uint32_t slot_index) const {
         const auto [result, ticks] = slot.timestamps.getResults<std::uint64_t>(
             0, count, count * sizeof(std::uint64_t), sizeof(std::uint64_t),
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
-        assert(result == vk::Result::eSuccess);
+        MONOPLANE_EXPECTS(result == vk::Result::eSuccess);
         const std::uint32_t bits = ctx_.capabilities().timestamp_valid_bits;
         const std::uint64_t mask = bits >= 64 ? ~0ull : ((1ull << bits) - 1);
         const double ms_per_tick = ctx_.capabilities().timestamp_period_ns * 1e-6;
@@ -114,7 +115,7 @@ FrameStats FrameProfiler::collect(std::uint32_t slot_index) const {
         const auto [result, values] = slot.statistics.getResults<std::uint64_t>(
             0, count, count * stride, stride,
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
-        assert(result == vk::Result::eSuccess);
+        MONOPLANE_EXPECTS(result == vk::Result::eSuccess);
         for (std::size_t i = 0; i < slot.view_names.size(); ++i) {
             ViewStatistics view;
             view.view = slot.view_names[i];

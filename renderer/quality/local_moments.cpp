@@ -1,9 +1,10 @@
 #include "renderer/quality/local_moments.h"
 
 #include <array>
-#include <cassert>
 #include <cstddef>
 #include <vector>
+
+#include "common/programming_error.h"
 
 namespace monoplane::quality {
 namespace {
@@ -28,8 +29,8 @@ void local_moments(std::span<const double> a, std::span<const double> b, std::ui
                    std::uint32_t height, std::span<const double> kernel,
                    const std::function<void(std::uint32_t y, const MomentRow& row)>& row_done) {
     const std::size_t taps = kernel.size();
-    assert(taps % 2 == 1 && width >= taps && height >= taps);
-    assert(a.size() == std::size_t{width} * height && b.size() == a.size());
+    MONOPLANE_EXPECTS(taps % 2 == 1 && width >= taps && height >= taps);
+    MONOPLANE_EXPECTS(a.size() == std::size_t{width} * height && b.size() == a.size());
     const std::size_t r = taps / 2;
     const std::size_t out_width = width - 2 * r;
 

@@ -1,8 +1,9 @@
 #include "renderer/quality/luma.h"
 
-#include <cassert>
 #include <cstddef>
 #include <string>
+
+#include "common/programming_error.h"
 
 namespace monoplane::quality {
 
@@ -23,7 +24,7 @@ bool is_well_formed(const ImageView& image) {
 }
 
 std::vector<double> luma(const ImageView& image) {
-    assert(is_well_formed(image));
+    MONOPLANE_EXPECTS(is_well_formed(image));
     const std::size_t count = std::size_t{image.width} * image.height;
     std::vector<double> values(count);
     const std::uint8_t* p = image.pixels.data();

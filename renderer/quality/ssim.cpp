@@ -1,9 +1,9 @@
 #include "renderer/quality/ssim.h"
 
-#include <cassert>
 #include <cmath>
 #include <string>
 
+#include "common/programming_error.h"
 #include "renderer/quality/local_moments.h"
 #include "renderer/quality/luma.h"
 
@@ -64,7 +64,7 @@ double local_ssim(double mean_a, double mean_b, double mean_aa, double mean_bb, 
 }  // namespace
 
 std::vector<double> ssim_window_kernel(const SsimOptions& options) {
-    assert(valid_options(options));
+    MONOPLANE_EXPECTS(valid_options(options));
     const std::size_t r = static_cast<std::size_t>(options.half_size);
     std::vector<double> kernel(2 * r + 1);
     const double two_sigma_squared = 2.0 * options.gaussian_sigma * options.gaussian_sigma;

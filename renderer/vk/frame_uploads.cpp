@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cstring>
-#include <stdexcept>
+
+#include "common/programming_error.h"
 
 namespace monoplane::vk_core {
 namespace {
@@ -14,10 +15,8 @@ constexpr vk::DeviceSize kMaxUpdate = 65536;
 
 void FrameUploads::stage(const Buffer& target, const void* data, vk::DeviceSize bytes,
                          vk::DeviceSize offset) {
-    if (bytes % 4 != 0 || offset % 4 != 0 || offset + bytes > target.size()) {
-        throw std::invalid_argument(
-            "FrameUploads::stage: a range of whole words inside the buffer");
-    }
+    // A range of whole words inside the buffer.
+    MONOPLANE_EXPECTS(bytes % 4 == 0 && offset % 4 == 0 && offset + bytes <= target.size());
     const auto* from = static_cast<const std::byte*>(data);
     for (vk::DeviceSize done = 0; done < bytes; done += kMaxUpdate) {
         const vk::DeviceSize size = std::min(kMaxUpdate, bytes - done);

@@ -1,5 +1,7 @@
 #include "renderer/vk/image.h"
 
+#include <cassert>
+
 #include "renderer/vk/memory.h"
 
 namespace monoplane::vk_core {
@@ -9,25 +11,56 @@ bool is_depth_format(vk::Format format) {
            format == vk::Format::eD24UnormS8Uint || format == vk::Format::eD32SfloatS8Uint;
 }
 
+namespace {
+
+vk::ImageCreateInfo create_info(const ImageDesc& desc) {
+    return vk::ImageCreateInfo({}, vk::ImageType::e2D, desc.format, vk::Extent3D(desc.extent, 1),
+                               desc.mip_levels, desc.layers, desc.samples,
+                               vk::ImageTiling::eOptimal, desc.usage, vk::SharingMode::eExclusive);
+}
+
+vk::ImageAspectFlags aspect_of(vk::Format format) {
+    return is_depth_format(format) ? vk::ImageAspectFlagBits::eDepth
+                                   : vk::ImageAspectFlagBits::eColor;
+}
+
+}  // namespace
+
 Image::Image(const Context& ctx, const ImageDesc& desc)
-    : desc_(desc),
-      aspect_(is_depth_format(desc.format) ? vk::ImageAspectFlagBits::eDepth
-                                           : vk::ImageAspectFlagBits::eColor) {
-    const vk::ImageCreateInfo info({}, vk::ImageType::e2D, desc.format,
-                                   vk::Extent3D(desc.extent, 1), desc.mip_levels, desc.layers,
-                                   desc.samples, vk::ImageTiling::eOptimal, desc.usage,
-                                   vk::SharingMode::eExclusive);
-    image_ = vk::raii::Image(ctx.device(), info);
+    : image_(ctx.device(), create_info(desc)), desc_(desc), aspect_(aspect_of(desc.format)) {
     memory_ = allocate_memory(ctx, image_.getMemoryRequirements(),
                               vk::MemoryPropertyFlagBits::eDeviceLocal);
     image_.bindMemory(*memory_, 0);
+    memory_handle_ = *memory_;
+    make_view(ctx);
+}
+
+Image::Image(const Context& ctx, const ImageDesc& desc, const DeviceMemory& shared)
+    : image_(ctx.device(), create_info(desc)),
+      memory_handle_(*shared),
+      shared_memory_(true),
+      desc_(desc),
+      aspect_(aspect_of(desc.format)) {
+    assert(image_.getMemoryRequirements().size <= shared.bytes());
+    image_.bindMemory(*shared, 0);
+    make_view(ctx);
+}
+
+vk::MemoryRequirements Image::memory_requirements(const Context& ctx, const ImageDesc& desc) {
+    const vk::ImageCreateInfo info = create_info(desc);
+    return ctx.device()
+        .getImageMemoryRequirements(vk::DeviceImageMemoryRequirements(&info))
+        .memoryRequirements;
+}
+
+void Image::make_view(const Context& ctx) {
     handle_ = *image_;
     const auto view_type =
-        desc.layers > 1 || desc.array_view ? vk::ImageViewType::e2DArray : vk::ImageViewType::e2D;
+        desc_.layers > 1 || desc_.array_view ? vk::ImageViewType::e2DArray : vk::ImageViewType::e2D;
     view_ = vk::raii::ImageView(
-        ctx.device(), vk::ImageViewCreateInfo(
-                          {}, *image_, view_type, desc.format, {},
-                          vk::ImageSubresourceRange(aspect_, 0, desc.mip_levels, 0, desc.layers)));
+        ctx.device(), vk::ImageViewCreateInfo({}, *image_, view_type, desc_.format, {},
+                                              vk::ImageSubresourceRange(
+                                                  aspect_, 0, desc_.mip_levels, 0, desc_.layers)));
 }
 
 Image Image::layer_of(const Context& ctx, const Image& parent, std::uint32_t layer) {
@@ -54,7 +87,13 @@ vk::raii::Sampler make_clamped_sampler(const Context& ctx, vk::Filter filter) {
 }
 
 ImageRange Image::range() const {
-    return {handle_, aspect_, base_layer_, desc_.layers, desc_.mip_levels, initial_layout_};
+    return {handle_,
+            aspect_,
+            base_layer_,
+            desc_.layers,
+            desc_.mip_levels,
+            initial_layout_,
+            shared_memory_ ? memory_handle_ : vk::DeviceMemory{}};
 }
 
 void initialise_image(const Context& ctx, const ImageRange& range,

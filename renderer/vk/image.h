@@ -1,6 +1,8 @@
 // A 2D image (optionally layered) with its memory and a view over all its layers, or one layer of
 // such an image (layer_of): what single-pass stereo draws both eyes into, while every later pass
-// reads and writes one eye's layer as if it were an image of its own.
+// reads and writes one eye's layer as if it were an image of its own. A transient image may
+// instead be bound to memory it shares with others whose uses never overlap its own
+// (graph::plan_aliasing; the render graph orders their uses).
 #pragma once
 
 #include <optional>
@@ -29,12 +31,20 @@ struct ImageRange {
     std::uint32_t layers = 1;
     std::uint32_t mip_levels = 1;
     vk::ImageLayout initial_layout = vk::ImageLayout::eUndefined;
+    // The memory it shares with other images (null: memory of its own): the executor orders the
+    // uses of the images bound to one memory.
+    vk::DeviceMemory shared_memory{};
 };
 
 class Image {
   public:
     Image() = default;
     Image(const Context& ctx, const ImageDesc& desc);
+    // Bound at offset 0 of `shared`, which must outlive it and be large enough and of a type the
+    // image allows (memory_requirements).
+    Image(const Context& ctx, const ImageDesc& desc, const DeviceMemory& shared);
+    // What an image of `desc` needs of its memory, without making one.
+    static vk::MemoryRequirements memory_requirements(const Context& ctx, const ImageDesc& desc);
     // A 2D view of one layer of `parent`, which must outlive it. Its desc() has one layer, and
     // transition() and copies address that layer only (base_layer()).
     static Image layer_of(const Context& ctx, const Image& parent, std::uint32_t layer);
@@ -50,9 +60,18 @@ class Image {
     vk::ImageLayout initial_layout() const { return initial_layout_; }
     void set_initial_layout(vk::ImageLayout layout) { initial_layout_ = layout; }
 
+    // Whether it is bound to memory it shares with other images.
+    bool shares_memory() const { return shared_memory_; }
+    // The memory it is bound to (its own, or the shared one); null for a layer of another image.
+    vk::DeviceMemory memory() const { return memory_handle_; }
+
   private:
+    void make_view(const Context& ctx);
+
     vk::raii::Image image_{nullptr};  // null for a layer of another image
-    DeviceMemory memory_{nullptr};
+    DeviceMemory memory_{nullptr};    // null for a layer and for an image in shared memory
+    vk::DeviceMemory memory_handle_{};
+    bool shared_memory_ = false;
     vk::Image handle_{};
     std::uint32_t base_layer_ = 0;
     vk::raii::ImageView view_{nullptr};

@@ -1,13 +1,13 @@
 #include "scenes/gltf/chunk_assembly.h"
 
 #include <algorithm>
-#include <cassert>
 #include <limits>
 #include <tuple>
 #include <vector>
 
 #include <meshoptimizer.h>
 
+#include "common/programming_error.h"
 #include "scenes/chunk_builder.h"
 
 namespace monoplane::scenes::gltf {
@@ -150,8 +150,8 @@ class ChunkWriter {
 
 void assemble_chunks(const ImportedGeometry& geometry, std::uint32_t target_triangles, Scene& scene,
                      const std::function<void(std::size_t)>& progress) {
-    assert(geometry.vertices.size() < std::numeric_limits<std::uint32_t>::max());
-    assert(geometry.triangle_count() < std::numeric_limits<std::uint32_t>::max());
+    MONOPLANE_EXPECTS(geometry.vertices.size() < std::numeric_limits<std::uint32_t>::max());
+    MONOPLANE_EXPECTS(geometry.triangle_count() < std::numeric_limits<std::uint32_t>::max());
     const std::uint32_t target = std::clamp(target_triangles, kMinChunkTarget, kMaxChunkTriangles);
 
     // The distinct looks, in order, the batches of each (in file order, so its triangles come in

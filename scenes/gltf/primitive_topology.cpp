@@ -1,6 +1,6 @@
 #include "scenes/gltf/primitive_topology.h"
 
-#include <cassert>
+#include "common/programming_error.h"
 
 namespace monoplane::scenes::gltf {
 
@@ -11,7 +11,7 @@ bool is_triangle_mode(int mode) {
 }
 
 TriangleList triangulate(int mode, const std::vector<std::uint32_t>& sequence) {
-    assert(is_triangle_mode(mode));
+    MONOPLANE_EXPECTS(is_triangle_mode(mode));
     TriangleList list;
     const std::size_t n = sequence.size();
     auto add = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {

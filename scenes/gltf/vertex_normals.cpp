@@ -1,8 +1,8 @@
 #include "scenes/gltf/vertex_normals.h"
 
-#include <cassert>
-
 #include <glm/geometric.hpp>
+
+#include "common/programming_error.h"
 
 namespace monoplane::scenes::gltf {
 namespace {
@@ -22,7 +22,7 @@ glm::vec3 face_normal(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c
 
 std::vector<glm::vec3> smooth_normals(std::span<const glm::vec3> positions,
                                       std::span<const std::uint32_t> triangles) {
-    assert(triangles.size() % 3 == 0);
+    MONOPLANE_EXPECTS(triangles.size() % 3 == 0);
     std::vector<glm::vec3> sum(positions.size(), glm::vec3(0.0f));
     std::vector<float> weight(positions.size(), 0.0f);                  // summed |cross|
     std::vector<glm::vec3> largest(positions.size(), glm::vec3(0.0f));  // largest face's cross

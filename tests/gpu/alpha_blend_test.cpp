@@ -18,7 +18,7 @@
 namespace monoplane::testing {
 namespace {
 
-using modes::AntiAliasing;
+using plan::AntiAliasing;
 
 // The display transform (renderer/passes/tonemap/tone_mapping.glsl, exposure 1, then sRGB) and
 // its inverse, per channel, in [0, 1].

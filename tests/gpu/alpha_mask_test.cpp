@@ -17,7 +17,7 @@
 namespace monoplane::testing {
 namespace {
 
-using modes::AntiAliasing;
+using plan::AntiAliasing;
 
 // A configuration of the renderer, and the extra distance (pixels) from a cut-out's edge within
 // which a pixel is not judged: C's mapped image may move content beyond m by a fraction of a pixel

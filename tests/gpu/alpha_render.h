@@ -26,8 +26,8 @@
 namespace monoplane::testing {
 
 using modes::Eye;
-using modes::Mode;
-using modes::StereoPass;
+using plan::Mode;
+using plan::StereoPass;
 
 // One frame's display images, both eyes.
 using EyeImages = std::array<modes::RgbaImage, 2>;

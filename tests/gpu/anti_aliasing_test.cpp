@@ -19,9 +19,9 @@
 namespace monoplane {
 namespace {
 
-using modes::AntiAliasing;
 using modes::Eye;
-using modes::Mode;
+using plan::AntiAliasing;
+using plan::Mode;
 
 constexpr vk::Extent2D kExtent{96, 108};
 

@@ -24,7 +24,7 @@ namespace monoplane {
 namespace {
 
 using modes::Eye;
-using modes::Mode;
+using plan::Mode;
 
 const glm::dvec3 kViewer{0.0, 1.6, 0.0};
 
@@ -63,7 +63,7 @@ scenes::Scene near_scene() {
 
 class AutoMonoPlane : public testing::GpuTest {
   protected:
-    modes::RendererOptions options(const modes::AutoMonoPlaneParams& params) const {
+    modes::RendererOptions options(const plan::AutoMonoPlaneParams& params) const {
         modes::RendererOptions o;
         o.shadow.resolution = 256;
         o.read_back_depth = true;
@@ -96,7 +96,7 @@ class AutoMonoPlane : public testing::GpuTest {
 
 TEST_F(AutoMonoPlane, ChoosesAPlaneInAnEmptyDepthBand) {
     const scenes::Scene scene = band_scene();
-    modes::AutoMonoPlaneParams params;
+    plan::AutoMonoPlaneParams params;
     params.error_budget_arcmin = 25.0;  // a floor near 5 m, inside the near content
     params.max_step_arcmin = 2.0;
     modes::ModeRenderer renderer(ctx(), scene, Mode::kHybrid, extent_, options(params));
@@ -106,7 +106,7 @@ TEST_F(AutoMonoPlane, ChoosesAPlaneInAnEmptyDepthBand) {
         renderer.render_frame(inputs);
         floor = renderer.last_mono_plane_decision()->floor;
     }
-    const modes::MonoPlaneDecision& d = *renderer.last_mono_plane_decision();
+    const plan::MonoPlaneDecision& d = *renderer.last_mono_plane_decision();
     EXPECT_LT(floor, 6.0);
     EXPECT_GT(d.mono_plane, 6.0) << d.reason;
     EXPECT_LT(d.mono_plane, 40.0) << d.reason;
@@ -122,7 +122,7 @@ TEST_F(AutoMonoPlane, ChoosesAPlaneInAnEmptyDepthBand) {
 // blocks, so partial blocks and workgroups are covered.
 TEST_F(AutoMonoPlane, TheHistogramCountsEveryEyePixelOnce) {
     const scenes::Scene scene = band_scene();
-    modes::AutoMonoPlaneParams params;
+    plan::AutoMonoPlaneParams params;
     params.error_budget_arcmin = 25.0;
     modes::ModeRenderer renderer(ctx(), scene, Mode::kHybrid, extent_, options(params));
     rig::Pose head = scene.viewpoints[0].head;
@@ -130,10 +130,10 @@ TEST_F(AutoMonoPlane, TheHistogramCountsEveryEyePixelOnce) {
         // Turning and looking down a little more each frame: the sky's share changes.
         head.orientation = rig::orientation_from_yaw_pitch(0.05 * frame, -0.08 * frame);
         renderer.render_frame(testing::profile_inputs(vive_, head, 8.0));
-        const modes::DepthHistogram* gpu = renderer.last_depth_histogram();
+        const plan::DepthHistogram* gpu = renderer.last_depth_histogram();
         ASSERT_NE(gpu, nullptr) << "frame " << frame;
 
-        std::array<std::int64_t, modes::DepthHistogram::kBins> expected{};
+        std::array<std::int64_t, plan::DepthHistogram::kBins> expected{};
         std::int64_t sky = 0;
         double farthest = 0.0;
         std::int64_t near_an_edge = 0;
@@ -145,9 +145,9 @@ TEST_F(AutoMonoPlane, TheHistogramCountsEveryEyePixelOnce) {
                     continue;
                 }
                 const double position = std::log(std::max(double(d), 1e-30) / gpu->near) /
-                                        log_ratio * modes::DepthHistogram::kBins;
+                                        log_ratio * plan::DepthHistogram::kBins;
                 const int bin = std::clamp(static_cast<int>(std::floor(position)), 0,
-                                           modes::DepthHistogram::kBins - 1);
+                                           plan::DepthHistogram::kBins - 1);
                 ++expected[static_cast<std::size_t>(bin)];
                 if (std::abs(position - std::round(position)) < 1e-3) ++near_an_edge;
                 farthest = std::max(farthest, double(d));
@@ -160,7 +160,7 @@ TEST_F(AutoMonoPlane, TheHistogramCountsEveryEyePixelOnce) {
         EXPECT_EQ(static_cast<std::int64_t>(gpu->geometry_pixels()),
                   2 * std::int64_t{extent_.width} * extent_.height - sky);
         std::int64_t misplaced = 0;
-        for (int b = 0; b < modes::DepthHistogram::kBins; ++b) {
+        for (int b = 0; b < plan::DepthHistogram::kBins; ++b) {
             misplaced += std::abs(std::int64_t{gpu->counts[static_cast<std::size_t>(b)]} -
                                   expected[static_cast<std::size_t>(b)]);
         }
@@ -172,11 +172,11 @@ TEST_F(AutoMonoPlane, TheHistogramCountsEveryEyePixelOnce) {
 TEST_F(AutoMonoPlane, EveryVisiblePixelStaysWithinTheBudgetAlongAPosePath) {
     const scenes::Scene scene =
         scenes::generate_scene(scenes::SceneId::Spheres, scenes::Detail::Test);
-    modes::AutoMonoPlaneParams params;
+    plan::AutoMonoPlaneParams params;
     params.error_budget_arcmin = 8.0;
     params.max_step_arcmin = 0.5;
     modes::RendererOptions o = options(params);
-    o.anti_aliasing = modes::AntiAliasing::kTaa;
+    o.anti_aliasing = plan::AntiAliasing::kTaa;
     modes::ModeRenderer renderer(ctx(), scene, Mode::kHybrid, extent_, o);
     const rig::PosePath path = *rig::builtin_pose_path("turn");
     modes::FrameInputs inputs = testing::profile_inputs(vive_, scene.viewpoints[0].head, 8.0);
@@ -189,7 +189,7 @@ TEST_F(AutoMonoPlane, EveryVisiblePixelStaysWithinTheBudgetAlongAPosePath) {
         ASSERT_TRUE(stats.mono_plane);
         const double m = *stats.mono_plane;
         const double visible = farthest_visible(renderer);
-        const modes::MonoPlaneDecision& d = *renderer.last_mono_plane_decision();
+        const plan::MonoPlaneDecision& d = *renderer.last_mono_plane_decision();
         SCOPED_TRACE("frame " + std::to_string(frame) + " m " + std::to_string(m) + " (" +
                      d.reason + "), farthest visible " + std::to_string(visible));
         // The chunks' bound holds what the pixels show, and the budget holds there.

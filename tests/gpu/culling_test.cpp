@@ -38,9 +38,9 @@ using testing::max_channel_difference;
 using testing::view_of;
 
 using modes::Eye;
-using modes::Mode;
-using modes::MonoCulling;
 using passes::CullView;
+using plan::Mode;
+using plan::MonoCulling;
 using Chunks = std::vector<std::uint32_t>;
 
 // A square headset: both eyes see 45 degrees left, right, up and down. Then C sits s = d / 2
@@ -154,7 +154,7 @@ TEST_F(Culling, ChunksLandInTheViewsTheirDepthsSelect) {
     const Chunks far_and_straddling = {1, 2};
     for (MonoCulling variant :
          {MonoCulling::kNoOpt, MonoCulling::kDiscard, MonoCulling::kOcclusionCull}) {
-        SCOPED_TRACE(modes::mono_culling_name(variant));
+        SCOPED_TRACE(plan::mono_culling_name(variant));
         modes::ModeRenderer hybrid(ctx(), scene, Mode::kHybrid, kExtent, test_options());
         modes::FrameInputs inputs = square_inputs(8.0);
         inputs.mono_culling = variant;
@@ -212,11 +212,11 @@ TEST_F(Culling, RoutingDebugViewColoursChunksByTheirLists) {
     const glm::ivec2 strip_pixel = pixel_of(1.0, -1.0, 5.0);  // chunk 2, 5 m ahead
     for (MonoCulling variant :
          {MonoCulling::kNoOpt, MonoCulling::kDiscard, MonoCulling::kOcclusionCull}) {
-        SCOPED_TRACE(modes::mono_culling_name(variant));
+        SCOPED_TRACE(plan::mono_culling_name(variant));
         modes::ModeRenderer hybrid(ctx(), scene, Mode::kHybrid, kExtent, test_options());
         modes::FrameInputs inputs = square_inputs(8.0);
         inputs.mono_culling = variant;
-        inputs.debug = modes::DebugView::kRouting;
+        inputs.debug = plan::DebugView::kRouting;
         hybrid.render_frame(inputs);
         const modes::RgbaImage& image = hybrid.eye_image(Eye::kLeft);
         auto rgb = [&](glm::ivec2 p) {
@@ -463,7 +463,7 @@ TEST_F(Culling, OcclusionCullingDrawsOnlyWhatTheWallDoesNotHide) {
         for (Eye eye : {Eye::kLeft, Eye::kRight}) {
             // Only the wall is nearer than m.
             EXPECT_EQ(sorted(hybrid.drawn_chunks(static_cast<CullView>(eye))), Chunks{0})
-                << modes::mono_culling_name(variant);
+                << plan::mono_culling_name(variant);
             r.eyes[static_cast<int>(eye)] = hybrid.eye_image(eye);
         }
         return r;
@@ -554,7 +554,7 @@ TEST_F(Culling, NothingNearerThanThePlaneLeavesTheEyesIdle) {
     // No eye content means no depth pyramid: C draws its chunks without it in every variant.
     for (MonoCulling variant :
          {MonoCulling::kNoOpt, MonoCulling::kDiscard, MonoCulling::kOcclusionCull}) {
-        SCOPED_TRACE(modes::mono_culling_name(variant));
+        SCOPED_TRACE(plan::mono_culling_name(variant));
         modes::ModeRenderer hybrid(ctx(), scene, Mode::kHybrid, kExtent, test_options());
         modes::FrameInputs inputs = square_inputs(8.0);
         inputs.mono_culling = variant;
@@ -674,7 +674,7 @@ TEST_F(Culling, ForceFlagsAreHonouredOnlyWhereHarmless) {
 TEST_F(Culling, SecondFrameFromTheSamePoseDrawsNoShadowMap) {
     const scenes::Scene scene = three_depths_scene();
     for (Mode mode : {Mode::kStereo, Mode::kHybrid}) {
-        SCOPED_TRACE(modes::mode_name(mode));
+        SCOPED_TRACE(plan::mode_name(mode));
         modes::ModeRenderer renderer(ctx(), scene, mode, kExtent, test_options());
         const profile::FrameStats first = renderer.render_frame(square_inputs(8.0));
         const profile::FrameStats second = renderer.render_frame(square_inputs(8.0));
@@ -741,19 +741,19 @@ TEST_F(Culling, AutoVariantTriesEachVariantAndChangesNoPixel) {
     modes::FrameInputs reference_inputs = inputs;
     inputs.mono_culling = MonoCulling::kAuto;
     reference_inputs.mono_culling = MonoCulling::kNoOpt;
-    const int trial = modes::VariantChooserParams{}.rounds_per_trial * 3;
+    const int trial = plan::VariantChooserParams{}.rounds_per_trial * 3;
     for (int frame = 0; frame < trial + 2; ++frame) {
         SCOPED_TRACE("frame " + std::to_string(frame));
         automatic.render_frame(inputs);
         reference.render_frame(reference_inputs);
         const MonoCulling used = automatic.last_variant();
         if (frame < trial) {
-            EXPECT_EQ(used,
-                      modes::VariantChooser::kCandidates[static_cast<std::size_t>(frame % 3)]);
+            EXPECT_EQ(used, plan::VariantChooser::kCandidates[static_cast<std::size_t>(frame % 3)]);
         }
         EXPECT_NE(used, MonoCulling::kAuto);
         // The plan follows the variant in use.
-        const modes::PlannedPass* pyramid = automatic.last_plan().find("depth_pyramid");
+        const plan::PlannedPass* pyramid =
+            automatic.last_plan().find(plan::PassKind::kDepthPyramid);
         ASSERT_NE(pyramid, nullptr);
         EXPECT_EQ(!pyramid->skipped.has_value(), used != MonoCulling::kNoOpt);
         for (modes::Eye eye : {modes::Eye::kLeft, modes::Eye::kRight}) {
@@ -775,10 +775,10 @@ TEST_F(Culling, DepthPrepassChangesNoPixel) {
         const modes::FrameInputs inputs =
             testing::profile_inputs(vive, scene.find_viewpoint("default")->head, 8.0);
         for (const auto& [mode, pass] :
-             {std::pair{Mode::kStereo, modes::StereoPass::kTwoPasses},
-              std::pair{Mode::kHybrid, modes::StereoPass::kTwoPasses},
-              std::pair{Mode::kStereo, modes::StereoPass::kGeometryShader}}) {
-            SCOPED_TRACE(modes::render_mode_name({mode, pass}));
+             {std::pair{Mode::kStereo, plan::StereoPass::kTwoPasses},
+              std::pair{Mode::kHybrid, plan::StereoPass::kTwoPasses},
+              std::pair{Mode::kStereo, plan::StereoPass::kGeometryShader}}) {
+            SCOPED_TRACE(plan::render_mode_name({mode, pass}));
             modes::RendererOptions options = test_options();
             options.stereo_pass = pass;
             modes::ModeRenderer plain(ctx(), scene, mode, kExtent, options);
@@ -793,7 +793,7 @@ TEST_F(Culling, DepthPrepassChangesNoPixel) {
                     << modes::eye_name(eye);
             }
             if (!statistics()) continue;
-            const char* view = pass == modes::StereoPass::kTwoPasses ? "left" : "eyes";
+            const char* view = pass == plan::StereoPass::kTwoPasses ? "left" : "eyes";
             // The sky's full-screen triangle is drawn once; the chunks twice with the pre-pass.
             const std::uint64_t sky = mode == Mode::kStereo ? 1u : 0u;
             EXPECT_EQ(view_of(with, view).input_primitives - sky,

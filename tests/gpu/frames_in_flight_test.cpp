@@ -60,7 +60,7 @@ TEST_F(FramesInFlight, EachFrameDrawsWithItsOwnConstantsAndEndsLikeWaitedFrames)
     const std::vector<rig::Pose> poses = {head, turned(head, 50.0), turned(head, -70.0),
                                           turned(head, 0.0, 6.0), turned(head, 120.0)};
 
-    modes::ModeRenderer waited(ctx(), scene, modes::Mode::kHybrid, extent, options);
+    modes::ModeRenderer waited(ctx(), scene, plan::Mode::kHybrid, extent, options);
     std::vector<std::vector<ViewWork>> expected;
     for (const rig::Pose& pose : poses) {
         expected.push_back(work(waited.render_frame(testing::profile_inputs(vive, pose, 8.0))));
@@ -69,7 +69,7 @@ TEST_F(FramesInFlight, EachFrameDrawsWithItsOwnConstantsAndEndsLikeWaitedFrames)
     for (std::size_t i = 1; i < expected.size(); ++i) different += expected[i] != expected[i - 1];
     ASSERT_EQ(different, static_cast<int>(poses.size()) - 1) << "the poses must differ in work";
 
-    modes::ModeRenderer pipelined(ctx(), scene, modes::Mode::kHybrid, extent, options);
+    modes::ModeRenderer pipelined(ctx(), scene, plan::Mode::kHybrid, extent, options);
     std::vector<profile::FrameStats> stats;
     for (const rig::Pose& pose : poses) {
         pipelined.submit_frame(testing::profile_inputs(vive, pose, 8.0));
@@ -138,9 +138,10 @@ TEST_F(FramesInFlight, UploadsRefuseRangesVkCmdUpdateBufferCannotWrite) {
                                  vk_core::MemoryUse::kDeviceLocal);
     vk_core::FrameUploads uploads;
     const std::uint32_t data[4] = {};
-    EXPECT_THROW(uploads.stage(target, data, 6), std::invalid_argument);       // not whole words
-    EXPECT_THROW(uploads.stage(target, data, 4, 2), std::invalid_argument);    // unaligned
-    EXPECT_THROW(uploads.stage(target, data, 16, 56), std::invalid_argument);  // past the end
+    // A programming error: the process stops (a death test's child) and says where.
+    EXPECT_DEATH(uploads.stage(target, data, 6), "programming error.*bytes % 4 == 0");  // not words
+    EXPECT_DEATH(uploads.stage(target, data, 4, 2), "programming error.*offset % 4 == 0");
+    EXPECT_DEATH(uploads.stage(target, data, 16, 56), "programming error.*target.size");
     EXPECT_TRUE(uploads.empty());
 }
 

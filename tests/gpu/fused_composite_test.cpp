@@ -25,9 +25,9 @@
 namespace monoplane {
 namespace {
 
-using modes::DebugView;
 using modes::Eye;
-using modes::Mode;
+using plan::DebugView;
+using plan::Mode;
 using testing::max_channel_difference;
 
 constexpr vk::Extent2D kExtent{96, 108};
@@ -69,14 +69,14 @@ class Pair {
         stats_ = fused_.render_frame(inputs);
         separate_.render_frame(inputs);
         bool fused = true;
-        for (const char* eye : {"left", "right"}) {
-            const modes::PlannedPass* composite =
-                fused_.last_plan().find(std::string(eye) + ".composite");
+        for (plan::ViewId eye : plan::kEyeViews) {
+            const plan::PlannedPass* composite =
+                fused_.last_plan().find(plan::PassKind::kComposite, eye);
             fused =
                 fused && composite != nullptr && !composite->skipped && composite->writes_display;
-            const modes::PlannedPass* reference =
-                separate_.last_plan().find(std::string(eye) + ".composite");
-            EXPECT_TRUE(reference != nullptr && !reference->writes_display) << eye;
+            const plan::PlannedPass* reference =
+                separate_.last_plan().find(plan::PassKind::kComposite, eye);
+            EXPECT_TRUE(reference != nullptr && !reference->writes_display) << plan::view_name(eye);
         }
         return fused;
     }
@@ -129,7 +129,7 @@ TEST_F(FusedComposite, StudyScenesMatchTheSeparatePassesInBothHybridModes) {
             Pair pair(ctx(), scene, mode);
             for (const scenes::Viewpoint& viewpoint : scene.viewpoints) {
                 for (double m : {3.0, 8.0}) {
-                    const std::string context = scene.name + " " + modes::mode_name(mode) + " " +
+                    const std::string context = scene.name + " " + plan::mode_name(mode) + " " +
                                                 viewpoint.name + " m " + std::to_string(m);
                     EXPECT_TRUE(pair.render(inputs_at(viewpoint.head, m))) << context;
                     pair.expect_same_images(context);
@@ -150,7 +150,7 @@ TEST_F(FusedComposite, DebugViewsMatchTheSeparatePasses) {
             modes::FrameInputs inputs = inputs_at(head, 8.0);
             inputs.debug = debug;
             const std::string context =
-                modes::mode_name(mode) + " debug " + std::to_string(static_cast<int>(debug));
+                plan::mode_name(mode) + " debug " + std::to_string(static_cast<int>(debug));
             EXPECT_TRUE(pair.render(inputs)) << context;
             pair.expect_same_images(context);
         }
@@ -161,16 +161,16 @@ TEST_F(FusedComposite, DebugViewsMatchTheSeparatePasses) {
 TEST_F(FusedComposite, SinglePassNearContentMatchesTheSeparatePasses) {
     const scenes::Scene scene =
         scenes::generate_scene(scenes::SceneId::Landscape, scenes::Detail::Test);
-    for (modes::StereoPass pass :
-         {modes::StereoPass::kMultiview, modes::StereoPass::kGeometryShader}) {
-        if (pass == modes::StereoPass::kMultiview && !ctx().capabilities().multiview) continue;
-        if (pass == modes::StereoPass::kGeometryShader && !ctx().capabilities().geometry_shader) {
+    for (plan::StereoPass pass :
+         {plan::StereoPass::kMultiview, plan::StereoPass::kGeometryShader}) {
+        if (pass == plan::StereoPass::kMultiview && !ctx().capabilities().multiview) continue;
+        if (pass == plan::StereoPass::kGeometryShader && !ctx().capabilities().geometry_shader) {
             continue;
         }
         modes::RendererOptions options = options_with(false);
         options.stereo_pass = pass;
         Pair pair(ctx(), scene, Mode::kHybrid, options);
-        const std::string context = "stereo pass " + modes::stereo_pass_name(pass);
+        const std::string context = "stereo pass " + plan::stereo_pass_name(pass);
         EXPECT_TRUE(pair.render(inputs_at(scene.viewpoints.front().head, 8.0))) << context;
         pair.expect_same_images(context);
     }
@@ -201,10 +201,11 @@ TEST_F(FusedComposite, EmptyMonoListLeavesTheToneMappingAloneAndBack) {
         inputs.grazing_angle = 0.0;
         EXPECT_TRUE(pair.render(inputs)) << context;
         pair.expect_same_images(context);
-        const modes::PlannedPass* tonemap = pair.fused().last_plan().find("left.tonemap");
+        const plan::PlannedPass* tonemap =
+            pair.fused().last_plan().find(plan::PassKind::kTonemap, plan::ViewId::kLeft);
         ASSERT_NE(tonemap, nullptr);
         EXPECT_FALSE(tonemap->skipped.has_value()) << context;
-        EXPECT_EQ(tonemap->when, modes::GpuPredicate::kMonoNone) << context;
+        EXPECT_EQ(tonemap->when, plan::GpuPredicate::kMonoNone) << context;
         if (!ctx().capabilities().pipeline_statistics) continue;
         // Which of the two ran on the GPU: the composite's draws only when C drew something.
         const bool mono_empty = m == 8.0;

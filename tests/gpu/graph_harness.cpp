@@ -4,10 +4,10 @@
 
 namespace monoplane::testing {
 
-graph::ImageHandle GraphHarness::input(modes::ViewId view, modes::ImageRole role) {
+graph::ImageHandle GraphHarness::input(plan::ViewId view, plan::ImageRole role) {
     // The key PlanResources::image looks up, so that steps built later find this handle.
-    const modes::ResourceKey key{view, false, role, modes::BufferRole::kDrawLists};
-    const std::string name = modes::resource_name(key);
+    const plan::ResourceKey key{view, false, role, plan::BufferRole::kDrawLists};
+    const std::string name = plan::resource_name(key);
     if (plan_.handle(key)) {
         throw std::logic_error("graph harness: " + name +
                                " declared an input after a step used it");
@@ -26,9 +26,9 @@ void GraphHarness::bind(graph::ImageHandle image, std::vector<vk_core::ImageRang
     bound_[image.index] = std::move(images);
 }
 
-void GraphHarness::add_pass(modes::PassKind kind, std::string name, std::vector<graph::Step> steps,
+void GraphHarness::add_pass(plan::PassKind kind, std::string name, std::vector<graph::Step> steps,
                             Recorder record) {
-    modes::PlannedPass& pass = plan_.passes.emplace_back();
+    plan::PlannedPass& pass = plan_.passes.emplace_back();
     pass.kind = kind;
     pass.name = std::move(name);
     pass.steps = std::move(steps);
@@ -45,15 +45,15 @@ void GraphHarness::add_readback(
         copy.use(image, graph::Use::kTransferSrc).use(buffer, graph::Use::kTransferDst);
         host_reads(buffer);
     }
-    add_pass(modes::PassKind::kReadback, "readback", std::move(steps), std::move(record));
+    add_pass(plan::PassKind::kReadback, "readback", std::move(steps), std::move(record));
 }
 
 void GraphHarness::host_reads(graph::BufferHandle buffer) {
     plan_.exports.push_back({buffer.index, graph::Use::kHostRead});
 }
 
-std::vector<modes::BoundResource> GraphHarness::bindings() const {
-    std::vector<modes::BoundResource> bindings(plan_.resources.size());
+std::vector<executor::BoundResource> GraphHarness::bindings() const {
+    std::vector<executor::BoundResource> bindings(plan_.resources.size());
     for (const auto& [index, images] : bound_) bindings.at(index).images = images;
     // An unbound image would get no barriers at all: the pass would then run on whatever layout
     // the image happens to be in, and the test would check nothing of the graph.
@@ -64,7 +64,7 @@ std::vector<modes::BoundResource> GraphHarness::bindings() const {
                                    " is used but not bound");
         }
     };
-    for (const modes::PlannedPass& pass : plan_.passes) {
+    for (const plan::PlannedPass& pass : plan_.passes) {
         for (const graph::Step& step : pass.steps) {
             for (const graph::ResourceUse& use : step.uses) check(use.resource);
         }

@@ -21,8 +21,8 @@
 #include <utility>
 #include <vector>
 
-#include "renderer/graph/frame_graph.h"
 #include "renderer/executor/graph_executor.h"
+#include "renderer/graph/frame_graph.h"
 #include "renderer/passes/shared/step_sync.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/plan/pass_steps.h"
@@ -42,13 +42,13 @@ class GraphHarness {
     GraphHarness& operator=(const GraphHarness&) = delete;
 
     // The plan's resources by key, created on first use, for building steps.
-    modes::PlanResources& resources() { return resources_; }
-    const modes::FramePlan& plan() const { return plan_; }
+    plan::PlanResources& resources() { return resources_; }
+    const plan::FramePlan& plan() const { return plan_; }
 
     // An image the test filled before the frame. Persistent, because the graph refuses a read of
     // a transient resource no earlier step of the frame wrote. Throws std::logic_error when a
     // step already named it (it would be transient by then).
-    graph::ImageHandle input(modes::ViewId view, modes::ImageRole role);
+    graph::ImageHandle input(plan::ViewId view, plan::ImageRole role);
 
     // The device images a resource is this frame (several for SSAO's scratch images).
     void bind(graph::ImageHandle image, std::vector<vk_core::ImageRange> images);
@@ -57,7 +57,7 @@ class GraphHarness {
     }
 
     // A pass, recorded after those added before it.
-    void add_pass(modes::PassKind kind, std::string name, std::vector<graph::Step> steps,
+    void add_pass(plan::PassKind kind, std::string name, std::vector<graph::Step> steps,
                   Recorder record);
     // A read-back pass of one step: each image copied (a transfer source) into its buffer, which
     // the host reads after the submission (an export, so the frame ends with the barrier that
@@ -74,13 +74,13 @@ class GraphHarness {
     void record(const vk::raii::CommandBuffer& cmd);
 
   private:
-    std::vector<modes::BoundResource> bindings() const;
+    std::vector<executor::BoundResource> bindings() const;
 
-    modes::FramePlan plan_;
-    modes::PlanResources resources_{plan_};
+    plan::FramePlan plan_;
+    plan::PlanResources resources_{plan_};
     std::map<std::uint16_t, std::vector<vk_core::ImageRange>> bound_;
     std::vector<Recorder> recorders_;  // one per plan_.passes
-    modes::GraphExecutor executor_;
+    executor::GraphExecutor executor_;
 };
 
 }  // namespace monoplane::testing

@@ -19,7 +19,7 @@ namespace monoplane {
 namespace {
 
 using modes::Eye;
-using modes::Mode;
+using plan::Mode;
 
 modes::FrameInputs vive_inputs(const hmd::HmdProfile& vive, const rig::Pose& head, double m) {
     return testing::profile_inputs(vive, head, m);
@@ -76,7 +76,7 @@ CutCount count_cuts(const vk_core::Context& ctx, const hmd::HmdProfile& vive, bo
     const scenes::Scene scene = testing::steep_slabs_scene();
     const vk::Extent2D extent{96, 108};
     modes::RendererOptions options = small_options(true);
-    if (taa) options.anti_aliasing = modes::AntiAliasing::kTaa;
+    if (taa) options.anti_aliasing = plan::AntiAliasing::kTaa;
     modes::ModeRenderer stereo(ctx, scene, Mode::kStereo, extent, options);
     modes::ModeRenderer hybrid(ctx, scene, Mode::kHybrid, extent, options);
     std::mt19937_64 random(20190323);
@@ -330,7 +330,7 @@ TEST_F(Hybrid, ViewVectorBlendRemovesTheHighlightSeam) {
     // With TAA in both (converged on the static view), the blend still removes the seam: the
     // velocity-widened colour box keeps C's mapped history (Sect. 4.5).
     modes::RendererOptions taa_options = small_options();
-    taa_options.anti_aliasing = modes::AntiAliasing::kTaa;
+    taa_options.anti_aliasing = plan::AntiAliasing::kTaa;
     modes::ModeRenderer stereo_taa(ctx(), scene, Mode::kStereo, extent, taa_options);
     taa_options.read_back_depth = true;
     modes::ModeRenderer hybrid_taa(ctx(), scene, Mode::kHybrid, extent, taa_options);
@@ -361,10 +361,10 @@ TEST_F(Hybrid, DebugViewsSeparateTheRegions) {
     hybrid.render_frame(inputs);
     const modes::RgbaImage plain = hybrid.eye_image(Eye::kLeft);
     const std::vector<float> depth = hybrid.eye_linear_depth(Eye::kLeft);
-    inputs.debug = modes::DebugView::kTintMono;
+    inputs.debug = plan::DebugView::kTintMono;
     hybrid.render_frame(inputs);
     const modes::RgbaImage tinted = hybrid.eye_image(Eye::kLeft);
-    inputs.debug = modes::DebugView::kStereoOnly;
+    inputs.debug = plan::DebugView::kStereoOnly;
     hybrid.render_frame(inputs);
     const modes::RgbaImage stereo_only = hybrid.eye_image(Eye::kLeft);
     int near_pixels = 0;

@@ -22,7 +22,7 @@ namespace monoplane {
 namespace {
 
 using modes::Eye;
-using modes::Mode;
+using plan::Mode;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -223,7 +223,7 @@ TEST_P(CantedHybrid, TaaHistoryFollowsCsContentWhileTheHeadTurns) {
     const glm::dvec3 marker(-6.0, 1.7 + 1.0, -20.0);
     const scenes::Scene scene = testing::marker_scene(glm::vec3(marker), 1.2f);
     modes::RendererOptions taa_options = small_options();
-    taa_options.anti_aliasing = modes::AntiAliasing::kTaa;
+    taa_options.anti_aliasing = plan::AntiAliasing::kTaa;
     modes::ModeRenderer taa(ctx(), scene, Mode::kHybrid, extent, taa_options);
     modes::ModeRenderer plain(ctx(), scene, Mode::kHybrid, extent, small_options());
     for (int frame = 0; frame < 24; ++frame) {

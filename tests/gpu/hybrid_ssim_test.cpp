@@ -37,8 +37,8 @@ TEST_P(HybridSsim, FollowsTheFormalErrorAndIsReported) {
     const vk::Extent2D extent{224, 252};
     modes::RendererOptions options;
     options.shadow.resolution = 1024;
-    modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, extent, options);
-    modes::ModeRenderer hybrid(ctx(), scene, modes::Mode::kHybrid, extent, options, 3.0);
+    modes::ModeRenderer stereo(ctx(), scene, plan::Mode::kStereo, extent, options);
+    modes::ModeRenderer hybrid(ctx(), scene, plan::Mode::kHybrid, extent, options, 3.0);
     modes::FrameInputs inputs = testing::profile_inputs(vive, scene.viewpoints.front().head);
     stereo.render_frame(inputs);
     const std::filesystem::path out = std::filesystem::current_path() / "hybrid_ssim";

@@ -23,7 +23,7 @@ namespace monoplane {
 namespace {
 
 using modes::Eye;
-using modes::Mode;
+using plan::Mode;
 
 constexpr glm::dvec3 kCamera{0.0, 1.7, 0.0};
 constexpr glm::dvec3 kMarker{-0.6, 1.9, -5.0};  // the marker node's translation, world
@@ -177,7 +177,7 @@ TEST_F(ImportedScene, HybridDriftsByTheCentralProjectionAndEqualsStereoAtFar) {
 TEST_F(ImportedScene, SinglePassStereoDrawsWhatTwoPassesDraw) {
     modes::ModeRenderer two(ctx(), scene_, Mode::kStereo, extent_, options());
     modes::RendererOptions gs_options = options();
-    gs_options.stereo_pass = modes::StereoPass::kGeometryShader;
+    gs_options.stereo_pass = plan::StereoPass::kGeometryShader;
     modes::ModeRenderer gs(ctx(), scene_, Mode::kStereo, extent_, gs_options);
     two.render_frame(inputs(8.0));
     gs.render_frame(inputs(8.0));

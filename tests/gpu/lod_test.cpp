@@ -22,8 +22,8 @@ namespace monoplane {
 namespace {
 
 using modes::Eye;
-using modes::Mode;
 using passes::CullView;
+using plan::Mode;
 
 constexpr vk::Extent2D kExtent{336, 378};
 
@@ -72,12 +72,12 @@ std::uint32_t level_of(const ChunkLevels& levels, const vk::DrawIndexedIndirectC
 }
 
 // The views the renderer's culling saw: each eye's unjittered world -> clip matrix and position.
-std::vector<modes::LodView> eye_views(const modes::ModeRenderer& renderer) {
-    std::vector<modes::LodView> views;
+std::vector<plan::LodView> eye_views(const modes::ModeRenderer& renderer) {
+    std::vector<plan::LodView> views;
     for (Eye eye : {Eye::kLeft, Eye::kRight}) {
         const modes::EyeFrameGeometry& g = renderer.eye_geometry(eye);
         views.push_back(
-            modes::lod_view_of(g.view_proj, g.position, glm::dvec2(kExtent.width, kExtent.height)));
+            plan::lod_view_of(g.view_proj, g.position, glm::dvec2(kExtent.width, kExtent.height)));
     }
     return views;
 }
@@ -113,13 +113,13 @@ TEST_P(Lod, TheGpuChoosesTheReferencesLevelEveryFrame) {
             rig::Pose head = start;
             head.position += glm::dvec3(0.0, 0.0, -4.0 * frame);  // walking forward
             stereo.render_frame(inputs_at(head));
-            const std::vector<modes::LodView> views = eye_views(stereo);
+            const std::vector<plan::LodView> views = eye_views(stereo);
             std::vector<std::uint32_t> expected(scene_.chunks.size());
             for (std::size_t c = 0; c < scene_.chunks.size(); ++c) {
                 const scenes::Aabb& b = scene_.chunks[c].bounds;
-                expected[c] = modes::choose_lod_level(levels[c].error_m, views,
-                                                      {glm::dvec3(b.min), glm::dvec3(b.max)},
-                                                      budget, previous[c]);
+                expected[c] = plan::choose_lod_level(levels[c].error_m, views,
+                                                     {glm::dvec3(b.min), glm::dvec3(b.max)}, budget,
+                                                     previous[c]);
             }
             int mismatches = 0;
             for (CullView view : {CullView::kLeft, CullView::kRight}) {
@@ -222,7 +222,7 @@ TEST_P(Lod, ImagesStayCloseToFullDetailInStereoAndHybrid) {
         const std::uint64_t full_primitives = primitives(full.render_frame(inputs));
         const std::uint64_t simplified_primitives = primitives(simplified.render_frame(inputs));
         const ImageDifference d = compare_eyes(full, simplified);
-        std::cout << scenes::scene_name(GetParam()) << " " << modes::mode_name(mode)
+        std::cout << scenes::scene_name(GetParam()) << " " << plan::mode_name(mode)
                   << ": primitives " << full_primitives << " -> " << simplified_primitives
                   << ", SSIM " << d.ssim << ", mean difference " << d.mean_channel_difference
                   << "/255\n";

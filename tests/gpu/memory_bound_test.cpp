@@ -24,7 +24,7 @@ TEST_F(MemoryBound, TwoThousandFramesInFlightKeepResidentMemoryBounded) {
     const scenes::Scene scene =
         scenes::generate_scene(scenes::SceneId::Beams, scenes::Detail::Test, 5);
     const hmd::HmdProfile vive = hmd::load_hmd_profile("vive").value_or_throw();
-    modes::ModeRenderer renderer(ctx(), scene, modes::Mode::kHybrid, vk::Extent2D(32, 36), {});
+    modes::ModeRenderer renderer(ctx(), scene, plan::Mode::kHybrid, vk::Extent2D(32, 36), {});
     const rig::PosePath sway = *rig::builtin_pose_path("sway");
     const rig::Pose start = scene.viewpoints.front().head;
     int frame = 0;

@@ -42,7 +42,7 @@ TEST_P(SceneRender, StereoPairHasStructureAndParallax) {
     const hmd::HmdProfile vive = hmd::load_hmd_profile("vive").value_or_throw();
     modes::RendererOptions options;
     options.shadow.resolution = 1024;
-    modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, {168, 189}, options);
+    modes::ModeRenderer stereo(ctx(), scene, plan::Mode::kStereo, {168, 189}, options);
     modes::StereoViewInputs inputs;
     inputs.head = scene.viewpoints.front().head;
     inputs.ipd = vive.ipd;

@@ -68,7 +68,7 @@ TEST_F(Shadow, RoofCastsItsShadowBesideItsFootprint) {
     inputs.left = inputs.right = rig::Tangents{-1.0, 1.0, -1.0, 1.0};
     modes::RendererOptions options;
     options.shadow.resolution = 1024;
-    modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, {256, 256}, options);
+    modes::ModeRenderer stereo(ctx(), scene, plan::Mode::kStereo, {256, 256}, options);
     stereo.render_frame({inputs});
 
     const glm::dmat4 view_proj = modes::eye_view_proj(inputs, modes::Eye::kLeft);

@@ -1,4 +1,4 @@
-// Single-pass stereo (modes::StereoPass, papers/001): drawing both eyes in one forward pass, by
+// Single-pass stereo (plan::StereoPass, papers/001): drawing both eyes in one forward pass, by
 // geometry-shader duplication, by VK_KHR_multiview or by instancing (two instances per draw, one
 // per eye), draws the images two passes draw, and the vertex work it saves or spends is measured
 // on pipeline-statistics counters, never on times. The reference is the same renderer
@@ -29,11 +29,11 @@ using testing::has_pass;
 using testing::max_channel_difference;
 using testing::view_of;
 
-using modes::AntiAliasing;
 using modes::Eye;
-using modes::Mode;
-using modes::StereoPass;
 using passes::CullView;
+using plan::AntiAliasing;
+using plan::Mode;
+using plan::StereoPass;
 using Chunks = std::vector<std::uint32_t>;
 
 constexpr vk::Extent2D kExtent{96, 108};
@@ -144,10 +144,10 @@ class SinglePassStereo : public testing::GpuTest {
                 << modes::eye_name(static_cast<Eye>(e)) << " eye dark";
             c.difference[e] = max_channel_difference(c.one.eyes[e], c.two.eyes[e]);
         }
-        std::cout << scene.name << " " << modes::mode_name(mode) << " m = " << inputs.mono_plane
-                  << ", " << modes::anti_aliasing_name(options.anti_aliasing)
-                  << (inputs.debug == modes::DebugView::kRouting ? ", routing view" : "") << ": "
-                  << modes::stereo_pass_name(pass) << " vs two passes, max channel difference left "
+        std::cout << scene.name << " " << plan::mode_name(mode) << " m = " << inputs.mono_plane
+                  << ", " << plan::anti_aliasing_name(options.anti_aliasing)
+                  << (inputs.debug == plan::DebugView::kRouting ? ", routing view" : "") << ": "
+                  << plan::stereo_pass_name(pass) << " vs two passes, max channel difference left "
                   << c.difference[0] << ", right " << c.difference[1] << "\n";
         return c;
     }
@@ -166,7 +166,7 @@ class SinglePassStereo : public testing::GpuTest {
         for (scenes::SceneId id : kScenes) {
             const scenes::Scene scene = scenes::generate_scene(id, scenes::Detail::Test);
             const Comparison c = compare(scene, Mode::kStereo, pass, options, inputs_at(scene));
-            expect_within_one(c, scene.name + " stereo " + modes::stereo_pass_name(pass));
+            expect_within_one(c, scene.name + " stereo " + plan::stereo_pass_name(pass));
         }
     }
 
@@ -183,7 +183,7 @@ class SinglePassStereo : public testing::GpuTest {
                             inputs_at(scene, m));
                 EXPECT_TRUE(has_pass(c.one.stats, "mono.forward"));  // C really drew the far part
                 expect_within_one(c, scene.name + " hybrid m = " + std::to_string(m) + " " +
-                                         modes::stereo_pass_name(pass));
+                                         plan::stereo_pass_name(pass));
             }
         }
     }
@@ -199,7 +199,7 @@ class SinglePassStereo : public testing::GpuTest {
             const modes::FrameInputs inputs = inputs_at(scene);
             const Comparison c = compare(scene, Mode::kStereo, pass, options, inputs);
             const std::string what =
-                scene.name + " stereo msaa4 " + modes::stereo_pass_name(pass) + " ";
+                scene.name + " stereo msaa4 " + plan::stereo_pass_name(pass) + " ";
             EXPECT_LE(c.difference[0], 1)
                 << what << "left: max channel difference " << c.difference[0];
 
@@ -233,7 +233,7 @@ class SinglePassStereo : public testing::GpuTest {
         const scenes::Scene scene =
             scenes::generate_scene(scenes::SceneId::Spheres, scenes::Detail::Test);
         modes::FrameInputs inputs = inputs_at(scene, 8.0);
-        inputs.debug = modes::DebugView::kRouting;
+        inputs.debug = plan::DebugView::kRouting;
         const Comparison c =
             compare(scene, Mode::kHybrid, pass, options_with(StereoPass::kTwoPasses), inputs);
         expect_within_one(c, scene.name + " hybrid m = 8 routing");
@@ -321,7 +321,7 @@ CountedFrames counted_frames(const vk_core::Context& ctx, const scenes::Scene& s
     f.right = ascending(f.right_drawn);
     f.both = ascending(f.both_drawn);
     std::cout << scene.name << " default: left " << list_text(f.left_drawn) << "\n  right "
-              << list_text(f.right_drawn) << "\n  both eyes (" << modes::stereo_pass_name(pass)
+              << list_text(f.right_drawn) << "\n  both eyes (" << plan::stereo_pass_name(pass)
               << ") " << list_text(f.both_drawn) << " of " << scene.chunks.size() << " chunks\n";
 
     Chunks either;
@@ -358,7 +358,7 @@ void print_counters(const profile::ViewStatistics& l, const profile::ViewStatist
               << l.input_primitives << ", fragments " << l.fragment_invocations
               << "; right vertices " << r.vertex_invocations << ", primitives "
               << r.input_primitives << ", fragments " << r.fragment_invocations << "\n  "
-              << modes::stereo_pass_name(pass) << ": draws " << eyes.draws << ", vertices "
+              << plan::stereo_pass_name(pass) << ": draws " << eyes.draws << ", vertices "
               << eyes.vertex_invocations << ", primitives " << eyes.input_primitives
               << ", geometry invocations " << eyes.geometry_invocations << ", geometry primitives "
               << eyes.geometry_primitives << ", fragments " << eyes.fragment_invocations << "\n";

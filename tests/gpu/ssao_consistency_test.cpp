@@ -16,8 +16,8 @@ namespace monoplane {
 namespace {
 
 using modes::Eye;
-using modes::Mode;
 using passes::SsaoVariant;
+using plan::Mode;
 
 constexpr vk::Extent2D kExtent{128, 144};
 
@@ -82,7 +82,7 @@ TEST_F(SsaoConsistency, StereoConsistentSsaoHasALowerMeanErrorOnEveryScene) {
         for (Mode mode : {Mode::kStereo, Mode::kHybrid}) {
             const Measured per_eye = measure(scene, mode, SsaoVariant::kPerView);
             const Measured stereo = measure(scene, mode, SsaoVariant::kStereoConsistent);
-            std::cout << scene.name << " " << modes::mode_name(mode) << ": mean E per-eye "
+            std::cout << scene.name << " " << plan::mode_name(mode) << ": mean E per-eye "
                       << per_eye.mean_error << ", stereo-consistent " << stereo.mean_error
                       << " over " << stereo.compared << " pixels; darkest AO " << per_eye.darkest
                       << "\n";
@@ -105,7 +105,7 @@ TEST_F(SsaoConsistency, StereoConsistentSsaoHoldsOnCantedDisplays) {
     for (Mode mode : {Mode::kStereo, Mode::kHybrid}) {
         const Measured per_eye = measure(scene, mode, SsaoVariant::kPerView, &canted);
         const Measured stereo = measure(scene, mode, SsaoVariant::kStereoConsistent, &canted);
-        std::cout << "canted-15 " << modes::mode_name(mode) << ": mean E per-eye "
+        std::cout << "canted-15 " << plan::mode_name(mode) << ": mean E per-eye "
                   << per_eye.mean_error << ", stereo-consistent " << stereo.mean_error << " over "
                   << stereo.compared << " pixels\n";
         EXPECT_GT(stereo.compared, 1000u);

@@ -34,10 +34,10 @@
 namespace monoplane {
 namespace {
 
-using modes::ImageRole;
 using passes::SsaoPass;
 using passes::SsaoVariant;
 using passes::SsaoView;
+using plan::ImageRole;
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
 using testing::GraphHarness;
@@ -189,9 +189,9 @@ bool inside(Pixel p, vk::Extent2D area) {
 }
 
 // A view's SSAO images and the linear depth it reads, as the plan's resources of `view`.
-void bind_view(GraphHarness& harness, modes::ViewId view, const SsaoView& ssao,
+void bind_view(GraphHarness& harness, plan::ViewId view, const SsaoView& ssao,
                const vk_core::Image& linear_depth) {
-    modes::PlanResources& r = harness.resources();
+    plan::PlanResources& r = harness.resources();
     harness.bind(r.image(view, ImageRole::kLinearDepth), linear_depth);
     harness.bind(r.image(view, ImageRole::kAo), ssao.ao());
     std::vector<vk_core::ImageRange> scratch;
@@ -224,29 +224,29 @@ class SsaoPassTest : public testing::GpuTest {
         const std::unique_ptr<SsaoView> right =
             pass.make_view(eyes[1].constants, eyes[1].linear_depth, extent);
         GraphHarness harness;
-        modes::PlanResources& r = harness.resources();
-        for (int e = 0; e < 2; ++e) harness.input(modes::eye_view(e), ImageRole::kLinearDepth);
+        plan::PlanResources& r = harness.resources();
+        for (int e = 0; e < 2; ++e) harness.input(plan::eye_view(e), ImageRole::kLinearDepth);
         // The plan's steps for the eyes' SSAO less its applies: record_pair records the rest.
         std::vector<graph::Step> steps =
-            modes::ssao_steps(r, variant == SsaoVariant::kStereoConsistent, false);
+            plan::ssao_steps(r, variant == SsaoVariant::kStereoConsistent, false);
         std::erase_if(steps, [](const graph::Step& s) { return s.name.ends_with(".apply"); });
-        harness.add_pass(modes::PassKind::kSsao, "ssao", std::move(steps),
+        harness.add_pass(plan::PassKind::kSsao, "ssao", std::move(steps),
                          [&](const vk::raii::CommandBuffer& cmd, passes::StepSync& sync) {
                              pass.record_pair(cmd, sync, *left, *right, kArea, variant,
                                               skip_beyond);
                          });
         std::vector<std::pair<graph::ImageHandle, graph::BufferHandle>> copies;
         for (int e = 0; e < 2; ++e) {
-            const modes::ViewId eye = modes::eye_view(e);
+            const plan::ViewId eye = plan::eye_view(e);
             copies.emplace_back(r.image(eye, ImageRole::kAo),
-                                r.buffer(eye, modes::BufferRole::kAoReadback));
+                                r.buffer(eye, plan::BufferRole::kAoReadback));
         }
         harness.add_readback(copies, [&](const vk::raii::CommandBuffer& cmd, passes::StepSync&) {
             pass.record_readback(cmd, *left);
             pass.record_readback(cmd, *right);
         });
-        bind_view(harness, modes::ViewId::kLeft, *left, eyes[0].linear_depth);
-        bind_view(harness, modes::ViewId::kRight, *right, eyes[1].linear_depth);
+        bind_view(harness, plan::ViewId::kLeft, *left, eyes[0].linear_depth);
+        bind_view(harness, plan::ViewId::kRight, *right, eyes[1].linear_depth);
         ctx().submit_and_wait([&](const vk::raii::CommandBuffer& cmd) { harness.record(cmd); });
         AoPair result{{left->ao_values(), right->ao_values()}, extent};
         EXPECT_EQ(result.ao[0].size(), std::size_t{extent.width} * extent.height);
@@ -491,28 +491,28 @@ vk_core::Image make_near_depth(const vk_core::Context& ctx, std::uint32_t near_w
 void record_ssao_and_applies(const vk_core::Context& ctx, const SsaoPass& pass, SsaoView& view,
                              const vk_core::Image& linear_depth, const vk_core::Image& everywhere,
                              const vk_core::Image& near_only, const vk_core::Image& depth) {
-    using modes::ViewId;
+    using plan::ViewId;
     GraphHarness harness;
-    modes::PlanResources& r = harness.resources();
+    plan::PlanResources& r = harness.resources();
     harness.input(ViewId::kMono, ImageRole::kLinearDepth);
     harness.input(ViewId::kMono, ImageRole::kHdr);
     harness.input(ViewId::kLeft, ImageRole::kHdr);
     harness.input(ViewId::kLeft, ImageRole::kDepth);
-    std::vector<graph::Step> steps = modes::mono_ssao_steps(r);
+    std::vector<graph::Step> steps = plan::mono_ssao_steps(r);
     graph::Step& near = steps.emplace_back();
-    near.name = "apply-near";
+    near.name = "left.apply";
     graph::StepBuilder(near)
         .use(r.image(ViewId::kMono, ImageRole::kAo), graph::Use::kSampledFragment)
         .use(r.image(ViewId::kLeft, ImageRole::kHdr), graph::Use::kColorBlend)
         .use(r.image(ViewId::kLeft, ImageRole::kDepth), graph::Use::kDepthTest);
-    harness.add_pass(modes::PassKind::kMonoSsao, "mono.ssao", std::move(steps),
+    harness.add_pass(plan::PassKind::kSsao, "mono.ssao", std::move(steps),
                      [&](const vk::raii::CommandBuffer& cmd, passes::StepSync& sync) {
                          pass.record_view(cmd, sync, view, kArea);
                          pass.record_apply(cmd, sync, view, everywhere, kArea);
-                         pass.record_apply(cmd, sync, view, near_only, kArea, &depth);
+                         pass.record_apply(cmd, sync, view, near_only, kArea, &depth, "left");
                      });
     harness.add_readback({{r.image(ViewId::kMono, ImageRole::kAo),
-                           r.buffer(ViewId::kMono, modes::BufferRole::kAoReadback)}},
+                           r.buffer(ViewId::kMono, plan::BufferRole::kAoReadback)}},
                          [&](const vk::raii::CommandBuffer& cmd, passes::StepSync&) {
                              pass.record_readback(cmd, view);
                          });

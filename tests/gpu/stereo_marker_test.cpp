@@ -25,7 +25,7 @@ TEST_F(StereoMarker, MarkerLandsOnTheAnalyticPixelInEachEye) {
 
     modes::RendererOptions options;
     options.shadow.resolution = 512;
-    modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, {width, height}, options);
+    modes::ModeRenderer stereo(ctx(), scene, plan::Mode::kStereo, {width, height}, options);
     modes::StereoViewInputs inputs;
     inputs.head.position = head;
     inputs.ipd = vive.ipd;
@@ -63,7 +63,7 @@ TEST_F(StereoMarker, PipelineStatisticsCountTheDrawnTriangles) {
     testing::finish_bounds(scene);
     modes::RendererOptions options;
     options.shadow.resolution = 256;
-    modes::ModeRenderer stereo(ctx(), scene, modes::Mode::kStereo, {64, 64}, options);
+    modes::ModeRenderer stereo(ctx(), scene, plan::Mode::kStereo, {64, 64}, options);
     modes::StereoViewInputs inputs;
     inputs.head.position = {0.0, 1.7, 0.0};
     inputs.left = inputs.right = rig::Tangents{-1.0, 1.0, -1.0, 1.0};

@@ -26,9 +26,9 @@ Reported render_two_frames(bool drop_draw_list_barrier) {
     const scenes::Scene scene = testing::marker_scene(glm::vec3(0.3f, 1.8f, -12.0f), 0.5f);
     modes::RendererOptions options;
     options.shadow.resolution = 256;
-    modes::ModeRenderer hybrid(*ctx, scene, modes::Mode::kHybrid, {96, 96}, options);
+    modes::ModeRenderer hybrid(*ctx, scene, plan::Mode::kHybrid, {96, 96}, options);
     if (drop_draw_list_barrier) {
-        hybrid.drop_barriers_for_test([](const graph::Barrier& b, const modes::FramePlan& plan) {
+        hybrid.drop_barriers_for_test([](const graph::Barrier& b, const plan::FramePlan& plan) {
             // Buffers take global memory barriers: both of the culling's buffers' go.
             return plan.resources[b.resource].kind == graph::ResourceKind::kBuffer &&
                    graph::covers(b.dst_access, graph::Access::kIndirectCommandRead);

@@ -27,8 +27,8 @@ namespace monoplane {
 namespace {
 
 using modes::Eye;
-using modes::Mode;
 using nlohmann::json;
+using plan::Mode;
 using Rgb = std::array<int, 3>;
 
 constexpr glm::dvec3 kCamera{0.0, 1.7, 0.0};
@@ -129,7 +129,7 @@ class TexturedScene : public testing::GpuTest {
         EXPECT_TRUE(loaded) << loaded.error().message;
         return std::move(loaded).value_or_throw();
     }
-    modes::RendererOptions options(modes::StereoPass pass = modes::StereoPass::kTwoPasses) const {
+    modes::RendererOptions options(plan::StereoPass pass = plan::StereoPass::kTwoPasses) const {
         modes::RendererOptions o;
         o.shadow.resolution = 256;
         o.stereo_pass = pass;
@@ -137,7 +137,7 @@ class TexturedScene : public testing::GpuTest {
     }
     // Both eyes of one frame at the file's camera.
     std::array<modes::RgbaImage, 2> render(const scenes::Scene& scene, Mode mode, double m = 8.0,
-                                           modes::StereoPass pass = modes::StereoPass::kTwoPasses) {
+                                           plan::StereoPass pass = plan::StereoPass::kTwoPasses) {
         modes::ModeRenderer renderer(ctx(), scene, mode, extent_, options(pass));
         renderer.render_frame(
             testing::profile_inputs(vive_, scene.find_viewpoint("default")->head, m));
@@ -233,10 +233,9 @@ TEST_F(TexturedScene, TexelsLandWhereTheirCoordinatesSayAndDecodeFromSrgb) {
     const auto hybrid = render(textured_scene, Mode::kHybrid, 1.5);
     const auto hybrid_reference = render(reference_scene, Mode::kHybrid, 1.5);
     // Single-pass stereo draws what two passes draw.
-    const auto gs = render(textured_scene, Mode::kStereo, 8.0, modes::StereoPass::kGeometryShader);
+    const auto gs = render(textured_scene, Mode::kStereo, 8.0, plan::StereoPass::kGeometryShader);
     // Instanced stereo's right eye is instance 1: its texture is still the base instance's chunk's.
-    const auto instanced =
-        render(textured_scene, Mode::kStereo, 8.0, modes::StereoPass::kInstanced);
+    const auto instanced = render(textured_scene, Mode::kStereo, 8.0, plan::StereoPass::kInstanced);
     for (Eye eye : {Eye::kLeft, Eye::kRight}) {
         const auto e = static_cast<std::size_t>(eye);
         for (int q = 0; q < 4; ++q) {

@@ -11,8 +11,8 @@
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/profile/driver_compiles.h"
-#include "rig/pose_path.h"
 #include "renderer/vk/pipeline.h"
+#include "rig/pose_path.h"
 #include "scenes/generate.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/gpu/profile_inputs.h"
@@ -37,7 +37,7 @@ class TurningHead : public testing::GpuTest {
         renderer.finish_frames();
     }
 
-    void expect_no_compiles_after_warmup(modes::Mode mode, const modes::RendererOptions& options) {
+    void expect_no_compiles_after_warmup(plan::Mode mode, const modes::RendererOptions& options) {
         const scenes::Scene scene =
             scenes::generate_scene(scenes::SceneId::Landscape, scenes::Detail::Test, 5);
         const rig::Pose start = scene.viewpoints.front().head;
@@ -62,14 +62,14 @@ class TurningHead : public testing::GpuTest {
 };
 
 TEST_F(TurningHead, StereoCompilesNothingAfterWarmup) {
-    expect_no_compiles_after_warmup(modes::Mode::kStereo, {});
+    expect_no_compiles_after_warmup(plan::Mode::kStereo, {});
 }
 
 TEST_F(TurningHead, HybridWithTaaAndStereoSsaoCompilesNothingAfterWarmup) {
     modes::RendererOptions options;
-    options.anti_aliasing = modes::AntiAliasing::kTaa;
+    options.anti_aliasing = plan::AntiAliasing::kTaa;
     options.ssao = passes::SsaoVariant::kStereoConsistent;
-    expect_no_compiles_after_warmup(modes::Mode::kHybrid, options);
+    expect_no_compiles_after_warmup(plan::Mode::kHybrid, options);
 }
 
 TEST_F(TurningHead, TheProbeCountsTheDriversCompilesOfANewPipeline) {
@@ -79,7 +79,7 @@ TEST_F(TurningHead, TheProbeCountsTheDriversCompilesOfANewPipeline) {
         scenes::generate_scene(scenes::SceneId::Beams, scenes::Detail::Test, 5);
     const std::uint64_t pipelines_before = vk_core::pipelines_created();
     const profile::DriverCompiles before = profile::driver_compiles();
-    modes::ModeRenderer renderer(ctx(), scene, modes::Mode::kStereo, vk::Extent2D(32, 32), {});
+    modes::ModeRenderer renderer(ctx(), scene, plan::Mode::kStereo, vk::Extent2D(32, 32), {});
     renderer.render_frame(testing::profile_inputs(vive_, scene.viewpoints.front().head));
     const profile::DriverCompiles during =
         profile::compiles_between(before, profile::driver_compiles());

@@ -212,9 +212,9 @@ TEST_F(EyeDepthWriterTest, NoSourceIsInfinityEverywhere) {
 // eye's linear depth, read back or written, holds zeros there.
 struct RendererCase {
     const char* name;
-    modes::Mode mode;
-    modes::AntiAliasing aa;
-    modes::StereoPass stereo_pass;
+    plan::Mode mode;
+    plan::AntiAliasing aa;
+    plan::StereoPass stereo_pass;
     bool ssao;
     bool read_back_depth;
 };
@@ -224,16 +224,16 @@ class EyeDepthBehindRenderer : public EyeDepthWriterTest,
 
 TEST_P(EyeDepthBehindRenderer, WritesTheRenderersDepth) {
     const RendererCase& c = GetParam();
-    if (c.stereo_pass == modes::StereoPass::kMultiview &&
+    if (c.stereo_pass == plan::StereoPass::kMultiview &&
         (!ctx().capabilities().multiview ||
          ctx().device_info().name.find("llvmpipe") != std::string::npos)) {
         GTEST_SKIP() << "multiview is missing or defective on " << ctx().device_info().name;
     }
-    if (c.stereo_pass == modes::StereoPass::kGeometryShader &&
+    if (c.stereo_pass == plan::StereoPass::kGeometryShader &&
         !ctx().capabilities().geometry_shader) {
         GTEST_SKIP() << "the device has no geometry shader";
     }
-    if (c.stereo_pass == modes::StereoPass::kInstanced &&
+    if (c.stereo_pass == plan::StereoPass::kInstanced &&
         !(ctx().capabilities().vertex_shader_layer &&
           ctx().capabilities().shader_draw_parameters)) {
         GTEST_SKIP() << "the device cannot write gl_Layer from a vertex shader";
@@ -293,22 +293,22 @@ TEST_P(EyeDepthBehindRenderer, WritesTheRenderersDepth) {
 INSTANTIATE_TEST_SUITE_P(
     Configurations, EyeDepthBehindRenderer,
     ::testing::Values(
-        RendererCase{"StereoPlain", modes::Mode::kStereo, modes::AntiAliasing::kNone,
-                     modes::StereoPass::kTwoPasses, false, false},
-        RendererCase{"HybridPlain", modes::Mode::kHybrid, modes::AntiAliasing::kNone,
-                     modes::StereoPass::kTwoPasses, false, false},
-        RendererCase{"HybridTaaSsao", modes::Mode::kHybrid, modes::AntiAliasing::kTaa,
-                     modes::StereoPass::kTwoPasses, true, false},
-        RendererCase{"HybridReadBack", modes::Mode::kHybrid, modes::AntiAliasing::kNone,
-                     modes::StereoPass::kTwoPasses, false, true},
-        RendererCase{"StereoMsaa4", modes::Mode::kStereo, modes::AntiAliasing::kMsaa4,
-                     modes::StereoPass::kTwoPasses, false, false},
-        RendererCase{"StereoMultiviewMsaa4", modes::Mode::kStereo, modes::AntiAliasing::kMsaa4,
-                     modes::StereoPass::kMultiview, false, false},
-        RendererCase{"StereoGsTaa", modes::Mode::kStereo, modes::AntiAliasing::kTaa,
-                     modes::StereoPass::kGeometryShader, false, false},
-        RendererCase{"StereoInstancedMsaa4", modes::Mode::kStereo, modes::AntiAliasing::kMsaa4,
-                     modes::StereoPass::kInstanced, false, false}),
+        RendererCase{"StereoPlain", plan::Mode::kStereo, plan::AntiAliasing::kNone,
+                     plan::StereoPass::kTwoPasses, false, false},
+        RendererCase{"HybridPlain", plan::Mode::kHybrid, plan::AntiAliasing::kNone,
+                     plan::StereoPass::kTwoPasses, false, false},
+        RendererCase{"HybridTaaSsao", plan::Mode::kHybrid, plan::AntiAliasing::kTaa,
+                     plan::StereoPass::kTwoPasses, true, false},
+        RendererCase{"HybridReadBack", plan::Mode::kHybrid, plan::AntiAliasing::kNone,
+                     plan::StereoPass::kTwoPasses, false, true},
+        RendererCase{"StereoMsaa4", plan::Mode::kStereo, plan::AntiAliasing::kMsaa4,
+                     plan::StereoPass::kTwoPasses, false, false},
+        RendererCase{"StereoMultiviewMsaa4", plan::Mode::kStereo, plan::AntiAliasing::kMsaa4,
+                     plan::StereoPass::kMultiview, false, false},
+        RendererCase{"StereoGsTaa", plan::Mode::kStereo, plan::AntiAliasing::kTaa,
+                     plan::StereoPass::kGeometryShader, false, false},
+        RendererCase{"StereoInstancedMsaa4", plan::Mode::kStereo, plan::AntiAliasing::kMsaa4,
+                     plan::StereoPass::kInstanced, false, false}),
     [](const ::testing::TestParamInfo<RendererCase>& info) { return info.param.name; });
 
 }  // namespace

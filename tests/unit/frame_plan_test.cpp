@@ -24,7 +24,7 @@
 #include "renderer/plan/frame_plan.h"
 #include "renderer/plan/render_choices.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 
 // gtest's printer for draws in failure messages ("sky if mono-any").
 void PrintTo(const PlannedDraw& draw, std::ostream* os) {
@@ -104,9 +104,17 @@ bool contains(const std::vector<std::string>& list, const std::string& item) {
     return std::find(list.begin(), list.end(), item) != list.end();
 }
 
+// The pass the plan shows by that name (render --json's "pass"), or nullptr.
+const PlannedPass* named(const FramePlan& plan, const std::string& name) {
+    for (const PlannedPass& pass : plan.passes) {
+        if (pass.name == name) return &pass;
+    }
+    return nullptr;
+}
+
 // The draws of a pass the plan must have.
 Draws draws_of(const FramePlan& plan, const std::string& name) {
-    const PlannedPass* pass = plan.find(name);
+    const PlannedPass* pass = named(plan, name);
     if (pass == nullptr) {
         ADD_FAILURE() << "no pass " << name;
         return {};
@@ -116,7 +124,7 @@ Draws draws_of(const FramePlan& plan, const std::string& name) {
 
 // Whether the plan has that pass and leaves it out with a reason.
 bool skipped_with_reason(const FramePlan& plan, const std::string& name) {
-    const PlannedPass* pass = plan.find(name);
+    const PlannedPass* pass = named(plan, name);
     return pass != nullptr && pass->skipped.has_value() && !pass->skipped->empty();
 }
 
@@ -144,8 +152,8 @@ void expect_same_pass(const FramePlan& pa, const PlannedPass& a, const FramePlan
 // the eye's HDR image.
 void expect_fused(const FramePlan& plan, bool conditional, const std::string& context) {
     for (const std::string eye : {"left", "right"}) {
-        const PlannedPass* composite = plan.find(eye + ".composite");
-        const PlannedPass* tonemap = plan.find(eye + ".tonemap");
+        const PlannedPass* composite = named(plan, eye + ".composite");
+        const PlannedPass* tonemap = named(plan, eye + ".tonemap");
         ASSERT_NE(composite, nullptr) << context;
         ASSERT_NE(tonemap, nullptr) << context;
         EXPECT_FALSE(composite->skipped.has_value()) << context;
@@ -186,12 +194,12 @@ TEST(FramePlan, StereoTwoPassesRunsCullingShadowForwardTonemapReadback) {
         const Draws eye = {{DrawStep::kChunks, kAlways}, {DrawStep::kSky, kAlways}};
         EXPECT_EQ(draws_of(plan, "left.forward"), eye);
         EXPECT_EQ(draws_of(plan, "right.forward"), eye);
-        ASSERT_NE(plan.find("left.forward"), nullptr);
-        EXPECT_EQ(plan.find("left.forward")->view, ViewId::kLeft);
-        EXPECT_EQ(plan.find("right.forward")->view, ViewId::kRight);
-        EXPECT_EQ(plan.find("left.forward")->kind, PassKind::kForward);
+        ASSERT_NE(named(plan, "left.forward"), nullptr);
+        EXPECT_EQ(named(plan, "left.forward")->view, ViewId::kLeft);
+        EXPECT_EQ(named(plan, "right.forward")->view, ViewId::kRight);
+        EXPECT_EQ(named(plan, "left.forward")->kind, PassKind::kForward);
         // Stereo has no pass of C at all, not even a skipped one.
-        for (const std::string& name : kMonoPasses) EXPECT_EQ(plan.find(name), nullptr) << name;
+        for (const std::string& name : kMonoPasses) EXPECT_EQ(named(plan, name), nullptr) << name;
         for (const PlannedPass* pass : plan.executed()) EXPECT_EQ(pass->when, kAlways);
     }
 }
@@ -270,16 +278,16 @@ TEST(FramePlan, HybridOcclusionCullWithConditionalRendering) {
     const Draws eye = {{DrawStep::kChunks, kAlways}, {DrawStep::kSky, kMonoNone}};
     EXPECT_EQ(draws_of(plan, "left.forward"), eye);
     EXPECT_EQ(draws_of(plan, "right.forward"), eye);
-    ASSERT_NE(plan.find("mono.forward"), nullptr);
-    EXPECT_EQ(plan.find("mono.forward")->view, ViewId::kMono);
+    ASSERT_NE(named(plan, "mono.forward"), nullptr);
+    EXPECT_EQ(named(plan, "mono.forward")->view, ViewId::kMono);
     // C's passes wait for the GPU's verdict: the pyramid and its culling only when C has
     // something and an eye drew something, the composites only when C has something.
-    EXPECT_EQ(plan.find("depth_pyramid")->when, kMonoDepthTested);
-    EXPECT_EQ(plan.find("occlusion_culling")->when, kMonoDepthTested);
-    EXPECT_EQ(plan.find("left.composite")->when, kMonoAny);
-    EXPECT_EQ(plan.find("right.composite")->when, kMonoAny);
-    EXPECT_EQ(plan.find("left.composite")->view, ViewId::kLeft);
-    EXPECT_EQ(plan.find("right.composite")->view, ViewId::kRight);
+    EXPECT_EQ(named(plan, "depth_pyramid")->when, kMonoDepthTested);
+    EXPECT_EQ(named(plan, "occlusion_culling")->when, kMonoDepthTested);
+    EXPECT_EQ(named(plan, "left.composite")->when, kMonoAny);
+    EXPECT_EQ(named(plan, "right.composite")->when, kMonoAny);
+    EXPECT_EQ(named(plan, "left.composite")->view, ViewId::kLeft);
+    EXPECT_EQ(named(plan, "right.composite")->view, ViewId::kRight);
 }
 
 TEST(FramePlan, HybridWithoutConditionalRenderingPredicatesNothingAndEyesDrawNoSky) {
@@ -309,8 +317,8 @@ TEST(FramePlan, DiscardBuildsThePyramidButDoesNotOcclusionCull) {
         EXPECT_EQ(plan.executed_names(),
                   without(without(kHybridList, {"occlusion_culling"}), fused));
         EXPECT_TRUE(skipped_with_reason(plan, "occlusion_culling"));
-        ASSERT_NE(plan.find("depth_pyramid"), nullptr);
-        EXPECT_FALSE(plan.find("depth_pyramid")->skipped.has_value());
+        ASSERT_NE(named(plan, "depth_pyramid"), nullptr);
+        EXPECT_FALSE(named(plan, "depth_pyramid")->skipped.has_value());
         const Draws mono = {{DrawStep::kMaskHidden, conditional ? kMonoDepthTested : kAlways},
                             {DrawStep::kChunks, kAlways},
                             {DrawStep::kSky, conditional ? kMonoAny : kAlways}};
@@ -330,8 +338,8 @@ TEST(FramePlan, NoOptNeitherBuildsThePyramidNorMasks) {
         const Draws mono = {{DrawStep::kChunks, kAlways},
                             {DrawStep::kSky, conditional ? kMonoAny : kAlways}};
         EXPECT_EQ(draws_of(plan, "mono.forward"), mono);
-        ASSERT_NE(plan.find("mono.forward"), nullptr);
-        EXPECT_FALSE(contains(plan.reads(*plan.find("mono.forward")), "merged_depth"));
+        ASSERT_NE(named(plan, "mono.forward"), nullptr);
+        EXPECT_FALSE(contains(plan.reads(*named(plan, "mono.forward")), "merged_depth"));
     }
 }
 
@@ -361,7 +369,7 @@ TEST(FramePlan, SinglePassStereoDrawsBothEyesInOneForwardPass) {
         const Names expected = {"culling",      "shadow",        "eyes.forward",
                                 "left.tonemap", "right.tonemap", "readback"};
         EXPECT_EQ(plan.executed_names(), expected) << stereo_pass_name(stereo_pass);
-        const PlannedPass* eyes = plan.find("eyes.forward");
+        const PlannedPass* eyes = named(plan, "eyes.forward");
         ASSERT_NE(eyes, nullptr);
         EXPECT_EQ(eyes->kind, PassKind::kForward);
         EXPECT_EQ(eyes->view, ViewId::kEyes);
@@ -414,10 +422,10 @@ TEST(FramePlan, TaaResolvesEachEyeBeforeItsTonemap) {
                         // The resolve sees the composited image.
                         EXPECT_GT(taa, index_of(names, eye + ".composite")) << context;
                     }
-                    const PlannedPass* tonemap = plan.find(eye + ".tonemap");
+                    const PlannedPass* tonemap = named(plan, eye + ".tonemap");
                     ASSERT_NE(tonemap, nullptr);
                     EXPECT_TRUE(contains(plan.reads(*tonemap), eye + ".history")) << context;
-                    const PlannedPass* resolve = plan.find(eye + ".taa");
+                    const PlannedPass* resolve = named(plan, eye + ".taa");
                     EXPECT_EQ(resolve->kind, PassKind::kTaa);
                     EXPECT_EQ(view_name(resolve->view), eye);
                 }
@@ -476,7 +484,7 @@ TEST(FramePlan, SsaoRunsAfterTheCompositesAndMonoSsaoRightAfterMonoForward) {
                     EXPECT_GT(ssao, index_of(names, name)) << context << " " << name;
                 }
                 if (mode == Mode::kStereo) {
-                    EXPECT_EQ(plan.find("mono.ssao"), nullptr) << context;
+                    EXPECT_EQ(named(plan, "mono.ssao"), nullptr) << context;
                     continue;
                 }
                 EXPECT_GT(ssao, index_of(names, "left.composite")) << context;
@@ -594,13 +602,13 @@ TEST(FramePlan, MonoTonemapOnlyWhenReadBack) {
     const FramePlan plan = plan_of(options, frame_with(false), true);
     EXPECT_TRUE(skipped_with_reason(plan, "mono.tonemap"));
     EXPECT_EQ(plan.executed_names(), without(kHybridList, {"mono.tonemap"}));
-    ASSERT_NE(plan.find("readback"), nullptr);
-    EXPECT_FALSE(contains(plan.reads(*plan.find("readback")), "mono.display"));
+    ASSERT_NE(named(plan, "readback"), nullptr);
+    EXPECT_FALSE(contains(plan.reads(*named(plan, "readback")), "mono.display"));
 
     const FramePlan read = plan_of(options_for(Mode::kHybrid), frame_with(false), true);
-    ASSERT_NE(read.find("mono.tonemap"), nullptr);
-    EXPECT_FALSE(read.find("mono.tonemap")->skipped.has_value());
-    EXPECT_TRUE(contains(read.reads(*read.find("readback")), "mono.display"));
+    ASSERT_NE(named(read, "mono.tonemap"), nullptr);
+    EXPECT_FALSE(named(read, "mono.tonemap")->skipped.has_value());
+    EXPECT_TRUE(contains(read.reads(*named(read, "readback")), "mono.display"));
 }
 
 // One full-screen pass per eye (issue 33): where nothing but the eye's tone mapping reads its HDR
@@ -659,8 +667,8 @@ TEST(FramePlan, TaaSsaoOrSeparateTonemapKeepTheToneMappingAPassOfItsOwn) {
                         mode_name(mode) + " " + stereo_pass_name(stereo_pass) + " reader " +
                         std::to_string(reader) + " conditional " + std::to_string(conditional);
                     for (const std::string eye : {"left", "right"}) {
-                        const PlannedPass* composite = plan.find(eye + ".composite");
-                        const PlannedPass* tonemap = plan.find(eye + ".tonemap");
+                        const PlannedPass* composite = named(plan, eye + ".composite");
+                        const PlannedPass* tonemap = named(plan, eye + ".tonemap");
                         ASSERT_NE(composite, nullptr) << context;
                         ASSERT_NE(tonemap, nullptr) << context;
                         EXPECT_FALSE(composite->writes_display) << context;
@@ -703,7 +711,7 @@ TEST(FramePlan, WithoutACompositeTheTonemapAlwaysRunsAndSeparateTonemapChangesNo
                                      context);
                 }
                 for (const std::string eye : {"left", "right"}) {
-                    const PlannedPass* tonemap = plan.find(eye + ".tonemap");
+                    const PlannedPass* tonemap = named(plan, eye + ".tonemap");
                     ASSERT_NE(tonemap, nullptr) << context;
                     EXPECT_FALSE(tonemap->skipped.has_value()) << context;
                     EXPECT_EQ(tonemap->when, kAlways) << context;
@@ -755,14 +763,14 @@ TEST(FramePlan, BlendedChunksDrawLastAndInHybridAfterTheComposite) {
         EXPECT_EQ(draws_of(plan, "mono.forward").back(),
                   (PlannedDraw{DrawStep::kBlended, kAlways}));
         for (const std::string e : {"left", "right"}) {
-            const PlannedPass* pass = plan.find(e + ".transparency");
+            const PlannedPass* pass = named(plan, e + ".transparency");
             ASSERT_NE(pass, nullptr);
             EXPECT_EQ(pass->kind, PassKind::kTransparency);
             EXPECT_EQ(pass->when, kAlways);  // an eye's own blended chunks, whatever C drew
             EXPECT_EQ(plan.reads(*pass), (Names{"draw_lists", "predicates", "shadow_map",
                                                 e + ".linear_depth", e + ".hdr"}));
             EXPECT_EQ(plan.writes(*pass), (Names{e + ".hdr"}));
-            EXPECT_FALSE(plan.find(e + ".composite")->writes_display) << e;
+            EXPECT_FALSE(named(plan, e + ".composite")->writes_display) << e;
         }
         // Nothing beyond m: stereo's passes and draws exactly, blended chunks in the forward
         // passes.
@@ -798,7 +806,7 @@ TEST(FramePlan, AutoMonoPlaneCountsTheEyesFinalDepthBeforeTheReadBack) {
         std::vector<std::string> expected = plain.executed_names();
         expected.insert(expected.end() - 1, "depth_histogram");
         EXPECT_EQ(counted.executed_names(), expected);
-        const PlannedPass* pass = counted.find("depth_histogram");
+        const PlannedPass* pass = named(counted, "depth_histogram");
         ASSERT_NE(pass, nullptr);
         EXPECT_EQ(pass->kind, PassKind::kDepthHistogram);
         EXPECT_EQ(counted.reads(*pass),
@@ -870,7 +878,7 @@ std::vector<Combination> all_combinations() {
 // Persistent across frames: what a pass may read that no pass of this frame wrote.
 bool persistent_input(const std::string& resource, const FramePlan& plan) {
     if (resource == "left.history_previous" || resource == "right.history_previous") return true;
-    const PlannedPass* shadow = plan.find("shadow");
+    const PlannedPass* shadow = named(plan, "shadow");
     return resource == "shadow_map" && shadow != nullptr && shadow->skipped.has_value();
 }
 
@@ -928,13 +936,75 @@ TEST(FramePlan, EveryReadIsPrecededByAWriteOverAllOptions) {
     }
 }
 
+// Every planned pass is named by its kind and view alone, the name reads back to them, and
+// the plan finds each pass by kind and view: the names the documentation and bench.json show.
+TEST(FramePlan, PassesAreFoundByKindAndViewAndTheirNamesReadBack) {
+    for (const Combination& c : all_combinations()) {
+        const FramePlan plan = plan_of(c.options, c.frame, c.conditional);
+        for (const PlannedPass& pass : plan.passes) {
+            EXPECT_EQ(pass.name, pass_name(pass.kind, pass.view)) << c.text();
+            const auto parsed = parse_pass_name(pass.name);
+            ASSERT_TRUE(parsed.has_value()) << pass.name;
+            EXPECT_EQ(parsed->first, pass.kind) << pass.name;
+            EXPECT_EQ(parsed->second, pass.view) << pass.name;
+            EXPECT_EQ(plan.find(pass.kind, pass.view), &pass) << pass.name << " " << c.text();
+            EXPECT_EQ(plan.runs(pass.kind, pass.view), !pass.skipped.has_value()) << pass.name;
+        }
+    }
+    // The names as the pages and bench.json spell them, written out here.
+    EXPECT_EQ(pass_name(PassKind::kSsao, ViewId::kMono), "mono.ssao");
+    EXPECT_EQ(pass_name(PassKind::kSsao, ViewId::kNone), "ssao");
+    EXPECT_EQ(pass_name(PassKind::kForward, ViewId::kEyes), "eyes.forward");
+    EXPECT_EQ(pass_name(PassKind::kDepthPyramid, ViewId::kNone), "depth_pyramid");
+    EXPECT_EQ(pass_name(PassKind::kTransparency, ViewId::kRight), "right.transparency");
+    for (const char* unknown : {"", "forward.left", "left.", ".forward", "left.unknown",
+                                "nobody.forward", "left.forward.x"}) {
+        EXPECT_FALSE(parse_pass_name(unknown).has_value()) << unknown;
+    }
+    const FramePlan stereo = plan_of(options_for(Mode::kStereo), frame_with(false), false);
+    EXPECT_EQ(stereo.find(PassKind::kComposite, ViewId::kLeft), nullptr);
+    EXPECT_FALSE(stereo.runs(PassKind::kComposite, ViewId::kLeft));
+    EXPECT_EQ(stereo.find(PassKind::kForward), nullptr) << "the eyes' forward passes have views";
+}
+
+// runs_only_in_hybrid against the plans themselves: a pass is hybrid's alone exactly when the
+// stereo plan of the same options and frame has no pass of that kind and view.
+TEST(FramePlan, RunsOnlyInHybridIsWhatStereoPlansNeverHave) {
+    std::set<std::string> seen;
+    for (const Combination& c : all_combinations()) {
+        if (c.options.mode == Mode::kStereo) continue;
+        PlanOptions stereo_options = c.options;
+        stereo_options.mode = Mode::kStereo;
+        const FramePlan stereo = plan_of(stereo_options, c.frame, c.conditional);
+        const FramePlan hybrid = plan_of(c.options, c.frame, c.conditional);
+        for (const PlannedPass& pass : hybrid.passes) {
+            const bool in_stereo = stereo.find(pass.kind, pass.view) != nullptr;
+            EXPECT_EQ(runs_only_in_hybrid(pass.kind, pass.view), !in_stereo)
+                << pass.name << " " << c.text();
+            if (!in_stereo) seen.insert(pass.name);
+        }
+    }
+    // The list the auto mono plane's chooser once kept by hand lacked C's SSAO.
+    const std::set<std::string> expected = {
+        "mono.forward",      "depth_pyramid",      "occlusion_culling",
+        "mono.ssao",         "left.composite",     "right.composite",
+        "left.transparency", "right.transparency", "mono.tonemap"};
+    EXPECT_EQ(seen, expected);
+}
+
 TEST(FramePlan, NamesOfKindsPredicatesAndStepsAreNonEmptyAndDistinct) {
-    const std::vector<PassKind> kinds = {
-        PassKind::kCulling,      PassKind::kShadow,           PassKind::kForward,
-        PassKind::kDepthPyramid, PassKind::kOcclusionCulling, PassKind::kMonoSsao,
-        PassKind::kComposite,    PassKind::kTransparency,     PassKind::kSsao,
-        PassKind::kTaa,          PassKind::kTonemap,          PassKind::kDepthHistogram,
-        PassKind::kReadback};
+    const std::vector<PassKind> kinds = {PassKind::kCulling,
+                                         PassKind::kShadow,
+                                         PassKind::kForward,
+                                         PassKind::kDepthPyramid,
+                                         PassKind::kOcclusionCulling,
+                                         PassKind::kComposite,
+                                         PassKind::kTransparency,
+                                         PassKind::kSsao,
+                                         PassKind::kTaa,
+                                         PassKind::kTonemap,
+                                         PassKind::kDepthHistogram,
+                                         PassKind::kReadback};
     const std::vector<GpuPredicate> predicates = {GpuPredicate::kAlways, GpuPredicate::kMonoAny,
                                                   GpuPredicate::kMonoNone,
                                                   GpuPredicate::kMonoDepthTested};
@@ -1038,4 +1108,4 @@ TEST(FramePlanPrint, ArchitecturePageShowsThePlansAsTheCodeMakesThem) {
 }
 
 }  // namespace
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -13,7 +13,7 @@
 
 #include "renderer/plan/lod_selection.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 namespace {
 
 // A Vulkan-style off-axis projection (clip z in [0, w], y down) from the frustum's tangents at
@@ -151,4 +151,4 @@ TEST(LodSelection, ModeNames) {
 }
 
 }  // namespace
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -7,12 +7,13 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "renderer/plan/mono_plane_chooser.h"
 #include "rig/angular_error.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -224,5 +225,38 @@ TEST(MonoPlaneChooser, RefusesWhatTheBudgetSearchRefuses) {
     EXPECT_FALSE(chooser.next(vive(), kInf));
 }
 
+// The chooser's "hybrid only" cost is what a stereo frame would not do, C's SSAO included; C's
+// forward pass is counted apart, and the eyes' transparency passes not at all (their chunks a
+// stereo frame draws in its forward passes). Each pass gets its own power of two in ms, so the
+// sums say exactly which passes were counted.
+TEST(MonoPlaneChooser, FrameCostCountsEveryPassOnlyHybridDoes) {
+    const std::vector<std::pair<PassKind, ViewId>> passes = {
+        {PassKind::kCulling, ViewId::kNone},      {PassKind::kShadow, ViewId::kNone},
+        {PassKind::kForward, ViewId::kLeft},      {PassKind::kForward, ViewId::kRight},
+        {PassKind::kDepthPyramid, ViewId::kNone}, {PassKind::kOcclusionCulling, ViewId::kNone},
+        {PassKind::kForward, ViewId::kMono},      {PassKind::kSsao, ViewId::kMono},
+        {PassKind::kComposite, ViewId::kLeft},    {PassKind::kComposite, ViewId::kRight},
+        {PassKind::kTransparency, ViewId::kLeft}, {PassKind::kSsao, ViewId::kNone},
+        {PassKind::kTaa, ViewId::kLeft},          {PassKind::kTonemap, ViewId::kLeft},
+        {PassKind::kTonemap, ViewId::kMono},      {PassKind::kReadback, ViewId::kNone}};
+    FrameCost cost;
+    for (std::size_t i = 0; i < passes.size(); ++i) {
+        add_pass_time(cost, passes[i].first, passes[i].second,
+                      std::ldexp(1.0, static_cast<int>(i)));
+    }
+    EXPECT_TRUE(cost.hybrid);
+    EXPECT_EQ(cost.mono_forward_ms, std::ldexp(1.0, 6));
+    // depth_pyramid 2^4, occlusion_culling 2^5, mono.ssao 2^7, the composites 2^8 and 2^9,
+    // mono.tonemap 2^14.
+    EXPECT_EQ(cost.hybrid_only_ms, std::ldexp(1.0, 4) + std::ldexp(1.0, 5) + std::ldexp(1.0, 7) +
+                                       std::ldexp(1.0, 8) + std::ldexp(1.0, 9) +
+                                       std::ldexp(1.0, 14));
+    FrameCost stereo;
+    add_pass_time(stereo, PassKind::kForward, ViewId::kLeft, 3.0);
+    add_pass_time(stereo, PassKind::kSsao, ViewId::kNone, 2.0);
+    EXPECT_FALSE(stereo.hybrid);
+    EXPECT_EQ(stereo.hybrid_only_ms, 0.0);
+}
+
 }  // namespace
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

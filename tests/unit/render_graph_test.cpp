@@ -918,7 +918,7 @@ TEST(HazardChecker, AcceptsAHandWrittenCorrectFrameAndReportsEachMissingPiece) {
 }  // namespace
 }  // namespace monoplane::graph
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 namespace {
 
 using graph::Access;
@@ -930,7 +930,7 @@ using graph::Stage;
 using Problems = std::vector<std::string>;
 
 constexpr Stage kDepthTests = Stage::kEarlyFragmentTests | Stage::kLateFragmentTests;
-constexpr std::array<ViewId, 2> kEyes = {ViewId::kLeft, ViewId::kRight};
+constexpr std::array<ViewId, 2> kEyes = kEyeViews;
 
 // One combination of the plan's inputs.
 struct Combination {
@@ -1257,8 +1257,9 @@ void expect_taa_frames(const Combination& c, const FramePlan& plan) {
     for (ViewId eye : kEyes) {
         const std::uint16_t previous = handle_of(plan, eye, ImageRole::kHistoryPrevious);
         const std::uint16_t history = handle_of(plan, eye, ImageRole::kHistory);
-        const std::string taa = view_name(eye) + ".taa";
-        EXPECT_EQ(plan.reads(*plan.find(taa)),
+        const std::string taa =
+            view_name(eye) + ".taa";  // the pass's name, as barriers_on gives it
+        EXPECT_EQ(plan.reads(*plan.find(PassKind::kTaa, eye)),
                   (std::vector<std::string>{view_name(eye) + ".hdr", view_name(eye) + ".velocity",
                                             view_name(eye) + ".linear_depth",
                                             view_name(eye) + ".history_previous"}))
@@ -1393,17 +1394,18 @@ TEST(PlanCulling, MonoTonemapRunsWithReadBack) {
         options.mode = Mode::kHybrid;
         options.read_back = true;
         const FramePlan plan = plan_frame(options, PlanFrame{}, PlanDevice{conditional});
-        const PlannedPass* tonemap = plan.find("mono.tonemap");
+        const PlannedPass* tonemap = plan.find(PassKind::kTonemap, ViewId::kMono);
         ASSERT_NE(tonemap, nullptr);
         EXPECT_FALSE(tonemap->skipped.has_value()) << *tonemap->skipped;
-        const std::vector<std::string> reads = plan.reads(*plan.find("readback"));
+        const std::vector<std::string> reads = plan.reads(*plan.find(PassKind::kReadback));
         EXPECT_NE(std::find(reads.begin(), reads.end(), "mono.display"), reads.end());
         options.read_back = false;
         const FramePlan unread = plan_frame(options, PlanFrame{}, PlanDevice{conditional});
-        ASSERT_NE(unread.find("mono.tonemap"), nullptr);
-        EXPECT_EQ(unread.find("mono.tonemap")->skipped, "culled: nothing reads mono.display");
+        const PlannedPass* unread_tonemap = unread.find(PassKind::kTonemap, ViewId::kMono);
+        ASSERT_NE(unread_tonemap, nullptr);
+        EXPECT_EQ(unread_tonemap->skipped, "culled: nothing reads mono.display");
     }
 }
 
 }  // namespace
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

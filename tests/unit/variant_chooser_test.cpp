@@ -7,7 +7,7 @@
 
 #include "renderer/plan/variant_chooser.h"
 
-namespace monoplane::modes {
+namespace monoplane::plan {
 namespace {
 
 // Renders `frames` frames, each costing what `cost` says for the variant the chooser picked;
@@ -85,9 +85,9 @@ TEST(VariantChooser, TiesKeepTheSimplerVariantAndResetMeasuresAgain) {
 }
 
 TEST(VariantChooser, RefusesATrialWithoutCountedRounds) {
-    EXPECT_THROW(VariantChooser({1, 10}), std::invalid_argument);
-    EXPECT_THROW(VariantChooser({3, 0}), std::invalid_argument);
+    EXPECT_DEATH(VariantChooser({1, 10}), "programming error.*rounds_per_trial >= 2");
+    EXPECT_DEATH(VariantChooser({3, 0}), "programming error.*exploit_frames >= 1");
 }
 
 }  // namespace
-}  // namespace monoplane::modes
+}  // namespace monoplane::plan

@@ -1,9 +1,10 @@
 #include "renderer/passes/composite/composite_pass.h"
 
 #include <array>
-#include <cassert>
 #include <vector>
 
+#include "common/programming_error.h"
+#include "renderer/executor/image_layouts.h"
 #include "renderer/passes/forward/forward_pass.h"
 
 namespace monoplane::passes {
@@ -44,7 +45,7 @@ void begin_over_eye_depth(const vk::raii::CommandBuffer& cmd,
                           vk::ArrayProxy<const vk::RenderingAttachmentInfo> colors,
                           const vk_core::Image& eye_depth, vk::Extent2D extent) {
     const vk::RenderingAttachmentInfo depth(
-        eye_depth.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
+        eye_depth.view(), executor::layout_for(graph::Use::kDepthTest), {}, {}, {},
         vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
     cmd.beginRendering(vk::RenderingInfo()
                            .setRenderArea(vk::Rect2D({0, 0}, extent))
@@ -92,7 +93,7 @@ CompositePass::CompositePass(const vk_core::Context& ctx, bool velocity, bool di
     behind_near_content_ = vk_core::make_graphics_pipeline(ctx, desc);
     desc.depth_test = false;
     everywhere_ = vk_core::make_graphics_pipeline(ctx, desc);
-    assert(!(velocity && display));
+    MONOPLANE_EXPECTS(!(velocity && display));
     if (display) make_display_pipelines(desc);
 }
 
@@ -144,12 +145,14 @@ void CompositePass::record(const vk::raii::CommandBuffer& cmd, const CompositeTa
     const vk::Extent2D extent = targets.hdr.desc().extent;
     std::vector<vk::RenderingAttachmentInfo> colors;
     std::vector<const vk_core::Image*> written = {&targets.hdr, &targets.linear_depth};
-    assert(!velocity_ || targets.velocity != nullptr);
+    MONOPLANE_EXPECTS(!velocity_ || targets.velocity != nullptr);
     if (velocity_) written.push_back(targets.velocity);
     for (const vk_core::Image* image : written) {
-        colors.emplace_back(image->view(), vk::ImageLayout::eColorAttachmentOptimal,
-                            vk::ResolveModeFlagBits::eNone, nullptr, vk::ImageLayout::eUndefined,
-                            vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
+        colors.push_back(vk::RenderingAttachmentInfo()
+                             .setImageView(image->view())
+                             .setImageLayout(executor::layout_for(graph::Use::kColorBlend))
+                             .setLoadOp(vk::AttachmentLoadOp::eLoad)
+                             .setStoreOp(vk::AttachmentStoreOp::eStore));
     }
     begin_over_eye_depth(cmd, colors, targets.depth, extent);
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
@@ -165,18 +168,18 @@ void CompositePass::record_display(const vk::raii::CommandBuffer& cmd,
                                    vk::DescriptorSet mono_set, vk::DescriptorSet eye_set,
                                    const CompositeParams& params,
                                    const TonemapParams& tonemap) const {
-    assert(writes_display());
+    MONOPLANE_EXPECTS(writes_display());
     const vk::Extent2D extent = targets.display.desc().extent;
     // Every pixel is written by one of the two draws: the display image's contents need no load.
     const std::array colors = {
-        vk::RenderingAttachmentInfo(
-            targets.display.view(), vk::ImageLayout::eColorAttachmentOptimal,
-            vk::ResolveModeFlagBits::eNone, nullptr, vk::ImageLayout::eUndefined,
-            vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore),
-        vk::RenderingAttachmentInfo(
-            targets.linear_depth.view(), vk::ImageLayout::eColorAttachmentOptimal,
-            vk::ResolveModeFlagBits::eNone, nullptr, vk::ImageLayout::eUndefined,
-            vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore)};
+        vk::RenderingAttachmentInfo(targets.display.view(),
+                                    executor::layout_for(graph::Use::kColorWrite),
+                                    vk::ResolveModeFlagBits::eNone, nullptr, {},
+                                    vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore),
+        vk::RenderingAttachmentInfo(targets.linear_depth.view(),
+                                    executor::layout_for(graph::Use::kColorBlend),
+                                    vk::ResolveModeFlagBits::eNone, nullptr, {},
+                                    vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore)};
     begin_over_eye_depth(cmd, colors, targets.depth, extent);
     const std::array sets = {mono_set, eye_set};
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *display_layout_, 0, sets, {});
@@ -194,11 +197,11 @@ void CompositePass::record_display(const vk::raii::CommandBuffer& cmd,
 }
 
 vk_core::DescriptorSet CompositePass::make_eye_input(const vk_core::Image& eye_hdr) const {
-    assert(writes_display());
+    MONOPLANE_EXPECTS(writes_display());
     const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1)};
     vk_core::DescriptorSet set(ctx_, *eye_set_layout_, sizes);
-    const std::array images = {vk::DescriptorImageInfo(*nearest_, eye_hdr.view(),
-                                                       vk::ImageLayout::eShaderReadOnlyOptimal)};
+    const std::array images = {vk::DescriptorImageInfo(
+        *nearest_, eye_hdr.view(), executor::layout_for(graph::Use::kSampledFragment))};
     vk_core::write_sampled_images(ctx_, *set, images);
     return set;
 }
@@ -206,12 +209,12 @@ vk_core::DescriptorSet CompositePass::make_eye_input(const vk_core::Image& eye_h
 vk_core::DescriptorSet CompositePass::make_source(const vk_core::Image& mono_hdr,
                                                   const vk_core::Image& mono_linear_depth,
                                                   const vk_core::Image* mono_velocity) const {
-    assert(velocity_ == (mono_velocity != nullptr));
+    MONOPLANE_EXPECTS(velocity_ == (mono_velocity != nullptr));
     const std::uint32_t count = velocity_ ? 3u : 2u;
     const std::array sizes = {
         vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, count)};
     vk_core::DescriptorSet set(ctx_, *set_layout_, sizes);
-    const auto read_only = vk::ImageLayout::eShaderReadOnlyOptimal;
+    const auto read_only = executor::layout_for(graph::Use::kSampledFragment);
     std::vector images = {
         vk::DescriptorImageInfo(*bilinear_, mono_hdr.view(), read_only),
         vk::DescriptorImageInfo(*nearest_, mono_linear_depth.view(), read_only),

@@ -3,10 +3,11 @@
 #include <algorithm>
 
 #include <cstring>
-#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
+#include "common/programming_error.h"
+#include "renderer/executor/image_layouts.h"
 #include "renderer/vk/pipeline.h"
 
 namespace monoplane::passes {
@@ -213,7 +214,8 @@ void ChunkCullingPass::write_descriptors() const {
 }
 
 void ChunkCullingPass::set_merged_depth(vk::ImageView pyramid, vk::Sampler nearest) const {
-    const vk::DescriptorImageInfo info(nearest, pyramid, vk::ImageLayout::eGeneral);
+    const vk::DescriptorImageInfo info(nearest, pyramid,
+                                       executor::layout_for(graph::Use::kGeneralSampled));
     const vk::WriteDescriptorSet write(*set_, 4, 0, vk::DescriptorType::eCombinedImageSampler,
                                        info);
     ctx_.device().updateDescriptorSets(write, {});
@@ -239,12 +241,12 @@ void ChunkCullingPass::set_frame(const CullFrame& frame, vk_core::FrameUploads& 
         static_cast<float>(frame.mono_viewport.x), static_cast<float>(frame.mono_viewport.y),
         static_cast<float>(frame.hidden_depth_threshold), static_cast<float>(frame.pyramid_mips));
     for (std::size_t v = 0; v < frame.lod_views.size(); ++v) {
-        const modes::LodView& lod = frame.lod_views[v];
+        const plan::LodView& lod = frame.lod_views[v];
         c.lod_views[2 * v] = glm::vec4(glm::vec3(lod.position), lod.pixels_per_tangent);
         c.lod_views[2 * v + 1] = glm::vec4(glm::vec3(lod.forward), lod.max_tangent_squared);
     }
     c.lod = glm::vec4(static_cast<float>(frame.lod_error_px),
-                      static_cast<float>(modes::kLodCoarsenFraction), 0.0f, 0.0f);
+                      static_cast<float>(plan::kLodCoarsenFraction), 0.0f, 0.0f);
     c.classes = glm::uvec4(class_base(MONOPLANE_CLASS_OPAQUE), class_base(MONOPLANE_CLASS_MASKED),
                            class_base(MONOPLANE_CLASS_BLENDED), 0u);
     uploads.stage(constants_, &c, sizeof(c));
@@ -252,9 +254,8 @@ void ChunkCullingPass::set_frame(const CullFrame& frame, vk_core::FrameUploads& 
 
 void ChunkCullingPass::set_draw_order(std::span<const std::uint32_t> order,
                                       vk_core::FrameUploads& uploads) {
-    if (order.size() != chunk_count_) {
-        throw std::invalid_argument("the draw order is not a permutation of the chunks");
-    }
+    // The draw order is a permutation of the chunks.
+    MONOPLANE_EXPECTS(order.size() == chunk_count_);
     if (!order.empty()) uploads.stage(order_, order.data(), order.size_bytes());
 }
 

@@ -48,7 +48,7 @@ struct CullFrame {
     bool split_blended = false;
     // Level of detail (renderer/plan/lod_selection.h): each drawn view's projection of errors,
     // and the budget in pixels (0: every chunk at full detail).
-    std::array<modes::LodView, MONOPLANE_CULL_VIEWS> lod_views{};
+    std::array<plan::LodView, MONOPLANE_CULL_VIEWS> lod_views{};
     double lod_error_px = 0.0;
 };
 
@@ -80,7 +80,7 @@ class ChunkCullingPass {
     void set_frame(const CullFrame& frame, vk_core::FrameUploads& uploads);
     // Stages the order in which the chunks are walked and their draws listed: a permutation of
     // the chunk indices (front_to_back_order). The buffer keeps it for later frames: call before
-    // the first frame and when the order changes (throws std::invalid_argument for a wrong size).
+    // the first frame and when the order changes (a wrong size is a programming error).
     void set_draw_order(std::span<const std::uint32_t> order, vk_core::FrameUploads& uploads);
 
     // Phase 0: all views' lists; phase 1: C's list again, with occlusion culling. The render graph

@@ -1,10 +1,11 @@
 #include "renderer/passes/depth_histogram/depth_histogram_pass.h"
 
 #include <bit>
-#include <cassert>
 #include <cmath>
 #include <cstring>
 
+#include "common/programming_error.h"
+#include "renderer/executor/image_layouts.h"
 #include "renderer/vk/pipeline.h"
 
 namespace monoplane::passes {
@@ -30,7 +31,7 @@ struct Push {
 DepthHistogramPass::DepthHistogramPass(const vk_core::Context& ctx, std::uint32_t slots,
                                        double near, double far)
     : ctx_(ctx), near_(near), far_(far) {
-    assert(near > 0.0 && far > near && slots > 0);
+    MONOPLANE_EXPECTS(near > 0.0 && far > near && slots > 0);
     nearest_ = vk::raii::Sampler(
         ctx.device(),
         vk::SamplerCreateInfo({}, vk::Filter::eNearest, vk::Filter::eNearest,
@@ -68,7 +69,7 @@ void DepthHistogramPass::set_eye_depths(std::array<vk::ImageView, 2> linear_dept
     for (std::size_t s = 0; s < sets_.size(); ++s) {
         for (std::size_t e = 0; e < 2; ++e) {
             const vk::DescriptorImageInfo image(*nearest_, linear_depth[e],
-                                                vk::ImageLayout::eShaderReadOnlyOptimal);
+                                                executor::layout_for(graph::Use::kSampledCompute));
             const vk::DescriptorBufferInfo buffer(buffers_[s].handle(), 0, kBytes);
             const std::array writes = {
                 vk::WriteDescriptorSet(*sets_[s][e], 0, 0,
@@ -82,10 +83,10 @@ void DepthHistogramPass::set_eye_depths(std::array<vk::ImageView, 2> linear_dept
 
 void DepthHistogramPass::record(const vk::raii::CommandBuffer& cmd, StepSync& sync,
                                 std::uint32_t slot) const {
-    assert(slot < buffers_.size() && extent_.width > 0);
-    sync.next(cmd);  // clear
+    MONOPLANE_EXPECTS(slot < buffers_.size() && extent_.width > 0);
+    sync.next(cmd, "clear");
     cmd.fillBuffer(buffers_[slot].handle(), 0, kBytes, 0u);
-    sync.next(cmd);  // count
+    sync.next(cmd, "count");
     cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_);
     const Push push{static_cast<float>(std::log(near_)),
                     static_cast<float>(MONOPLANE_DEPTH_HISTOGRAM_BINS / std::log(far_ / near_)),
@@ -98,14 +99,14 @@ void DepthHistogramPass::record(const vk::raii::CommandBuffer& cmd, StepSync& sy
     }
 }
 
-modes::DepthHistogram DepthHistogramPass::result(std::uint32_t slot) const {
-    assert(slot < buffers_.size());
+plan::DepthHistogram DepthHistogramPass::result(std::uint32_t slot) const {
+    MONOPLANE_EXPECTS(slot < buffers_.size());
     std::array<std::uint32_t, MONOPLANE_DEPTH_HISTOGRAM_WORDS> words{};
     std::memcpy(words.data(), buffers_[slot].mapped(), kBytes);
-    modes::DepthHistogram histogram;
+    plan::DepthHistogram histogram;
     histogram.near = near_;
     histogram.far = far_;
-    for (int b = 0; b < modes::DepthHistogram::kBins; ++b) {
+    for (int b = 0; b < plan::DepthHistogram::kBins; ++b) {
         histogram.counts[static_cast<std::size_t>(b)] = words[static_cast<std::size_t>(b)];
     }
     histogram.sky = words[MONOPLANE_DEPTH_HISTOGRAM_SKY_WORD];

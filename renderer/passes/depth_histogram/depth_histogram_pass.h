@@ -26,7 +26,7 @@ class DepthHistogramPass {
     // begun with sync.next().
     void record(const vk::raii::CommandBuffer& cmd, StepSync& sync, std::uint32_t slot) const;
     // The slot's histogram; call once its frame has completed.
-    modes::DepthHistogram result(std::uint32_t slot) const;
+    plan::DepthHistogram result(std::uint32_t slot) const;
 
   private:
     const vk_core::Context& ctx_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 
+#include "renderer/executor/image_layouts.h"
 #include "renderer/vk/memory.h"
 #include "renderer/vk/pipeline.h"
 
@@ -137,7 +138,8 @@ void DepthPyramidPass::create_image(vk::Extent2D extent) {
     const vk::DescriptorSetLayout merge_layout = *merge_layout_;
     merge_set_ = std::move(vk::raii::DescriptorSets(
         ctx_.device(), vk::DescriptorSetAllocateInfo(*pool_, merge_layout))[0]);
-    const vk::DescriptorImageInfo level2(nullptr, *mip_views_[0], vk::ImageLayout::eGeneral);
+    const vk::DescriptorImageInfo level2(nullptr, *mip_views_[0],
+                                         executor::layout_for(graph::Use::kStorageWrite));
     ctx_.device().updateDescriptorSets(
         vk::WriteDescriptorSet(*merge_set_, 1, 0, Type::eStorageImage, level2), {});
     for (std::uint32_t mip = 1; mip < mips_; ++mip) {
@@ -145,8 +147,9 @@ void DepthPyramidPass::create_image(vk::Extent2D extent) {
         reduce_sets_.push_back(std::move(vk::raii::DescriptorSets(
             ctx_.device(), vk::DescriptorSetAllocateInfo(*pool_, reduce_layout))[0]));
         const vk::DescriptorImageInfo finer(nullptr, *mip_views_[mip - 1],
-                                            vk::ImageLayout::eGeneral);
-        const vk::DescriptorImageInfo coarser(nullptr, *mip_views_[mip], vk::ImageLayout::eGeneral);
+                                            executor::layout_for(graph::Use::kStorageWrite));
+        const vk::DescriptorImageInfo coarser(nullptr, *mip_views_[mip],
+                                              executor::layout_for(graph::Use::kStorageWrite));
         const std::array writes = {
             vk::WriteDescriptorSet(*reduce_sets_.back(), 0, 0, Type::eStorageImage, finer),
             vk::WriteDescriptorSet(*reduce_sets_.back(), 1, 0, Type::eStorageImage, coarser),
@@ -178,10 +181,13 @@ void DepthPyramidPass::set_eye_depths(vk::ImageView left, vk::ImageView right,
         vk_core::initialise_image(ctx_, blocks_image());
     }
     const std::array depths = {
-        vk::DescriptorImageInfo(*nearest_, left, vk::ImageLayout::eDepthReadOnlyOptimal),
-        vk::DescriptorImageInfo(*nearest_, right, vk::ImageLayout::eDepthReadOnlyOptimal),
+        vk::DescriptorImageInfo(*nearest_, left,
+                                executor::layout_for(graph::Use::kDepthSampledCompute)),
+        vk::DescriptorImageInfo(*nearest_, right,
+                                executor::layout_for(graph::Use::kDepthSampledCompute)),
     };
-    const vk::DescriptorImageInfo blocks_info(nullptr, *blocks_view_, vk::ImageLayout::eGeneral);
+    const vk::DescriptorImageInfo blocks_info(nullptr, *blocks_view_,
+                                              executor::layout_for(graph::Use::kStorageWrite));
     const std::array writes = {
         vk::WriteDescriptorSet(*merge_set_, 0, 0, vk::DescriptorType::eCombinedImageSampler,
                                depths),
@@ -203,19 +209,19 @@ void DepthPyramidPass::record(const vk::raii::CommandBuffer& cmd, StepSync& sync
         }
     }
     with_predicate(cmd, when, [&] {
-        sync.next(cmd);  // blocks
+        sync.next(cmd, "blocks");
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *merge_pipeline_layout_, 0,
                                *merge_set_, {});
         cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *blocks_);
         cmd.dispatch(groups(blocks_extent_.width), groups(blocks_extent_.height), 2);
-        sync.next(cmd);  // merge
+        sync.next(cmd, "merge");
         cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *merge_);
         cmd.pushConstants<std::array<glm::vec4, 6>>(*merge_pipeline_layout_,
                                                     vk::ShaderStageFlagBits::eCompute, 0, rows);
         cmd.dispatch(groups(extent_.width), groups(extent_.height), 1);
         cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *reduce_);
         for (std::uint32_t mip = 1; mip < mips_; ++mip) {
-            sync.next(cmd);  // reduce (again, per level)
+            sync.next(cmd, "reduce");  // again, per level
             cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *reduce_pipeline_layout_, 0,
                                    *reduce_sets_[mip - 1], {});
             cmd.dispatch(groups(std::max(extent_.width >> mip, 1u)),
@@ -225,11 +231,18 @@ void DepthPyramidPass::record(const vk::raii::CommandBuffer& cmd, StepSync& sync
 }
 
 vk_core::ImageRange DepthPyramidPass::pyramid_image() const {
-    return {*image_, vk::ImageAspectFlagBits::eColor, 0, 1, mips_, vk::ImageLayout::eGeneral};
+    return {*image_, vk::ImageAspectFlagBits::eColor,
+            0,       1,
+            mips_,   executor::layout_for(graph::Use::kStorageWrite)};
 }
 
 vk_core::ImageRange DepthPyramidPass::blocks_image() const {
-    return {*blocks_image_, vk::ImageAspectFlagBits::eColor, 0, 2, 1, vk::ImageLayout::eGeneral};
+    return {*blocks_image_,
+            vk::ImageAspectFlagBits::eColor,
+            0,
+            2,
+            1,
+            executor::layout_for(graph::Use::kStorageWrite)};
 }
 
 }  // namespace monoplane::passes

@@ -1,29 +1,30 @@
 #include "renderer/passes/forward/forward_pass.h"
 
 #include <array>
-#include <cassert>
 #include <cstddef>
 #include <vector>
 
+#include "common/programming_error.h"
 #include "common/result.h"
+#include "renderer/executor/image_layouts.h"
 #include "renderer/passes/forward/forward_shaders.h"
 
 namespace monoplane::passes {
 namespace {
 
-void require_stereo_support(const vk_core::Context& ctx, StereoDuplication stereo) {
-    if (stereo == StereoDuplication::kGeometryShader && !ctx.capabilities().geometry_shader) {
+void require_stereo_support(const vk_core::Context& ctx, plan::StereoPass stereo) {
+    if (stereo == plan::StereoPass::kGeometryShader && !ctx.capabilities().geometry_shader) {
         throw UserError("device '" + ctx.device_info().name +
                         "' has no geometry shaders: single-pass stereo by primitive duplication "
                         "(stereo-gs, --stereo-pass gs) is not available; try multiview");
     }
-    if (stereo == StereoDuplication::kMultiview && !ctx.capabilities().multiview) {
+    if (stereo == plan::StereoPass::kMultiview && !ctx.capabilities().multiview) {
         throw UserError("device '" + ctx.device_info().name +
                         "' has no VK_KHR_multiview: stereo-multiview (--stereo-pass multiview) is "
                         "not available; try gs");
     }
     const vk_core::DeviceCapabilities& caps = ctx.capabilities();
-    if (stereo == StereoDuplication::kInstanced &&
+    if (stereo == plan::StereoPass::kInstanced &&
         !(caps.vertex_shader_layer && caps.shader_draw_parameters)) {
         throw UserError("device '" + ctx.device_info().name + "' " +
                         (caps.vertex_shader_layer ? "has no shaderDrawParameters"
@@ -36,11 +37,11 @@ void require_stereo_support(const vk_core::Context& ctx, StereoDuplication stere
 
 // Set 0: the view constants (read by the geometry shader too in the GS form) and the shadow map.
 vk::raii::DescriptorSetLayout make_view_set_layout(const vk_core::Context& ctx,
-                                                   StereoDuplication stereo) {
+                                                   plan::StereoPass stereo) {
     using Stage = vk::ShaderStageFlagBits;
     const vk::ShaderStageFlags constant_stages =
         Stage::eVertex | Stage::eFragment |
-        (stereo == StereoDuplication::kGeometryShader ? Stage::eGeometry : vk::ShaderStageFlags());
+        (stereo == plan::StereoPass::kGeometryShader ? Stage::eGeometry : vk::ShaderStageFlags());
     const std::array bindings = {
         vk::DescriptorSetLayoutBinding(0, vk::DescriptorType::eUniformBuffer, 1, constant_stages),
         vk::DescriptorSetLayoutBinding(1, vk::DescriptorType::eCombinedImageSampler, 1,
@@ -97,7 +98,7 @@ vk_core::GraphicsPipelineDesc shared_pipeline_desc(vk::PipelineLayout layout,
     if (config.velocity) desc.color_formats.push_back(ForwardPass::kVelocityFormat);
     desc.depth_format = ForwardPass::kDepthFormat;
     desc.samples = config.samples;
-    desc.view_mask = config.stereo == StereoDuplication::kMultiview ? 0b11u : 0u;
+    desc.view_mask = config.stereo == plan::StereoPass::kMultiview ? 0b11u : 0u;
     return desc;
 }
 
@@ -111,15 +112,15 @@ vk::RenderingAttachmentInfo color_attachment(const vk_core::Image& image,
                                              const vk_core::Image* multisampled,
                                              vk::AttachmentLoadOp load,
                                              const vk::ClearColorValue& clear) {
-    vk::RenderingAttachmentInfo info(image.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {},
-                                     {}, load, vk::AttachmentStoreOp::eStore,
+    vk::RenderingAttachmentInfo info(image.view(), executor::layout_for(graph::Use::kColorWrite),
+                                     {}, {}, {}, load, vk::AttachmentStoreOp::eStore,
                                      vk::ClearValue(clear));
     if (multisampled) {
         // Draw into the samples, keep only their average: the samples are never read again.
         info.setImageView(multisampled->view())
             .setResolveMode(vk::ResolveModeFlagBits::eAverage)
             .setResolveImageView(image.view())
-            .setResolveImageLayout(vk::ImageLayout::eColorAttachmentOptimal)
+            .setResolveImageLayout(executor::layout_for(graph::Use::kColorWrite))
             .setStoreOp(vk::AttachmentStoreOp::eDontCare);
     }
     return info;
@@ -143,7 +144,7 @@ Attachments make_attachments(const ForwardTargets& targets, bool velocity) {
     }
     const vk_core::Image& depth_image = ms ? ms->depth : targets.depth;
     attachments.depth = vk::RenderingAttachmentInfo(
-        depth_image.view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
+        depth_image.view(), executor::layout_for(graph::Use::kDepthWrite), {}, {}, {},
         vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
         vk::ClearValue(vk::ClearDepthStencilValue(0.0f, 0)));  // reversed Z: far is 0
     return attachments;
@@ -182,14 +183,14 @@ vk::PipelineColorBlendAttachmentState over_blend() {
 // Single-pass stereo draws both layers of the targets: every draw covers both views with
 // multiview; otherwise the geometry shader picks the layer of each triangle it emits, or the
 // vertex shader that of each instance.
-vk::RenderingInfo rendering_info(vk::Extent2D area, StereoDuplication stereo,
+vk::RenderingInfo rendering_info(vk::Extent2D area, plan::StereoPass stereo,
                                  const Attachments& attachments) {
     const bool layered =
-        stereo == StereoDuplication::kGeometryShader || stereo == StereoDuplication::kInstanced;
+        stereo == plan::StereoPass::kGeometryShader || stereo == plan::StereoPass::kInstanced;
     return vk::RenderingInfo()
         .setRenderArea(vk::Rect2D({0, 0}, area))
         .setLayerCount(layered ? 2 : 1)
-        .setViewMask(stereo == StereoDuplication::kMultiview ? 0b11u : 0u)
+        .setViewMask(stereo == plan::StereoPass::kMultiview ? 0b11u : 0u)
         .setColorAttachments(attachments.colors)
         .setPDepthAttachment(&attachments.depth);
 }
@@ -291,7 +292,7 @@ void ForwardPass::make_alpha_pipelines(const ForwardShaders& shaders,
     // depth buffer (the shader tests the composite's linear depth), clamped rather than clipped
     // at the eyes' far plane m.
     if (!ctx_.capabilities().depth_clamp || multisampled ||
-        config_.stereo != StereoDuplication::kNone) {
+        config_.stereo != plan::StereoPass::kTwoPasses) {
         return;
     }
     const vk::raii::ShaderModule after = vk_core::make_shader(ctx_, shaders.after_composite);
@@ -315,7 +316,7 @@ void ForwardPass::make_fullscreen_pipelines() {
     sky.depth_write = false;
     sky.depth_compare = vk::CompareOp::eEqual;
     sky_pipeline_ = vk_core::make_graphics_pipeline(ctx_, sky);
-    if (config_.stereo != StereoDuplication::kNone) return;
+    if (config_.stereo != plan::StereoPass::kTwoPasses) return;
 
     // Every pixel at once, whatever the depth; only the hidden ones survive the discard.
     const vk::raii::ShaderModule mask_frag = vk_core::make_shader(ctx_, shaders.mask_hidden);
@@ -332,9 +333,11 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
                          vk::DescriptorSet view_set, vk::DescriptorSet merged_depth_set,
                          const SceneGeometry& geometry, const SceneTextures& textures,
                          const ChunkDraws& chunks, std::span<const ForwardDraw> steps) const {
-    assert((config_.samples != vk::SampleCountFlagBits::e1) == (targets.multisample != nullptr));
-    assert(!config_.velocity || targets.velocity != nullptr);
-    assert(targets.hdr.desc().layers == (config_.stereo == StereoDuplication::kNone ? 1u : 2u));
+    MONOPLANE_EXPECTS((config_.samples != vk::SampleCountFlagBits::e1) ==
+                      (targets.multisample != nullptr));
+    MONOPLANE_EXPECTS(!config_.velocity || targets.velocity != nullptr);
+    MONOPLANE_EXPECTS(targets.hdr.desc().layers ==
+                      (config_.stereo == plan::StereoPass::kTwoPasses ? 1u : 2u));
     const Attachments attachments = make_attachments(targets, config_.velocity);
     cmd.beginRendering(rendering_info(targets.area, config_.stereo, attachments));
     vk_core::set_viewport_and_scissor(cmd, targets.area);
@@ -347,36 +350,37 @@ void ForwardPass::record(const vk::raii::CommandBuffer& cmd, const ForwardTarget
         with_predicate(cmd, draw.when,
                        [&] { record_step(cmd, draw.step, prepassed, merged_depth_set, chunks); });
         // A predicated pre-pass runs under the same predicate as the chunk steps after it.
-        if (draw.step == ForwardStep::kDepthPrepass) prepassed = true;
+        if (draw.step == plan::DrawStep::kDepthPrepass) prepassed = true;
     }
     cmd.endRendering();
 }
 
-void ForwardPass::record_step(const vk::raii::CommandBuffer& cmd, ForwardStep step, bool prepassed,
-                              vk::DescriptorSet merged_depth_set, const ChunkDraws& chunks) const {
+void ForwardPass::record_step(const vk::raii::CommandBuffer& cmd, plan::DrawStep step,
+                              bool prepassed, vk::DescriptorSet merged_depth_set,
+                              const ChunkDraws& chunks) const {
     switch (step) {
-        case ForwardStep::kMaskHidden:
-            assert(*mask_hidden_pipeline_);
+        case plan::DrawStep::kMaskHidden:
+            MONOPLANE_EXPECTS(*mask_hidden_pipeline_);
             cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1, merged_depth_set,
                                    {});
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *mask_hidden_pipeline_);
             cmd.draw(3, 1, 0, 0);
             break;
-        case ForwardStep::kDepthPrepass:
+        case plan::DrawStep::kDepthPrepass:
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *depth_prepass_pipeline_);
             chunks.opaque.record(cmd);
             if (chunks.masked.max_draws == 0) break;
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *masked_prepass_pipeline_);
             chunks.masked.record(cmd);
             break;
-        case ForwardStep::kChunks:
+        case plan::DrawStep::kChunks:
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, shading_pipelines_.pick(prepassed));
             chunks.opaque.record(cmd);
             if (chunks.masked.max_draws == 0) break;
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, masked_pipelines_.pick(prepassed));
             chunks.masked.record(cmd);
             break;
-        case ForwardStep::kChunksShowRouting:
+        case plan::DrawStep::kChunksShowRouting:
             // Masked chunks drawn whole: the debug view shows routing, not surfaces.
             cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 1, merged_depth_set,
                                    {});
@@ -385,13 +389,13 @@ void ForwardPass::record_step(const vk::raii::CommandBuffer& cmd, ForwardStep st
             chunks.opaque.record(cmd);
             chunks.masked.record(cmd);
             break;
-        case ForwardStep::kBlended:
+        case plan::DrawStep::kBlended:
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *blended_pipeline_);
             chunks.blended.record(cmd);
             break;
-        case ForwardStep::kSky: {
+        case plan::DrawStep::kSky: {
             // Instanced stereo draws the full-screen triangle once per eye, as it does each chunk.
-            const std::uint32_t instances = config_.stereo == StereoDuplication::kInstanced ? 2 : 1;
+            const std::uint32_t instances = config_.stereo == plan::StereoPass::kInstanced ? 2 : 1;
             cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *sky_pipeline_);
             cmd.draw(3, instances, 0, 0);
             break;
@@ -407,7 +411,7 @@ vk_core::DescriptorSet ForwardPass::make_view_set(const vk_core::Buffer& constan
     vk_core::DescriptorSet set(ctx_, *set_layout_, sizes);
     const vk::DescriptorBufferInfo constants_info(constants.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorImageInfo shadow_info(shadow_sampler, shadow,
-                                              vk::ImageLayout::eShaderReadOnlyOptimal);
+                                              executor::layout_for(graph::Use::kSampledFragment));
     const std::array writes = {
         vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eUniformBuffer, {}, constants_info),
         vk::WriteDescriptorSet(*set, 1, 0, vk::DescriptorType::eCombinedImageSampler, shadow_info),
@@ -423,9 +427,9 @@ void ForwardPass::record_after_composite(const vk::raii::CommandBuffer& cmd,
                                          const SceneGeometry& geometry,
                                          const SceneTextures& textures,
                                          const IndirectDraws& blended) const {
-    assert(*after_composite_pipeline_);
+    MONOPLANE_EXPECTS(*after_composite_pipeline_);
     const vk::RenderingAttachmentInfo color(
-        targets.hdr.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
+        targets.hdr.view(), executor::layout_for(graph::Use::kColorBlend), {}, {}, {},
         vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore, {});
     cmd.beginRendering(vk::RenderingInfo()
                            .setRenderArea(vk::Rect2D({0, 0}, targets.area))
@@ -451,7 +455,7 @@ vk_core::DescriptorSet ForwardPass::make_composite_depth_set(vk::ImageView linea
     }
     vk_core::DescriptorSet set = make_merged_depth_set();
     const vk::DescriptorImageInfo depth(nearest, linear_depth,
-                                        vk::ImageLayout::eShaderReadOnlyOptimal);
+                                        executor::layout_for(graph::Use::kSampledFragment));
     ctx_.device().updateDescriptorSets(
         vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eCombinedImageSampler, depth), {});
     return set;
@@ -465,7 +469,8 @@ vk_core::DescriptorSet ForwardPass::make_merged_depth_set() const {
 
 void ForwardPass::write_merged_depth(const vk_core::DescriptorSet& set, vk::ImageView pyramid,
                                      vk::Sampler nearest, vk::Buffer routing) const {
-    const vk::DescriptorImageInfo merged(nearest, pyramid, vk::ImageLayout::eGeneral);
+    const vk::DescriptorImageInfo merged(nearest, pyramid,
+                                         executor::layout_for(graph::Use::kGeneralSampled));
     const vk::DescriptorBufferInfo routing_info(routing, 0, VK_WHOLE_SIZE);
     const std::array writes = {
         vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eCombinedImageSampler, merged),

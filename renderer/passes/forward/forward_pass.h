@@ -12,6 +12,8 @@
 #include "renderer/passes/shared/scene_geometry.h"
 #include "renderer/passes/shared/scene_textures.h"
 #include "renderer/passes/shared/view_constants.h"
+#include "renderer/plan/frame_plan.h"
+#include "renderer/plan/render_choices.h"
 #include "renderer/vk/buffer.h"
 #include "renderer/vk/descriptor_set.h"
 #include "renderer/vk/image.h"
@@ -55,23 +57,19 @@ struct AfterCompositeTargets {
     vk::Extent2D area;
 };
 
-// How one forward pass draws both eyes, or kNone for a pass drawing one view. With a form, the
-// targets are two-layer images (layer 0 the left eye, 1 the right) and set 0's constants are both
-// eyes' ViewConstants in that order (renderer/passes/shared/view_block.glsl).
-enum class StereoDuplication {
-    kNone,
-    kMultiview,       // VK_KHR_multiview: every draw covers both layers, gl_ViewIndex picks the eye
-    kGeometryShader,  // papers/001: vertices shaded once, each triangle emitted into both layers
-    // Unity's Single Pass Instanced, Unreal's Instanced Stereo: each draw of the both-eyes list has
-    // two instances (CullFrame::both_eyes_instances); the vertex shader takes the eye from the
-    // instance index minus the base instance (the chunk's index) and writes that eye's layer.
-    kInstanced,
-};
+// How one forward pass draws both eyes (plan::StereoPass): kTwoPasses is a pass of one view. With
+// another form, the targets are two-layer images (layer 0 the left eye, 1 the right) and set 0's
+// constants are both eyes' ViewConstants in that order (renderer/passes/shared/view_block.glsl).
+// kMultiview: every draw covers both layers, gl_ViewIndex picks the eye. kGeometryShader
+// (papers/001): vertices shaded once, each triangle emitted into both layers. kInstanced (Unity's
+// Single Pass Instanced, Unreal's Instanced Stereo): each draw of the both-eyes list has two
+// instances (CullFrame::both_eyes_instances); the vertex shader takes the eye from the instance
+// index minus the base instance (the chunk's index) and writes that eye's layer.
 
 struct ForwardConfig {
     bool velocity = false;  // write screen-space velocity (TAA)
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;  // MSAA (stereo modes)
-    StereoDuplication stereo = StereoDuplication::kNone;
+    plan::StereoPass stereo = plan::StereoPass::kTwoPasses;
     // The benchmark's vertex-heavy configuration: rounds of synthetic per-vertex work that leave
     // the image unchanged (forward_vertex.glsl); 0 in normal rendering.
     std::uint32_t vertex_work = 0;
@@ -81,25 +79,9 @@ struct ForwardConfig {
     bool blended_chunks = false;
 };
 
-// What a forward pass draws, in order; each step may run under a GPU predicate.
-// With kDepthPrepass first, the chunk steps after it test depth for equality and write none, so
-// each visible pixel is shaded about once whatever the draw order (docs/benchmarks.md measures
-// the fragments it saves); without it they test and write as usual. The chunk steps draw the
-// opaque chunks, then the masked ones (alphaMode MASK: fragments below the cut-off dropped, with
-// MSAA alpha to coverage); kBlended draws the blended ones last.
-enum class ForwardStep {
-    kMaskHidden,         // C only, before the pre-pass: pixels hidden in both eyes at depth 1
-    kDepthPrepass,       // the view's chunk list, depth only (no fragment shader)
-    kChunks,             // the view's chunk list, every fragment shaded
-    kSky,                // the sky where nothing was drawn
-    kChunksShowRouting,  // the debug view "routing": chunks coloured by the lists they are in
-    // The view's blended chunks (alphaMode BLEND) in the list's order, back to front, over what
-    // the steps before drew: depth tested, not written; colour blended by the base colour's
-    // alpha (glTF: straight alpha, "over"); linear depth and velocity keep what lies behind.
-    kBlended,
-};
+// One step of a forward pass (plan::DrawStep says what each draws), under a GPU predicate or not.
 struct ForwardDraw {
-    ForwardStep step = ForwardStep::kChunks;
+    plan::DrawStep step = plan::DrawStep::kChunks;
     std::optional<Predicate> when;
 };
 
@@ -145,7 +127,7 @@ class ForwardPass {
 
     // Hybrid: the blended chunks of one eye's list, back to front, after the composite, with
     // depth clamping instead of clipping at the eye's far plane m, so a pane straddling m is
-    // drawn whole. A pass of one view (StereoDuplication::kNone) only; expects the HDR image in
+    // drawn whole. A pass of one view (plan::StereoPass::kTwoPasses) only; expects the HDR image in
     // eColorAttachmentOptimal and leaves it there.
     void record_after_composite(const vk::raii::CommandBuffer& cmd,
                                 const AfterCompositeTargets& targets, vk::DescriptorSet view_set,
@@ -176,7 +158,7 @@ class ForwardPass {
                                const vk_core::GraphicsPipelineDesc& prepass,
                                std::span<const std::uint32_t> masked_depth_spirv);
     // One step of record, inside the rendering; prepassed: a depth pre-pass came before it.
-    void record_step(const vk::raii::CommandBuffer& cmd, ForwardStep step, bool prepassed,
+    void record_step(const vk::raii::CommandBuffer& cmd, plan::DrawStep step, bool prepassed,
                      vk::DescriptorSet merged_depth_set, const ChunkDraws& chunks) const;
 
     const vk_core::Context& ctx_;

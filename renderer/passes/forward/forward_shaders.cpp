@@ -157,7 +157,7 @@ ForwardShaders forward_shaders(const ForwardConfig& config) {
     shaders.masked_depth = multisampled ? Spirv(kAlphaToCoverageFrag) : Spirv(kAlphaTestFrag);
     FragmentShaders fragment;
     switch (config.stereo) {
-        case StereoDuplication::kNone:
+        case plan::StereoPass::kTwoPasses:
             shaders.vertex = kForwardVert;
             shaders.show_routing_vertex = kForwardShowRoutingVert;
             fragment = {kForwardFrag,
@@ -168,7 +168,7 @@ ForwardShaders forward_shaders(const ForwardConfig& config) {
                         kSkyVelocityFrag,
                         kForwardAfterCompositeFrag};
             break;
-        case StereoDuplication::kMultiview:
+        case plan::StereoPass::kMultiview:
             shaders.vertex = kForwardMultiviewVert;
             shaders.show_routing_vertex = kForwardShowRoutingMultiviewVert;
             fragment = {kForwardMultiviewFrag,
@@ -179,7 +179,7 @@ ForwardShaders forward_shaders(const ForwardConfig& config) {
                         kSkyVelocityMultiviewFrag,
                         {}};
             break;
-        case StereoDuplication::kGeometryShader:
+        case plan::StereoPass::kGeometryShader:
             shaders.vertex = kForwardGsVert;
             shaders.show_routing_vertex = kForwardShowRoutingGsVert;
             shaders.geometry = kStereoDuplicateGeom;
@@ -193,7 +193,7 @@ ForwardShaders forward_shaders(const ForwardConfig& config) {
                         kSkyVelocityGsFrag,
                         {}};
             break;
-        case StereoDuplication::kInstanced:
+        case plan::StereoPass::kInstanced:
             shaders.vertex = kForwardInstancedVert;
             shaders.show_routing_vertex = kForwardShowRoutingInstancedVert;
             shaders.sky_vertex = kStereoInstancedSkyVert;  // the eye from the instance

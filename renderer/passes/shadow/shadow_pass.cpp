@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
-#include <cassert>
 #include <limits>
 
 #include <glm/geometric.hpp>
+
+#include "common/programming_error.h"
+#include "renderer/executor/image_layouts.h"
 
 namespace monoplane::passes {
 namespace {
@@ -102,10 +104,10 @@ void ShadowPass::make_masked_pipeline(const vk_core::Context& ctx,
 
 void ShadowPass::record(const vk::raii::CommandBuffer& cmd, const SceneGeometry& geometry,
                         const ShadowCasters& casters, const glm::mat4& light_view_proj) const {
-    const vk::RenderingAttachmentInfo depth(map_.view(), vk::ImageLayout::eDepthAttachmentOptimal,
-                                            {}, {}, {}, vk::AttachmentLoadOp::eClear,
-                                            vk::AttachmentStoreOp::eStore,
-                                            vk::ClearValue(vk::ClearDepthStencilValue(1.0f, 0)));
+    const vk::RenderingAttachmentInfo depth(
+        map_.view(), executor::layout_for(graph::Use::kDepthWrite), {}, {}, {},
+        vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
+        vk::ClearValue(vk::ClearDepthStencilValue(1.0f, 0)));
     const vk::Extent2D extent{params_.resolution, params_.resolution};
     // Named setters: with positional arguments, `{}` for the colour attachments selects the
     // count-and-pointer constructor and &depth silently becomes pColorAttachments.
@@ -120,7 +122,7 @@ void ShadowPass::record(const vk::raii::CommandBuffer& cmd, const SceneGeometry&
     geometry.bind(cmd);
     casters.opaque.record(cmd);
     if (casters.masked.max_draws > 0) {
-        assert(*masked_pipeline_);
+        MONOPLANE_EXPECTS(*masked_pipeline_);
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 2, casters.textures, {});
         cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *masked_pipeline_);
         casters.masked.record(cmd);

@@ -1,6 +1,6 @@
 #include "renderer/passes/shared/scene_geometry.h"
 
-#include <cassert>
+#include "common/programming_error.h"
 
 namespace monoplane::passes {
 
@@ -54,7 +54,7 @@ DrawList::DrawList(const vk_core::Context& ctx, std::size_t max_draws)
       max_draws_(static_cast<std::uint32_t>(max_draws)) {}
 
 void DrawList::assign(const scenes::Scene& scene, std::span<const std::uint32_t> chunk_indices) {
-    assert(chunk_indices.size() <= max_draws_);
+    MONOPLANE_EXPECTS(chunk_indices.size() <= max_draws_);
     auto* out = reinterpret_cast<vk::DrawIndexedIndirectCommand*>(commands_.mapped());
     for (std::size_t i = 0; i < chunk_indices.size(); ++i) {
         const scenes::Chunk& chunk = scene.chunks[chunk_indices[i]];

@@ -7,6 +7,7 @@
 #include <glm/vec2.hpp>
 
 #include "common/result.h"
+#include "renderer/executor/image_layouts.h"
 #include "renderer/passes/shared/scene_texture_constants.h"
 #include "scenes/texture_mips.h"
 
@@ -112,7 +113,7 @@ std::uint64_t upload_layer(const vk_core::Context& ctx, const vk_core::Image& ar
     }
     ctx.submit_and_wait([&](const vk::raii::CommandBuffer& cmd) {
         cmd.copyBufferToImage(staging.handle(), array.handle(),
-                              vk::ImageLayout::eTransferDstOptimal, copies);
+                              executor::layout_for(graph::Use::kTransferDst), copies);
     });
     return bytes;
 }
@@ -198,7 +199,8 @@ void SceneTextures::write_set(const vk_core::Context& ctx) {
         vk::DescriptorBufferInfo(texture_slots_.handle(), 0, VK_WHOLE_SIZE)};
     std::vector<vk::DescriptorImageInfo> images;
     for (const vk_core::Image& array : arrays_) {
-        images.emplace_back(nullptr, array.view(), vk::ImageLayout::eShaderReadOnlyOptimal);
+        images.emplace_back(nullptr, array.view(),
+                            executor::layout_for(graph::Use::kSampledFragment));
     }
     std::vector<vk::DescriptorImageInfo> samplers;
     for (const vk::raii::Sampler& sampler : samplers_) samplers.emplace_back(*sampler);

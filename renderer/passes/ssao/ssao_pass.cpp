@@ -1,15 +1,23 @@
 #include "renderer/passes/ssao/ssao_pass.h"
 
 #include <array>
-#include <cassert>
 #include <cstring>
 #include <initializer_list>
 #include <span>
+#include <string>
 
+#include "common/programming_error.h"
+#include "renderer/executor/image_layouts.h"
 #include "renderer/passes/forward/forward_pass.h"
 
 namespace monoplane::passes {
 namespace {
+
+// A step's name in the plan: the action alone in C's pass, after the eye's name in the eyes'
+// ("left.estimate").
+std::string step_name(std::string_view view, std::string_view action) {
+    return view.empty() ? std::string(action) : std::string(view) + "." + std::string(action);
+}
 
 const std::uint32_t kFullscreenVert[] = {
 #include "fullscreen.vert.spv.inc"
@@ -210,8 +218,9 @@ struct SsaoPass::Impl {
 
 SsaoPass::SsaoPass(const vk_core::Context& ctx, const SsaoParams& params)
     : ctx_(ctx), params_(params), impl_(std::make_unique<Impl>()) {
-    assert(params.directions > 0 && params.steps > 0 && params.filter_taps > 0);
-    assert(params.radius > 0.0f && params.sigma_min > 0.0f && params.sigma_min <= params.sigma_max);
+    MONOPLANE_EXPECTS(params.directions > 0 && params.steps > 0 && params.filter_taps > 0);
+    MONOPLANE_EXPECTS(params.radius > 0.0f && params.sigma_min > 0.0f &&
+                      params.sigma_min <= params.sigma_max);
     Impl& impl = *impl_;
     impl.nearest = vk_core::make_clamped_sampler(ctx, vk::Filter::eNearest);
     const auto compute = vk::ShaderStageFlagBits::eCompute;
@@ -262,8 +271,8 @@ SsaoPass::~SsaoPass() = default;
 std::unique_ptr<SsaoView> SsaoPass::make_view(const vk_core::Buffer& constants,
                                               const vk_core::Image& linear_depth,
                                               vk::Extent2D extent) const {
-    assert(linear_depth.desc().extent == extent);
-    assert(constants.size() >= sizeof(ViewConstants));
+    MONOPLANE_EXPECTS(linear_depth.desc().extent == extent);
+    MONOPLANE_EXPECTS(constants.size() >= sizeof(ViewConstants));
     auto state = std::make_unique<SsaoView::State>(ctx_, extent);
 
     const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eUniformBuffer, 1),
@@ -280,16 +289,17 @@ std::unique_ptr<SsaoView> SsaoPass::make_view(const vk_core::Buffer& constants,
 
     const vk::DescriptorBufferInfo constants_info(constants.handle(), 0, sizeof(ViewConstants));
     const vk::DescriptorImageInfo depth_info(*impl_->nearest, linear_depth.view(),
-                                             vk::ImageLayout::eShaderReadOnlyOptimal);
+                                             executor::layout_for(graph::Use::kSampledCompute));
     const auto storage = [](const vk_core::Image& image) {
-        return vk::DescriptorImageInfo(nullptr, image.view(), vk::ImageLayout::eGeneral);
+        return vk::DescriptorImageInfo(nullptr, image.view(),
+                                       executor::layout_for(graph::Use::kStorageWrite));
     };
     const vk::DescriptorImageInfo other_pixel_info = storage(state->other_pixel);
     const vk::DescriptorImageInfo raw_info = storage(state->raw);
     const vk::DescriptorImageInfo filtered_info = storage(state->filtered_x);
     const vk::DescriptorImageInfo ao_info = storage(state->ao);
     const vk::DescriptorImageInfo ao_sampled(*impl_->nearest, state->ao.view(),
-                                             vk::ImageLayout::eShaderReadOnlyOptimal);
+                                             executor::layout_for(graph::Use::kSampledFragment));
     const vk::DescriptorSet set = *state->compute_set;
     const std::array writes = {
         vk::WriteDescriptorSet(set, 0, 0, Type::eUniformBuffer, {}, constants_info),
@@ -305,23 +315,23 @@ std::unique_ptr<SsaoView> SsaoPass::make_view(const vk_core::Buffer& constants,
     // Scratch images live in eGeneral; the AO starts as 1 everywhere (outside the area it stays
     // so), shader-readable as if a frame had computed it.
     for (vk_core::Image* image : {&state->raw, &state->filtered_x, &state->other_pixel}) {
-        vk_core::initialise_image(ctx_, *image, vk::ImageLayout::eGeneral);
+        vk_core::initialise_image(ctx_, *image, executor::layout_for(graph::Use::kStorageWrite));
     }
-    vk_core::initialise_image(ctx_, state->ao, vk::ImageLayout::eShaderReadOnlyOptimal,
+    vk_core::initialise_image(ctx_, state->ao, executor::layout_for(graph::Use::kSampledFragment),
                               vk::ClearColorValue(std::array{1.0f, 1.0f, 1.0f, 1.0f}));
     return std::unique_ptr<SsaoView>(new SsaoView(std::move(state)));
 }
 
 void SsaoPass::record_view(const vk::raii::CommandBuffer& cmd, StepSync& sync, SsaoView& view,
-                           vk::Extent2D area, float skip_beyond) const {
-    assert(area.width <= view.extent().width && area.height <= view.extent().height);
+                           vk::Extent2D area, float skip_beyond, std::string_view step_view) const {
+    MONOPLANE_EXPECTS(area.width <= view.extent().width && area.height <= view.extent().height);
     const Impl& impl = *impl_;
     const PushBlock plain = impl.push(params_, area, 0, skip_beyond);
-    sync.next(cmd);  // estimate
+    sync.next(cmd, step_name(step_view, "estimate"));
     impl.dispatch(cmd, impl.hbao_estimate, view, view, plain, area);
-    sync.next(cmd);  // filter-x
+    sync.next(cmd, step_name(step_view, "filter-x"));
     impl.dispatch(cmd, impl.bilateral_filter, view, view, plain, area);
-    sync.next(cmd);  // filter-y
+    sync.next(cmd, step_name(step_view, "filter-y"));
     impl.dispatch(cmd, impl.bilateral_filter, view, view,
                   impl.push(params_, area, kFlagVertical, skip_beyond), area);
 }
@@ -335,50 +345,52 @@ float SsaoPass::skip_margin() const {
 void SsaoPass::record_pair(const vk::raii::CommandBuffer& cmd, StepSync& sync, SsaoView& left,
                            SsaoView& right, vk::Extent2D area, SsaoVariant variant,
                            float skip_beyond) const {
-    assert(left.extent() == right.extent());
+    MONOPLANE_EXPECTS(left.extent() == right.extent());
     if (variant == SsaoVariant::kPerView) {
-        record_view(cmd, sync, left, area, skip_beyond);
-        record_view(cmd, sync, right, area, skip_beyond);
+        record_view(cmd, sync, left, area, skip_beyond, "left");
+        record_view(cmd, sync, right, area, skip_beyond, "right");
         return;
     }
-    assert(area.width <= left.extent().width && area.height <= left.extent().height);
+    MONOPLANE_EXPECTS(area.width <= left.extent().width && area.height <= left.extent().height);
     const Impl& impl = *impl_;
     // Sect. 3.1: the visibility maps L^l and L^r by reverse reprojection with a back-check.
     const PushBlock plain = impl.push(params_, area, 0, skip_beyond);
-    sync.next(cmd);  // visibility-left
+    sync.next(cmd, "visibility-left");
     impl.dispatch(cmd, impl.stereo_visibility, left, right, plain, area);
-    sync.next(cmd);  // visibility-right
+    sync.next(cmd, "visibility-right");
     impl.dispatch(cmd, impl.stereo_visibility, right, left, plain, area);
     // Sect. 3.1: the left eye's stereo estimate; Sect. 3.2: the right eye reprojects it where
     // L^r allows and estimates the rest from scratch.
-    sync.next(cmd);  // estimate-left
+    sync.next(cmd, "estimate-left");
     impl.dispatch(cmd, impl.stereo_estimate, left, right, plain, area);
-    sync.next(cmd);  // estimate-right
+    sync.next(cmd, "estimate-right");
     impl.dispatch(cmd, impl.stereo_estimate, right, left,
                   impl.push(params_, area, kFlagReproject, skip_beyond), area);
     // Sect. 3.3: the stereo filter, horizontally in both views, then vertically on that.
     const PushBlock horizontal = impl.push(params_, area, kFlagStereo, skip_beyond);
-    sync.next(cmd);  // filter-x-left
+    sync.next(cmd, "filter-x-left");
     impl.dispatch(cmd, impl.bilateral_filter, left, right, horizontal, area);
-    sync.next(cmd);  // filter-x-right
+    sync.next(cmd, "filter-x-right");
     impl.dispatch(cmd, impl.bilateral_filter, right, left, horizontal, area);
     const PushBlock vertical = impl.push(params_, area, kFlagStereo | kFlagVertical, skip_beyond);
-    sync.next(cmd);  // filter-y-left
+    sync.next(cmd, "filter-y-left");
     impl.dispatch(cmd, impl.bilateral_filter, left, right, vertical, area);
-    sync.next(cmd);  // filter-y-right
+    sync.next(cmd, "filter-y-right");
     impl.dispatch(cmd, impl.bilateral_filter, right, left, vertical, area);
 }
 
 void SsaoPass::record_apply(const vk::raii::CommandBuffer& cmd, StepSync& sync,
                             const SsaoView& view, const vk_core::Image& hdr, vk::Extent2D area,
-                            const vk_core::Image* near_only_depth) const {
-    assert(hdr.desc().format == ForwardPass::kHdrFormat);
-    assert(!near_only_depth || near_only_depth->desc().format == ForwardPass::kDepthFormat);
+                            const vk_core::Image* near_only_depth,
+                            std::string_view step_view) const {
+    MONOPLANE_EXPECTS(hdr.desc().format == ForwardPass::kHdrFormat);
+    MONOPLANE_EXPECTS(!near_only_depth ||
+                      near_only_depth->desc().format == ForwardPass::kDepthFormat);
     const Impl& impl = *impl_;
-    sync.next(cmd);
-    const vk::RenderingAttachmentInfo color(hdr.view(), vk::ImageLayout::eColorAttachmentOptimal,
-                                            {}, {}, {}, vk::AttachmentLoadOp::eLoad,
-                                            vk::AttachmentStoreOp::eStore);
+    sync.next(cmd, step_name(step_view, "apply"));
+    const vk::RenderingAttachmentInfo color(
+        hdr.view(), executor::layout_for(graph::Use::kColorBlend), {}, {}, {},
+        vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
     auto rendering = vk::RenderingInfo()
                          .setRenderArea(vk::Rect2D({0, 0}, area))
                          .setLayerCount(1)
@@ -386,7 +398,7 @@ void SsaoPass::record_apply(const vk::raii::CommandBuffer& cmd, StepSync& sync,
     vk::RenderingAttachmentInfo depth;
     if (near_only_depth) {
         depth = vk::RenderingAttachmentInfo(
-            near_only_depth->view(), vk::ImageLayout::eDepthAttachmentOptimal, {}, {}, {},
+            near_only_depth->view(), executor::layout_for(graph::Use::kDepthTest), {}, {}, {},
             vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
         rendering.setPDepthAttachment(&depth);
     }
@@ -406,7 +418,7 @@ void SsaoPass::record_apply(const vk::raii::CommandBuffer& cmd, StepSync& sync,
 void SsaoPass::record_readback(const vk::raii::CommandBuffer& cmd, SsaoView& view) const {
     SsaoView::State& state = *view.state_;
     cmd.copyImageToBuffer(
-        state.ao.handle(), vk::ImageLayout::eTransferSrcOptimal, state.readback.handle(),
+        state.ao.handle(), executor::layout_for(graph::Use::kTransferSrc), state.readback.handle(),
         vk::BufferImageCopy(0, 0, 0,
                             vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
                             {0, 0, 0}, vk::Extent3D(state.extent, 1)));

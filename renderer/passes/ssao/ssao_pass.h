@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "renderer/passes/shared/step_sync.h"
@@ -66,12 +67,14 @@ class SsaoPass {
     // region drawn from the top-left corner (C: its eq. 8 viewport); pixel centres map to NDC
     // over the area. Three steps (estimate, filter-x, filter-y), each begun with sync.next(): the
     // render graph puts linear_depth in shader-read-only and the AO and scratch images in general
-    // (renderer/plan/pass_steps.h, ssao_steps).
+    // (renderer/plan/pass_steps.h, ssao_steps). step_view: "" for C's pass, whose steps are named
+    // as above, or the eye ("left") whose steps the plan names "left.estimate", ...
     // skip_beyond: the estimate leaves AO 1 at pixels whose linear depth is beyond it (hybrid:
     // m + skip_margin(), where the eyes' AO is never applied and no nearer pixel's filter weighs
     // the value); the default computes every pixel.
     void record_view(const vk::raii::CommandBuffer& cmd, StepSync& sync, SsaoView& view,
-                     vk::Extent2D area, float skip_beyond = kEveryPixel) const;
+                     vk::Extent2D area, float skip_beyond = kEveryPixel,
+                     std::string_view step_view = "") const;
     static constexpr float kEveryPixel = 3.0e38f;
     // Metres beyond a depth at which a pixel's AO no longer reaches nearer pixels' filtered AO.
     float skip_margin() const;
@@ -84,13 +87,15 @@ class SsaoPass {
                      SsaoView& right, vk::Extent2D area, SsaoVariant variant,
                      float skip_beyond = kEveryPixel) const;
 
-    // hdr *= AO over the area, one step (begun with sync.next()): hdr a colour attachment, the AO
-    // sampled. With `near_only_depth` (the eye's reversed-Z depth buffer, depth-tested, read only)
-    // only where it holds near content (depth != the cleared 0): in hybrid mode the far region's
-    // AO was applied to C's image before the composite.
+    // hdr *= AO over the area, one step (begun with sync.next(), "apply" or, with step_view,
+    // "left.apply"): hdr a colour attachment, the AO sampled. With `near_only_depth` (the eye's
+    // reversed-Z depth buffer, depth-tested, read only) only where it holds near content (depth !=
+    // the cleared 0): in hybrid mode the far region's AO was applied to C's image before the
+    // composite.
     void record_apply(const vk::raii::CommandBuffer& cmd, StepSync& sync, const SsaoView& view,
                       const vk_core::Image& hdr, vk::Extent2D area,
-                      const vk_core::Image* near_only_depth = nullptr) const;
+                      const vk_core::Image* near_only_depth = nullptr,
+                      std::string_view step_view = "") const;
 
     // Copies the AO image (a transfer source by then) to the view's host-visible buffer, inside
     // the read-back pass's step. ao_values() reads it after the submission completed.

@@ -5,6 +5,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
+#include "renderer/executor/image_layouts.h"
+
 namespace monoplane::passes {
 namespace {
 const std::uint32_t kFullscreenVert[] = {
@@ -52,9 +54,9 @@ TaaPass::TaaPass(const vk_core::Context& ctx)
 
 void TaaPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& output,
                      vk::DescriptorSet inputs, const TaaParams& params, bool reset) const {
-    const vk::RenderingAttachmentInfo color(output.view(), vk::ImageLayout::eColorAttachmentOptimal,
-                                            {}, {}, {}, vk::AttachmentLoadOp::eDontCare,
-                                            vk::AttachmentStoreOp::eStore);
+    const vk::RenderingAttachmentInfo color(
+        output.view(), executor::layout_for(graph::Use::kColorWrite), {}, {}, {},
+        vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore);
     const vk::Extent2D extent = output.desc().extent;
     cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, extent), 1, 0, color));
     vk_core::set_viewport_and_scissor(cmd, extent);
@@ -76,7 +78,7 @@ vk_core::DescriptorSet TaaPass::make_inputs(const vk_core::Image& hdr,
                                             const vk_core::Image& history) const {
     const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 4)};
     vk_core::DescriptorSet set(ctx_, *set_layout_, sizes);
-    const auto read_only = vk::ImageLayout::eShaderReadOnlyOptimal;
+    const auto read_only = executor::layout_for(graph::Use::kSampledFragment);
     const std::array images = {
         vk::DescriptorImageInfo(*nearest_, hdr.view(), read_only),
         vk::DescriptorImageInfo(*nearest_, velocity.view(), read_only),

@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "renderer/executor/image_layouts.h"
+
 namespace monoplane::passes {
 namespace {
 const std::uint32_t kFullscreenVert[] = {
@@ -39,7 +41,7 @@ void TonemapPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Imag
                          vk::DescriptorSet hdr_set, const TonemapParams& params,
                          const std::optional<Predicate>& when) const {
     const vk::RenderingAttachmentInfo color(
-        display.view(), vk::ImageLayout::eColorAttachmentOptimal, {}, {}, {},
+        display.view(), executor::layout_for(graph::Use::kColorWrite), {}, {}, {},
         when ? vk::AttachmentLoadOp::eLoad : vk::AttachmentLoadOp::eDontCare,
         vk::AttachmentStoreOp::eStore);
     const vk::Extent2D extent = display.desc().extent;
@@ -55,8 +57,8 @@ void TonemapPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Imag
 vk_core::DescriptorSet TonemapPass::make_input(const vk_core::Image& source) const {
     const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1)};
     vk_core::DescriptorSet set(ctx_, *set_layout_, sizes);
-    const std::array images = {
-        vk::DescriptorImageInfo(*sampler_, source.view(), vk::ImageLayout::eShaderReadOnlyOptimal)};
+    const std::array images = {vk::DescriptorImageInfo(
+        *sampler_, source.view(), executor::layout_for(graph::Use::kSampledFragment))};
     vk_core::write_sampled_images(ctx_, *set, images);
     return set;
 }
