@@ -86,7 +86,7 @@ class GraphExecutor {
     std::uint64_t compiled_generation_ = 0;
     std::vector<graph::ResourceState> compiled_initial_;
     graph::Aliasing compiled_aliasing_;
-    std::vector<vk::DeviceMemory> memories_;              // this frame's, Aliasing's order
+    std::vector<vk::DeviceMemory> memories_;            // this frame's, Aliasing's order
     std::map<VkDeviceMemory, ImageId> memory_holders_;  // the image that used it last
     std::map<ImageId, graph::ResourceState> image_states_;
     std::map<std::string, graph::ResourceState> buffer_states_;  // by the resource's name

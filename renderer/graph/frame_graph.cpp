@@ -288,8 +288,7 @@ std::string describe(const Barrier& b, const ResourceTable& resources) {
 
 CompiledFrame compile(const ResourceTable& resources, const std::vector<GraphPass>& passes,
                       const std::vector<ResourceUse>& exports,
-                      const std::vector<ResourceState>& initial_states,
-                      const Aliasing& aliasing) {
+                      const std::vector<ResourceState>& initial_states, const Aliasing& aliasing) {
     Compiler compiler(resources, initial_states, aliasing);
     compiler.check_not_shared(exports);
     CompiledFrame frame;

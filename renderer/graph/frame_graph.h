@@ -153,7 +153,7 @@ struct MemoryHolder {
 };
 
 struct Aliasing {
-    std::vector<std::int32_t> memory;  // per resource: the shared memory it is bound to, or -1
+    std::vector<std::int32_t> memory;   // per resource: the shared memory it is bound to, or -1
     std::vector<MemoryHolder> initial;  // per shared memory
     bool operator==(const Aliasing&) const = default;
 };

@@ -65,8 +65,8 @@ struct AliasCandidate {
 };
 
 struct AliasGroup {
-    std::vector<std::size_t> members;  // candidate indices, the largest first
-    std::uint64_t bytes = 0;           // the largest member's
+    std::vector<std::size_t> members;      // candidate indices, the largest first
+    std::uint64_t bytes = 0;               // the largest member's
     std::uint32_t memory_type_bits = ~0u;  // the types every member allows
     bool operator==(const AliasGroup&) const = default;
 };

@@ -175,12 +175,21 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
         eye_pair_set_ = eyes_forward_->make_view_set(
             *eye_pair_constants_, resources_->shadow().view(), resources_->shadow().sampler());
     }
+    // The plans every frame of this renderer may run: what its transient images are placed by.
+    possible_plans_ = possible_plans(
+        plan_options_of(mode, options, blended_chunks_, options.auto_mono_plane.has_value()),
+        plan::PlanDevice{ctx.capabilities().conditional_rendering,
+                         ctx.capabilities().independent_blend});
+    if (!eye_layers_) {
+        eye_memory_ = View::eye_memory(ctx, eye_extent, eye_features, possible_plans_);
+    }
     for (std::uint32_t e = 0; e < 2; ++e) {
         auto& eye = eyes_[e];
         // Two passes draw into images of each eye's own: lavapipe (Mesa 22.3) does not resolve
         // MSAA into a layer other than 0 of a layered image.
         eye = eye_layers_ ? std::make_unique<View>(ctx, *eye_layers_, e, eye_features)
-                          : std::make_unique<View>(ctx, eye_extent, eye_features);
+                          : std::make_unique<View>(ctx, eye_extent, eye_features, eye_memory_.get(),
+                                                   plan::eye_view(static_cast<int>(e)));
         make_view_sets(*eye);
         if (composite_.writes_display()) {
             eye->composite_hdr_set = composite_.make_eye_input(eye->hdr);
@@ -252,7 +261,7 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     if (mono_) forget_images(*mono_);
     mono_.reset();
     const bool taa = options_.anti_aliasing == plan::AntiAliasing::kTaa;
-    mono_ = std::make_unique<MonoView>(ctx_, needed, ViewFeatures{taa, false});
+    mono_ = std::make_unique<MonoView>(ctx_, needed, ViewFeatures{taa, false}, possible_plans_);
     make_view_sets(*mono_);
     mono_->composite_set =
         composite_.make_source(mono_->hdr, mono_->linear_depth, taa ? &*mono_->velocity : nullptr);

@@ -109,6 +109,8 @@ struct EyeDepthImage {
     vk::ImageLayout layout = vk::ImageLayout::eUndefined;
 };
 
+class TransientMemory;
+
 class ModeRenderer {
   public:
     // The scene must outlive the renderer. nearest_mono_plane sizes C's render target once
@@ -289,6 +291,11 @@ class ModeRenderer {
     vk_core::DescriptorSet eye_pair_set_;
     // Single-pass stereo: both eyes' forward images as two-layer images; outlives eyes_.
     std::unique_ptr<ForwardImages> eye_layers_;
+    // Every plan this renderer may execute (transient_memory.h: possible_plans), over which its
+    // transient images are placed in shared memory, and the eyes' shared memory; both outlive
+    // eyes_ and mono_.
+    std::vector<plan::FramePlan> possible_plans_;
+    std::unique_ptr<TransientMemory> eye_memory_;
     std::array<std::unique_ptr<View>, 2> eyes_;
     std::unique_ptr<MonoView> mono_;
     bool mono_rendered_ = false;

@@ -34,8 +34,7 @@ TransientMemory::TransientMemory(const vk_core::Context& ctx,
                                  const std::vector<plan::FramePlan>& plans) {
     std::vector<graph::AliasCandidate> candidates;
     for (const TransientImage& image : images) {
-        const vk::MemoryRequirements needs =
-            vk_core::Image::memory_requirements(ctx, image.desc);
+        const vk::MemoryRequirements needs = vk_core::Image::memory_requirements(ctx, image.desc);
         graph::AliasCandidate& candidate = candidates.emplace_back();
         candidate.bytes = needs.size;
         candidate.memory_type_bits = needs.memoryTypeBits;
@@ -45,8 +44,7 @@ TransientMemory::TransientMemory(const vk_core::Context& ctx,
             graph::frame_lifetimes(plan.resources, plan.graph_passes(), plan.exports);
         for (std::size_t i = 0; i < images.size(); ++i) {
             const auto handle = plan.handle(images[i].key);
-            candidates[i].lifetimes.push_back(handle ? lifetimes[*handle]
-                                                     : graph::FrameLifetime{});
+            candidates[i].lifetimes.push_back(handle ? lifetimes[*handle] : graph::FrameLifetime{});
         }
     }
     for (const graph::AliasGroup& group : graph::plan_aliasing(candidates)) {

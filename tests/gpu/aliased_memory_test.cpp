@@ -138,8 +138,7 @@ TEST(AliasedMemory, EachImageReadsWhatWasWrittenAndTheLayerReportsNothing) {
 TEST(AliasedMemory, WithoutTheAliasingBarriersTheLayerReportsTheHazard) {
     const Outcome outcome = run(true);
     EXPECT_GT(outcome.messages, 0u);
-    EXPECT_NE(outcome.text.find("SYNC-HAZARD-WRITE-AFTER-READ"), std::string::npos)
-        << outcome.text;
+    EXPECT_NE(outcome.text.find("SYNC-HAZARD-WRITE-AFTER-READ"), std::string::npos) << outcome.text;
 }
 
 }  // namespace

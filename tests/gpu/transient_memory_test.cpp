@@ -54,7 +54,9 @@ Rendered render(plan::Mode mode, plan::StereoPass stereo_pass) {
     renderer.finish_frames();
     renderer.render_frame(inputs);
     ctx->device().waitIdle();
-    Rendered rendered{ctx->validation_messages().count(), aliasing_barriers, {},
+    Rendered rendered{ctx->validation_messages().count(),
+                      aliasing_barriers,
+                      {},
                       renderer.eye_image(modes::Eye::kLeft),
                       renderer.eye_image(modes::Eye::kRight)};
     for (const std::string& m : ctx->validation_messages().first_messages()) {

@@ -78,7 +78,7 @@ TEST(FrameLifetimes, FirstAndLastStepOverThePassesThatRun) {
     // Steps counted: p0 = 0, p1 = 1 (repeated, still one), p2 = 2; the skipped pass none.
     EXPECT_EQ(lifetimes[a.index], (FrameLifetime{Interval{0, 1}, true}));
     EXPECT_EQ(lifetimes[b.index], (FrameLifetime{Interval{1, 2}, true}));
-    EXPECT_EQ(lifetimes[c.index], (FrameLifetime{Interval{2, 2}, false}));  // exported
+    EXPECT_EQ(lifetimes[c.index], (FrameLifetime{Interval{2, 2}, false}));        // exported
     EXPECT_EQ(lifetimes[history.index], (FrameLifetime{Interval{2, 2}, false}));  // persistent
     EXPECT_EQ(lifetimes[unused.index], (FrameLifetime{std::nullopt, true}));
 }
@@ -180,10 +180,10 @@ TEST(CompileAliasing, TheTakerWaitsForTheHolderAndStartsFromUndefined) {
     const CompiledFrame frame =
         compile(s.f.table, s.f.passes(), {}, std::vector<ResourceState>(2), s.aliasing());
     // draw-a: nothing held the memory before; a's first barrier only sets its layout.
-    EXPECT_EQ(frame.steps[0][0].before,
-              (std::vector<Barrier>{{s.a.index, Stage::kNone, Access::kNone, kDepthTests,
-                                     kDepthReadWrite, Layout::kUndefined,
-                                     Layout::kDepthAttachment, false}}));
+    EXPECT_EQ(
+        frame.steps[0][0].before,
+        (std::vector<Barrier>{{s.a.index, Stage::kNone, Access::kNone, kDepthTests, kDepthReadWrite,
+                               Layout::kUndefined, Layout::kDepthAttachment, false}}));
     // draw-b takes over from a, last sampled by compute (a read: an execution dependency, no
     // access to make available); b's layout starts undefined.
     EXPECT_EQ(frame.steps[2][0].before,
@@ -202,9 +202,9 @@ TEST(CompileAliasing, TheNextFrameFirstUserWaitsForTheLastFramesLastHolder) {
     // a takes over from b, last sampled by a fragment shader, instead of continuing from its own
     // depth-read-only layout.
     EXPECT_EQ(second.steps[0][0].before,
-              (std::vector<Barrier>{{s.a.index, Stage::kFragmentShader, Access::kNone,
-                                     kDepthTests, kDepthReadWrite, Layout::kUndefined,
-                                     Layout::kDepthAttachment, true}}));
+              (std::vector<Barrier>{{s.a.index, Stage::kFragmentShader, Access::kNone, kDepthTests,
+                                     kDepthReadWrite, Layout::kUndefined, Layout::kDepthAttachment,
+                                     true}}));
     EXPECT_EQ(second.steps[2][0].before, first.steps[2][0].before);
     // Without aliasing, a would wait for its own compute reads and keep its layout's contents.
     const CompiledFrame alone = compile(s.f.table, s.f.passes(), {}, first.final_states);
@@ -257,9 +257,9 @@ TEST(CompileAliasing, RefusesInterleavedExportedAndPersistentSharers) {
         f.pass("draw-a", {use(a, Use::kColorWrite)});
         f.exports.push_back(use(a, Use::kTransferSrc));
         const Aliasing aliasing{{0}, {MemoryHolder{}}};
-        EXPECT_THROW(compile(f.table, f.passes(), f.exports, std::vector<ResourceState>(1),
-                             aliasing),
-                     std::invalid_argument);
+        EXPECT_THROW(
+            compile(f.table, f.passes(), f.exports, std::vector<ResourceState>(1), aliasing),
+            std::invalid_argument);
     }
     {
         Frame f;
