@@ -1,9 +1,9 @@
 #include "study/adaptive_procedure.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
+#include "common/programming_error.h"
 #include "study/quest_plus.h"
 #include "study/weighted_up_down.h"
 
@@ -11,7 +11,7 @@ namespace monoplane::study {
 
 std::unique_ptr<AdaptiveProcedure> make_adaptive_procedure(const StaircaseSettings& settings,
                                                            const std::vector<double>& mono_planes) {
-    assert(mono_planes.size() >= 2);
+    MONOPLANE_EXPECTS(mono_planes.size() >= 2);
     const auto [low, high] = std::ranges::minmax(mono_planes);
     if (settings.rule == StaircaseRule::QuestPlus) {
         const std::array<double, 2> range =

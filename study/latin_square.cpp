@@ -1,21 +1,21 @@
 // Williams' balanced Latin squares (Williams 1949): carry-over effects of the previous block are
 // balanced because every ordered pair of items is adjacent equally often over a full set of rows.
 #include <algorithm>
-#include <cassert>
 #include <vector>
 
+#include "common/programming_error.h"
 #include "study/schedule.h"
 
 namespace monoplane::study {
 
 int balanced_latin_square_rows(int n) {
-    assert(n >= 1);
+    MONOPLANE_EXPECTS(n >= 1);
     // For odd n no single n x n square balances the ordered pairs; the square and its mirror do.
     return n % 2 == 0 || n == 1 ? n : 2 * n;
 }
 
 std::vector<int> balanced_latin_square_row(int n, int row) {
-    assert(n >= 1 && row >= 0 && row < balanced_latin_square_rows(n));
+    MONOPLANE_EXPECTS(n >= 1 && row >= 0 && row < balanced_latin_square_rows(n));
     const int base_row = row % n;
     // First row 0, 1, n-1, 2, n-2, ...: consecutive differences 1, -2, 3, -4, ... are distinct
     // mod n, which is what makes each adjacent pair occur once per n rows (even n).

@@ -1,7 +1,8 @@
 #include "study/psychometric.h"
 
-#include <cassert>
 #include <cmath>
+
+#include "common/programming_error.h"
 
 namespace monoplane::study {
 namespace {
@@ -13,7 +14,8 @@ struct Logistic {
 };
 
 Logistic logistic(const PsychometricFunction& f, double m) {
-    assert(m > 0.0 && f.threshold > 0.0 && f.slope > 0.0 && f.lapse >= 0.0 && f.lapse < 0.5);
+    MONOPLANE_EXPECTS(m > 0.0 && f.threshold > 0.0 && f.slope > 0.0 && f.lapse >= 0.0 &&
+                      f.lapse < 0.5);
     const double z = f.slope * std::log(m / f.threshold);
     const double e = std::exp(-std::abs(z));
     const double small = e / (1.0 + e), large = 1.0 / (1.0 + e);

@@ -1,8 +1,9 @@
 #include "study/quest_plus.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
+
+#include "common/programming_error.h"
 
 namespace monoplane::study {
 namespace {
@@ -47,7 +48,7 @@ double log_quantile(const std::vector<double>& log_t, const std::vector<double>&
 }  // namespace
 
 std::vector<double> log_spaced(double low, double high, int steps) {
-    assert(low > 0.0 && low < high && steps >= 2);
+    MONOPLANE_EXPECTS(low > 0.0 && low < high && steps >= 2);
     std::vector<double> values(static_cast<std::size_t>(steps));
     const double step = std::log(high / low) / (steps - 1);
     for (int i = 0; i < steps; ++i) values[static_cast<std::size_t>(i)] = low * std::exp(step * i);
@@ -57,15 +58,15 @@ std::vector<double> log_spaced(double low, double high, int steps) {
 
 QuestPlus::QuestPlus(std::vector<double> stimuli, QuestPlusGrid grid)
     : stimuli_(std::move(stimuli)), grid_(std::move(grid)) {
-    assert(!stimuli_.empty() && grid_.thresholds.size() >= 2 && !grid_.slopes.empty() &&
-           !grid_.lapses.empty());
+    MONOPLANE_EXPECTS(!stimuli_.empty() && grid_.thresholds.size() >= 2 && !grid_.slopes.empty() &&
+                      !grid_.lapses.empty());
     std::ranges::sort(stimuli_);
     const std::size_t count = grid_.thresholds.size() * grid_.slopes.size() * grid_.lapses.size();
     posterior_.assign(count, 1.0 / static_cast<double>(count));
     reference_likelihood_.resize(stimuli_.size() * count);
     test_likelihood_.resize(stimuli_.size() * count);
     for (std::size_t i = 0; i < stimuli_.size(); ++i) {
-        assert(stimuli_[i] > 0.0);
+        MONOPLANE_EXPECTS(stimuli_[i] > 0.0);
         for (std::size_t j = 0; j < count; ++j) {
             reference_likelihood_[i * count + j] =
                 reference_probability(parameters(j), stimuli_[i]);
@@ -81,7 +82,7 @@ PsychometricFunction QuestPlus::parameters(std::size_t index) const {
 }
 
 double QuestPlus::expected_entropy(std::size_t i) const {
-    assert(i < stimuli_.size());
+    MONOPLANE_EXPECTS(i < stimuli_.size());
     const std::size_t count = posterior_.size();
     const double* reference = &reference_likelihood_[i * count];
     const double* test = &test_likelihood_[i * count];
@@ -109,7 +110,7 @@ double QuestPlus::next_mono_plane() const {
 }
 
 void QuestPlus::record(double m, bool reference_chosen) {
-    assert(m > 0.0);
+    MONOPLANE_EXPECTS(m > 0.0);
     double z = 0.0;
     for (std::size_t j = 0; j < posterior_.size(); ++j) {
         const PsychometricFunction f = parameters(j);

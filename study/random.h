@@ -6,11 +6,12 @@
 // differ in the last bit between platforms; schedules never use it.
 #pragma once
 
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
+
+#include "common/programming_error.h"
 
 namespace monoplane::study {
 
@@ -48,7 +49,7 @@ class Rng {
 
     // Uniform in 0..n-1 without modulo bias: rejects the lowest 2^64 mod n raw values.
     std::uint64_t below(std::uint64_t n) {
-        assert(n > 0);
+        MONOPLANE_EXPECTS(n > 0);
         const std::uint64_t threshold = (0 - n) % n;
         for (;;) {
             const std::uint64_t r = next();

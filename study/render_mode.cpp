@@ -1,8 +1,9 @@
 #include "study/render_mode.h"
 
 #include <array>
-#include <cassert>
 #include <string>
+
+#include "common/programming_error.h"
 
 namespace monoplane::study {
 namespace {
@@ -25,7 +26,7 @@ std::span<const RenderMode> all_render_modes() {
 std::string_view render_mode_name(RenderMode mode) {
     const std::string_view name =
         find_name(kRenderModeNames, static_cast<NamedRenderMode>(mode), "invalid");
-    assert(name != "invalid" && "RenderMode value outside the enum");
+    MONOPLANE_EXPECTS(name != "invalid" && "RenderMode value outside the enum");
     return name;
 }
 

@@ -1,8 +1,8 @@
 #include "study/scene_files.h"
 
-#include <cassert>
 #include <system_error>
 
+#include "common/programming_error.h"
 #include "common/scene_file_name.h"
 
 namespace monoplane::study {
@@ -20,7 +20,7 @@ bool names_scene_file(std::string_view scene) {
 
 std::filesystem::path resolve_scene_file(std::string_view scene,
                                          const std::filesystem::path& directory) {
-    assert(names_scene_file(scene));
+    MONOPLANE_EXPECTS(names_scene_file(scene));
     std::filesystem::path path(scene);
     if (path.is_relative()) path = directory / path;
     // absolute() of an absolute path only normalises it; for a relative one it prepends the

@@ -1,12 +1,12 @@
 #include "study/schedule.h"
 
 #include <algorithm>
-#include <cassert>
 #include <functional>
 #include <limits>
 #include <map>
 #include <utility>
 
+#include "common/programming_error.h"
 #include "study/random.h"
 
 namespace monoplane::study {
@@ -135,7 +135,7 @@ int Schedule::practice_count() const {
 
 Schedule make_schedule(const Protocol& protocol, std::uint64_t seed, int participant_index,
                        int session_number) {
-    assert(session_number >= 1);
+    MONOPLANE_EXPECTS(session_number >= 1);
     Schedule schedule;
     schedule.seed = seed;
     schedule.participant_index = participant_index;

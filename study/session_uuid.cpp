@@ -6,7 +6,8 @@
 #include <algorithm>
 #include <array>
 #include <random>
-#include <stdexcept>
+
+#include "common/programming_error.h"
 
 namespace monoplane::study {
 namespace {
@@ -44,8 +45,9 @@ std::string derived_session_uuid(std::string_view identity) {
     unsigned int length = 0;
     if (EVP_Digest(identity.data(), identity.size(), digest.data(), &length, EVP_sha256(),
                    nullptr) != 1 ||
-        length < 16)
-        throw std::logic_error("SHA-256 is unavailable in this OpenSSL");  // a broken build
+        length < 16) {
+        programming_error("SHA-256 is unavailable in this OpenSSL");  // a broken build
+    }
     Bytes bytes{};
     std::copy_n(digest.begin(), bytes.size(), bytes.begin());
     return format_uuid(bytes, 8);

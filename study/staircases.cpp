@@ -1,13 +1,14 @@
 #include "study/staircases.h"
 
-#include <cassert>
 #include <cmath>
+
+#include "common/programming_error.h"
 
 namespace monoplane::study {
 
 Staircases::Staircases(const Protocol& protocol)
     : settings_(protocol.staircase), reference_(protocol.alternatives[0]) {
-    assert(protocol.procedure == Procedure::Staircase);
+    MONOPLANE_EXPECTS(protocol.procedure == Procedure::Staircase);
     for (const std::string& scene : protocol.scenes) {
         by_scene_[scene] = make_adaptive_procedure(settings_, protocol.mono_planes);
     }
@@ -15,14 +16,14 @@ Staircases::Staircases(const Protocol& protocol)
 
 const AdaptiveProcedure& Staircases::procedure(const std::string& scene) const {
     const auto found = by_scene_.find(scene);
-    assert(found != by_scene_.end());
+    MONOPLANE_EXPECTS(found != by_scene_.end());
     return *found->second;
 }
 
 void Staircases::record(const ScheduledTrial& trial, const TrialOutcome& outcome) {
     if (!trial.adaptive || !outcome.valid || outcome.choice == 0) return;
     const auto found = by_scene_.find(trial.scene);
-    assert(found != by_scene_.end() && std::isfinite(trial.mono_plane));
+    MONOPLANE_EXPECTS(found != by_scene_.end() && std::isfinite(trial.mono_plane));
     found->second->record(trial.mono_plane, outcome.chosen_mode == reference_);
 }
 

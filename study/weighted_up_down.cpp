@@ -1,8 +1,9 @@
 #include "study/weighted_up_down.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
+
+#include "common/programming_error.h"
 
 namespace monoplane::study {
 
@@ -14,12 +15,12 @@ WeightedUpDown::WeightedUpDown(double low, double high, double start, double tar
       step_nearer_(step_log10 * target / (1.0 - target)),
       skip_reversals_(skip_reversals),
       next_(start) {
-    assert(0.0 < low && low <= start && start <= high);
-    assert(target > 0.5 && target < 1.0 && step_log10 > 0.0 && skip_reversals >= 0);
+    MONOPLANE_EXPECTS(0.0 < low && low <= start && start <= high);
+    MONOPLANE_EXPECTS(target > 0.5 && target < 1.0 && step_log10 > 0.0 && skip_reversals >= 0);
 }
 
 void WeightedUpDown::record(double m, bool reference_chosen) {
-    assert(m > 0.0);
+    MONOPLANE_EXPECTS(m > 0.0);
     const int direction = reference_chosen ? 1 : -1;
     if (last_direction_ != 0 && direction != last_direction_) reversals_.push_back(m);
     last_direction_ = direction;

@@ -1,9 +1,9 @@
 #include "app/headset/eye_depth_writer.h"
 
 #include <array>
-#include <cassert>
 
 #include "app/headset/eye_depth_constants.h"
+#include "common/programming_error.h"
 #include "renderer/vk/pipeline.h"
 
 namespace monoplane::headset {
@@ -111,7 +111,7 @@ void EyeDepthWriter::record(const vk::raii::CommandBuffer& cmd, vk::Image target
     const vk_core::Image* linear = source ? source->linear_depth.image : nullptr;
     const vk::ImageLayout found =
         source ? source->linear_depth.layout : vk::ImageLayout::eUndefined;
-    assert(linear == nullptr || found != vk::ImageLayout::eUndefined);
+    MONOPLANE_EXPECTS(linear == nullptr || found != vk::ImageLayout::eUndefined);
     if (linear) {
         // Written as a colour attachment, or already made readable (SSAO, TAA) or copied from
         // (read-back): readable now, and back to that layout after, as the renderer expects.

@@ -1,6 +1,7 @@
-// ModeRenderer's private parts, shared by its two source files (mode_renderer.cpp: views,
-// frame preparation, statistics; frame_recording.cpp: one recorder per kind of planned pass):
-// the views' images and outputs and one frame's state. Include nowhere else.
+// ModeRenderer's private parts, shared by its source files (mode_renderer.cpp: views and frame
+// preparation; frame_recording.cpp: one recorder per kind of planned pass; frame_results.cpp: a
+// completed frame's statistics and read-backs; resource_bindings.cpp: the plan's resources on the
+// device): the views' images and outputs and one frame's state. Include nowhere else.
 #pragma once
 
 #include <optional>
@@ -51,14 +52,14 @@ struct ModeRenderer::ForwardImages {
         std::vector<TransientImage> images = {
             image(ImageRole::kHdr, passes::ForwardPass::kHdrFormat, kColorTarget),
             // Sampled: the merged depth pyramid reads the eyes' depth.
-            image(ImageRole::kDepth, passes::ForwardPass::kDepthFormat,
-                  vk::ImageUsageFlagBits::eDepthStencilAttachment |
-                      vk::ImageUsageFlagBits::eSampled),
+            image(
+                ImageRole::kDepth, passes::ForwardPass::kDepthFormat,
+                vk::ImageUsageFlagBits::eDepthStencilAttachment | vk::ImageUsageFlagBits::eSampled),
             image(ImageRole::kLinearDepth, passes::ForwardPass::kLinearDepthFormat, kColorTarget)};
         if (features.velocity) {
-            images.push_back(image(
-                ImageRole::kVelocity, passes::ForwardPass::kVelocityFormat,
-                vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled));
+            images.push_back(
+                image(ImageRole::kVelocity, passes::ForwardPass::kVelocityFormat,
+                      vk::ImageUsageFlagBits::eColorAttachment | vk::ImageUsageFlagBits::eSampled));
         }
         if (features.samples != vk::SampleCountFlagBits::e1) {
             // Transient: only their resolve is kept.
@@ -140,7 +141,6 @@ struct ModeRenderer::ForwardImages {
     }
 
   public:
-
     passes::ForwardTargets forward_targets(vk::Extent2D area, bool clear_color = false) const {
         return {hdr,
                 depth,
@@ -167,8 +167,8 @@ struct ViewOutputs {
 
     ViewOutputs(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features,
                 const TransientMemory* memory = nullptr, plan::ViewId view = plan::ViewId::kNone)
-        : display(make_view_image(ctx, memory, view, plan::ImageRole::kDisplay,
-                                  display_desc(size))),
+        : display(
+              make_view_image(ctx, memory, view, plan::ImageRole::kDisplay, display_desc(size))),
           // Filled through the frame's uploads (vk_core::FrameUploads), not a mapping.
           constants(ctx, sizeof(passes::ViewConstants), vk::BufferUsageFlagBits::eUniformBuffer,
                     vk_core::MemoryUse::kDeviceLocal),
@@ -270,9 +270,9 @@ struct ModeRenderer::MonoView : MonoMemory, View {
         for (TransientImage& image : images_of(size, features)) {
             if (image.key.image == plan::ImageRole::kDepth) images.push_back(std::move(image));
         }
-        images.push_back({{plan::ViewId::kMono, false, plan::ImageRole::kDisplay,
-                           plan::BufferRole::kDrawLists},
-                          display_desc(size)});
+        images.push_back(
+            {{plan::ViewId::kMono, false, plan::ImageRole::kDisplay, plan::BufferRole::kDrawLists},
+             display_desc(size)});
         return images;
     }
 

@@ -1,7 +1,6 @@
 #include "renderer/vk/buffer.h"
 
-#include <cassert>
-
+#include "common/programming_error.h"
 #include "renderer/vk/memory.h"
 
 namespace monoplane::vk_core {
@@ -14,7 +13,8 @@ Buffer::Buffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFlags usa
         use == MemoryUse::kHostVisible
             ? vk::MemoryPropertyFlagBits::eHostVisible | vk::MemoryPropertyFlagBits::eHostCoherent
             : vk::MemoryPropertyFlags(vk::MemoryPropertyFlagBits::eDeviceLocal);
-    memory_ = allocate_memory(ctx, buffer_.getMemoryRequirements(), properties, MemoryKind::kBuffer);
+    memory_ =
+        allocate_memory(ctx, buffer_.getMemoryRequirements(), properties, MemoryKind::kBuffer);
     buffer_.bindMemory(*memory_, 0);
     if (use == MemoryUse::kHostVisible) {
         mapped_ = static_cast<std::byte*>(memory_.map());
@@ -22,7 +22,7 @@ Buffer::Buffer(const Context& ctx, vk::DeviceSize size, vk::BufferUsageFlags usa
 }
 
 void Buffer::write(const void* data, vk::DeviceSize bytes, vk::DeviceSize offset) const {
-    assert(mapped_ && offset + bytes <= size_);
+    MONOPLANE_EXPECTS(mapped_ && offset + bytes <= size_);
     std::memcpy(mapped_ + offset, data, bytes);
 }
 
