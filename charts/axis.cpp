@@ -1,12 +1,12 @@
 #include "charts/axis.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 
 #include "charts/svg_writer.h"
+#include "common/programming_error.h"
 
 namespace monoplane::charts {
 namespace {
@@ -73,7 +73,7 @@ bool is_drawable(ScaleKind scale, double value) {
 }
 
 double nice_step(double span, int target_intervals) {
-    assert(span > 0.0 && target_intervals > 0);
+    MONOPLANE_EXPECTS(span > 0.0 && target_intervals > 0);
     return nice_decimal_step(span, target_intervals).value();
 }
 
@@ -156,10 +156,12 @@ Ticks resolve_axis(const AxisSpec& spec, double data_min, double data_max) {
     const auto unusable = [&](const std::optional<double>& end) {
         return end && !is_drawable(spec.scale, *end);
     };
-    assert(!unusable(fixed_min) && !unusable(fixed_max) && "charts: fixed end off the scale");
+    MONOPLANE_EXPECTS(!unusable(fixed_min) && !unusable(fixed_max) &&
+                      "charts: fixed end off the scale");
     if (unusable(fixed_min)) fixed_min.reset();
     if (unusable(fixed_max)) fixed_max.reset();
-    assert(!(fixed_min && fixed_max && *fixed_min >= *fixed_max) && "charts: fixed min >= max");
+    MONOPLANE_EXPECTS(!(fixed_min && fixed_max && *fixed_min >= *fixed_max) &&
+                      "charts: fixed min >= max");
     if (fixed_min && fixed_max && *fixed_min >= *fixed_max) {
         fixed_min.reset();
         fixed_max.reset();
@@ -205,14 +207,14 @@ void Extent::include(ScaleKind scale, double value) {
 Scale::Scale(ScaleKind kind, double domain_min, double domain_max, double pixel_at_min,
              double pixel_at_max)
     : kind_(kind), pixel_at_min_(pixel_at_min), pixel_at_max_(pixel_at_max) {
-    assert(is_drawable(kind, domain_min) && is_drawable(kind, domain_max));
-    assert(domain_min < domain_max);
+    MONOPLANE_EXPECTS(is_drawable(kind, domain_min) && is_drawable(kind, domain_max));
+    MONOPLANE_EXPECTS(domain_min < domain_max);
     transformed_min_ = transformed(domain_min);
     transformed_max_ = transformed(domain_max);
 }
 
 double Scale::pixel(double value) const {
-    assert(maps(value));
+    MONOPLANE_EXPECTS(maps(value));
     const double t =
         (transformed(value) - transformed_min_) / (transformed_max_ - transformed_min_);
     return pixel_at_min_ + t * (pixel_at_max_ - pixel_at_min_);

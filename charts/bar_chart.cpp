@@ -1,10 +1,10 @@
 #include "charts/bar_chart.h"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 
 #include "charts/palette.h"
+#include "common/programming_error.h"
 
 namespace monoplane::charts {
 namespace {
@@ -191,7 +191,8 @@ void draw_totals(SvgWriter& svg, const StackedBarChart& chart, const BarGeometry
 }  // namespace
 
 std::string render_svg(const StackedBarChart& chart) {
-    assert(chart.y_axis.scale == ScaleKind::linear && "charts: stacked bars need a linear y axis");
+    MONOPLANE_EXPECTS(chart.y_axis.scale == ScaleKind::linear &&
+                      "charts: stacked bars need a linear y axis");
     AxisSpec y_axis = chart.y_axis;
     y_axis.scale = ScaleKind::linear;
     y_axis.include_zero = true;

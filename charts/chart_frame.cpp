@@ -1,7 +1,8 @@
 #include "charts/chart_frame.h"
 
 #include <algorithm>
-#include <cassert>
+
+#include "common/programming_error.h"
 
 namespace monoplane::charts {
 namespace {
@@ -29,7 +30,8 @@ PlotArea plot_area(const Layout& layout, bool legend_drawn) {
     area.top = layout.margins.top;
     area.right = layout.width - layout.margins.right - (legend_right ? layout.legend_width : 0.0);
     area.bottom = layout.height - layout.margins.bottom;
-    assert(area.width() > 0.0 && area.height() > 0.0 && "charts: margins leave no plot area");
+    MONOPLANE_EXPECTS(area.width() > 0.0 && area.height() > 0.0 &&
+                      "charts: margins leave no plot area");
     return area;
 }
 

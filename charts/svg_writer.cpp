@@ -1,13 +1,14 @@
 #include "charts/svg_writer.h"
 
 #include <array>
-#include <cassert>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <utility>
+
+#include "common/programming_error.h"
 
 namespace monoplane::charts {
 
@@ -44,8 +45,8 @@ std::string xml_escaped(std::string_view text) {
 }
 
 std::string format_fixed(double value, int decimals) {
-    assert(std::isfinite(value) && "charts: only finite numbers reach the SVG");
-    assert(decimals >= 0 && decimals <= 20);
+    MONOPLANE_EXPECTS(std::isfinite(value) && "charts: only finite numbers reach the SVG");
+    MONOPLANE_EXPECTS(decimals >= 0 && decimals <= 20);
     if (!std::isfinite(value)) return "0";
     // Room for the largest double in fixed notation (309 digits) and the decimals.
     std::array<char, 400> buffer{};
@@ -136,7 +137,7 @@ void SvgWriter::open_group(std::string_view css_class, const Paint& paint,
 }
 
 void SvgWriter::close_group() {
-    assert(open_groups_ > 0);
+    MONOPLANE_EXPECTS(open_groups_ > 0);
     out_ += "</g>\n";
     --open_groups_;
 }
@@ -196,7 +197,7 @@ void SvgWriter::text(double x, double y, std::string_view content, const TextSty
 }
 
 std::string SvgWriter::finish() {
-    assert(open_groups_ == 0 && "charts: a group was left open");
+    MONOPLANE_EXPECTS(open_groups_ == 0 && "charts: a group was left open");
     while (open_groups_ > 0) close_group();
     out_ += "</svg>\n";
     return std::move(out_);

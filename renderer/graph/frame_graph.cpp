@@ -1,6 +1,6 @@
 #include "renderer/graph/frame_graph.h"
 
-#include <stdexcept>
+#include "common/programming_error.h"
 
 namespace monoplane::graph {
 namespace {
@@ -36,8 +36,8 @@ std::vector<MergedUse> merge_uses(const ResourceTable& resources, const std::str
         const ResourceDesc& desc = resources[use.resource];
         const bool image = desc.kind == ResourceKind::kImage;
         if ((image && buffer_only(use.use)) || (!image && image_only(use.use))) {
-            throw std::invalid_argument(where + ": " + use_name(use.use) + " is not a use of " +
-                                        (image ? "an image (" : "a buffer (") + desc.name + ")");
+            programming_error(where + ": " + use_name(use.use) + " is not a use of " +
+                              (image ? "an image (" : "a buffer (") + desc.name + ")");
         }
         UseScope scope = use_scope(use.use);
         if (!image) scope.layout = Layout::kUndefined;
@@ -50,9 +50,9 @@ std::vector<MergedUse> merge_uses(const ResourceTable& resources, const std::str
             continue;
         }
         if (same->scope.layout != scope.layout) {
-            throw std::invalid_argument(where + " uses " + desc.name + " in two layouts (" +
-                                        layout_name(same->scope.layout) + ", " +
-                                        layout_name(scope.layout) + ")");
+            programming_error(where + " uses " + desc.name + " in two layouts (" +
+                              layout_name(same->scope.layout) + ", " + layout_name(scope.layout) +
+                              ")");
         }
         same->scope.stages |= scope.stages;
         same->scope.access |= scope.access;
@@ -132,9 +132,8 @@ class Compiler {
           used_(resources.size(), false),
           aliasing_(aliasing) {
         if (initial.size() != resources.size()) {
-            throw std::invalid_argument("graph: " + std::to_string(initial.size()) +
-                                        " initial states for " + std::to_string(resources.size()) +
-                                        " resources");
+            programming_error("graph: " + std::to_string(initial.size()) + " initial states for " +
+                              std::to_string(resources.size()) + " resources");
         }
         for (std::size_t r = 0; r < resources.size(); ++r) {
             trackers_.emplace_back(
@@ -171,8 +170,8 @@ class Compiler {
     void check_not_shared(const std::vector<ResourceUse>& exports) const {
         for (const ResourceUse& use : exports) {
             if (memory_of(use.resource) >= 0) {
-                throw std::invalid_argument("graph: " + resources_[use.resource].name +
-                                            " is exported and shares memory");
+                programming_error("graph: " + resources_[use.resource].name +
+                                  " is exported and shares memory");
             }
         }
     }
@@ -185,22 +184,21 @@ class Compiler {
     void check_aliasing() const {
         if (aliasing_.memory.empty()) return;
         if (aliasing_.memory.size() != resources_.size()) {
-            throw std::invalid_argument("graph: aliasing names the memory of " +
-                                        std::to_string(aliasing_.memory.size()) + " of " +
-                                        std::to_string(resources_.size()) + " resources");
+            programming_error("graph: aliasing names the memory of " +
+                              std::to_string(aliasing_.memory.size()) + " of " +
+                              std::to_string(resources_.size()) + " resources");
         }
         for (std::size_t r = 0; r < resources_.size(); ++r) {
             const std::int32_t memory = aliasing_.memory[r];
             if (memory < 0) continue;
             const ResourceDesc& desc = resources_[static_cast<std::uint16_t>(r)];
             if (static_cast<std::size_t>(memory) >= aliasing_.initial.size()) {
-                throw std::invalid_argument("graph: " + desc.name + " is bound to memory " +
-                                            std::to_string(memory) + " of " +
-                                            std::to_string(aliasing_.initial.size()));
+                programming_error("graph: " + desc.name + " is bound to memory " +
+                                  std::to_string(memory) + " of " +
+                                  std::to_string(aliasing_.initial.size()));
             }
             if (desc.lifetime != Lifetime::kTransient) {
-                throw std::invalid_argument("graph: " + desc.name +
-                                            " is persistent and shares memory");
+                programming_error("graph: " + desc.name + " is persistent and shares memory");
             }
         }
     }
@@ -217,9 +215,9 @@ class Compiler {
         used_[resource] = true;
         if (holder == resource) return false;
         if (!first_use) {
-            throw std::invalid_argument(where + " uses " + resources_[resource].name + " after " +
-                                        resources_[static_cast<std::uint16_t>(holder)].name +
-                                        ", which shares its memory, took it over");
+            programming_error(where + " uses " + resources_[resource].name + " after " +
+                              resources_[static_cast<std::uint16_t>(holder)].name +
+                              ", which shares its memory, took it over");
         }
         const ResourceState before =
             holder >= 0 ? trackers_[static_cast<std::size_t>(holder)].state()
@@ -233,8 +231,8 @@ class Compiler {
     void check_produced(const std::string& where, const MergedUse& use) const {
         const ResourceDesc& desc = resources_[use.resource];
         if (desc.lifetime == Lifetime::kTransient && !written_[use.resource] && !use.scope.writes) {
-            throw std::invalid_argument(where + " reads " + desc.name +
-                                        ", which no earlier pass of the frame writes");
+            programming_error(where + " reads " + desc.name +
+                              ", which no earlier pass of the frame writes");
         }
     }
 

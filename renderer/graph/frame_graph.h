@@ -16,7 +16,7 @@
 // previous one) waits for that one's accesses and transitions from the undefined layout: its own
 // earlier contents and layout are gone.
 //
-// Refusals (std::invalid_argument, a programming error in the plan, never a user's input):
+// Refusals (programming errors in the plan, common/programming_error.h; never a user's input):
 // a transient resource read before any step of the frame wrote it; one step using a resource in
 // two layouts; a buffer-only use (indirect, conditional, host) of an image; an image-only use
 // (attachment, transfer of layouts) of a buffer is allowed only for transfer and storage uses;

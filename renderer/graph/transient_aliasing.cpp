@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <numeric>
-#include <stdexcept>
 #include <string>
+
+#include "common/programming_error.h"
 
 namespace monoplane::graph {
 
@@ -33,9 +34,9 @@ std::vector<FrameLifetime> frame_lifetimes(const ResourceTable& resources,
 
 bool may_share(const AliasCandidate& a, const AliasCandidate& b) {
     if (a.lifetimes.size() != b.lifetimes.size()) {
-        throw std::invalid_argument("aliasing: candidates with lifetimes in " +
-                                    std::to_string(a.lifetimes.size()) + " and " +
-                                    std::to_string(b.lifetimes.size()) + " plans");
+        programming_error("aliasing: candidates with lifetimes in " +
+                          std::to_string(a.lifetimes.size()) + " and " +
+                          std::to_string(b.lifetimes.size()) + " plans");
     }
     for (std::size_t p = 0; p < a.lifetimes.size(); ++p) {
         const FrameLifetime& x = a.lifetimes[p];

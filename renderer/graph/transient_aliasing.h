@@ -77,7 +77,7 @@ bool may_share(const AliasCandidate& a, const AliasCandidate& b);
 
 // Every candidate in exactly one group (a group of one keeps its memory to itself). Groups are in
 // the order they were opened: by their first member's size, largest first, ties by index.
-// Throws std::invalid_argument when candidates have lifetimes for different numbers of plans.
+// Candidates with lifetimes for different numbers of plans are a programming error.
 std::vector<AliasGroup> plan_aliasing(const std::vector<AliasCandidate>& candidates);
 
 // The bytes the groups take, and the bytes the candidates would take with one allocation each.

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "common/programming_error.h"
 #include "renderer/modes/farfield_rig.h"
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/modes/transient_memory.h"
@@ -137,7 +138,7 @@ struct ModeRenderer::ForwardImages {
                 return make_view_image(ctx, memory, image.key.view, role, image.desc);
             }
         }
-        throw std::logic_error("ForwardImages: no " + plan::image_role_name(role));
+        programming_error("ForwardImages: no " + plan::image_role_name(role));
     }
 
   public:

@@ -1,7 +1,6 @@
 #include "renderer/vk/image.h"
 
-#include <cassert>
-
+#include "common/programming_error.h"
 #include "renderer/vk/memory.h"
 
 namespace monoplane::vk_core {
@@ -41,7 +40,7 @@ Image::Image(const Context& ctx, const ImageDesc& desc, const DeviceMemory& shar
       shared_memory_(true),
       desc_(desc),
       aspect_(aspect_of(desc.format)) {
-    assert(image_.getMemoryRequirements().size <= shared.bytes());
+    MONOPLANE_EXPECTS(image_.getMemoryRequirements().size <= shared.bytes());
     image_.bindMemory(*shared, 0);
     make_view(ctx);
 }

@@ -1,6 +1,6 @@
 #include "tests/gpu/graph_harness.h"
 
-#include <stdexcept>
+#include "common/programming_error.h"
 
 namespace monoplane::testing {
 
@@ -9,15 +9,14 @@ graph::ImageHandle GraphHarness::input(plan::ViewId view, plan::ImageRole role) 
     const plan::ResourceKey key{view, false, role, plan::BufferRole::kDrawLists};
     const std::string name = plan::resource_name(key);
     if (plan_.handle(key)) {
-        throw std::logic_error("graph harness: " + name +
-                               " declared an input after a step used it");
+        programming_error("graph harness: " + name + " declared an input after a step used it");
     }
     const graph::ImageHandle image = plan_.resources.image(name, graph::Lifetime::kPersistent);
     plan_.keys.push_back(key);
     // Should PlanResources ever key images differently, steps would get a second, transient
     // handle and the input would silently go unused.
     if (resources_.image(view, role) != image) {
-        throw std::logic_error("graph harness: PlanResources does not find the input " + name);
+        programming_error("graph harness: PlanResources does not find the input " + name);
     }
     return image;
 }
@@ -60,8 +59,8 @@ std::vector<executor::BoundResource> GraphHarness::bindings() const {
     const auto check = [&](std::uint16_t resource) {
         if (plan_.resources[resource].kind == graph::ResourceKind::kImage &&
             bindings[resource].images.empty()) {
-            throw std::logic_error("graph harness: " + plan_.resources[resource].name +
-                                   " is used but not bound");
+            programming_error("graph harness: " + plan_.resources[resource].name +
+                              " is used but not bound");
         }
     };
     for (const plan::PlannedPass& pass : plan_.passes) {

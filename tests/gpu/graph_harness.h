@@ -46,8 +46,8 @@ class GraphHarness {
     const plan::FramePlan& plan() const { return plan_; }
 
     // An image the test filled before the frame. Persistent, because the graph refuses a read of
-    // a transient resource no earlier step of the frame wrote. Throws std::logic_error when a
-    // step already named it (it would be transient by then).
+    // a transient resource no earlier step of the frame wrote. A programming error when a step
+    // already named it (it would be transient by then).
     graph::ImageHandle input(plan::ViewId view, plan::ImageRole role);
 
     // The device images a resource is this frame (several for SSAO's scratch images).
@@ -69,8 +69,8 @@ class GraphHarness {
 
     // Records every pass in order with the graph's barriers (begin_frame, begin_pass and end_pass
     // around each, end_frame). Called again, it records the next frame from the states this one
-    // left. Throws std::logic_error for an image a step uses that was never bound, and whatever
-    // the graph and the executor throw for a plan the passes do not follow.
+    // left. A programming error for an image a step uses that was never bound, as the graph's
+    // and the executor's refusals of a plan the passes do not follow are.
     void record(const vk::raii::CommandBuffer& cmd);
 
   private:
