@@ -388,7 +388,7 @@ TEST_F(LabDayTest, ALongRosterScrollsAndResumeIsReached) {
     ASSERT_TRUE(lab.wait_step("protocol")) << lab.log();
     // The footer laid out: its first frames can place it before the roster's height is known.
     ASSERT_TRUE(lab.wait_state([](const json& j) { return j["controls"].contains("footer"); }));
-    lab.wait_state([](const json& j) { return j["controls"]["footer"]["visible"] == true; });
+    lab.wait_state([](const json& j) { return control_in(j, "footer")["visible"] == true; });
     json j = lab.state();
     ASSERT_EQ(j["roster"].size(), 41u);
     json interrupted;

@@ -86,6 +86,15 @@ inline bool wait_for(const std::function<bool()>& done, int seconds) {
     return done();
 }
 
+// The control `name` of a state dump; null when the dump has no such control (a const json's
+// operator[] must not be asked for a key it lacks).
+inline json control_in(const json& state, const std::string& name) {
+    if (!state.is_object() || !state.contains("controls")) return json();
+    const json& controls = state.at("controls");
+    if (!controls.is_object() || !controls.contains(name)) return json();
+    return controls.at(name);
+}
+
 // The launcher process, its window and its state file.
 // How a test starts the launcher: its own options after the state file and screenshots, and
 // its environment's changes.
@@ -159,7 +168,7 @@ class Lab {
     // Waits until the control `name` has the keyboard. A step's field takes it a frame or more
     // after the step shows (slow frames on a loaded machine): keys typed before then are lost.
     bool wait_focused(const std::string& name, int seconds = 30) {
-        return wait_state([&](const json& j) { return j["controls"][name]["focused"] == true; },
+        return wait_state([&](const json& j) { return control_in(j, name)["focused"] == true; },
                           seconds);
     }
     // The control `name` of the state dump (null when it is not drawn).
