@@ -440,9 +440,20 @@ TEST_F(LabDayTest, TabReachesEveryControlAndEnterPicksInACombo) {
         << lab.state()["controls"].dump(1);
     std::vector<std::string> reached;
     for (int i = 0; i < 3; ++i) {
+        // Each Tab moves the keyboard on: wait for the dump to show it moved (a loaded machine's
+        // frames can take longer than any fixed pause), then read where it went.
+        const std::string before = reached.empty() ? "database" : reached.back();
         xdo("key Tab");
+        json controls;
+        wait_for(
+            [&] {
+                controls = lab.state()["controls"];
+                for (const auto& [name, c] : controls.items())
+                    if (c["focused"] == true && name != before) return true;
+                return false;
+            },
+            10);
         std::this_thread::sleep_for(std::chrono::milliseconds(300));
-        const json controls = lab.state()["controls"];
         for (const auto& [name, c] : controls.items())
             if (c["focused"] == true) reached.push_back(name);
         // The focused button shows Dear ImGui's focus frame around it, the others do not.
