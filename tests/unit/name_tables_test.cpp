@@ -62,7 +62,7 @@ TEST(RenderModeNames, TheStudysModesAreTheNamedModes) {
 // Every renderer choice has a named mode, and every named mode but the study's hybrid-auto is a
 // renderer choice; the hybrid modes' stereo pass is not part of their name.
 TEST(RenderModeNames, TheRenderersChoicesAreTheNamedModes) {
-    using namespace modes;
+    using namespace plan;
     const RenderModeChoice stereo_gs{Mode::kStereo, StereoPass::kGeometryShader};
     EXPECT_EQ(render_mode_name(stereo_gs), "stereo-gs");
     EXPECT_EQ(render_mode_name({Mode::kStereo, StereoPass::kMultiview}), "stereo-multiview");
@@ -100,7 +100,7 @@ TEST(RenderModeNames, TheRenderersChoicesAreTheNamedModes) {
 }
 
 TEST(RenderModeNames, AntiAliasingRoundTripsThroughTheSharedTable) {
-    using namespace modes;
+    using namespace plan;
     for (AntiAliasing aa : {AntiAliasing::kNone, AntiAliasing::kTaa, AntiAliasing::kMsaa2,
                             AntiAliasing::kMsaa4, AntiAliasing::kMsaa8}) {
         EXPECT_EQ(parse_anti_aliasing(anti_aliasing_name(aa)), aa) << anti_aliasing_name(aa);
