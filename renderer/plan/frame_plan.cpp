@@ -270,7 +270,10 @@ class PlanBuilder {
     }
 
     PlannedPass* find_pass(PassKind kind, ViewId view) {
-        return const_cast<PlannedPass*>(std::as_const(plan_).find(kind, view));
+        for (PlannedPass& pass : plan_.passes) {
+            if (pass.kind == kind && pass.view == view) return &pass;
+        }
+        return nullptr;
     }
 
     // Whether `tonemap` reads the eye's HDR image and no pass after `composite` but it uses that
