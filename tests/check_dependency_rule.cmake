@@ -29,13 +29,18 @@ check(study "${gpu}|renderer/|analysis/|hmd/|scenes/")
 # text/ (fonts, line breaking, glyph coverage) serves the study's checks and the headset alike.
 check(text "${gpu}|renderer/|scenes/|hmd/|study/|analysis/")
 check(analysis "${gpu}|renderer/|hmd/|scenes/|study/")
-# Namespaces follow folders: every namespace a file of the folder opens is the folder's.
+# Namespaces follow folders: every namespace a file of the folder opens is the folder's, or one
+# inside it that is named after the file's own subfolder (a pass unit's: monoplane::passes::
+# depth_view in renderer/passes/depth_view/).
 function(check_namespace folder namespace)
   file(GLOB_RECURSE files ${SOURCE_DIR}/${folder}/*.h ${SOURCE_DIR}/${folder}/*.cpp)
   foreach(f ${files})
     file(STRINGS ${f} lines REGEX "^namespace monoplane")
+    get_filename_component(subfolder ${f} DIRECTORY)
+    get_filename_component(subfolder ${subfolder} NAME)
     foreach(line ${lines})
-      if(NOT line MATCHES "^namespace ${namespace}( |$)")
+      if(NOT line MATCHES "^namespace ${namespace}( |$)" AND
+         NOT line MATCHES "^namespace ${namespace}::${subfolder}( |$)")
         file(RELATIVE_PATH rel ${SOURCE_DIR} ${f})
         list(APPEND violations "${rel}: ${line} (this folder's namespace is ${namespace})")
       endif()

@@ -1,4 +1,5 @@
 // `monoplane render`: one scene, one mode, one viewpoint -> left.png, right.png, stats.json.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -26,6 +27,7 @@
 #include "common/json_writer.h"
 #include "hmd/profile.h"
 #include "renderer/modes/mode_renderer.h"
+#include "renderer/passes/pass_units.h"
 #include "renderer/plan/frame_plan_json.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/memory.h"
@@ -100,7 +102,9 @@ void write_configuration(JsonWriter& j, const RenderOptions& o,
         .value("ipd", o.ipd.value_or(r.profile.ipd));
     j.value("width", r.width).value("height", r.height);
     j.value("stereo_pass", plan::stereo_pass_name(choice.stereo_pass));
-    if (choice.mode != plan::Mode::kStereo) j.value("debug_view", o.debug_view);
+    if (choice.mode != plan::Mode::kStereo || o.debug_view != "none") {
+        j.value("debug_view", o.debug_view);
+    }
     if (choice.mode == plan::Mode::kHybrid) {
         j.value("variant", o.mono_culling);
         // auto: the variant it resolved to
@@ -247,6 +251,7 @@ struct RenderSetup {
     bool auto_plane = false;            // --mono-plane auto
     plan::MonoCulling mono_culling = plan::MonoCulling::kOcclusionCull;
     plan::DebugView debug_view = plan::DebugView::kNone;
+    std::string unit_debug_view;  // a pass unit's debug view ("depth") instead
     SceneSource scene_source;
     scenes::Detail detail{};
     rig::PosePath pose_path;
@@ -291,10 +296,17 @@ void parse_hybrid_flags(const RenderOptions& o, RenderSetup& setup) {
                         " is not one of no-opt, discard, occlusion-cull, auto");
     }
     setup.mono_culling = *mono_culling;
+    const std::vector<std::string> unit_views = passes::unit_debug_views();
+    if (std::find(unit_views.begin(), unit_views.end(), o.debug_view) != unit_views.end()) {
+        setup.unit_debug_view = o.debug_view;
+        return;
+    }
     const auto debug_view = plan::parse_debug_view(o.debug_view);
     if (!debug_view) {
+        std::string names;
+        for (const std::string& name : unit_views) names += ", " + name;
         throw UserError("--debug-view " + o.debug_view +
-                        ": use none, tint-mono, stereo-only, mono-only or routing");
+                        ": use none, tint-mono, stereo-only, mono-only, routing" + names);
     }
     setup.debug_view = *debug_view;
 }
@@ -386,6 +398,7 @@ modes::FrameInputs first_frame_inputs(const RenderOptions& o, const RenderSetup&
     inputs.grazing_angle = o.grazing_deg * std::numbers::pi / 180.0;
     inputs.view_blend_band = o.blend_band;
     inputs.debug = setup.debug_view;
+    inputs.unit_debug_view = setup.unit_debug_view;
     inputs.mono_culling = setup.mono_culling;
     return inputs;
 }
@@ -498,7 +511,7 @@ void run_render(const RenderOptions& o, const GlobalOptions& global) {
         }
     };
     const RenderResults results{profile,  scene, *ctx,       width, height, summarize(measured),
-                                renderer, mono,  comparison, ao,    out, device_memory};
+                                renderer, mono,  comparison, ao,    out,    device_memory};
     const std::string json = summary_json(
         o, setup.choice, results, depth_profile_section(o, scene, inputs, renderer), auto_json);
     std::ofstream(out / "stats.json") << json << "\n";
@@ -537,12 +550,13 @@ void add_mode_flags(CLI::App& cmd, RenderOptions& options) {
     cmd.add_option("--blend-band", options.blend_band,
                    "Metres below m over which the eyes' view vectors blend into C's (0: off)")
         ->capture_default_str();
-    cmd.add_option(
-           "--debug-view", options.debug_view,
-           "Debug view: none, tint-mono, stereo-only, mono-only (hybrid modes) or routing (chunks "
-           "coloured by the lists the GPU culling put them in: green eyes, blue C, "
-           "magenta both)")
-        ->capture_default_str();
+    std::string debug_views =
+        "Debug view: none, tint-mono, stereo-only, mono-only (hybrid modes), routing (chunks "
+        "coloured by the lists the GPU culling put them in: green eyes, blue C, magenta both)";
+    for (const plan::PassUnitDeclaration& unit : passes::pass_unit_declarations()) {
+        if (unit.debug_view) debug_views += "; " + *unit.debug_view + " (" + unit.help + ")";
+    }
+    cmd.add_option("--debug-view", options.debug_view, debug_views)->capture_default_str();
     cmd.add_option("--variant", options.mono_culling,
                    "hybrid: how the merged depth pyramid of both eyes saves C's work (papers/000 "
                    "Sect. 5.1): no-opt, discard (C's hidden fragments), occlusion-cull (also "

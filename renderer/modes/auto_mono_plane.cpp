@@ -16,9 +16,7 @@ plan::FrameCost cost_of(const profile::FrameStats& stats) {
     plan::FrameCost cost;
     cost.frame_ms = stats.gpu_frame_ms;
     for (const profile::PassTime& pass : stats.passes) {
-        if (const auto parsed = plan::parse_pass_name(pass.name)) {
-            plan::add_pass_time(cost, parsed->first, parsed->second, pass.gpu_ms);
-        }
+        plan::add_pass_time(cost, pass.kind, pass.view, pass.gpu_ms);
     }
     return cost;
 }

@@ -29,8 +29,10 @@ void ModeRenderer::record_pass(const vk::raii::CommandBuffer& cmd, std::size_t i
     // The barriers into the pass first, outside its timed scope, as its own commands' cost is.
     passes::StepSync& sync = executor_.begin_pass(cmd, index);
     const bool timed = pass.kind != plan::PassKind::kReadback;  // read-backs are not GPU frame time
-    if (timed) profiler_.begin_pass(cmd, pass.name);
-    if (!pass.statistics_scope.empty()) profiler_.begin_view(cmd, pass.statistics_scope);
+    if (timed) profiler_.begin_pass(cmd, pass.name, pass.kind, pass.view);
+    if (!pass.statistics_scope.empty()) {
+        profiler_.begin_view(cmd, pass.statistics_scope, pass.kind, pass.view);
+    }
     record_planned(cmd, pass, frame, sync);
     if (!pass.statistics_scope.empty()) profiler_.end_view(cmd);
     if (timed) profiler_.end_pass(cmd);
@@ -98,6 +100,9 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan
             break;
         case plan::PassKind::kReadback:
             record_readback(cmd, frame);
+            break;
+        case plan::PassKind::kUnit:
+            record_unit(cmd, pass, frame, sync);
             break;
     }
 }

@@ -40,11 +40,9 @@ profile::FrameStats ModeRenderer::collect_frame(std::uint32_t slot, double recor
     };
     // This slot's frame had transparency passes if its statistics have their scopes (the plan
     // may since have changed).
-    const std::pair<plan::PassKind, plan::ViewId> left_transparency{plan::PassKind::kTransparency,
-                                                                    plan::ViewId::kLeft};
     const bool transparency =
         std::any_of(stats.views.begin(), stats.views.end(), [&](const profile::ViewStatistics& v) {
-            return plan::statistics_scope_pass(v.view) == left_transparency;
+            return v.pass_kind == plan::PassKind::kTransparency;
         });
     const auto forward_draws = [&](std::uint32_t list) {
         const std::uint32_t blended = drawn(list, MONOPLANE_CLASS_BLENDED);
@@ -52,9 +50,8 @@ profile::FrameStats ModeRenderer::collect_frame(std::uint32_t slot, double recor
                (transparency && list != MONOPLANE_CULL_MONO ? 0u : blended);
     };
     for (profile::ViewStatistics& view : stats.views) {
-        const auto pass = plan::statistics_scope_pass(view.view);
-        if (!pass) continue;
-        const auto [kind, view_id] = *pass;
+        const plan::PassKind kind = view.pass_kind;
+        const plan::ViewId view_id = view.pass_view;
         if (kind == plan::PassKind::kForward) view.draws = forward_draws(cull_list(view_id));
         if (kind == plan::PassKind::kTransparency) {
             view.draws = drawn(cull_list(view_id), MONOPLANE_CLASS_BLENDED);

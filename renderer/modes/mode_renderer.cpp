@@ -11,6 +11,7 @@
 #include "renderer/modes/frustum_culling.h"
 #include "renderer/modes/mode_renderer_internals.h"
 #include "renderer/passes/culling/cull_constants.h"
+#include "renderer/passes/pass_units.h"
 #include "rig/temporal_jitter.h"
 
 namespace monoplane::modes {
@@ -141,6 +142,7 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       culling_(ctx, scene_, resources_->chunk_table(), resources_->level_table()),
       pyramid_(ctx),
       taa_(ctx),
+      units_(passes::pass_unit_declarations()),
       profiler_(ctx),
       ring_(ctx) {
     if (options.ssao) ssao_ = std::make_unique<passes::SsaoPass>(ctx, options.ssao_params);
@@ -162,7 +164,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
     possible_plans_ = possible_plans(
         plan_options_of(mode, options, blended_chunks_, options.auto_mono_plane.has_value()),
         plan::PlanDevice{ctx.capabilities().conditional_rendering,
-                         ctx.capabilities().independent_blend});
+                         ctx.capabilities().independent_blend},
+        units_);
     if (!eye_layers_) {
         eye_memory_ = View::eye_memory(ctx, eye_extent, eye_features, possible_plans_);
     }
@@ -501,12 +504,13 @@ void ModeRenderer::update_plan(const FrameInputs& inputs, const FrameState& fram
     planned.mono_skipped = !frame.use_mono;
     planned.mono_culling = frame.mono_culling;
     planned.debug = inputs.debug;
+    planned.unit_debug_view = inputs.unit_debug_view;
     planned.shadow_needed = frame.shadow_needed;
     const plan::PlanDevice device{frame.predicated, ctx_.capabilities().independent_blend};
     // Consecutive frames of one configuration share their plan: make it only when that changes.
     const PlanInputs key{options, planned, device};
     if (last_plan_inputs_ == key) return;
-    last_plan_ = plan::plan_frame(options, planned, device);
+    last_plan_ = plan::plan_frame(options, planned, device, units_);
     last_plan_inputs_ = key;
     executor_.plan_changed();
 }

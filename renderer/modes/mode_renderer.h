@@ -11,6 +11,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,11 +26,13 @@
 #include "renderer/passes/depth_pyramid/depth_pyramid_pass.h"
 #include "renderer/passes/forward/forward_pass.h"
 #include "renderer/passes/shadow/shadow_pass.h"
+#include "renderer/passes/shared/pass_unit.h"
 #include "renderer/passes/ssao/ssao_pass.h"
 #include "renderer/passes/taa/taa_pass.h"
 #include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/plan/lod_selection.h"
+#include "renderer/plan/pass_unit.h"
 #include "renderer/plan/render_choices.h"
 #include "renderer/plan/variant_chooser.h"
 #include "renderer/profile/frame_profiler.h"
@@ -86,6 +89,8 @@ struct FrameInputs {
     double grazing_angle = 0.017453292519943295;
     double view_blend_band = 0.3;  // metres below m over which view vectors blend (Sect. 4.3)
     plan::DebugView debug = plan::DebugView::kNone;
+    // A pass unit's debug view instead (passes::unit_debug_views(): "depth"), or "".
+    std::string unit_debug_view{};
     plan::MonoCulling mono_culling = plan::MonoCulling::kOcclusionCull;
     // Drives TAA's jitter and tells whether the history continues: a frame whose index does not
     // follow the renderer's previous one starts the history anew. Unset: the next index.
@@ -238,6 +243,9 @@ class ModeRenderer {
     // The device images the plan's resources are this frame (resource_bindings.cpp).
     std::vector<executor::BoundResource> bind_resources();
     std::vector<vk_core::ImageRange> view_images(const plan::ResourceKey& key) const;
+    // The one device image of a view's resource (a pass unit's), or a programming error for a
+    // role that is several images or none this frame.
+    const vk_core::Image& view_image(const plan::ResourceKey& key) const;
     // Before a view's images go: the executor must not take their states for new ones.
     void forget_images(const View& view);
     std::optional<passes::Predicate> predicate(plan::GpuPredicate when) const;
@@ -257,6 +265,9 @@ class ModeRenderer {
     void record_tonemap(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                         const FrameState& frame);
     void record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame);
+    // A pass unit's pass, by its recorder (made on its first pass; unit_recording.cpp).
+    void record_unit(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
+                     const FrameState& frame, passes::StepSync& sync);
     // Waits for the slot's frame (if one is in flight) and queues its statistics.
     void complete_frame(std::uint32_t slot);
     // complete_frame for every slot, oldest first: nothing of this renderer is in flight.
@@ -284,6 +295,10 @@ class ModeRenderer {
     passes::DepthPyramidPass pyramid_;
     passes::TaaPass taa_;
     std::unique_ptr<passes::SsaoPass> ssao_;
+    // The pass kinds written as units (renderer/passes/pass_units.h): their declarations, which
+    // every plan places, and the recorders of those a frame has run, by name.
+    std::vector<plan::PassUnitDeclaration> units_;
+    std::map<std::string, std::unique_ptr<passes::UnitRecorder>> unit_recorders_;
     profile::FrameProfiler profiler_;
     vk_core::DescriptorSet merged_depth_set_;  // the forward pass's set 1 (mask, routing)
     // Single-pass stereo: both eyes' ViewConstants in one buffer, and eyes_forward_'s set 0.

@@ -70,6 +70,47 @@ std::vector<vk_core::ImageRange> ModeRenderer::view_images(const plan::ResourceK
     }
 }
 
+const vk_core::Image& ModeRenderer::view_image(const plan::ResourceKey& key) const {
+    MONOPLANE_EXPECTS(!key.is_buffer && key.view != plan::ViewId::kNone &&
+                      key.view != plan::ViewId::kEyes);
+    const View* view =
+        key.view == plan::ViewId::kMono ? mono_.get() : eyes_[plan::eye_index(key.view)].get();
+    const vk_core::Image* image = nullptr;
+    if (view != nullptr) {
+        switch (key.image) {
+            case plan::ImageRole::kHdr:
+                image = &view->hdr;
+                break;
+            case plan::ImageRole::kDepth:
+                image = &view->depth;
+                break;
+            case plan::ImageRole::kLinearDepth:
+                image = &view->linear_depth;
+                break;
+            case plan::ImageRole::kVelocity:
+                image = view->velocity ? &*view->velocity : nullptr;
+                break;
+            case plan::ImageRole::kHistory:
+                image = view->history[history_parity_] ? &*view->history[history_parity_] : nullptr;
+                break;
+            case plan::ImageRole::kHistoryPrevious:
+                image = view->history[1 - history_parity_] ? &*view->history[1 - history_parity_]
+                                                           : nullptr;
+                break;
+            case plan::ImageRole::kDisplay:
+                image = &view->display;
+                break;
+            default:
+                break;
+        }
+    }
+    if (image == nullptr) {
+        programming_error("a pass unit asked for " + plan::resource_name(key) +
+                          ", which is not one image of a view this frame");
+    }
+    return *image;
+}
+
 std::vector<executor::BoundResource> ModeRenderer::bind_resources() {
     std::vector<executor::BoundResource> bindings;
     for (const plan::ResourceKey& key : last_plan_.keys) {

@@ -5,7 +5,18 @@
 namespace monoplane::modes {
 
 std::vector<plan::FramePlan> possible_plans(const plan::PlanOptions& options,
-                                            const plan::PlanDevice& device) {
+                                            const plan::PlanDevice& device,
+                                            const std::vector<plan::PassUnitDeclaration>& units) {
+    // The built-in debug views, then the units' (each beside no built-in one).
+    std::vector<std::pair<plan::DebugView, std::string>> debug_views;
+    for (const plan::DebugView debug :
+         {plan::DebugView::kNone, plan::DebugView::kTintMono, plan::DebugView::kStereoOnly,
+          plan::DebugView::kMonoOnly, plan::DebugView::kRouting}) {
+        debug_views.emplace_back(debug, "");
+    }
+    for (const plan::PassUnitDeclaration& unit : units) {
+        if (unit.debug_view) debug_views.emplace_back(plan::DebugView::kNone, *unit.debug_view);
+    }
     std::vector<plan::FramePlan> plans;
     plan::PlanOptions o = options;
     for (const bool read_back : {true, false}) {
@@ -14,13 +25,11 @@ std::vector<plan::FramePlan> possible_plans(const plan::PlanOptions& options,
             for (const plan::MonoCulling culling :
                  {plan::MonoCulling::kNoOpt, plan::MonoCulling::kDiscard,
                   plan::MonoCulling::kOcclusionCull}) {
-                for (const plan::DebugView debug :
-                     {plan::DebugView::kNone, plan::DebugView::kTintMono,
-                      plan::DebugView::kStereoOnly, plan::DebugView::kMonoOnly,
-                      plan::DebugView::kRouting}) {
+                for (const auto& [debug, unit_debug_view] : debug_views) {
                     for (const bool shadow_needed : {true, false}) {
-                        const plan::PlanFrame frame{mono_skipped, culling, debug, shadow_needed};
-                        plans.push_back(plan::plan_frame(o, frame, device));
+                        const plan::PlanFrame frame{mono_skipped, culling, debug, shadow_needed,
+                                                    unit_debug_view};
+                        plans.push_back(plan::plan_frame(o, frame, device, units));
                     }
                 }
             }

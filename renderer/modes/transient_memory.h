@@ -16,15 +16,17 @@
 #include <vector>
 
 #include "renderer/plan/frame_plan.h"
+#include "renderer/plan/pass_unit.h"
 #include "renderer/vk/image.h"
 
 namespace monoplane::modes {
 
-// Every plan a renderer planned with `options` on `device` may execute: the frame's inputs vary
-// (C skipped or drawn, its culling variant, the debug view, the shadow map drawn or reused, the
-// read-back on or off).
+// Every plan a renderer planned with `options` on `device`, with the pass units `units`, may
+// execute: the frame's inputs vary (C skipped or drawn, its culling variant, the debug view, the
+// units' debug views included, the shadow map drawn or reused, the read-back on or off).
 std::vector<plan::FramePlan> possible_plans(const plan::PlanOptions& options,
-                                            const plan::PlanDevice& device);
+                                            const plan::PlanDevice& device,
+                                            const std::vector<plan::PassUnitDeclaration>& units);
 
 // An image a view may place in shared memory.
 struct TransientImage {

@@ -7,6 +7,7 @@
 #include "common/name_table.h"
 #include "common/programming_error.h"
 #include "renderer/plan/pass_steps.h"
+#include "renderer/plan/pass_unit.h"
 
 namespace monoplane::plan {
 namespace {
@@ -22,7 +23,8 @@ constexpr NameTable<PassKind> kPassKindNames = {{PassKind::kCulling, "culling"},
                                                 {PassKind::kTaa, "taa"},
                                                 {PassKind::kTonemap, "tonemap"},
                                                 {PassKind::kDepthHistogram, "depth_histogram"},
-                                                {PassKind::kReadback, "readback"}};
+                                                {PassKind::kReadback, "readback"},
+                                                {PassKind::kUnit, "unit"}};
 constexpr NameTable<GpuPredicate> kPredicateNames = {
     {GpuPredicate::kAlways, "always"},
     {GpuPredicate::kMonoAny, "mono-any"},
@@ -70,8 +72,9 @@ FrameShape shape_of(const PlanOptions& options, const PlanFrame& frame, const Pl
 
 class PlanBuilder {
   public:
-    PlanBuilder(const PlanOptions& options, const PlanFrame& frame, const FrameShape& shape)
-        : options_(options), frame_(frame), s_(shape), r_(plan_) {}
+    PlanBuilder(const PlanOptions& options, const PlanFrame& frame, const FrameShape& shape,
+                const std::vector<PassUnitDeclaration>& units)
+        : options_(options), frame_(frame), s_(shape), units_(units), r_(plan_) {}
 
     FramePlan build() {
         add_culling();
@@ -79,6 +82,8 @@ class PlanBuilder {
         add_eye_forward();
         if (s_.hybrid) add_mono_passes();
         add_post_processing();
+        // Before the fusion: a unit that reads an eye's HDR image keeps its tone mapping apart.
+        add_units(UnitSlot::kAfterToneMapping);
         fuse_tonemaps();
         if (options_.depth_histogram) add_depth_histogram();
         add_readback();
@@ -269,6 +274,14 @@ class PlanBuilder {
         }
     }
 
+    void add_units(UnitSlot slot) {
+        for (const PassUnitDeclaration& unit : units_) {
+            if (unit.slot != slot) continue;
+            UnitPlacement placement(unit, options_, frame_, plan_, r_);
+            unit.place(placement);
+        }
+    }
+
     PlannedPass* find_pass(PassKind kind, ViewId view) {
         for (PlannedPass& pass : plan_.passes) {
             if (pass.kind == kind && pass.view == view) return &pass;
@@ -394,6 +407,7 @@ class PlanBuilder {
     const PlanOptions& options_;
     const PlanFrame& frame_;
     const FrameShape& s_;
+    const std::vector<PassUnitDeclaration>& units_;
     FramePlan plan_;
     PlanResources r_;
 };
@@ -415,7 +429,11 @@ std::optional<std::pair<PassKind, ViewId>> parse_pass_name(const std::string& na
         dot == std::string::npos ? ViewId::kNone : parse_view(name.substr(0, dot));
     const std::optional<PassKind> kind =
         parse_name(kPassKindNames, dot == std::string::npos ? name : name.substr(dot + 1));
-    if (!view || !kind || (dot != std::string::npos && *view == ViewId::kNone)) return std::nullopt;
+    // "unit" names no pass: a unit's passes go by the unit's own name.
+    if (!view || !kind || *kind == PassKind::kUnit ||
+        (dot != std::string::npos && *view == ViewId::kNone)) {
+        return std::nullopt;
+    }
     return std::make_pair(*kind, *view);
 }
 
@@ -473,6 +491,13 @@ const PlannedPass* FramePlan::find(PassKind kind, ViewId view) const {
     return nullptr;
 }
 
+const PlannedPass* FramePlan::find_unit(const std::string& unit, ViewId view) const {
+    for (const PlannedPass& pass : passes) {
+        if (pass.kind == PassKind::kUnit && pass.unit == unit && pass.view == view) return &pass;
+    }
+    return nullptr;
+}
+
 bool FramePlan::runs(PassKind kind, ViewId view) const {
     const PlannedPass* pass = find(kind, view);
     return pass != nullptr && !pass->skipped;
@@ -523,10 +548,37 @@ std::vector<graph::GraphPass> FramePlan::graph_passes() const {
 }
 
 FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device) {
+    return plan_frame(options, frame, device, {});
+}
+
+FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device,
+                     const std::vector<PassUnitDeclaration>& units) {
     // The renderer resolves kAuto to this frame's variant first.
     MONOPLANE_EXPECTS(frame.mono_culling != MonoCulling::kAuto);
+    for (const PassUnitDeclaration& unit : units) {
+        MONOPLANE_EXPECTS(unit.place != nullptr);
+        // A unit's name stands for a kind's in its passes' names: it must not read back as one.
+        if (parse_pass_name(unit.name)) {
+            programming_error("pass unit '" + unit.name + "' has the name of a built-in kind");
+        }
+    }
     const FrameShape shape = shape_of(options, frame, device);
-    return PlanBuilder(options, frame, shape).build();
+    return PlanBuilder(options, frame, shape, units).build();
+}
+
+PlannedPass& UnitPlacement::add_pass(ViewId view) {
+    PlannedPass pass;
+    pass.kind = PassKind::kUnit;
+    pass.unit = unit_.name;
+    pass.name = view == ViewId::kNone ? unit_.name : view_name(view) + "." + unit_.name;
+    pass.view = view;
+    plan_.passes.push_back(std::move(pass));
+    return plan_.passes.back();
+}
+
+bool step_declares(const graph::Step& step, std::uint16_t resource) {
+    return std::any_of(step.uses.begin(), step.uses.end(),
+                       [&](const graph::ResourceUse& use) { return use.resource == resource; });
 }
 
 }  // namespace monoplane::plan

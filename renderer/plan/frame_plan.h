@@ -54,6 +54,8 @@ enum class PassKind {
     kTonemap,         // an eye's (or C's) tone mapping into its display image
     kDepthHistogram,  // both eyes' final depth counted into bins (--mono-plane auto)
     kReadback,        // images, depths, AO and draw lists to the host; not part of GPU time
+    // A pass kind written as one unit (renderer/plan/pass_unit.h): PlannedPass::unit names it.
+    kUnit,
 };
 std::string pass_kind_name(PassKind kind);  // "culling", "forward", "ssao", ...
 // The one name of a planned pass: its kind's name, after its view's for a pass of one view
@@ -107,7 +109,10 @@ struct PlannedDraw {
 
 struct PlannedPass {
     PassKind kind = PassKind::kCulling;
-    // pass_name(kind, view): the profiler's scope and the key of bench.json's "passes".
+    // kUnit: the unit's name (PassUnitDeclaration::name), which stands for the kind's.
+    std::string unit;
+    // pass_name(kind, view) (a unit's: its name for the kind's): the profiler's scope and the
+    // key of bench.json's "passes".
     std::string name;
     // The camera it draws for; kNone for passes over every view (culling, shadow, pyramid, ssao,
     // read-back).
@@ -146,6 +151,8 @@ struct FramePlan {
     std::vector<std::string> executed_names() const;
     // The pass of that kind for that view (kNone: the pass over every view), or nullptr.
     const PlannedPass* find(PassKind kind, ViewId view = ViewId::kNone) const;
+    // A unit's pass (PassUnitDeclaration::name) for that view, or nullptr.
+    const PlannedPass* find_unit(const std::string& unit, ViewId view = ViewId::kNone) const;
     // Whether this frame runs that pass (planned and not skipped).
     bool runs(PassKind kind, ViewId view = ViewId::kNone) const;
     // The names of the resources a pass reads (a read-modify-write included) or writes, in the
@@ -192,6 +199,9 @@ struct PlanFrame {
     DebugView debug = DebugView::kNone;
     // The light's region moved since the shadow map was drawn (or it never was).
     bool shadow_needed = true;
+    // A pass unit's debug view shown this frame (PassUnitDeclaration::debug_view: "depth"), or
+    // "" for none; beside `debug`, which names the built-in ones.
+    std::string unit_debug_view;
     bool operator==(const PlanFrame&) const = default;
 };
 
@@ -205,5 +215,10 @@ struct PlanDevice {
 };
 
 FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device);
+// The same with the pass kinds written as units (renderer/plan/pass_unit.h), each placed at its
+// slot.
+struct PassUnitDeclaration;
+FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device,
+                     const std::vector<PassUnitDeclaration>& units);
 
 }  // namespace monoplane::plan

@@ -7,7 +7,7 @@ void write_plan_json(JsonWriter& j, const FramePlan& plan, std::string_view key)
     for (const PlannedPass& pass : plan.passes) {
         j.begin_object();
         j.value("pass", pass.name)
-            .value("kind", pass_kind_name(pass.kind))
+            .value("kind", pass.kind == PassKind::kUnit ? pass.unit : pass_kind_name(pass.kind))
             .value("view", view_name(pass.view));
         if (pass.skipped) {
             j.value("skipped", *pass.skipped);

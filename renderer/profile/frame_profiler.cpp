@@ -50,39 +50,44 @@ FrameProfiler::FrameProfiler(const vk_core::Context& ctx, std::uint32_t slots)
 void FrameProfiler::begin_frame(const vk::raii::CommandBuffer& cmd, std::uint32_t slot) {
     MONOPLANE_EXPECTS(slot < slots_.size());
     recording_ = &slots_[slot];
-    recording_->pass_names.clear();
-    recording_->view_names.clear();
+    recording_->passes.clear();
+    recording_->views.clear();
     cmd.resetQueryPool(*recording_->timestamps, 0, 2 * kMaxPasses);
     if (*recording_->statistics) cmd.resetQueryPool(*recording_->statistics, 0, kMaxViews);
 }
 
-void FrameProfiler::begin_pass(const vk::raii::CommandBuffer& cmd, const std::string& name) {
-    MONOPLANE_EXPECTS(recording_ && !pass_open_ && recording_->pass_names.size() < kMaxPasses);
-    const auto index = static_cast<std::uint32_t>(2 * recording_->pass_names.size());
+void FrameProfiler::begin_pass(const vk::raii::CommandBuffer& cmd, const std::string& name,
+                               plan::PassKind kind, plan::ViewId view) {
+    MONOPLANE_EXPECTS(recording_ && !pass_open_ && recording_->passes.size() < kMaxPasses);
+    const auto index = static_cast<std::uint32_t>(2 * recording_->passes.size());
     cmd.writeTimestamp2(vk::PipelineStageFlagBits2::eTopOfPipe, *recording_->timestamps, index);
-    recording_->pass_names.push_back(name);
+    recording_->passes.push_back({name, 0.0, kind, view});
     pass_open_ = true;
 }
 
 void FrameProfiler::end_pass(const vk::raii::CommandBuffer& cmd) {
     MONOPLANE_EXPECTS(pass_open_);
-    const auto index = static_cast<std::uint32_t>(2 * recording_->pass_names.size() - 1);
+    const auto index = static_cast<std::uint32_t>(2 * recording_->passes.size() - 1);
     cmd.writeTimestamp2(vk::PipelineStageFlagBits2::eBottomOfPipe, *recording_->timestamps, index);
     pass_open_ = false;
 }
 
-void FrameProfiler::begin_view(const vk::raii::CommandBuffer& cmd, const std::string& view) {
-    MONOPLANE_EXPECTS(recording_ && !view_open_ && recording_->view_names.size() < kMaxViews);
-    recording_->view_names.push_back(view);
+void FrameProfiler::begin_view(const vk::raii::CommandBuffer& cmd, const std::string& view,
+                               plan::PassKind pass_kind, plan::ViewId pass_view) {
+    MONOPLANE_EXPECTS(recording_ && !view_open_ && recording_->views.size() < kMaxViews);
+    ViewStatistics& named = recording_->views.emplace_back();
+    named.view = view;
+    named.pass_kind = pass_kind;
+    named.pass_view = pass_view;
     view_open_ = true;
-    const auto index = static_cast<std::uint32_t>(recording_->view_names.size() - 1);
+    const auto index = static_cast<std::uint32_t>(recording_->views.size() - 1);
     if (*recording_->statistics) cmd.beginQuery(*recording_->statistics, index, {});
 }
 
 void FrameProfiler::end_view(const vk::raii::CommandBuffer& cmd) {
     MONOPLANE_EXPECTS(view_open_);
     view_open_ = false;
-    const auto index = static_cast<std::uint32_t>(recording_->view_names.size() - 1);
+    const auto index = static_cast<std::uint32_t>(recording_->views.size() - 1);
     if (*recording_->statistics) cmd.endQuery(*recording_->statistics, index);
 }
 
@@ -90,8 +95,8 @@ FrameStats FrameProfiler::collect(std::uint32_t slot_index) const {
     MONOPLANE_EXPECTS(!pass_open_ && !view_open_ && slot_index < slots_.size());
     const Slot& slot = slots_[slot_index];
     FrameStats stats;
-    if (!slot.pass_names.empty()) {
-        const auto count = static_cast<std::uint32_t>(2 * slot.pass_names.size());
+    if (!slot.passes.empty()) {
+        const auto count = static_cast<std::uint32_t>(2 * slot.passes.size());
         const auto [result, ticks] = slot.timestamps.getResults<std::uint64_t>(
             0, count, count * sizeof(std::uint64_t), sizeof(std::uint64_t),
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
@@ -102,23 +107,22 @@ FrameStats FrameProfiler::collect(std::uint32_t slot_index) const {
         auto elapsed_ms = [&](std::uint64_t begin, std::uint64_t end) {
             return static_cast<double>((end - begin) & mask) * ms_per_tick;
         };
-        for (std::size_t i = 0; i < slot.pass_names.size(); ++i) {
-            stats.passes.push_back(
-                {slot.pass_names[i], elapsed_ms(ticks[2 * i], ticks[2 * i + 1])});
+        for (std::size_t i = 0; i < slot.passes.size(); ++i) {
+            PassTime& pass = stats.passes.emplace_back(slot.passes[i]);
+            pass.gpu_ms = elapsed_ms(ticks[2 * i], ticks[2 * i + 1]);
         }
         stats.gpu_frame_ms = elapsed_ms(ticks.front(), ticks.back());
     }
-    if (*slot.statistics && !slot.view_names.empty()) {
+    if (*slot.statistics && !slot.views.empty()) {
         const std::size_t per_view = counter_fields_.size();
-        const auto count = static_cast<std::uint32_t>(slot.view_names.size());
+        const auto count = static_cast<std::uint32_t>(slot.views.size());
         const std::size_t stride = per_view * sizeof(std::uint64_t);
         const auto [result, values] = slot.statistics.getResults<std::uint64_t>(
             0, count, count * stride, stride,
             vk::QueryResultFlagBits::e64 | vk::QueryResultFlagBits::eWait);
         MONOPLANE_EXPECTS(result == vk::Result::eSuccess);
-        for (std::size_t i = 0; i < slot.view_names.size(); ++i) {
-            ViewStatistics view;
-            view.view = slot.view_names[i];
+        for (std::size_t i = 0; i < slot.views.size(); ++i) {
+            ViewStatistics view = slot.views[i];
             for (std::size_t k = 0; k < per_view; ++k) {
                 view.*counter_fields_[k] = values[i * per_view + k];
             }

@@ -25,10 +25,14 @@ class FrameProfiler {
     // Resets the slot's query pools and records into them until the next begin_frame; call first
     // in a frame's command buffer.
     void begin_frame(const vk::raii::CommandBuffer& cmd, std::uint32_t slot = 0);
-    void begin_pass(const vk::raii::CommandBuffer& cmd, const std::string& name);
+    // The pass's name and its kind and view (PassTime's).
+    void begin_pass(const vk::raii::CommandBuffer& cmd, const std::string& name,
+                    plan::PassKind kind, plan::ViewId view);
     void end_pass(const vk::raii::CommandBuffer& cmd);
     // Statistics are gathered only if the device supports pipelineStatisticsQuery.
-    void begin_view(const vk::raii::CommandBuffer& cmd, const std::string& view);
+    // The scope's name and the pass it counts (ViewStatistics's).
+    void begin_view(const vk::raii::CommandBuffer& cmd, const std::string& view,
+                    plan::PassKind pass_kind, plan::ViewId pass_view);
     void end_view(const vk::raii::CommandBuffer& cmd);
 
     // May be called once the submission of the slot's last frame has completed.
@@ -38,8 +42,8 @@ class FrameProfiler {
     struct Slot {
         vk::raii::QueryPool timestamps{nullptr};
         vk::raii::QueryPool statistics{nullptr};
-        std::vector<std::string> pass_names;
-        std::vector<std::string> view_names;
+        std::vector<PassTime> passes;       // named, times to come
+        std::vector<ViewStatistics> views;  // named, counters to come
     };
     const vk_core::Context& ctx_;
     std::vector<Slot> slots_;

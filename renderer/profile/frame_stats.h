@@ -7,16 +7,25 @@
 #include <string>
 #include <vector>
 
+#include "renderer/plan/frame_plan.h"
+
 namespace monoplane::profile {
 
 struct PassTime {
     std::string name;  // e.g. "shadow", "left.forward", "left.tonemap"
     double gpu_ms = 0.0;
+    // The planned pass it timed: what code compares (the name is for people and JSON).
+    plan::PassKind kind = plan::PassKind::kCulling;
+    plan::ViewId view = plan::ViewId::kNone;
 };
 
 // Counters of VK_QUERY_TYPE_PIPELINE_STATISTICS for all draws of one view.
 struct ViewStatistics {
     std::string view;  // "left", "right", "mono", "eyes" (single pass), "left.composite", ...
+    // The planned pass whose draws it counts (a view's forward pass, an eye's composite or
+    // transparency): what code compares.
+    plan::PassKind pass_kind = plan::PassKind::kForward;
+    plan::ViewId pass_view = plan::ViewId::kNone;
     std::uint64_t input_primitives = 0;      // input assembly primitives
     std::uint64_t clipping_invocations = 0;  // primitives entering clipping
     std::uint64_t clipping_primitives = 0;   // primitives leaving clipping

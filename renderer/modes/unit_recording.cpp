@@ -1,0 +1,100 @@
+#include "renderer/modes/unit_recording.h"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+#include "common/programming_error.h"
+#include "renderer/modes/mode_renderer_internals.h"
+#include "renderer/passes/pass_units.h"
+
+namespace monoplane::modes {
+namespace {
+
+class Recording final : public passes::UnitRecording {
+  public:
+    Recording(const vk::raii::CommandBuffer& cmd, const plan::FramePlan& plan,
+              const plan::PlannedPass& pass, passes::StepSync& sync, passes::UnitFrameValues values,
+              UnitImages images, UnitPredicates predicates)
+        : cmd_(cmd),
+          plan_(plan),
+          pass_(pass),
+          sync_(sync),
+          values_(values),
+          images_(std::move(images)),
+          predicates_(std::move(predicates)) {
+        MONOPLANE_EXPECTS(!pass.steps.empty());
+        // The executor begins a pass of one step; a pass of several asks for each, the first too.
+        if (pass.steps.size() > 1) sync_.next(cmd_, pass.steps.front().name);
+    }
+
+    const vk::raii::CommandBuffer& cmd() const override { return cmd_; }
+    const plan::PlannedPass& pass() const override { return pass_; }
+    const passes::UnitFrameValues& values() const override { return values_; }
+
+    const vk_core::Image& image(plan::ViewId view, plan::ImageRole role) override {
+        const plan::ResourceKey key{view, false, role, plan::BufferRole::kDrawLists};
+        const std::optional<std::uint16_t> handle = plan_.handle(key);
+        const graph::Step& step = pass_.steps[step_];
+        if (!handle || !plan::step_declares(step, *handle)) {
+            programming_error(pass_.name + " touched " + plan::resource_name(key) + " in step '" +
+                              step.name + "', which does not declare it");
+        }
+        return images_(key);
+    }
+
+    void next_step(std::string_view step) override {
+        // The executor checks the name and the order; a repeating last step stays the current.
+        sync_.next(cmd_, step);
+        step_ = std::min(step_ + 1, pass_.steps.size() - 1);
+    }
+
+    std::optional<passes::Predicate> predicate(plan::GpuPredicate when) const override {
+        return predicates_(when);
+    }
+
+  private:
+    const vk::raii::CommandBuffer& cmd_;
+    const plan::FramePlan& plan_;
+    const plan::PlannedPass& pass_;
+    passes::StepSync& sync_;
+    passes::UnitFrameValues values_;
+    UnitImages images_;
+    UnitPredicates predicates_;
+    std::size_t step_ = 0;  // the step being recorded
+};
+
+}  // namespace
+
+std::unique_ptr<passes::UnitRecording> make_unit_recording(
+    const vk::raii::CommandBuffer& cmd, const plan::FramePlan& plan, const plan::PlannedPass& pass,
+    passes::StepSync& sync, passes::UnitFrameValues values, UnitImages images,
+    UnitPredicates predicates) {
+    return std::make_unique<Recording>(cmd, plan, pass, sync, values, std::move(images),
+                                       std::move(predicates));
+}
+
+void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
+                               const FrameState& frame, passes::StepSync& sync) {
+    auto& recorder = unit_recorders_[pass.unit];
+    if (!recorder) {
+        const auto& units = passes::pass_units();
+        const auto unit = std::find_if(units.begin(), units.end(), [&](const passes::PassUnit& u) {
+            return u.declare().name == pass.unit;
+        });
+        MONOPLANE_EXPECTS(unit != units.end());
+        recorder = unit->make(ctx_);
+    }
+    passes::UnitFrameValues values;
+    values.use_mono = frame.use_mono;
+    values.mono_plane = frame.inputs->mono_plane;
+    values.slot = frame.slot;
+    values.slots = vk_core::FrameRing::kFramesInFlight;
+    const std::unique_ptr<passes::UnitRecording> recording = make_unit_recording(
+        cmd, last_plan_, pass, sync, values,
+        [this](const plan::ResourceKey& key) -> const vk_core::Image& { return view_image(key); },
+        [this](plan::GpuPredicate when) { return predicate(when); });
+    recorder->record(*recording);
+}
+
+}  // namespace monoplane::modes

@@ -1,0 +1,28 @@
+// What a pass unit's recorder may reach of a frame (passes::UnitRecording), checked against the
+// pass's declared steps: ModeRenderer makes one per unit pass it records (record_unit).
+//
+// When may this be called: while the frame's command buffer records, inside the pass's scope.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include "renderer/passes/shared/pass_unit.h"
+#include "renderer/passes/shared/step_sync.h"
+#include "renderer/plan/frame_plan.h"
+
+namespace monoplane::modes {
+
+// The device image of a view's resource this frame, and the GPU predicate of a planned `when`.
+using UnitImages = std::function<const vk_core::Image&(const plan::ResourceKey&)>;
+using UnitPredicates = std::function<std::optional<passes::Predicate>(plan::GpuPredicate)>;
+
+// `pass` must be one of `plan`'s, with at least one step; the recording begins its first step
+// (through `sync` for a pass of several).
+std::unique_ptr<passes::UnitRecording> make_unit_recording(
+    const vk::raii::CommandBuffer& cmd, const plan::FramePlan& plan, const plan::PlannedPass& pass,
+    passes::StepSync& sync, passes::UnitFrameValues values, UnitImages images,
+    UnitPredicates predicates);
+
+}  // namespace monoplane::modes

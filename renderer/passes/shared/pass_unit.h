@@ -1,0 +1,58 @@
+// The recording half of a pass kind written as one unit (renderer/plan/pass_unit.h has the
+// declaring half). A unit is one source file in its own folder under renderer/passes/: its
+// declaration (where a frame places it, what each step reads and writes) and its recorder side by
+// side, registered by one line in renderer/passes/pass_units.cpp.
+//
+// A recorder reaches the frame only through UnitRecording: the images its current step declared
+// (any other is a programming error, in every build), the next of its declared steps (whose
+// barriers the executor records), the GPU predicates and the frame's values. It records no
+// barrier and names no layout but through its declared uses (executor::layout_for).
+//
+// When may this be called: make() with the renderer, on the thread that owns the device;
+// record() on the thread that records the frame, inside the pass's scope (the renderer begins it
+// and its first step).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string_view>
+
+#include "renderer/passes/shared/indirect_draws.h"
+#include "renderer/plan/frame_plan.h"
+#include "renderer/vk/context.h"
+#include "renderer/vk/image.h"
+
+namespace monoplane::passes {
+
+// What a frame's recording of a unit knows of the frame beyond its images.
+struct UnitFrameValues {
+    double mono_plane = 0.0;  // m in metres, when the frame draws C (use_mono)
+    bool use_mono = false;
+    std::uint32_t slot = 0;   // the frame-in-flight slot (its resources are free to rewrite)
+    std::uint32_t slots = 1;  // how many slots there are
+};
+
+class UnitRecording {
+  public:
+    virtual ~UnitRecording() = default;
+    virtual const vk::raii::CommandBuffer& cmd() const = 0;
+    virtual const plan::PlannedPass& pass() const = 0;
+    virtual const UnitFrameValues& values() const = 0;
+    // The image of `view`'s `role` this frame. The pass's current step must declare it: any other
+    // stops the program, naming the pass, the step and the image.
+    virtual const vk_core::Image& image(plan::ViewId view, plan::ImageRole role) = 0;
+    // Begins the pass's next declared step (the first is begun for the recorder), by name.
+    virtual void next_step(std::string_view step) = 0;
+    // The GPU predicate of a planned `when` (nullopt: always, or no conditional rendering).
+    virtual std::optional<Predicate> predicate(plan::GpuPredicate when) const = 0;
+};
+
+class UnitRecorder {
+  public:
+    virtual ~UnitRecorder() = default;
+    // Records one of the unit's planned passes (recording.pass()).
+    virtual void record(UnitRecording& recording) = 0;
+};
+
+}  // namespace monoplane::passes

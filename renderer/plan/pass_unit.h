@@ -1,0 +1,83 @@
+// A pass kind written as one unit: where a frame places it and what each of its steps reads and
+// writes (this half, Vulkan-free, so that the plan stays pure), beside the code that records it
+// (renderer/passes/shared/pass_unit.h, in the same source file). A unit is added by its own
+// folder under renderer/passes/ (its source and shader) and one line in
+// renderer/passes/pass_units.cpp; nothing in the plan, the executor or the renderer names it.
+//
+// plan_frame (frame_plan.h) calls each unit's place() at the unit's slot with the frame's inputs;
+// place() adds the unit's passes, if any, with their steps' declared uses. From there the unit's
+// passes are planned passes like any other: the executor places their barriers and checks their
+// steps, the graph culls them when nothing reads what they write and keeps their images' memory
+// apart from what they use, the profiler times them under pass_name's key ("left.depth_view"),
+// and at record time a unit may touch only the resources its current step declared
+// (step_declares below, checked in every build).
+//
+// When may this be called: any time; pure, no device.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/graph/frame_graph.h"
+#include "renderer/plan/frame_plan.h"
+#include "renderer/plan/pass_steps.h"
+
+namespace monoplane::plan {
+
+// Where in the frame a unit's passes go. The built-in kinds' order is plan_frame's; a unit takes
+// its place between them.
+enum class UnitSlot {
+    // After the eyes' (and C's) tone mapping, before the depth histogram and the read-back: a
+    // unit that reads or replaces the display images (a debug view).
+    kAfterToneMapping,
+};
+
+class UnitPlacement;
+
+struct PassUnitDeclaration {
+    std::string name;  // the kind's name: "depth_view"; a pass of one view is "left.depth_view"
+    UnitSlot slot = UnitSlot::kAfterToneMapping;
+    // The `--debug-view` name that shows this unit ("depth"), for a unit that is a debug view:
+    // PlanFrame::unit_debug_view selects it. Unset for a unit that place() decides alone.
+    std::optional<std::string> debug_view;
+    std::string help;  // what it shows, for a command's --help
+    // Adds the unit's passes to this frame, if any (a plain function: a unit holds no state in
+    // its declaration).
+    void (*place)(UnitPlacement& placement) = nullptr;
+};
+
+// What a unit's place() reads (the frame's inputs) and adds to (the plan).
+class UnitPlacement {
+  public:
+    UnitPlacement(const PassUnitDeclaration& unit, const PlanOptions& options,
+                  const PlanFrame& frame, FramePlan& plan, PlanResources& resources)
+        : unit_(unit), options_(options), frame_(frame), plan_(plan), resources_(resources) {}
+
+    const PlanOptions& options() const { return options_; }
+    const PlanFrame& frame() const { return frame_; }
+    // A hybrid mode that draws C this frame (something lies beyond m).
+    bool draws_mono() const { return options_.mode != Mode::kStereo && !frame_.mono_skipped; }
+    // Whether this frame shows this unit's debug view.
+    bool debug_view_shown() const {
+        return unit_.debug_view && frame_.unit_debug_view == *unit_.debug_view;
+    }
+    // The handles its steps use (images and buffers by view and role).
+    PlanResources& resources() { return resources_; }
+    // A pass of this unit for `view` (kNone: over every view), at the end of the plan so far;
+    // its steps are the caller's to add (graph::StepBuilder).
+    PlannedPass& add_pass(ViewId view = ViewId::kNone);
+
+  private:
+    const PassUnitDeclaration& unit_;
+    const PlanOptions& options_;
+    const PlanFrame& frame_;
+    FramePlan& plan_;
+    PlanResources& resources_;
+};
+
+// Whether `step` declares a use of `resource` (a handle of the plan's resource table): what a
+// unit's recording may touch in that step.
+bool step_declares(const graph::Step& step, std::uint16_t resource);
+
+}  // namespace monoplane::plan

@@ -1,0 +1,161 @@
+// A pass kind written as one unit (renderer/plan/pass_unit.h): plan_frame places it at its slot
+// when the frame asks for it, its passes are planned passes like the built-in kinds' (named,
+// culled, found), and what it may touch at record time is what each step declared. The unit here
+// is the tests' own ("probe": each eye's linear depth into its display image, as a debug view
+// would), written out by hand, so that the plans compared do not come from the renderer's units.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "renderer/plan/frame_plan.h"
+#include "renderer/plan/frame_plan_json.h"
+#include "renderer/plan/pass_unit.h"
+
+namespace monoplane::plan {
+namespace {
+
+using Names = std::vector<std::string>;
+
+void place_probe(UnitPlacement& placement) {
+    if (!placement.debug_view_shown()) return;
+    for (ViewId eye : kEyeViews) {
+        PlannedPass& pass = placement.add_pass(eye);
+        graph::Step& step = pass.steps.emplace_back();
+        step.name = "draw";
+        graph::StepBuilder(step)
+            .use(placement.resources().image(eye, ImageRole::kLinearDepth),
+                 graph::Use::kSampledFragment)
+            .use(placement.resources().image(eye, ImageRole::kDisplay), graph::Use::kColorWrite);
+    }
+}
+
+PassUnitDeclaration probe() {
+    PassUnitDeclaration unit;
+    unit.name = "probe";
+    unit.debug_view = "probe-view";
+    unit.place = &place_probe;
+    return unit;
+}
+
+PlanFrame showing(const std::string& unit_debug_view, bool mono_skipped = false) {
+    PlanFrame frame;
+    frame.mono_skipped = mono_skipped;
+    frame.unit_debug_view = unit_debug_view;
+    return frame;
+}
+
+PlanOptions options_for(Mode mode, bool taa = false, bool ssao = false) {
+    PlanOptions options;
+    options.mode = mode;
+    if (taa) options.anti_aliasing = AntiAliasing::kTaa;
+    options.ssao = ssao;
+    return options;
+}
+
+TEST(PassUnit, PlacedOnlyWhenItsDebugViewIsShownAndOtherwiseLeavesThePlanAsItWas) {
+    const std::vector<PassUnitDeclaration> units = {probe()};
+    for (Mode mode : {Mode::kStereo, Mode::kHybrid, Mode::kHybridFarfield}) {
+        for (const std::string& other : {std::string(), std::string("another-view")}) {
+            const FramePlan with =
+                plan_frame(options_for(mode), showing(other), PlanDevice{}, units);
+            const FramePlan without = plan_frame(options_for(mode), showing(other), PlanDevice{});
+            EXPECT_EQ(with.executed_names(), without.executed_names()) << mode_name(mode);
+            EXPECT_EQ(with.find_unit("probe", ViewId::kLeft), nullptr) << mode_name(mode);
+        }
+    }
+}
+
+// Stereo, shown: the unit's passes run after the tone mapping and before the read-back, by the
+// names pass_name would give a kind of that name; the tone mapping, whose display image the unit
+// overwrites whole and nobody reads before, is culled, and with it everything only it read.
+TEST(PassUnit, StereoShowsItAfterTheToneMappingAndCullsWhatItOverwrites) {
+    const FramePlan plan =
+        plan_frame(options_for(Mode::kStereo), showing("probe-view"), PlanDevice{}, {probe()});
+    const Names expected = {"culling",    "shadow",      "left.forward", "right.forward",
+                            "left.probe", "right.probe", "readback"};
+    EXPECT_EQ(plan.executed_names(), expected);
+    for (ViewId eye : kEyeViews) {
+        const PlannedPass* pass = plan.find_unit("probe", eye);
+        ASSERT_NE(pass, nullptr);
+        EXPECT_EQ(pass->kind, PassKind::kUnit);
+        EXPECT_EQ(pass->name, view_name(eye) + ".probe");
+        EXPECT_EQ(plan.reads(*pass), Names{view_name(eye) + ".linear_depth"});
+        EXPECT_EQ(plan.writes(*pass), Names{view_name(eye) + ".display"});
+        const PlannedPass* tonemap = plan.find(PassKind::kTonemap, eye);
+        ASSERT_NE(tonemap, nullptr);
+        EXPECT_EQ(tonemap->skipped, "culled: nothing reads " + view_name(eye) + ".display");
+    }
+}
+
+// SSAO only fed the eyes' colour, which nothing reads now: it goes with the tone mapping. TAA
+// stays: its history is kept for the next frames (a persistent image), whatever this one shows.
+TEST(PassUnit, SsaoThatOnlyFedTheDisplayIsCulledAndTaaKeepsItsHistory) {
+    const FramePlan ssao = plan_frame(options_for(Mode::kStereo, false, true),
+                                      showing("probe-view"), PlanDevice{}, {probe()});
+    EXPECT_EQ(ssao.find(PassKind::kSsao)->skipped,
+              "culled: nothing reads left.ao_scratch, left.ao, right.ao_scratch, right.ao, "
+              "left.hdr, right.hdr");
+    EXPECT_TRUE(ssao.runs(PassKind::kForward, ViewId::kLeft));
+    const FramePlan taa = plan_frame(options_for(Mode::kStereo, true, false), showing("probe-view"),
+                                     PlanDevice{}, {probe()});
+    EXPECT_TRUE(taa.runs(PassKind::kTaa, ViewId::kLeft));
+    EXPECT_FALSE(taa.runs(PassKind::kTonemap, ViewId::kLeft));
+}
+
+// Hybrid, shown: C and the composites still run (the eyes' linear depth holds C's beyond m);
+// C's own tone mapping feeds its read-back and stays.
+TEST(PassUnit, HybridKeepsCAndTheCompositesThatWriteTheDepthItReads) {
+    for (const bool conditional : {false, true}) {
+        const FramePlan plan = plan_frame(options_for(Mode::kHybrid), showing("probe-view"),
+                                          PlanDevice{conditional}, {probe()});
+        const Names executed = plan.executed_names();
+        for (const std::string& name : {"mono.forward", "left.composite", "right.composite",
+                                        "mono.tonemap", "left.probe", "right.probe"}) {
+            EXPECT_NE(std::find(executed.begin(), executed.end(), name), executed.end())
+                << name << (conditional ? " predicated" : "");
+        }
+        const auto at = [&](const std::string& name) {
+            return std::find(executed.begin(), executed.end(), name) - executed.begin();
+        };
+        EXPECT_LT(at("right.composite"), at("left.probe"));
+        EXPECT_LT(at("right.probe"), at("readback"));
+    }
+}
+
+TEST(PassUnit, ItsPlanJsonNamesTheUnitAsTheKind) {
+    const FramePlan plan =
+        plan_frame(options_for(Mode::kStereo), showing("probe-view"), PlanDevice{}, {probe()});
+    JsonWriter j;
+    j.begin_object();
+    write_plan_json(j, plan, "plan");
+    j.end_object();
+    EXPECT_NE(j.str().find(R"("pass":"left.probe","kind":"probe","view":"left")"),
+              std::string::npos)
+        << j.str();
+}
+
+TEST(PassUnit, AStepDeclaresExactlyTheResourcesItUses) {
+    const FramePlan plan =
+        plan_frame(options_for(Mode::kStereo), showing("probe-view"), PlanDevice{}, {probe()});
+    const graph::Step& step = plan.find_unit("probe", ViewId::kLeft)->steps.front();
+    const auto handle = [&](ViewId view, ImageRole role) {
+        return *plan.handle({view, false, role, BufferRole::kDrawLists});
+    };
+    EXPECT_TRUE(step_declares(step, handle(ViewId::kLeft, ImageRole::kLinearDepth)));
+    EXPECT_TRUE(step_declares(step, handle(ViewId::kLeft, ImageRole::kDisplay)));
+    EXPECT_FALSE(step_declares(step, handle(ViewId::kLeft, ImageRole::kHdr)));
+    EXPECT_FALSE(step_declares(step, handle(ViewId::kRight, ImageRole::kDisplay)));
+}
+
+// A unit named like a built-in kind would make two kinds of one name.
+TEST(PassUnitDeathTest, AUnitNamedAsABuiltInKindIsRefused) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    PassUnitDeclaration unit = probe();
+    unit.name = "tonemap";
+    EXPECT_DEATH((void)plan_frame(options_for(Mode::kStereo), PlanFrame{}, PlanDevice{}, {unit}),
+                 "programming error.*pass unit 'tonemap' has the name of a built-in kind");
+}
+
+}  // namespace
+}  // namespace monoplane::plan
