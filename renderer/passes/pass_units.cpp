@@ -10,7 +10,7 @@
 namespace monoplane::passes {
 
 // The registration: one line per unit.
-#define MONOPLANE_PASS_UNITS(X)
+#define MONOPLANE_PASS_UNITS(X) X(depth_view)
 
 MONOPLANE_PASS_UNITS(MONOPLANE_PASS_UNIT)
 

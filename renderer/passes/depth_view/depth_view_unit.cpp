@@ -1,0 +1,132 @@
+// The depth debug view (`--debug-view depth`), a pass kind written as one unit: after the tone
+// mapping, each eye's display image is replaced by its linear depth, warm nearer than the mono
+// plane and cool beyond it (depth_view.frag), so that one image shows what hybrid rendering sends
+// through C. The declaration and the recorder of renderer/passes/shared/pass_unit.h, side by side.
+#include <map>
+#include <utility>
+
+#include "renderer/executor/image_layouts.h"
+#include "renderer/passes/shared/pass_unit.h"
+#include "renderer/passes/tonemap/tonemap_pass.h"
+#include "renderer/plan/pass_unit.h"
+#include "renderer/vk/descriptor_set.h"
+#include "renderer/vk/pipeline.h"
+
+namespace monoplane::passes::depth_view {
+namespace {
+
+const std::uint32_t kFullscreenVert[] = {
+#include "fullscreen.vert.spv.inc"
+};
+const std::uint32_t kDepthViewFrag[] = {
+#include "depth_view.frag.spv.inc"
+};
+
+// Stereo and frames without C: nothing lies beyond the plane (depth_view.frag).
+constexpr float kNoMonoPlane = 1.0e30f;
+
+// Per eye, when the frame shows this view: the eye's linear depth in, its display image out.
+void place(plan::UnitPlacement& placement) {
+    if (!placement.debug_view_shown()) return;
+    for (plan::ViewId eye : plan::kEyeViews) {
+        plan::PlannedPass& pass = placement.add_pass(eye);
+        plan::PlanResources& r = placement.resources();
+        graph::Step& step = pass.steps.emplace_back();
+        step.name = "draw";
+        graph::StepBuilder(step)
+            .use(r.image(eye, plan::ImageRole::kLinearDepth), graph::Use::kSampledFragment)
+            .use(r.image(eye, plan::ImageRole::kDisplay), graph::Use::kColorWrite);
+    }
+}
+
+class DepthViewRecorder final : public UnitRecorder {
+  public:
+    explicit DepthViewRecorder(const vk_core::Context& ctx) : ctx_(ctx) {
+        const vk::DescriptorSetLayoutBinding binding(0, vk::DescriptorType::eCombinedImageSampler,
+                                                     1, vk::ShaderStageFlagBits::eFragment);
+        set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
+                                                    vk::DescriptorSetLayoutCreateInfo({}, binding));
+        sampler_ = vk_core::make_clamped_sampler(ctx, vk::Filter::eNearest);
+        const vk::DescriptorSetLayout set_layout = *set_layout_;
+        const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(float));
+        layout_ = vk::raii::PipelineLayout(ctx.device(),
+                                           vk::PipelineLayoutCreateInfo({}, set_layout, push));
+        const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
+        const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, kDepthViewFrag);
+        vk_core::GraphicsPipelineDesc desc;
+        desc.layout = *layout_;
+        desc.vertex = *vert;
+        desc.fragment = *frag;
+        desc.color_formats = {TonemapPass::kDisplayFormat};
+        desc.cull = vk::CullModeFlagBits::eNone;
+        desc.depth_test = false;
+        desc.depth_write = false;
+        pipeline_ = vk_core::make_graphics_pipeline(ctx, desc);
+    }
+
+    void record(UnitRecording& r) override {
+        const plan::ViewId eye = r.pass().view;
+        const vk_core::Image& depth = r.image(eye, plan::ImageRole::kLinearDepth);
+        const vk_core::Image& display = r.image(eye, plan::ImageRole::kDisplay);
+        const vk::DescriptorSet input = input_set(r.values().slot, eye, depth);
+        const float mono_plane =
+            r.values().use_mono ? static_cast<float>(r.values().mono_plane) : kNoMonoPlane;
+
+        const vk::raii::CommandBuffer& cmd = r.cmd();
+        const vk::RenderingAttachmentInfo color(
+            display.view(), executor::layout_for(graph::Use::kColorWrite), {}, {}, {},
+            vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore);
+        const vk::Extent2D extent = display.desc().extent;
+        cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, extent), 1, 0, color));
+        vk_core::set_viewport_and_scissor(cmd, extent);
+        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline_);
+        cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, input, {});
+        cmd.pushConstants<float>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, mono_plane);
+        cmd.draw(3, 1, 0, 0);
+        cmd.endRendering();
+    }
+
+  private:
+    // The slot's set for the eye, pointed at this frame's depth image: the slot's last frame has
+    // completed before it is recorded again, so its set is free to rewrite (the image may have
+    // been remade since).
+    vk::DescriptorSet input_set(std::uint32_t slot, plan::ViewId eye, const vk_core::Image& depth) {
+        auto [entry, added] = sets_.try_emplace({slot, eye});
+        if (added) {
+            const std::array sizes = {
+                vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1)};
+            entry->second = vk_core::DescriptorSet(ctx_, *set_layout_, sizes);
+        }
+        const std::array images = {vk::DescriptorImageInfo(
+            *sampler_, depth.view(), executor::layout_for(graph::Use::kSampledFragment))};
+        vk_core::write_sampled_images(ctx_, *entry->second, images);
+        return *entry->second;
+    }
+
+    const vk_core::Context& ctx_;
+    vk::raii::DescriptorSetLayout set_layout_{nullptr};
+    vk::raii::Sampler sampler_{nullptr};
+    vk::raii::PipelineLayout layout_{nullptr};
+    vk::raii::Pipeline pipeline_{nullptr};
+    std::map<std::pair<std::uint32_t, plan::ViewId>, vk_core::DescriptorSet> sets_;
+};
+
+}  // namespace
+
+plan::PassUnitDeclaration declaration() {
+    plan::PassUnitDeclaration unit;
+    unit.name = "depth_view";
+    unit.slot = plan::UnitSlot::kAfterToneMapping;
+    unit.debug_view = "depth";
+    unit.help =
+        "each eye's linear depth, brighter nearer, warm before the mono plane and cool at or "
+        "beyond it, black sky; every mode";
+    unit.place = &place;
+    return unit;
+}
+
+std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx) {
+    return std::make_unique<DepthViewRecorder>(ctx);
+}
+
+}  // namespace monoplane::passes::depth_view
