@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 namespace monoplane {
 
@@ -37,6 +38,14 @@ constexpr std::string_view find_name(NameTable<Enum> table, Enum value,
 template <class Enum>
 std::string name_of(NameTable<Enum> table, Enum value) {
     return std::string(find_name(table, value));
+}
+
+// Every name, in table order (a "did you mean" list, a parser's allowed values).
+template <class Enum>
+std::vector<std::string_view> names_of(NameTable<Enum> table) {
+    std::vector<std::string_view> names;
+    for (const auto& entry : table) names.emplace_back(entry.second);
+    return names;
 }
 
 // "a, b, c": the valid names, in table order, for error messages and help texts.

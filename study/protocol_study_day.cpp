@@ -26,6 +26,10 @@ std::optional<VariableType> parse_variable_type(std::string_view name) {
     return parse_name(kVariableTypeNames, name);
 }
 
+std::vector<std::string_view> variable_type_names() {
+    return names_of(kVariableTypeNames);
+}
+
 std::string_view blocking_name(Blocking blocking) {
     return blocking == Blocking::None ? "none" : "scene";
 }

@@ -85,6 +85,7 @@ struct StudyDaySettings {
 // Names as protocols and messages spell them.
 std::string_view variable_type_name(VariableType type);
 std::optional<VariableType> parse_variable_type(std::string_view name);
+std::vector<std::string_view> variable_type_names();  // every type's, in order
 std::string_view blocking_name(Blocking blocking);
 
 inline constexpr std::size_t kMaxVariableName = 32;

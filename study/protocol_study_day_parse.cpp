@@ -25,7 +25,6 @@ constexpr std::array<std::string_view, 4> kBreakKeys = {"every_trials", "between
 constexpr std::array<std::string_view, 7> kVariableKeys = {"name",    "type",     "min", "max",
                                                            "choices", "required", "help"};
 constexpr std::array<std::string_view, 2> kBlockings = {"scene", "none"};
-constexpr std::array<std::string_view, 4> kVariableTypes = {"integer", "number", "choice", "text"};
 
 std::string in_quotes(std::string_view text) {
     return "'" + std::string(text) + "'";
@@ -321,10 +320,10 @@ void read_variable_name(const TomlScope& scope, const std::vector<ParticipantVar
 }
 
 std::optional<VariableType> read_variable_type(const TomlScope& scope, TomlProblems& problems) {
-    const toml::node* node =
-        find_required(scope, "type", "one of " + join(kVariableTypes), problems);
+    const std::vector<std::string_view> types = variable_type_names();
+    const toml::node* node = find_required(scope, "type", "one of " + join(types), problems);
     if (node == nullptr) return std::nullopt;
-    const auto name = read_one_of(*node, "variables.type", kVariableTypes, problems);
+    const auto name = read_one_of(*node, "variables.type", types, problems);
     if (!name) return std::nullopt;
     return parse_variable_type(*name);
 }
