@@ -6,18 +6,15 @@
 #include <utility>
 
 #include "renderer/executor/image_layouts.h"
+#include "renderer/passes/shared/fullscreen_pass.h"
 #include "renderer/passes/shared/pass_unit.h"
 #include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/plan/pass_unit.h"
 #include "renderer/vk/descriptor_set.h"
-#include "renderer/vk/pipeline.h"
 
 namespace monoplane::passes::depth_view {
 namespace {
 
-const std::uint32_t kFullscreenVert[] = {
-#include "fullscreen.vert.spv.inc"
-};
 const std::uint32_t kDepthViewFrag[] = {
 #include "depth_view.frag.spv.inc"
 };
@@ -51,17 +48,8 @@ class DepthViewRecorder final : public UnitRecorder {
         const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(float));
         layout_ = vk::raii::PipelineLayout(ctx.device(),
                                            vk::PipelineLayoutCreateInfo({}, set_layout, push));
-        const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
-        const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, kDepthViewFrag);
-        vk_core::GraphicsPipelineDesc desc;
-        desc.layout = *layout_;
-        desc.vertex = *vert;
-        desc.fragment = *frag;
-        desc.color_formats = {TonemapPass::kDisplayFormat};
-        desc.cull = vk::CullModeFlagBits::eNone;
-        desc.depth_test = false;
-        desc.depth_write = false;
-        pipeline_ = vk_core::make_graphics_pipeline(ctx, desc);
+        pipeline_ =
+            make_fullscreen_pipeline(ctx, *layout_, kDepthViewFrag, TonemapPass::kDisplayFormat);
     }
 
     void record(UnitRecording& r) override {
@@ -72,18 +60,8 @@ class DepthViewRecorder final : public UnitRecorder {
         const float mono_plane =
             r.values().use_mono ? static_cast<float>(r.values().mono_plane) : kNoMonoPlane;
 
-        const vk::raii::CommandBuffer& cmd = r.cmd();
-        const vk::RenderingAttachmentInfo color(
-            display.view(), executor::layout_for(graph::Use::kColorWrite), {}, {}, {},
-            vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore);
-        const vk::Extent2D extent = display.desc().extent;
-        cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, extent), 1, 0, color));
-        vk_core::set_viewport_and_scissor(cmd, extent);
-        cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline_);
-        cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, input, {});
-        cmd.pushConstants<float>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, mono_plane);
-        cmd.draw(3, 1, 0, 0);
-        cmd.endRendering();
+        record_fullscreen(r.cmd(), display, *pipeline_, *layout_, input,
+                          std::as_bytes(std::span(&mono_plane, 1)));
     }
 
   private:

@@ -6,12 +6,10 @@
 #include <glm/vec4.hpp>
 
 #include "renderer/executor/image_layouts.h"
+#include "renderer/passes/shared/fullscreen_pass.h"
 
 namespace monoplane::passes {
 namespace {
-const std::uint32_t kFullscreenVert[] = {
-#include "fullscreen.vert.spv.inc"
-};
 const std::uint32_t kTaaResolveFrag[] = {
 #include "taa_resolve.frag.spv.inc"
 };
@@ -39,37 +37,19 @@ TaaPass::TaaPass(const vk_core::Context& ctx)
     const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(PushBlock));
     layout_ =
         vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout, push));
-    const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
-    const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, kTaaResolveFrag);
-    vk_core::GraphicsPipelineDesc desc;
-    desc.layout = *layout_;
-    desc.vertex = *vert;
-    desc.fragment = *frag;
-    desc.color_formats = {kOutputFormat};
-    desc.cull = vk::CullModeFlagBits::eNone;
-    desc.depth_test = false;
-    desc.depth_write = false;
-    pipeline_ = vk_core::make_graphics_pipeline(ctx, desc);
+    pipeline_ = make_fullscreen_pipeline(ctx, *layout_, kTaaResolveFrag, kOutputFormat);
 }
 
 void TaaPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& output,
                      vk::DescriptorSet inputs, const TaaParams& params, bool reset) const {
-    const vk::RenderingAttachmentInfo color(
-        output.view(), executor::layout_for(graph::Use::kColorWrite), {}, {}, {},
-        vk::AttachmentLoadOp::eDontCare, vk::AttachmentStoreOp::eStore);
     const vk::Extent2D extent = output.desc().extent;
-    cmd.beginRendering(vk::RenderingInfo({}, vk::Rect2D({0, 0}, extent), 1, 0, color));
-    vk_core::set_viewport_and_scissor(cmd, extent);
-    cmd.bindPipeline(vk::PipelineBindPoint::eGraphics, *pipeline_);
-    cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *layout_, 0, inputs, {});
     const glm::vec2 size(static_cast<float>(extent.width), static_cast<float>(extent.height));
     const PushBlock push{
         glm::vec4(params.history_weight, params.velocity_box_widening, reset ? 1.0f : 0.0f, 0.0f),
         glm::vec4(size, 1.0f / size),
     };
-    cmd.pushConstants<PushBlock>(*layout_, vk::ShaderStageFlagBits::eFragment, 0, push);
-    cmd.draw(3, 1, 0, 0);
-    cmd.endRendering();
+    record_fullscreen(cmd, output, *pipeline_, *layout_, inputs,
+                      std::as_bytes(std::span(&push, 1)));
 }
 
 vk_core::DescriptorSet TaaPass::make_inputs(const vk_core::Image& hdr,
