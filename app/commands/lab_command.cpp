@@ -18,6 +18,7 @@
 #include "app/commands/session_summary.h"
 #include "app/commands/study_options.h"
 #include "app/commands/validation_report.h"
+#include "app/install/install_layout.h"
 #include "app/lab/frame_time_probe.h"
 #include "app/lab/lab_config.h"
 #include "app/lab/launcher_model.h"
@@ -52,12 +53,10 @@ struct LabOptions {
     std::optional<double> scale_given;
 };
 
-// <source>/protocols of the tree this executable was built from, when it is there (a build
-// beside its sources); else ./protocols.
+// The protocols shipped with monoplane (share/monoplane/protocols beside the executable: the
+// installed ones, or the source tree's through the build folder); else ./protocols.
 std::string default_protocols_folder() {
-    const fs::path beside_source = fs::path(MONOPLANE_SOURCE_DIR) / "protocols";
-    std::error_code ec;
-    if (fs::is_directory(beside_source, ec)) return beside_source.string();
+    if (const auto shipped = shipped_protocols()) return shipped->string();
     return "protocols";
 }
 

@@ -8,11 +8,8 @@
 #include <fstream>
 
 #include "app/commands/study_headset.h"
+#include "app/install/install_layout.h"
 #include "common/result.h"
-
-#ifndef MONOPLANE_SIMXR_MANIFEST
-#error "MONOPLANE_SIMXR_MANIFEST must name the simulated runtime's manifest"
-#endif
 
 namespace monoplane::app {
 
@@ -53,6 +50,20 @@ fs::path write_simxr_script(const HeadsetStudyOptions& options) {
     return script;
 }
 
+// simxr's manifest: in the data folder beside the executable (app/install/install_layout.h); a
+// test executable, which lives elsewhere in the build folder, is given the build's.
+std::string simxr_manifest_path() {
+    if (const auto manifest = simxr_manifest()) return manifest->string();
+#ifdef MONOPLANE_SIMXR_MANIFEST
+    return MONOPLANE_SIMXR_MANIFEST;
+#else
+    throw UserError(
+        "--headset simulated: the simulated runtime's manifest (share/monoplane/simxr/"
+        "simxr.json) is not beside " +
+        executable_path().string() + "; reinstall monoplane");
+#endif
+}
+
 }  // namespace
 
 RuntimeSelection::RuntimeSelection(const HeadsetStudyOptions& options)
@@ -61,7 +72,7 @@ RuntimeSelection::RuntimeSelection(const HeadsetStudyOptions& options)
     if (!options.sim_script.empty() && !fs::exists(options.sim_script)) {
         throw UserError("--sim-script " + options.sim_script + ": no such file");
     }
-    setenv("XR_RUNTIME_JSON", MONOPLANE_SIMXR_MANIFEST, 1);
+    setenv("XR_RUNTIME_JSON", simxr_manifest_path().c_str(), 1);
     if (!options.sim_script.empty()) {
         setenv("SIMXR_SCRIPT", fs::absolute(options.sim_script).c_str(), 1);
         return;
