@@ -90,6 +90,9 @@ struct SessionRow {
     // CSV export does not hold it, so its design cannot be compared).
     std::string protocol_hash;
     std::string protocol_text;
+    // The monoplane that ran the session, as the database and the export record it ("monoplane
+    // 0.1.0 (806fb8622b5b)"); "unknown" where the input does not say (an older export).
+    std::string software_version;
     std::string started_utc;  // "" when unknown (CSV)
     // The protocol's `first_scene`: "latin-square", "random" or "fixed"; "" when the input does
     // not say (a CSV export).

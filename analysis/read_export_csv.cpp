@@ -203,6 +203,9 @@ Result<SessionRow> session_row(const Row& row, const TrialRow& t) {
     // The hash only: the export does not hold the protocol's text, so its design is not known.
     if (row.has("protocol_hash") && !row.is_na("protocol_hash"))
         s.protocol_hash = row.raw_text("protocol_hash");
+    s.software_version = row.has("software_version") && !row.is_na("software_version")
+                             ? row.raw_text("software_version")
+                             : "unknown";
     if (row.has("participant_number") && !row.is_na("participant_number")) {
         MONOPLANE_ASSIGN(s.participant_number, small_integer(row, "participant_number"));
         s.participant_number -= 1;  // the export's is 1-based, as --participant-number takes it

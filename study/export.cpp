@@ -103,6 +103,7 @@ std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s,
         integer(s.participant_number + 1),  // 1-based, as --participant-number takes it
         d ? integer(o.runs) : na(),
         s.session_uuid.empty() ? na() : text(s.session_uuid),  // NA: a session made by hand
+        text(s.software_version.empty() ? std::string("unknown") : s.software_version),
     };
     append_variables(cells, s, variables);
     return cells;
@@ -284,6 +285,7 @@ const std::vector<std::string_view>& export_columns() {
         "participant_number",
         "runs",
         "session_uuid",
+        "software_version",
     };
     return columns;
 }

@@ -1,5 +1,7 @@
 #include "analysis/report/inputs_section.h"
 
+#include <algorithm>
+
 #include "analysis/report/html_format.h"
 #include "charts/svg_writer.h"
 
@@ -39,7 +41,37 @@ std::string pooling_note(const InputRecords& inputs) {
 }  // namespace
 
 InputRecords input_records(const Dataset& data) {
-    return {data.protocol_versions, data.pooled_protocols, data.dropped_copies};
+    InputRecords inputs{data.protocol_versions, data.pooled_protocols, data.dropped_copies, {}};
+    for (const SessionRow& session : data.sessions) {
+        const std::string version =
+            session.software_version.empty() ? "unknown" : session.software_version;
+        auto found = std::find_if(inputs.software_versions.begin(), inputs.software_versions.end(),
+                                  [&](const SoftwareVersion& v) { return v.version == version; });
+        if (found == inputs.software_versions.end()) {
+            inputs.software_versions.push_back({version, 1});
+        } else {
+            ++found->sessions;
+        }
+    }
+    return inputs;
+}
+
+std::string software_versions_html(const InputRecords& inputs) {
+    if (inputs.software_versions.empty()) return {};
+    Table t;
+    t.header = {"monoplane", "sessions"};
+    t.numeric = {false, true};
+    for (const SoftwareVersion& v : inputs.software_versions) {
+        t.rows.push_back(
+            {"<code>" + xml_escaped(v.version) + "</code>", std::to_string(v.sessions)});
+    }
+    const std::string note =
+        inputs.software_versions.size() == 1
+            ? "<p class=\"note\">Every session ran this build.</p>\n"
+            : "<p class=\"note\">The sessions ran on more than one build of monoplane "
+              "(<code>monoplane --version</code>; \"unknown\": an export made before builds "
+              "were recorded).</p>\n";
+    return "<h3 id=\"software-versions\">Software versions</h3>\n" + t.html() + note;
 }
 
 std::string protocol_versions_html(const InputRecords& inputs) {
@@ -109,6 +141,11 @@ void input_records_json(JsonWriter& json, const InputRecords& inputs) {
             .begin_array("dropped");
         for (const std::string& source : d.dropped) json.value("", source);
         json.end_array().end_object();
+    }
+    json.end_array();
+    json.begin_array("software_versions");
+    for (const SoftwareVersion& v : inputs.software_versions) {
+        json.begin_object().value("version", v.version).value("sessions", v.sessions).end_object();
     }
     json.end_array();
 }

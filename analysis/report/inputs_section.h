@@ -13,10 +13,18 @@
 
 namespace monoplane::analysis::report {
 
+// The sessions one build of monoplane ran (SessionRow::software_version; "unknown" for sessions
+// whose input does not say).
+struct SoftwareVersion {
+    std::string version;
+    int sessions = 0;
+};
+
 struct InputRecords {
     std::vector<ProtocolVersion> protocol_versions;  // in reading order
     bool pooled_protocols = false;  // designs that differ (or are not known) pooled on request
     std::vector<DroppedCopy> dropped_copies;
+    std::vector<SoftwareVersion> software_versions;  // in order of first session read
 };
 
 // The records the checks left in `data` (protocol_versions.h, duplicate_sessions.h). Any time.
@@ -26,8 +34,11 @@ InputRecords input_records(const Dataset& data);
 // they were pooled ("" without versions); the table of sessions counted once ("" without any).
 std::string protocol_versions_html(const InputRecords& inputs);
 std::string dropped_copies_html(const InputRecords& inputs);
+// The builds that ran the sessions, with how many each ("" without sessions).
+std::string software_versions_html(const InputRecords& inputs);
 
-// Writes "protocol_versions", "pooled_protocols" and "dropped_duplicates" into an open JSON
+// Writes "protocol_versions", "pooled_protocols", "dropped_duplicates" and
+// "software_versions" ([{"version", "sessions"}]) into an open JSON
 // object (docs/analysis.md, summary.json): a hash not recorded and a design not known are null.
 void input_records_json(JsonWriter& json, const InputRecords& inputs);
 

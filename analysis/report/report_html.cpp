@@ -135,6 +135,7 @@ std::string data_section_html(const AnalysisResults& r) {
              codes_note_html(r.day) + "</p>\n";
     }
     h += protocol_versions_html(r.inputs);
+    h += software_versions_html(r.inputs);
     h += dropped_copies_html(r.inputs);
     {
         const Exclusions& e = r.exclusions;

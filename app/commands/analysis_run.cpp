@@ -45,6 +45,7 @@ analysis::SessionRow session_row(const study::SessionInfo& info, const std::stri
     s.protocol = info.protocol_name;
     s.session_uuid = info.session_uuid;
     s.protocol_hash = study::hash_text(info.protocol_hash);  // as the export writes it
+    s.software_version = info.software_version.empty() ? "unknown" : info.software_version;
     s.protocol_text = info.protocol_text;
     s.started_utc = info.started_utc;
     Result<study::Protocol> protocol =

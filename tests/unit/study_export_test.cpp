@@ -25,16 +25,16 @@ const std::string kHeader =
     "switches,time_label1_s,time_label2_s,decision_time_s,practice,decided,label2_mode,"
     "participant_index,protocol,protocol_hash,observer,runtime,hmd,session_status,"
     "anti_aliasing,ssao,detail,procedure,staircase_threshold_m,staircase_lower_m,staircase_upper_"
-    "m,session_id,repetition,participant_number,runs,session_uuid\n";
+    "m,session_id,repetition,participant_number,runs,session_uuid,software_version\n";
 const std::string kPracticeRow =
     "P01,1,0,NA,landscape,5,stereo,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,hybrid,0,fink2019,"
     "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,1,1,NA," +
-    kUuid + "\n";
+    kUuid + ",0.1.0\n";
 const std::string kDecidedRow =
     "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,hybrid,0,"
     "fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,"
     "1,1,2," +
-    kUuid + "\n";
+    kUuid + ",0.1.0\n";
 
 SessionInfo known_session() {
     SessionInfo info;
@@ -99,6 +99,23 @@ TEST(StudyExport, CsvHasTheHeaderAndExactRows) {
     EXPECT_EQ(out.str(), kHeader + kPracticeRow + kDecidedRow);
 }
 
+// A session whose database records no build (made by hand, or by a tool that left it empty)
+// exports "unknown", never an empty cell a reader would take for NA.
+TEST(StudyExport, ASessionWithoutARecordedBuildSaysUnknown) {
+    ExportData data = known_data();
+    data.sessions.at(1).software_version.clear();
+    std::ostringstream out;
+    write_csv(data, out);
+    const std::string text = out.str();
+    EXPECT_EQ(text.find(",0.1.0\n"), std::string::npos) << text;
+    std::size_t rows = 0;
+    for (std::size_t at = text.find(",unknown\n"); at != std::string::npos;
+         at = text.find(",unknown\n", at + 1)) {
+        ++rows;
+    }
+    EXPECT_EQ(rows, 2u) << text;
+}
+
 TEST(StudyExport, CsvIgnoresTheStreamsLocale) {
     std::ostringstream out;
     out.imbue(std::locale(std::locale::classic(), new GermanNumbers));
@@ -127,7 +144,7 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"staircase_upper_m\": null, \"session_id\": 1, \"repetition\": 1, "
         "\"participant_number\": 1, \"runs\": null, \"session_uuid\": \"" +
         kUuid +
-        "\", \"scene_files\": [], \"session_notes\": []},\n"
+        "\", \"software_version\": \"0.1.0\", \"scene_files\": [], \"session_notes\": []},\n"
         "  {\"participant\": \"P01\", \"session\": 1, \"trial_index\": 2, \"block\": 0, "
         "\"scene\": \"spheres\", \"mono_plane\": 1.6, \"label1_mode\": \"stereo\", \"choice\": 1, "
         "\"chosen_mode\": \"stereo\", \"valid\": true, \"switches\": 2, \"time_label1_s\": 1.5, "
@@ -141,7 +158,7 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"staircase_lower_m\": null, \"staircase_upper_m\": null, \"session_id\": 1, "
         "\"repetition\": 1, \"participant_number\": 1, \"runs\": 2, \"session_uuid\": \"" +
         kUuid +
-        "\", \"scene_files\": [], "
+        "\", \"software_version\": \"0.1.0\", \"scene_files\": [], "
         "\"session_notes\": []}\n"
         "]\n";
     EXPECT_EQ(out.str(), expected);
@@ -159,16 +176,16 @@ TEST(StudyExport, StaircaseTrialsCarryTheirStaircasesEstimate) {
         "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,"
         "hybrid,0,fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,"
         "staircase,6.25,3,12.5,1,1,1,2," +
-        kUuid + "\n";
+        kUuid + ",0.1.0\n";
     const std::string practice_row = kPracticeRow.substr(0, kPracticeRow.find("constant,")) +
-                                     "staircase,NA,NA,NA,1,1,1,NA," + kUuid + "\n";
+                                     "staircase,NA,NA,NA,1,1,1,NA," + kUuid + ",0.1.0\n";
     EXPECT_EQ(out.str(), kHeader + practice_row + staircase_row);
 
     data.staircase_estimates[1][2] =
         ThresholdEstimate{6.25, std::nullopt, std::nullopt, std::nullopt, 7};
     std::ostringstream up_down;
     write_csv(data, up_down);
-    EXPECT_NE(up_down.str().find(",staircase,6.25,NA,NA,1,1,1,2," + kUuid + "\n"),
+    EXPECT_NE(up_down.str().find(",staircase,6.25,NA,NA,1,1,1,2," + kUuid + ",0.1.0\n"),
               std::string::npos);
 }
 
@@ -299,8 +316,8 @@ TEST(StudyExport, FormatNames) {
     EXPECT_EQ(export_format_name(ExportFormat::FramesCsv), "frames-csv");
     EXPECT_EQ(*parse_export_format("notes-csv"), ExportFormat::NotesCsv);
     EXPECT_EQ(export_format_name(ExportFormat::NotesCsv), "notes-csv");
-    EXPECT_EQ(export_columns().size(), 36u);
-    EXPECT_EQ(export_columns().back(), "session_uuid");
+    EXPECT_EQ(export_columns().size(), 37u);
+    EXPECT_EQ(export_columns().back(), "software_version");
     EXPECT_EQ(export_columns().front(), "participant");
 }
 
@@ -350,9 +367,10 @@ TEST(StudyExport, SessionIsTheParticipantsNumberAndTheIdFollows) {
     std::ostringstream csv;
     write_csv(data, csv);
     EXPECT_NE(csv.str().find("\nP01,2,2,0,spheres,1.6,"), std::string::npos) << csv.str();
-    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,7,3,5,2," + kUuid + "\n"), std::string::npos)
+    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,7,3,5,2," + kUuid + ",0.1.0\n"), std::string::npos)
         << csv.str();
-    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,1,1,1,NA," + kUuid + "\n"), std::string::npos)
+    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,1,1,1,NA," + kUuid + ",0.1.0\n"),
+              std::string::npos)
         << csv.str();
     std::ostringstream json;
     write_json(data, json);
@@ -400,23 +418,23 @@ TEST(StudyExport, EveryParticipantVariableIsAColumn) {
         text.substr(0, text.find('\n') + 1),
         kHeader.substr(0, kHeader.size() - 1) + ",var_age,var_vision,var_remark,var_offset_db\n");
     EXPECT_NE(text.find("\nP01,1,0,NA,landscape,5,"), std::string::npos);
-    EXPECT_NE(text.find(",1,1,1,NA," + kUuid + ",34,corrected,\"'=1+1\",NA\nP01,1,2,"),
+    EXPECT_NE(text.find(",1,1,1,NA," + kUuid + ",0.1.0,34,corrected,\"'=1+1\",NA\nP01,1,2,"),
               std::string::npos)
         << text;
-    EXPECT_NE(text.find(",2,1,2,NA,NA,NA,\"'-\",NA,-5.5\n"), std::string::npos) << text;
+    EXPECT_NE(text.find(",2,1,2,NA,NA,0.1.0,NA,\"'-\",NA,-5.5\n"), std::string::npos) << text;
 
     std::ostringstream json;
     write_json(data, json);
     EXPECT_NE(
         json.str().find("\"participant_number\": 1, \"runs\": null, \"session_uuid\": \"" + kUuid +
-                        "\", \"var_age\": 34, "
+                        "\", \"software_version\": \"0.1.0\", \"var_age\": 34, "
                         "\"var_vision\": "
                         "\"corrected\", \"var_remark\": \"=1+1\", \"var_offset_db\": null, "
                         "\"scene_files\""),
         std::string::npos)
         << json.str();
     EXPECT_NE(json.str().find("\"participant_number\": 2, \"runs\": null, \"session_uuid\": null, "
-                              "\"var_age\": null, "
+                              "\"software_version\": \"0.1.0\", \"var_age\": null, "
                               "\"var_vision\": "
                               "\"-\", \"var_remark\": null, \"var_offset_db\": -5.5, "),
               std::string::npos)
@@ -621,7 +639,7 @@ TEST(StudyExport, ExportsFromTheStoreToAFile) {
             "P01,1,1,NA,beams,3,hybrid,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,stereo,0,fink2019,"
             "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,"
             "1,1,NA," +
-            kUuid + "\n";
+            kUuid + ",0.1.0\n";
         EXPECT_EQ(text, kHeader + kPracticeRow + beams + kDecidedRow);
         for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
             EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
@@ -688,19 +706,21 @@ TEST(StudyExport, ExportsSessionsVariablesAndNotesFromTheStore) {
 
         ASSERT_TRUE(export_trials(store, ExportFormat::Csv, dir / "trials.csv").ok());
         const std::string csv = read_file(dir / "trials.csv");
-        EXPECT_NE(csv.find(",participant_number,runs,session_uuid,var_age,var_handedness\n"),
-                  std::string::npos)
+        EXPECT_NE(
+            csv.find(
+                ",participant_number,runs,session_uuid,software_version,var_age,var_handedness\n"),
+            std::string::npos)
             << csv;
         const auto uuid = [&](std::int64_t id) { return store.session(id).value().session_uuid; };
         EXPECT_NE(uuid(*first), uuid(*second));
         EXPECT_NE(csv.find("\nP01,1,1,0,spheres,1.6,hybrid,"), std::string::npos) << csv;
         EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*first) + ",2,1,NA," + uuid(*first) +
-                           ",34,NA\n"),
+                           ",0.1.0,34,NA\n"),
                   std::string::npos)
             << csv;
         EXPECT_NE(csv.find("\nP01,2,1,0,spheres,1.6,hybrid,"), std::string::npos) << csv;
         EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*second) + ",2,1,NA," + uuid(*second) +
-                           ",34,NA\n"),
+                           ",0.1.0,34,NA\n"),
                   std::string::npos)
             << csv;
 
