@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages monoplane builds and runs with (as root, through apt-get).
-# Does nothing when they are all present, so repeated runs are fast.
+# Installs the Debian 12 packages monoplane builds and runs with (as root, through apt-get), and
+# any packages named as arguments (scripts/package.sh's tools). Does nothing when they are all
+# present, so repeated runs are fast.
 set -euo pipefail
 
 # fonts-wqy-microhei: a CJK font for protocols in Chinese, Japanese or Korean (tests and
@@ -15,6 +16,7 @@ packages=(
   libtinygltf-dev nlohmann-json3-dev libmeshoptimizer-dev assimp-testmodels
   python3 python3-pandas r-base-core r-cran-jsonlite r-cran-dbi r-cran-rsqlite
   libeigen3-dev libnlopt-dev chromium
+  "$@"
 )
 
 missing=()

@@ -7,20 +7,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-scripts/install-deps.sh
-need=(help2man desktop-file-utils lintian dpkg-dev file fakeroot)
-missing=()
-for p in "${need[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  SUDO=""
-  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-  echo "package: installing ${missing[*]}"
-  export DEBIAN_FRONTEND=noninteractive
-  $SUDO apt-get update -qq
-  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+# The build's packages, and the packaging tools.
+scripts/install-deps.sh help2man desktop-file-utils lintian dpkg-dev file fakeroot
 
 build=${BUILD_DIR:-build-package}
 revision=$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)
