@@ -89,7 +89,6 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     values.use_mono = frame.use_mono;
     values.mono_plane = frame.inputs->mono_plane;
     values.slot = frame.slot;
-    values.slots = vk_core::FrameRing::kFramesInFlight;
     const std::unique_ptr<passes::UnitRecording> recording = make_unit_recording(
         cmd, last_plan_, pass, sync, values,
         [this](const plan::ResourceKey& key) -> const vk_core::Image& { return view_image(key); },

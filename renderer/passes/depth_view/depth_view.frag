@@ -1,20 +1,23 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
 // The depth debug view (depth_view_unit.cpp): each pixel's linear depth d, in metres, shown as a
 // brightness falling with log10 d from 1 m (bright) to 1000 m (dark), warm where the content lies
 // nearer than the mono plane m and cool at or beyond it (drawn by C in hybrid); black for the
-// sky. Stereo, and hybrid frames that draw no C, pass m = 1e30: everything is near.
+// sky. Stereo, and hybrid frames that draw no C, pass m = MONOPLANE_SKY_LINEAR_DEPTH: everything
+// is near.
+#include "renderer/passes/shared/view_constants.h"
+
 layout(set = 0, binding = 0) uniform sampler2D linear_depth;
 layout(push_constant) uniform Push { float mono_plane; };
 layout(location = 0) in vec2 in_uv;
 layout(location = 0) out vec4 out_color;
 
-const float kSkyDepth = 1.0e29;  // the forward passes write 1e30 for the sky
-
 void main() {
     // uv * size is the pixel centre (i + 0.5): its floor is the texel, read exactly.
     ivec2 texel = ivec2(in_uv * vec2(textureSize(linear_depth, 0)));
     float d = texelFetch(linear_depth, texel, 0).r;
-    if (d >= kSkyDepth) {
+    // The sky, as the SSAO and the depth histogram tell it (ssao_common.glsl).
+    if (d >= 0.5 * MONOPLANE_SKY_LINEAR_DEPTH) {
         out_color = vec4(0.0, 0.0, 0.0, 1.0);
         return;
     }

@@ -8,6 +8,7 @@
 #include "renderer/executor/image_layouts.h"
 #include "renderer/passes/shared/fullscreen_pass.h"
 #include "renderer/passes/shared/pass_unit.h"
+#include "renderer/passes/shared/view_constants.h"
 #include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/plan/pass_unit.h"
 #include "renderer/vk/descriptor_set.h"
@@ -19,8 +20,8 @@ const std::uint32_t kDepthViewFrag[] = {
 #include "depth_view.frag.spv.inc"
 };
 
-// Stereo and frames without C: nothing lies beyond the plane (depth_view.frag).
-constexpr float kNoMonoPlane = 1.0e30f;
+// Stereo and frames without C: nothing lies beyond the plane, not even the sky (depth_view.frag).
+constexpr float kNoMonoPlane = static_cast<float>(MONOPLANE_SKY_LINEAR_DEPTH);
 
 // Per eye, when the frame shows this view: the eye's linear depth in, its display image out.
 void place(plan::UnitPlacement& placement) {

@@ -29,8 +29,7 @@ namespace monoplane::passes {
 struct UnitFrameValues {
     double mono_plane = 0.0;  // m in metres, when the frame draws C (use_mono)
     bool use_mono = false;
-    std::uint32_t slot = 0;   // the frame-in-flight slot (its resources are free to rewrite)
-    std::uint32_t slots = 1;  // how many slots there are
+    std::uint32_t slot = 0;  // the frame-in-flight slot (its resources are free to rewrite)
 };
 
 class UnitRecording {
