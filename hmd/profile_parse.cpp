@@ -12,6 +12,7 @@
 
 #include <toml++/toml.h>
 
+#include "common/quoted.h"
 #include "common/toml/toml_keys.h"
 #include "common/toml/toml_problems.h"
 #include "hmd/profile.h"
@@ -52,10 +53,6 @@ constexpr std::array<TangentRule, 4> kTangentRules = {{
     {"tan_up", &rig::Tangents::up, false, kVerticalSignHint},
 }};
 
-std::string quoted(std::string_view key) {
-    return "'" + std::string(key) + "'";
-}
-
 // Integers are accepted where a real number is expected: `tan_up = 1` means 1.0.
 std::optional<double> read_finite_number(const toml::node& node, std::string_view qualified_key,
                                          TomlProblems& problems) {
@@ -69,7 +66,7 @@ std::optional<double> read_finite_number(const toml::node& node, std::string_vie
         return std::nullopt;
     }
     if (!std::isfinite(value)) {
-        problems.add(node.source(), "key " + quoted(qualified_key) +
+        problems.add(node.source(), "key " + in_quotes(qualified_key) +
                                         " must be a finite number, got " + format_number(value));
         return std::nullopt;
     }
@@ -118,7 +115,7 @@ std::optional<int> read_pixels(const TomlScope& root, std::string_view key,
     }
     const std::int64_t pixels = integer->get();
     if (pixels < kMinPixels || pixels > kMaxPixels) {
-        problems.add(node->source(), "key " + quoted(key) + " = " + std::to_string(pixels) +
+        problems.add(node->source(), "key " + in_quotes(key) + " = " + std::to_string(pixels) +
                                          " is outside [" + std::to_string(kMinPixels) + ", " +
                                          std::to_string(kMaxPixels) + "] pixels");
         return std::nullopt;
@@ -134,7 +131,7 @@ std::optional<double> read_tangent(const TomlScope& eye, const TangentRule& rule
     const std::optional<double> tangent = read_finite_number(*node, key, problems);
     if (!tangent) return std::nullopt;
     if (rule.negative ? !(*tangent < 0.0) : !(*tangent > 0.0)) {
-        problems.add(node->source(), "key " + quoted(key) + " must be " +
+        problems.add(node->source(), "key " + in_quotes(key) + " must be " +
                                          (rule.negative ? "negative" : "positive") + ", got " +
                                          format_number(*tangent) + " (" +
                                          std::string(rule.sign_hint) + ")");
@@ -142,7 +139,7 @@ std::optional<double> read_tangent(const TomlScope& eye, const TangentRule& rule
     }
     if (std::abs(*tangent) > kMaxAbsTangent) {
         problems.add(node->source(),
-                     "key " + quoted(key) + " = " + format_number(*tangent) +
+                     "key " + in_quotes(key) + " = " + format_number(*tangent) +
                          " is implausible: |tangent| must not exceed " +
                          format_number(kMaxAbsTangent) +
                          " (84 degrees from the view axis); is it an angle in degrees?");
@@ -163,7 +160,7 @@ std::optional<double> read_cant(const TomlScope& eye, TomlProblems& problems) {
     const std::optional<double> cant = read_finite_number(*node, key, problems);
     if (!cant) return std::nullopt;
     if (std::abs(*cant) > kMaxCantDegrees) {
-        problems.add(node->source(), "key " + quoted(key) + " = " + format_number(*cant) +
+        problems.add(node->source(), "key " + in_quotes(key) + " = " + format_number(*cant) +
                                          " is implausible: |cant_deg| must not exceed " +
                                          format_number(kMaxCantDegrees) +
                                          " degrees (no headset turns its displays further)");

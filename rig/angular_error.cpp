@@ -12,8 +12,6 @@
 namespace monoplane::rig {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
 // The largest value of f over the box [u0, u1] x [v0, v1] where f is defined (f returns nothing
 // outside the region searched): the best of a samples_u x samples_v grid (edges included),
 // refined by a compass search whose step halves until it is 1e-12 of the box.

@@ -21,7 +21,6 @@
 namespace monoplane::rig {
 namespace {
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kPi = 3.14159265358979323846;
 
 std::string number(double value) {

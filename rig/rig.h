@@ -26,6 +26,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 
 #include <glm/ext/matrix_double3x3.hpp>
 #include <glm/ext/matrix_double4x4.hpp>
@@ -133,6 +134,10 @@ struct PixelError {
     double vertical_px = 0.0;
     double euclidean_px = 0.0;
 };
+
+// A depth at infinity, which the functions below that take a depth accept (the supremum over
+// depth).
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // The largest offset, over both eyes and their field of view, of a point at `depth` (metres in
 // front of the eyes' plane) between hybrid and stereo. Parallel eyes: closed form (the maximum

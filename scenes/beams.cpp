@@ -21,7 +21,7 @@ struct BeamsParameters {
     int ground_sectors;
 };
 
-const PerDetail<BeamsParameters> kParameters = {{
+const PerDetail<BeamsParameters> kBeamsParameters = {{
     {24, 5, {8.0f, 8.0f, false}, 48},
     {100, 10, {4.0f, 1.0f, false}, 96},
     {220, 14, {4.0f, 1.2f, true}, 192},
@@ -38,7 +38,7 @@ constexpr float kOverheadHalfWidth = 4.6f;
 constexpr float kOverheadHeight = 4.4f;
 
 // Streams of the seed, one per kind of object (random.h).
-enum Stream : std::uint64_t { kRails = 1, kGates, kTrusses, kTowers };
+enum BeamsStream : std::uint64_t { kRails = 1, kGates, kTrusses, kTowers };
 
 struct Palette {
     std::uint32_t steel, orange, white, blue, yellow, red, ground;
@@ -365,7 +365,7 @@ void add_towers(BeamsLayout& layout, int count, std::uint64_t seed,
 }  // namespace
 
 BeamsLayout beams_layout(Detail detail, std::uint64_t seed) {
-    const BeamsParameters& parameters = for_detail(kParameters, detail);
+    const BeamsParameters& parameters = for_detail(kBeamsParameters, detail);
     BeamsLayout layout;
     add_corridor(layout, seed);
     std::vector<Obstacle> obstacles;
@@ -375,7 +375,7 @@ BeamsLayout beams_layout(Detail detail, std::uint64_t seed) {
 }
 
 Scene generate_beams(Detail detail, std::uint64_t seed) {
-    const BeamsParameters& parameters = for_detail(kParameters, detail);
+    const BeamsParameters& parameters = for_detail(kBeamsParameters, detail);
     const BeamsLayout layout = beams_layout(detail, seed);
 
     ChunkBuilder builder(chunk_triangle_target(detail));

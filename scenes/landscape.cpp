@@ -29,7 +29,7 @@ struct LandscapeParameters {
     int crown_subdivisions;
 };
 
-const PerDetail<LandscapeParameters> kParameters = {{
+const PerDetail<LandscapeParameters> kLandscapeParameters = {{
     {96, 120, 1, 150, 5, 1},
     {256, 500, 1, 800, 7, 1},
     {384, 800, 2, 1500, 10, 2},
@@ -43,7 +43,7 @@ constexpr float kTerrainRadius = 700.0f;
 constexpr float kForceMonoTerrainRadius = 40.0f;
 constexpr float kFarthestObject = 450.0f;
 
-enum Stream : std::uint64_t { kRockPlacement = 1, kRockShape, kTreePlacement, kTreeShape };
+enum LandscapeStream : std::uint64_t { kRockPlacement = 1, kRockShape, kTreePlacement, kTreeShape };
 
 // Ground position at this distance from the origin: mostly ahead, some all around (a
 // participant may look about).
@@ -216,7 +216,7 @@ void add_trees(ChunkBuilder& builder, const Terrain& terrain, const LandscapePar
 }  // namespace
 
 Scene generate_landscape(Detail detail, std::uint64_t seed) {
-    const LandscapeParameters& parameters = for_detail(kParameters, detail);
+    const LandscapeParameters& parameters = for_detail(kLandscapeParameters, detail);
     const Terrain terrain(seed);
     ChunkBuilder builder(chunk_triangle_target(detail));
 

@@ -23,7 +23,7 @@ struct SpheresParameters {
     int ground_sectors;
 };
 
-const PerDetail<SpheresParameters> kParameters = {{
+const PerDetail<SpheresParameters> kSpheresParameters = {{
     {200, {12, 7}, 48},
     {520, {20, 10}, 96},
     {840, {28, 14}, 192},
@@ -37,7 +37,7 @@ constexpr float kTanHorizontal = 1.43f;
 constexpr float kTanUp = 0.8f;
 constexpr float kTanDown = 1.0f;
 
-enum Stream : std::uint64_t { kPlacement = 1, kAppearance };
+enum SpheresStream : std::uint64_t { kPlacement = 1, kAppearance };
 
 // Sphere i's depth, uniform in depth as papers/000 Sect. 6 has it ("geometry which is uniformly
 // distributed across space"): stratified, sphere i in the i-th of count equal depth strata from
@@ -90,11 +90,11 @@ std::vector<PlacedSphere> place_balls(int count, std::uint64_t seed) {
 }  // namespace
 
 std::vector<PlacedSphere> spheres_layout(Detail detail, std::uint64_t seed) {
-    return place_balls(for_detail(kParameters, detail).spheres, seed);
+    return place_balls(for_detail(kSpheresParameters, detail).spheres, seed);
 }
 
 Scene generate_spheres(Detail detail, std::uint64_t seed) {
-    const SpheresParameters& parameters = for_detail(kParameters, detail);
+    const SpheresParameters& parameters = for_detail(kSpheresParameters, detail);
     ChunkBuilder builder(chunk_triangle_target(detail));
 
     PolarGrid ground;

@@ -7,6 +7,8 @@
 #include <system_error>
 #include <vector>
 
+#include "common/quoted.h"
+
 namespace monoplane::study {
 namespace {
 
@@ -22,10 +24,6 @@ constexpr std::string_view kHelpLine =
 // Sessions a refusal names before it says how many more there are.
 constexpr std::size_t kNamedSessions = 3;
 
-std::string quoted(const fs::path& path) {
-    return "'" + path.string() + "'";
-}
-
 // A path on one line of the record: control characters (a newline would end the line) as '?'.
 std::string one_line(std::string text) {
     for (char& c : text)
@@ -34,7 +32,7 @@ std::string one_line(std::string text) {
 }
 
 Error line_error(const fs::path& path, int line, const std::string& what) {
-    return Error{quoted(path) + " line " + std::to_string(line) + ": " + what};
+    return Error{in_quotes(path) + " line " + std::to_string(line) + ": " + what};
 }
 
 // "N STARTED_UTC CODE", the code last: it is the rest of the line.
@@ -128,7 +126,7 @@ void write_export_source(const ExportSource& source, std::ostream& out) {
 
 Result<ExportSource> read_export_source(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) return Error{"cannot read " + quoted(path)};
+    if (!in) return Error{"cannot read " + in_quotes(path)};
     std::string line;
     if (!std::getline(in, line) || !std::string_view(line).starts_with(kFirstLine))
         return line_error(path, 1, "not a record of an export's source");
@@ -137,7 +135,7 @@ Result<ExportSource> read_export_source(const fs::path& path) {
         Result<void> parsed = parse_line(line, source);
         if (!parsed) return line_error(path, number, parsed.error().message);
     }
-    if (in.bad()) return Error{"cannot read " + quoted(path)};
+    if (in.bad()) return Error{"cannot read " + in_quotes(path)};
     return source;
 }
 
@@ -164,21 +162,21 @@ std::optional<OutputProblem> export_source_problem(const fs::path& out, const Ex
     if (!fs::exists(record, ec)) {
         return OutputProblem{
             OutputRefusal::OtherSource,
-            quoted(out) + " is a " + kind + " that does not record which study it came from (" +
-                quoted(record) +
+            in_quotes(out) + " is a " + kind + " that does not record which study it came from (" +
+                in_quotes(record) +
                 " is missing: it was written by an older monoplane, or copied without it)"};
     }
     Result<ExportSource> earlier = read_export_source(record);
     if (!earlier) {
         return OutputProblem{OutputRefusal::OtherSource,
-                             quoted(out) + " is a " + kind +
+                             in_quotes(out) + " is a " + kind +
                                  " whose record of its study cannot be read (" +
                                  earlier.error().message + ")"};
     }
     const std::string missing = missing_sessions(*earlier, now);
     if (missing.empty()) return std::nullopt;
     return OutputProblem{OutputRefusal::OtherSource,
-                         quoted(out) + " is a " + kind + " of another study: " + missing};
+                         in_quotes(out) + " is a " + kind + " of another study: " + missing};
 }
 
 }  // namespace monoplane::study

@@ -8,7 +8,7 @@
 namespace monoplane::study {
 namespace {
 
-std::string optional_number(const std::optional<double>& value) {
+std::string optional_number_text(const std::optional<double>& value) {
     return value ? number_text(*value) : "NA";
 }
 
@@ -45,12 +45,12 @@ void write_frames_csv(const ExportData& data, std::ostream& out) {
             line += (f.trial_index ? std::to_string(*f.trial_index) : "NA") + ',';
             line += csv_text(f.shown) + ',';
             line += seconds_text(f.display_time_ns) + ',';
-            line += number_text(f.cpu_ms) + ',' + optional_number(f.gpu_ms) + ',';
+            line += number_text(f.cpu_ms) + ',' + optional_number_text(f.gpu_ms) + ',';
             line += f.missed ? "TRUE" : "FALSE";
             for (std::size_t i = 0; i < 7; ++i) {
                 line += ',' + (f.head ? number_text((*f.head)[i]) : std::string("NA"));
             }
-            line += ',' + optional_number(f.mono_plane);
+            line += ',' + optional_number_text(f.mono_plane);
             line += ',' + optional_count(f.pipelines_created);
             line += ',' + optional_count(f.driver_compiles);
             line += ',' + std::to_string(session_id);

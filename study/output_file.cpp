@@ -14,6 +14,8 @@
 #include <streambuf>
 #include <system_error>
 
+#include "common/quoted.h"
+
 namespace monoplane::study {
 namespace {
 
@@ -32,10 +34,6 @@ bool is_sqlite_head(std::string_view head) {
 // Files SQLite and the session holds keep beside a database: replacing one damages the study.
 constexpr std::array<std::string_view, 4> kDatabaseCompanions = {"-wal", "-shm", "-journal",
                                                                  "-holds"};
-
-std::string quoted(const fs::path& path) {
-    return "'" + path.string() + "'";
-}
 
 // The same file, by any spelling: existing files by device and inode (hard and symbolic links,
 // relative paths), a file not there yet by its absolute path with links resolved.
@@ -58,8 +56,8 @@ std::optional<std::string> input_conflict(const fs::path& out,
                 std::string(is_sqlite_file(input) ? "the database" : "a file") +
                 " this command reads: writing there would destroy it";
             if (out.lexically_normal() == input.lexically_normal())
-                return quoted(out) + " is " + what;
-            return quoted(out) + " is the same file as " + quoted(input) + ", " + what;
+                return in_quotes(out) + " is " + what;
+            return in_quotes(out) + " is the same file as " + in_quotes(input) + ", " + what;
         }
         for (std::string_view suffix : kDatabaseCompanions) {
             // Beside the path as given and beside the link's target: SQLite and the session
@@ -71,7 +69,7 @@ std::optional<std::string> input_conflict(const fs::path& out,
             const fs::path real_out = fs::weakly_canonical(out, error);
             if (same_file(out, companion) || same_file(out, real_companion) ||
                 real_out == fs::weakly_canonical(companion, error) || real_out == real_companion) {
-                return quoted(out) + " belongs to the database " + quoted(input) +
+                return in_quotes(out) + " belongs to the database " + in_quotes(input) +
                        " (SQLite or a running session keeps it beside the database): writing "
                        "there would damage the study";
             }
@@ -88,7 +86,7 @@ Result<std::string> read_head(const fs::path& path) {
     if (in) in.read(head.data(), static_cast<std::streamsize>(head.size()));
     if (!in && !in.eof()) {
         const int err = errno;
-        return Error{"cannot read " + quoted(path) + " to tell whether it may be replaced" +
+        return Error{"cannot read " + in_quotes(path) + " to tell whether it may be replaced" +
                      (err != 0 ? std::string(": ") + std::strerror(err) : std::string())};
     }
     head.resize(static_cast<std::size_t>(in.gcount()));
@@ -110,14 +108,14 @@ std::optional<OutputProblem> folder_problem(const fs::path& out) {
     std::error_code ec;
     const fs::file_status status = fs::status(folder, ec);
     if (!fs::exists(status)) {
-        return OutputProblem{
-            OutputRefusal::NoFolder,
-            "the folder " + quoted(folder) + " for the output " + quoted(out) + " does not exist"};
+        return OutputProblem{OutputRefusal::NoFolder, "the folder " + in_quotes(folder) +
+                                                          " for the output " + in_quotes(out) +
+                                                          " does not exist"};
     }
     if (!fs::is_directory(status)) {
         return OutputProblem{
             OutputRefusal::FolderIsNoFolder,
-            quoted(folder) + " in the output path " + quoted(out) + " is not a folder"};
+            in_quotes(folder) + " in the output path " + in_quotes(out) + " is not a folder"};
     }
     return std::nullopt;
 }
@@ -128,21 +126,21 @@ std::optional<OutputProblem> existing_problem(const fs::path& out, const OutputK
     std::error_code ec;
     if (!fs::is_regular_file(out, ec)) {
         return OutputProblem{OutputRefusal::NotAFile,
-                             quoted(out) + " exists and is " +
+                             in_quotes(out) + " exists and is " +
                                  (fs::is_directory(out, ec) ? "a folder" : "not a regular file")};
     }
     Result<std::string> head = read_head(out);
     if (!head) return OutputProblem{OutputRefusal::Unreadable, head.error().message};
     if (is_sqlite_head(*head)) {
         return OutputProblem{OutputRefusal::IsADatabase,
-                             quoted(out) +
+                             in_quotes(out) +
                                  " is an SQLite database (perhaps a study's): refusing to "
                                  "replace it"};
     }
     if (kind.is_earlier_output && kind.is_earlier_output(*head)) return std::nullopt;
     if (force) return std::nullopt;
     return OutputProblem{OutputRefusal::NotAnEarlierOutput,
-                         quoted(out) + " exists and is not an earlier " + kind.name +
+                         in_quotes(out) + " exists and is not an earlier " + kind.name +
                              ": it begins with " + first_line(*head)};
 }
 
@@ -242,12 +240,12 @@ Result<std::pair<int, fs::path>> create_temporary(const fs::path& target) {
         if (fd >= 0) return std::pair{fd, name};
         if (errno != EEXIST) {
             return Error{"cannot create a file in " +
-                         quoted(folder.empty() ? fs::path(".") : folder) + " to write " +
-                         quoted(target) + ": " + std::strerror(errno) +
+                         in_quotes(folder.empty() ? fs::path(".") : folder) + " to write " +
+                         in_quotes(target) + ": " + std::strerror(errno) +
                          "; check that the folder exists and is writable."};
         }
     }
-    return Error{"cannot find a free temporary file name beside " + quoted(target)};
+    return Error{"cannot find a free temporary file name beside " + in_quotes(target)};
 }
 
 // Writes through `write`, then flushes to disk; the error says what failed.
@@ -259,12 +257,12 @@ Result<void> fill(int fd, const fs::path& target,
     stream.flush();
     if (!stream.good() || buffer.error() != 0) {
         const int err = buffer.error();
-        return Error{"writing " + quoted(target) + " failed" +
+        return Error{"writing " + in_quotes(target) + " failed" +
                      (err != 0 ? std::string(": ") + std::strerror(err) : std::string()) +
                      "; it was left as it was."};
     }
     if (::fsync(fd) != 0) {
-        return Error{"writing " + quoted(target) + " to disk failed: " + std::strerror(errno) +
+        return Error{"writing " + in_quotes(target) + " to disk failed: " + std::strerror(errno) +
                      "; it was left as it was."};
     }
     return Ok{};
@@ -304,7 +302,7 @@ Result<Staged> stage(const FileWrite& file) {
     if (::stat(target.c_str(), &existing) == 0) ::fchmod(fd, existing.st_mode & 07777);
     Result<void> filled = fill(fd, target, file.write);
     if (::close(fd) != 0 && filled) {
-        filled = Error{"writing " + quoted(target) + " failed: " + std::strerror(errno)};
+        filled = Error{"writing " + in_quotes(target) + " failed: " + std::strerror(errno)};
     }
     if (!filled) {
         ::unlink(temporary_path.c_str());
@@ -333,7 +331,7 @@ Result<void> write_files_atomically(const std::vector<FileWrite>& files) {
     }
     for (std::size_t i = 0; done && i < staged.size(); ++i) {
         if (std::rename(staged[i].temporary.c_str(), staged[i].target.c_str()) != 0) {
-            done = Error{"cannot move the new file into place at " + quoted(staged[i].target) +
+            done = Error{"cannot move the new file into place at " + in_quotes(staged[i].target) +
                          ": " + std::strerror(errno) + "; it was left as it was."};
         } else {
             sync_folder(staged[i].target.parent_path());

@@ -11,6 +11,7 @@
 #include <string>
 #include <system_error>
 
+#include "common/quoted.h"
 #include "common/toml/toml_problems.h"
 #include "study/export.h"
 
@@ -19,10 +20,6 @@ namespace {
 
 // A text value is one cell of a spreadsheet or a line of a form, not a document.
 constexpr std::size_t kMaxTextCharacters = 1000;
-
-std::string in_quotes(std::string_view text) {
-    return "'" + std::string(text) + "'";
-}
 
 std::string bound_text(double value, VariableType type) {
     if (type == VariableType::Integer) return std::to_string(static_cast<std::int64_t>(value));

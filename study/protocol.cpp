@@ -22,6 +22,7 @@
 
 #include <toml++/toml.h>
 
+#include "common/quoted.h"
 #include "common/toml/toml_keys.h"
 #include "common/toml/toml_problems.h"
 #include "study/condition.h"
@@ -71,10 +72,6 @@ constexpr std::array<NamedValue<FirstSceneBalance>, 3> kFirstScenes = {{
     {"random", FirstSceneBalance::Random},
     {"fixed", FirstSceneBalance::Fixed},
 }};
-
-std::string in_quotes(std::string_view text) {
-    return "'" + std::string(text) + "'";
-}
 
 std::string known_scenes() {
     return join(study_scene_names());
@@ -568,7 +565,8 @@ Result<Protocol> load_protocol(const std::filesystem::path& path) {
     // The two files most often given by mistake, named as what they are rather than as TOML
     // that lacks every key.
     if (text->empty())
-        return Error{path.string() + " is 0 bytes: not a protocol (a TOML file, docs/protocols.md)"};
+        return Error{path.string() +
+                     " is 0 bytes: not a protocol (a TOML file, docs/protocols.md)"};
     if (text->starts_with(std::string_view("SQLite format 3\0", 16)))
         return Error{path.string() +
                      " is a SQLite database (a study database?), not a protocol: give the "

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "common/quoted.h"
 #include "study/response_keys.h"
 
 namespace monoplane::study {
@@ -22,10 +23,6 @@ constexpr WindowKey kWindowKeys[] = {
 
 std::vector<std::string> to_strings(std::span<const std::string_view> names) {
     return {names.begin(), names.end()};
-}
-
-std::string in_quotes(std::string_view text) {
-    return "'" + std::string(text) + "'";
 }
 
 std::string joined(const std::vector<std::string>& names) {

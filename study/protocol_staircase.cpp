@@ -1,5 +1,6 @@
 // Reading `procedure` and [staircase] (protocol_staircase.h). Each reader records its problems and
 // goes on, as protocol.cpp's do, so a user sees every mistake of the table at once.
+#include "common/quoted.h"
 #include "study/protocol_staircase.h"
 
 #include <algorithm>
@@ -26,10 +27,6 @@ constexpr std::int64_t kMaxTrialsPerScene = 1000;
 // resolves, and keeps one QUEST+ update at a few milliseconds.
 constexpr std::int64_t kMinThresholdSteps = 2;
 constexpr std::int64_t kMaxThresholdSteps = 400;
-
-std::string in_quotes(std::string_view text) {
-    return "'" + std::string(text) + "'";
-}
 
 std::string qualified(std::string_view key) {
     return "staircase." + std::string(key);

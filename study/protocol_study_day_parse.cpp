@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/quoted.h"
 #include "text/complex_scripts.h"
 #include "text/utf8.h"
 
@@ -25,10 +26,6 @@ constexpr std::array<std::string_view, 4> kBreakKeys = {"every_trials", "between
 constexpr std::array<std::string_view, 7> kVariableKeys = {"name",    "type",     "min", "max",
                                                            "choices", "required", "help"};
 constexpr std::array<std::string_view, 2> kBlockings = {"scene", "none"};
-
-std::string in_quotes(std::string_view text) {
-    return "'" + std::string(text) + "'";
-}
 
 bool is_blank(std::string_view text) {
     return std::ranges::all_of(text, [](char c) { return c == ' ' || c == '\t' || c == '\n'; });

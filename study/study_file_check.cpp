@@ -6,6 +6,8 @@
 #include <string_view>
 #include <system_error>
 
+#include "common/quoted.h"
+
 namespace monoplane::study {
 namespace {
 
@@ -20,12 +22,8 @@ std::uint32_t big_endian(const std::array<unsigned char, kHeaderBytes>& h, std::
     return value;
 }
 
-std::string quoted(const std::filesystem::path& file) {
-    return "'" + file.string() + "'";
-}
-
 Error missing(const std::filesystem::path& file) {
-    return Error{"no study database " + quoted(file) +
+    return Error{"no study database " + in_quotes(file) +
                  " (no such file); check the name, or start a study with `monoplane study run`."};
 }
 
@@ -44,22 +42,22 @@ Result<void> check_header(const std::filesystem::path& file, std::uintmax_t size
     std::array<unsigned char, kHeaderBytes> header{};
     std::ifstream in(file, std::ios::binary);
     if (!in)
-        return Error{"cannot read study database " + quoted(file) +
+        return Error{"cannot read study database " + in_quotes(file) +
                      "; check that you may read it."};
     in.read(reinterpret_cast<char*>(header.data()), header.size());
     const std::string_view start(reinterpret_cast<const char*>(header.data()),
                                  static_cast<std::size_t>(in.gcount()));
     if (!start.starts_with(kMagic))
-        return Error{quoted(file) +
+        return Error{in_quotes(file) +
                      " is not a SQLite database, so not a study database; give the study's "
                      ".sqlite file, or a new file name to start one."};
     if (size < kHeaderBytes)
-        return Error{quoted(file) + " is truncated (" + std::to_string(size) +
+        return Error{in_quotes(file) + " is truncated (" + std::to_string(size) +
                      " bytes, shorter than a SQLite header): a copy that failed? Copy it again "
                      "from the original."};
     const std::uintmax_t promised = promised_size(header);
     if (promised > size)
-        return Error{quoted(file) + " is truncated: " + std::to_string(size) + " bytes of the " +
+        return Error{in_quotes(file) + " is truncated: " + std::to_string(size) + " bytes of the " +
                      std::to_string(promised) +
                      " its header promises. A copy that failed? Copy it again from the original."};
     return Ok{};
@@ -76,14 +74,16 @@ Result<StudyFileState> check_study_file(const std::filesystem::path& file, Study
         return missing(file);
     }
     if (ec)
-        return Error{"cannot look at study database " + quoted(file) + ": " + ec.message() + "."};
+        return Error{"cannot look at study database " + in_quotes(file) + ": " + ec.message() +
+                     "."};
     if (status.type() != std::filesystem::file_type::regular)
-        return Error{quoted(file) + " is not a regular file, so not a study database."};
+        return Error{in_quotes(file) + " is not a regular file, so not a study database."};
     const std::uintmax_t size = std::filesystem::file_size(file, ec);
     if (ec)
-        return Error{"cannot look at study database " + quoted(file) + ": " + ec.message() + "."};
+        return Error{"cannot look at study database " + in_quotes(file) + ": " + ec.message() +
+                     "."};
     if (size == 0)
-        return Error{quoted(file) +
+        return Error{in_quotes(file) +
                      " is 0 bytes: not a study database; a copy that failed? Use the original, "
                      "or give a new file name to start a study."};
     MONOPLANE_TRY(check_header(file, size));

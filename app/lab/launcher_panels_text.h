@@ -9,14 +9,20 @@
 namespace monoplane::lab {
 
 inline const ImVec4 kError(1.0f, 0.45f, 0.4f, 1.0f);
+inline const ImVec4 kWarn(1.0f, 0.85f, 0.3f, 1.0f);
 inline const ImVec4 kGood(0.5f, 0.9f, 0.5f, 1.0f);
 inline const ImVec4 kDim(0.65f, 0.65f, 0.7f, 1.0f);
 
+// Wrapped: a message or a command line can be longer than the window.
+inline void coloured_text(const ImVec4& colour, const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+}
+
 inline void error_text(const std::string& message) {
     if (message.empty()) return;
-    ImGui::PushStyleColor(ImGuiCol_Text, kError);
-    ImGui::TextWrapped("%s", message.c_str());
-    ImGui::PopStyleColor();
+    coloured_text(kError, message);
 }
 
 // A message's line, kept (empty) when there is none: the controls under it stay where they are
@@ -30,9 +36,7 @@ inline void message_line(const std::string& message) {
 
 inline void dim_text(const std::string& text) {
     if (text.empty()) return;
-    ImGui::PushStyleColor(ImGuiCol_Text, kDim);
-    ImGui::TextWrapped("%s", text.c_str());  // a command line can be longer than the window
-    ImGui::PopStyleColor();
+    coloured_text(kDim, text);
 }
 
 }  // namespace monoplane::lab

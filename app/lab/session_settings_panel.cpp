@@ -11,22 +11,9 @@
 
 #include "app/headset/answer_channels.h"
 #include "app/lab/launcher_panels.h"
+#include "app/lab/launcher_panels_text.h"
 
 namespace monoplane::lab {
-namespace {
-
-const ImVec4 kError(1.0f, 0.45f, 0.4f, 1.0f);
-const ImVec4 kWarn(1.0f, 0.85f, 0.3f, 1.0f);
-const ImVec4 kGood(0.5f, 0.9f, 0.5f, 1.0f);
-const ImVec4 kDim(0.65f, 0.65f, 0.7f, 1.0f);
-
-void coloured_text(const ImVec4& colour, const std::string& text) {
-    ImGui::PushStyleColor(ImGuiCol_Text, colour);
-    ImGui::TextWrapped("%s", text.c_str());
-    ImGui::PopStyleColor();
-}
-
-}  // namespace
 
 // "protocol" is the protocol's [responses] (no --keys); the others are --keys' own words.
 void LauncherPanels::draw_keys_choice() {

@@ -2,12 +2,10 @@
 
 #include <algorithm>
 
+#include "common/quoted.h"
+
+
 namespace monoplane {
-namespace {
-std::string in_quotes(std::string_view text) {
-    return "'" + std::string(text) + "'";
-}
-}  // namespace
 
 std::string toml_key_prefix(std::string_view qualified_key) {
     return "key " + in_quotes(qualified_key) + ": ";

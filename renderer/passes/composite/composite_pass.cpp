@@ -6,12 +6,10 @@
 #include "common/programming_error.h"
 #include "renderer/executor/image_layouts.h"
 #include "renderer/passes/forward/forward_pass.h"
+#include "renderer/passes/shared/fullscreen_pass.h"
 
 namespace monoplane::passes {
 namespace {
-const std::uint32_t kFullscreenVert[] = {
-#include "fullscreen.vert.spv.inc"
-};
 const std::uint32_t kCompositeFrag[] = {
 #include "composite.frag.spv.inc"
 };
@@ -26,14 +24,14 @@ const std::uint32_t kCompositeNearFrag[] = {
 };
 
 // The shader's push-constant block, std430.
-struct PushBlock {
+struct CompositePush {
     glm::mat4 eye_to_mono;
     glm::vec4 uv_limits;
     glm::vec4 eye_extent_mode;
     glm::vec4 offset_exposure;
     glm::vec4 velocity_scale;
 };
-static_assert(sizeof(PushBlock) == 128, "must match composite_push.glsl");
+static_assert(sizeof(CompositePush) == 128, "must match composite_push.glsl");
 
 constexpr vk::ColorComponentFlags kAllChannels =
     vk::ColorComponentFlagBits::eR | vk::ColorComponentFlagBits::eG |
@@ -72,10 +70,10 @@ CompositePass::CompositePass(const vk_core::Context& ctx, bool velocity, bool di
     set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
                                                 vk::DescriptorSetLayoutCreateInfo({}, bindings));
     const vk::DescriptorSetLayout set_layout = *set_layout_;
-    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(PushBlock));
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(CompositePush));
     layout_ =
         vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout, push));
-    const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
+    const vk::raii::ShaderModule vert = make_fullscreen_vertex_shader(ctx);
     const vk::raii::ShaderModule frag = velocity ? vk_core::make_shader(ctx, kCompositeVelocityFrag)
                                                  : vk_core::make_shader(ctx, kCompositeFrag);
     vk_core::GraphicsPipelineDesc desc;
@@ -103,7 +101,7 @@ void CompositePass::make_display_pipelines(const vk_core::GraphicsPipelineDesc& 
     eye_set_layout_ = vk::raii::DescriptorSetLayout(ctx_.device(),
                                                     vk::DescriptorSetLayoutCreateInfo({}, binding));
     const std::array set_layouts = {*set_layout_, *eye_set_layout_};
-    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(PushBlock));
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(CompositePush));
     display_layout_ = vk::raii::PipelineLayout(ctx_.device(),
                                                vk::PipelineLayoutCreateInfo({}, set_layouts, push));
     const vk::raii::ShaderModule composite = vk_core::make_shader(ctx_, kCompositeDisplayFrag);
@@ -128,7 +126,7 @@ void CompositePass::make_display_pipelines(const vk_core::GraphicsPipelineDesc& 
 void CompositePass::push(const vk::raii::CommandBuffer& cmd, vk::PipelineLayout layout,
                          vk::Extent2D extent, const CompositeParams& params, float exposure) const {
     const glm::vec2 half_texel = 0.5f / params.mono_allocation;
-    const PushBlock block{
+    const CompositePush block{
         params.eye_to_mono,
         glm::vec4(params.uv_scale, half_texel),
         glm::vec4(static_cast<float>(extent.width), static_cast<float>(extent.height),
@@ -137,7 +135,7 @@ void CompositePass::push(const vk::raii::CommandBuffer& cmd, vk::PipelineLayout 
                   static_cast<float>(params.pixel_offset.y), exposure, 0.0f),
         glm::vec4(params.velocity_scale, 0.0f, 0.0f),
     };
-    cmd.pushConstants<PushBlock>(layout, vk::ShaderStageFlagBits::eFragment, 0, block);
+    cmd.pushConstants<CompositePush>(layout, vk::ShaderStageFlagBits::eFragment, 0, block);
 }
 
 void CompositePass::record(const vk::raii::CommandBuffer& cmd, const CompositeTargets& targets,

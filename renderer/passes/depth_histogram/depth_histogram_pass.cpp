@@ -6,6 +6,7 @@
 
 #include "common/programming_error.h"
 #include "renderer/executor/image_layouts.h"
+#include "renderer/passes/shared/dispatch_groups.h"
 #include "renderer/vk/pipeline.h"
 
 namespace monoplane::passes {
@@ -17,7 +18,7 @@ const std::uint32_t kDepthHistogram[] = {
 
 // The pixels one workgroup counts along x and y: the shader's local size (16) times the block each
 // invocation counts (kBlock, 4).
-constexpr std::uint32_t kGroup = 16 * 4;
+constexpr std::uint32_t kHistogramGroup = 16 * 4;
 constexpr vk::DeviceSize kBytes = MONOPLANE_DEPTH_HISTOGRAM_WORDS * sizeof(std::uint32_t);
 
 struct Push {
@@ -94,8 +95,8 @@ void DepthHistogramPass::record(const vk::raii::CommandBuffer& cmd, StepSync& sy
     cmd.pushConstants<Push>(*layout_, vk::ShaderStageFlagBits::eCompute, 0, push);
     for (const vk_core::DescriptorSet& set : sets_[slot]) {
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *layout_, 0, *set, {});
-        cmd.dispatch((extent_.width + kGroup - 1) / kGroup, (extent_.height + kGroup - 1) / kGroup,
-                     1);
+        cmd.dispatch(groups_covering(extent_.width, kHistogramGroup),
+                     groups_covering(extent_.height, kHistogramGroup), 1);
     }
 }
 

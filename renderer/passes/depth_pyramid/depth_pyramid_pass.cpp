@@ -4,6 +4,7 @@
 #include <bit>
 
 #include "renderer/executor/image_layouts.h"
+#include "renderer/passes/shared/dispatch_groups.h"
 #include "renderer/vk/memory.h"
 #include "renderer/vk/pipeline.h"
 
@@ -21,11 +22,7 @@ const std::uint32_t kReduceDepth[] = {
 };
 
 constexpr vk::Format kFormat = vk::Format::eR32Sfloat;
-constexpr std::uint32_t kGroup = 8;  // the shaders' local size in x and y
-
-std::uint32_t groups(std::uint32_t size) {
-    return (size + kGroup - 1) / kGroup;
-}
+constexpr std::uint32_t kPyramidGroup = 8;  // the shaders' local size in x and y
 
 }  // namespace
 
@@ -213,19 +210,21 @@ void DepthPyramidPass::record(const vk::raii::CommandBuffer& cmd, StepSync& sync
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *merge_pipeline_layout_, 0,
                                *merge_set_, {});
         cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *blocks_);
-        cmd.dispatch(groups(blocks_extent_.width), groups(blocks_extent_.height), 2);
+        cmd.dispatch(groups_covering(blocks_extent_.width, kPyramidGroup),
+                     groups_covering(blocks_extent_.height, kPyramidGroup), 2);
         sync.next(cmd, "merge");
         cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *merge_);
         cmd.pushConstants<std::array<glm::vec4, 6>>(*merge_pipeline_layout_,
                                                     vk::ShaderStageFlagBits::eCompute, 0, rows);
-        cmd.dispatch(groups(extent_.width), groups(extent_.height), 1);
+        cmd.dispatch(groups_covering(extent_.width, kPyramidGroup),
+                     groups_covering(extent_.height, kPyramidGroup), 1);
         cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *reduce_);
         for (std::uint32_t mip = 1; mip < mips_; ++mip) {
             sync.next(cmd, "reduce");  // again, per level
             cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *reduce_pipeline_layout_, 0,
                                    *reduce_sets_[mip - 1], {});
-            cmd.dispatch(groups(std::max(extent_.width >> mip, 1u)),
-                         groups(std::max(extent_.height >> mip, 1u)), 1);
+            cmd.dispatch(groups_covering(std::max(extent_.width >> mip, 1u), kPyramidGroup),
+                         groups_covering(std::max(extent_.height >> mip, 1u), kPyramidGroup), 1);
         }
     });
 }

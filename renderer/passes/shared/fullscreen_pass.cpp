@@ -10,10 +10,14 @@ const std::uint32_t kFullscreenVert[] = {
 };
 }  // namespace
 
+vk::raii::ShaderModule make_fullscreen_vertex_shader(const vk_core::Context& ctx) {
+    return vk_core::make_shader(ctx, kFullscreenVert);
+}
+
 vk::raii::Pipeline make_fullscreen_pipeline(const vk_core::Context& ctx, vk::PipelineLayout layout,
                                             std::span<const std::uint32_t> fragment,
                                             vk::Format format) {
-    const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
+    const vk::raii::ShaderModule vert = make_fullscreen_vertex_shader(ctx);
     const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, fragment);
     vk_core::GraphicsPipelineDesc desc;
     desc.layout = layout;

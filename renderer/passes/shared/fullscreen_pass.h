@@ -18,6 +18,10 @@
 
 namespace monoplane::passes {
 
+// The vertex shader of that one triangle, for a full-screen pass that builds a pipeline of its
+// own (the composite blends, the SSAO apply pass draws into a subset of the target).
+vk::raii::ShaderModule make_fullscreen_vertex_shader(const vk_core::Context& ctx);
+
 // The pipeline drawing `fragment` (SPIR-V words) over one colour attachment of `format`.
 vk::raii::Pipeline make_fullscreen_pipeline(const vk_core::Context& ctx, vk::PipelineLayout layout,
                                             std::span<const std::uint32_t> fragment,

@@ -9,6 +9,8 @@
 #include "common/programming_error.h"
 #include "renderer/executor/image_layouts.h"
 #include "renderer/passes/forward/forward_pass.h"
+#include "renderer/passes/shared/dispatch_groups.h"
+#include "renderer/passes/shared/fullscreen_pass.h"
 
 namespace monoplane::passes {
 namespace {
@@ -19,9 +21,6 @@ std::string step_name(std::string_view view, std::string_view action) {
     return view.empty() ? std::string(action) : std::string(view) + "." + std::string(action);
 }
 
-const std::uint32_t kFullscreenVert[] = {
-#include "fullscreen.vert.spv.inc"
-};
 const std::uint32_t kHbaoEstimate[] = {
 #include "hbao_estimate.comp.spv.inc"
 };
@@ -40,7 +39,7 @@ const std::uint32_t kSsaoApply[] = {
 
 using Type = vk::DescriptorType;
 
-constexpr std::uint32_t kGroup = 8;  // the compute shaders' local size in x and y
+constexpr std::uint32_t kSsaoGroup = 8;  // the compute shaders' local size in x and y
 constexpr vk::Format kOtherPixelFormat = vk::Format::eR32Uint;  // L: p* packed, or "not visible"
 
 // Mirrors ssao_common.glsl's flags.
@@ -49,7 +48,7 @@ constexpr std::int32_t kFlagStereo = 2;
 constexpr std::int32_t kFlagReproject = 4;
 
 // The compute shaders' push-constant block (ssao_common.glsl), std430.
-struct PushBlock {
+struct SsaoPush {
     std::int32_t area_width;
     std::int32_t area_height;
     std::int32_t directions;
@@ -65,17 +64,13 @@ struct PushBlock {
     std::int32_t flags;
     float skip_beyond;
 };
-static_assert(sizeof(PushBlock) == 56, "must match ssao_common.glsl");
+static_assert(sizeof(SsaoPush) == 56, "must match ssao_common.glsl");
 
 struct ApplyPush {
     float area_width;
     float area_height;
 };
 static_assert(sizeof(ApplyPush) == 8, "must match ssao_apply.frag");
-
-std::uint32_t groups(std::uint32_t size) {
-    return (size + kGroup - 1) / kGroup;
-}
 
 // hdr *= AO: the output (AO, AO, AO, 1) blends as dst * src; the target's alpha is kept. The
 // depth test (reversed Z, the triangle at 0) passes only where the eye's depth holds near content.
@@ -186,8 +181,8 @@ struct SsaoPass::Impl {
     vk::raii::Pipeline apply_everywhere{nullptr};
     vk::raii::Pipeline apply_near_only{nullptr};
 
-    PushBlock push(const SsaoParams& params, vk::Extent2D area, std::int32_t flags,
-                   float skip_beyond) const {
+    SsaoPush push(const SsaoParams& params, vk::Extent2D area, std::int32_t flags,
+                  float skip_beyond) const {
         return {static_cast<std::int32_t>(area.width),
                 static_cast<std::int32_t>(area.height),
                 params.directions,
@@ -206,13 +201,14 @@ struct SsaoPass::Impl {
 
     // One dispatch over the area with `self` as set 0 and `other` as set 1.
     void dispatch(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipeline,
-                  const SsaoView& self, const SsaoView& other, const PushBlock& block,
+                  const SsaoView& self, const SsaoView& other, const SsaoPush& block,
                   vk::Extent2D area) const {
         cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline);
         const std::array sets = {*self.state_->compute_set, *other.state_->compute_set};
         cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *compute_layout, 0, sets, {});
-        cmd.pushConstants<PushBlock>(*compute_layout, vk::ShaderStageFlagBits::eCompute, 0, block);
-        cmd.dispatch(groups(area.width), groups(area.height), 1);
+        cmd.pushConstants<SsaoPush>(*compute_layout, vk::ShaderStageFlagBits::eCompute, 0, block);
+        cmd.dispatch(groups_covering(area.width, kSsaoGroup),
+                     groups_covering(area.height, kSsaoGroup), 1);
     }
 };
 
@@ -240,7 +236,7 @@ SsaoPass::SsaoPass(const vk_core::Context& ctx, const SsaoParams& params)
         ctx.device(), vk::DescriptorSetLayoutCreateInfo({}, apply_binding));
 
     const std::array compute_sets = {*impl.view_layout, *impl.view_layout};
-    const vk::PushConstantRange compute_push(compute, 0, sizeof(PushBlock));
+    const vk::PushConstantRange compute_push(compute, 0, sizeof(SsaoPush));
     impl.compute_layout = vk::raii::PipelineLayout(
         ctx.device(), vk::PipelineLayoutCreateInfo({}, compute_sets, compute_push));
     const vk::DescriptorSetLayout apply_set = *impl.apply_layout;
@@ -258,7 +254,7 @@ SsaoPass::SsaoPass(const vk_core::Context& ctx, const SsaoParams& params)
     impl.stereo_estimate = make(kStereoEstimate);
     impl.bilateral_filter = make(kBilateralFilter);
 
-    const vk::raii::ShaderModule vert = vk_core::make_shader(ctx, kFullscreenVert);
+    const vk::raii::ShaderModule vert = make_fullscreen_vertex_shader(ctx);
     const vk::raii::ShaderModule frag = vk_core::make_shader(ctx, kSsaoApply);
     impl.apply_everywhere =
         make_apply_pipeline(ctx, *impl.apply_pipeline_layout, *vert, *frag, false);
@@ -326,7 +322,7 @@ void SsaoPass::record_view(const vk::raii::CommandBuffer& cmd, StepSync& sync, S
                            vk::Extent2D area, float skip_beyond, std::string_view step_view) const {
     MONOPLANE_EXPECTS(area.width <= view.extent().width && area.height <= view.extent().height);
     const Impl& impl = *impl_;
-    const PushBlock plain = impl.push(params_, area, 0, skip_beyond);
+    const SsaoPush plain = impl.push(params_, area, 0, skip_beyond);
     sync.next(cmd, step_name(step_view, "estimate"));
     impl.dispatch(cmd, impl.hbao_estimate, view, view, plain, area);
     sync.next(cmd, step_name(step_view, "filter-x"));
@@ -354,7 +350,7 @@ void SsaoPass::record_pair(const vk::raii::CommandBuffer& cmd, StepSync& sync, S
     MONOPLANE_EXPECTS(area.width <= left.extent().width && area.height <= left.extent().height);
     const Impl& impl = *impl_;
     // Sect. 3.1: the visibility maps L^l and L^r by reverse reprojection with a back-check.
-    const PushBlock plain = impl.push(params_, area, 0, skip_beyond);
+    const SsaoPush plain = impl.push(params_, area, 0, skip_beyond);
     sync.next(cmd, "visibility-left");
     impl.dispatch(cmd, impl.stereo_visibility, left, right, plain, area);
     sync.next(cmd, "visibility-right");
@@ -367,12 +363,12 @@ void SsaoPass::record_pair(const vk::raii::CommandBuffer& cmd, StepSync& sync, S
     impl.dispatch(cmd, impl.stereo_estimate, right, left,
                   impl.push(params_, area, kFlagReproject, skip_beyond), area);
     // Sect. 3.3: the stereo filter, horizontally in both views, then vertically on that.
-    const PushBlock horizontal = impl.push(params_, area, kFlagStereo, skip_beyond);
+    const SsaoPush horizontal = impl.push(params_, area, kFlagStereo, skip_beyond);
     sync.next(cmd, "filter-x-left");
     impl.dispatch(cmd, impl.bilateral_filter, left, right, horizontal, area);
     sync.next(cmd, "filter-x-right");
     impl.dispatch(cmd, impl.bilateral_filter, right, left, horizontal, area);
-    const PushBlock vertical = impl.push(params_, area, kFlagStereo | kFlagVertical, skip_beyond);
+    const SsaoPush vertical = impl.push(params_, area, kFlagStereo | kFlagVertical, skip_beyond);
     sync.next(cmd, "filter-y-left");
     impl.dispatch(cmd, impl.bilateral_filter, left, right, vertical, area);
     sync.next(cmd, "filter-y-right");

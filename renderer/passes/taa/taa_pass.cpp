@@ -14,11 +14,11 @@ const std::uint32_t kTaaResolveFrag[] = {
 #include "taa_resolve.frag.spv.inc"
 };
 
-struct PushBlock {
+struct TaaPush {
     glm::vec4 params;
     glm::vec4 extent;
 };
-static_assert(sizeof(PushBlock) == 32, "must match taa_resolve.frag");
+static_assert(sizeof(TaaPush) == 32, "must match taa_resolve.frag");
 
 }  // namespace
 
@@ -34,7 +34,7 @@ TaaPass::TaaPass(const vk_core::Context& ctx)
     set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
                                                 vk::DescriptorSetLayoutCreateInfo({}, bindings));
     const vk::DescriptorSetLayout set_layout = *set_layout_;
-    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(PushBlock));
+    const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(TaaPush));
     layout_ =
         vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout, push));
     pipeline_ = make_fullscreen_pipeline(ctx, *layout_, kTaaResolveFrag, kOutputFormat);
@@ -44,7 +44,7 @@ void TaaPass::record(const vk::raii::CommandBuffer& cmd, const vk_core::Image& o
                      vk::DescriptorSet inputs, const TaaParams& params, bool reset) const {
     const vk::Extent2D extent = output.desc().extent;
     const glm::vec2 size(static_cast<float>(extent.width), static_cast<float>(extent.height));
-    const PushBlock push{
+    const TaaPush push{
         glm::vec4(params.history_weight, params.velocity_box_widening, reset ? 1.0f : 0.0f, 0.0f),
         glm::vec4(size, 1.0f / size),
     };
