@@ -13,9 +13,9 @@
 #     (about 9 s) by monoplane_test_pch: a further third off each file
 #     (tests/e2e/study_day_cli_test.cpp at -O0: 14.8 s -> 9.7 s).
 # Measured as user + sys CPU time of single compiles (others build beside them, so wall time
-# says little); a unity build (CMAKE_UNITY_BUILD) does not compile here: the libraries' files
-# reuse names in their anonymous namespaces (rig.cpp and angular_error.cpp both define
-# kInfinity), and ccache gains nothing on a fresh machine.
+# says little). ccache gains nothing on a fresh machine. The libraries and the executable are
+# unity builds (monoplane_unity_build_libraries below): names in a file's anonymous namespace
+# must therefore differ from those of the other files of its target.
 include_guard(GLOBAL)
 if(NOT COMMAND _monoplane_targets_below)
   include(${CMAKE_CURRENT_LIST_DIR}/SharedVulkanPch.cmake)
@@ -68,4 +68,71 @@ function(monoplane_speed_up_tests)
   endforeach()
 endfunction()
 
+# The project's own libraries and executables (not the tests) compile as unity builds: batches of
+# up to `MONOPLANE_UNITY_BATCH` source files of one target compiled as one translation unit, so
+# the headers each file of a folder shares (CLI11 in app/commands, nlohmann/json in scenes/gltf,
+# SQLite and toml++ in study) are parsed and their inline functions generated once per batch
+# rather than once per file. Files that define a header library's implementation
+# (`#define ..._IMPLEMENTATION`) stay on their own: in a batch the header's include guard could
+# already be set by a file before them. MONOPLANE_UNITY_BUILD=OFF compiles file by file, which
+# rebuilds less after a one-file change.
+option(MONOPLANE_UNITY_BUILD "Compile the libraries and the executable as unity builds" ON)
+set(MONOPLANE_UNITY_BATCH 8 CACHE STRING "Source files per unity translation unit")
+
+function(_monoplane_is_unity_candidate target out)
+  set(${out} FALSE PARENT_SCOPE)
+  get_target_property(type ${target} TYPE)
+  get_target_property(imported ${target} IMPORTED)
+  if(imported OR NOT type MATCHES "^(STATIC_LIBRARY|SHARED_LIBRARY|MODULE_LIBRARY|OBJECT_LIBRARY|EXECUTABLE)$")
+    return()
+  endif()
+  get_target_property(sources ${target} SOURCES)
+  list(FILTER sources INCLUDE REGEX "\\.cpp$")
+  list(LENGTH sources count)
+  if(count GREATER 1)
+    set(${out} TRUE PARENT_SCOPE)
+  endif()
+endfunction()
+
+function(monoplane_unity_build_libraries)
+  if(NOT MONOPLANE_UNITY_BUILD)
+    return()
+  endif()
+  get_property(top_folders DIRECTORY ${PROJECT_SOURCE_DIR} PROPERTY SUBDIRECTORIES)
+  foreach(folder IN LISTS top_folders)
+    if(folder STREQUAL "${PROJECT_SOURCE_DIR}/tests")
+      continue()
+    endif()
+    _monoplane_targets_below(${folder} targets)
+    foreach(target IN LISTS targets)
+      _monoplane_is_unity_candidate(${target} candidate)
+      if(NOT candidate)
+        continue()
+      endif()
+      set_target_properties(${target} PROPERTIES UNITY_BUILD ON
+                                                 UNITY_BUILD_BATCH_SIZE ${MONOPLANE_UNITY_BATCH})
+      get_target_property(sources ${target} SOURCES)
+      get_target_property(source_dir ${target} SOURCE_DIR)
+      foreach(source IN LISTS sources)
+        if(NOT source MATCHES "\\.cpp$")
+          continue()
+        endif()
+        if(IS_ABSOLUTE ${source})
+          set(path ${source})
+        else()
+          set(path ${source_dir}/${source})
+        endif()
+        if(EXISTS ${path})
+          file(STRINGS ${path} implementation REGEX "^#define [A-Z_]+_IMPLEMENTATION")
+          if(implementation)
+            set_source_files_properties(${path} TARGET_DIRECTORY ${target}
+                                        PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+          endif()
+        endif()
+      endforeach()
+    endforeach()
+  endforeach()
+endfunction()
+
 monoplane_speed_up_tests()
+monoplane_unity_build_libraries()
