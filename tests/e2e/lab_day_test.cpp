@@ -117,10 +117,12 @@ std::array<double, 4> rect_of(const json& control) {
             control["height"].get<double>()};
 }
 
-// One scene at one distance: a session of a trial or two, so a test can run several.
+// One scene at one distance and no practice: a session of one trial, so a test can run several.
+// What these tests check (the session's arguments, its database row, the Summary) needs no more,
+// and the default two practice trials would triple each session's frames.
 const std::string kTiny =
     "name = \"tiny\"\nscenes = [\"beams\"]\nmono_planes = [3]\n"
-    "alternatives = [\"stereo\", \"hybrid\"]\n";
+    "alternatives = [\"stereo\", \"hybrid\"]\npractice_trials = 0\n";
 
 std::string with_variable(const std::string& protocol, const std::string& declaration) {
     return protocol + "\n[[variables]]\n" + declaration;
