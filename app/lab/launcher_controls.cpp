@@ -31,7 +31,11 @@ void draw_choice(ControlRing& controls, const std::string& name, const std::stri
                  const std::vector<std::string>& choices, std::string& text) {
     const ImGuiID id = ImGui::GetID(label.c_str());
     const ImVec2 at = ImGui::GetCursorScreenPos();
-    controls.mark_at(name, id, at.x, at.y, ImGui::CalcItemWidth(), ImGui::GetFrameHeight());
+    const ImGuiID popup = ImHashStr("##ComboPopup", 0, id);
+    // Open: the list took the keyboard (its chosen entry has the focus), so keys sent after the
+    // state says so land in it.
+    controls.mark_at(name, id, at.x, at.y, ImGui::CalcItemWidth(), ImGui::GetFrameHeight(),
+                     ImGui::IsPopupOpen(popup, ImGuiPopupFlags_None));
     if (ImGui::BeginCombo(label.c_str(), text.empty() ? "(choose)" : text.c_str())) {
         for (const std::string& choice : choices) {
             const bool chosen = choice == text;
@@ -44,7 +48,7 @@ void draw_choice(ControlRing& controls, const std::string& name, const std::stri
         }
         ImGui::EndCombo();
     } else if (ImGui::IsItemFocused() && enter_pressed()) {
-        ImGui::OpenPopupEx(ImHashStr("##ComboPopup", 0, id));
+        ImGui::OpenPopupEx(popup);
     }
 }
 
@@ -81,9 +85,10 @@ void ControlRing::mark(const std::string& name, bool text, bool focusable) {
 }
 
 void ControlRing::mark_at(const std::string& name, unsigned int id, float x, float y, float width,
-                          float height) {
+                          float height, bool open) {
     Entry e;
     e.rect = {name, x, y, width, height};
+    e.rect.open = open;
     e.rect.visible = ImGui::IsRectVisible(ImVec2(x, y), ImVec2(x + width, y + height));
     e.id = id;
     record(std::move(e));

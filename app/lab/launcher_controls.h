@@ -29,7 +29,7 @@ class ControlRing {
     // A control drawn at `x`, `y` (screen), `width` x `height`, with Dear ImGui's `id`: for one
     // that is not the last item when it is done (a combo box whose list is open).
     void mark_at(const std::string& name, unsigned int id, float x, float y, float width,
-                 float height);
+                 float height, bool open = false);
     // The controls of the frame drawn last, in drawing order.
     std::vector<ControlRect> rects() const;
     void end_frame();

@@ -137,6 +137,7 @@ struct ControlRect {
     bool enabled = true;
     bool visible = true;   // not scrolled out of its list
     bool focused = false;  // has the keyboard
+    bool open = false;     // a combo box whose list is open (keys go to the list)
 };
 
 // A finished (or stopped) session, for the summary step.

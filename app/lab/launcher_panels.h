@@ -84,7 +84,9 @@ class LauncherPanels {
     // Takes a finished measurement's outcome into the model. Each frame.
     void poll_measurement();
     // Whether anyone can answer, from what the check saw of the controller (`profile` bound
-    // after `frames` frames), into the headset report's answer_warning.
+    // after `frames` frames): the warning, or empty.
+    std::string answers_warning(const std::string& profile, std::int64_t frames) const;
+    // The same, into the headset report's answer_warning.
     void judge_answers(const std::string& profile, std::int64_t frames);
     // Refuses (with the footer's message) what must not run beside the measurement.
     bool measuring_refuses(const char* what);

@@ -40,6 +40,7 @@ void LauncherPanels::probe_if_needed() {
         report.check_message = before.check_message;
         report.check_frames = before.check_frames;
     }
+    report.answer_warning = answers_warning(report.interaction_profile, report.check_frames);
     model_.set_headset_report(std::move(report));
 }
 

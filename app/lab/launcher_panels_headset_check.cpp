@@ -35,6 +35,9 @@ void LauncherPanels::run_check(const std::function<CheckAnswer(const HeadsetChec
         report.check_message = checked.error().message;
         report.check_frames = 0;
     }
+    // Judged as the report is stored, not at the next frame's drawing: no frame (nor the
+    // state the window reports) shows a check's end without its verdict on the answers.
+    report.answer_warning = answers_warning(report.interaction_profile, report.check_frames);
     model_.set_headset_report(std::move(report));
 }
 

@@ -187,6 +187,7 @@ void write_controls(JsonWriter& w, const LauncherModel& m) {
             .value("enabled", c.enabled)
             .value("visible", c.visible)
             .value("focused", c.focused)
+            .value("open", c.open)
             .end_object();
     }
     w.end_object();

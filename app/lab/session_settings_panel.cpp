@@ -147,17 +147,19 @@ void LauncherPanels::poll_measurement() {
     model_.set_measurement(std::move(m));
 }
 
+std::string LauncherPanels::answers_warning(const std::string& profile, std::int64_t frames) const {
+    if (model_.protocol() == nullptr || model_.headset() == "none") return {};
+    headset::AnswerChannels channels;
+    channels.interaction_profile = profile;
+    channels.focused_syncs = static_cast<int>(std::min<std::int64_t>(frames, INT_MAX));
+    channels.keys = model_.answer_keys_enabled();
+    channels.observer = model_.observer_answers();
+    return headset::cannot_answer_message(channels).value_or("");
+}
+
 void LauncherPanels::judge_answers(const std::string& profile, std::int64_t frames) {
     HeadsetReport report = model_.headset_report();
-    std::string warning;
-    if (model_.protocol() != nullptr && model_.headset() != "none") {
-        headset::AnswerChannels channels;
-        channels.interaction_profile = profile;
-        channels.focused_syncs = static_cast<int>(std::min<std::int64_t>(frames, INT_MAX));
-        channels.keys = model_.answer_keys_enabled();
-        channels.observer = model_.observer_answers();
-        warning = headset::cannot_answer_message(channels).value_or("");
-    }
+    std::string warning = answers_warning(profile, frames);
     if (warning == report.answer_warning) return;
     report.answer_warning = warning;
     model_.set_headset_report(std::move(report));

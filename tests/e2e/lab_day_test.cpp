@@ -485,6 +485,8 @@ TEST_F(LabDayTest, TabReachesEveryControlAndEnterPicksInACombo) {
     ASSERT_TRUE(wait_for([&] { return lab.control("var:vision")["focused"] == true; }, 10))
         << lab.state()["controls"].dump(1);
     xdo("key Return");  // opens the list
+    ASSERT_TRUE(wait_for([&] { return lab.control("var:vision")["open"] == true; }, 10))
+        << lab.state()["controls"].dump(1);
     xdo("key Down");
     xdo("key Return");  // picks
     ASSERT_TRUE(lab.wait_state([](const json& j) { return j["variables"][0]["value"] != ""; }))
@@ -711,7 +713,7 @@ TEST_F(LabDayTest, ThePerformancePresetIsMeasuredAndChoosesTheSessionsSettings) 
     ASSERT_TRUE(lab.wait_state([](const json& j) { return j["headset"]["runtime_available"]; }))
         << lab.state().dump(1) << lab.log();
     EXPECT_EQ(lab.state()["settings"]["preset"], "custom") << lab.state()["settings"].dump(1);
-    ASSERT_TRUE(lab.click("preset"));
+    ASSERT_TRUE(lab.open_choice("preset")) << lab.state()["controls"].dump(1);
     xdo("key Up");
     xdo("key Return");
     ASSERT_TRUE(lab.wait_state([](const json& j) { return j["settings"]["preset"] == "minimal"; }))
@@ -804,7 +806,7 @@ TEST_F(LabDayTest, TheDayAsTheDocsShowIt) {
     ASSERT_TRUE(lab.wait_state([](const json& j) {
         return j["step"] == "headset" && j["headset"]["runtime_available"] == true;
     })) << lab.state().dump(1);
-    ASSERT_TRUE(lab.click("preset"));
+    ASSERT_TRUE(lab.open_choice("preset")) << lab.state()["controls"].dump(1);
     xdo("key Up");
     xdo("key Return");
     ASSERT_TRUE(lab.wait_state([](const json& j) { return j["settings"]["preset"] == "minimal"; }))
@@ -928,7 +930,7 @@ TEST_F(LabDayTest, NoControllerBoundIsSaidAtOnce) {
     EXPECT_EQ(h["keys_answer"], true);
     // Keys "none" in the window (the third choice: Down, Down, Enter) leaves nobody again, and
     // the session's command says --keys none.
-    ASSERT_TRUE(lab.click("keys"));
+    ASSERT_TRUE(lab.open_choice("keys")) << lab.state()["controls"].dump(1);
     xdo("key Down");
     xdo("key Down");
     xdo("key Return");

@@ -165,6 +165,13 @@ class Lab {
         xdo("click 1");
         return true;
     }
+    // Clicks the combo box `name` and waits until its list is open: keys sent before then would
+    // reach the window behind it (frames are slow on a loaded machine).
+    bool open_choice(const std::string& name, int seconds = 30) {
+        if (!click(name, seconds)) return false;
+        return wait_state([&](const json& j) { return control_in(j, name)["open"] == true; },
+                          seconds);
+    }
     // Waits until the control `name` has the keyboard. A step's field takes it a frame or more
     // after the step shows (slow frames on a loaded machine): keys typed before then are lost.
     bool wait_focused(const std::string& name, int seconds = 30) {
