@@ -159,7 +159,7 @@ std::string LauncherPanels::answers_warning(const std::string& profile, std::int
 
 void LauncherPanels::judge_answers(const std::string& profile, std::int64_t frames) {
     HeadsetReport report = model_.headset_report();
-    std::string warning = answers_warning(profile, frames);
+    const std::string warning = answers_warning(profile, frames);
     if (warning == report.answer_warning) return;
     report.answer_warning = warning;
     model_.set_headset_report(std::move(report));
