@@ -89,9 +89,6 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan
                 ssao_->record_apply(cmd, sync, *mono_->ssao, mono_->hdr, mono_->area);
             });
             break;
-        case plan::PassKind::kTaa:
-            record_taa(cmd, *eyes_[plan::eye_index(pass.view)]);
-            break;
         case plan::PassKind::kTonemap:
             record_tonemap(cmd, pass, frame);
             break;
@@ -101,6 +98,8 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan
         case plan::PassKind::kReadback:
             record_readback(cmd, frame);
             break;
+        // The kinds written as units (renderer/passes/pass_unit_list.h).
+        case plan::PassKind::kTaa:
         case plan::PassKind::kUnit:
             record_unit(cmd, pass, frame, sync);
             break;
@@ -243,13 +242,6 @@ void ModeRenderer::record_readback(const vk::raii::CommandBuffer& cmd, const Fra
         copy_to_buffer(cmd, mono_->display, mono_->area, mono_->readback);
     }
     culling_.record_readback(cmd, options_.read_back_draw_lists, frame.slot);
-}
-
-void ModeRenderer::record_taa(const vk::raii::CommandBuffer& cmd, View& view) {
-    // A restarted history is bound for the shader's interface, not read (the render graph still
-    // gives it a layout).
-    const vk_core::Image& output = *view.history[history_parity_];
-    taa_.record(cmd, output, *view.taa_sets[history_parity_], options_.taa, !history_valid_);
 }
 
 }  // namespace monoplane::modes

@@ -110,7 +110,7 @@ bool composite_may_write_display(const vk_core::Context& ctx, plan::Mode mode,
         plan_options_of(mode, renderer, blended_chunks, renderer.auto_mono_plane.has_value());
     plan::PlanDevice device;
     device.independent_blend = ctx.capabilities().independent_blend;
-    const plan::FramePlan plan = plan::plan_frame(options, plan::PlanFrame{}, device);
+    const plan::FramePlan plan = passes::plan_frame(options, plan::PlanFrame{}, device);
     const plan::PlannedPass* composite = plan.find(plan::PassKind::kComposite, plan::ViewId::kLeft);
     return composite != nullptr && composite->writes_display;
 }
@@ -141,7 +141,6 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
                  composite_may_write_display(ctx, mode, options, blended_chunks_)),
       culling_(ctx, scene_, resources_->chunk_table(), resources_->level_table()),
       pyramid_(ctx),
-      taa_(ctx),
       units_(passes::pass_unit_declarations()),
       profiler_(ctx),
       ring_(ctx) {
@@ -199,10 +198,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
 }
 
 void ModeRenderer::make_taa_sets(View& view) const {
+    // Parity p's resolve writes history[p], which the tone mapping then reads.
     for (int parity = 0; parity < 2; ++parity) {
-        // Parity p writes history[p] and reads history[1 - p].
-        view.taa_sets[parity] = taa_.make_inputs(view.hdr, *view.velocity, view.linear_depth,
-                                                 *view.history[1 - parity]);
         view.tonemap_taa_sets[parity] = tonemap_.make_input(*view.history[parity]);
     }
 }

@@ -27,8 +27,8 @@
 #include "renderer/passes/forward/forward_pass.h"
 #include "renderer/passes/shadow/shadow_pass.h"
 #include "renderer/passes/shared/pass_unit.h"
+#include "renderer/passes/shared/unit_settings.h"
 #include "renderer/passes/ssao/ssao_pass.h"
-#include "renderer/passes/taa/taa_pass.h"
 #include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/plan/lod_selection.h"
@@ -224,7 +224,7 @@ class ModeRenderer {
                      const glm::dvec3& position, const FrameInputs& inputs,
                      const glm::dvec3& mono_position, double blend_band,
                      const glm::dmat4& light_view_proj, double hidden_depth_threshold = 0.0);
-    // A view's TAA and tone-mapping sets over its history images (one per parity).
+    // A view's tone-mapping sets over its TAA history images (one per parity).
     void make_taa_sets(View& view) const;
 
     // A frame: its state, the plan for it, and one recorder per kind of pass.
@@ -261,7 +261,6 @@ class ModeRenderer {
     void record_composite(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                           const FrameState& frame);
     void record_transparency(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass);
-    void record_taa(const vk::raii::CommandBuffer& cmd, View& view);
     void record_tonemap(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                         const FrameState& frame);
     void record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame);
@@ -293,7 +292,6 @@ class ModeRenderer {
     passes::CompositePass composite_;
     passes::ChunkCullingPass culling_;
     passes::DepthPyramidPass pyramid_;
-    passes::TaaPass taa_;
     std::unique_ptr<passes::SsaoPass> ssao_;
     // The pass kinds written as units (renderer/passes/pass_units.h): their declarations, which
     // every plan places, and the recorders of those a frame has run, by name.

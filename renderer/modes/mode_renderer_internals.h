@@ -179,7 +179,8 @@ struct ViewOutputs {
                          vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {
         if (!features.history) return;
         for (auto& image : history) {
-            image.emplace(ctx, vk_core::ImageDesc{size, passes::TaaPass::kOutputFormat,
+            // The TAA unit's resolve: HDR colour, in the HDR images' format.
+            image.emplace(ctx, vk_core::ImageDesc{size, passes::ForwardPass::kHdrFormat,
                                                   vk::ImageUsageFlagBits::eColorAttachment |
                                                       vk::ImageUsageFlagBits::eSampled});
         }
@@ -201,8 +202,7 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     vk_core::DescriptorSet composite_depth_set;
     RgbaImage image;
     std::vector<float> linear;
-    // TAA: the sets reading and writing the history images.
-    std::array<vk_core::DescriptorSet, 2> taa_sets;
+    // TAA: the tone mapping's sets reading the history images (the TAA unit makes its own).
     std::array<vk_core::DescriptorSet, 2> tonemap_taa_sets;
     glm::dmat4 previous_unjittered{1.0};  // last frame's world -> clip without jitter
     bool has_previous = false;

@@ -76,19 +76,15 @@ std::unique_ptr<passes::UnitRecording> make_unit_recording(
 
 void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                                const FrameState& frame, passes::StepSync& sync) {
+    MONOPLANE_EXPECTS(!pass.unit.empty());
     auto& recorder = unit_recorders_[pass.unit];
-    if (!recorder) {
-        const auto& units = passes::pass_units();
-        const auto unit = std::find_if(units.begin(), units.end(), [&](const passes::PassUnit& u) {
-            return u.declare().name == pass.unit;
-        });
-        MONOPLANE_EXPECTS(unit != units.end());
-        recorder = unit->make(ctx_);
-    }
+    if (!recorder) recorder = passes::make_unit_recorder(pass.unit, ctx_);
     passes::UnitFrameValues values;
     values.use_mono = frame.use_mono;
     values.mono_plane = frame.inputs->mono_plane;
     values.slot = frame.slot;
+    values.history_restarted = !history_valid_;
+    values.settings.taa = options_.taa;
     const std::unique_ptr<passes::UnitRecording> recording = make_unit_recording(
         cmd, last_plan_, pass, sync, values,
         [this](const plan::ResourceKey& key) -> const vk_core::Image& { return view_image(key); },

@@ -1,38 +1,30 @@
 #include "renderer/passes/pass_units.h"
 
-// Each unit defines these two in its own source (renderer/passes/<unit>/<unit>_unit.cpp).
-#define MONOPLANE_PASS_UNIT(unit)                                             \
+#include "common/programming_error.h"
+#include "renderer/passes/pass_unit_list.h"
+
+// Each unit defines this in its own source, compiled here with MONOPLANE_UNIT_RECORDER.
+#define MONOPLANE_PASS_UNIT_RECORDER(unit)                                    \
     namespace unit {                                                          \
-    plan::PassUnitDeclaration declaration();                                  \
     std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx); \
     }
 
 namespace monoplane::passes {
 
-// The registration: one line per unit.
-#define MONOPLANE_PASS_UNITS(X) X(depth_view)
+MONOPLANE_PASS_UNITS(MONOPLANE_PASS_UNIT_RECORDER)
 
-MONOPLANE_PASS_UNITS(MONOPLANE_PASS_UNIT)
-
-const std::vector<PassUnit>& pass_units() {
-#define MONOPLANE_PASS_UNIT_ENTRY(unit) PassUnit{&unit::declaration, &unit::make_recorder},
-    static const std::vector<PassUnit> units = {MONOPLANE_PASS_UNITS(MONOPLANE_PASS_UNIT_ENTRY)};
-#undef MONOPLANE_PASS_UNIT_ENTRY
-    return units;
-}
-
-std::vector<plan::PassUnitDeclaration> pass_unit_declarations() {
-    std::vector<plan::PassUnitDeclaration> declarations;
-    for (const PassUnit& unit : pass_units()) declarations.push_back(unit.declare());
-    return declarations;
-}
-
-std::vector<std::string> unit_debug_views() {
-    std::vector<std::string> views;
-    for (const plan::PassUnitDeclaration& unit : pass_unit_declarations()) {
-        if (unit.debug_view) views.push_back(*unit.debug_view);
+std::unique_ptr<UnitRecorder> make_unit_recorder(const std::string& unit,
+                                                 const vk_core::Context& ctx) {
+    // The declarations and the recorders expand the same list: the n-th of each are one unit's.
+    using Make = std::unique_ptr<UnitRecorder> (*)(const vk_core::Context&);
+#define MONOPLANE_PASS_UNIT_MAKE(unit) &unit::make_recorder,
+    static const Make makers[] = {MONOPLANE_PASS_UNITS(MONOPLANE_PASS_UNIT_MAKE)};
+#undef MONOPLANE_PASS_UNIT_MAKE
+    const auto& declarations = pass_unit_declarations();
+    for (std::size_t u = 0; u < declarations.size(); ++u) {
+        if (declarations[u].name == unit) return makers[u](ctx);
     }
-    return views;
+    programming_error("no pass unit named '" + unit + "'");
 }
 
 }  // namespace monoplane::passes

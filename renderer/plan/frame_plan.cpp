@@ -257,11 +257,9 @@ class PlanBuilder {
             // In hybrid the far region already carries C's AO: the eye's depth tells which.
             pass.steps = ssao_steps(r_, options_.ssao_stereo, s_.use_mono);
         }
+        add_units(UnitSlot::kBeforeToneMapping);
         for (ViewId eye : kEyeViews) {
-            if (s_.taa) {
-                PlannedPass& pass = add(PassKind::kTaa, eye);
-                pass.steps = taa_steps(r_, eye);
-            }
+            // Under TAA the eye's resolve (its history image, written by the unit) is its colour.
             PlannedPass& pass = add(PassKind::kTonemap, eye);
             pass.steps = tonemap_steps(r_, eye, s_.taa ? ImageRole::kHistory : ImageRole::kHdr);
         }
@@ -493,7 +491,7 @@ const PlannedPass* FramePlan::find(PassKind kind, ViewId view) const {
 
 const PlannedPass* FramePlan::find_unit(const std::string& unit, ViewId view) const {
     for (const PlannedPass& pass : passes) {
-        if (pass.kind == PassKind::kUnit && pass.unit == unit && pass.view == view) return &pass;
+        if (pass.unit == unit && pass.view == view) return &pass;
     }
     return nullptr;
 }
@@ -547,18 +545,19 @@ std::vector<graph::GraphPass> FramePlan::graph_passes() const {
     return graph;
 }
 
-FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device) {
-    return plan_frame(options, frame, device, {});
-}
-
 FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device,
                      const std::vector<PassUnitDeclaration>& units) {
     // The renderer resolves kAuto to this frame's variant first.
     MONOPLANE_EXPECTS(frame.mono_culling != MonoCulling::kAuto);
     for (const PassUnitDeclaration& unit : units) {
         MONOPLANE_EXPECTS(unit.place != nullptr);
-        // A unit's name stands for a kind's in its passes' names: it must not read back as one.
-        if (parse_pass_name(unit.name)) {
+        // A built-in kind's unit goes by the kind's name; any other unit's name stands for a
+        // kind's in its passes' names, and must not read back as one.
+        if (unit.kind != PassKind::kUnit && unit.name != pass_kind_name(unit.kind)) {
+            programming_error("pass unit '" + unit.name + "' is kind '" +
+                              pass_kind_name(unit.kind) + "' and must have its name");
+        }
+        if (unit.kind == PassKind::kUnit && parse_pass_name(unit.name)) {
             programming_error("pass unit '" + unit.name + "' has the name of a built-in kind");
         }
     }
@@ -568,7 +567,7 @@ FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const P
 
 PlannedPass& UnitPlacement::add_pass(ViewId view) {
     PlannedPass pass;
-    pass.kind = PassKind::kUnit;
+    pass.kind = unit_.kind;
     pass.unit = unit_.name;
     pass.name = view == ViewId::kNone ? unit_.name : view_name(view) + "." + unit_.name;
     pass.view = view;

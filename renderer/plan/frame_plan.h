@@ -6,17 +6,17 @@
 //
 // The plans (docs/architecture.md prints them as plan_frame produces them):
 //   stereo:          culling, shadow*, per eye {forward: chunks, sky}, [ssao],
-//                    per eye {[taa], tonemap}, read-back
+//                    [per eye {taa}], per eye {tonemap}, read-back
 //                    (stereo-multiview, stereo-gs, stereo-instanced: one eyes.forward for
 //                    both eyes)
 //   hybrid:          culling, shadow*, per eye {forward n..m: chunks, sky only if C has nothing},
 //                    [depth pyramid, [occlusion culling]], C {forward m-eps..f + sky}, [C's ssao],
 //                    per eye {composite C through M_{E->C}}, [per eye {blended chunks nearer
 //                    than m, tested against the composite's depth}], [ssao of the near content],
-//                    per eye {[taa], tonemap}, [C's tonemap], [depth histogram], read-back;
-//                    without TAA and SSAO each composite also tone maps into the eye's display
-//                    image (one full-screen pass per eye), and the eye's tonemap runs only when
-//                    C had nothing (the composite is then skipped), or not at all
+//                    [per eye {taa}], per eye {tonemap}, [C's tonemap], [depth histogram],
+//                    read-back; without TAA and SSAO each composite also tone maps into the eye's
+//                    display image (one full-screen pass per eye), and the eye's tonemap runs only
+//                    when C had nothing (the composite is then skipped), or not at all
 //   hybrid-farfield: as hybrid with C at the eyes' centre, no pyramid, an offset copy
 // (* only when the light's region changed). A scene with blended chunks (alphaMode BLEND) draws
 // them last in each forward pass; in hybrid, C draws those wholly beyond m and the eyes the
@@ -54,7 +54,8 @@ enum class PassKind {
     kTonemap,         // an eye's (or C's) tone mapping into its display image
     kDepthHistogram,  // both eyes' final depth counted into bins (--mono-plane auto)
     kReadback,        // images, depths, AO and draw lists to the host; not part of GPU time
-    // A pass kind written as one unit (renderer/plan/pass_unit.h): PlannedPass::unit names it.
+    // A pass kind added as one unit alone (renderer/plan/pass_unit.h): PlannedPass::unit names
+    // it. The built-in kinds above that are written as units (kTaa) keep their kind.
     kUnit,
 };
 std::string pass_kind_name(PassKind kind);  // "culling", "forward", "ssao", ...
@@ -109,7 +110,8 @@ struct PlannedDraw {
 
 struct PlannedPass {
     PassKind kind = PassKind::kCulling;
-    // kUnit: the unit's name (PassUnitDeclaration::name), which stands for the kind's.
+    // A pass of a unit: the unit's name (PassUnitDeclaration::name; for kUnit it stands for the
+    // kind's), which the renderer records it by; "" for the kinds the renderer records itself.
     std::string unit;
     // pass_name(kind, view) (a unit's: its name for the kind's): the profiler's scope and the
     // key of bench.json's "passes".
@@ -214,9 +216,9 @@ struct PlanDevice {
     bool operator==(const PlanDevice&) const = default;
 };
 
-FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device);
-// The same with the pass kinds written as units (renderer/plan/pass_unit.h), each placed at its
-// slot.
+// The plan of one frame with the pass kinds written as units (renderer/plan/pass_unit.h), each
+// placed at its slot: TAA is one, so a plan without the registered units has no TAA resolve.
+// passes::plan_frame (renderer/passes/pass_unit_declarations.h) passes every registered unit.
 struct PassUnitDeclaration;
 FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device,
                      const std::vector<PassUnitDeclaration>& units);

@@ -203,17 +203,6 @@ std::vector<Step> ssao_steps(PlanResources& r, bool stereo, bool near_only) {
     return steps;
 }
 
-std::vector<Step> taa_steps(PlanResources& r, ViewId eye) {
-    std::vector<Step> steps;
-    StepBuilder(add_step(steps, "resolve"))
-        .use(r.image(eye, ImageRole::kHdr), Use::kSampledFragment)
-        .use(r.image(eye, ImageRole::kVelocity), Use::kSampledFragment)
-        .use(r.image(eye, ImageRole::kLinearDepth), Use::kSampledFragment)
-        .use(r.image(eye, ImageRole::kHistoryPrevious), Use::kSampledFragment)
-        .use(r.image(eye, ImageRole::kHistory), Use::kColorWrite);
-    return steps;
-}
-
 std::vector<Step> tonemap_steps(PlanResources& r, ViewId view, ImageRole source,
                                 bool keeps_display) {
     std::vector<Step> steps;

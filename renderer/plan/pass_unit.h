@@ -1,8 +1,10 @@
 // A pass kind written as one unit: where a frame places it and what each of its steps reads and
 // writes (this half, Vulkan-free, so that the plan stays pure), beside the code that records it
-// (renderer/passes/shared/pass_unit.h, in the same source file). A unit is added by its own
-// folder under renderer/passes/ (its source and shader) and one line in
-// renderer/passes/pass_units.cpp; nothing in the plan, the executor or the renderer names it.
+// (renderer/passes/shared/pass_unit.h), in one source file: renderer/passes/<unit>/<unit>_unit.cpp
+// compiles twice, its declaration with MONOPLANE_UNIT_DECLARATION into the Vulkan-free
+// monoplane_pass_declarations, its recorder with MONOPLANE_UNIT_RECORDER into monoplane_passes.
+// A unit is added by its own folder under renderer/passes/ (its source and shader) and one line
+// in renderer/passes/pass_unit_list.h; nothing in the plan, the executor or the renderer names it.
 //
 // plan_frame (frame_plan.h) calls each unit's place() at the unit's slot with the frame's inputs;
 // place() adds the unit's passes, if any, with their steps' declared uses. From there the unit's
@@ -28,6 +30,9 @@ namespace monoplane::plan {
 // Where in the frame a unit's passes go. The built-in kinds' order is plan_frame's; a unit takes
 // its place between them.
 enum class UnitSlot {
+    // After the eyes' SSAO, before their tone mapping: a unit that resolves an eye's colour (TAA,
+    // whose output the tone mapping then reads).
+    kBeforeToneMapping,
     // After the eyes' (and C's) tone mapping, before the depth histogram and the read-back: a
     // unit that reads or replaces the display images (a debug view).
     kAfterToneMapping,
@@ -36,7 +41,13 @@ enum class UnitSlot {
 class UnitPlacement;
 
 struct PassUnitDeclaration {
-    std::string name;  // the kind's name: "depth_view"; a pass of one view is "left.depth_view"
+    // A built-in kind written as a unit names its kind (PassKind::kTaa): its passes are found
+    // (FramePlan::find), named ("left.taa") and keyed by it. A kind added as a unit alone keeps
+    // kUnit and goes by its name.
+    PassKind kind = PassKind::kUnit;
+    // The kind's name: pass_kind_name(kind) for a built-in kind; else the unit's own
+    // ("depth_view"), which no built-in kind has. A pass of one view is "left.depth_view".
+    std::string name;
     UnitSlot slot = UnitSlot::kAfterToneMapping;
     // The `--debug-view` name that shows this unit ("depth"), for a unit that is a debug view:
     // PlanFrame::unit_debug_view selects it. Unset for a unit that place() decides alone.

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/passes/pass_unit_declarations.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/plan/render_choices.h"
 
@@ -34,6 +35,8 @@ void PrintTo(const PlannedDraw& draw, std::ostream* os) {
 
 namespace {
 
+// The frame plan as the renderer plans it: with the registered pass units (TAA among them).
+using passes::plan_frame;
 using Names = std::vector<std::string>;
 using Draws = std::vector<PlannedDraw>;
 
@@ -504,7 +507,7 @@ TEST(FramePlan, SsaoRunsAfterTheCompositesAndMonoSsaoRightAfterMonoForward) {
                             "right.forward",   "depth_pyramid", "occlusion_culling",
                             "mono.forward",    "mono.ssao",     "left.composite",
                             "right.composite", "ssao",          "left.taa",
-                            "left.tonemap",    "right.taa",     "right.tonemap",
+                            "right.taa",       "left.tonemap",  "right.tonemap",
                             "mono.tonemap",    "readback"};
     EXPECT_EQ(plan_of(options, frame_with(false), true).executed_names(), expected);
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/passes/pass_unit_declarations.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/plan/frame_plan_json.h"
 #include "renderer/plan/pass_unit.h"
@@ -38,6 +39,14 @@ PassUnitDeclaration probe() {
     return unit;
 }
 
+// The registered units (TAA, the depth view) and the probe after them, as a renderer with the
+// probe registered would plan.
+std::vector<PassUnitDeclaration> with_probe() {
+    std::vector<PassUnitDeclaration> units = passes::pass_unit_declarations();
+    units.push_back(probe());
+    return units;
+}
+
 PlanFrame showing(const std::string& unit_debug_view, bool mono_skipped = false) {
     PlanFrame frame;
     frame.mono_skipped = mono_skipped;
@@ -54,12 +63,13 @@ PlanOptions options_for(Mode mode, bool taa = false, bool ssao = false) {
 }
 
 TEST(PassUnit, PlacedOnlyWhenItsDebugViewIsShownAndOtherwiseLeavesThePlanAsItWas) {
-    const std::vector<PassUnitDeclaration> units = {probe()};
+    const std::vector<PassUnitDeclaration> units = with_probe();
     for (Mode mode : {Mode::kStereo, Mode::kHybrid, Mode::kHybridFarfield}) {
         for (const std::string& other : {std::string(), std::string("another-view")}) {
             const FramePlan with =
                 plan_frame(options_for(mode), showing(other), PlanDevice{}, units);
-            const FramePlan without = plan_frame(options_for(mode), showing(other), PlanDevice{});
+            const FramePlan without =
+                passes::plan_frame(options_for(mode), showing(other), PlanDevice{});
             EXPECT_EQ(with.executed_names(), without.executed_names()) << mode_name(mode);
             EXPECT_EQ(with.find_unit("probe", ViewId::kLeft), nullptr) << mode_name(mode);
         }
@@ -71,7 +81,7 @@ TEST(PassUnit, PlacedOnlyWhenItsDebugViewIsShownAndOtherwiseLeavesThePlanAsItWas
 // overwrites whole and nobody reads before, is culled, and with it everything only it read.
 TEST(PassUnit, StereoShowsItAfterTheToneMappingAndCullsWhatItOverwrites) {
     const FramePlan plan =
-        plan_frame(options_for(Mode::kStereo), showing("probe-view"), PlanDevice{}, {probe()});
+        plan_frame(options_for(Mode::kStereo), showing("probe-view"), PlanDevice{}, with_probe());
     const Names expected = {"culling",    "shadow",      "left.forward", "right.forward",
                             "left.probe", "right.probe", "readback"};
     EXPECT_EQ(plan.executed_names(), expected);
@@ -92,13 +102,13 @@ TEST(PassUnit, StereoShowsItAfterTheToneMappingAndCullsWhatItOverwrites) {
 // stays: its history is kept for the next frames (a persistent image), whatever this one shows.
 TEST(PassUnit, SsaoThatOnlyFedTheDisplayIsCulledAndTaaKeepsItsHistory) {
     const FramePlan ssao = plan_frame(options_for(Mode::kStereo, false, true),
-                                      showing("probe-view"), PlanDevice{}, {probe()});
+                                      showing("probe-view"), PlanDevice{}, with_probe());
     EXPECT_EQ(ssao.find(PassKind::kSsao)->skipped,
               "culled: nothing reads left.ao_scratch, left.ao, right.ao_scratch, right.ao, "
               "left.hdr, right.hdr");
     EXPECT_TRUE(ssao.runs(PassKind::kForward, ViewId::kLeft));
     const FramePlan taa = plan_frame(options_for(Mode::kStereo, true, false), showing("probe-view"),
-                                     PlanDevice{}, {probe()});
+                                     PlanDevice{}, with_probe());
     EXPECT_TRUE(taa.runs(PassKind::kTaa, ViewId::kLeft));
     EXPECT_FALSE(taa.runs(PassKind::kTonemap, ViewId::kLeft));
 }
@@ -108,7 +118,7 @@ TEST(PassUnit, SsaoThatOnlyFedTheDisplayIsCulledAndTaaKeepsItsHistory) {
 TEST(PassUnit, HybridKeepsCAndTheCompositesThatWriteTheDepthItReads) {
     for (const bool conditional : {false, true}) {
         const FramePlan plan = plan_frame(options_for(Mode::kHybrid), showing("probe-view"),
-                                          PlanDevice{conditional}, {probe()});
+                                          PlanDevice{conditional}, with_probe());
         const Names executed = plan.executed_names();
         for (const std::string& name : {"mono.forward", "left.composite", "right.composite",
                                         "mono.tonemap", "left.probe", "right.probe"}) {
@@ -125,7 +135,7 @@ TEST(PassUnit, HybridKeepsCAndTheCompositesThatWriteTheDepthItReads) {
 
 TEST(PassUnit, ItsPlanJsonNamesTheUnitAsTheKind) {
     const FramePlan plan =
-        plan_frame(options_for(Mode::kStereo), showing("probe-view"), PlanDevice{}, {probe()});
+        plan_frame(options_for(Mode::kStereo), showing("probe-view"), PlanDevice{}, with_probe());
     JsonWriter j;
     j.begin_object();
     write_plan_json(j, plan, "plan");
@@ -137,7 +147,7 @@ TEST(PassUnit, ItsPlanJsonNamesTheUnitAsTheKind) {
 
 TEST(PassUnit, AStepDeclaresExactlyTheResourcesItUses) {
     const FramePlan plan =
-        plan_frame(options_for(Mode::kStereo), showing("probe-view"), PlanDevice{}, {probe()});
+        plan_frame(options_for(Mode::kStereo), showing("probe-view"), PlanDevice{}, with_probe());
     const graph::Step& step = plan.find_unit("probe", ViewId::kLeft)->steps.front();
     const auto handle = [&](ViewId view, ImageRole role) {
         return *plan.handle({view, false, role, BufferRole::kDrawLists});
@@ -155,6 +165,41 @@ TEST(PassUnitDeathTest, AUnitNamedAsABuiltInKindIsRefused) {
     unit.name = "tonemap";
     EXPECT_DEATH((void)plan_frame(options_for(Mode::kStereo), PlanFrame{}, PlanDevice{}, {unit}),
                  "programming error.*pass unit 'tonemap' has the name of a built-in kind");
+}
+
+// A built-in kind written as a unit goes by its kind's name, or its passes' names and keys would
+// not be the kind's.
+TEST(PassUnitDeathTest, ABuiltInKindsUnitNamedOtherwiseIsRefused) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    PassUnitDeclaration unit = probe();
+    unit.kind = PassKind::kTaa;
+    unit.name = "resolve";
+    EXPECT_DEATH((void)plan_frame(options_for(Mode::kStereo), PlanFrame{}, PlanDevice{}, {unit}),
+                 "programming error.*pass unit 'resolve' is kind 'taa' and must have its name");
+}
+
+// TAA is a built-in kind written as a unit (renderer/passes/taa/taa_unit.cpp): its passes come
+// from its declaration alone, keep the kind (found, named and keyed as before), run per eye after
+// the eyes' SSAO and before their tone mapping, which reads the resolve instead of the HDR image.
+TEST(PassUnit, TaaIsAUnitOfItsKindBeforeTheToneMapping) {
+    const PlanOptions options = options_for(Mode::kStereo, true, true);
+    const FramePlan without_units = plan_frame(options, PlanFrame{}, PlanDevice{}, {});
+    EXPECT_EQ(without_units.find(PassKind::kTaa, ViewId::kLeft), nullptr);
+    const FramePlan plan = passes::plan_frame(options, PlanFrame{}, PlanDevice{});
+    const Names expected = {"culling",  "shadow",    "left.forward", "right.forward", "ssao",
+                            "left.taa", "right.taa", "left.tonemap", "right.tonemap", "readback"};
+    EXPECT_EQ(plan.executed_names(), expected);
+    for (ViewId eye : kEyeViews) {
+        const PlannedPass* taa = plan.find(PassKind::kTaa, eye);
+        ASSERT_NE(taa, nullptr);
+        EXPECT_EQ(taa->unit, "taa");
+        EXPECT_EQ(plan.find_unit("taa", eye), taa);
+        const std::string v = view_name(eye);
+        EXPECT_EQ(plan.reads(*taa), (Names{v + ".hdr", v + ".velocity", v + ".linear_depth",
+                                           v + ".history_previous"}));
+        EXPECT_EQ(plan.writes(*taa), Names{v + ".history"});
+        EXPECT_EQ(plan.reads(*plan.find(PassKind::kTonemap, eye)), Names{v + ".history"});
+    }
 }
 
 }  // namespace

@@ -37,6 +37,7 @@
 #include "renderer/graph/frame_graph.h"
 #include "renderer/graph/resource_use.h"
 #include "renderer/graph/sync_scope.h"
+#include "renderer/passes/pass_unit_declarations.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/plan/frame_resources.h"
 #include "renderer/plan/render_choices.h"
@@ -922,12 +923,14 @@ TEST(HazardChecker, AcceptsAHandWrittenCorrectFrameAndReportsEachMissingPiece) {
 namespace monoplane::plan {
 namespace {
 
+// The frame plan as the renderer plans it: with the registered pass units (TAA among them).
 using graph::Access;
 using graph::Barrier;
 using graph::CompiledFrame;
 using graph::Layout;
 using graph::ResourceState;
 using graph::Stage;
+using passes::plan_frame;
 using Problems = std::vector<std::string>;
 
 constexpr Stage kDepthTests = Stage::kEarlyFragmentTests | Stage::kLateFragmentTests;

@@ -1,7 +1,12 @@
 // The depth debug view (`--debug-view depth`), a pass kind written as one unit: after the tone
 // mapping, each eye's display image is replaced by its linear depth, warm nearer than the mono
 // plane and cool beyond it (depth_view.frag), so that one image shows what hybrid rendering sends
-// through C. The declaration and the recorder of renderer/passes/shared/pass_unit.h, side by side.
+// through C. The declaration (compiled Vulkan-free with MONOPLANE_UNIT_DECLARATION) and the
+// recorder (MONOPLANE_UNIT_RECORDER) of renderer/plan/pass_unit.h and
+// renderer/passes/shared/pass_unit.h, side by side.
+#include "renderer/plan/pass_unit.h"
+
+#ifdef MONOPLANE_UNIT_RECORDER
 #include <map>
 #include <utility>
 
@@ -10,18 +15,13 @@
 #include "renderer/passes/shared/pass_unit.h"
 #include "renderer/passes/shared/view_constants.h"
 #include "renderer/passes/tonemap/tonemap_pass.h"
-#include "renderer/plan/pass_unit.h"
 #include "renderer/vk/descriptor_set.h"
+#endif
 
 namespace monoplane::passes::depth_view {
+
+#ifdef MONOPLANE_UNIT_DECLARATION
 namespace {
-
-const std::uint32_t kDepthViewFrag[] = {
-#include "depth_view.frag.spv.inc"
-};
-
-// Stereo and frames without C: nothing lies beyond the plane, not even the sky (depth_view.frag).
-constexpr float kNoMonoPlane = static_cast<float>(MONOPLANE_SKY_LINEAR_DEPTH);
 
 // Per eye, when the frame shows this view: the eye's linear depth in, its display image out.
 void place(plan::UnitPlacement& placement) {
@@ -36,6 +36,31 @@ void place(plan::UnitPlacement& placement) {
             .use(r.image(eye, plan::ImageRole::kDisplay), graph::Use::kColorWrite);
     }
 }
+
+}  // namespace
+
+plan::PassUnitDeclaration declaration() {
+    plan::PassUnitDeclaration unit;
+    unit.name = "depth_view";
+    unit.slot = plan::UnitSlot::kAfterToneMapping;
+    unit.debug_view = "depth";
+    unit.help =
+        "each eye's linear depth, brighter nearer, warm before the mono plane and cool at or "
+        "beyond it, black sky; every mode";
+    unit.place = &place;
+    return unit;
+}
+#endif  // MONOPLANE_UNIT_DECLARATION
+
+#ifdef MONOPLANE_UNIT_RECORDER
+namespace {
+
+const std::uint32_t kDepthViewFrag[] = {
+#include "depth_view.frag.spv.inc"
+};
+
+// Stereo and frames without C: nothing lies beyond the plane, not even the sky (depth_view.frag).
+constexpr float kNoMonoPlane = static_cast<float>(MONOPLANE_SKY_LINEAR_DEPTH);
 
 class DepthViewRecorder final : public UnitRecorder {
   public:
@@ -92,20 +117,9 @@ class DepthViewRecorder final : public UnitRecorder {
 
 }  // namespace
 
-plan::PassUnitDeclaration declaration() {
-    plan::PassUnitDeclaration unit;
-    unit.name = "depth_view";
-    unit.slot = plan::UnitSlot::kAfterToneMapping;
-    unit.debug_view = "depth";
-    unit.help =
-        "each eye's linear depth, brighter nearer, warm before the mono plane and cool at or "
-        "beyond it, black sky; every mode";
-    unit.place = &place;
-    return unit;
-}
-
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx) {
     return std::make_unique<DepthViewRecorder>(ctx);
 }
+#endif  // MONOPLANE_UNIT_RECORDER
 
 }  // namespace monoplane::passes::depth_view

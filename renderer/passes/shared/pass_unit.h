@@ -1,7 +1,7 @@
 // The recording half of a pass kind written as one unit (renderer/plan/pass_unit.h has the
 // declaring half). A unit is one source file in its own folder under renderer/passes/: its
 // declaration (where a frame places it, what each step reads and writes) and its recorder side by
-// side, registered by one line in renderer/passes/pass_units.cpp.
+// side, registered by one line in renderer/passes/pass_unit_list.h.
 //
 // A recorder reaches the frame only through UnitRecording: the images its current step declared
 // (any other is a programming error, in every build), the next of its declared steps (whose
@@ -19,6 +19,7 @@
 #include <string_view>
 
 #include "renderer/passes/shared/indirect_draws.h"
+#include "renderer/passes/shared/unit_settings.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/image.h"
@@ -30,6 +31,10 @@ struct UnitFrameValues {
     double mono_plane = 0.0;  // m in metres, when the frame draws C (use_mono)
     bool use_mono = false;
     std::uint32_t slot = 0;  // the frame-in-flight slot (its resources are free to rewrite)
+    // TAA's history starts anew this frame (the first frame, a jump in frame index or in m):
+    // the last frame's resolve is not to be read.
+    bool history_restarted = true;
+    UnitSettings settings;  // the renderer's options for the units
 };
 
 class UnitRecording {

@@ -22,7 +22,7 @@ class TonemapPass {
 
     explicit TonemapPass(const vk_core::Context& ctx);
 
-    // The set record() reads `source` (kHdrFormat or TaaPass::kOutputFormat, sampled) through.
+    // The set record() reads `source` (kHdrFormat: an HDR image or the TAA unit's resolve, sampled) through.
     vk_core::DescriptorSet make_input(const vk_core::Image& source) const;
 
     // Expects the HDR image bound in hdr_set to be in eShaderReadOnlyOptimal and `display` in

@@ -1,0 +1,22 @@
+// What a user may set of the pass kinds written as units (RendererOptions, the commands' options),
+// as the units' recorders read it (UnitFrameValues::settings): plain values, Vulkan-free, one
+// member per unit that has any.
+#pragma once
+
+namespace monoplane::passes {
+
+// Temporal anti-aliasing (renderer/passes/taa/taa_unit.cpp).
+struct TaaParams {
+    // Weight of the history in the exponential blend (Karis: 0.9, about ten frames' memory).
+    float history_weight = 0.9f;
+    // The colour box grows by this factor per pixel of screen-space motion, up to one pixel
+    // (papers/000 Sect. 4.5: "scale the color box according to the current screen space
+    // velocities").
+    float velocity_box_widening = 1.0f;
+};
+
+struct UnitSettings {
+    TaaParams taa;
+};
+
+}  // namespace monoplane::passes
