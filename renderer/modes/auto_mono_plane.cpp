@@ -1,9 +1,12 @@
 #include "renderer/modes/auto_mono_plane.h"
 
 #include <algorithm>
+#include <array>
+#include <cstring>
 #include <string>
 #include <utility>
 
+#include "common/programming_error.h"
 #include "common/result.h"
 #include "renderer/modes/content_depth.h"
 #include "renderer/plan/frame_plan.h"
@@ -25,7 +28,15 @@ plan::FrameCost cost_of(const profile::FrameStats& stats) {
 
 AutoMonoPlane::AutoMonoPlane(const vk_core::Context& ctx, const scenes::Scene& scene,
                              plan::AutoMonoPlaneParams params)
-    : scene_(scene), chooser_(std::move(params)), ctx_(ctx) {}
+    : scene_(scene), chooser_(std::move(params)) {
+    for (std::uint32_t s = 0; s < vk_core::FrameRing::kFramesInFlight; ++s) {
+        // Cleared and filled by the unit (a transfer, then the count's storage writes).
+        histograms_.emplace_back(
+            ctx, MONOPLANE_DEPTH_HISTOGRAM_WORDS * sizeof(std::uint32_t),
+            vk::BufferUsageFlagBits::eStorageBuffer | vk::BufferUsageFlagBits::eTransferDst,
+            vk_core::MemoryUse::kHostVisible);
+    }
+}
 
 const plan::MonoPlaneDecision& AutoMonoPlane::choose(const StereoViewInputs& views,
                                                      vk::Extent2D eye_extent,
@@ -34,31 +45,23 @@ const plan::MonoPlaneDecision& AutoMonoPlane::choose(const StereoViewInputs& vie
                                                static_cast<int>(eye_extent.height));
     const double depth = farthest_content_depth(scene_, views);
     decision_ = chooser_.next(eyes, depth, nearest).value_or_throw();
-    if (!histogram_) {
-        // The bins span the first frame's clip range (a renderer keeps its near and far).
-        histogram_ = std::make_unique<passes::DepthHistogramPass>(
-            ctx_, vk_core::FrameRing::kFramesInFlight, views.near, views.far);
-        if (eye_depths_) histogram_->set_eye_depths(*eye_depths_, eye_extent_);
-    }
+    // The bins span the first frame's clip range (a renderer keeps its near and far).
+    if (!range_) range_ = passes::DepthHistogramRange{views.near, views.far};
     return decision_;
 }
 
-void AutoMonoPlane::set_eye_depths(std::array<vk::ImageView, 2> linear_depth,
-                                   vk::Extent2D eye_extent) {
-    eye_depths_ = linear_depth;
-    eye_extent_ = eye_extent;
-    if (histogram_) histogram_->set_eye_depths(linear_depth, eye_extent);
-}
-
-void AutoMonoPlane::record(const vk::raii::CommandBuffer& cmd, passes::StepSync& sync,
-                           std::uint32_t slot) const {
-    if (histogram_ && eye_depths_) histogram_->record(cmd, sync, slot);
+const vk_core::Buffer& AutoMonoPlane::histogram_buffer(std::uint32_t slot) const {
+    MONOPLANE_EXPECTS(slot < histograms_.size());
+    return histograms_[slot];
 }
 
 void AutoMonoPlane::complete(std::uint32_t slot, bool histogram_recorded,
                              const profile::FrameStats& stats) {
-    if (histogram_recorded && histogram_) {
-        last_histogram_ = histogram_->result(slot);
+    if (histogram_recorded) {
+        std::array<std::uint32_t, MONOPLANE_DEPTH_HISTOGRAM_WORDS> words{};
+        std::memcpy(words.data(), histogram_buffer(slot).mapped(), sizeof(words));
+        const passes::DepthHistogramRange range = histogram_range();
+        last_histogram_ = plan::depth_histogram_of(words, range.near, range.far);
         chooser_.record(last_histogram_, cost_of(stats));
     } else {
         chooser_.record(std::nullopt, cost_of(stats));

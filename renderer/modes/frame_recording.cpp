@@ -92,14 +92,12 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan
         case plan::PassKind::kTonemap:
             record_tonemap(cmd, pass, frame);
             break;
-        case plan::PassKind::kDepthHistogram:
-            auto_mono_plane_->record(cmd, sync, frame.slot);
-            break;
         case plan::PassKind::kReadback:
             record_readback(cmd, frame);
             break;
         // The kinds written as units (renderer/passes/pass_unit_list.h).
         case plan::PassKind::kTaa:
+        case plan::PassKind::kDepthHistogram:
         case plan::PassKind::kUnit:
             record_unit(cmd, pass, frame, sync);
             break;

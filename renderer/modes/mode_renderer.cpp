@@ -192,8 +192,6 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
                                 culling_.routing());
     if (options.auto_mono_plane) {
         auto_mono_plane_ = std::make_unique<AutoMonoPlane>(ctx, scene_, *options.auto_mono_plane);
-        auto_mono_plane_->set_eye_depths(
-            {eyes_[0]->linear_depth.view(), eyes_[1]->linear_depth.view()}, eye_extent_);
     }
 }
 

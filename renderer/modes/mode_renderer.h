@@ -246,6 +246,9 @@ class ModeRenderer {
     // The one device image of a view's resource (a pass unit's), or a programming error for a
     // role that is several images or none this frame.
     const vk_core::Image& view_image(const plan::ResourceKey& key) const;
+    // The one device buffer of a resource this frame (a pass unit's; slot: the frame's), or a
+    // programming error for one not offered to units (only the depth histogram's is).
+    const vk_core::Buffer& frame_buffer(const plan::ResourceKey& key, std::uint32_t slot) const;
     // Before a view's images go: the executor must not take their states for new ones.
     void forget_images(const View& view);
     std::optional<passes::Predicate> predicate(plan::GpuPredicate when) const;

@@ -111,6 +111,17 @@ const vk_core::Image& ModeRenderer::view_image(const plan::ResourceKey& key) con
     return *image;
 }
 
+const vk_core::Buffer& ModeRenderer::frame_buffer(const plan::ResourceKey& key,
+                                                  std::uint32_t slot) const {
+    MONOPLANE_EXPECTS(key.is_buffer);
+    if (key.buffer == plan::BufferRole::kDepthHistogram && key.view == plan::ViewId::kNone &&
+        auto_mono_plane_) {
+        return auto_mono_plane_->histogram_buffer(slot);
+    }
+    programming_error("a pass unit asked for " + plan::resource_name(key) +
+                      ", which no unit is offered yet");
+}
+
 std::vector<executor::BoundResource> ModeRenderer::bind_resources() {
     std::vector<executor::BoundResource> bindings;
     for (const plan::ResourceKey& key : last_plan_.keys) {

@@ -15,14 +15,13 @@ class Recording final : public passes::UnitRecording {
   public:
     Recording(const vk::raii::CommandBuffer& cmd, const plan::FramePlan& plan,
               const plan::PlannedPass& pass, passes::StepSync& sync, passes::UnitFrameValues values,
-              UnitImages images, UnitPredicates predicates)
+              UnitResolvers resolvers)
         : cmd_(cmd),
           plan_(plan),
           pass_(pass),
           sync_(sync),
           values_(values),
-          images_(std::move(images)),
-          predicates_(std::move(predicates)) {
+          resolvers_(std::move(resolvers)) {
         MONOPLANE_EXPECTS(!pass.steps.empty());
         // The executor begins a pass of one step; a pass of several asks for each, the first too.
         if (pass.steps.size() > 1) sync_.next(cmd_, pass.steps.front().name);
@@ -34,13 +33,14 @@ class Recording final : public passes::UnitRecording {
 
     const vk_core::Image& image(plan::ViewId view, plan::ImageRole role) override {
         const plan::ResourceKey key{view, false, role, plan::BufferRole::kDrawLists};
-        const std::optional<std::uint16_t> handle = plan_.handle(key);
-        const graph::Step& step = pass_.steps[step_];
-        if (!handle || !plan::step_declares(step, *handle)) {
-            programming_error(pass_.name + " touched " + plan::resource_name(key) + " in step '" +
-                              step.name + "', which does not declare it");
-        }
-        return images_(key);
+        expect_declared(key);
+        return resolvers_.image(key);
+    }
+
+    const vk_core::Buffer& buffer(plan::ViewId view, plan::BufferRole role) override {
+        const plan::ResourceKey key{view, true, plan::ImageRole::kHdr, role};
+        expect_declared(key);
+        return resolvers_.buffer(key);
     }
 
     void next_step(std::string_view step) override {
@@ -50,17 +50,25 @@ class Recording final : public passes::UnitRecording {
     }
 
     std::optional<passes::Predicate> predicate(plan::GpuPredicate when) const override {
-        return predicates_(when);
+        return resolvers_.predicate(when);
     }
 
   private:
+    void expect_declared(const plan::ResourceKey& key) const {
+        const std::optional<std::uint16_t> handle = plan_.handle(key);
+        const graph::Step& step = pass_.steps[step_];
+        if (!handle || !plan::step_declares(step, *handle)) {
+            programming_error(pass_.name + " touched " + plan::resource_name(key) + " in step '" +
+                              step.name + "', which does not declare it");
+        }
+    }
+
     const vk::raii::CommandBuffer& cmd_;
     const plan::FramePlan& plan_;
     const plan::PlannedPass& pass_;
     passes::StepSync& sync_;
     passes::UnitFrameValues values_;
-    UnitImages images_;
-    UnitPredicates predicates_;
+    UnitResolvers resolvers_;
     std::size_t step_ = 0;  // the step being recorded
 };
 
@@ -68,10 +76,8 @@ class Recording final : public passes::UnitRecording {
 
 std::unique_ptr<passes::UnitRecording> make_unit_recording(
     const vk::raii::CommandBuffer& cmd, const plan::FramePlan& plan, const plan::PlannedPass& pass,
-    passes::StepSync& sync, passes::UnitFrameValues values, UnitImages images,
-    UnitPredicates predicates) {
-    return std::make_unique<Recording>(cmd, plan, pass, sync, values, std::move(images),
-                                       std::move(predicates));
+    passes::StepSync& sync, passes::UnitFrameValues values, UnitResolvers resolvers) {
+    return std::make_unique<Recording>(cmd, plan, pass, sync, values, std::move(resolvers));
 }
 
 void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
@@ -85,10 +91,17 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     values.slot = frame.slot;
     values.history_restarted = !history_valid_;
     values.settings.taa = options_.taa;
-    const std::unique_ptr<passes::UnitRecording> recording = make_unit_recording(
-        cmd, last_plan_, pass, sync, values,
-        [this](const plan::ResourceKey& key) -> const vk_core::Image& { return view_image(key); },
-        [this](plan::GpuPredicate when) { return predicate(when); });
+    if (auto_mono_plane_) values.settings.depth_histogram = auto_mono_plane_->histogram_range();
+    UnitResolvers resolvers;
+    resolvers.image = [this](const plan::ResourceKey& key) -> const vk_core::Image& {
+        return view_image(key);
+    };
+    resolvers.buffer = [this, &frame](const plan::ResourceKey& key) -> const vk_core::Buffer& {
+        return frame_buffer(key, frame.slot);
+    };
+    resolvers.predicate = [this](plan::GpuPredicate when) { return predicate(when); };
+    const std::unique_ptr<passes::UnitRecording> recording =
+        make_unit_recording(cmd, last_plan_, pass, sync, values, std::move(resolvers));
     recorder->record(*recording);
 }
 

@@ -14,15 +14,18 @@
 
 namespace monoplane::modes {
 
-// The device image of a view's resource this frame, and the GPU predicate of a planned `when`.
-using UnitImages = std::function<const vk_core::Image&(const plan::ResourceKey&)>;
-using UnitPredicates = std::function<std::optional<passes::Predicate>(plan::GpuPredicate)>;
+// What the frame's resources and predicates are on the device: the image or buffer of a
+// resource this frame, and the GPU predicate of a planned `when`.
+struct UnitResolvers {
+    std::function<const vk_core::Image&(const plan::ResourceKey&)> image;
+    std::function<const vk_core::Buffer&(const plan::ResourceKey&)> buffer;
+    std::function<std::optional<passes::Predicate>(plan::GpuPredicate)> predicate;
+};
 
 // `pass` must be one of `plan`'s, with at least one step; the recording begins its first step
 // (through `sync` for a pass of several).
 std::unique_ptr<passes::UnitRecording> make_unit_recording(
     const vk::raii::CommandBuffer& cmd, const plan::FramePlan& plan, const plan::PlannedPass& pass,
-    passes::StepSync& sync, passes::UnitFrameValues values, UnitImages images,
-    UnitPredicates predicates);
+    passes::StepSync& sync, passes::UnitFrameValues values, UnitResolvers resolvers);
 
 }  // namespace monoplane::modes

@@ -6,4 +6,5 @@
 
 #define MONOPLANE_PASS_UNITS(X) \
     X(taa)                      \
-    X(depth_view)
+    X(depth_view)               \
+    X(depth_histogram)

@@ -1,7 +1,10 @@
 #include "renderer/plan/depth_histogram.h"
 
 #include <algorithm>
+#include <bit>
 #include <numeric>
+
+#include "common/programming_error.h"
 
 namespace monoplane::plan {
 
@@ -13,6 +16,17 @@ int DepthHistogram::bin_of(double depth) const {
 
 std::uint64_t DepthHistogram::geometry_pixels() const {
     return std::accumulate(counts.begin(), counts.end(), std::uint64_t{0});
+}
+
+DepthHistogram depth_histogram_of(std::span<const std::uint32_t> words, double near, double far) {
+    MONOPLANE_EXPECTS(words.size() >= MONOPLANE_DEPTH_HISTOGRAM_WORDS && near > 0.0 && far > near);
+    DepthHistogram histogram;
+    histogram.near = near;
+    histogram.far = far;
+    std::copy_n(words.begin(), DepthHistogram::kBins, histogram.counts.begin());
+    histogram.sky = words[MONOPLANE_DEPTH_HISTOGRAM_SKY_WORD];
+    histogram.farthest = std::bit_cast<float>(words[MONOPLANE_DEPTH_HISTOGRAM_FARTHEST_WORD]);
+    return histogram;
 }
 
 double DepthHistogram::share_beyond(double depth) const {

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <span>
 
 #include "renderer/plan/depth_histogram_constants.h"
 
@@ -32,5 +33,9 @@ struct DepthHistogram {
     // The share of geometry pixels at depths of `depth` or more (by whole bins from bin_of).
     double share_beyond(double depth) const;
 };
+
+// The histogram the GPU wrote (MONOPLANE_DEPTH_HISTOGRAM_WORDS words, depth_histogram_constants.h)
+// with bins over [near, far]; `words` must hold that many.
+DepthHistogram depth_histogram_of(std::span<const std::uint32_t> words, double near, double far);
 
 }  // namespace monoplane::plan

@@ -85,7 +85,6 @@ class PlanBuilder {
         // Before the fusion: a unit that reads an eye's HDR image keeps its tone mapping apart.
         add_units(UnitSlot::kAfterToneMapping);
         fuse_tonemaps();
-        if (options_.depth_histogram) add_depth_histogram();
         add_readback();
         add_exports();
         declare_predicate_reads();
@@ -334,14 +333,6 @@ class PlanBuilder {
         }
     }
 
-    // The eyes' final depth (C's where it shows through), counted for `--mono-plane auto`.
-    void add_depth_histogram() {
-        PlannedPass& pass = add(PassKind::kDepthHistogram);
-        pass.steps = depth_histogram_steps(r_);
-        plan_.exports.push_back(
-            {r_.shared(BufferRole::kDepthHistogram).index, graph::Use::kHostRead});
-    }
-
     void add_readback() {
         PlannedPass& pass = add(PassKind::kReadback);
         ReadbackUses uses;
@@ -573,6 +564,10 @@ PlannedPass& UnitPlacement::add_pass(ViewId view) {
     pass.view = view;
     plan_.passes.push_back(std::move(pass));
     return plan_.passes.back();
+}
+
+void UnitPlacement::read_by_host(graph::BufferHandle buffer) {
+    plan_.exports.push_back({buffer.index, graph::Use::kHostRead});
 }
 
 bool step_declares(const graph::Step& step, std::uint16_t resource) {

@@ -213,17 +213,6 @@ std::vector<Step> tonemap_steps(PlanResources& r, ViewId view, ImageRole source,
     return steps;
 }
 
-std::vector<Step> depth_histogram_steps(PlanResources& r) {
-    std::vector<Step> steps;
-    StepBuilder(add_step(steps, "clear"))
-        .use(r.shared(BufferRole::kDepthHistogram), Use::kTransferDst);
-    StepBuilder count(add_step(steps, "count"));
-    for (ViewId eye : kEyeViews)
-        count.use(r.image(eye, ImageRole::kLinearDepth), Use::kSampledCompute);
-    count.use(r.shared(BufferRole::kDepthHistogram), Use::kStorageWrite);
-    return steps;
-}
-
 std::vector<Step> readback_steps(PlanResources& r, const ReadbackUses& uses) {
     std::vector<Step> steps;
     StepBuilder step(add_step(steps, "copy"));

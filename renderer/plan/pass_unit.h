@@ -78,6 +78,9 @@ class UnitPlacement {
     // A pass of this unit for `view` (kNone: over every view), at the end of the plan so far;
     // its steps are the caller's to add (graph::StepBuilder).
     PlannedPass& add_pass(ViewId view = ViewId::kNone);
+    // The host reads `buffer` once the frame has completed (a result the renderer takes back):
+    // what keeps the passes that write it from being culled.
+    void read_by_host(graph::BufferHandle buffer);
 
   private:
     const PassUnitDeclaration& unit_;

@@ -1,8 +1,8 @@
 // A pass unit's recorder reaches only what its current step declared (renderer/modes/
 // unit_recording.h): an image its step declared is handed over, any other stops the program
-// naming the pass, the step and the image, in every build type. The unit is the test's own, one
-// step reading an eye's linear depth and writing its display image; no device is needed, since
-// the check comes before any image is touched.
+// naming the pass, the step and the image, in every build type; buffers likewise. The unit is the
+// test's own, one step reading an eye's linear depth and writing its display image and the depth
+// histogram's buffer; no device is needed, since the check comes before anything is touched.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -22,7 +22,9 @@ void place_probe(plan::UnitPlacement& placement) {
         .use(placement.resources().image(plan::ViewId::kLeft, plan::ImageRole::kLinearDepth),
              graph::Use::kSampledFragment)
         .use(placement.resources().image(plan::ViewId::kLeft, plan::ImageRole::kDisplay),
-             graph::Use::kColorWrite);
+             graph::Use::kColorWrite)
+        .use(placement.resources().shared(plan::BufferRole::kDepthHistogram),
+             graph::Use::kStorageWrite);
 }
 
 class NoSync final : public passes::StepSync {
@@ -45,16 +47,25 @@ class UnitRecordingCheck : public ::testing::Test {
             plan::plan_frame(plan::PlanOptions{}, plan::PlanFrame{}, plan::PlanDevice{}, {probe});
     }
 
-    // Asks the recording of left.probe for `role` of `view`.
-    void ask(plan::ViewId view, plan::ImageRole role) {
+    // The recording of left.probe, whose resolvers throw what they are asked for.
+    std::unique_ptr<passes::UnitRecording> recording() {
         const plan::PlannedPass* pass = plan_.find_unit("probe", plan::ViewId::kLeft);
-        ASSERT_NE(pass, nullptr);
-        const std::unique_ptr<passes::UnitRecording> recording = make_unit_recording(
-            cmd_, plan_, *pass, sync_, passes::UnitFrameValues{},
-            [](const plan::ResourceKey& key) -> const vk_core::Image& { throw Asked{key}; },
-            [](plan::GpuPredicate) { return std::optional<passes::Predicate>(); });
-        (void)recording->image(view, role);
+        EXPECT_NE(pass, nullptr);
+        UnitResolvers resolvers;
+        resolvers.image = [](const plan::ResourceKey& key) -> const vk_core::Image& {
+            throw Asked{key};
+        };
+        resolvers.buffer = [](const plan::ResourceKey& key) -> const vk_core::Buffer& {
+            throw Asked{key};
+        };
+        resolvers.predicate = [](plan::GpuPredicate) { return std::optional<passes::Predicate>(); };
+        return make_unit_recording(cmd_, plan_, *pass, sync_, passes::UnitFrameValues{},
+                                   std::move(resolvers));
     }
+
+    // Asks the recording of left.probe for `role` of `view`.
+    void ask(plan::ViewId view, plan::ImageRole role) { (void)recording()->image(view, role); }
+    void ask(plan::ViewId view, plan::BufferRole role) { (void)recording()->buffer(view, role); }
 
     plan::FramePlan plan_;
     vk::raii::CommandBuffer cmd_{nullptr};
@@ -80,6 +91,20 @@ TEST_F(UnitRecordingCheck, AnImageOfThePlanItsStepDidNotDeclareStopsTheProgram) 
                  "not declare it");
     EXPECT_DEATH(ask(plan::ViewId::kRight, plan::ImageRole::kDisplay),
                  "left.probe touched right.display in step 'draw'");
+}
+
+TEST_F(UnitRecordingCheck, ABufferItsStepDeclaredIsHandedOverAndAnyOtherStopsTheProgram) {
+    try {
+        ask(plan::ViewId::kNone, plan::BufferRole::kDepthHistogram);
+        ADD_FAILURE() << "the resolver was not asked";
+    } catch (const Asked& asked) {
+        EXPECT_EQ(asked.key, (plan::ResourceKey{plan::ViewId::kNone, true, plan::ImageRole::kHdr,
+                                                plan::BufferRole::kDepthHistogram}));
+    }
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_DEATH(ask(plan::ViewId::kLeft, plan::BufferRole::kReadback),
+                 "programming error.*left.probe touched left.readback in step 'draw', which "
+                 "does not declare it");
 }
 
 TEST_F(UnitRecordingCheck, AnImageNoPassOfTheFrameUsesStopsTheProgram) {

@@ -202,5 +202,40 @@ TEST(PassUnit, TaaIsAUnitOfItsKindBeforeTheToneMapping) {
     }
 }
 
+// The depth histogram is a built-in kind written as a unit too (renderer/passes/depth_histogram/
+// depth_histogram_unit.cpp): placed under `--mono-plane auto` only, after the tone mapping and
+// right before the read-back, "clear" then "count" over both eyes' final depth into one buffer,
+// which the host reads after the frame, so that the pass is never culled.
+TEST(PassUnit, TheDepthHistogramIsAUnitWhoseBufferTheHostReads) {
+    PlanOptions options = options_for(Mode::kHybrid);
+    EXPECT_EQ(
+        passes::plan_frame(options, PlanFrame{}, PlanDevice{}).find(PassKind::kDepthHistogram),
+        nullptr);
+    options.depth_histogram = true;
+    EXPECT_EQ(plan_frame(options, PlanFrame{}, PlanDevice{}, {}).find(PassKind::kDepthHistogram),
+              nullptr);
+    const FramePlan plan = passes::plan_frame(options, PlanFrame{}, PlanDevice{});
+    const PlannedPass* histogram = plan.find(PassKind::kDepthHistogram);
+    ASSERT_NE(histogram, nullptr);
+    EXPECT_EQ(histogram->unit, "depth_histogram");
+    EXPECT_EQ(histogram->name, "depth_histogram");
+    EXPECT_FALSE(histogram->skipped);
+    ASSERT_EQ(histogram->steps.size(), 2u);
+    EXPECT_EQ(histogram->steps[0].name, "clear");
+    EXPECT_EQ(histogram->steps[1].name, "count");
+    EXPECT_EQ(plan.reads(*histogram), (Names{"left.linear_depth", "right.linear_depth"}));
+    EXPECT_EQ(plan.writes(*histogram), Names{"depth_histogram"});
+    const std::uint16_t bins =
+        *plan.handle({ViewId::kNone, true, ImageRole::kHdr, BufferRole::kDepthHistogram});
+    EXPECT_NE(std::find(plan.exports.begin(), plan.exports.end(),
+                        graph::ResourceUse{bins, graph::Use::kHostRead}),
+              plan.exports.end());
+    const Names executed = plan.executed_names();
+    const auto at = std::find(executed.begin(), executed.end(), "depth_histogram");
+    ASSERT_NE(at, executed.end());
+    EXPECT_EQ(*(at - 1), "mono.tonemap");
+    EXPECT_EQ(*(at + 1), "readback");
+}
+
 }  // namespace
 }  // namespace monoplane::plan

@@ -7,12 +7,12 @@
 #include "renderer/plan/pass_unit.h"
 
 #ifdef MONOPLANE_UNIT_RECORDER
-#include <map>
-#include <utility>
+#include <optional>
 
 #include "renderer/executor/image_layouts.h"
 #include "renderer/passes/shared/fullscreen_pass.h"
 #include "renderer/passes/shared/pass_unit.h"
+#include "renderer/passes/shared/slot_sets.h"
 #include "renderer/passes/shared/view_constants.h"
 #include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/vk/descriptor_set.h"
@@ -76,13 +76,19 @@ class DepthViewRecorder final : public UnitRecorder {
                                            vk::PipelineLayoutCreateInfo({}, set_layout, push));
         pipeline_ =
             make_fullscreen_pipeline(ctx, *layout_, kDepthViewFrag, TonemapPass::kDisplayFormat);
+        sets_.emplace(
+            ctx, set_layout,
+            std::vector{vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1)});
     }
 
     void record(UnitRecording& r) override {
         const plan::ViewId eye = r.pass().view;
         const vk_core::Image& depth = r.image(eye, plan::ImageRole::kLinearDepth);
         const vk_core::Image& display = r.image(eye, plan::ImageRole::kDisplay);
-        const vk::DescriptorSet input = input_set(r.values().slot, eye, depth);
+        const vk::DescriptorSet input = sets_->at(r.values().slot, eye);
+        const std::array images = {vk::DescriptorImageInfo(
+            *sampler_, depth.view(), executor::layout_for(graph::Use::kSampledFragment))};
+        vk_core::write_sampled_images(ctx_, input, images);
         const float mono_plane =
             r.values().use_mono ? static_cast<float>(r.values().mono_plane) : kNoMonoPlane;
 
@@ -91,28 +97,12 @@ class DepthViewRecorder final : public UnitRecorder {
     }
 
   private:
-    // The slot's set for the eye, pointed at this frame's depth image: the slot's last frame has
-    // completed before it is recorded again, so its set is free to rewrite (the image may have
-    // been remade since).
-    vk::DescriptorSet input_set(std::uint32_t slot, plan::ViewId eye, const vk_core::Image& depth) {
-        auto [entry, added] = sets_.try_emplace({slot, eye});
-        if (added) {
-            const std::array sizes = {
-                vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1)};
-            entry->second = vk_core::DescriptorSet(ctx_, *set_layout_, sizes);
-        }
-        const std::array images = {vk::DescriptorImageInfo(
-            *sampler_, depth.view(), executor::layout_for(graph::Use::kSampledFragment))};
-        vk_core::write_sampled_images(ctx_, *entry->second, images);
-        return *entry->second;
-    }
-
     const vk_core::Context& ctx_;
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::Sampler sampler_{nullptr};
     vk::raii::PipelineLayout layout_{nullptr};
     vk::raii::Pipeline pipeline_{nullptr};
-    std::map<std::pair<std::uint32_t, plan::ViewId>, vk_core::DescriptorSet> sets_;
+    std::optional<SlotSets> sets_;  // the eye's linear depth, per frame slot
 };
 
 }  // namespace

@@ -21,6 +21,7 @@
 #include "renderer/passes/shared/indirect_draws.h"
 #include "renderer/passes/shared/unit_settings.h"
 #include "renderer/plan/frame_plan.h"
+#include "renderer/vk/buffer.h"
 #include "renderer/vk/context.h"
 #include "renderer/vk/image.h"
 
@@ -46,6 +47,9 @@ class UnitRecording {
     // The image of `view`'s `role` this frame. The pass's current step must declare it: any other
     // stops the program, naming the pass, the step and the image.
     virtual const vk_core::Image& image(plan::ViewId view, plan::ImageRole role) = 0;
+    // The buffer of `view`'s `role` this frame (kNone: the frame's own, as the depth histogram's),
+    // under the same rule.
+    virtual const vk_core::Buffer& buffer(plan::ViewId view, plan::BufferRole role) = 0;
     // Begins the pass's next declared step (the first is begun for the recorder), by name.
     virtual void next_step(std::string_view step) = 0;
     // The GPU predicate of a planned `when` (nullopt: always, or no conditional rendering).

@@ -15,8 +15,17 @@ struct TaaParams {
     float velocity_box_widening = 1.0f;
 };
 
+// The depth histogram's bins (renderer/passes/depth_histogram/depth_histogram_unit.cpp): the
+// clip range they span, which `--mono-plane auto`'s chooser reads them by
+// (plan::DepthHistogram::near, far).
+struct DepthHistogramRange {
+    double near = 0.1;
+    double far = 1000.0;
+};
+
 struct UnitSettings {
     TaaParams taa;
+    DepthHistogramRange depth_histogram;
 };
 
 }  // namespace monoplane::passes

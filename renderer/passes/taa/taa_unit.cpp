@@ -10,8 +10,7 @@
 
 #ifdef MONOPLANE_UNIT_RECORDER
 #include <array>
-#include <map>
-#include <utility>
+#include <optional>
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -20,6 +19,7 @@
 #include "renderer/passes/forward/forward_pass.h"
 #include "renderer/passes/shared/fullscreen_pass.h"
 #include "renderer/passes/shared/pass_unit.h"
+#include "renderer/passes/shared/slot_sets.h"
 #include "renderer/vk/descriptor_set.h"
 #endif
 
@@ -94,6 +94,9 @@ class TaaRecorder final : public UnitRecorder {
         layout_ = vk::raii::PipelineLayout(ctx.device(),
                                            vk::PipelineLayoutCreateInfo({}, set_layout, push));
         pipeline_ = make_fullscreen_pipeline(ctx, *layout_, kTaaResolveFrag, kOutputFormat);
+        sets_.emplace(
+            ctx, set_layout,
+            std::vector{vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 4)});
     }
 
     void record(UnitRecording& r) override {
@@ -112,16 +115,10 @@ class TaaRecorder final : public UnitRecorder {
     }
 
   private:
-    // The slot's set for the eye, pointed at this frame's images: the slot's last frame has
-    // completed before it is recorded again, so its set is free to rewrite (the history images
-    // swap roles every frame, and the images may have been remade since).
+    // The slot's set for the eye, pointed at this frame's images (the history images swap roles
+    // every frame).
     vk::DescriptorSet input_set(UnitRecording& r, plan::ViewId eye) {
-        auto [entry, added] = sets_.try_emplace({r.values().slot, eye});
-        if (added) {
-            const std::array sizes = {
-                vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 4)};
-            entry->second = vk_core::DescriptorSet(ctx_, *set_layout_, sizes);
-        }
+        const vk::DescriptorSet set = sets_->at(r.values().slot, eye);
         const auto read_only = executor::layout_for(graph::Use::kSampledFragment);
         const auto input = [&](vk::Sampler sampler, plan::ImageRole role) {
             return vk::DescriptorImageInfo(sampler, r.image(eye, role).view(), read_only);
@@ -131,8 +128,8 @@ class TaaRecorder final : public UnitRecorder {
                                    input(*nearest_, plan::ImageRole::kVelocity),
                                    input(*nearest_, plan::ImageRole::kLinearDepth),
                                    input(*bilinear_, plan::ImageRole::kHistoryPrevious)};
-        vk_core::write_sampled_images(ctx_, *entry->second, images);
-        return *entry->second;
+        vk_core::write_sampled_images(ctx_, set, images);
+        return set;
     }
 
     const vk_core::Context& ctx_;
@@ -141,7 +138,7 @@ class TaaRecorder final : public UnitRecorder {
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::PipelineLayout layout_{nullptr};
     vk::raii::Pipeline pipeline_{nullptr};
-    std::map<std::pair<std::uint32_t, plan::ViewId>, vk_core::DescriptorSet> sets_;
+    std::optional<SlotSets> sets_;  // the eye's inputs, per frame slot
 };
 
 }  // namespace
