@@ -4,7 +4,10 @@
 // compiles twice, its declaration with MONOPLANE_UNIT_DECLARATION into the Vulkan-free
 // monoplane_pass_declarations, its recorder with MONOPLANE_UNIT_RECORDER into monoplane_passes.
 // A unit is added by its own folder under renderer/passes/ (its source and shader) and one line
-// in renderer/passes/pass_unit_list.h; nothing in the plan, the executor or the renderer names it.
+// in renderer/passes/pass_unit_list.h; nothing in the plan, the executor or the renderer names a
+// unit of a kind of its own. A built-in kind written as a unit (TAA, the depth histogram) keeps
+// its PassKind, which the renderer records through the unit, and a unit with user settings has
+// its member in UnitSettings (renderer/passes/shared/unit_settings.h), which the renderer fills.
 //
 // plan_frame (frame_plan.h) calls each unit's place() at the unit's slot with the frame's inputs;
 // place() adds the unit's passes, if any, with their steps' declared uses. From there the unit's
