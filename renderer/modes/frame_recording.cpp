@@ -89,14 +89,12 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan
                 ssao_->record_apply(cmd, sync, *mono_->ssao, mono_->hdr, mono_->area);
             });
             break;
-        case plan::PassKind::kTonemap:
-            record_tonemap(cmd, pass, frame);
-            break;
         case plan::PassKind::kReadback:
             record_readback(cmd, frame);
             break;
         // The kinds written as units (renderer/passes/pass_unit_list.h).
         case plan::PassKind::kTaa:
+        case plan::PassKind::kTonemap:
         case plan::PassKind::kDepthHistogram:
         case plan::PassKind::kUnit:
             record_unit(cmd, pass, frame, sync);
@@ -213,19 +211,6 @@ void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd,
     composite_.record(
         cmd, {view.hdr, view.linear_depth, view.depth, view.velocity ? &*view.velocity : nullptr},
         *mono_->composite_set, params);
-}
-
-void ModeRenderer::record_tonemap(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
-                                  const FrameState& frame) {
-    if (pass.view == plan::ViewId::kMono) {
-        tonemap_.record(cmd, mono_->display, *mono_->tonemap_set, options_.tonemap);
-        return;
-    }
-    const View& view = *eyes_[plan::eye_index(pass.view)];
-    const vk::DescriptorSet input =
-        frame.taa ? *view.tonemap_taa_sets[history_parity_] : *view.tonemap_set;
-    // Predicated (if mono-none) where the composite writes the display image otherwise.
-    tonemap_.record(cmd, view.display, input, options_.tonemap, predicate(pass.when));
 }
 
 void ModeRenderer::record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame) {

@@ -136,7 +136,6 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       blended_chunks_(resources_->alpha_classes()[MONOPLANE_CLASS_BLENDED] > 0),
       forward_(ctx, resources_->textures().layout(),
                forward_config(options, plan::StereoPass::kTwoPasses, *resources_)),
-      tonemap_(ctx),
       composite_(ctx, options.anti_aliasing == plan::AntiAliasing::kTaa,
                  composite_may_write_display(ctx, mode, options, blended_chunks_)),
       culling_(ctx, scene_, resources_->chunk_table(), resources_->level_table()),
@@ -179,7 +178,6 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
         if (composite_.writes_display()) {
             eye->composite_hdr_set = composite_.make_eye_input(eye->hdr);
         }
-        if (taa) make_taa_sets(*eye);
         if (blended_chunks_ && mode != plan::Mode::kStereo) {
             eye->composite_depth_set =
                 forward_.make_composite_depth_set(eye->linear_depth.view(), pyramid_.sampler());
@@ -192,13 +190,6 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
                                 culling_.routing());
     if (options.auto_mono_plane) {
         auto_mono_plane_ = std::make_unique<AutoMonoPlane>(ctx, scene_, *options.auto_mono_plane);
-    }
-}
-
-void ModeRenderer::make_taa_sets(View& view) const {
-    // Parity p's resolve writes history[p], which the tone mapping then reads.
-    for (int parity = 0; parity < 2; ++parity) {
-        view.tonemap_taa_sets[parity] = tonemap_.make_input(*view.history[parity]);
     }
 }
 
@@ -218,7 +209,6 @@ void ModeRenderer::ensure_pyramid() {
 void ModeRenderer::make_view_sets(View& view) const {
     view.forward_set = forward_.make_view_set(view.constants, resources_->shadow().view(),
                                               resources_->shadow().sampler());
-    view.tonemap_set = tonemap_.make_input(view.hdr);
 }
 
 ModeRenderer::~ModeRenderer() {

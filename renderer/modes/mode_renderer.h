@@ -29,7 +29,6 @@
 #include "renderer/passes/shared/pass_unit.h"
 #include "renderer/passes/shared/unit_settings.h"
 #include "renderer/passes/ssao/ssao_pass.h"
-#include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/plan/lod_selection.h"
 #include "renderer/plan/pass_unit.h"
@@ -214,7 +213,7 @@ class ModeRenderer {
     struct MonoView;
 
     void ensure_mono_view(int width, int height);
-    // A view's forward and tone-mapping sets, over its own resources (made by the passes).
+    // A view's forward set, over its own resources (made by the forward pass).
     void make_view_sets(View& view) const;
     // Makes the pyramid large enough for C's allocation and points its readers at it.
     void ensure_pyramid();
@@ -224,8 +223,6 @@ class ModeRenderer {
                      const glm::dvec3& position, const FrameInputs& inputs,
                      const glm::dvec3& mono_position, double blend_band,
                      const glm::dmat4& light_view_proj, double hidden_depth_threshold = 0.0);
-    // A view's tone-mapping sets over its TAA history images (one per parity).
-    void make_taa_sets(View& view) const;
 
     // A frame: its state, the plan for it, and one recorder per kind of pass.
     struct FrameState;
@@ -264,8 +261,6 @@ class ModeRenderer {
     void record_composite(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                           const FrameState& frame);
     void record_transparency(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass);
-    void record_tonemap(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
-                        const FrameState& frame);
     void record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame);
     // A pass unit's pass, by its recorder (made on its first pass; unit_recording.cpp).
     void record_unit(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
@@ -291,7 +286,6 @@ class ModeRenderer {
     bool blended_chunks_;  // the scene has alphaMode BLEND chunks (frame_plan.h: PlanOptions)
     passes::ForwardPass forward_;
     std::unique_ptr<passes::ForwardPass> eyes_forward_;  // single-pass stereo: both eyes at once
-    passes::TonemapPass tonemap_;
     passes::CompositePass composite_;
     passes::ChunkCullingPass culling_;
     passes::DepthPyramidPass pyramid_;

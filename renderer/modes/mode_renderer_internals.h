@@ -12,6 +12,7 @@
 #include "renderer/modes/farfield_rig.h"
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/modes/transient_memory.h"
+#include "renderer/passes/shared/display_format.h"
 
 namespace monoplane::modes {
 
@@ -163,7 +164,7 @@ struct ViewOutputs {
     std::array<std::optional<vk_core::Image>, 2> history;
 
     static vk_core::ImageDesc display_desc(vk::Extent2D size) {
-        return {size, passes::TonemapPass::kDisplayFormat, kColorTarget};
+        return {size, passes::kDisplayFormat, kColorTarget};
     }
 
     ViewOutputs(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features,
@@ -194,7 +195,6 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     vk::Extent2D area;                          // the region drawn (C: its viewport, eq. 8)
     passes::ViewConstants written_constants{};  // what this frame's constants hold
     vk_core::DescriptorSet forward_set;
-    vk_core::DescriptorSet tonemap_set;
     // An eye's HDR image as the composite that writes the display image reads it.
     vk_core::DescriptorSet composite_hdr_set;
     // Hybrid with blended chunks: the eye's linear depth after the composite, as its
@@ -202,8 +202,6 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     vk_core::DescriptorSet composite_depth_set;
     RgbaImage image;
     std::vector<float> linear;
-    // TAA: the tone mapping's sets reading the history images (the TAA unit makes its own).
-    std::array<vk_core::DescriptorSet, 2> tonemap_taa_sets;
     glm::dmat4 previous_unjittered{1.0};  // last frame's world -> clip without jitter
     bool has_previous = false;
     std::unique_ptr<passes::SsaoView> ssao;

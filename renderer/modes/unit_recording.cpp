@@ -37,6 +37,12 @@ class Recording final : public passes::UnitRecording {
         return resolvers_.image(key);
     }
 
+    bool declares(plan::ViewId view, plan::ImageRole role) const override {
+        const std::optional<std::uint16_t> handle =
+            plan_.handle({view, false, role, plan::BufferRole::kDrawLists});
+        return handle && plan::step_declares(pass_.steps[step_], *handle);
+    }
+
     const vk_core::Buffer& buffer(plan::ViewId view, plan::BufferRole role) override {
         const plan::ResourceKey key{view, true, plan::ImageRole::kHdr, role};
         expect_declared(key);
@@ -90,6 +96,7 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     values.mono_plane = frame.inputs->mono_plane;
     values.slot = frame.slot;
     values.history_restarted = !history_valid_;
+    values.settings.tonemap = options_.tonemap;
     values.settings.taa = options_.taa;
     if (auto_mono_plane_) values.settings.depth_histogram = auto_mono_plane_->histogram_range();
     UnitResolvers resolvers;

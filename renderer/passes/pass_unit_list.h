@@ -6,5 +6,6 @@
 
 #define MONOPLANE_PASS_UNITS(X) \
     X(taa)                      \
+    X(tonemap)                  \
     X(depth_view)               \
     X(depth_histogram)

@@ -82,9 +82,7 @@ class PlanBuilder {
         add_eye_forward();
         if (s_.hybrid) add_mono_passes();
         add_post_processing();
-        // Before the fusion: a unit that reads an eye's HDR image keeps its tone mapping apart.
         add_units(UnitSlot::kAfterToneMapping);
-        fuse_tonemaps();
         add_readback();
         add_exports();
         declare_predicate_reads();
@@ -257,24 +255,14 @@ class PlanBuilder {
             pass.steps = ssao_steps(r_, options_.ssao_stereo, s_.use_mono);
         }
         add_units(UnitSlot::kBeforeToneMapping);
-        for (ViewId eye : kEyeViews) {
-            // Under TAA the eye's resolve (its history image, written by the unit) is its colour.
-            PlannedPass& pass = add(PassKind::kTonemap, eye);
-            pass.steps = tonemap_steps(r_, eye, s_.taa ? ImageRole::kHistory : ImageRole::kHdr);
-        }
-        if (s_.hybrid) {
-            // C's own tone-mapped image exists only to be looked at (mono.png): without a
-            // read-back nothing reads it, and the culling drops the pass.
-            PlannedPass& pass = add(PassKind::kTonemap, ViewId::kMono);
-            pass.steps = tonemap_steps(r_, ViewId::kMono, ImageRole::kHdr);
-            if (!s_.use_mono) pass.skipped = "m >= far: nothing lies beyond the mono plane, no C";
-        }
+        fuse_composites();
+        add_units(UnitSlot::kToneMapping);
     }
 
     void add_units(UnitSlot slot) {
         for (const PassUnitDeclaration& unit : units_) {
             if (unit.slot != slot) continue;
-            UnitPlacement placement(unit, options_, frame_, plan_, r_);
+            UnitPlacement placement(unit, options_, frame_, s_.predicated, plan_, r_);
             unit.place(placement);
         }
     }
@@ -286,10 +274,9 @@ class PlanBuilder {
         return nullptr;
     }
 
-    // Whether `tonemap` reads the eye's HDR image and no pass after `composite` but it uses that
-    // image at all (TAA and SSAO do): then the composite may tone map in its place.
-    bool hdr_read_only_by_tonemap(ViewId eye, const PlannedPass& composite,
-                                  const PlannedPass& tonemap) {
+    // Whether no pass after `composite` uses the eye's HDR image (TAA, SSAO and the blended
+    // chunks do): then only the eye's tone mapping, placed next, would read it.
+    bool hdr_unread_after(ViewId eye, const PlannedPass& composite) {
         const std::uint16_t hdr = r_.image(eye, ImageRole::kHdr).index;
         const auto uses_hdr = [&](const PlannedPass& pass) {
             return std::any_of(pass.steps.begin(), pass.steps.end(), [&](const graph::Step& step) {
@@ -298,10 +285,9 @@ class PlanBuilder {
                     [&](const graph::ResourceUse& use) { return use.resource == hdr; });
             });
         };
-        if (!uses_hdr(tonemap)) return false;
         bool after = false;
         for (const PlannedPass& pass : plan_.passes) {
-            if (after && &pass != &tonemap && uses_hdr(pass)) return false;
+            if (after && uses_hdr(pass)) return false;
             after = after || &pass == &composite;
         }
         return true;
@@ -310,26 +296,18 @@ class PlanBuilder {
     // One full-screen pass per eye where the eye's linear colour has no reader but its tone
     // mapping: the composite writes the display image itself (one pass's fixed cost and the HDR
     // image's write and read of every far pixel saved). When C has nothing to draw the GPU skips
-    // the composite, so with predicates the tonemap stays for that case alone, loading what the
-    // composite wrote otherwise; without them C always draws and the tonemap is not needed.
-    void fuse_tonemaps() {
+    // the composite, so with predicates the tone mapping (the unit, renderer/passes/tonemap) stays
+    // for that case alone, loading what the composite wrote otherwise; without them C always
+    // draws and the tone mapping is not needed. Decided before the tone mapping is placed, which
+    // reads the verdict (PlannedPass::writes_display); the units after it do not read the eyes'
+    // HDR images (UnitSlot::kAfterToneMapping).
+    void fuse_composites() {
         if (!s_.use_mono || options_.separate_tonemap || !s_.independent_blend) return;
         for (ViewId eye : kEyeViews) {
             PlannedPass* composite = find_pass(PassKind::kComposite, eye);
-            PlannedPass* tonemap = find_pass(PassKind::kTonemap, eye);
-            if (composite == nullptr || tonemap == nullptr ||
-                !hdr_read_only_by_tonemap(eye, *composite, *tonemap)) {
-                continue;
-            }
+            if (composite == nullptr || !hdr_unread_after(eye, *composite)) continue;
             composite->writes_display = true;
             composite->steps = composite_display_steps(r_, eye);
-            if (s_.predicated) {
-                tonemap->when = GpuPredicate::kMonoNone;
-                tonemap->steps = tonemap_steps(r_, eye, ImageRole::kHdr, true);
-            } else {
-                tonemap->skipped = "fused into " + composite->name + ": nothing else reads " +
-                                   view_name(eye) + ".hdr";
-            }
         }
     }
 

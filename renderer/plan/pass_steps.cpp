@@ -203,16 +203,6 @@ std::vector<Step> ssao_steps(PlanResources& r, bool stereo, bool near_only) {
     return steps;
 }
 
-std::vector<Step> tonemap_steps(PlanResources& r, ViewId view, ImageRole source,
-                                bool keeps_display) {
-    std::vector<Step> steps;
-    StepBuilder(add_step(steps, "tonemap"))
-        .use(r.image(view, source), Use::kSampledFragment)
-        .use(r.image(view, ImageRole::kDisplay),
-             keeps_display ? Use::kColorBlend : Use::kColorWrite);
-    return steps;
-}
-
 std::vector<Step> readback_steps(PlanResources& r, const ReadbackUses& uses) {
     std::vector<Step> steps;
     StepBuilder step(add_step(steps, "copy"));

@@ -2,8 +2,9 @@
 // a pass reads and writes, and in which layout and stage. The frame plan (frame_plan.cpp) calls
 // these; the passes (renderer/passes) record exactly these steps in this order, asking the
 // executor for each later step's barriers by name (passes::StepSync), and record none themselves.
-// A kind written as a unit (TAA, the depth histogram: renderer/passes/<kind>/<kind>_unit.cpp)
-// declares its steps beside its recorder instead (renderer/plan/pass_unit.h).
+// A kind written as a unit (TAA, the tone mapping, the depth histogram:
+// renderer/passes/<kind>/<kind>_unit.cpp) declares its steps beside its recorder instead
+// (renderer/plan/pass_unit.h).
 //
 // When may this be called: any time; pure, no device.
 #pragma once
@@ -56,10 +57,6 @@ std::vector<graph::Step> composite_display_steps(PlanResources& r, ViewId eye);
 // "visibility-right", ...), then "left.apply" and
 // "right.apply"; near_only: hybrid, the apply is depth-tested against the eye's near content.
 std::vector<graph::Step> ssao_steps(PlanResources& r, bool stereo, bool near_only);
-// keeps_display: the display image is loaded (a predicated tone mapping keeps what the composite
-// wrote when the GPU skips its draw).
-std::vector<graph::Step> tonemap_steps(PlanResources& r, ViewId view, ImageRole source,
-                                       bool keeps_display = false);
 
 struct ReadbackUses {
     bool color = true;

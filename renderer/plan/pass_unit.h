@@ -36,8 +36,12 @@ enum class UnitSlot {
     // After the eyes' SSAO, before their tone mapping: a unit that resolves an eye's colour (TAA,
     // whose output the tone mapping then reads).
     kBeforeToneMapping,
-    // After the eyes' (and C's) tone mapping, before the depth histogram and the read-back: a
-    // unit that reads or replaces the display images (a debug view).
+    // The tone mapping itself, once the plan has decided which composites write the display
+    // images (PlannedPass::writes_display).
+    kToneMapping,
+    // After the eyes' (and C's) tone mapping, before the read-back: a unit that reads or replaces
+    // the display images (a debug view) or reads the final depths (the depth histogram). Not
+    // the eyes' HDR images: where a composite wrote the display image, they lack C's colour.
     kAfterToneMapping,
 };
 
@@ -65,11 +69,22 @@ struct PassUnitDeclaration {
 class UnitPlacement {
   public:
     UnitPlacement(const PassUnitDeclaration& unit, const PlanOptions& options,
-                  const PlanFrame& frame, FramePlan& plan, PlanResources& resources)
-        : unit_(unit), options_(options), frame_(frame), plan_(plan), resources_(resources) {}
+                  const PlanFrame& frame, bool predicated, FramePlan& plan,
+                  PlanResources& resources)
+        : unit_(unit),
+          options_(options),
+          frame_(frame),
+          predicated_(predicated),
+          plan_(plan),
+          resources_(resources) {}
 
     const PlanOptions& options() const { return options_; }
     const PlanFrame& frame() const { return frame_; }
+    // The passes placed so far (the kinds and units before this slot), to read.
+    const FramePlan& plan() const { return plan_; }
+    // The device evaluates GPU predicates (PlanDevice::conditional_rendering): a pass may run
+    // under one (PlannedPass::when); without, every pass runs as planned.
+    bool predicated() const { return predicated_; }
     // A hybrid mode that draws C this frame (something lies beyond m).
     bool draws_mono() const { return options_.mode != Mode::kStereo && !frame_.mono_skipped; }
     // Whether this frame shows this unit's debug view.
@@ -89,6 +104,7 @@ class UnitPlacement {
     const PassUnitDeclaration& unit_;
     const PlanOptions& options_;
     const PlanFrame& frame_;
+    bool predicated_;
     FramePlan& plan_;
     PlanResources& resources_;
 };

@@ -84,6 +84,15 @@ TEST_F(UnitRecordingCheck, AnImageItsStepDeclaredIsHandedOver) {
     }
 }
 
+TEST_F(UnitRecordingCheck, ItSaysWhichImagesItsStepDeclares) {
+    const std::unique_ptr<passes::UnitRecording> r = recording();
+    EXPECT_TRUE(r->declares(plan::ViewId::kLeft, plan::ImageRole::kLinearDepth));
+    EXPECT_TRUE(r->declares(plan::ViewId::kLeft, plan::ImageRole::kDisplay));
+    EXPECT_FALSE(r->declares(plan::ViewId::kLeft, plan::ImageRole::kHdr));
+    EXPECT_FALSE(r->declares(plan::ViewId::kRight, plan::ImageRole::kDisplay));
+    EXPECT_FALSE(r->declares(plan::ViewId::kLeft, plan::ImageRole::kHistory));
+}
+
 TEST_F(UnitRecordingCheck, AnImageOfThePlanItsStepDidNotDeclareStopsTheProgram) {
     GTEST_FLAG_SET(death_test_style, "threadsafe");
     EXPECT_DEATH(ask(plan::ViewId::kLeft, plan::ImageRole::kHdr),

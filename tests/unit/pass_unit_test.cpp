@@ -120,8 +120,8 @@ TEST(PassUnit, HybridKeepsCAndTheCompositesThatWriteTheDepthItReads) {
         const FramePlan plan = plan_frame(options_for(Mode::kHybrid), showing("probe-view"),
                                           PlanDevice{conditional}, with_probe());
         const Names executed = plan.executed_names();
-        for (const std::string& name : {"mono.forward", "left.composite", "right.composite",
-                                        "mono.tonemap", "left.probe", "right.probe"}) {
+        for (const char* name : {"mono.forward", "left.composite", "right.composite",
+                                 "mono.tonemap", "left.probe", "right.probe"}) {
             EXPECT_NE(std::find(executed.begin(), executed.end(), name), executed.end())
                 << name << (conditional ? " predicated" : "");
         }
@@ -235,6 +235,50 @@ TEST(PassUnit, TheDepthHistogramIsAUnitWhoseBufferTheHostReads) {
     ASSERT_NE(at, executed.end());
     EXPECT_EQ(*(at - 1), "mono.tonemap");
     EXPECT_EQ(*(at + 1), "readback");
+}
+
+// The tone mapping is a built-in kind written as a unit too (renderer/passes/tonemap/
+// tonemap_unit.cpp). Where the plan had the composite write the display image (hybrid without TAA
+// and SSAO), it declares its own variant: with GPU predicates it runs only if C had nothing
+// (mono-none) and loads the display image it may keep; without, it is left out. Under TAA it
+// reads the resolve. Without the registered units a plan has no tone mapping at all.
+TEST(PassUnit, TheToneMappingIsAUnitThatDeclaresItsFusedVariant) {
+    const PlanFrame drawn;  // something lies beyond m
+    EXPECT_EQ(plan_frame(options_for(Mode::kHybrid), drawn, PlanDevice{true}, {})
+                  .find(PassKind::kTonemap, ViewId::kLeft),
+              nullptr);
+    for (const bool conditional : {false, true}) {
+        const FramePlan plan =
+            passes::plan_frame(options_for(Mode::kHybrid), drawn, PlanDevice{conditional});
+        for (ViewId eye : kEyeViews) {
+            const std::string v = view_name(eye);
+            ASSERT_TRUE(plan.find(PassKind::kComposite, eye)->writes_display);
+            const PlannedPass* tonemap = plan.find(PassKind::kTonemap, eye);
+            ASSERT_NE(tonemap, nullptr);
+            EXPECT_EQ(tonemap->unit, "tonemap");
+            if (conditional) {
+                EXPECT_FALSE(tonemap->skipped);
+                EXPECT_EQ(tonemap->when, GpuPredicate::kMonoNone);
+                // The display image is loaded (a blend): read as well as written.
+                EXPECT_EQ(plan.reads(*tonemap), (Names{v + ".hdr", v + ".display", "predicates"}));
+            } else {
+                EXPECT_EQ(tonemap->skipped,
+                          "fused into " + v + ".composite: nothing else reads " + v + ".hdr");
+            }
+            EXPECT_EQ(plan.writes(*tonemap), Names{v + ".display"});
+        }
+        const PlannedPass* mono = plan.find(PassKind::kTonemap, ViewId::kMono);
+        ASSERT_NE(mono, nullptr);
+        EXPECT_EQ(plan.reads(*mono), Names{"mono.hdr"});
+    }
+    const FramePlan taa =
+        passes::plan_frame(options_for(Mode::kHybrid, true, false), drawn, PlanDevice{true});
+    EXPECT_FALSE(taa.find(PassKind::kComposite, ViewId::kLeft)->writes_display);
+    EXPECT_EQ(taa.reads(*taa.find(PassKind::kTonemap, ViewId::kLeft)), Names{"left.history"});
+    EXPECT_EQ(taa.find(PassKind::kTonemap, ViewId::kLeft)->when, GpuPredicate::kAlways);
+    const FramePlan stereo = passes::plan_frame(options_for(Mode::kStereo), drawn, PlanDevice{});
+    EXPECT_EQ(stereo.find(PassKind::kTonemap, ViewId::kMono), nullptr);
+    EXPECT_EQ(stereo.reads(*stereo.find(PassKind::kTonemap, ViewId::kRight)), Names{"right.hdr"});
 }
 
 }  // namespace

@@ -109,7 +109,7 @@ void CompositePass::make_display_pipelines(const vk_core::GraphicsPipelineDesc& 
     vk_core::GraphicsPipelineDesc desc = composite_desc;
     desc.layout = *display_layout_;
     desc.fragment = *composite;
-    desc.color_formats = {TonemapPass::kDisplayFormat, ForwardPass::kLinearDepthFormat};
+    desc.color_formats = {kDisplayFormat, ForwardPass::kLinearDepthFormat};
     desc.depth_test = true;
     display_behind_near_content_ = vk_core::make_graphics_pipeline(ctx_, desc);
     desc.depth_test = false;

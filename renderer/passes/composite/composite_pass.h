@@ -15,8 +15,9 @@
 
 #include <optional>
 
+#include "renderer/passes/shared/display_format.h"
 #include "renderer/passes/shared/indirect_draws.h"
-#include "renderer/passes/tonemap/tonemap_pass.h"
+#include "renderer/passes/shared/unit_settings.h"
 #include "renderer/vk/descriptor_set.h"
 #include "renderer/vk/image.h"
 #include "renderer/vk/pipeline.h"
@@ -54,7 +55,7 @@ struct CompositeTargets {
 
 // The targets of record_display (the eye's HDR image is read through make_eye_input's set).
 struct CompositeDisplayTargets {
-    const vk_core::Image& display;       // TonemapPass::kDisplayFormat, written whole
+    const vk_core::Image& display;       // kDisplayFormat, written whole
     const vk_core::Image& linear_depth;  // eye linear depth, eColorAttachmentOptimal
     const vk_core::Image& depth;         // eye depth, eDepthAttachmentOptimal (read only)
 };
@@ -82,9 +83,9 @@ class CompositePass {
     vk_core::DescriptorSet make_eye_input(const vk_core::Image& eye_hdr) const;
 
     // The composite and the eye's tone mapping in one pass: writes every pixel of the display
-    // image once (tone mapped with `tonemap`, as TonemapPass does) and C's linear depth where the
-    // eye drew nothing; the eye's HDR image is only read. With params.when the GPU may skip both
-    // draws: the display image is then undefined, and the eye's TonemapPass must write it.
+    // image once (tone mapped with `tonemap`, as the tone mapping does) and C's linear depth where
+    // the eye drew nothing; the eye's HDR image is only read. With params.when the GPU may skip
+    // both draws: the display image is then undefined, and the eye's tone mapping must write it.
     // Needs writes_display().
     void record_display(const vk::raii::CommandBuffer& cmd, const CompositeDisplayTargets& targets,
                         vk::DescriptorSet mono_set, vk::DescriptorSet eye_set,

@@ -10,11 +10,11 @@
 #include <optional>
 
 #include "renderer/executor/image_layouts.h"
+#include "renderer/passes/shared/display_format.h"
 #include "renderer/passes/shared/fullscreen_pass.h"
 #include "renderer/passes/shared/pass_unit.h"
 #include "renderer/passes/shared/slot_sets.h"
 #include "renderer/passes/shared/view_constants.h"
-#include "renderer/passes/tonemap/tonemap_pass.h"
 #include "renderer/vk/descriptor_set.h"
 #endif
 
@@ -74,8 +74,7 @@ class DepthViewRecorder final : public UnitRecorder {
         const vk::PushConstantRange push(vk::ShaderStageFlagBits::eFragment, 0, sizeof(float));
         layout_ = vk::raii::PipelineLayout(ctx.device(),
                                            vk::PipelineLayoutCreateInfo({}, set_layout, push));
-        pipeline_ =
-            make_fullscreen_pipeline(ctx, *layout_, kDepthViewFrag, TonemapPass::kDisplayFormat);
+        pipeline_ = make_fullscreen_pipeline(ctx, *layout_, kDepthViewFrag, kDisplayFormat);
         sets_.emplace(
             ctx, set_layout,
             std::vector{vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1)});

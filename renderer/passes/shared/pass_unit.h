@@ -47,6 +47,9 @@ class UnitRecording {
     // The image of `view`'s `role` this frame. The pass's current step must declare it: any other
     // stops the program, naming the pass, the step and the image.
     virtual const vk_core::Image& image(plan::ViewId view, plan::ImageRole role) = 0;
+    // Whether the pass's current step declares `view`'s image `role`: what image() hands over
+    // (a recorder whose declaration chose between images asks which).
+    virtual bool declares(plan::ViewId view, plan::ImageRole role) const = 0;
     // The buffer of `view`'s `role` this frame (kNone: the frame's own, as the depth histogram's),
     // under the same rule.
     virtual const vk_core::Buffer& buffer(plan::ViewId view, plan::BufferRole role) = 0;

@@ -5,6 +5,12 @@
 
 namespace monoplane::passes {
 
+// The tone mapping (renderer/passes/tonemap/tonemap_unit.cpp, and the composite that tone maps):
+// the fragment stage's push constant, as tone_mapping.glsl reads it.
+struct TonemapParams {
+    float exposure = 1.0f;
+};
+
 // Temporal anti-aliasing (renderer/passes/taa/taa_unit.cpp).
 struct TaaParams {
     // Weight of the history in the exponential blend (Karis: 0.9, about ten frames' memory).
@@ -24,6 +30,7 @@ struct DepthHistogramRange {
 };
 
 struct UnitSettings {
+    TonemapParams tonemap;
     TaaParams taa;
     DepthHistogramRange depth_histogram;
 };
