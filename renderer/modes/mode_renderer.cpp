@@ -115,6 +115,24 @@ bool composite_may_write_display(const vk_core::Context& ctx, plan::Mode mode,
     return composite != nullptr && composite->writes_display;
 }
 
+// The recorders of every unit a frame of this renderer may run (an executed pass of one of
+// `plans`), made with the renderer so that their pipelines are never compiled mid-run: a
+// session's frames compile nothing, and its frame log counts what they do. A debug view's unit is
+// left until a frame shows it (record_unit makes a recorder on its first pass).
+void make_unit_recorders(const vk_core::Context& ctx, const std::vector<plan::FramePlan>& plans,
+                         const std::vector<plan::PassUnitDeclaration>& units,
+                         std::map<std::string, std::unique_ptr<passes::UnitRecorder>>& recorders) {
+    for (const plan::FramePlan& plan : plans) {
+        for (const plan::PlannedPass* pass : plan.executed()) {
+            const auto unit = std::find_if(
+                units.begin(), units.end(),
+                [&](const plan::PassUnitDeclaration& u) { return u.name == pass->unit; });
+            if (unit == units.end() || unit->debug_view || recorders.count(pass->unit)) continue;
+            recorders[pass->unit] = passes::make_unit_recorder(pass->unit, ctx);
+        }
+    }
+}
+
 }  // namespace
 
 ModeRenderer::ModeRenderer(const vk_core::Context& ctx, const scenes::Scene& scene, plan::Mode mode,
@@ -164,6 +182,7 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
         plan::PlanDevice{ctx.capabilities().conditional_rendering,
                          ctx.capabilities().independent_blend},
         units_);
+    make_unit_recorders(ctx, possible_plans_, units_, unit_recorders_);
     if (!eye_layers_) {
         eye_memory_ = View::eye_memory(ctx, eye_extent, eye_features, possible_plans_);
     }
