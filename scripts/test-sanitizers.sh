@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-BUILD_DIR=build-sanitize CMAKE_ARGS="-DMONOPLANE_VULKAN=OFF -DMONOPLANE_SANITIZE=ON" scripts/build.sh
+scripts/build-sanitizers.sh
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0" \
   ctest --test-dir build-sanitize --output-on-failure -j "$(nproc)" -L unit
