@@ -72,9 +72,6 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan
             passes::with_predicate(cmd, predicate(pass.when),
                                    [&] { culling_.record_occlusion_phase(cmd); });
             break;
-        case plan::PassKind::kComposite:
-            record_composite(cmd, pass, frame);
-            break;
         case plan::PassKind::kTransparency:
             record_transparency(cmd, pass);
             break;
@@ -93,6 +90,7 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan
             record_readback(cmd, frame);
             break;
         // The kinds written as units (renderer/passes/pass_unit_list.h).
+        case plan::PassKind::kComposite:
         case plan::PassKind::kTaa:
         case plan::PassKind::kTonemap:
         case plan::PassKind::kDepthHistogram:
@@ -170,47 +168,40 @@ void ModeRenderer::record_ssao(const vk::raii::CommandBuffer& cmd, const FrameSt
     }
 }
 
-void ModeRenderer::record_composite(const vk::raii::CommandBuffer& cmd,
-                                    const plan::PlannedPass& pass, const FrameState& frame) {
+passes::CompositeValues ModeRenderer::composite_values(const FrameState& frame) const {
+    MONOPLANE_EXPECTS(mono_ != nullptr);
     const FrameInputs& inputs = *frame.inputs;
-    const int e = plan::eye_index(pass.view);
-    const View& view = *eyes_[e];
-    passes::CompositeParams params;
-    params.mono_allocation = glm::vec2(static_cast<float>(mono_->extent.width),
+    passes::CompositeValues values;
+    values.mono_allocation = glm::vec2(static_cast<float>(mono_->extent.width),
                                        static_cast<float>(mono_->extent.height));
-    if (frame.farfield) {
-        params.mapping = passes::CompositeMapping::kOffsetCopy;
-        params.pixel_offset = frame.farfield->offsets[e];
-        // Same pixel size: NDC velocities scale with the images' widths.
-        params.velocity_scale = glm::vec2(
-            static_cast<float>(mono_->area.width) / static_cast<float>(eye_extent_.width),
-            static_cast<float>(mono_->area.height) / static_cast<float>(eye_extent_.height));
-    } else {
+    values.mapping = frame.farfield ? passes::CompositeMapping::kOffsetCopy
+                                    : passes::CompositeMapping::kProjective;
+    for (int e = 0; e < 2; ++e) {
+        passes::CompositeEyeMapping& eye = values.eyes[e];
+        if (frame.farfield) {
+            eye.pixel_offset = frame.farfield->offsets[e];
+            // Same pixel size: NDC velocities scale with the images' widths.
+            eye.velocity_scale = glm::vec2(
+                static_cast<float>(mono_->area.width) / static_cast<float>(eye_extent_.width),
+                static_cast<float>(mono_->area.height) / static_cast<float>(eye_extent_.height));
+            continue;
+        }
         // Eq. 5 between the jittered clip spaces: C's image and the eye's are both displaced by
         // the jitter, so the mapping undoes one and applies the other.
-        params.eye_to_mono =
+        eye.eye_to_mono =
             glm::mat4(frame.mono_jitter * rig_->eye_to_mono[e] * glm::inverse(frame.eye_jitter));
-        params.velocity_scale = glm::vec2(rig::mono_velocity_to_eye(*rig_, e));
+        eye.velocity_scale = glm::vec2(rig::mono_velocity_to_eye(*rig_, e));
         // C's image is valid in [0, viewport / allocation] (Sect. 4.2). The image may be larger
         // than the rig's own allocation: it was sized for an earlier m.
-        params.uv_scale = glm::vec2(static_cast<float>(mono_->area.width),
-                                    static_cast<float>(mono_->area.height)) /
-                          params.mono_allocation;
+        eye.uv_scale = glm::vec2(static_cast<float>(mono_->area.width),
+                                 static_cast<float>(mono_->area.height)) /
+                       values.mono_allocation;
     }
-    if (inputs.debug == plan::DebugView::kTintMono) params.tint = 1.0f;
+    if (inputs.debug == plan::DebugView::kTintMono) values.tint = 1.0f;
     if (inputs.debug == plan::DebugView::kStereoOnly)
-        params.mapping = passes::CompositeMapping::kNothing;
-    params.cover_all_pixels = inputs.debug == plan::DebugView::kMonoOnly;
-    params.when = predicate(pass.when);
-    if (pass.writes_display) {
-        composite_.record_display(cmd, {view.display, view.linear_depth, view.depth},
-                                  *mono_->composite_set, *view.composite_hdr_set, params,
-                                  options_.tonemap);
-        return;
-    }
-    composite_.record(
-        cmd, {view.hdr, view.linear_depth, view.depth, view.velocity ? &*view.velocity : nullptr},
-        *mono_->composite_set, params);
+        values.mapping = passes::CompositeMapping::kNothing;
+    values.cover_all_pixels = inputs.debug == plan::DebugView::kMonoOnly;
+    return values;
 }
 
 void ModeRenderer::record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame) {

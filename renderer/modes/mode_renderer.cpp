@@ -101,35 +101,26 @@ passes::ForwardConfig forward_config(const RendererOptions& options, plan::Stere
     return config;
 }
 
-// Whether a frame's plan may have the composite write the display image (PlannedPass::
-// writes_display), asked of the plan itself: the composite's pipelines for it are made with the
-// renderer, never mid-run, and only when some frame will use them.
-bool composite_may_write_display(const vk_core::Context& ctx, plan::Mode mode,
-                                 const RendererOptions& renderer, bool blended_chunks) {
-    const plan::PlanOptions options =
-        plan_options_of(mode, renderer, blended_chunks, renderer.auto_mono_plane.has_value());
-    plan::PlanDevice device;
-    device.independent_blend = ctx.capabilities().independent_blend;
-    const plan::FramePlan plan = passes::plan_frame(options, plan::PlanFrame{}, device);
-    const plan::PlannedPass* composite = plan.find(plan::PassKind::kComposite, plan::ViewId::kLeft);
-    return composite != nullptr && composite->writes_display;
-}
-
 // The recorders of every unit a frame of this renderer may run (an executed pass of one of
-// `plans`), made with the renderer so that their pipelines are never compiled mid-run: a
-// session's frames compile nothing, and its frame log counts what they do. A debug view's unit is
-// left until a frame shows it (record_unit makes a recorder on its first pass).
+// `plans`), made with the renderer for all the passes it may record, so that their pipelines are
+// never compiled mid-run: a session's frames compile nothing, and its frame log counts what they
+// do. A debug view's unit is left until a frame shows it (record_unit makes a recorder on its
+// first pass).
 void make_unit_recorders(const vk_core::Context& ctx, const std::vector<plan::FramePlan>& plans,
                          const std::vector<plan::PassUnitDeclaration>& units,
                          std::map<std::string, std::unique_ptr<passes::UnitRecorder>>& recorders) {
+    std::map<std::string, passes::UnitPasses> unit_passes;
     for (const plan::FramePlan& plan : plans) {
         for (const plan::PlannedPass* pass : plan.executed()) {
             const auto unit = std::find_if(
                 units.begin(), units.end(),
                 [&](const plan::PassUnitDeclaration& u) { return u.name == pass->unit; });
-            if (unit == units.end() || unit->debug_view || recorders.count(pass->unit)) continue;
-            recorders[pass->unit] = passes::make_unit_recorder(pass->unit, ctx);
+            if (unit == units.end() || unit->debug_view) continue;
+            unit_passes[pass->unit].passes.emplace_back(&plan, pass);
         }
+    }
+    for (const auto& [unit, passes] : unit_passes) {
+        recorders[unit] = passes::make_unit_recorder(unit, ctx, passes);
     }
 }
 
@@ -154,8 +145,6 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       blended_chunks_(resources_->alpha_classes()[MONOPLANE_CLASS_BLENDED] > 0),
       forward_(ctx, resources_->textures().layout(),
                forward_config(options, plan::StereoPass::kTwoPasses, *resources_)),
-      composite_(ctx, options.anti_aliasing == plan::AntiAliasing::kTaa,
-                 composite_may_write_display(ctx, mode, options, blended_chunks_)),
       culling_(ctx, scene_, resources_->chunk_table(), resources_->level_table()),
       pyramid_(ctx),
       units_(passes::pass_unit_declarations()),
@@ -194,9 +183,6 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
                           : std::make_unique<View>(ctx, eye_extent, eye_features, eye_memory_.get(),
                                                    plan::eye_view(static_cast<int>(e)));
         make_view_sets(*eye);
-        if (composite_.writes_display()) {
-            eye->composite_hdr_set = composite_.make_eye_input(eye->hdr);
-        }
         if (blended_chunks_ && mode != plan::Mode::kStereo) {
             eye->composite_depth_set =
                 forward_.make_composite_depth_set(eye->linear_depth.view(), pyramid_.sampler());
@@ -253,8 +239,6 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     const bool taa = options_.anti_aliasing == plan::AntiAliasing::kTaa;
     mono_ = std::make_unique<MonoView>(ctx_, needed, ViewFeatures{taa, false}, possible_plans_);
     make_view_sets(*mono_);
-    mono_->composite_set =
-        composite_.make_source(mono_->hdr, mono_->linear_depth, taa ? &*mono_->velocity : nullptr);
     if (ssao_) mono_->ssao = ssao_->make_view(mono_->constants, mono_->linear_depth, needed);
 }
 

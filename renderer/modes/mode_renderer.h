@@ -21,7 +21,6 @@
 #include "renderer/modes/auto_mono_plane.h"
 #include "renderer/modes/scene_resources.h"
 #include "renderer/modes/view_setup.h"
-#include "renderer/passes/composite/composite_pass.h"
 #include "renderer/passes/culling/chunk_culling_pass.h"
 #include "renderer/passes/depth_pyramid/depth_pyramid_pass.h"
 #include "renderer/passes/forward/forward_pass.h"
@@ -258,10 +257,10 @@ class ModeRenderer {
                         const FrameState& frame, passes::StepSync& sync);
     void record_ssao(const vk::raii::CommandBuffer& cmd, const FrameState& frame,
                      passes::StepSync& sync);
-    void record_composite(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
-                          const FrameState& frame);
     void record_transparency(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass);
     void record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame);
+    // How C's image maps into each eye this frame (the composite unit's values).
+    passes::CompositeValues composite_values(const FrameState& frame) const;
     // A pass unit's pass, by its recorder (made on its first pass; unit_recording.cpp).
     void record_unit(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                      const FrameState& frame, passes::StepSync& sync);
@@ -286,7 +285,6 @@ class ModeRenderer {
     bool blended_chunks_;  // the scene has alphaMode BLEND chunks (frame_plan.h: PlanOptions)
     passes::ForwardPass forward_;
     std::unique_ptr<passes::ForwardPass> eyes_forward_;  // single-pass stereo: both eyes at once
-    passes::CompositePass composite_;
     passes::ChunkCullingPass culling_;
     passes::DepthPyramidPass pyramid_;
     std::unique_ptr<passes::SsaoPass> ssao_;

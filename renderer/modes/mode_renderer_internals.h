@@ -195,8 +195,6 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     vk::Extent2D area;                          // the region drawn (C: its viewport, eq. 8)
     passes::ViewConstants written_constants{};  // what this frame's constants hold
     vk_core::DescriptorSet forward_set;
-    // An eye's HDR image as the composite that writes the display image reads it.
-    vk_core::DescriptorSet composite_hdr_set;
     // Hybrid with blended chunks: the eye's linear depth after the composite, as its
     // transparency pass tests against it.
     vk_core::DescriptorSet composite_depth_set;
@@ -255,8 +253,6 @@ struct MonoMemory {
 // depth and velocity are sampled by the composite near the edge of its viewport, beyond which no
 // pass writes them: texels there must stay as they are). `plans`: every plan the renderer may run.
 struct ModeRenderer::MonoView : MonoMemory, View {
-    vk_core::DescriptorSet composite_set;
-
     MonoView(const vk_core::Context& ctx, vk::Extent2D size, const ViewFeatures& features,
              const std::vector<plan::FramePlan>& plans = {})
         : MonoMemory{plans.empty() ? TransientMemory()

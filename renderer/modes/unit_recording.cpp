@@ -90,7 +90,11 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
                                const FrameState& frame, passes::StepSync& sync) {
     MONOPLANE_EXPECTS(!pass.unit.empty());
     auto& recorder = unit_recorders_[pass.unit];
-    if (!recorder) recorder = passes::make_unit_recorder(pass.unit, ctx_);
+    if (!recorder) {
+        passes::UnitPasses passes;
+        passes.passes.emplace_back(&last_plan_, &pass);
+        recorder = passes::make_unit_recorder(pass.unit, ctx_, passes);
+    }
     passes::UnitFrameValues values;
     values.use_mono = frame.use_mono;
     values.mono_plane = frame.inputs->mono_plane;
@@ -99,6 +103,7 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     values.settings.tonemap = options_.tonemap;
     values.settings.taa = options_.taa;
     if (auto_mono_plane_) values.settings.depth_histogram = auto_mono_plane_->histogram_range();
+    if (pass.kind == plan::PassKind::kComposite) values.composite = composite_values(frame);
     UnitResolvers resolvers;
     resolvers.image = [this](const plan::ResourceKey& key) -> const vk_core::Image& {
         return view_image(key);

@@ -5,6 +5,7 @@
 #pragma once
 
 #define MONOPLANE_PASS_UNITS(X) \
+    X(composite)                \
     X(taa)                      \
     X(tonemap)                  \
     X(depth_view)               \

@@ -13,8 +13,10 @@
 
 namespace monoplane::passes {
 
-// The recorder of the unit named `unit` (PassUnitDeclaration::name), which must be registered.
+// The recorder of the unit named `unit` (PassUnitDeclaration::name), which must be registered,
+// for `passes` (the unit's passes the renderer may record; it makes their pipelines).
 std::unique_ptr<UnitRecorder> make_unit_recorder(const std::string& unit,
-                                                 const vk_core::Context& ctx);
+                                                 const vk_core::Context& ctx,
+                                                 const UnitPasses& passes);
 
 }  // namespace monoplane::passes

@@ -38,6 +38,9 @@ constexpr NameTable<DrawStep> kDrawStepNames = {
     {DrawStep::kSky, "sky"},
     {DrawStep::kBlended, "blended"}};
 
+// Why C's passes are skipped in a hybrid frame that draws no C (UnitPlacement::no_mono_reason).
+constexpr const char* kNoMonoReason = "m >= far: nothing lies beyond the mono plane, no C";
+
 // What shapes this frame's passes, derived once from the inputs (the renderer's own rules).
 struct FrameShape {
     bool hybrid = false;    // a hybrid mode, whether or not this frame draws C
@@ -46,7 +49,6 @@ struct FrameShape {
     bool depth_tested = false;      // the merged depth pyramid saves C's work
     bool occlusion_culled = false;  // ... and C's hidden chunks are not drawn
     bool predicated = false;
-    bool independent_blend = false;  // the composite may write the display image
     bool single_pass = false;
     bool taa = false;
     bool msaa = false;
@@ -63,7 +65,6 @@ FrameShape shape_of(const PlanOptions& options, const PlanFrame& frame, const Pl
                      frame.debug != DebugView::kMonoOnly;
     s.occlusion_culled = s.depth_tested && frame.mono_culling == MonoCulling::kOcclusionCull;
     s.predicated = device.conditional_rendering;
-    s.independent_blend = device.independent_blend;
     s.single_pass = options.stereo_pass != StereoPass::kTwoPasses;
     s.taa = options.anti_aliasing == AntiAliasing::kTaa;
     s.msaa = options.anti_aliasing != AntiAliasing::kNone && !s.taa;
@@ -72,9 +73,14 @@ FrameShape shape_of(const PlanOptions& options, const PlanFrame& frame, const Pl
 
 class PlanBuilder {
   public:
-    PlanBuilder(const PlanOptions& options, const PlanFrame& frame, const FrameShape& shape,
+    PlanBuilder(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device,
                 const std::vector<PassUnitDeclaration>& units)
-        : options_(options), frame_(frame), s_(shape), units_(units), r_(plan_) {}
+        : options_(options),
+          frame_(frame),
+          device_(device),
+          s_(shape_of(options, frame, device)),
+          units_(units),
+          r_(plan_) {}
 
     FramePlan build() {
         add_culling();
@@ -185,9 +191,7 @@ class PlanBuilder {
 
     void add_mono_passes() {
         const std::optional<std::string> no_mono =
-            s_.use_mono
-                ? std::nullopt
-                : std::optional<std::string>("m >= far: nothing lies beyond the mono plane, no C");
+            s_.use_mono ? std::nullopt : std::optional<std::string>(kNoMonoReason);
         {
             PlannedPass& pass = add(PassKind::kDepthPyramid);
             pass.steps = depth_pyramid_steps(r_);
@@ -214,13 +218,7 @@ class PlanBuilder {
             pass.when = when(GpuPredicate::kMonoAny);
             pass.skipped = no_mono;
         }
-        for (ViewId eye : kEyeViews) {
-            PlannedPass& pass = add(PassKind::kComposite, eye);
-            pass.statistics_scope = pass.name;
-            pass.steps = composite_steps(r_, eye, s_.taa);
-            pass.when = when(GpuPredicate::kMonoAny);
-            pass.skipped = no_mono;
-        }
+        add_units(UnitSlot::kComposite);
         if (options_.blended && s_.use_mono) add_transparency();
     }
 
@@ -255,59 +253,25 @@ class PlanBuilder {
             pass.steps = ssao_steps(r_, options_.ssao_stereo, s_.use_mono);
         }
         add_units(UnitSlot::kBeforeToneMapping);
-        fuse_composites();
+        revise_units();
         add_units(UnitSlot::kToneMapping);
     }
 
     void add_units(UnitSlot slot) {
         for (const PassUnitDeclaration& unit : units_) {
             if (unit.slot != slot) continue;
-            UnitPlacement placement(unit, options_, frame_, s_.predicated, plan_, r_);
+            UnitPlacement placement(unit, options_, frame_, device_, plan_, r_);
             unit.place(placement);
         }
     }
 
-    PlannedPass* find_pass(PassKind kind, ViewId view) {
-        for (PlannedPass& pass : plan_.passes) {
-            if (pass.kind == kind && pass.view == view) return &pass;
-        }
-        return nullptr;
-    }
-
-    // Whether no pass after `composite` uses the eye's HDR image (TAA, SSAO and the blended
-    // chunks do): then only the eye's tone mapping, placed next, would read it.
-    bool hdr_unread_after(ViewId eye, const PlannedPass& composite) {
-        const std::uint16_t hdr = r_.image(eye, ImageRole::kHdr).index;
-        const auto uses_hdr = [&](const PlannedPass& pass) {
-            return std::any_of(pass.steps.begin(), pass.steps.end(), [&](const graph::Step& step) {
-                return std::any_of(
-                    step.uses.begin(), step.uses.end(),
-                    [&](const graph::ResourceUse& use) { return use.resource == hdr; });
-            });
-        };
-        bool after = false;
-        for (const PlannedPass& pass : plan_.passes) {
-            if (after && uses_hdr(pass)) return false;
-            after = after || &pass == &composite;
-        }
-        return true;
-    }
-
-    // One full-screen pass per eye where the eye's linear colour has no reader but its tone
-    // mapping: the composite writes the display image itself (one pass's fixed cost and the HDR
-    // image's write and read of every far pixel saved). When C has nothing to draw the GPU skips
-    // the composite, so with predicates the tone mapping (the unit, renderer/passes/tonemap) stays
-    // for that case alone, loading what the composite wrote otherwise; without them C always
-    // draws and the tone mapping is not needed. Decided before the tone mapping is placed, which
-    // reads the verdict (PlannedPass::writes_display); the units after it do not read the eyes'
-    // HDR images (UnitSlot::kAfterToneMapping).
-    void fuse_composites() {
-        if (!s_.use_mono || options_.separate_tonemap || !s_.independent_blend) return;
-        for (ViewId eye : kEyeViews) {
-            PlannedPass* composite = find_pass(PassKind::kComposite, eye);
-            if (composite == nullptr || !hdr_unread_after(eye, *composite)) continue;
-            composite->writes_display = true;
-            composite->steps = composite_display_steps(r_, eye);
+    // Every unit revises what it placed once the passes before the tone mapping are known (the
+    // composite decides whether it writes the display image).
+    void revise_units() {
+        for (const PassUnitDeclaration& unit : units_) {
+            if (unit.revise == nullptr) continue;
+            UnitPlacement placement(unit, options_, frame_, device_, plan_, r_);
+            unit.revise(placement);
         }
     }
 
@@ -373,7 +337,8 @@ class PlanBuilder {
 
     const PlanOptions& options_;
     const PlanFrame& frame_;
-    const FrameShape& s_;
+    const PlanDevice& device_;
+    const FrameShape s_;
     const std::vector<PassUnitDeclaration>& units_;
     FramePlan plan_;
     PlanResources r_;
@@ -530,8 +495,7 @@ FramePlan plan_frame(const PlanOptions& options, const PlanFrame& frame, const P
             programming_error("pass unit '" + unit.name + "' has the name of a built-in kind");
         }
     }
-    const FrameShape shape = shape_of(options, frame, device);
-    return PlanBuilder(options, frame, shape, units).build();
+    return PlanBuilder(options, frame, device, units).build();
 }
 
 PlannedPass& UnitPlacement::add_pass(ViewId view) {
@@ -546,6 +510,32 @@ PlannedPass& UnitPlacement::add_pass(ViewId view) {
 
 void UnitPlacement::read_by_host(graph::BufferHandle buffer) {
     plan_.exports.push_back({buffer.index, graph::Use::kHostRead});
+}
+
+std::optional<std::string> UnitPlacement::no_mono_reason() const {
+    if (draws_mono()) return std::nullopt;
+    return std::string(kNoMonoReason);
+}
+
+std::vector<PlannedPass*> UnitPlacement::own_passes() {
+    std::vector<PlannedPass*> own;
+    for (PlannedPass& pass : plan_.passes) {
+        if (pass.unit == unit_.name) own.push_back(&pass);
+    }
+    return own;
+}
+
+bool UnitPlacement::used_after(const PlannedPass& pass, graph::ImageHandle image) const {
+    bool after = false;
+    for (const PlannedPass& other : plan_.passes) {
+        if (after && std::any_of(other.steps.begin(), other.steps.end(), [&](const graph::Step& s) {
+                return step_declares(s, image.index);
+            })) {
+            return true;
+        }
+        after = after || &other == &pass;
+    }
+    return false;
 }
 
 bool step_declares(const graph::Step& step, std::uint16_t resource) {

@@ -144,20 +144,6 @@ std::vector<Step> mono_ssao_steps(PlanResources& r) {
     return steps;
 }
 
-std::vector<Step> composite_steps(PlanResources& r, ViewId eye, bool velocity) {
-    std::vector<Step> steps;
-    StepBuilder step(add_step(steps, "composite"));
-    step.use(r.image(ViewId::kMono, ImageRole::kHdr), Use::kSampledFragment)
-        .use(r.image(ViewId::kMono, ImageRole::kLinearDepth), Use::kSampledFragment);
-    if (velocity) step.use(r.image(ViewId::kMono, ImageRole::kVelocity), Use::kSampledFragment);
-    // C shows where the eye drew nothing nearer: depth-tested against the eye, blended into it.
-    step.use(r.image(eye, ImageRole::kDepth), Use::kDepthTest)
-        .use(r.image(eye, ImageRole::kHdr), Use::kColorBlend)
-        .use(r.image(eye, ImageRole::kLinearDepth), Use::kColorBlend);
-    if (velocity) step.use(r.image(eye, ImageRole::kVelocity), Use::kColorBlend);
-    return steps;
-}
-
 std::vector<Step> transparency_steps(PlanResources& r, ViewId eye) {
     std::vector<Step> steps;
     StepBuilder(add_step(steps, "draw"))
@@ -166,18 +152,6 @@ std::vector<Step> transparency_steps(PlanResources& r, ViewId eye) {
         .use(r.shared(ImageRole::kShadowMap), Use::kSampledFragment)
         .use(r.image(eye, ImageRole::kLinearDepth), Use::kSampledFragment)
         .use(r.image(eye, ImageRole::kHdr), Use::kColorBlend);
-    return steps;
-}
-
-std::vector<Step> composite_display_steps(PlanResources& r, ViewId eye) {
-    std::vector<Step> steps;
-    StepBuilder(add_step(steps, "composite"))
-        .use(r.image(ViewId::kMono, ImageRole::kHdr), Use::kSampledFragment)
-        .use(r.image(ViewId::kMono, ImageRole::kLinearDepth), Use::kSampledFragment)
-        .use(r.image(eye, ImageRole::kHdr), Use::kSampledFragment)
-        .use(r.image(eye, ImageRole::kDepth), Use::kDepthTest)
-        .use(r.image(eye, ImageRole::kLinearDepth), Use::kColorBlend)
-        .use(r.image(eye, ImageRole::kDisplay), Use::kColorWrite);
     return steps;
 }
 

@@ -45,13 +45,9 @@ std::vector<graph::Step> depth_pyramid_steps(PlanResources& r);
 std::vector<graph::Step> occlusion_culling_steps(PlanResources& r);
 // C's SSAO: estimate, filter-x, filter-y over C alone, then "apply" into C's HDR.
 std::vector<graph::Step> mono_ssao_steps(PlanResources& r);
-std::vector<graph::Step> composite_steps(PlanResources& r, ViewId eye, bool velocity);
 // Hybrid's blended chunks drawn into the eye after the composite: tested against the eye's
 // linear depth (sampled), blended into its HDR image.
 std::vector<graph::Step> transparency_steps(PlanResources& r, ViewId eye);
-// The composite that tone maps into the eye's display image (PlannedPass::writes_display): it
-// reads the eye's HDR image instead of blending into it, and writes the display image whole.
-std::vector<graph::Step> composite_display_steps(PlanResources& r, ViewId eye);
 // The eyes' SSAO: per eye (estimate, filter-x, filter-y each) or stereo-consistent (visibility,
 // estimate, filter-x, filter-y, each once per eye over both eyes' images: "visibility-left",
 // "visibility-right", ...), then "left.apply" and

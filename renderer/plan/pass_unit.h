@@ -33,11 +33,14 @@ namespace monoplane::plan {
 // Where in the frame a unit's passes go. The built-in kinds' order is plan_frame's; a unit takes
 // its place between them.
 enum class UnitSlot {
+    // In the hybrid modes only, after C's passes (its forward pass and SSAO), before the eyes'
+    // blended chunks: a unit that maps C into the eyes (the composite).
+    kComposite,
     // After the eyes' SSAO, before their tone mapping: a unit that resolves an eye's colour (TAA,
     // whose output the tone mapping then reads).
     kBeforeToneMapping,
-    // The tone mapping itself, once the plan has decided which composites write the display
-    // images (PlannedPass::writes_display).
+    // The tone mapping itself, once the units have revised what they placed (the composite has
+    // decided whether it writes the display image: PlannedPass::writes_display).
     kToneMapping,
     // After the eyes' (and C's) tone mapping, before the read-back: a unit that reads or replaces
     // the display images (a debug view) or reads the final depths (the depth histogram). Not
@@ -63,30 +66,43 @@ struct PassUnitDeclaration {
     // Adds the unit's passes to this frame, if any (a plain function: a unit holds no state in
     // its declaration).
     void (*place)(UnitPlacement& placement) = nullptr;
+    // Revises the passes place() added (UnitPlacement::own_passes) once every pass before the
+    // tone mapping is placed, before the tone mapping itself; nullptr: nothing to revise. What
+    // a unit can know only when it sees what comes after it: whether a later pass reads an image
+    // it writes (UnitPlacement::used_after).
+    void (*revise)(UnitPlacement& placement) = nullptr;
 };
 
 // What a unit's place() reads (the frame's inputs) and adds to (the plan).
 class UnitPlacement {
   public:
     UnitPlacement(const PassUnitDeclaration& unit, const PlanOptions& options,
-                  const PlanFrame& frame, bool predicated, FramePlan& plan,
+                  const PlanFrame& frame, const PlanDevice& device, FramePlan& plan,
                   PlanResources& resources)
         : unit_(unit),
           options_(options),
           frame_(frame),
-          predicated_(predicated),
+          device_(device),
           plan_(plan),
           resources_(resources) {}
 
     const PlanOptions& options() const { return options_; }
     const PlanFrame& frame() const { return frame_; }
+    const PlanDevice& device() const { return device_; }
     // The passes placed so far (the kinds and units before this slot), to read.
     const FramePlan& plan() const { return plan_; }
     // The device evaluates GPU predicates (PlanDevice::conditional_rendering): a pass may run
     // under one (PlannedPass::when); without, every pass runs as planned.
-    bool predicated() const { return predicated_; }
+    bool predicated() const { return device_.conditional_rendering; }
+    // `predicate` where the device evaluates predicates, else kAlways.
+    GpuPredicate when(GpuPredicate predicate) const {
+        return predicated() ? predicate : GpuPredicate::kAlways;
+    }
     // A hybrid mode that draws C this frame (something lies beyond m).
     bool draws_mono() const { return options_.mode != Mode::kStereo && !frame_.mono_skipped; }
+    // Why a pass of C's (or one that maps C) is skipped this frame: set when a hybrid mode draws
+    // no C (PlanFrame::mono_skipped), the words every such pass gives.
+    std::optional<std::string> no_mono_reason() const;
     // Whether this frame shows this unit's debug view.
     bool debug_view_shown() const {
         return unit_.debug_view && frame_.unit_debug_view == *unit_.debug_view;
@@ -99,12 +115,17 @@ class UnitPlacement {
     // The host reads `buffer` once the frame has completed (a result the renderer takes back):
     // what keeps the passes that write it from being culled.
     void read_by_host(graph::BufferHandle buffer);
+    // This unit's passes placed so far, in plan order, to revise (PassUnitDeclaration::revise).
+    // Valid until the next add_pass.
+    std::vector<PlannedPass*> own_passes();
+    // Whether a pass placed after `pass` (one of the plan's) uses `image` in any step.
+    bool used_after(const PlannedPass& pass, graph::ImageHandle image) const;
 
   private:
     const PassUnitDeclaration& unit_;
     const PlanOptions& options_;
     const PlanFrame& frame_;
-    bool predicated_;
+    const PlanDevice& device_;
     FramePlan& plan_;
     PlanResources& resources_;
 };

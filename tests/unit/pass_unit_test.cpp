@@ -281,5 +281,62 @@ TEST(PassUnit, TheToneMappingIsAUnitThatDeclaresItsFusedVariant) {
     EXPECT_EQ(stereo.reads(*stereo.find(PassKind::kTonemap, ViewId::kRight)), Names{"right.hdr"});
 }
 
+// The composite is a built-in kind written as a unit (renderer/passes/composite/
+// composite_unit.cpp): per eye in the hybrid modes only, after C's passes, under mono-any with
+// predicates, skipped with C. It tone maps (writes_display) exactly where no pass placed after it
+// uses the eye's HDR image: a unit before the tone mapping that reads left.hdr keeps the left
+// composite a blend into left.hdr, and the right one still fuses.
+void place_left_hdr_reader(UnitPlacement& placement) {
+    PlannedPass& pass = placement.add_pass(ViewId::kLeft);
+    graph::Step& step = pass.steps.emplace_back();
+    step.name = "read";
+    graph::StepBuilder(step)
+        .use(placement.resources().image(ViewId::kLeft, ImageRole::kHdr),
+             graph::Use::kSampledFragment)
+        .use(placement.resources().image(ViewId::kLeft, ImageRole::kHistory),
+             graph::Use::kColorWrite);
+}
+
+TEST(PassUnit, TheCompositeFusesOnlyWhereNoLaterPassUsesTheEyesHdrImage) {
+    const PlanFrame drawn;
+    EXPECT_EQ(plan_frame(options_for(Mode::kHybrid), drawn, PlanDevice{}, {})
+                  .find(PassKind::kComposite, ViewId::kLeft),
+              nullptr);
+    EXPECT_EQ(passes::plan_frame(options_for(Mode::kStereo), drawn, PlanDevice{})
+                  .find(PassKind::kComposite, ViewId::kLeft),
+              nullptr);
+    std::vector<PassUnitDeclaration> units = passes::pass_unit_declarations();
+    PassUnitDeclaration reader;
+    reader.name = "left_hdr_reader";
+    reader.slot = UnitSlot::kBeforeToneMapping;
+    reader.place = &place_left_hdr_reader;
+    units.push_back(reader);
+    const FramePlan plan = plan_frame(options_for(Mode::kHybrid), drawn, PlanDevice{true}, units);
+    const PlannedPass* left = plan.find(PassKind::kComposite, ViewId::kLeft);
+    const PlannedPass* right = plan.find(PassKind::kComposite, ViewId::kRight);
+    ASSERT_NE(left, nullptr);
+    ASSERT_NE(right, nullptr);
+    EXPECT_EQ(left->unit, "composite");
+    EXPECT_EQ(left->statistics_scope, "left.composite");
+    EXPECT_EQ(left->when, GpuPredicate::kMonoAny);
+    EXPECT_FALSE(left->writes_display);
+    EXPECT_EQ(plan.writes(*left), (Names{"left.hdr", "left.linear_depth"}));
+    EXPECT_TRUE(right->writes_display);
+    EXPECT_EQ(plan.writes(*right), (Names{"right.linear_depth", "right.display"}));
+    EXPECT_EQ(plan.reads(*right), (Names{"mono.hdr", "mono.linear_depth", "right.hdr",
+                                         "right.depth", "right.linear_depth", "predicates"}));
+    // The left eye's tone mapping is its own pass, reading what the composite blended.
+    EXPECT_EQ(plan.find(PassKind::kTonemap, ViewId::kLeft)->when, GpuPredicate::kAlways);
+    // No C this frame: both composites are skipped, saying why, and neither fuses.
+    const FramePlan skipped =
+        plan_frame(options_for(Mode::kHybrid), showing("", true), PlanDevice{true}, units);
+    for (ViewId eye : kEyeViews) {
+        const PlannedPass* composite = skipped.find(PassKind::kComposite, eye);
+        ASSERT_NE(composite, nullptr);
+        EXPECT_EQ(composite->skipped, "m >= far: nothing lies beyond the mono plane, no C");
+        EXPECT_FALSE(composite->writes_display);
+    }
+}
+
 }  // namespace
 }  // namespace monoplane::plan

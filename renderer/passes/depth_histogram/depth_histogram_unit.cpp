@@ -150,7 +150,7 @@ class DepthHistogramRecorder final : public UnitRecorder {
 
 }  // namespace
 
-std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx) {
+std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitPasses&) {
     return std::make_unique<DepthHistogramRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

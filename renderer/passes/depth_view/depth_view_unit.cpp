@@ -106,7 +106,7 @@ class DepthViewRecorder final : public UnitRecorder {
 
 }  // namespace
 
-std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx) {
+std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitPasses&) {
     return std::make_unique<DepthViewRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

@@ -14,10 +14,14 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string_view>
+#include <utility>
+#include <vector>
 
+#include "renderer/passes/shared/composite_values.h"
 #include "renderer/passes/shared/indirect_draws.h"
 #include "renderer/passes/shared/unit_settings.h"
 #include "renderer/plan/frame_plan.h"
@@ -36,6 +40,20 @@ struct UnitFrameValues {
     // the last frame's resolve is not to be read.
     bool history_restarted = true;
     UnitSettings settings;  // the renderer's options for the units
+    // How C maps into the eyes this frame: set for the composite's passes (PassKind::kComposite).
+    CompositeValues composite;
+};
+
+// The passes of one unit that the renderer's frames may run (those of every plan it may make),
+// which the unit's recorder makes its pipelines for when it is made: never one mid-run.
+struct UnitPasses {
+    // Each pass with the plan it belongs to (for its resource table).
+    std::vector<std::pair<const plan::FramePlan*, const plan::PlannedPass*>> passes;
+
+    // Whether `test` holds for any of the passes.
+    bool any(const std::function<bool(const plan::PlannedPass&)>& test) const;
+    // Whether a step of any of the passes declares `view`'s image `role`.
+    bool any_declares(plan::ViewId view, plan::ImageRole role) const;
 };
 
 class UnitRecording {

@@ -143,7 +143,7 @@ class TaaRecorder final : public UnitRecorder {
 
 }  // namespace
 
-std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx) {
+std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitPasses&) {
     return std::make_unique<TaaRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

@@ -67,8 +67,7 @@ void place(plan::UnitPlacement& placement) {
     plan::PlannedPass& pass = placement.add_pass(plan::ViewId::kMono);
     declare_tonemap(pass, placement.resources(), plan::ViewId::kMono, plan::ImageRole::kHdr,
                     graph::Use::kColorWrite);
-    if (!placement.draws_mono())
-        pass.skipped = "m >= far: nothing lies beyond the mono plane, no C";
+    pass.skipped = placement.no_mono_reason();
 }
 
 }  // namespace
@@ -138,7 +137,7 @@ class TonemapRecorder final : public UnitRecorder {
 
 }  // namespace
 
-std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx) {
+std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitPasses&) {
     return std::make_unique<TonemapRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER
