@@ -2,26 +2,11 @@
 // records a barrier: the executor (graph_executor.h) places the compiled ones before each step.
 #include <algorithm>
 
-#include "renderer/executor/image_layouts.h"
 #include "renderer/modes/mode_renderer_internals.h"
 #include "renderer/passes/culling/cull_constants.h"
 #include "rig/temporal_jitter.h"
 
 namespace monoplane::modes {
-namespace {
-
-// A colour image to a host buffer; the render graph made the image a transfer source.
-void copy_to_buffer(const vk::raii::CommandBuffer& cmd, const vk_core::Image& image,
-                    vk::Extent2D extent, const vk_core::Buffer& buffer) {
-    cmd.copyImageToBuffer(
-        image.handle(), executor::layout_for(graph::Use::kTransferSrc), buffer.handle(),
-        vk::BufferImageCopy(
-            0, 0, 0,
-            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, image.base_layer(), 1),
-            {0, 0, 0}, vk::Extent3D(extent, 1)));
-}
-
-}  // namespace
 
 void ModeRenderer::record_pass(const vk::raii::CommandBuffer& cmd, std::size_t index,
                                const FrameState& frame) {
@@ -86,11 +71,9 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan
                 ssao_->record_apply(cmd, sync, *mono_->ssao, mono_->hdr, mono_->area);
             });
             break;
-        case plan::PassKind::kReadback:
-            record_readback(cmd, frame);
-            break;
         // The kinds written as units (renderer/passes/pass_unit_list.h).
         case plan::PassKind::kComposite:
+        case plan::PassKind::kReadback:
         case plan::PassKind::kTaa:
         case plan::PassKind::kTonemap:
         case plan::PassKind::kDepthHistogram:
@@ -202,20 +185,6 @@ passes::CompositeValues ModeRenderer::composite_values(const FrameState& frame) 
         values.mapping = passes::CompositeMapping::kNothing;
     values.cover_all_pixels = inputs.debug == plan::DebugView::kMonoOnly;
     return values;
-}
-
-void ModeRenderer::record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame) {
-    for (const auto& view : eyes_) {
-        if (options_.read_back) copy_to_buffer(cmd, view->display, view->extent, view->readback);
-        if (options_.read_back_depth) {
-            copy_to_buffer(cmd, view->linear_depth, view->extent, view->depth_readback);
-        }
-        if (options_.read_back_ao) ssao_->record_readback(cmd, *view->ssao);
-    }
-    if (frame.use_mono && options_.read_back) {
-        copy_to_buffer(cmd, mono_->display, mono_->area, mono_->readback);
-    }
-    culling_.record_readback(cmd, options_.read_back_draw_lists, frame.slot);
 }
 
 }  // namespace monoplane::modes

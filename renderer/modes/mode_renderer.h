@@ -258,7 +258,6 @@ class ModeRenderer {
     void record_ssao(const vk::raii::CommandBuffer& cmd, const FrameState& frame,
                      passes::StepSync& sync);
     void record_transparency(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass);
-    void record_readback(const vk::raii::CommandBuffer& cmd, const FrameState& frame);
     // How C's image maps into each eye this frame (the composite unit's values).
     passes::CompositeValues composite_values(const FrameState& frame) const;
     // A pass unit's pass, by its recorder (made on its first pass; unit_recording.cpp).

@@ -100,6 +100,9 @@ const vk_core::Image& ModeRenderer::view_image(const plan::ResourceKey& key) con
             case plan::ImageRole::kDisplay:
                 image = &view->display;
                 break;
+            case plan::ImageRole::kAo:
+                image = view->ssao ? &view->ssao->ao() : nullptr;
+                break;
             default:
                 break;
         }
@@ -114,9 +117,38 @@ const vk_core::Image& ModeRenderer::view_image(const plan::ResourceKey& key) con
 const vk_core::Buffer& ModeRenderer::frame_buffer(const plan::ResourceKey& key,
                                                   std::uint32_t slot) const {
     MONOPLANE_EXPECTS(key.is_buffer);
-    if (key.buffer == plan::BufferRole::kDepthHistogram && key.view == plan::ViewId::kNone &&
-        auto_mono_plane_) {
-        return auto_mono_plane_->histogram_buffer(slot);
+    if (key.view == plan::ViewId::kNone) {
+        switch (key.buffer) {
+            case plan::BufferRole::kDepthHistogram:
+                if (auto_mono_plane_) return auto_mono_plane_->histogram_buffer(slot);
+                break;
+            case plan::BufferRole::kDrawLists:
+                return culling_.commands_buffer();
+            case plan::BufferRole::kPredicates:
+                return culling_.counts_buffer();
+            case plan::BufferRole::kCountsReadback:
+                return culling_.counts_readback(slot);
+            case plan::BufferRole::kListsReadback:
+                return culling_.commands_readback();
+            default:
+                break;
+        }
+    } else if (key.view != plan::ViewId::kEyes) {
+        const View* view =
+            key.view == plan::ViewId::kMono ? mono_.get() : eyes_[plan::eye_index(key.view)].get();
+        if (view != nullptr) {
+            switch (key.buffer) {
+                case plan::BufferRole::kReadback:
+                    return view->readback;
+                case plan::BufferRole::kDepthReadback:
+                    return view->depth_readback;
+                case plan::BufferRole::kAoReadback:
+                    if (view->ssao) return view->ssao->readback();
+                    break;
+                default:
+                    break;
+            }
+        }
     }
     programming_error("a pass unit asked for " + plan::resource_name(key) +
                       ", which no unit is offered yet");

@@ -43,6 +43,12 @@ class Recording final : public passes::UnitRecording {
         return handle && plan::step_declares(pass_.steps[step_], *handle);
     }
 
+    bool declares(plan::ViewId view, plan::BufferRole role) const override {
+        const std::optional<std::uint16_t> handle =
+            plan_.handle({view, true, plan::ImageRole::kHdr, role});
+        return handle && plan::step_declares(pass_.steps[step_], *handle);
+    }
+
     const vk_core::Buffer& buffer(plan::ViewId view, plan::BufferRole role) override {
         const plan::ResourceKey key{view, true, plan::ImageRole::kHdr, role};
         expect_declared(key);
@@ -104,6 +110,7 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     values.settings.taa = options_.taa;
     if (auto_mono_plane_) values.settings.depth_histogram = auto_mono_plane_->histogram_range();
     if (pass.kind == plan::PassKind::kComposite) values.composite = composite_values(frame);
+    if (frame.use_mono) values.mono_area = mono_->area;
     UnitResolvers resolvers;
     resolvers.image = [this](const plan::ResourceKey& key) -> const vk_core::Image& {
         return view_image(key);

@@ -9,4 +9,5 @@
     X(taa)                      \
     X(tonemap)                  \
     X(depth_view)               \
-    X(depth_histogram)
+    X(depth_histogram)          \
+    X(readback)

@@ -89,7 +89,7 @@ class PlanBuilder {
         if (s_.hybrid) add_mono_passes();
         add_post_processing();
         add_units(UnitSlot::kAfterToneMapping);
-        add_readback();
+        add_units(UnitSlot::kReadBack);
         add_exports();
         declare_predicate_reads();
         cull_unread_passes();
@@ -272,23 +272,6 @@ class PlanBuilder {
             if (unit.revise == nullptr) continue;
             UnitPlacement placement(unit, options_, frame_, device_, plan_, r_);
             unit.revise(placement);
-        }
-    }
-
-    void add_readback() {
-        PlannedPass& pass = add(PassKind::kReadback);
-        ReadbackUses uses;
-        uses.color = options_.read_back;
-        uses.depth = options_.read_back_depth;
-        uses.ao = options_.read_back_ao;
-        uses.mono_color = s_.use_mono && options_.read_back;
-        uses.draw_lists = options_.read_back_draw_lists;
-        pass.steps = readback_steps(r_, uses);
-        // The host reads every buffer the copies wrote once the frame's fence has signalled.
-        for (const graph::ResourceUse& use : pass.steps.front().uses) {
-            if (use.use == graph::Use::kTransferDst) {
-                plan_.exports.push_back({use.resource, graph::Use::kHostRead});
-            }
         }
     }
 

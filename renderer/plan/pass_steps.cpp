@@ -177,26 +177,4 @@ std::vector<Step> ssao_steps(PlanResources& r, bool stereo, bool near_only) {
     return steps;
 }
 
-std::vector<Step> readback_steps(PlanResources& r, const ReadbackUses& uses) {
-    std::vector<Step> steps;
-    StepBuilder step(add_step(steps, "copy"));
-    const auto copy = [&](ViewId view, ImageRole from, BufferRole to) {
-        step.use(r.image(view, from), Use::kTransferSrc).use(r.buffer(view, to), Use::kTransferDst);
-    };
-    for (ViewId eye : kEyeViews) {
-        if (uses.color) copy(eye, ImageRole::kDisplay, BufferRole::kReadback);
-        if (uses.depth) copy(eye, ImageRole::kLinearDepth, BufferRole::kDepthReadback);
-        if (uses.ao) copy(eye, ImageRole::kAo, BufferRole::kAoReadback);
-    }
-    if (uses.mono_color) copy(ViewId::kMono, ImageRole::kDisplay, BufferRole::kReadback);
-    // The culling counts, always (the frame's statistics).
-    step.use(r.shared(BufferRole::kPredicates), Use::kTransferSrc)
-        .use(r.shared(BufferRole::kCountsReadback), Use::kTransferDst);
-    if (uses.draw_lists) {
-        step.use(r.shared(BufferRole::kDrawLists), Use::kTransferSrc)
-            .use(r.shared(BufferRole::kListsReadback), Use::kTransferDst);
-    }
-    return steps;
-}
-
 }  // namespace monoplane::plan

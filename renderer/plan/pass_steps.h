@@ -54,13 +54,5 @@ std::vector<graph::Step> transparency_steps(PlanResources& r, ViewId eye);
 // "right.apply"; near_only: hybrid, the apply is depth-tested against the eye's near content.
 std::vector<graph::Step> ssao_steps(PlanResources& r, bool stereo, bool near_only);
 
-struct ReadbackUses {
-    bool color = true;
-    bool depth = false;
-    bool ao = false;
-    bool mono_color = false;
-    bool draw_lists = false;
-};
-std::vector<graph::Step> readback_steps(PlanResources& r, const ReadbackUses& uses);
 
 }  // namespace monoplane::plan

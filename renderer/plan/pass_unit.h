@@ -46,6 +46,8 @@ enum class UnitSlot {
     // the display images (a debug view) or reads the final depths (the depth histogram). Not
     // the eyes' HDR images: where a composite wrote the display image, they lack C's colour.
     kAfterToneMapping,
+    // Last: the copies the host reads once the frame has completed (the read-back).
+    kReadBack,
 };
 
 class UnitPlacement;

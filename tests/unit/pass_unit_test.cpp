@@ -338,5 +338,51 @@ TEST(PassUnit, TheCompositeFusesOnlyWhereNoLaterPassUsesTheEyesHdrImage) {
     }
 }
 
+// The read-back is a built-in kind written as a unit (renderer/passes/readback/readback_unit.cpp):
+// last in every frame, after the depth histogram, one "copy" step of what the renderer was asked
+// to read back, each buffer marked as read by the host; the culling's counts always, C's display
+// image only in a frame that draws C. Without the registered units a plan has none.
+TEST(PassUnit, TheReadBackIsAUnitLastInTheFrameWhoseBuffersTheHostReads) {
+    PlanOptions options = options_for(Mode::kHybrid, false, true);
+    options.read_back_depth = true;
+    options.read_back_ao = true;
+    options.read_back_draw_lists = true;
+    options.depth_histogram = true;
+    EXPECT_EQ(plan_frame(options, PlanFrame{}, PlanDevice{}, {}).find(PassKind::kReadback),
+              nullptr);
+    const FramePlan plan = passes::plan_frame(options, PlanFrame{}, PlanDevice{});
+    ASSERT_FALSE(plan.passes.empty());
+    const PlannedPass& readback = plan.passes.back();
+    EXPECT_EQ(&readback, plan.find(PassKind::kReadback));
+    EXPECT_EQ(readback.unit, "readback");
+    EXPECT_EQ(readback.name, "readback");
+    ASSERT_EQ(readback.steps.size(), 1u);
+    EXPECT_EQ(readback.steps[0].name, "copy");
+    EXPECT_EQ(plan.passes[plan.passes.size() - 2].kind, PassKind::kDepthHistogram);
+    EXPECT_EQ(plan.reads(readback), (Names{"left.display", "left.linear_depth", "left.ao",
+                                           "right.display", "right.linear_depth", "right.ao",
+                                           "mono.display", "predicates", "draw_lists"}));
+    const Names written = {"left.readback",  "left.depth_readback",  "left.ao_readback",
+                           "right.readback", "right.depth_readback", "right.ao_readback",
+                           "mono.readback",  "counts_readback",      "lists_readback"};
+    EXPECT_EQ(plan.writes(readback), written);
+    for (const std::string& name : written) {
+        const auto exported = std::find_if(
+            plan.exports.begin(), plan.exports.end(), [&](const graph::ResourceUse& e) {
+                return plan.resources[e.resource].name == name && e.use == graph::Use::kHostRead;
+            });
+        EXPECT_NE(exported, plan.exports.end()) << name;
+    }
+    // No C this frame, and only what is always read back: the counts.
+    PlanOptions least = options_for(Mode::kHybrid);
+    least.read_back = false;
+    const FramePlan skipped = passes::plan_frame(least, showing("", true), PlanDevice{});
+    const PlannedPass* counts = skipped.find(PassKind::kReadback);
+    ASSERT_NE(counts, nullptr);
+    EXPECT_EQ(skipped.reads(*counts), Names{"predicates"});
+    EXPECT_EQ(skipped.writes(*counts), Names{"counts_readback"});
+    EXPECT_FALSE(counts->skipped);
+}
+
 }  // namespace
 }  // namespace monoplane::plan

@@ -92,6 +92,16 @@ class ChunkCullingPass {
     void record_readback(const vk::raii::CommandBuffer& cmd, bool lists,
                          std::uint32_t slot = 0) const;
 
+    // The buffers the read-back copies (the frame plan's draw_lists, predicates, counts_readback
+    // and lists_readback): the draw lists, the counts, the slot's copy of the counts, and the
+    // one copy of the lists.
+    const vk_core::Buffer& commands_buffer() const { return commands_; }
+    const vk_core::Buffer& counts_buffer() const { return counts_; }
+    const vk_core::Buffer& counts_readback(std::uint32_t slot) const {
+        return counts_readback_.at(slot);
+    }
+    const vk_core::Buffer& commands_readback() const { return commands_readback_; }
+
     // A view's draws of one alpha class; chunk_draws: all three.
     IndirectDraws draws(CullView view, std::uint32_t alpha_class = MONOPLANE_CLASS_OPAQUE) const;
     ChunkDraws chunk_draws(CullView view) const;

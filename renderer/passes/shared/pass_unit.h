@@ -42,6 +42,9 @@ struct UnitFrameValues {
     UnitSettings settings;  // the renderer's options for the units
     // How C maps into the eyes this frame: set for the composite's passes (PassKind::kComposite).
     CompositeValues composite;
+    // C's viewport in its images (eq. 8): the part of its allocation this frame drew, when
+    // use_mono.
+    vk::Extent2D mono_area{};
 };
 
 // The passes of one unit that the renderer's frames may run (those of every plan it may make),
@@ -68,6 +71,8 @@ class UnitRecording {
     // Whether the pass's current step declares `view`'s image `role`: what image() hands over
     // (a recorder whose declaration chose between images asks which).
     virtual bool declares(plan::ViewId view, plan::ImageRole role) const = 0;
+    // The same for `view`'s buffer `role` (kNone: a shared buffer).
+    virtual bool declares(plan::ViewId view, plan::BufferRole role) const = 0;
     // The buffer of `view`'s `role` this frame (kNone: the frame's own, as the depth histogram's),
     // under the same rule.
     virtual const vk_core::Buffer& buffer(plan::ViewId view, plan::BufferRole role) = 0;

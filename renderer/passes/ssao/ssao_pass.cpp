@@ -128,7 +128,6 @@ struct SsaoView::State {
     // The result, eShaderReadOnlyOptimal between recordings (eGeneral while written).
     vk_core::Image ao;
     vk_core::Buffer readback;
-    bool read_back = false;
     vk::raii::DescriptorPool pool{nullptr};
     vk::raii::DescriptorSet compute_set{nullptr};  // ssao_common.glsl's bindings of one view
     vk::raii::DescriptorSet apply_set{nullptr};    // the AO, sampled
@@ -161,8 +160,11 @@ vk::Extent2D SsaoView::extent() const {
     return state_->extent;
 }
 
+const vk_core::Buffer& SsaoView::readback() const {
+    return state_->readback;
+}
+
 std::vector<float> SsaoView::ao_values() const {
-    if (!state_->read_back) return {};
     std::vector<float> values(std::size_t{state_->extent.width} * state_->extent.height);
     std::memcpy(values.data(), state_->readback.mapped(), values.size() * sizeof(float));
     return values;
@@ -418,7 +420,6 @@ void SsaoPass::record_readback(const vk::raii::CommandBuffer& cmd, SsaoView& vie
         vk::BufferImageCopy(0, 0, 0,
                             vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
                             {0, 0, 0}, vk::Extent3D(state.extent, 1)));
-    state.read_back = true;
 }
 
 }  // namespace monoplane::passes

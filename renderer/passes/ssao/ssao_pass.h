@@ -115,8 +115,11 @@ class SsaoView {
     // The images the estimate and filters write between them (the render graph's ao_scratch).
     std::vector<const vk_core::Image*> scratch() const;
     vk::Extent2D extent() const;
+    // The host-visible buffer the read-back copies the AO image into (record_readback, or the
+    // renderer's read-back pass).
+    const vk_core::Buffer& readback() const;
     // The last read-back AO, row-major, extent().width * extent().height values (pixels outside
-    // the area are unspecified). Empty before the first record_readback.
+    // the area are unspecified), once a frame that copied it has completed.
     std::vector<float> ao_values() const;
 
   private:
