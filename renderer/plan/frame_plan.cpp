@@ -495,6 +495,17 @@ void UnitPlacement::read_by_host(graph::BufferHandle buffer) {
     plan_.exports.push_back({buffer.index, graph::Use::kHostRead});
 }
 
+PassUnitDeclaration built_in_unit(PassKind kind, UnitSlot slot, std::string help,
+                                  void (*place)(UnitPlacement& placement)) {
+    PassUnitDeclaration unit;
+    unit.kind = kind;
+    unit.name = pass_kind_name(kind);
+    unit.slot = slot;
+    unit.help = std::move(help);
+    unit.place = place;
+    return unit;
+}
+
 std::optional<std::string> UnitPlacement::no_mono_reason() const {
     if (draws_mono()) return std::nullopt;
     return std::string(kNoMonoReason);

@@ -51,6 +51,12 @@ enum class UnitSlot {
 };
 
 class UnitPlacement;
+struct PassUnitDeclaration;
+
+// The declaration of a built-in kind written as a unit: `kind` and the kind's name, its slot, its
+// help and its placement (revise unset).
+PassUnitDeclaration built_in_unit(PassKind kind, UnitSlot slot, std::string help,
+                                  void (*place)(UnitPlacement& placement));
 
 struct PassUnitDeclaration {
     // A built-in kind written as a unit names its kind (PassKind::kTaa): its passes are found

@@ -108,12 +108,9 @@ void revise(plan::UnitPlacement& placement) {
 }  // namespace
 
 plan::PassUnitDeclaration declaration() {
-    plan::PassUnitDeclaration unit;
-    unit.kind = plan::PassKind::kComposite;
-    unit.name = plan::pass_kind_name(unit.kind);
-    unit.slot = plan::UnitSlot::kComposite;
-    unit.help = "C mapped into each eye in the hybrid modes (eq. 5, or the far field's offset)";
-    unit.place = &place;
+    plan::PassUnitDeclaration unit = plan::built_in_unit(
+        plan::PassKind::kComposite, plan::UnitSlot::kComposite,
+        "C mapped into each eye in the hybrid modes (eq. 5, or the far field's offset)", &place);
     unit.revise = &revise;
     return unit;
 }

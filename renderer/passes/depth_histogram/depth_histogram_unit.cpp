@@ -51,13 +51,9 @@ void place(plan::UnitPlacement& placement) {
 }  // namespace
 
 plan::PassUnitDeclaration declaration() {
-    plan::PassUnitDeclaration unit;
-    unit.kind = plan::PassKind::kDepthHistogram;
-    unit.name = plan::pass_kind_name(unit.kind);
-    unit.slot = plan::UnitSlot::kAfterToneMapping;
-    unit.help = "both eyes' final depth counted into bins for --mono-plane auto";
-    unit.place = &place;
-    return unit;
+    return plan::built_in_unit(plan::PassKind::kDepthHistogram, plan::UnitSlot::kAfterToneMapping,
+                               "both eyes' final depth counted into bins for --mono-plane auto",
+                               &place);
 }
 #endif  // MONOPLANE_UNIT_DECLARATION
 

@@ -60,13 +60,9 @@ void place(plan::UnitPlacement& placement) {
 }  // namespace
 
 plan::PassUnitDeclaration declaration() {
-    plan::PassUnitDeclaration unit;
-    unit.kind = plan::PassKind::kReadback;
-    unit.name = plan::pass_kind_name(unit.kind);
-    unit.slot = plan::UnitSlot::kReadBack;
-    unit.help = "the copies the host reads after the frame (images, the culling's counts)";
-    unit.place = &place;
-    return unit;
+    return plan::built_in_unit(
+        plan::PassKind::kReadback, plan::UnitSlot::kReadBack,
+        "the copies the host reads after the frame (images, the culling's counts)", &place);
 }
 #endif  // MONOPLANE_UNIT_DECLARATION
 

@@ -49,13 +49,8 @@ void place(plan::UnitPlacement& placement) {
 }  // namespace
 
 plan::PassUnitDeclaration declaration() {
-    plan::PassUnitDeclaration unit;
-    unit.kind = plan::PassKind::kTaa;
-    unit.name = plan::pass_kind_name(unit.kind);
-    unit.slot = plan::UnitSlot::kBeforeToneMapping;
-    unit.help = "temporal anti-aliasing of each eye (--anti-aliasing taa)";
-    unit.place = &place;
-    return unit;
+    return plan::built_in_unit(plan::PassKind::kTaa, plan::UnitSlot::kBeforeToneMapping,
+                               "temporal anti-aliasing of each eye (--anti-aliasing taa)", &place);
 }
 #endif  // MONOPLANE_UNIT_DECLARATION
 

@@ -73,13 +73,9 @@ void place(plan::UnitPlacement& placement) {
 }  // namespace
 
 plan::PassUnitDeclaration declaration() {
-    plan::PassUnitDeclaration unit;
-    unit.kind = plan::PassKind::kTonemap;
-    unit.name = plan::pass_kind_name(unit.kind);
-    unit.slot = plan::UnitSlot::kToneMapping;
-    unit.help = "each eye's (and C's) HDR colour tone mapped into its display image";
-    unit.place = &place;
-    return unit;
+    return plan::built_in_unit(plan::PassKind::kTonemap, plan::UnitSlot::kToneMapping,
+                               "each eye's (and C's) HDR colour tone mapped into its display image",
+                               &place);
 }
 #endif  // MONOPLANE_UNIT_DECLARATION
 
