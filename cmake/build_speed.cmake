@@ -75,7 +75,10 @@ function(monoplane_speed_up_tests)
     _monoplane_is_gtest_executable(${target} is_test)
     get_target_property(reuse ${target} PRECOMPILE_HEADERS_REUSE_FROM)
     get_target_property(own ${target} PRECOMPILE_HEADERS)
-    if(NOT is_test OR own)
+    get_target_property(optimized ${target} MONOPLANE_OPTIMIZED_TEST)
+    # An optimised test (monoplane_test's OPTIMIZED) cannot reuse the -O0 header either: GCC
+    # refuses a precompiled header built without __OPTIMIZE__.
+    if(NOT is_test OR own OR optimized)
       continue()
     elseif(NOT reuse)
       set(reuse monoplane_test_pch)
