@@ -45,7 +45,9 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan
             culling_.record_frustum_phase(cmd);
             break;
         case plan::PassKind::kShadow:
-            resources_->record_shadow(cmd, frame.light_view_proj);
+            record_unit(cmd, pass, frame, sync);
+            // Frames are waited for before the next is recorded, so the map holds this from now.
+            resources_->shadow_drawn(frame.light_view_proj);
             break;
         case plan::PassKind::kForward:
             record_forward(cmd, pass);

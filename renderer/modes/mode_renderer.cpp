@@ -106,7 +106,8 @@ passes::ForwardConfig forward_config(const RendererOptions& options, plan::Stere
 // never compiled mid-run: a session's frames compile nothing, and its frame log counts what they
 // do. A debug view's unit is left until a frame shows it (record_unit makes a recorder on its
 // first pass).
-void make_unit_recorders(const vk_core::Context& ctx, const std::vector<plan::FramePlan>& plans,
+void make_unit_recorders(const vk_core::Context& ctx, const passes::UnitScene& scene,
+                         const std::vector<plan::FramePlan>& plans,
                          const std::vector<plan::PassUnitDeclaration>& units,
                          std::map<std::string, std::unique_ptr<passes::UnitRecorder>>& recorders) {
     std::map<std::string, passes::UnitPasses> unit_passes;
@@ -120,7 +121,7 @@ void make_unit_recorders(const vk_core::Context& ctx, const std::vector<plan::Fr
         }
     }
     for (const auto& [unit, passes] : unit_passes) {
-        recorders[unit] = passes::make_unit_recorder(unit, ctx, passes);
+        recorders[unit] = passes::make_unit_recorder(unit, ctx, scene, passes);
     }
 }
 
@@ -171,7 +172,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
         plan::PlanDevice{ctx.capabilities().conditional_rendering,
                          ctx.capabilities().independent_blend},
         units_);
-    make_unit_recorders(ctx, possible_plans_, units_, unit_recorders_);
+    unit_scene_ = resources_->unit_scene();
+    make_unit_recorders(ctx, unit_scene_, possible_plans_, units_, unit_recorders_);
     if (!eye_layers_) {
         eye_memory_ = View::eye_memory(ctx, eye_extent, eye_features, possible_plans_);
     }

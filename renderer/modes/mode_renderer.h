@@ -24,7 +24,7 @@
 #include "renderer/passes/culling/chunk_culling_pass.h"
 #include "renderer/passes/depth_pyramid/depth_pyramid_pass.h"
 #include "renderer/passes/forward/forward_pass.h"
-#include "renderer/passes/shadow/shadow_pass.h"
+#include "renderer/passes/shadow/shadow_map.h"
 #include "renderer/passes/shared/pass_unit.h"
 #include "renderer/passes/shared/unit_settings.h"
 #include "renderer/passes/ssao/ssao_pass.h"
@@ -239,8 +239,9 @@ class ModeRenderer {
     // The device images the plan's resources are this frame (resource_bindings.cpp).
     std::vector<executor::BoundResource> bind_resources();
     std::vector<vk_core::ImageRange> view_images(const plan::ResourceKey& key) const;
-    // The one device image of a view's resource (a pass unit's), or a programming error for a
-    // role that is several images or none this frame.
+    // The one device image of a view's resource (a pass unit's), or of a shared one offered to
+    // units (the shadow map), or a programming error for a role that is several images or none
+    // this frame.
     const vk_core::Image& view_image(const plan::ResourceKey& key) const;
     // The one device buffer of a resource this frame (a pass unit's; slot: the frame's), or a
     // programming error for one not offered to units (only the depth histogram's is).
@@ -291,6 +292,7 @@ class ModeRenderer {
     // every plan places, and the recorders of those a frame has run, by name.
     std::vector<plan::PassUnitDeclaration> units_;
     std::map<std::string, std::unique_ptr<passes::UnitRecorder>> unit_recorders_;
+    passes::UnitScene unit_scene_;  // the scene as the units use it (resources_'s)
     profile::FrameProfiler profiler_;
     vk_core::DescriptorSet merged_depth_set_;  // the forward pass's set 1 (mask, routing)
     // Single-pass stereo: both eyes' ViewConstants in one buffer, and eyes_forward_'s set 0.

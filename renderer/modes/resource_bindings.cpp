@@ -71,8 +71,13 @@ std::vector<vk_core::ImageRange> ModeRenderer::view_images(const plan::ResourceK
 }
 
 const vk_core::Image& ModeRenderer::view_image(const plan::ResourceKey& key) const {
-    MONOPLANE_EXPECTS(!key.is_buffer && key.view != plan::ViewId::kNone &&
-                      key.view != plan::ViewId::kEyes);
+    MONOPLANE_EXPECTS(!key.is_buffer && key.view != plan::ViewId::kEyes);
+    if (key.view == plan::ViewId::kNone) {
+        // The shared images offered to units: the scene's shadow map.
+        if (key.image == plan::ImageRole::kShadowMap) return resources_->shadow().map();
+        programming_error("a pass unit asked for " + plan::resource_name(key) +
+                          ", which no unit is offered yet");
+    }
     const View* view =
         key.view == plan::ViewId::kMono ? mono_.get() : eyes_[plan::eye_index(key.view)].get();
     const vk_core::Image* image = nullptr;

@@ -35,22 +35,23 @@ SceneResources::SceneResources(const vk_core::Context& ctx, const scenes::Scene&
       chunk_table_(passes::ChunkCullingPass::make_chunk_table(ctx, scene, lods_)),
       level_table_(passes::ChunkCullingPass::make_level_table(ctx, scene, lods_)),
       alpha_classes_(passes::ChunkCullingPass::class_sizes(scene)),
-      shadow_(ctx, shadow, textures_.layout(), alpha_classes_[MONOPLANE_CLASS_MASKED] > 0),
+      shadow_(ctx, shadow),
       shadow_opaque_(ctx, scene.chunks.size()),
       shadow_masked_(ctx, scene.chunks.size()) {
     shadow_opaque_.assign(scene, chunks_of(scene, scenes::AlphaMode::kOpaque));
     shadow_masked_.assign(scene, chunks_of(scene, scenes::AlphaMode::kMask));
 }
 
-void SceneResources::record_shadow(const vk::raii::CommandBuffer& cmd,
-                                   const glm::dmat4& light_view_proj) {
+passes::UnitScene SceneResources::unit_scene() const {
+    passes::UnitScene unit;
+    unit.geometry = &geometry_;
+    unit.textures = &textures_;
     // Blended chunks cast no shadow (passes::ShadowCasters).
-    shadow_.record(cmd, geometry_,
-                   passes::ShadowCasters{shadow_opaque_.indirect(), shadow_masked_.indirect(),
-                                         textures_.set()},
-                   glm::mat4(light_view_proj));
-    // Frames are waited for before the next is recorded, so the map holds this from now on.
-    shadow_light_view_proj_ = light_view_proj;
+    unit.shadow_casters = passes::ShadowCasters{shadow_opaque_.indirect(),
+                                                shadow_masked_.indirect(), textures_.set()};
+    unit.shadow = shadow_params_;
+    unit.masked_chunks = alpha_classes_[MONOPLANE_CLASS_MASKED] > 0;
+    return unit;
 }
 
 }  // namespace monoplane::modes

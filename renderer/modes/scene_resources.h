@@ -17,7 +17,8 @@
 
 #include "renderer/graph/frame_graph.h"
 #include "renderer/passes/culling/cull_constants.h"
-#include "renderer/passes/shadow/shadow_pass.h"
+#include "renderer/passes/shadow/shadow_map.h"
+#include "renderer/passes/shared/pass_unit.h"
 #include "renderer/passes/shared/scene_geometry.h"
 #include "renderer/passes/shared/scene_textures.h"
 #include "renderer/vk/buffer.h"
@@ -45,15 +46,19 @@ class SceneResources {
     // How long building the levels of detail took (meshoptimizer's simplifier, every chunk).
     double lod_build_seconds() const { return lod_build_seconds_; }
     const passes::ShadowParams& shadow_params() const { return shadow_params_; }
-    const passes::ShadowPass& shadow() const { return shadow_; }
+    const passes::ShadowMap& shadow() const { return shadow_; }
+    // The scene as the renderers' pass units use it (the shadow unit draws this shadow map).
+    passes::UnitScene unit_scene() const;
 
     // Whether the shadow map must be drawn for this light transform (it holds another, or none).
     bool shadow_needed(const glm::dmat4& light_view_proj) const {
         return shadow_light_view_proj_ != light_view_proj;
     }
-    // Records the shadow map for the light transform; call when shadow_needed says so, in a
-    // submission that completes before another renderer reads the map.
-    void record_shadow(const vk::raii::CommandBuffer& cmd, const glm::dmat4& light_view_proj);
+    // A renderer recorded the shadow map for the light transform (when shadow_needed said so),
+    // in a submission that completes before another renderer reads the map.
+    void shadow_drawn(const glm::dmat4& light_view_proj) {
+        shadow_light_view_proj_ = light_view_proj;
+    }
     // The shadow map's synchronisation state, shared by every renderer of the scene: each
     // renderer's render graph starts from what the last frame of any of them left.
     graph::ResourceState& shadow_map_state() { return shadow_map_state_; }
@@ -68,7 +73,7 @@ class SceneResources {
     vk_core::Buffer chunk_table_;
     vk_core::Buffer level_table_;
     std::array<std::uint32_t, MONOPLANE_CLASSES> alpha_classes_;
-    passes::ShadowPass shadow_;
+    passes::ShadowMap shadow_;
     // What casts shadows: the opaque chunks, and the masked ones through the alpha test.
     passes::DrawList shadow_opaque_;
     passes::DrawList shadow_masked_;

@@ -65,6 +65,11 @@ class Recording final : public passes::UnitRecording {
         return resolvers_.predicate(when);
     }
 
+    const passes::UnitScene& scene() const override {
+        MONOPLANE_EXPECTS(resolvers_.scene != nullptr);
+        return *resolvers_.scene;
+    }
+
   private:
     void expect_declared(const plan::ResourceKey& key) const {
         const std::optional<std::uint16_t> handle = plan_.handle(key);
@@ -99,7 +104,7 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     if (!recorder) {
         passes::UnitPasses passes;
         passes.passes.emplace_back(&last_plan_, &pass);
-        recorder = passes::make_unit_recorder(pass.unit, ctx_, passes);
+        recorder = passes::make_unit_recorder(pass.unit, ctx_, unit_scene_, passes);
     }
     passes::UnitFrameValues values;
     values.use_mono = frame.use_mono;
@@ -111,6 +116,7 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     if (auto_mono_plane_) values.settings.depth_histogram = auto_mono_plane_->histogram_range();
     if (pass.kind == plan::PassKind::kComposite) values.composite = composite_values(frame);
     if (frame.use_mono) values.mono_area = mono_->area;
+    values.light_view_proj = glm::mat4(frame.light_view_proj);
     UnitResolvers resolvers;
     resolvers.image = [this](const plan::ResourceKey& key) -> const vk_core::Image& {
         return view_image(key);
@@ -119,6 +125,7 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
         return frame_buffer(key, frame.slot);
     };
     resolvers.predicate = [this](plan::GpuPredicate when) { return predicate(when); };
+    resolvers.scene = &unit_scene_;
     const std::unique_ptr<passes::UnitRecording> recording =
         make_unit_recording(cmd, last_plan_, pass, sync, values, std::move(resolvers));
     recorder->record(*recording);

@@ -20,6 +20,8 @@ struct UnitResolvers {
     std::function<const vk_core::Image&(const plan::ResourceKey&)> image;
     std::function<const vk_core::Buffer&(const plan::ResourceKey&)> buffer;
     std::function<std::optional<passes::Predicate>(plan::GpuPredicate)> predicate;
+    // The scene the renderer draws (UnitRecording::scene); must be set for a unit that asks.
+    const passes::UnitScene* scene = nullptr;
 };
 
 // `pass` must be one of `plan`'s, with at least one step; the recording begins its first step

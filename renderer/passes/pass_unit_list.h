@@ -5,6 +5,7 @@
 #pragma once
 
 #define MONOPLANE_PASS_UNITS(X) \
+    X(shadow)                   \
     X(composite)                \
     X(taa)                      \
     X(tonemap)                  \

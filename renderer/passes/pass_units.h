@@ -14,9 +14,10 @@
 namespace monoplane::passes {
 
 // The recorder of the unit named `unit` (PassUnitDeclaration::name), which must be registered,
-// for `passes` (the unit's passes the renderer may record; it makes their pipelines).
+// for a renderer of `scene` and `passes` (the unit's passes that renderer may record; it makes
+// their pipelines).
 std::unique_ptr<UnitRecorder> make_unit_recorder(const std::string& unit,
                                                  const vk_core::Context& ctx,
-                                                 const UnitPasses& passes);
+                                                 const UnitScene& scene, const UnitPasses& passes);
 
 }  // namespace monoplane::passes

@@ -84,7 +84,7 @@ class PlanBuilder {
 
     FramePlan build() {
         add_culling();
-        add_shadow();
+        add_units(UnitSlot::kAfterCulling);
         add_eye_forward();
         if (s_.hybrid) add_mono_passes();
         add_post_processing();
@@ -131,14 +131,6 @@ class PlanBuilder {
     void add_culling() {
         PlannedPass& pass = add(PassKind::kCulling);
         pass.steps = culling_steps(r_);
-    }
-
-    void add_shadow() {
-        PlannedPass& pass = add(PassKind::kShadow);
-        pass.steps = shadow_steps(r_);
-        if (!frame_.shadow_needed) {
-            pass.skipped = "light region unchanged: the shadow map is reused";
-        }
     }
 
     // The eyes draw their own sky in stereo, and in hybrid only when C has nothing to draw

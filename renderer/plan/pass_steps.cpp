@@ -79,12 +79,6 @@ std::vector<Step> culling_steps(PlanResources& r) {
     return steps;
 }
 
-std::vector<Step> shadow_steps(PlanResources& r) {
-    std::vector<Step> steps;
-    StepBuilder(add_step(steps, "draw")).use(r.shared(ImageRole::kShadowMap), Use::kDepthWrite);
-    return steps;
-}
-
 std::vector<Step> forward_steps(PlanResources& r, const ForwardUses& uses) {
     std::vector<Step> steps;
     StepBuilder step(add_step(steps, "draw"));

@@ -38,7 +38,6 @@ struct ForwardUses {
 };
 
 std::vector<graph::Step> culling_steps(PlanResources& r);
-std::vector<graph::Step> shadow_steps(PlanResources& r);
 std::vector<graph::Step> forward_steps(PlanResources& r, const ForwardUses& uses);
 // "blocks", "merge", "reduce" (repeated once per level after the first).
 std::vector<graph::Step> depth_pyramid_steps(PlanResources& r);
@@ -53,6 +52,5 @@ std::vector<graph::Step> transparency_steps(PlanResources& r, ViewId eye);
 // "visibility-right", ...), then "left.apply" and
 // "right.apply"; near_only: hybrid, the apply is depth-tested against the eye's near content.
 std::vector<graph::Step> ssao_steps(PlanResources& r, bool stereo, bool near_only);
-
 
 }  // namespace monoplane::plan

@@ -33,6 +33,9 @@ namespace monoplane::plan {
 // Where in the frame a unit's passes go. The built-in kinds' order is plan_frame's; a unit takes
 // its place between them.
 enum class UnitSlot {
+    // After the culling, before the eyes' forward passes: a unit the forward passes read (the
+    // shadow map).
+    kAfterCulling,
     // In the hybrid modes only, after C's passes (its forward pass and SSAO), before the eyes'
     // blended chunks: a unit that maps C into the eyes (the composite).
     kComposite,

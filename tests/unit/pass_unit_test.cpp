@@ -384,5 +384,38 @@ TEST(PassUnit, TheReadBackIsAUnitLastInTheFrameWhoseBuffersTheHostReads) {
     EXPECT_FALSE(counts->skipped);
 }
 
+// The shadow map is a built-in kind written as a unit (renderer/passes/shadow/shadow_unit.cpp):
+// right after the culling, before every forward pass, which reads the map it writes; skipped,
+// saying why, in a frame whose light region is the one the map holds. Without the registered units
+// a plan has none.
+TEST(PassUnit, TheShadowMapIsAUnitAfterTheCullingThatTheForwardPassesRead) {
+    EXPECT_EQ(plan_frame(options_for(Mode::kHybrid), PlanFrame{}, PlanDevice{}, {})
+                  .find(PassKind::kShadow),
+              nullptr);
+    for (Mode mode : {Mode::kStereo, Mode::kHybrid}) {
+        const FramePlan plan = passes::plan_frame(options_for(mode), PlanFrame{}, PlanDevice{});
+        ASSERT_GE(plan.passes.size(), 3u);
+        EXPECT_EQ(plan.passes[0].kind, PassKind::kCulling);
+        const PlannedPass& shadow = plan.passes[1];
+        EXPECT_EQ(&shadow, plan.find(PassKind::kShadow));
+        EXPECT_EQ(shadow.unit, "shadow");
+        EXPECT_EQ(shadow.name, "shadow");
+        EXPECT_FALSE(shadow.skipped);
+        EXPECT_TRUE(plan.reads(shadow).empty());
+        EXPECT_EQ(plan.writes(shadow), Names{"shadow_map"});
+        for (const PlannedPass& pass : plan.passes) {
+            if (pass.kind != PassKind::kForward) continue;
+            const Names reads = plan.reads(pass);
+            EXPECT_NE(std::find(reads.begin(), reads.end(), "shadow_map"), reads.end())
+                << pass.name;
+        }
+    }
+    PlanFrame reused;
+    reused.shadow_needed = false;
+    const FramePlan plan = passes::plan_frame(options_for(Mode::kStereo), reused, PlanDevice{});
+    EXPECT_EQ(plan.find(PassKind::kShadow)->skipped,
+              "light region unchanged: the shadow map is reused");
+}
+
 }  // namespace
 }  // namespace monoplane::plan

@@ -391,7 +391,8 @@ void CompositeRecorder::record_display(UnitRecording& r, plan::ViewId eye,
 
 }  // namespace
 
-std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitPasses& passes) {
+std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
+                                            const UnitPasses& passes) {
     return std::make_unique<CompositeRecorder>(ctx, passes);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

@@ -106,7 +106,8 @@ class DepthViewRecorder final : public UnitRecorder {
 
 }  // namespace
 
-std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitPasses&) {
+std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
+                                            const UnitPasses&) {
     return std::make_unique<DepthViewRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

@@ -116,7 +116,8 @@ class ReadbackRecorder final : public UnitRecorder {
 
 }  // namespace
 
-std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context&, const UnitPasses&) {
+std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context&, const UnitScene&,
+                                            const UnitPasses&) {
     return std::make_unique<ReadbackRecorder>();
 }
 #endif  // MONOPLANE_UNIT_RECORDER

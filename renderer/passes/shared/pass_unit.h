@@ -21,8 +21,13 @@
 #include <utility>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
+
+#include "renderer/passes/shadow/shadow_map.h"
 #include "renderer/passes/shared/composite_values.h"
 #include "renderer/passes/shared/indirect_draws.h"
+#include "renderer/passes/shared/scene_geometry.h"
+#include "renderer/passes/shared/scene_textures.h"
 #include "renderer/passes/shared/unit_settings.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/vk/buffer.h"
@@ -45,6 +50,18 @@ struct UnitFrameValues {
     // C's viewport in its images (eq. 8): the part of its allocation this frame drew, when
     // use_mono.
     vk::Extent2D mono_area{};
+    // World -> the shadow map's clip space this frame (fit_light_view_proj), float32 as the GPU.
+    glm::mat4 light_view_proj{1.0f};
+};
+
+// The scene a renderer draws, as its units may use it: what every renderer of the scene shares
+// (modes::SceneResources), which outlives the renderer and its recorders.
+struct UnitScene {
+    const SceneGeometry* geometry = nullptr;  // vertex and index buffers, every level of detail
+    const SceneTextures* textures = nullptr;  // set 2 of the forward shaders
+    ShadowCasters shadow_casters;             // the shadow map's draws
+    ShadowParams shadow;                      // the shadow map's size and depth bias
+    bool masked_chunks = false;  // alphaMode MASK chunks: the alpha-tested pipelines are needed
 };
 
 // The passes of one unit that the renderer's frames may run (those of every plan it may make),
@@ -80,6 +97,8 @@ class UnitRecording {
     virtual void next_step(std::string_view step) = 0;
     // The GPU predicate of a planned `when` (nullopt: always, or no conditional rendering).
     virtual std::optional<Predicate> predicate(plan::GpuPredicate when) const = 0;
+    // The scene the renderer draws.
+    virtual const UnitScene& scene() const = 0;
 };
 
 class UnitRecorder {

@@ -133,7 +133,8 @@ class TonemapRecorder final : public UnitRecorder {
 
 }  // namespace
 
-std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitPasses&) {
+std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
+                                            const UnitPasses&) {
     return std::make_unique<TonemapRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

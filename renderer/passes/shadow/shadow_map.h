@@ -5,7 +5,6 @@
 
 #include "renderer/passes/shared/scene_geometry.h"
 #include "renderer/vk/image.h"
-#include "renderer/vk/pipeline.h"
 
 namespace monoplane::passes {
 
@@ -29,16 +28,12 @@ struct ShadowCasters {
     vk::DescriptorSet textures;  // set 2 (SceneTextures::set()), read by the masked draws
 };
 
-class ShadowPass {
+// The shadow map itself, which every renderer of a scene shares (modes::SceneResources): the
+// depth image, the comparison sampler the forward passes read it through, and its parameters.
+// The shadow unit (shadow_unit.cpp) draws it.
+class ShadowMap {
   public:
-    // scene_textures: the layout of set 2 (SceneTextures::layout()); masked: the scene has
-    // alpha-masked chunks, whose pipeline (the alpha test) is then made.
-    ShadowPass(const vk_core::Context& ctx, const ShadowParams& params,
-               vk::DescriptorSetLayout scene_textures, bool masked);
-
-    // Leaves the shadow map in eShaderReadOnlyOptimal for the forward pass.
-    void record(const vk::raii::CommandBuffer& cmd, const SceneGeometry& geometry,
-                const ShadowCasters& casters, const glm::mat4& light_view_proj) const;
+    ShadowMap(const vk_core::Context& ctx, const ShadowParams& params);
 
     vk::ImageView view() const { return map_.view(); }
     const vk_core::Image& map() const { return map_; }
@@ -46,16 +41,13 @@ class ShadowPass {
     float texel_size() const { return 1.0f / static_cast<float>(params_.resolution); }
     const ShadowParams& params() const { return params_; }
 
+    // The map's depth format.
+    static constexpr vk::Format kFormat = vk::Format::eD32Sfloat;
+
   private:
     ShadowParams params_;
     vk_core::Image map_;
     vk::raii::Sampler sampler_{nullptr};
-    void make_masked_pipeline(const vk_core::Context& ctx, vk_core::GraphicsPipelineDesc desc);
-
-    vk::raii::DescriptorSetLayout no_bindings_{nullptr};  // sets 0 and 1: the forward pass's
-    vk::raii::PipelineLayout layout_{nullptr};
-    vk::raii::Pipeline pipeline_{nullptr};
-    vk::raii::Pipeline masked_pipeline_{nullptr};  // alphaMode MASK: the alpha test
 };
 
 }  // namespace monoplane::passes
