@@ -238,13 +238,15 @@ class ModeRenderer {
     void update_plan(const FrameInputs& inputs, const FrameState& frame);
     // The device images the plan's resources are this frame (resource_bindings.cpp).
     std::vector<executor::BoundResource> bind_resources();
+    // An eye's or C's view (null for C before its first frame); not kNone or kEyes.
+    const View* view_of(plan::ViewId view) const;
     std::vector<vk_core::ImageRange> view_images(const plan::ResourceKey& key) const;
     // The one device image of a view's resource (a pass unit's), or of a shared one offered to
     // units (the shadow map), or a programming error for a role that is several images or none
     // this frame.
     const vk_core::Image& view_image(const plan::ResourceKey& key) const;
     // The one device buffer of a resource this frame (a pass unit's; slot: the frame's), or a
-    // programming error for one not offered to units (only the depth histogram's is).
+    // programming error for one not offered to units (the LOD state is not).
     const vk_core::Buffer& frame_buffer(const plan::ResourceKey& key, std::uint32_t slot) const;
     // Before a view's images go: the executor must not take their states for new ones.
     void forget_images(const View& view);

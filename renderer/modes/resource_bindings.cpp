@@ -17,9 +17,13 @@ vk_core::ImageRange layer_of(const vk_core::Image& both, std::uint32_t layer) {
 
 }  // namespace
 
+const ModeRenderer::View* ModeRenderer::view_of(plan::ViewId view) const {
+    MONOPLANE_EXPECTS(view != plan::ViewId::kNone && view != plan::ViewId::kEyes);
+    return view == plan::ViewId::kMono ? mono_.get() : eyes_[plan::eye_index(view)].get();
+}
+
 std::vector<vk_core::ImageRange> ModeRenderer::view_images(const plan::ResourceKey& key) const {
-    const View* view =
-        key.view == plan::ViewId::kMono ? mono_.get() : eyes_[plan::eye_index(key.view)].get();
+    const View* view = view_of(key.view);
     if (view == nullptr) return {};  // C not made yet: only passes the frame leaves out use it
     const auto samples = [&](const std::optional<vk_core::Image>& own,
                              const std::optional<vk_core::Image> ForwardImages::*both)
@@ -78,8 +82,7 @@ const vk_core::Image& ModeRenderer::view_image(const plan::ResourceKey& key) con
         programming_error("a pass unit asked for " + plan::resource_name(key) +
                           ", which no unit is offered yet");
     }
-    const View* view =
-        key.view == plan::ViewId::kMono ? mono_.get() : eyes_[plan::eye_index(key.view)].get();
+    const View* view = view_of(key.view);
     const vk_core::Image* image = nullptr;
     if (view != nullptr) {
         switch (key.image) {
@@ -139,8 +142,7 @@ const vk_core::Buffer& ModeRenderer::frame_buffer(const plan::ResourceKey& key,
                 break;
         }
     } else if (key.view != plan::ViewId::kEyes) {
-        const View* view =
-            key.view == plan::ViewId::kMono ? mono_.get() : eyes_[plan::eye_index(key.view)].get();
+        const View* view = view_of(key.view);
         if (view != nullptr) {
             switch (key.buffer) {
                 case plan::BufferRole::kReadback:
