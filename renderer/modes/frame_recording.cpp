@@ -41,9 +41,6 @@ std::optional<passes::Predicate> ModeRenderer::predicate(plan::GpuPredicate when
 void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                                   const FrameState& frame, passes::StepSync& sync) {
     switch (pass.kind) {
-        case plan::PassKind::kCulling:
-            culling_.record_frustum_phase(cmd);
-            break;
         case plan::PassKind::kShadow:
             record_unit(cmd, pass, frame, sync);
             // Frames are waited for before the next is recorded, so the map holds this from now.
@@ -52,29 +49,15 @@ void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan
         case plan::PassKind::kForward:
             record_forward(cmd, pass);
             break;
-        case plan::PassKind::kDepthPyramid:
-            record_pyramid(cmd, pass, frame, sync);
-            break;
-        case plan::PassKind::kOcclusionCulling:
-            passes::with_predicate(cmd, predicate(pass.when),
-                                   [&] { culling_.record_occlusion_phase(cmd); });
-            break;
         case plan::PassKind::kTransparency:
             record_transparency(cmd, pass);
             break;
-        case plan::PassKind::kSsao:
-            if (pass.view != plan::ViewId::kMono) {
-                record_ssao(cmd, frame, sync);
-                break;
-            }
-            // The far region's AO, computed once for both eyes (C alone sees it).
-            passes::with_predicate(cmd, predicate(pass.when), [&] {
-                ssao_->record_view(cmd, sync, *mono_->ssao, mono_->area);
-                ssao_->record_apply(cmd, sync, *mono_->ssao, mono_->hdr, mono_->area);
-            });
-            break;
         // The kinds written as units (renderer/passes/pass_unit_list.h).
+        case plan::PassKind::kCulling:
         case plan::PassKind::kComposite:
+        case plan::PassKind::kDepthPyramid:
+        case plan::PassKind::kOcclusionCulling:
+        case plan::PassKind::kSsao:
         case plan::PassKind::kReadback:
         case plan::PassKind::kTaa:
         case plan::PassKind::kTonemap:
@@ -104,7 +87,7 @@ void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd,
         const bool masked = std::any_of(pass.draws.begin(), pass.draws.end(), [](const auto& d) {
             return d.step == plan::DrawStep::kMaskHidden;
         });
-        const bool clear_color = masked && (options_.read_back || ssao_);
+        const bool clear_color = masked && (options_.read_back || options_.ssao);
         forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,
                         *merged_depth_set_, resources_->geometry(), resources_->textures(),
                         culling_.chunk_draws(passes::CullView::kMono), draws);
@@ -125,32 +108,6 @@ void ModeRenderer::record_transparency(const vk::raii::CommandBuffer& cmd,
         cmd, passes::AfterCompositeTargets{eye.hdr, eye_extent_}, *eye.forward_set,
         *eye.composite_depth_set, resources_->geometry(), resources_->textures(),
         culling_.draws(static_cast<passes::CullView>(e), MONOPLANE_CLASS_BLENDED));
-}
-
-void ModeRenderer::record_pyramid(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
-                                  const FrameState& frame, passes::StepSync& sync) {
-    std::array<glm::dmat3, 2> mono_to_eye;
-    for (int e = 0; e < 2; ++e) {
-        mono_to_eye[e] =
-            rig::jittered_pixel_mapping(rig::mono_pixel_to_eye_pixel(*rig_, e), frame.jitter_px);
-    }
-    pyramid_.record(cmd, sync, mono_to_eye, predicate(pass.when));
-}
-
-void ModeRenderer::record_ssao(const vk::raii::CommandBuffer& cmd, const FrameState& frame,
-                               passes::StepSync& sync) {
-    // In hybrid, pixels well beyond m take C's AO: their own estimate is not needed.
-    ssao_->record_pair(cmd, sync, *eyes_[0]->ssao, *eyes_[1]->ssao, eye_extent_, *options_.ssao,
-                       frame.use_mono
-                           ? static_cast<float>(frame.inputs->mono_plane) + ssao_->skip_margin()
-                           : passes::SsaoPass::kEveryPixel);
-    for (int e = 0; e < 2; ++e) {
-        // In hybrid the far region already carries C's AO: only the near content takes the eyes'.
-        const View& eye = *eyes_[e];
-        ssao_->record_apply(cmd, sync, *eye.ssao, eye.hdr, eye_extent_,
-                            frame.use_mono ? &eye.depth : nullptr,
-                            plan::view_name(plan::eye_view(e)));
-    }
 }
 
 passes::CompositeValues ModeRenderer::composite_values(const FrameState& frame) const {

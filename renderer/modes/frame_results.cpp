@@ -36,7 +36,7 @@ profile::FrameStats ModeRenderer::collect_frame(std::uint32_t slot, double recor
     // A list's draws of one alpha class, and of the classes its forward pass draws: all three,
     // but in hybrid the eyes' blended chunks, which their transparency passes draw.
     const auto drawn = [&](std::uint32_t list, std::uint32_t alpha_class) {
-        return counts[passes::ChunkCullingPass::count_word(list, alpha_class)];
+        return counts[passes::ChunkLists::count_word(list, alpha_class)];
     };
     // This slot's frame had transparency passes if its statistics have their scopes (the plan
     // may since have changed).

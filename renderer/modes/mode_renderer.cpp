@@ -147,11 +147,10 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       forward_(ctx, resources_->textures().layout(),
                forward_config(options, plan::StereoPass::kTwoPasses, *resources_)),
       culling_(ctx, scene_, resources_->chunk_table(), resources_->level_table()),
-      pyramid_(ctx),
+      pyramid_(ctx, eye_extent),
       units_(passes::pass_unit_declarations()),
       profiler_(ctx),
       ring_(ctx) {
-    if (options.ssao) ssao_ = std::make_unique<passes::SsaoPass>(ctx, options.ssao_params);
     merged_depth_set_ = forward_.make_merged_depth_set();
     const bool taa = options.anti_aliasing == plan::AntiAliasing::kTaa;
     const ViewFeatures eye_features{taa, taa, msaa_samples(options.anti_aliasing)};
@@ -189,11 +188,9 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
             eye->composite_depth_set =
                 forward_.make_composite_depth_set(eye->linear_depth.view(), pyramid_.sampler());
         }
-        if (ssao_) eye->ssao = ssao_->make_view(eye->constants, eye->linear_depth, eye_extent);
+        if (options.ssao) eye->ssao = std::make_unique<passes::SsaoImages>(ctx, eye_extent);
     }
-    pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
-    culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
-    forward_.write_merged_depth(merged_depth_set_, pyramid_.view(), pyramid_.sampler(),
+    forward_.write_merged_depth(merged_depth_set_, pyramid_.pyramid().view(), pyramid_.sampler(),
                                 culling_.routing());
     if (options.auto_mono_plane) {
         auto_mono_plane_ = std::make_unique<AutoMonoPlane>(ctx, scene_, *options.auto_mono_plane);
@@ -204,12 +201,10 @@ void ModeRenderer::ensure_pyramid() {
     if (pyramid_.fits(mono_->extent)) return;
     // The old pyramid and the sets naming it may be in use by a frame in flight.
     drain_frames();
-    executor_.forget(pyramid_.pyramid_image());
-    executor_.forget(pyramid_.blocks_image());
+    // The blocks stay: they are the eyes' size.
+    executor_.forget(pyramid_.pyramid().range());
     pyramid_.resize(mono_->extent);
-    pyramid_.set_eye_depths(eyes_[0]->depth.view(), eyes_[1]->depth.view(), eye_extent_);
-    culling_.set_merged_depth(pyramid_.view(), pyramid_.sampler());
-    forward_.write_merged_depth(merged_depth_set_, pyramid_.view(), pyramid_.sampler(),
+    forward_.write_merged_depth(merged_depth_set_, pyramid_.pyramid().view(), pyramid_.sampler(),
                                 culling_.routing());
 }
 
@@ -241,7 +236,7 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     const bool taa = options_.anti_aliasing == plan::AntiAliasing::kTaa;
     mono_ = std::make_unique<MonoView>(ctx_, needed, ViewFeatures{taa, false}, possible_plans_);
     make_view_sets(*mono_);
-    if (ssao_) mono_->ssao = ssao_->make_view(mono_->constants, mono_->linear_depth, needed);
+    if (options_.ssao) mono_->ssao = std::make_unique<passes::SsaoImages>(ctx_, needed);
 }
 
 void ModeRenderer::update_view(View& view, const glm::dmat4& view_proj,

@@ -21,8 +21,8 @@
 #include "renderer/modes/auto_mono_plane.h"
 #include "renderer/modes/scene_resources.h"
 #include "renderer/modes/view_setup.h"
-#include "renderer/passes/culling/chunk_culling_pass.h"
-#include "renderer/passes/depth_pyramid/depth_pyramid_pass.h"
+#include "renderer/passes/culling/chunk_lists.h"
+#include "renderer/passes/depth_pyramid/depth_pyramid.h"
 #include "renderer/passes/forward/forward_pass.h"
 #include "renderer/passes/shadow/shadow_map.h"
 #include "renderer/passes/shared/pass_unit.h"
@@ -245,6 +245,9 @@ class ModeRenderer {
     // units (the shadow map), or a programming error for a role that is several images or none
     // this frame.
     const vk_core::Image& view_image(const plan::ResourceKey& key) const;
+    // Every device image of a view's resource (a pass unit's): SSAO's scratch images, or the one
+    // image view_image gives.
+    std::vector<const vk_core::Image*> view_image_set(const plan::ResourceKey& key) const;
     // The one device buffer of a resource this frame (a pass unit's; slot: the frame's), or a
     // programming error for one not offered to units (the LOD state is not).
     const vk_core::Buffer& frame_buffer(const plan::ResourceKey& key, std::uint32_t slot) const;
@@ -256,10 +259,6 @@ class ModeRenderer {
     void record_planned(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                         const FrameState& frame, passes::StepSync& sync);
     void record_forward(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass);
-    void record_pyramid(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
-                        const FrameState& frame, passes::StepSync& sync);
-    void record_ssao(const vk::raii::CommandBuffer& cmd, const FrameState& frame,
-                     passes::StepSync& sync);
     void record_transparency(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass);
     // How C's image maps into each eye this frame (the composite unit's values).
     passes::CompositeValues composite_values(const FrameState& frame) const;
@@ -287,9 +286,8 @@ class ModeRenderer {
     bool blended_chunks_;  // the scene has alphaMode BLEND chunks (frame_plan.h: PlanOptions)
     passes::ForwardPass forward_;
     std::unique_ptr<passes::ForwardPass> eyes_forward_;  // single-pass stereo: both eyes at once
-    passes::ChunkCullingPass culling_;
-    passes::DepthPyramidPass pyramid_;
-    std::unique_ptr<passes::SsaoPass> ssao_;
+    passes::ChunkLists culling_;
+    passes::DepthPyramid pyramid_;
     // The pass kinds written as units (renderer/passes/pass_units.h): their declarations, which
     // every plan places, and the recorders of those a frame has run, by name.
     std::vector<plan::PassUnitDeclaration> units_;

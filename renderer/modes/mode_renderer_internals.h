@@ -202,7 +202,7 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     std::vector<float> linear;
     glm::dmat4 previous_unjittered{1.0};  // last frame's world -> clip without jitter
     bool has_previous = false;
-    std::unique_ptr<passes::SsaoView> ssao;
+    std::unique_ptr<passes::SsaoImages> ssao;  // with SSAO
     std::vector<float> ao;
     EyeFrameGeometry geometry;
 

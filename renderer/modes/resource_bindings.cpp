@@ -77,8 +77,10 @@ std::vector<vk_core::ImageRange> ModeRenderer::view_images(const plan::ResourceK
 const vk_core::Image& ModeRenderer::view_image(const plan::ResourceKey& key) const {
     MONOPLANE_EXPECTS(!key.is_buffer && key.view != plan::ViewId::kEyes);
     if (key.view == plan::ViewId::kNone) {
-        // The shared images offered to units: the scene's shadow map.
+        // The shared images offered to units: the scene's shadow map, the merged depth pyramid.
         if (key.image == plan::ImageRole::kShadowMap) return resources_->shadow().map();
+        if (key.image == plan::ImageRole::kMergedDepth) return pyramid_.pyramid();
+        if (key.image == plan::ImageRole::kPyramidBlocks) return pyramid_.blocks();
         programming_error("a pass unit asked for " + plan::resource_name(key) +
                           ", which no unit is offered yet");
     }
@@ -122,6 +124,17 @@ const vk_core::Image& ModeRenderer::view_image(const plan::ResourceKey& key) con
     return *image;
 }
 
+std::vector<const vk_core::Image*> ModeRenderer::view_image_set(
+    const plan::ResourceKey& key) const {
+    if (key.image != plan::ImageRole::kAoScratch) return {&view_image(key)};
+    const View* view = key.view == plan::ViewId::kNone ? nullptr : view_of(key.view);
+    if (view == nullptr || !view->ssao) {
+        programming_error("a pass unit asked for " + plan::resource_name(key) +
+                          ", which is no view's images this frame");
+    }
+    return view->ssao->scratch();
+}
+
 const vk_core::Buffer& ModeRenderer::frame_buffer(const plan::ResourceKey& key,
                                                   std::uint32_t slot) const {
     MONOPLANE_EXPECTS(key.is_buffer);
@@ -134,6 +147,8 @@ const vk_core::Buffer& ModeRenderer::frame_buffer(const plan::ResourceKey& key,
                 return culling_.commands_buffer();
             case plan::BufferRole::kPredicates:
                 return culling_.counts_buffer();
+            case plan::BufferRole::kLodState:
+                return culling_.lod_state();
             case plan::BufferRole::kCountsReadback:
                 return culling_.counts_readback(slot);
             case plan::BufferRole::kListsReadback:
@@ -172,10 +187,10 @@ std::vector<executor::BoundResource> ModeRenderer::bind_resources() {
                 bound.shared_state = &resources_->shadow_map_state();
                 break;
             case plan::ImageRole::kPyramidBlocks:
-                bound.images = {pyramid_.blocks_image()};
+                bound.images = {pyramid_.blocks().range()};
                 break;
             case plan::ImageRole::kMergedDepth:
-                bound.images = {pyramid_.pyramid_image()};
+                bound.images = {pyramid_.pyramid().range()};
                 break;
             default:
                 bound.images = view_images(key);

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <vector>
 
-#include "renderer/passes/culling/chunk_culling_pass.h"
+#include "renderer/passes/culling/chunk_lists.h"
 
 namespace monoplane::modes {
 namespace {
@@ -32,9 +32,9 @@ SceneResources::SceneResources(const vk_core::Context& ctx, const scenes::Scene&
       lods_(timed_lod_chain(scene, lod_build_seconds_)),
       geometry_(ctx, scene, lods_),
       textures_(ctx, scene),
-      chunk_table_(passes::ChunkCullingPass::make_chunk_table(ctx, scene, lods_)),
-      level_table_(passes::ChunkCullingPass::make_level_table(ctx, scene, lods_)),
-      alpha_classes_(passes::ChunkCullingPass::class_sizes(scene)),
+      chunk_table_(passes::ChunkLists::make_chunk_table(ctx, scene, lods_)),
+      level_table_(passes::ChunkLists::make_level_table(ctx, scene, lods_)),
+      alpha_classes_(passes::ChunkLists::class_sizes(scene)),
       shadow_(ctx, shadow),
       shadow_opaque_(ctx, scene.chunks.size()),
       shadow_masked_(ctx, scene.chunks.size()) {

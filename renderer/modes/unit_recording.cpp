@@ -7,6 +7,7 @@
 #include "common/programming_error.h"
 #include "renderer/modes/mode_renderer_internals.h"
 #include "renderer/passes/pass_units.h"
+#include "rig/temporal_jitter.h"
 
 namespace monoplane::modes {
 namespace {
@@ -36,6 +37,18 @@ class Recording final : public passes::UnitRecording {
         expect_declared(key);
         return resolvers_.image(key);
     }
+
+    std::vector<const vk_core::Image*> images(plan::ViewId view, plan::ImageRole role) override {
+        const plan::ResourceKey key{view, false, role, plan::BufferRole::kDrawLists};
+        expect_declared(key);
+        return resolvers_.images(key);
+    }
+
+    const vk_core::Buffer& view_constants(plan::ViewId view) const override {
+        return resolvers_.view_constants(view);
+    }
+
+    passes::CullInputs cull_inputs() const override { return resolvers_.cull_inputs; }
 
     bool declares(plan::ViewId view, plan::ImageRole role) const override {
         const std::optional<std::uint16_t> handle =
@@ -113,14 +126,28 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     values.history_restarted = !history_valid_;
     values.settings.tonemap = options_.tonemap;
     values.settings.taa = options_.taa;
+    values.settings.ssao = options_.ssao_params;
     if (auto_mono_plane_) values.settings.depth_histogram = auto_mono_plane_->histogram_range();
     if (pass.kind == plan::PassKind::kComposite) values.composite = composite_values(frame);
+    if (pass.kind == plan::PassKind::kDepthPyramid) {
+        for (int e = 0; e < 2; ++e) {
+            values.mono_pixel_to_eye[e] = rig::jittered_pixel_mapping(
+                rig::mono_pixel_to_eye_pixel(*rig_, e), frame.jitter_px);
+        }
+    }
     if (frame.use_mono) values.mono_area = mono_->area;
     values.light_view_proj = glm::mat4(frame.light_view_proj);
     UnitResolvers resolvers;
     resolvers.image = [this](const plan::ResourceKey& key) -> const vk_core::Image& {
         return view_image(key);
     };
+    resolvers.images = [this](const plan::ResourceKey& key) { return view_image_set(key); };
+    resolvers.view_constants = [this](plan::ViewId view) -> const vk_core::Buffer& {
+        const View* of = view_of(view);
+        MONOPLANE_EXPECTS(of != nullptr);
+        return of->constants;
+    };
+    resolvers.cull_inputs = culling_.inputs();
     resolvers.buffer = [this, &frame](const plan::ResourceKey& key) -> const vk_core::Buffer& {
         return frame_buffer(key, frame.slot);
     };

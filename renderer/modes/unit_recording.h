@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "renderer/passes/shared/pass_unit.h"
 #include "renderer/passes/shared/step_sync.h"
@@ -18,6 +19,10 @@ namespace monoplane::modes {
 // resource this frame, and the GPU predicate of a planned `when`.
 struct UnitResolvers {
     std::function<const vk_core::Image&(const plan::ResourceKey&)> image;
+    // Every image of a role that is several (SSAO's scratch images).
+    std::function<std::vector<const vk_core::Image*>(const plan::ResourceKey&)> images;
+    std::function<const vk_core::Buffer&(plan::ViewId)> view_constants;
+    passes::CullInputs cull_inputs;
     std::function<const vk_core::Buffer&(const plan::ResourceKey&)> buffer;
     std::function<std::optional<passes::Predicate>(plan::GpuPredicate)> predicate;
     // The scene the renderer draws (UnitRecording::scene); must be set for a unit that asks.

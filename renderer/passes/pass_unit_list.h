@@ -5,7 +5,11 @@
 #pragma once
 
 #define MONOPLANE_PASS_UNITS(X) \
+    X(culling)                  \
     X(shadow)                   \
+    X(depth_pyramid)            \
+    X(occlusion_culling)        \
+    X(ssao)                     \
     X(composite)                \
     X(taa)                      \
     X(tonemap)                  \

@@ -46,8 +46,7 @@ struct FrameShape {
     bool hybrid = false;    // a hybrid mode, whether or not this frame draws C
     bool use_mono = false;  // C is drawn: a hybrid mode and something lies beyond m - eps
     bool farfield = false;
-    bool depth_tested = false;      // the merged depth pyramid saves C's work
-    bool occlusion_culled = false;  // ... and C's hidden chunks are not drawn
+    bool depth_tested = false;  // the merged depth pyramid saves C's work
     bool predicated = false;
     bool single_pass = false;
     bool taa = false;
@@ -59,11 +58,7 @@ FrameShape shape_of(const PlanOptions& options, const PlanFrame& frame, const Pl
     s.hybrid = options.mode != Mode::kStereo;
     s.use_mono = s.hybrid && !frame.mono_skipped;
     s.farfield = s.use_mono && options.mode == Mode::kHybridFarfield;
-    // monoplane's hybrid only (the far field's offset copy is another mapping), and never in the
-    // debug view that shows C's whole image.
-    s.depth_tested = s.use_mono && !s.farfield && frame.mono_culling != MonoCulling::kNoOpt &&
-                     frame.debug != DebugView::kMonoOnly;
-    s.occlusion_culled = s.depth_tested && frame.mono_culling == MonoCulling::kOcclusionCull;
+    s.depth_tested = !depth_test_skip_reason(options, frame);
     s.predicated = device.conditional_rendering;
     s.single_pass = options.stereo_pass != StereoPass::kTwoPasses;
     s.taa = options.anti_aliasing == AntiAliasing::kTaa;
@@ -83,7 +78,7 @@ class PlanBuilder {
           r_(plan_) {}
 
     FramePlan build() {
-        add_culling();
+        add_units(UnitSlot::kFrameStart);
         add_units(UnitSlot::kAfterCulling);
         add_eye_forward();
         if (s_.hybrid) add_mono_passes();
@@ -126,11 +121,6 @@ class PlanBuilder {
             return d.step == DrawStep::kMaskHidden;
         });
         return forward_steps(r_, uses);
-    }
-
-    void add_culling() {
-        PlannedPass& pass = add(PassKind::kCulling);
-        pass.steps = culling_steps(r_);
     }
 
     // The eyes draw their own sky in stereo, and in hybrid only when C has nothing to draw
@@ -184,18 +174,7 @@ class PlanBuilder {
     void add_mono_passes() {
         const std::optional<std::string> no_mono =
             s_.use_mono ? std::nullopt : std::optional<std::string>(kNoMonoReason);
-        {
-            PlannedPass& pass = add(PassKind::kDepthPyramid);
-            pass.steps = depth_pyramid_steps(r_);
-            pass.when = when(GpuPredicate::kMonoDepthTested);
-            pass.skipped = no_mono ? no_mono : pyramid_skip_reason();
-        }
-        {
-            PlannedPass& pass = add(PassKind::kOcclusionCulling);
-            pass.steps = occlusion_culling_steps(r_);
-            pass.when = when(GpuPredicate::kMonoDepthTested);
-            pass.skipped = no_mono ? no_mono : occlusion_skip_reason();
-        }
+        add_units(UnitSlot::kAfterEyesForward);
         {
             PlannedPass& pass = add(PassKind::kForward, ViewId::kMono);
             pass.statistics_scope = view_name(ViewId::kMono);
@@ -203,13 +182,7 @@ class PlanBuilder {
             pass.steps = forward_steps_of(pass, {ViewId::kMono});
             pass.skipped = no_mono;
         }
-        if (options_.ssao) {
-            // The far region's AO, computed once for both eyes (C alone sees it).
-            PlannedPass& pass = add(PassKind::kSsao, ViewId::kMono);
-            pass.steps = mono_ssao_steps(r_);
-            pass.when = when(GpuPredicate::kMonoAny);
-            pass.skipped = no_mono;
-        }
+        add_units(UnitSlot::kMonoPostProcessing);
         add_units(UnitSlot::kComposite);
         if (options_.blended && s_.use_mono) add_transparency();
     }
@@ -225,25 +198,8 @@ class PlanBuilder {
         }
     }
 
-    std::optional<std::string> pyramid_skip_reason() const {
-        if (s_.farfield) return "hybrid-farfield: C is frustum-culled only";
-        if (frame_.debug == DebugView::kMonoOnly) return "debug view mono-only: C's whole image";
-        if (frame_.mono_culling == MonoCulling::kNoOpt) return "variant no-opt: no depth test";
-        return std::nullopt;
-    }
-
-    std::optional<std::string> occlusion_skip_reason() const {
-        if (auto reason = pyramid_skip_reason()) return reason;
-        if (!s_.occlusion_culled) return "variant discard: C's hidden chunks are still drawn";
-        return std::nullopt;
-    }
-
     void add_post_processing() {
-        if (options_.ssao) {
-            PlannedPass& pass = add(PassKind::kSsao);
-            // In hybrid the far region already carries C's AO: the eye's depth tells which.
-            pass.steps = ssao_steps(r_, options_.ssao_stereo, s_.use_mono);
-        }
+        add_units(UnitSlot::kEyesPostProcessing);
         add_units(UnitSlot::kBeforeToneMapping);
         revise_units();
         add_units(UnitSlot::kToneMapping);
@@ -251,8 +207,10 @@ class PlanBuilder {
 
     void add_units(UnitSlot slot) {
         for (const PassUnitDeclaration& unit : units_) {
-            if (unit.slot != slot) continue;
-            UnitPlacement placement(unit, options_, frame_, device_, plan_, r_);
+            if (std::find(unit.slots.begin(), unit.slots.end(), slot) == unit.slots.end()) {
+                continue;
+            }
+            UnitPlacement placement(unit, slot, options_, frame_, device_, plan_, r_);
             unit.place(placement);
         }
     }
@@ -262,7 +220,8 @@ class PlanBuilder {
     void revise_units() {
         for (const PassUnitDeclaration& unit : units_) {
             if (unit.revise == nullptr) continue;
-            UnitPlacement placement(unit, options_, frame_, device_, plan_, r_);
+            UnitPlacement placement(unit, UnitSlot::kToneMapping, options_, frame_, device_, plan_,
+                                    r_);
             unit.revise(placement);
         }
     }
@@ -320,6 +279,16 @@ class PlanBuilder {
 };
 
 }  // namespace
+
+std::optional<std::string> depth_test_skip_reason(const PlanOptions& options,
+                                                  const PlanFrame& frame) {
+    if (options.mode == Mode::kStereo) return "stereo: no C";
+    if (frame.mono_skipped) return std::string(kNoMonoReason);
+    if (options.mode == Mode::kHybridFarfield) return "hybrid-farfield: C is frustum-culled only";
+    if (frame.debug == DebugView::kMonoOnly) return "debug view mono-only: C's whole image";
+    if (frame.mono_culling == MonoCulling::kNoOpt) return "variant no-opt: no depth test";
+    return std::nullopt;
+}
 
 std::string pass_kind_name(PassKind kind) {
     return name_of(kPassKindNames, kind);
@@ -487,15 +456,20 @@ void UnitPlacement::read_by_host(graph::BufferHandle buffer) {
     plan_.exports.push_back({buffer.index, graph::Use::kHostRead});
 }
 
-PassUnitDeclaration built_in_unit(PassKind kind, UnitSlot slot, std::string help,
+PassUnitDeclaration built_in_unit(PassKind kind, std::vector<UnitSlot> slots, std::string help,
                                   void (*place)(UnitPlacement& placement)) {
     PassUnitDeclaration unit;
     unit.kind = kind;
     unit.name = pass_kind_name(kind);
-    unit.slot = slot;
+    unit.slots = std::move(slots);
     unit.help = std::move(help);
     unit.place = place;
     return unit;
+}
+
+PassUnitDeclaration built_in_unit(PassKind kind, UnitSlot slot, std::string help,
+                                  void (*place)(UnitPlacement& placement)) {
+    return built_in_unit(kind, std::vector{slot}, std::move(help), place);
 }
 
 std::optional<std::string> UnitPlacement::no_mono_reason() const {

@@ -216,6 +216,14 @@ struct PlanDevice {
     bool operator==(const PlanDevice&) const = default;
 };
 
+// Why C is not depth-tested against what the eyes drew this frame (papers/000 Sect. 4.4: no
+// merged depth pyramid is built, C masks no hidden pixels and culls no hidden chunks), or
+// nullopt when it is: a hybrid frame that draws C, monoplane's own hybrid (the far field's offset
+// copy is another mapping), not the debug view of C's whole image, not the variant no-opt. One
+// rule for the pyramid, the occlusion culling and C's mask.
+std::optional<std::string> depth_test_skip_reason(const PlanOptions& options,
+                                                  const PlanFrame& frame);
+
 // The plan of one frame with the pass kinds written as units (renderer/plan/pass_unit.h), each
 // placed at its slot: TAA is one, so a plan without the registered units has no TAA resolve.
 // passes::plan_frame (renderer/passes/pass_unit_declarations.h) passes every registered unit.

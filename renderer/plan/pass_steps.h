@@ -1,10 +1,9 @@
-// The steps of the kinds the renderer records itself and how they use the frame's resources: what
-// a pass reads and writes, and in which layout and stage. The frame plan (frame_plan.cpp) calls
-// these; the passes (renderer/passes) record exactly these steps in this order, asking the
-// executor for each later step's barriers by name (passes::StepSync), and record none themselves.
-// A kind written as a unit (TAA, the tone mapping, the depth histogram:
-// renderer/passes/<kind>/<kind>_unit.cpp) declares its steps beside its recorder instead
-// (renderer/plan/pass_unit.h).
+// The plan's table of resources (PlanResources), and the steps of the two kinds the renderer
+// still records itself, the forward passes and the transparency, with how they use the frame's
+// resources: what a pass reads and writes, and in which layout and stage. The frame plan
+// (frame_plan.cpp) calls these; the renderer records exactly these steps in this order. Every
+// other kind is written as a unit (renderer/passes/<kind>/<kind>_unit.cpp) and declares its
+// steps beside its recorder instead (renderer/plan/pass_unit.h).
 //
 // When may this be called: any time; pure, no device.
 #pragma once
@@ -37,20 +36,9 @@ struct ForwardUses {
     bool masks_hidden = false;  // C's mask-hidden draw reads the merged pyramid
 };
 
-std::vector<graph::Step> culling_steps(PlanResources& r);
 std::vector<graph::Step> forward_steps(PlanResources& r, const ForwardUses& uses);
-// "blocks", "merge", "reduce" (repeated once per level after the first).
-std::vector<graph::Step> depth_pyramid_steps(PlanResources& r);
-std::vector<graph::Step> occlusion_culling_steps(PlanResources& r);
-// C's SSAO: estimate, filter-x, filter-y over C alone, then "apply" into C's HDR.
-std::vector<graph::Step> mono_ssao_steps(PlanResources& r);
 // Hybrid's blended chunks drawn into the eye after the composite: tested against the eye's
 // linear depth (sampled), blended into its HDR image.
 std::vector<graph::Step> transparency_steps(PlanResources& r, ViewId eye);
-// The eyes' SSAO: per eye (estimate, filter-x, filter-y each) or stereo-consistent (visibility,
-// estimate, filter-x, filter-y, each once per eye over both eyes' images: "visibility-left",
-// "visibility-right", ...), then "left.apply" and
-// "right.apply"; near_only: hybrid, the apply is depth-tested against the eye's near content.
-std::vector<graph::Step> ssao_steps(PlanResources& r, bool stereo, bool near_only);
 
 }  // namespace monoplane::plan

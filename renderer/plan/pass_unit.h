@@ -33,14 +33,26 @@ namespace monoplane::plan {
 // Where in the frame a unit's passes go. The built-in kinds' order is plan_frame's; a unit takes
 // its place between them.
 enum class UnitSlot {
+    // First in the frame: a unit whose outputs every later pass may read (the chunk culling).
+    kFrameStart,
     // After the culling, before the eyes' forward passes: a unit the forward passes read (the
     // shadow map).
     kAfterCulling,
-    // In the hybrid modes only, after C's passes (its forward pass and SSAO), before the eyes'
-    // blended chunks: a unit that maps C into the eyes (the composite).
+    // In the hybrid modes only, after the eyes' forward passes, before C's: a unit that reads
+    // what the eyes drew to save C's work (the merged depth pyramid, then the occlusion
+    // culling, in the order pass_unit_list.h registers them).
+    kAfterEyesForward,
+    // In the hybrid modes only, after C's forward pass, before the composite: a unit that
+    // post-processes C's colour before it is mapped into the eyes (C's SSAO).
+    kMonoPostProcessing,
+    // In the hybrid modes only, after C's passes, before the eyes' blended chunks: a unit that
+    // maps C into the eyes (the composite).
     kComposite,
-    // After the eyes' SSAO, before their tone mapping: a unit that resolves an eye's colour (TAA,
-    // whose output the tone mapping then reads).
+    // After the eyes' forward passes, the composite and the blended chunks: a unit that
+    // post-processes the eyes' HDR colour with every surface in place (the eyes' SSAO).
+    kEyesPostProcessing,
+    // After the eyes' post-processing, before their tone mapping: a unit that resolves an eye's
+    // colour (TAA, whose output the tone mapping then reads).
     kBeforeToneMapping,
     // The tone mapping itself, once the units have revised what they placed (the composite has
     // decided whether it writes the display image: PlannedPass::writes_display).
@@ -56,8 +68,10 @@ enum class UnitSlot {
 class UnitPlacement;
 struct PassUnitDeclaration;
 
-// The declaration of a built-in kind written as a unit: `kind` and the kind's name, its slot, its
-// help and its placement (revise unset).
+// The declaration of a built-in kind written as a unit: `kind` and the kind's name, its slot(s),
+// its help and its placement (revise unset).
+PassUnitDeclaration built_in_unit(PassKind kind, std::vector<UnitSlot> slots, std::string help,
+                                  void (*place)(UnitPlacement& placement));
 PassUnitDeclaration built_in_unit(PassKind kind, UnitSlot slot, std::string help,
                                   void (*place)(UnitPlacement& placement));
 
@@ -69,7 +83,9 @@ struct PassUnitDeclaration {
     // The kind's name: pass_kind_name(kind) for a built-in kind; else the unit's own
     // ("depth_view"), which no built-in kind has. A pass of one view is "left.depth_view".
     std::string name;
-    UnitSlot slot = UnitSlot::kAfterToneMapping;
+    // Where its passes go: place() is called at each of these slots (UnitPlacement::slot() says
+    // which), in plan_frame's order; most units have one.
+    std::vector<UnitSlot> slots = {UnitSlot::kAfterToneMapping};
     // The `--debug-view` name that shows this unit ("depth"), for a unit that is a debug view:
     // PlanFrame::unit_debug_view selects it. Unset for a unit that place() decides alone.
     std::optional<std::string> debug_view;
@@ -87,16 +103,20 @@ struct PassUnitDeclaration {
 // What a unit's place() reads (the frame's inputs) and adds to (the plan).
 class UnitPlacement {
   public:
-    UnitPlacement(const PassUnitDeclaration& unit, const PlanOptions& options,
+    UnitPlacement(const PassUnitDeclaration& unit, UnitSlot slot, const PlanOptions& options,
                   const PlanFrame& frame, const PlanDevice& device, FramePlan& plan,
                   PlanResources& resources)
         : unit_(unit),
+          slot_(slot),
           options_(options),
           frame_(frame),
           device_(device),
           plan_(plan),
           resources_(resources) {}
 
+    // The slot being placed (one of PassUnitDeclaration::slots; for revise(), the tone
+    // mapping's).
+    UnitSlot slot() const { return slot_; }
     const PlanOptions& options() const { return options_; }
     const PlanFrame& frame() const { return frame_; }
     const PlanDevice& device() const { return device_; }
@@ -134,6 +154,7 @@ class UnitPlacement {
 
   private:
     const PassUnitDeclaration& unit_;
+    UnitSlot slot_;
     const PlanOptions& options_;
     const PlanFrame& frame_;
     const PlanDevice& device_;

@@ -60,6 +60,18 @@ void Image::make_view(const Context& ctx) {
         ctx.device(), vk::ImageViewCreateInfo({}, *image_, view_type, desc_.format, {},
                                               vk::ImageSubresourceRange(
                                                   aspect_, 0, desc_.mip_levels, 0, desc_.layers)));
+    if (desc_.mip_levels == 1) return;
+    for (std::uint32_t mip = 0; mip < desc_.mip_levels; ++mip) {
+        mip_views_.emplace_back(
+            ctx.device(),
+            vk::ImageViewCreateInfo({}, *image_, view_type, desc_.format, {},
+                                    vk::ImageSubresourceRange(aspect_, mip, 1, 0, desc_.layers)));
+    }
+}
+
+vk::ImageView Image::mip_view(std::uint32_t mip) const {
+    if (desc_.mip_levels == 1 && mip == 0) return *view_;
+    return *mip_views_.at(mip);
 }
 
 Image Image::layer_of(const Context& ctx, const Image& parent, std::uint32_t layer) {
@@ -83,6 +95,16 @@ vk::raii::Sampler make_clamped_sampler(const Context& ctx, vk::Filter filter) {
                                             vk::SamplerAddressMode::eClampToEdge,
                                             vk::SamplerAddressMode::eClampToEdge,
                                             vk::SamplerAddressMode::eClampToEdge));
+}
+
+vk::raii::Sampler make_texel_sampler(const Context& ctx) {
+    return vk::raii::Sampler(
+        ctx.device(),
+        vk::SamplerCreateInfo({}, vk::Filter::eNearest, vk::Filter::eNearest,
+                              vk::SamplerMipmapMode::eNearest, vk::SamplerAddressMode::eClampToEdge,
+                              vk::SamplerAddressMode::eClampToEdge,
+                              vk::SamplerAddressMode::eClampToEdge, 0.0f, VK_FALSE, 1.0f, VK_FALSE,
+                              vk::CompareOp::eNever, 0.0f, VK_LOD_CLAMP_NONE));
 }
 
 ImageRange Image::range() const {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "renderer/vk/context.h"
 #include "renderer/vk/memory.h"
@@ -52,6 +53,9 @@ class Image {
     vk::Image handle() const { return handle_; }
     std::uint32_t base_layer() const { return base_layer_; }
     vk::ImageView view() const { return *view_; }
+    // A view of one mip level (every layer), for a pass that writes a mip chain level by level;
+    // level 0 of an image of one level is view().
+    vk::ImageView mip_view(std::uint32_t mip) const;
     const ImageDesc& desc() const { return desc_; }
     vk::ImageAspectFlags aspect() const { return aspect_; }
     // Every subresource of this image (or of this layer).
@@ -75,6 +79,7 @@ class Image {
     vk::Image handle_{};
     std::uint32_t base_layer_ = 0;
     vk::raii::ImageView view_{nullptr};
+    std::vector<vk::raii::ImageView> mip_views_;  // with more than one level: one per level
     ImageDesc desc_;
     vk::ImageAspectFlags aspect_;
     vk::ImageLayout initial_layout_ = vk::ImageLayout::eUndefined;
@@ -85,6 +90,9 @@ bool is_depth_format(vk::Format format);
 // A sampler with the given filter, no mipmaps, clamped to the edge: what full-screen passes read
 // their inputs with.
 vk::raii::Sampler make_clamped_sampler(const Context& ctx, vk::Filter filter);
+// Nearest, clamped to the edge, every mip level: what a pass reads a mip chain's texels with
+// (texelFetch of the merged depth pyramid, at any level).
+vk::raii::Sampler make_texel_sampler(const Context& ctx);
 
 // Once, when an image is made and before any frame uses it: puts every subresource in `layout`,
 // cleared to `clear` when given (a colour image), submitted and waited for; the image remembers the

@@ -4,7 +4,8 @@
 // (papers/002) gives the two eyes closer values at corresponding points than per-view HBAO+;
 // the apply pass multiplies the HDR by exactly the AO, only over near content when asked.
 // The pass records no barriers: it runs under the render graph (tests/gpu/graph_harness.h) with
-// the steps the frame plan declares for it, as in a frame.
+// the steps the SSAO unit declares (ssao_steps.h), walking the unit's table of steps as its
+// recorder does.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -26,6 +27,7 @@
 #include "renderer/passes/forward/forward_pass.h"
 #include "renderer/passes/shared/view_constants.h"
 #include "renderer/passes/ssao/ssao_pass.h"
+#include "renderer/passes/ssao/ssao_steps.h"
 #include "renderer/plan/pass_steps.h"
 #include "rig/projection.h"
 #include "tests/gpu/gpu_test.h"
@@ -34,9 +36,10 @@
 namespace monoplane {
 namespace {
 
+using passes::SsaoBindings;
+using passes::SsaoImages;
 using passes::SsaoPass;
 using passes::SsaoVariant;
-using passes::SsaoView;
 using plan::ImageRole;
 using Stage = vk::PipelineStageFlagBits2;
 using Access = vk::AccessFlagBits2;
@@ -189,7 +192,7 @@ bool inside(Pixel p, vk::Extent2D area) {
 }
 
 // A view's SSAO images and the linear depth it reads, as the plan's resources of `view`.
-void bind_view(GraphHarness& harness, plan::ViewId view, const SsaoView& ssao,
+void bind_view(GraphHarness& harness, plan::ViewId view, const SsaoImages& ssao,
                const vk_core::Image& linear_depth) {
     plan::PlanResources& r = harness.resources();
     harness.bind(r.image(view, ImageRole::kLinearDepth), linear_depth);
@@ -197,6 +200,24 @@ void bind_view(GraphHarness& harness, plan::ViewId view, const SsaoView& ssao,
     std::vector<vk_core::ImageRange> scratch;
     for (const vk_core::Image* image : ssao.scratch()) scratch.push_back(image->range());
     harness.bind(r.image(view, ImageRole::kAoScratch), std::move(scratch));
+}
+
+// Bindings of `pass` pointed at a view's images.
+std::unique_ptr<SsaoBindings> bindings_of(const SsaoPass& pass, const vk_core::Buffer& constants,
+                                          const vk_core::Image& linear_depth,
+                                          const SsaoImages& images) {
+    std::unique_ptr<SsaoBindings> bindings = pass.make_bindings();
+    pass.bind(*bindings, {&constants, &linear_depth, &images.ao(), images.scratch()});
+    return bindings;
+}
+
+// The AO image (a transfer source in the read-back step) into the view's host-visible buffer.
+void copy_ao(const vk::raii::CommandBuffer& cmd, const SsaoImages& images) {
+    cmd.copyImageToBuffer(
+        images.ao().handle(), vk::ImageLayout::eTransferSrcOptimal, images.readback().handle(),
+        vk::BufferImageCopy(0, 0, 0,
+                            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
+                            {0, 0, 0}, vk::Extent3D(images.extent(), 1)));
 }
 
 struct AoPair {
@@ -218,23 +239,32 @@ class SsaoPassTest : public testing::GpuTest {
     AoPair run(const std::array<EyeInputs, 2>& eyes, vk::Extent2D extent, SsaoVariant variant,
                const passes::SsaoParams& params = test_params(),
                float skip_beyond = SsaoPass::kEveryPixel) {
-        const SsaoPass pass(ctx(), params);
-        const std::unique_ptr<SsaoView> left =
-            pass.make_view(eyes[0].constants, eyes[0].linear_depth, extent);
-        const std::unique_ptr<SsaoView> right =
-            pass.make_view(eyes[1].constants, eyes[1].linear_depth, extent);
+        const SsaoPass pass(ctx());
+        const std::array<SsaoImages, 2> images = {SsaoImages(ctx(), extent),
+                                                  SsaoImages(ctx(), extent)};
+        std::array<std::unique_ptr<SsaoBindings>, 2> bindings;
+        for (int e = 0; e < 2; ++e) {
+            bindings[e] = bindings_of(pass, eyes[e].constants, eyes[e].linear_depth, images[e]);
+        }
         GraphHarness harness;
         plan::PlanResources& r = harness.resources();
         for (int e = 0; e < 2; ++e) harness.input(plan::eye_view(e), ImageRole::kLinearDepth);
-        // The plan's steps for the eyes' SSAO less its applies: record_pair records the rest.
-        std::vector<graph::Step> steps =
-            plan::ssao_steps(r, variant == SsaoVariant::kStereoConsistent, false);
-        std::erase_if(steps, [](const graph::Step& s) { return s.name.ends_with(".apply"); });
-        harness.add_pass(plan::PassKind::kSsao, "ssao", std::move(steps),
-                         [&](const vk::raii::CommandBuffer& cmd, passes::StepSync& sync) {
-                             pass.record_pair(cmd, sync, *left, *right, kArea, variant,
-                                              skip_beyond);
-                         });
+        // The unit's steps for the eyes' SSAO less its applies.
+        std::vector<passes::ssao::Step> table =
+            passes::ssao::eye_steps(variant == SsaoVariant::kStereoConsistent);
+        std::erase_if(table, [](const passes::ssao::Step& s) {
+            return s.dispatch == passes::ssao::Dispatch::kApply;
+        });
+        harness.add_pass(
+            plan::PassKind::kSsao, "ssao", passes::ssao::declared_steps(r, table, false),
+            [&](const vk::raii::CommandBuffer& cmd, passes::StepSync& sync) {
+                for (const passes::ssao::Step& step : table) {
+                    sync.next(cmd, step.name);
+                    pass.dispatch(cmd, step.dispatch, *bindings[plan::eye_index(step.self)],
+                                  *bindings[plan::eye_index(step.other)], kArea, params,
+                                  skip_beyond);
+                }
+            });
         std::vector<std::pair<graph::ImageHandle, graph::BufferHandle>> copies;
         for (int e = 0; e < 2; ++e) {
             const plan::ViewId eye = plan::eye_view(e);
@@ -242,9 +272,10 @@ class SsaoPassTest : public testing::GpuTest {
                                 r.buffer(eye, plan::BufferRole::kAoReadback));
         }
         harness.add_readback(copies, [&](const vk::raii::CommandBuffer& cmd, passes::StepSync&) {
-            pass.record_readback(cmd, *left);
-            pass.record_readback(cmd, *right);
+            for (const SsaoImages& eye : images) copy_ao(cmd, eye);
         });
+        const SsaoImages* left = &images[0];
+        const SsaoImages* right = &images[1];
         bind_view(harness, plan::ViewId::kLeft, *left, eyes[0].linear_depth);
         bind_view(harness, plan::ViewId::kRight, *right, eyes[1].linear_depth);
         ctx().submit_and_wait([&](const vk::raii::CommandBuffer& cmd) { harness.record(cmd); });
@@ -483,12 +514,12 @@ vk_core::Image make_near_depth(const vk_core::Context& ctx, std::uint32_t near_w
     return depth;
 }
 
-// record_view, record_apply into `everywhere` and, depth-tested against `depth`, into
-// `near_only`, then the AO's read-back, under the render graph. The plan's keys only label the
-// images here: C's SSAO (mono_ssao_steps: the estimate, the filters, an apply everywhere) is
-// this view's, and left.hdr and left.depth stand for the second target and its near content,
-// applied with the uses of the eyes' near-only apply (ssao_steps).
-void record_ssao_and_applies(const vk_core::Context& ctx, const SsaoPass& pass, SsaoView& view,
+// C's SSAO (the unit's mono_steps: the estimate, the filters, an apply into `everywhere`), then
+// an apply depth-tested against `depth` into `near_only`, then the AO's read-back, under the
+// render graph. The plan's keys only label the images here: left.hdr and left.depth stand for
+// the second target and its near content, applied with the uses of the eyes' near-only apply.
+void record_ssao_and_applies(const vk_core::Context& ctx, const SsaoPass& pass,
+                             const SsaoImages& images, const SsaoBindings& view,
                              const vk_core::Image& linear_depth, const vk_core::Image& everywhere,
                              const vk_core::Image& near_only, const vk_core::Image& depth) {
     using plan::ViewId;
@@ -498,25 +529,33 @@ void record_ssao_and_applies(const vk_core::Context& ctx, const SsaoPass& pass, 
     harness.input(ViewId::kMono, ImageRole::kHdr);
     harness.input(ViewId::kLeft, ImageRole::kHdr);
     harness.input(ViewId::kLeft, ImageRole::kDepth);
-    std::vector<graph::Step> steps = plan::mono_ssao_steps(r);
+    const std::vector<passes::ssao::Step> table = passes::ssao::mono_steps();
+    std::vector<graph::Step> steps = passes::ssao::declared_steps(r, table, false);
     graph::Step& near = steps.emplace_back();
     near.name = "left.apply";
     graph::StepBuilder(near)
         .use(r.image(ViewId::kMono, ImageRole::kAo), graph::Use::kSampledFragment)
         .use(r.image(ViewId::kLeft, ImageRole::kHdr), graph::Use::kColorBlend)
         .use(r.image(ViewId::kLeft, ImageRole::kDepth), graph::Use::kDepthTest);
+    const passes::SsaoParams params;
     harness.add_pass(plan::PassKind::kSsao, "mono.ssao", std::move(steps),
                      [&](const vk::raii::CommandBuffer& cmd, passes::StepSync& sync) {
-                         pass.record_view(cmd, sync, view, kArea);
-                         pass.record_apply(cmd, sync, view, everywhere, kArea);
-                         pass.record_apply(cmd, sync, view, near_only, kArea, &depth, "left");
+                         for (const passes::ssao::Step& step : table) {
+                             sync.next(cmd, step.name);
+                             if (step.dispatch == passes::ssao::Dispatch::kApply) {
+                                 pass.apply(cmd, view, everywhere, kArea);
+                             } else {
+                                 pass.dispatch(cmd, step.dispatch, view, view, kArea, params);
+                             }
+                         }
+                         sync.next(cmd, "left.apply");
+                         pass.apply(cmd, view, near_only, kArea, &depth);
                      });
-    harness.add_readback({{r.image(ViewId::kMono, ImageRole::kAo),
-                           r.buffer(ViewId::kMono, plan::BufferRole::kAoReadback)}},
-                         [&](const vk::raii::CommandBuffer& cmd, passes::StepSync&) {
-                             pass.record_readback(cmd, view);
-                         });
-    bind_view(harness, ViewId::kMono, view, linear_depth);
+    harness.add_readback(
+        {{r.image(ViewId::kMono, ImageRole::kAo),
+          r.buffer(ViewId::kMono, plan::BufferRole::kAoReadback)}},
+        [&](const vk::raii::CommandBuffer& cmd, passes::StepSync&) { copy_ao(cmd, images); });
+    bind_view(harness, ViewId::kMono, images, linear_depth);
     harness.bind(r.image(ViewId::kMono, ImageRole::kHdr), everywhere);
     harness.bind(r.image(ViewId::kLeft, ImageRole::kHdr), near_only);
     harness.bind(r.image(ViewId::kLeft, ImageRole::kDepth), depth);
@@ -525,16 +564,17 @@ void record_ssao_and_applies(const vk_core::Context& ctx, const SsaoPass& pass, 
 
 TEST_F(SsaoPassTest, ApplyMultipliesTheHdrByTheAoOverNearContentOnlyWhenAsked) {
     const SsaoPass pass(ctx());
-    const std::unique_ptr<SsaoView> view =
-        pass.make_view(eyes_[0].constants, eyes_[0].linear_depth, kArea);
+    const SsaoImages images(ctx(), kArea);
+    const std::unique_ptr<SsaoBindings> view =
+        bindings_of(pass, eyes_[0].constants, eyes_[0].linear_depth, images);
     const std::array<float, 4> color = {0.5f, 1.0f, 2.0f, 0.75f};  // exact in half floats
     const vk_core::Image everywhere = make_hdr(ctx(), color);
     const vk_core::Image near_only = make_hdr(ctx(), color);
     const std::uint32_t near_width = kArea.width / 2;
     const vk_core::Image depth = make_near_depth(ctx(), near_width);
-    record_ssao_and_applies(ctx(), pass, *view, eyes_[0].linear_depth, everywhere, near_only,
-                            depth);
-    const std::vector<float> ao = view->ao_values();
+    record_ssao_and_applies(ctx(), pass, images, *view, eyes_[0].linear_depth, everywhere,
+                            near_only, depth);
+    const std::vector<float> ao = images.ao_values();
     ASSERT_EQ(ao.size(), std::size_t{kArea.width} * kArea.height);
     const std::vector<float> all = read_hdr(ctx(), everywhere);
     const std::vector<float> near = read_hdr(ctx(), near_only);
@@ -578,7 +618,7 @@ TEST(SsaoVariant, NamesRoundTrip) {
 TEST_F(SsaoPassTest, SkippingFarPixelsLeavesTheNearAoUnchanged) {
     passes::SsaoParams params = test_params();
     params.sigma_max = 0.05f;  // a margin of 0.3 m, small against the set-up's 1-2 m of depth
-    const float margin = SsaoPass(ctx(), params).skip_margin();
+    const float margin = SsaoPass::skip_margin(params);
     EXPECT_FLOAT_EQ(margin, 6.0f * params.sigma_max);
     const float limit = 1.6f;
     for (SsaoVariant variant : {SsaoVariant::kPerView, SsaoVariant::kStereoConsistent}) {

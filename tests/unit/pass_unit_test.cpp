@@ -5,10 +5,14 @@
 // would), written out by hand, so that the plans compared do not come from the renderer's units.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "renderer/passes/pass_unit_declarations.h"
+#include "renderer/passes/ssao/ssao_steps.h"
 #include "renderer/plan/frame_plan.h"
 #include "renderer/plan/frame_plan_json.h"
 #include "renderer/plan/pass_unit.h"
@@ -308,7 +312,7 @@ TEST(PassUnit, TheCompositeFusesOnlyWhereNoLaterPassUsesTheEyesHdrImage) {
     std::vector<PassUnitDeclaration> units = passes::pass_unit_declarations();
     PassUnitDeclaration reader;
     reader.name = "left_hdr_reader";
-    reader.slot = UnitSlot::kBeforeToneMapping;
+    reader.slots = {UnitSlot::kBeforeToneMapping};
     reader.place = &place_left_hdr_reader;
     units.push_back(reader);
     const FramePlan plan = plan_frame(options_for(Mode::kHybrid), drawn, PlanDevice{true}, units);
@@ -415,6 +419,209 @@ TEST(PassUnit, TheShadowMapIsAUnitAfterTheCullingThatTheForwardPassesRead) {
     const FramePlan plan = passes::plan_frame(options_for(Mode::kStereo), reused, PlanDevice{});
     EXPECT_EQ(plan.find(PassKind::kShadow)->skipped,
               "light region unchanged: the shadow map is reused");
+}
+
+// The index of the pass named `name` in the plan (a failure, and past the end, if none).
+std::size_t position(const FramePlan& plan, const std::string& name) {
+    for (std::size_t p = 0; p < plan.passes.size(); ++p) {
+        if (plan.passes[p].name == name) return p;
+    }
+    ADD_FAILURE() << "no pass " << name;
+    return plan.passes.size();
+}
+
+Names step_names(const PlannedPass& pass) {
+    Names names;
+    for (const graph::Step& step : pass.steps) names.push_back(step.name);
+    return names;
+}
+
+// SSAO is one unit placed at two slots: C's pass after C's forward pass and before the
+// composite that maps C's colour into the eyes, the eyes' pass once every surface is drawn
+// (after the blended chunks) and before TAA; its steps are the unit's one table.
+TEST(PassUnit, SsaoIsOneUnitAtTwoSlotsCsBeforeTheCompositeTheEyesBeforeTaa) {
+    PlanOptions options = options_for(Mode::kHybrid, true, true);
+    options.blended = true;
+    const FramePlan hybrid = passes::plan_frame(options, PlanFrame{}, PlanDevice{true, true});
+    const PlannedPass* mono = hybrid.find(PassKind::kSsao, ViewId::kMono);
+    const PlannedPass* eyes = hybrid.find(PassKind::kSsao);
+    ASSERT_NE(mono, nullptr);
+    ASSERT_NE(eyes, nullptr);
+    EXPECT_EQ(mono->unit, "ssao");
+    EXPECT_EQ(mono->name, "mono.ssao");
+    EXPECT_EQ(eyes->name, "ssao");
+    EXPECT_LT(position(hybrid, "mono.forward"), position(hybrid, "mono.ssao"));
+    EXPECT_LT(position(hybrid, "mono.ssao"), position(hybrid, "left.composite"));
+    EXPECT_LT(position(hybrid, "right.transparency"), position(hybrid, "ssao"));
+    EXPECT_LT(position(hybrid, "ssao"), position(hybrid, "left.taa"));
+    // C's runs only when C has something (the GPU's word), and its steps are C's alone.
+    EXPECT_EQ(mono->when, GpuPredicate::kMonoAny);
+    EXPECT_EQ(step_names(*mono), (Names{"estimate", "filter-x", "filter-y", "apply"}));
+    // Each step reads the GPU's word; the compute steps write the scratch and AO images, the
+    // apply blends into the HDR image (a read and a write).
+    EXPECT_EQ(hybrid.reads(*mono),
+              (Names{"mono.linear_depth", "predicates", "mono.ao", "mono.hdr"}));
+    EXPECT_EQ(hybrid.writes(*mono), (Names{"mono.ao_scratch", "mono.ao", "mono.hdr"}));
+    // The per-eye form: three steps per eye, then the applies, depth-tested in hybrid.
+    EXPECT_EQ(step_names(*eyes),
+              (Names{"left.estimate", "left.filter-x", "left.filter-y", "right.estimate",
+                     "right.filter-x", "right.filter-y", "left.apply", "right.apply"}));
+    const Names apply_reads = [&] {
+        PlannedPass apply;
+        apply.steps = {eyes->steps[6]};
+        return hybrid.reads(apply);
+    }();
+    EXPECT_EQ(apply_reads, (Names{"left.ao", "left.hdr", "left.depth"}));
+
+    // Stereo: no pass of C's; the eyes' applies are not depth-tested; the stereo-consistent
+    // form binds both eyes' images in each of its eight dispatches.
+    options = options_for(Mode::kStereo, false, true);
+    options.ssao_stereo = true;
+    const FramePlan stereo = passes::plan_frame(options, PlanFrame{}, PlanDevice{});
+    EXPECT_EQ(stereo.find(PassKind::kSsao, ViewId::kMono), nullptr);
+    const PlannedPass& consistent = *stereo.find(PassKind::kSsao);
+    EXPECT_EQ(step_names(consistent),
+              (Names{"visibility-left", "visibility-right", "estimate-left", "estimate-right",
+                     "filter-x-left", "filter-x-right", "filter-y-left", "filter-y-right",
+                     "left.apply", "right.apply"}));
+    for (std::size_t s = 0; s < 8; ++s) {
+        PlannedPass one;
+        one.steps = {consistent.steps[s]};
+        EXPECT_EQ(stereo.writes(one),
+                  (Names{"left.ao_scratch", "left.ao", "right.ao_scratch", "right.ao"}))
+            << consistent.steps[s].name;
+    }
+    PlannedPass apply;
+    apply.steps = {consistent.steps[9]};
+    EXPECT_EQ(stereo.reads(apply), (Names{"right.ao", "right.hdr"}));
+
+    // A hybrid frame without C skips C's pass for the reason every pass of C's gives.
+    PlanFrame no_mono;
+    no_mono.mono_skipped = true;
+    const FramePlan skipped =
+        passes::plan_frame(options_for(Mode::kHybrid, false, true), no_mono, PlanDevice{});
+    EXPECT_EQ(skipped.find(PassKind::kSsao, ViewId::kMono)->skipped,
+              skipped.find(PassKind::kForward, ViewId::kMono)->skipped);
+    EXPECT_TRUE(skipped.find(PassKind::kSsao, ViewId::kMono)->skipped.has_value());
+}
+
+// The recorder finds each declared step in the unit's table by name: the names are unique
+// across C's and both eyes' forms, and each names the step it was made from.
+TEST(PassUnit, EverySsaoStepNameFindsItsOwnStep) {
+    std::set<std::string> names;
+    std::vector<passes::ssao::Step> all = passes::ssao::mono_steps();
+    for (bool stereo : {false, true}) {
+        for (const passes::ssao::Step& step : passes::ssao::eye_steps(stereo)) {
+            all.push_back(step);
+        }
+    }
+    for (const passes::ssao::Step& step : all) {
+        names.insert(step.name);
+        const passes::ssao::Step* found = passes::ssao::step_named(step.name);
+        ASSERT_NE(found, nullptr) << step.name;
+        EXPECT_EQ(found->dispatch, step.dispatch) << step.name;
+        EXPECT_EQ(found->self, step.self) << step.name;
+        EXPECT_EQ(found->other, step.other) << step.name;
+    }
+    // 4 of C's, 6 + 2 per eye, 8 stereo (their applies are the per-eye form's).
+    EXPECT_EQ(names.size(), 4u + 8u + 8u);
+    EXPECT_EQ(passes::ssao::step_named("left.taa"), nullptr);
+    // Sect. 3.2: only the right eye reprojects the left's estimate.
+    EXPECT_EQ(passes::ssao::step_named("estimate-right")->dispatch,
+              passes::ssao::Dispatch::kStereoReprojectedEstimate);
+    EXPECT_EQ(passes::ssao::step_named("estimate-left")->dispatch,
+              passes::ssao::Dispatch::kStereoEstimate);
+}
+
+// The merged depth pyramid is a unit between the eyes' forward passes and C's; whether it runs,
+// whether the occlusion culling runs and whether C masks its hidden pixels is one rule
+// (depth_test_skip_reason), checked here against the cases written out by hand.
+TEST(PassUnit, TheDepthPyramidIsAUnitBetweenTheEyesAndCWithTheOneDepthTestRule) {
+    EXPECT_EQ(passes::plan_frame(options_for(Mode::kStereo), PlanFrame{}, PlanDevice{})
+                  .find(PassKind::kDepthPyramid),
+              nullptr);
+    const FramePlan hybrid =
+        passes::plan_frame(options_for(Mode::kHybrid), PlanFrame{}, PlanDevice{true, true});
+    const PlannedPass& pyramid = *hybrid.find(PassKind::kDepthPyramid);
+    EXPECT_EQ(pyramid.unit, "depth_pyramid");
+    EXPECT_FALSE(pyramid.skipped);
+    EXPECT_EQ(pyramid.when, GpuPredicate::kMonoDepthTested);
+    EXPECT_EQ(position(hybrid, "right.forward") + 1, position(hybrid, "depth_pyramid"));
+    EXPECT_EQ(position(hybrid, "depth_pyramid") + 1, position(hybrid, "occlusion_culling"));
+    EXPECT_EQ(step_names(pyramid), (Names{"blocks", "merge", "reduce"}));
+    EXPECT_TRUE(pyramid.steps[2].repeats);
+    EXPECT_EQ(hybrid.reads(pyramid),
+              (Names{"left.depth", "right.depth", "predicates", "pyramid_blocks"}));
+    EXPECT_EQ(hybrid.writes(pyramid), (Names{"pyramid_blocks", "merged_depth"}));
+
+    struct Case {
+        Mode mode;
+        bool mono_skipped;
+        DebugView debug;
+        MonoCulling culling;
+        const char* reason;  // nullptr: depth-tested
+    };
+    const Case cases[] = {
+        {Mode::kHybrid, false, DebugView::kNone, MonoCulling::kOcclusionCull, nullptr},
+        {Mode::kHybrid, false, DebugView::kNone, MonoCulling::kDiscard, nullptr},
+        {Mode::kHybrid, true, DebugView::kNone, MonoCulling::kOcclusionCull,
+         "m >= far: nothing lies beyond the mono plane, no C"},
+        {Mode::kHybridFarfield, false, DebugView::kNone, MonoCulling::kOcclusionCull,
+         "hybrid-farfield: C is frustum-culled only"},
+        {Mode::kHybrid, false, DebugView::kMonoOnly, MonoCulling::kOcclusionCull,
+         "debug view mono-only: C's whole image"},
+        {Mode::kHybrid, false, DebugView::kNone, MonoCulling::kNoOpt,
+         "variant no-opt: no depth test"},
+    };
+    for (const Case& c : cases) {
+        PlanFrame frame;
+        frame.mono_skipped = c.mono_skipped;
+        frame.debug = c.debug;
+        frame.mono_culling = c.culling;
+        const FramePlan plan = passes::plan_frame(options_for(c.mode), frame, PlanDevice{});
+        const std::optional<std::string> reason = plan.find(PassKind::kDepthPyramid)->skipped;
+        SCOPED_TRACE(c.reason ? c.reason : "depth-tested");
+        EXPECT_EQ(reason, c.reason ? std::optional<std::string>(c.reason) : std::nullopt);
+        EXPECT_EQ(depth_test_skip_reason(options_for(c.mode), frame), reason);
+        // C masks its hidden pixels exactly when the pyramid is built.
+        const PlannedPass& mono = *plan.find(PassKind::kForward, ViewId::kMono);
+        const bool masks = std::any_of(mono.draws.begin(), mono.draws.end(), [](const auto& d) {
+            return d.step == DrawStep::kMaskHidden;
+        });
+        EXPECT_EQ(masks, !reason.has_value());
+        // The occlusion culling gives the same reason, or its own for the variant discard.
+        const std::optional<std::string> occlusion =
+            plan.find(PassKind::kOcclusionCulling)->skipped;
+        if (c.culling == MonoCulling::kDiscard) {
+            EXPECT_EQ(occlusion, "variant discard: C's hidden chunks are still drawn");
+        } else {
+            EXPECT_EQ(occlusion, reason);
+        }
+    }
+}
+
+// The chunk culling is a unit first in every frame; the occlusion culling a unit after the
+// pyramid it reads and before C's forward pass, which draws the list it rewrites.
+TEST(PassUnit, TheCullingIsFirstAndTheOcclusionCullingFollowsThePyramid) {
+    for (Mode mode : {Mode::kStereo, Mode::kHybrid}) {
+        const FramePlan plan = passes::plan_frame(options_for(mode), PlanFrame{}, PlanDevice{});
+        const PlannedPass& culling = plan.passes.front();
+        EXPECT_EQ(culling.kind, PassKind::kCulling);
+        EXPECT_EQ(culling.unit, "culling");
+        EXPECT_EQ(step_names(culling), Names{"frustum"});
+        EXPECT_TRUE(plan.reads(culling).empty());
+        EXPECT_EQ(plan.writes(culling), (Names{"draw_lists", "predicates", "lod_state"}));
+        EXPECT_EQ(plan.find(PassKind::kOcclusionCulling) != nullptr, mode != Mode::kStereo);
+    }
+    const FramePlan hybrid =
+        passes::plan_frame(options_for(Mode::kHybrid), PlanFrame{}, PlanDevice{true, true});
+    const PlannedPass& occlusion = *hybrid.find(PassKind::kOcclusionCulling);
+    EXPECT_EQ(occlusion.unit, "occlusion_culling");
+    EXPECT_EQ(occlusion.when, GpuPredicate::kMonoDepthTested);
+    EXPECT_EQ(position(hybrid, "depth_pyramid") + 1, position(hybrid, "occlusion_culling"));
+    EXPECT_EQ(position(hybrid, "occlusion_culling") + 1, position(hybrid, "mono.forward"));
+    EXPECT_EQ(hybrid.reads(occlusion), (Names{"merged_depth", "lod_state", "predicates"}));
+    EXPECT_EQ(hybrid.writes(occlusion), (Names{"draw_lists", "predicates"}));
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ void place(plan::UnitPlacement& placement) {
 plan::PassUnitDeclaration declaration() {
     plan::PassUnitDeclaration unit;
     unit.name = "depth_view";
-    unit.slot = plan::UnitSlot::kAfterToneMapping;
+    unit.slots = {plan::UnitSlot::kAfterToneMapping};
     unit.debug_view = "depth";
     unit.help =
         "each eye's linear depth, brighter nearer, warm before the mono plane and cool at or "

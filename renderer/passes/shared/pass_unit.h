@@ -13,6 +13,7 @@
 // and its first step).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -21,8 +22,10 @@
 #include <utility>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "renderer/passes/culling/chunk_lists.h"
 #include "renderer/passes/shadow/shadow_map.h"
 #include "renderer/passes/shared/composite_values.h"
 #include "renderer/passes/shared/indirect_draws.h"
@@ -52,6 +55,9 @@ struct UnitFrameValues {
     vk::Extent2D mono_area{};
     // World -> the shadow map's clip space this frame (fit_light_view_proj), float32 as the GPU.
     glm::mat4 light_view_proj{1.0f};
+    // Homographies from C's pixels to each eye's pixels (rig::mono_pixel_to_eye_pixel, with
+    // TAA's jitter): set for the depth pyramid's pass (PassKind::kDepthPyramid).
+    std::array<glm::dmat3, 2> mono_pixel_to_eye{glm::dmat3(1.0), glm::dmat3(1.0)};
 };
 
 // The scene a renderer draws, as its units may use it: what every renderer of the scene shares
@@ -90,6 +96,17 @@ class UnitRecording {
     virtual bool declares(plan::ViewId view, plan::ImageRole role) const = 0;
     // The same for `view`'s buffer `role` (kNone: a shared buffer).
     virtual bool declares(plan::ViewId view, plan::BufferRole role) const = 0;
+    // Every image of `view`'s `role` this frame, for a role that is several (SSAO's scratch
+    // images, in SsaoImages::scratch()'s order), under image()'s rule.
+    virtual std::vector<const vk_core::Image*> images(plan::ViewId view, plan::ImageRole role) = 0;
+    // `view`'s constants this frame (passes::ViewConstants: its matrices, camera and head), which
+    // the renderer uploads before the frame's first pass: any pass may read them, no step
+    // declares them.
+    virtual const vk_core::Buffer& view_constants(plan::ViewId view) const = 0;
+    // What the chunk culling reads and writes beside its declared buffers (ChunkLists::inputs):
+    // the scene's tables, the frame's constants and draw order (uploaded before the frame's
+    // first pass), each chunk's routing bits (only the culling writes them).
+    virtual CullInputs cull_inputs() const = 0;
     // The buffer of `view`'s `role` this frame (kNone: the frame's own, as the depth histogram's),
     // under the same rule.
     virtual const vk_core::Buffer& buffer(plan::ViewId view, plan::BufferRole role) = 0;

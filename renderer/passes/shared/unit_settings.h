@@ -29,10 +29,26 @@ struct DepthHistogramRange {
     double far = 1000.0;
 };
 
+// Screen-space ambient occlusion (renderer/passes/ssao/ssao_unit.cpp), as ssao_common.glsl
+// reads it.
+struct SsaoParams {
+    float radius = 0.75f;        // metres: radius R of the sample disk around P
+    int directions = 8;          // HBAO+ directions per pixel
+    int steps = 4;               // samples per direction
+    float angle_bias = 0.1f;     // HBAO+ bias subtracted from the cosine term
+    float strength = 1.5f;       // AO = clamp(1 - strength * mean obscuration, 0, 1)
+    int filter_taps = 13;        // N of the separable bilateral filter (papers/002 Sect. 3.3)
+    float sigma_min = 0.02f;     // metres: clamp of sigma = r / 3
+    float sigma_max = 0.5f;      // metres
+    float eta = 0.05f;           // w = smoothstep(0.5 - eta, 0.5, alpha), GLSL order
+    float back_check_px = 1.0f;  // reverse reprojection accepts a round trip within this distance
+};
+
 struct UnitSettings {
     TonemapParams tonemap;
     TaaParams taa;
     DepthHistogramRange depth_histogram;
+    SsaoParams ssao;
 };
 
 }  // namespace monoplane::passes

@@ -5,6 +5,7 @@
 #include <initializer_list>
 #include <span>
 #include <string>
+#include <utility>
 
 #include "common/programming_error.h"
 #include "renderer/executor/image_layouts.h"
@@ -14,12 +15,6 @@
 
 namespace monoplane::passes {
 namespace {
-
-// A step's name in the plan: the action alone in C's pass, after the eye's name in the eyes'
-// ("left.estimate").
-std::string step_name(std::string_view view, std::string_view action) {
-    return view.empty() ? std::string(action) : std::string(view) + "." + std::string(action);
-}
 
 const std::uint32_t kHbaoEstimate[] = {
 #include "hbao_estimate.comp.spv.inc"
@@ -119,54 +114,26 @@ std::string ssao_variant_name(SsaoVariant variant) {
     return "?";
 }
 
-struct SsaoView::State {
-    vk::Extent2D extent;
-    // Scratch, always eGeneral: the estimate, the horizontal filter pass, the visibility map L.
-    vk_core::Image raw;
-    vk_core::Image filtered_x;
-    vk_core::Image other_pixel;
-    // The result, eShaderReadOnlyOptimal between recordings (eGeneral while written).
-    vk_core::Image ao;
-    vk_core::Buffer readback;
-    vk::raii::DescriptorPool pool{nullptr};
-    vk::raii::DescriptorSet compute_set{nullptr};  // ssao_common.glsl's bindings of one view
-    vk::raii::DescriptorSet apply_set{nullptr};    // the AO, sampled
-
-    State(const vk_core::Context& ctx, vk::Extent2D size)
-        : extent(size),
-          raw(ctx, {size, SsaoPass::kAoFormat, vk::ImageUsageFlagBits::eStorage}),
-          filtered_x(ctx, {size, SsaoPass::kAoFormat, vk::ImageUsageFlagBits::eStorage}),
-          other_pixel(ctx, {size, kOtherPixelFormat, vk::ImageUsageFlagBits::eStorage}),
-          ao(ctx,
-             {size, SsaoPass::kAoFormat,
-              vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled |
-                  vk::ImageUsageFlagBits::eTransferSrc | vk::ImageUsageFlagBits::eTransferDst}),
-          readback(ctx, vk::DeviceSize{size.width} * size.height * sizeof(float),
-                   vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {}
-};
-
-SsaoView::SsaoView(std::unique_ptr<State> state) : state_(std::move(state)) {}
-SsaoView::~SsaoView() = default;
-
-const vk_core::Image& SsaoView::ao() const {
-    return state_->ao;
+SsaoImages::SsaoImages(const vk_core::Context& ctx, vk::Extent2D extent)
+    : extent_(extent),
+      raw_(ctx, {extent, kAoFormat, vk::ImageUsageFlagBits::eStorage}),
+      filtered_x_(ctx, {extent, kAoFormat, vk::ImageUsageFlagBits::eStorage}),
+      other_pixel_(ctx, {extent, kOtherPixelFormat, vk::ImageUsageFlagBits::eStorage}),
+      ao_(ctx, {extent, kAoFormat,
+                vk::ImageUsageFlagBits::eStorage | vk::ImageUsageFlagBits::eSampled |
+                    vk::ImageUsageFlagBits::eTransferSrc | vk::ImageUsageFlagBits::eTransferDst}),
+      readback_(ctx, vk::DeviceSize{extent.width} * extent.height * sizeof(float),
+                vk::BufferUsageFlagBits::eTransferDst, vk_core::MemoryUse::kHostVisible) {
+    for (vk_core::Image* image : {&raw_, &filtered_x_, &other_pixel_}) {
+        vk_core::initialise_image(ctx, *image, executor::layout_for(graph::Use::kStorageWrite));
+    }
+    vk_core::initialise_image(ctx, ao_, executor::layout_for(graph::Use::kSampledFragment),
+                              vk::ClearColorValue(std::array{1.0f, 1.0f, 1.0f, 1.0f}));
 }
 
-std::vector<const vk_core::Image*> SsaoView::scratch() const {
-    return {&state_->raw, &state_->filtered_x, &state_->other_pixel};
-}
-
-vk::Extent2D SsaoView::extent() const {
-    return state_->extent;
-}
-
-const vk_core::Buffer& SsaoView::readback() const {
-    return state_->readback;
-}
-
-std::vector<float> SsaoView::ao_values() const {
-    std::vector<float> values(std::size_t{state_->extent.width} * state_->extent.height);
-    std::memcpy(values.data(), state_->readback.mapped(), values.size() * sizeof(float));
+std::vector<float> SsaoImages::ao_values() const {
+    std::vector<float> values(std::size_t{extent_.width} * extent_.height);
+    std::memcpy(values.data(), readback_.mapped(), values.size() * sizeof(float));
     return values;
 }
 
@@ -183,8 +150,8 @@ struct SsaoPass::Impl {
     vk::raii::Pipeline apply_everywhere{nullptr};
     vk::raii::Pipeline apply_near_only{nullptr};
 
-    SsaoPush push(const SsaoParams& params, vk::Extent2D area, std::int32_t flags,
-                  float skip_beyond) const {
+    static SsaoPush push(const SsaoParams& params, vk::Extent2D area, std::int32_t flags,
+                         float skip_beyond) {
         return {static_cast<std::int32_t>(area.width),
                 static_cast<std::int32_t>(area.height),
                 params.directions,
@@ -201,24 +168,34 @@ struct SsaoPass::Impl {
                 skip_beyond};
     }
 
-    // One dispatch over the area with `self` as set 0 and `other` as set 1.
-    void dispatch(const vk::raii::CommandBuffer& cmd, const vk::raii::Pipeline& pipeline,
-                  const SsaoView& self, const SsaoView& other, const SsaoPush& block,
-                  vk::Extent2D area) const {
-        cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline);
-        const std::array sets = {*self.state_->compute_set, *other.state_->compute_set};
-        cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *compute_layout, 0, sets, {});
-        cmd.pushConstants<SsaoPush>(*compute_layout, vk::ShaderStageFlagBits::eCompute, 0, block);
-        cmd.dispatch(groups_covering(area.width, kSsaoGroup),
-                     groups_covering(area.height, kSsaoGroup), 1);
+    // A dispatch's pipeline and the flags ssao_common.glsl reads.
+    std::pair<const vk::raii::Pipeline*, std::int32_t> program(ssao::Dispatch dispatch) const {
+        using ssao::Dispatch;
+        switch (dispatch) {
+            case Dispatch::kEstimate:
+                return {&hbao_estimate, 0};
+            case Dispatch::kFilterX:
+                return {&bilateral_filter, 0};
+            case Dispatch::kFilterY:
+                return {&bilateral_filter, kFlagVertical};
+            case Dispatch::kStereoVisibility:
+                return {&stereo_visibility, 0};
+            case Dispatch::kStereoEstimate:
+                return {&stereo_estimate, 0};
+            case Dispatch::kStereoReprojectedEstimate:
+                return {&stereo_estimate, kFlagReproject};
+            case Dispatch::kStereoFilterX:
+                return {&bilateral_filter, kFlagStereo};
+            case Dispatch::kStereoFilterY:
+                return {&bilateral_filter, kFlagStereo | kFlagVertical};
+            case Dispatch::kApply:
+                break;
+        }
+        programming_error("SsaoPass::dispatch: the apply is not a compute dispatch");
     }
 };
 
-SsaoPass::SsaoPass(const vk_core::Context& ctx, const SsaoParams& params)
-    : ctx_(ctx), params_(params), impl_(std::make_unique<Impl>()) {
-    MONOPLANE_EXPECTS(params.directions > 0 && params.steps > 0 && params.filter_taps > 0);
-    MONOPLANE_EXPECTS(params.radius > 0.0f && params.sigma_min > 0.0f &&
-                      params.sigma_min <= params.sigma_max);
+SsaoPass::SsaoPass(const vk_core::Context& ctx) : ctx_(ctx), impl_(std::make_unique<Impl>()) {
     Impl& impl = *impl_;
     impl.nearest = vk_core::make_clamped_sampler(ctx, vk::Filter::eNearest);
     const auto compute = vk::ShaderStageFlagBits::eCompute;
@@ -266,39 +243,43 @@ SsaoPass::SsaoPass(const vk_core::Context& ctx, const SsaoParams& params)
 
 SsaoPass::~SsaoPass() = default;
 
-std::unique_ptr<SsaoView> SsaoPass::make_view(const vk_core::Buffer& constants,
-                                              const vk_core::Image& linear_depth,
-                                              vk::Extent2D extent) const {
-    MONOPLANE_EXPECTS(linear_depth.desc().extent == extent);
-    MONOPLANE_EXPECTS(constants.size() >= sizeof(ViewConstants));
-    auto state = std::make_unique<SsaoView::State>(ctx_, extent);
-
+std::unique_ptr<SsaoBindings> SsaoPass::make_bindings() const {
+    auto bindings = std::unique_ptr<SsaoBindings>(new SsaoBindings());
     const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eUniformBuffer, 1),
                                    vk::DescriptorPoolSize(Type::eCombinedImageSampler, 2),
                                    vk::DescriptorPoolSize(Type::eStorageImage, 4)};
-    state->pool = vk::raii::DescriptorPool(
+    bindings->pool_ = vk::raii::DescriptorPool(
         ctx_.device(), vk::DescriptorPoolCreateInfo(
                            vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 2, pool_sizes));
     const std::array layouts = {*impl_->view_layout, *impl_->apply_layout};
     vk::raii::DescriptorSets sets(ctx_.device(),
-                                  vk::DescriptorSetAllocateInfo(*state->pool, layouts));
-    state->compute_set = std::move(sets[0]);
-    state->apply_set = std::move(sets[1]);
+                                  vk::DescriptorSetAllocateInfo(*bindings->pool_, layouts));
+    bindings->compute_set_ = std::move(sets[0]);
+    bindings->apply_set_ = std::move(sets[1]);
+    return bindings;
+}
 
-    const vk::DescriptorBufferInfo constants_info(constants.handle(), 0, sizeof(ViewConstants));
-    const vk::DescriptorImageInfo depth_info(*impl_->nearest, linear_depth.view(),
+void SsaoPass::bind(SsaoBindings& bindings, const SsaoViewImages& images) const {
+    MONOPLANE_EXPECTS(images.constants && images.linear_depth && images.ao &&
+                      images.scratch.size() == 3);
+    MONOPLANE_EXPECTS(images.linear_depth->desc().extent == images.ao->desc().extent);
+    MONOPLANE_EXPECTS(images.constants->size() >= sizeof(ViewConstants));
+    const vk::DescriptorBufferInfo constants_info(images.constants->handle(), 0,
+                                                  sizeof(ViewConstants));
+    const vk::DescriptorImageInfo depth_info(*impl_->nearest, images.linear_depth->view(),
                                              executor::layout_for(graph::Use::kSampledCompute));
     const auto storage = [](const vk_core::Image& image) {
         return vk::DescriptorImageInfo(nullptr, image.view(),
                                        executor::layout_for(graph::Use::kStorageWrite));
     };
-    const vk::DescriptorImageInfo other_pixel_info = storage(state->other_pixel);
-    const vk::DescriptorImageInfo raw_info = storage(state->raw);
-    const vk::DescriptorImageInfo filtered_info = storage(state->filtered_x);
-    const vk::DescriptorImageInfo ao_info = storage(state->ao);
-    const vk::DescriptorImageInfo ao_sampled(*impl_->nearest, state->ao.view(),
+    // ssao_common.glsl's bindings: L, the raw estimate, the horizontal filter's output, the AO.
+    const vk::DescriptorImageInfo other_pixel_info = storage(*images.scratch[2]);
+    const vk::DescriptorImageInfo raw_info = storage(*images.scratch[0]);
+    const vk::DescriptorImageInfo filtered_info = storage(*images.scratch[1]);
+    const vk::DescriptorImageInfo ao_info = storage(*images.ao);
+    const vk::DescriptorImageInfo ao_sampled(*impl_->nearest, images.ao->view(),
                                              executor::layout_for(graph::Use::kSampledFragment));
-    const vk::DescriptorSet set = *state->compute_set;
+    const vk::DescriptorSet set = *bindings.compute_set_;
     const std::array writes = {
         vk::WriteDescriptorSet(set, 0, 0, Type::eUniformBuffer, {}, constants_info),
         vk::WriteDescriptorSet(set, 1, 0, Type::eCombinedImageSampler, depth_info),
@@ -306,86 +287,40 @@ std::unique_ptr<SsaoView> SsaoPass::make_view(const vk_core::Buffer& constants,
         vk::WriteDescriptorSet(set, 3, 0, Type::eStorageImage, raw_info),
         vk::WriteDescriptorSet(set, 4, 0, Type::eStorageImage, filtered_info),
         vk::WriteDescriptorSet(set, 5, 0, Type::eStorageImage, ao_info),
-        vk::WriteDescriptorSet(*state->apply_set, 0, 0, Type::eCombinedImageSampler, ao_sampled),
+        vk::WriteDescriptorSet(*bindings.apply_set_, 0, 0, Type::eCombinedImageSampler, ao_sampled),
     };
     ctx_.device().updateDescriptorSets(writes, {});
-
-    // Scratch images live in eGeneral; the AO starts as 1 everywhere (outside the area it stays
-    // so), shader-readable as if a frame had computed it.
-    for (vk_core::Image* image : {&state->raw, &state->filtered_x, &state->other_pixel}) {
-        vk_core::initialise_image(ctx_, *image, executor::layout_for(graph::Use::kStorageWrite));
-    }
-    vk_core::initialise_image(ctx_, state->ao, executor::layout_for(graph::Use::kSampledFragment),
-                              vk::ClearColorValue(std::array{1.0f, 1.0f, 1.0f, 1.0f}));
-    return std::unique_ptr<SsaoView>(new SsaoView(std::move(state)));
 }
 
-void SsaoPass::record_view(const vk::raii::CommandBuffer& cmd, StepSync& sync, SsaoView& view,
-                           vk::Extent2D area, float skip_beyond, std::string_view step_view) const {
-    MONOPLANE_EXPECTS(area.width <= view.extent().width && area.height <= view.extent().height);
-    const Impl& impl = *impl_;
-    const SsaoPush plain = impl.push(params_, area, 0, skip_beyond);
-    sync.next(cmd, step_name(step_view, "estimate"));
-    impl.dispatch(cmd, impl.hbao_estimate, view, view, plain, area);
-    sync.next(cmd, step_name(step_view, "filter-x"));
-    impl.dispatch(cmd, impl.bilateral_filter, view, view, plain, area);
-    sync.next(cmd, step_name(step_view, "filter-y"));
-    impl.dispatch(cmd, impl.bilateral_filter, view, view,
-                  impl.push(params_, area, kFlagVertical, skip_beyond), area);
+void SsaoPass::dispatch(const vk::raii::CommandBuffer& cmd, ssao::Dispatch dispatch,
+                        const SsaoBindings& self, const SsaoBindings& other, vk::Extent2D area,
+                        const SsaoParams& params, float skip_beyond) const {
+    MONOPLANE_EXPECTS(params.directions > 0 && params.steps > 0 && params.filter_taps > 0);
+    MONOPLANE_EXPECTS(params.radius > 0.0f && params.sigma_min > 0.0f &&
+                      params.sigma_min <= params.sigma_max);
+    const auto [pipeline, flags] = impl_->program(dispatch);
+    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, **pipeline);
+    const std::array sets = {*self.compute_set_, *other.compute_set_};
+    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *impl_->compute_layout, 0, sets, {});
+    cmd.pushConstants<SsaoPush>(*impl_->compute_layout, vk::ShaderStageFlagBits::eCompute, 0,
+                                Impl::push(params, area, flags, skip_beyond));
+    cmd.dispatch(groups_covering(area.width, kSsaoGroup), groups_covering(area.height, kSsaoGroup),
+                 1);
 }
 
-float SsaoPass::skip_margin() const {
+float SsaoPass::skip_margin(const SsaoParams& params) {
     // The filter weighs a tap by G_sigma of its world distance, sigma <= sigma_max: at 6 sigma
     // the weight is exp(-18) of the centre's, below any 8-bit level.
-    return 6.0f * params_.sigma_max;
+    return 6.0f * params.sigma_max;
 }
 
-void SsaoPass::record_pair(const vk::raii::CommandBuffer& cmd, StepSync& sync, SsaoView& left,
-                           SsaoView& right, vk::Extent2D area, SsaoVariant variant,
-                           float skip_beyond) const {
-    MONOPLANE_EXPECTS(left.extent() == right.extent());
-    if (variant == SsaoVariant::kPerView) {
-        record_view(cmd, sync, left, area, skip_beyond, "left");
-        record_view(cmd, sync, right, area, skip_beyond, "right");
-        return;
-    }
-    MONOPLANE_EXPECTS(area.width <= left.extent().width && area.height <= left.extent().height);
-    const Impl& impl = *impl_;
-    // Sect. 3.1: the visibility maps L^l and L^r by reverse reprojection with a back-check.
-    const SsaoPush plain = impl.push(params_, area, 0, skip_beyond);
-    sync.next(cmd, "visibility-left");
-    impl.dispatch(cmd, impl.stereo_visibility, left, right, plain, area);
-    sync.next(cmd, "visibility-right");
-    impl.dispatch(cmd, impl.stereo_visibility, right, left, plain, area);
-    // Sect. 3.1: the left eye's stereo estimate; Sect. 3.2: the right eye reprojects it where
-    // L^r allows and estimates the rest from scratch.
-    sync.next(cmd, "estimate-left");
-    impl.dispatch(cmd, impl.stereo_estimate, left, right, plain, area);
-    sync.next(cmd, "estimate-right");
-    impl.dispatch(cmd, impl.stereo_estimate, right, left,
-                  impl.push(params_, area, kFlagReproject, skip_beyond), area);
-    // Sect. 3.3: the stereo filter, horizontally in both views, then vertically on that.
-    const SsaoPush horizontal = impl.push(params_, area, kFlagStereo, skip_beyond);
-    sync.next(cmd, "filter-x-left");
-    impl.dispatch(cmd, impl.bilateral_filter, left, right, horizontal, area);
-    sync.next(cmd, "filter-x-right");
-    impl.dispatch(cmd, impl.bilateral_filter, right, left, horizontal, area);
-    const SsaoPush vertical = impl.push(params_, area, kFlagStereo | kFlagVertical, skip_beyond);
-    sync.next(cmd, "filter-y-left");
-    impl.dispatch(cmd, impl.bilateral_filter, left, right, vertical, area);
-    sync.next(cmd, "filter-y-right");
-    impl.dispatch(cmd, impl.bilateral_filter, right, left, vertical, area);
-}
-
-void SsaoPass::record_apply(const vk::raii::CommandBuffer& cmd, StepSync& sync,
-                            const SsaoView& view, const vk_core::Image& hdr, vk::Extent2D area,
-                            const vk_core::Image* near_only_depth,
-                            std::string_view step_view) const {
+void SsaoPass::apply(const vk::raii::CommandBuffer& cmd, const SsaoBindings& view,
+                     const vk_core::Image& hdr, vk::Extent2D area,
+                     const vk_core::Image* near_only_depth) const {
     MONOPLANE_EXPECTS(hdr.desc().format == ForwardPass::kHdrFormat);
     MONOPLANE_EXPECTS(!near_only_depth ||
                       near_only_depth->desc().format == ForwardPass::kDepthFormat);
     const Impl& impl = *impl_;
-    sync.next(cmd, step_name(step_view, "apply"));
     const vk::RenderingAttachmentInfo color(
         hdr.view(), executor::layout_for(graph::Use::kColorBlend), {}, {}, {},
         vk::AttachmentLoadOp::eLoad, vk::AttachmentStoreOp::eStore);
@@ -405,21 +340,12 @@ void SsaoPass::record_apply(const vk::raii::CommandBuffer& cmd, StepSync& sync,
     cmd.bindPipeline(vk::PipelineBindPoint::eGraphics,
                      near_only_depth ? *impl.apply_near_only : *impl.apply_everywhere);
     cmd.bindDescriptorSets(vk::PipelineBindPoint::eGraphics, *impl.apply_pipeline_layout, 0,
-                           *view.state_->apply_set, {});
+                           *view.apply_set_, {});
     const ApplyPush push{static_cast<float>(area.width), static_cast<float>(area.height)};
     cmd.pushConstants<ApplyPush>(*impl.apply_pipeline_layout, vk::ShaderStageFlagBits::eFragment, 0,
                                  push);
     cmd.draw(3, 1, 0, 0);
     cmd.endRendering();
-}
-
-void SsaoPass::record_readback(const vk::raii::CommandBuffer& cmd, SsaoView& view) const {
-    SsaoView::State& state = *view.state_;
-    cmd.copyImageToBuffer(
-        state.ao.handle(), executor::layout_for(graph::Use::kTransferSrc), state.readback.handle(),
-        vk::BufferImageCopy(0, 0, 0,
-                            vk::ImageSubresourceLayers(vk::ImageAspectFlagBits::eColor, 0, 0, 1),
-                            {0, 0, 0}, vk::Extent3D(state.extent, 1)));
 }
 
 }  // namespace monoplane::passes

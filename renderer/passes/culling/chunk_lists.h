@@ -1,9 +1,16 @@
-// GPU chunk culling (papers/000 Sect. 4.4 "View Frustum Culling" and "Occlusion Culling"): one
-// compute dispatch per frame sorts the scene's chunks into the eyes' lists and C's list and
-// writes their indirect draw commands and counts, with no per-chunk work on the CPU. In the
-// occlusion-cull variant a second dispatch, after the merged depth pyramid, re-sorts C's list.
-// Reads: the chunk table (uploaded once), per-frame planes, the merged depth pyramid (phase 1).
-// Writes: draw commands, counts and the predicates of cull_constants.h.
+// The chunk lists of GPU chunk culling (papers/000 Sect. 4.4 "View Frustum Culling" and
+// "Occlusion Culling"): the buffers the culling units fill and every forward pass draws from.
+// The culling unit (culling_unit.cpp) sorts the scene's chunks into the eyes' lists and C's list
+// with one compute dispatch per frame and writes their indirect draw commands and counts, with no
+// per-chunk work on the CPU; in the occlusion-cull variant the occlusion culling unit
+// (renderer/passes/occlusion_culling/) re-sorts C's list after the merged depth pyramid.
+// This holds their state between frames: the lists, the counts and the predicates of
+// cull_constants.h, each chunk's last level of detail and routing bits, the frame's constants and
+// the draw order (uploaded before the frame), and the host's copies of the counts and lists.
+//
+// When may this be called: on the thread that owns the device; set_frame and set_draw_order
+// before the frame's command buffer is recorded, the read-back accessors once the slot's frame
+// has completed.
 #pragma once
 
 #include <array>
@@ -33,6 +40,17 @@ enum class CullView {
 
 // One frame's culling inputs: the world -> clip matrix of each view drawn (reversed Z; the
 // eyes' far plane and C's near plane bound the regions), and the occlusion test's parameters.
+// The buffers the culling reads and writes that no step of the frame declares (ChunkLists::
+// inputs): the scene's chunk and level tables, the frame's constants, the draw order, and each
+// chunk's routing bits.
+struct CullInputs {
+    const vk_core::Buffer* chunks = nullptr;
+    const vk_core::Buffer* levels = nullptr;
+    const vk_core::Buffer* constants = nullptr;
+    const vk_core::Buffer* order = nullptr;
+    const vk_core::Buffer* routing = nullptr;
+};
+
 struct CullFrame {
     std::array<std::optional<glm::dmat4>, MONOPLANE_CULL_VIEWS> view_proj;
     bool honour_force_mono = false;
@@ -52,7 +70,7 @@ struct CullFrame {
     double lod_error_px = 0.0;
 };
 
-class ChunkCullingPass {
+class ChunkLists {
   public:
     // How many chunks of each alpha class (MONOPLANE_CLASS_*) the scene has.
     static std::array<std::uint32_t, MONOPLANE_CLASSES> class_sizes(const scenes::Scene& scene);
@@ -69,13 +87,10 @@ class ChunkCullingPass {
     static vk_core::Buffer make_level_table(const vk_core::Context& ctx, const scenes::Scene& scene,
                                             const scenes::LodChain& lods);
 
-    // chunk_table, level_table: made for the same scene; they must outlive the pass.
-    ChunkCullingPass(const vk_core::Context& ctx, const scenes::Scene& scene,
-                     const vk_core::Buffer& chunk_table, const vk_core::Buffer& level_table);
+    // chunk_table, level_table: made for the same scene; they must outlive the lists.
+    ChunkLists(const vk_core::Context& ctx, const scenes::Scene& scene,
+               const vk_core::Buffer& chunk_table, const vk_core::Buffer& level_table);
 
-    // Points the occlusion test at the merged depth pyramid (a view of all its mips, in
-    // eGeneral). Call between frames, before the first record().
-    void set_merged_depth(vk::ImageView pyramid, vk::Sampler nearest) const;
     // Stages the frame's constants for the frame's command buffer; call before recording it.
     void set_frame(const CullFrame& frame, vk_core::FrameUploads& uploads);
     // Stages the order in which the chunks are walked and their draws listed: a permutation of
@@ -83,20 +98,16 @@ class ChunkCullingPass {
     // the first frame and when the order changes (a wrong size is a programming error).
     void set_draw_order(std::span<const std::uint32_t> order, vk_core::FrameUploads& uploads);
 
-    // Phase 0: all views' lists; phase 1: C's list again, with occlusion culling. The render graph
-    // makes their results visible to the indirect draws, predicates and read-backs that follow.
-    void record_frustum_phase(const vk::raii::CommandBuffer& cmd) const;
-    void record_occlusion_phase(const vk::raii::CommandBuffer& cmd) const;
-    // Copies the counts (into the frame-in-flight slot's own buffer; with lists, the draw lists
-    // too, into one buffer for all slots) to host memory, after the frame's last use of them.
-    void record_readback(const vk::raii::CommandBuffer& cmd, bool lists,
-                         std::uint32_t slot = 0) const;
-
-    // The buffers the read-back copies (the frame plan's draw_lists, predicates, counts_readback
-    // and lists_readback): the draw lists, the counts, the slot's copy of the counts, and the
-    // one copy of the lists.
+    // The buffers the culling writes and the read-back copies (the frame plan's draw_lists,
+    // predicates, lod_state, counts_readback and lists_readback): the draw lists, the counts,
+    // each chunk's last level, the slot's copy of the counts, and the one copy of the lists.
     const vk_core::Buffer& commands_buffer() const { return commands_; }
     const vk_core::Buffer& counts_buffer() const { return counts_; }
+    const vk_core::Buffer& lod_state() const { return lod_state_; }
+    // What the culling reads and writes beside them, which no step declares: the frame's
+    // constants and the draw order (uploaded before the frame's first pass), each chunk's routing
+    // bits (only the culling writes them), and the scene's tables.
+    CullInputs inputs() const { return {&chunks_, &levels_, &constants_, &order_, &routing_}; }
     const vk_core::Buffer& counts_readback(std::uint32_t slot) const {
         return counts_readback_.at(slot);
     }
@@ -112,7 +123,7 @@ class ChunkCullingPass {
 
     // After the slot's frame has completed.
     std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> counts(std::uint32_t slot = 0) const;
-    // The chunk indices of a view's list, class by class, each (record_readback with lists), once
+    // The chunk indices of a view's list, class by class, each (read back with the lists), once
     // the slot's frame, the last to read lists back, has completed.
     std::vector<std::uint32_t> drawn_chunks(CullView view, std::uint32_t slot = 0) const;
     // The same list's draw commands: each names its chunk in firstInstance, its level of detail
@@ -121,9 +132,6 @@ class ChunkCullingPass {
                                                                std::uint32_t slot = 0) const;
 
   private:
-    void make_pipeline();
-    void write_descriptors() const;
-    void record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const;
     // The first command of an alpha class within each list.
     std::uint32_t class_base(std::uint32_t alpha_class) const;
 
@@ -139,12 +147,6 @@ class ChunkCullingPass {
     vk_core::Buffer constants_;
     std::array<vk_core::Buffer, vk_core::FrameRing::kFramesInFlight> counts_readback_;
     vk_core::Buffer commands_readback_;
-    vk::raii::DescriptorSetLayout set_layout_{nullptr};
-    vk::raii::DescriptorPool pool_{nullptr};
-    vk::raii::DescriptorSet set_{nullptr};
-    vk::raii::PipelineLayout layout_{nullptr};
-    vk::raii::Pipeline pipeline_{nullptr};
-    const vk_core::Context& ctx_;
 };
 
 }  // namespace monoplane::passes

@@ -1,4 +1,4 @@
-#include "renderer/passes/culling/chunk_culling_pass.h"
+#include "renderer/passes/culling/chunk_lists.h"
 
 #include <algorithm>
 
@@ -7,15 +7,9 @@
 #include <glm/geometric.hpp>
 
 #include "common/programming_error.h"
-#include "renderer/executor/image_layouts.h"
-#include "renderer/vk/pipeline.h"
 
 namespace monoplane::passes {
 namespace {
-
-const std::uint32_t kCullChunks[] = {
-#include "cull_chunks.comp.spv.inc"
-};
 
 constexpr vk::DeviceSize kCommandSize = sizeof(vk::DrawIndexedIndirectCommand);
 
@@ -89,37 +83,35 @@ void write_planes(const glm::dmat4& view_proj, vec4* out) {
 
 }  // namespace
 
-std::array<std::uint32_t, MONOPLANE_CLASSES> ChunkCullingPass::class_sizes(
-    const scenes::Scene& scene) {
+std::array<std::uint32_t, MONOPLANE_CLASSES> ChunkLists::class_sizes(const scenes::Scene& scene) {
     std::array<std::uint32_t, MONOPLANE_CLASSES> sizes{};
     for (const scenes::Chunk& chunk : scene.chunks) ++sizes.at(alpha_class(chunk));
     return sizes;
 }
 
-std::uint32_t ChunkCullingPass::class_base(std::uint32_t alpha_class) const {
+std::uint32_t ChunkLists::class_base(std::uint32_t alpha_class) const {
     std::uint32_t base = 0;
     for (std::uint32_t c = 0; c < alpha_class; ++c) base += class_sizes_.at(c);
     return base;
 }
 
-vk_core::Buffer ChunkCullingPass::make_chunk_table(const vk_core::Context& ctx,
-                                                   const scenes::Scene& scene,
-                                                   const scenes::LodChain& lods) {
+vk_core::Buffer ChunkLists::make_chunk_table(const vk_core::Context& ctx,
+                                             const scenes::Scene& scene,
+                                             const scenes::LodChain& lods) {
     return vk_core::make_device_buffer(ctx,
                                        std::span<const ChunkRecord>(chunk_records(scene, lods)),
                                        vk::BufferUsageFlagBits::eStorageBuffer);
 }
 
-vk_core::Buffer ChunkCullingPass::make_level_table(const vk_core::Context& ctx,
-                                                   const scenes::Scene& scene,
-                                                   const scenes::LodChain& lods) {
+vk_core::Buffer ChunkLists::make_level_table(const vk_core::Context& ctx,
+                                             const scenes::Scene& scene,
+                                             const scenes::LodChain& lods) {
     return vk_core::make_device_buffer(ctx, std::span<const LodRecord>(level_records(scene, lods)),
                                        vk::BufferUsageFlagBits::eStorageBuffer);
 }
 
-ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Scene& scene,
-                                   const vk_core::Buffer& chunk_table,
-                                   const vk_core::Buffer& level_table)
+ChunkLists::ChunkLists(const vk_core::Context& ctx, const scenes::Scene& scene,
+                       const vk_core::Buffer& chunk_table, const vk_core::Buffer& level_table)
     : chunk_count_(static_cast<std::uint32_t>(scene.chunks.size())),
       class_sizes_(class_sizes(scene)),
       chunks_(chunk_table),
@@ -147,81 +139,14 @@ ChunkCullingPass::ChunkCullingPass(const vk_core::Context& ctx, const scenes::Sc
       constants_(ctx, sizeof(CullConstants), vk::BufferUsageFlagBits::eStorageBuffer,
                  vk_core::MemoryUse::kDeviceLocal),
       commands_readback_(ctx, commands_.size(), vk::BufferUsageFlagBits::eTransferDst,
-                         vk_core::MemoryUse::kHostVisible),
-      ctx_(ctx) {
+                         vk_core::MemoryUse::kHostVisible) {
     for (vk_core::Buffer& readback : counts_readback_) {
         readback = vk_core::Buffer(ctx, counts_.size(), vk::BufferUsageFlagBits::eTransferDst,
                                    vk_core::MemoryUse::kHostVisible);
     }
-    make_pipeline();
-    write_descriptors();
 }
 
-void ChunkCullingPass::make_pipeline() {
-    const vk_core::Context& ctx = ctx_;
-    using Type = vk::DescriptorType;
-    const auto compute = vk::ShaderStageFlagBits::eCompute;
-    const std::array bindings = {
-        vk::DescriptorSetLayoutBinding(0, Type::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(1, Type::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(2, Type::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(3, Type::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(4, Type::eCombinedImageSampler, 1, compute),
-        vk::DescriptorSetLayoutBinding(5, Type::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(6, Type::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(7, Type::eStorageBuffer, 1, compute),
-        vk::DescriptorSetLayoutBinding(8, Type::eStorageBuffer, 1, compute),
-    };
-    set_layout_ = vk::raii::DescriptorSetLayout(ctx.device(),
-                                                vk::DescriptorSetLayoutCreateInfo({}, bindings));
-    const std::array pool_sizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 8),
-                                   vk::DescriptorPoolSize(Type::eCombinedImageSampler, 1)};
-    pool_ = vk::raii::DescriptorPool(
-        ctx.device(), vk::DescriptorPoolCreateInfo(
-                          vk::DescriptorPoolCreateFlagBits::eFreeDescriptorSet, 1, pool_sizes));
-    const vk::DescriptorSetLayout set_layout = *set_layout_;
-    set_ = std::move(vk::raii::DescriptorSets(
-        ctx.device(), vk::DescriptorSetAllocateInfo(*pool_, set_layout))[0]);
-    const vk::PushConstantRange push(compute, 0, sizeof(std::uint32_t));
-    layout_ =
-        vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layout, push));
-    const vk::raii::ShaderModule shader = vk_core::make_shader(ctx, kCullChunks);
-    pipeline_ = vk_core::make_compute_pipeline(ctx, *layout_, *shader);
-}
-
-// Every binding but the merged depth pyramid (set_merged_depth), which may not exist yet.
-void ChunkCullingPass::write_descriptors() const {
-    using Type = vk::DescriptorType;
-    const vk::DescriptorBufferInfo chunks_info(chunks_.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorBufferInfo commands_info(commands_.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorBufferInfo counts_info(counts_.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorBufferInfo constants_info(constants_.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorBufferInfo routing_info(routing_.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorBufferInfo order_info(order_.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorBufferInfo levels_info(levels_.handle(), 0, VK_WHOLE_SIZE);
-    const vk::DescriptorBufferInfo lod_state_info(lod_state_.handle(), 0, VK_WHOLE_SIZE);
-    const std::array writes = {
-        vk::WriteDescriptorSet(*set_, 0, 0, Type::eStorageBuffer, {}, chunks_info),
-        vk::WriteDescriptorSet(*set_, 1, 0, Type::eStorageBuffer, {}, commands_info),
-        vk::WriteDescriptorSet(*set_, 2, 0, Type::eStorageBuffer, {}, counts_info),
-        vk::WriteDescriptorSet(*set_, 3, 0, Type::eStorageBuffer, {}, constants_info),
-        vk::WriteDescriptorSet(*set_, 5, 0, Type::eStorageBuffer, {}, routing_info),
-        vk::WriteDescriptorSet(*set_, 6, 0, Type::eStorageBuffer, {}, order_info),
-        vk::WriteDescriptorSet(*set_, 7, 0, Type::eStorageBuffer, {}, levels_info),
-        vk::WriteDescriptorSet(*set_, 8, 0, Type::eStorageBuffer, {}, lod_state_info),
-    };
-    ctx_.device().updateDescriptorSets(writes, {});
-}
-
-void ChunkCullingPass::set_merged_depth(vk::ImageView pyramid, vk::Sampler nearest) const {
-    const vk::DescriptorImageInfo info(nearest, pyramid,
-                                       executor::layout_for(graph::Use::kGeneralSampled));
-    const vk::WriteDescriptorSet write(*set_, 4, 0, vk::DescriptorType::eCombinedImageSampler,
-                                       info);
-    ctx_.device().updateDescriptorSets(write, {});
-}
-
-void ChunkCullingPass::set_frame(const CullFrame& frame, vk_core::FrameUploads& uploads) {
+void ChunkLists::set_frame(const CullFrame& frame, vk_core::FrameUploads& uploads) {
     CullConstants c{};
     std::uint32_t views = 0;
     for (std::uint32_t v = 0; v < MONOPLANE_CULL_VIEWS; ++v) {
@@ -252,39 +177,14 @@ void ChunkCullingPass::set_frame(const CullFrame& frame, vk_core::FrameUploads& 
     uploads.stage(constants_, &c, sizeof(c));
 }
 
-void ChunkCullingPass::set_draw_order(std::span<const std::uint32_t> order,
-                                      vk_core::FrameUploads& uploads) {
+void ChunkLists::set_draw_order(std::span<const std::uint32_t> order,
+                                vk_core::FrameUploads& uploads) {
     // The draw order is a permutation of the chunks.
     MONOPLANE_EXPECTS(order.size() == chunk_count_);
     if (!order.empty()) uploads.stage(order_, order.data(), order.size_bytes());
 }
 
-void ChunkCullingPass::record_phase(const vk::raii::CommandBuffer& cmd, std::uint32_t phase) const {
-    cmd.bindPipeline(vk::PipelineBindPoint::eCompute, *pipeline_);
-    cmd.bindDescriptorSets(vk::PipelineBindPoint::eCompute, *layout_, 0, *set_, {});
-    cmd.pushConstants<std::uint32_t>(*layout_, vk::ShaderStageFlagBits::eCompute, 0, phase);
-    cmd.dispatch(1, 1, 1);
-}
-
-void ChunkCullingPass::record_frustum_phase(const vk::raii::CommandBuffer& cmd) const {
-    record_phase(cmd, 0);
-}
-
-void ChunkCullingPass::record_occlusion_phase(const vk::raii::CommandBuffer& cmd) const {
-    record_phase(cmd, 1);
-}
-
-void ChunkCullingPass::record_readback(const vk::raii::CommandBuffer& cmd, bool lists,
-                                       std::uint32_t slot) const {
-    cmd.copyBuffer(counts_.handle(), counts_readback_.at(slot).handle(),
-                   vk::BufferCopy(0, 0, counts_.size()));
-    if (lists) {
-        cmd.copyBuffer(commands_.handle(), commands_readback_.handle(),
-                       vk::BufferCopy(0, 0, commands_.size()));
-    }
-}
-
-IndirectDraws ChunkCullingPass::draws(CullView view, std::uint32_t alpha_class) const {
+IndirectDraws ChunkLists::draws(CullView view, std::uint32_t alpha_class) const {
     const auto v = static_cast<std::uint32_t>(view);
     IndirectDraws draws;
     draws.commands = commands_.handle();
@@ -296,28 +196,27 @@ IndirectDraws ChunkCullingPass::draws(CullView view, std::uint32_t alpha_class) 
     return draws;
 }
 
-ChunkDraws ChunkCullingPass::chunk_draws(CullView view) const {
+ChunkDraws ChunkLists::chunk_draws(CullView view) const {
     return {draws(view, MONOPLANE_CLASS_OPAQUE), draws(view, MONOPLANE_CLASS_MASKED),
             draws(view, MONOPLANE_CLASS_BLENDED)};
 }
 
-std::uint32_t ChunkCullingPass::count_word(std::uint32_t list, std::uint32_t alpha_class) {
+std::uint32_t ChunkLists::count_word(std::uint32_t list, std::uint32_t alpha_class) {
     return MONOPLANE_COUNT_WORD(list, alpha_class);
 }
 
-Predicate ChunkCullingPass::predicate(std::uint32_t word, bool inverted) const {
+Predicate ChunkLists::predicate(std::uint32_t word, bool inverted) const {
     return {counts_.handle(), vk::DeviceSize{word} * sizeof(std::uint32_t), inverted};
 }
 
-std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> ChunkCullingPass::counts(
-    std::uint32_t slot) const {
+std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> ChunkLists::counts(std::uint32_t slot) const {
     std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> values{};
     std::memcpy(values.data(), counts_readback_.at(slot).mapped(), sizeof(values));
     return values;
 }
 
-std::vector<vk::DrawIndexedIndirectCommand> ChunkCullingPass::drawn_commands(
-    CullView view, std::uint32_t slot) const {
+std::vector<vk::DrawIndexedIndirectCommand> ChunkLists::drawn_commands(CullView view,
+                                                                       std::uint32_t slot) const {
     const auto v = static_cast<std::uint32_t>(view);
     const std::array<std::uint32_t, MONOPLANE_COUNT_WORDS> words = counts(slot);
     const auto* list =
@@ -331,7 +230,7 @@ std::vector<vk::DrawIndexedIndirectCommand> ChunkCullingPass::drawn_commands(
     return commands;
 }
 
-std::vector<std::uint32_t> ChunkCullingPass::drawn_chunks(CullView view, std::uint32_t slot) const {
+std::vector<std::uint32_t> ChunkLists::drawn_chunks(CullView view, std::uint32_t slot) const {
     std::vector<std::uint32_t> chunks;
     for (const vk::DrawIndexedIndirectCommand& command : drawn_commands(view, slot)) {
         chunks.push_back(command.firstInstance);
