@@ -1,5 +1,6 @@
-// The recorders of ModeRenderer: one per kind of planned pass (renderer/plan/frame_plan.h). None
-// records a barrier: the executor (graph_executor.h) places the compiled ones before each step.
+// ModeRenderer's recording of a planned pass: its barriers (the executor's, graph_executor.h),
+// its profiler scopes, and its commands by its unit's recorder (unit_recording.cpp); the GPU
+// predicates; and the composite's values, which the renderer works out each frame.
 #include <algorithm>
 
 #include "renderer/modes/mode_renderer_internals.h"
@@ -40,74 +41,12 @@ std::optional<passes::Predicate> ModeRenderer::predicate(plan::GpuPredicate when
 
 void ModeRenderer::record_planned(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                                   const FrameState& frame, passes::StepSync& sync) {
-    switch (pass.kind) {
-        case plan::PassKind::kShadow:
-            record_unit(cmd, pass, frame, sync);
-            // Frames are waited for before the next is recorded, so the map holds this from now.
-            resources_->shadow_drawn(frame.light_view_proj);
-            break;
-        case plan::PassKind::kForward:
-            record_forward(cmd, pass);
-            break;
-        case plan::PassKind::kTransparency:
-            record_transparency(cmd, pass);
-            break;
-        // The kinds written as units (renderer/passes/pass_unit_list.h).
-        case plan::PassKind::kCulling:
-        case plan::PassKind::kComposite:
-        case plan::PassKind::kDepthPyramid:
-        case plan::PassKind::kOcclusionCulling:
-        case plan::PassKind::kSsao:
-        case plan::PassKind::kReadback:
-        case plan::PassKind::kTaa:
-        case plan::PassKind::kTonemap:
-        case plan::PassKind::kDepthHistogram:
-        case plan::PassKind::kUnit:
-            record_unit(cmd, pass, frame, sync);
-            break;
+    // Every kind is written as a unit (renderer/passes/pass_unit_list.h).
+    record_unit(cmd, pass, frame, sync);
+    if (pass.kind == plan::PassKind::kShadow) {
+        // Frames are waited for before the next is recorded, so the map holds this from now.
+        resources_->shadow_drawn(frame.light_view_proj);
     }
-}
-
-void ModeRenderer::record_forward(const vk::raii::CommandBuffer& cmd,
-                                  const plan::PlannedPass& pass) {
-    std::vector<passes::ForwardDraw> draws;
-    for (const plan::PlannedDraw& draw : pass.draws) {
-        draws.push_back({draw.step, predicate(draw.when)});
-    }
-    if (pass.view == plan::ViewId::kEyes) {
-        // Both eyes in one pass, from the list of chunks either eye needs.
-        eyes_forward_->record(cmd, eye_layers_->forward_targets(eye_extent_), *eye_pair_set_,
-                              *merged_depth_set_, resources_->geometry(), resources_->textures(),
-                              culling_.chunk_draws(passes::CullView::kBothEyes), draws);
-        return;
-    }
-    if (pass.view == plan::ViewId::kMono) {
-        // Pixels hidden in both eyes stay unwritten; C's image read back shows them black,
-        // and C's SSAO must not read stale depths there.
-        const bool masked = std::any_of(pass.draws.begin(), pass.draws.end(), [](const auto& d) {
-            return d.step == plan::DrawStep::kMaskHidden;
-        });
-        const bool clear_color = masked && (options_.read_back || options_.ssao);
-        forward_.record(cmd, mono_->forward_targets(clear_color), *mono_->forward_set,
-                        *merged_depth_set_, resources_->geometry(), resources_->textures(),
-                        culling_.chunk_draws(passes::CullView::kMono), draws);
-        return;
-    }
-    const int e = plan::eye_index(pass.view);
-    forward_.record(cmd, eyes_[e]->forward_targets(), *eyes_[e]->forward_set, *merged_depth_set_,
-                    resources_->geometry(), resources_->textures(),
-                    culling_.chunk_draws(static_cast<passes::CullView>(e)), draws);
-}
-
-void ModeRenderer::record_transparency(const vk::raii::CommandBuffer& cmd,
-                                       const plan::PlannedPass& pass) {
-    // One eye at a time in every stereo form: the eye's own list holds its blended chunks.
-    const int e = plan::eye_index(pass.view);
-    View& eye = *eyes_[e];
-    forward_.record_after_composite(
-        cmd, passes::AfterCompositeTargets{eye.hdr, eye_extent_}, *eye.forward_set,
-        *eye.composite_depth_set, resources_->geometry(), resources_->textures(),
-        culling_.draws(static_cast<passes::CullView>(e), MONOPLANE_CLASS_BLENDED));
 }
 
 passes::CompositeValues ModeRenderer::composite_values(const FrameState& frame) const {

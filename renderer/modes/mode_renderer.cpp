@@ -89,24 +89,13 @@ const RendererOptions& checked(const vk_core::Context& ctx, plan::Mode mode,
     return options;
 }
 
-// The forward pass's configuration: anti-aliasing, the stereo form, and the pipelines of the
-// alpha classes the scene has.
-passes::ForwardConfig forward_config(const RendererOptions& options, plan::StereoPass stereo,
-                                     const SceneResources& resources) {
-    passes::ForwardConfig config{options.anti_aliasing == plan::AntiAliasing::kTaa,
-                                 msaa_samples(options.anti_aliasing), stereo, options.vertex_work};
-    const auto& classes = resources.alpha_classes();
-    config.masked_chunks = classes[MONOPLANE_CLASS_MASKED] > 0;
-    config.blended_chunks = classes[MONOPLANE_CLASS_BLENDED] > 0;
-    return config;
-}
-
 // The recorders of every unit a frame of this renderer may run (an executed pass of one of
 // `plans`), made with the renderer for all the passes it may record, so that their pipelines are
 // never compiled mid-run: a session's frames compile nothing, and its frame log counts what they
 // do. A debug view's unit is left until a frame shows it (record_unit makes a recorder on its
 // first pass).
 void make_unit_recorders(const vk_core::Context& ctx, const passes::UnitScene& scene,
+                         const passes::UnitSettings& settings,
                          const std::vector<plan::FramePlan>& plans,
                          const std::vector<plan::PassUnitDeclaration>& units,
                          std::map<std::string, std::unique_ptr<passes::UnitRecorder>>& recorders) {
@@ -121,7 +110,7 @@ void make_unit_recorders(const vk_core::Context& ctx, const passes::UnitScene& s
         }
     }
     for (const auto& [unit, passes] : unit_passes) {
-        recorders[unit] = passes::make_unit_recorder(unit, ctx, scene, passes);
+        recorders[unit] = passes::make_unit_recorder(unit, ctx, scene, passes, settings);
     }
 }
 
@@ -144,26 +133,18 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
       options_(checked(ctx, mode, options)),
       nearest_mono_plane_(nearest_mono_plane),
       blended_chunks_(resources_->alpha_classes()[MONOPLANE_CLASS_BLENDED] > 0),
-      forward_(ctx, resources_->textures().layout(),
-               forward_config(options, plan::StereoPass::kTwoPasses, *resources_)),
       culling_(ctx, scene_, resources_->chunk_table(), resources_->level_table()),
       pyramid_(ctx, eye_extent),
       units_(passes::pass_unit_declarations()),
       profiler_(ctx),
       ring_(ctx) {
-    merged_depth_set_ = forward_.make_merged_depth_set();
     const bool taa = options.anti_aliasing == plan::AntiAliasing::kTaa;
     const ViewFeatures eye_features{taa, taa, msaa_samples(options.anti_aliasing)};
     if (options.stereo_pass != plan::StereoPass::kTwoPasses) {
         eye_layers_ = std::make_unique<ForwardImages>(ctx, eye_extent, eye_features, 2);
-        eyes_forward_ = std::make_unique<passes::ForwardPass>(
-            ctx, resources_->textures().layout(),
-            forward_config(options, options.stereo_pass, *resources_));
         eye_pair_constants_.emplace(ctx, 2 * sizeof(passes::ViewConstants),
                                     vk::BufferUsageFlagBits::eUniformBuffer,
                                     vk_core::MemoryUse::kDeviceLocal);
-        eye_pair_set_ = eyes_forward_->make_view_set(
-            *eye_pair_constants_, resources_->shadow().view(), resources_->shadow().sampler());
     }
     // The plans every frame of this renderer may run: what its transient images are placed by.
     possible_plans_ = possible_plans(
@@ -172,7 +153,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
                          ctx.capabilities().independent_blend},
         units_);
     unit_scene_ = resources_->unit_scene();
-    make_unit_recorders(ctx, unit_scene_, possible_plans_, units_, unit_recorders_);
+    make_unit_recorders(ctx, unit_scene_, unit_settings(), possible_plans_, units_,
+                        unit_recorders_);
     if (!eye_layers_) {
         eye_memory_ = View::eye_memory(ctx, eye_extent, eye_features, possible_plans_);
     }
@@ -183,15 +165,8 @@ ModeRenderer::ModeRenderer(const vk_core::Context& ctx, std::shared_ptr<SceneRes
         eye = eye_layers_ ? std::make_unique<View>(ctx, *eye_layers_, e, eye_features)
                           : std::make_unique<View>(ctx, eye_extent, eye_features, eye_memory_.get(),
                                                    plan::eye_view(static_cast<int>(e)));
-        make_view_sets(*eye);
-        if (blended_chunks_ && mode != plan::Mode::kStereo) {
-            eye->composite_depth_set =
-                forward_.make_composite_depth_set(eye->linear_depth.view(), pyramid_.sampler());
-        }
         if (options.ssao) eye->ssao = std::make_unique<passes::SsaoImages>(ctx, eye_extent);
     }
-    forward_.write_merged_depth(merged_depth_set_, pyramid_.pyramid().view(), pyramid_.sampler(),
-                                culling_.routing());
     if (options.auto_mono_plane) {
         auto_mono_plane_ = std::make_unique<AutoMonoPlane>(ctx, scene_, *options.auto_mono_plane);
     }
@@ -204,13 +179,6 @@ void ModeRenderer::ensure_pyramid() {
     // The blocks stay: they are the eyes' size.
     executor_.forget(pyramid_.pyramid().range());
     pyramid_.resize(mono_->extent);
-    forward_.write_merged_depth(merged_depth_set_, pyramid_.pyramid().view(), pyramid_.sampler(),
-                                culling_.routing());
-}
-
-void ModeRenderer::make_view_sets(View& view) const {
-    view.forward_set = forward_.make_view_set(view.constants, resources_->shadow().view(),
-                                              resources_->shadow().sampler());
 }
 
 ModeRenderer::~ModeRenderer() {
@@ -235,7 +203,6 @@ void ModeRenderer::ensure_mono_view(int width, int height) {
     mono_.reset();
     const bool taa = options_.anti_aliasing == plan::AntiAliasing::kTaa;
     mono_ = std::make_unique<MonoView>(ctx_, needed, ViewFeatures{taa, false}, possible_plans_);
-    make_view_sets(*mono_);
     if (options_.ssao) mono_->ssao = std::make_unique<passes::SsaoImages>(ctx_, needed);
 }
 

@@ -1,11 +1,11 @@
 // The render modes (stereo, hybrid, hybrid-farfield), executed from the frame plan (renderer/plan/
 // frame_plan.h: which passes run, in what order, what each reads and writes): the renderer owns
-// the views' images and the passes, prepares a frame's matrices and culling, asks plan_frame for
-// the passes and records each. Colour images an earlier pass left as attachments are made
-// readable before the first pass the plan says reads them; depth and the passes' own images are
-// still transitioned by their passes. One GPU culling pass sorts the chunks into the views'
-// indirect draw lists; predicates computed by it skip, on the GPU, C and the composite when C has
-// nothing to draw, and the pyramid when no eye drew anything.
+// the views' images, the chunk lists and the pyramid, prepares a frame's matrices and culling,
+// asks plan_frame for the passes and has each recorded by its unit's recorder
+// (renderer/passes/pass_units.h), through what UnitRecording offers of the frame. The executor
+// records every barrier and layout transition. One GPU culling pass sorts the chunks into the
+// views' indirect draw lists; predicates computed by it skip, on the GPU, C and the composite
+// when C has nothing to draw, and the pyramid when no eye drew anything.
 #pragma once
 
 #include <array>
@@ -212,9 +212,7 @@ class ModeRenderer {
     struct MonoView;
 
     void ensure_mono_view(int width, int height);
-    // A view's forward set, over its own resources (made by the forward pass).
-    void make_view_sets(View& view) const;
-    // Makes the pyramid large enough for C's allocation and points its readers at it.
+    // Makes the pyramid large enough for C's allocation (its readers take it from the frame).
     void ensure_pyramid();
     // view_proj: as rasterised (jittered under TAA); unjittered: the same without the jitter,
     // for velocity.
@@ -254,12 +252,12 @@ class ModeRenderer {
     // Before a view's images go: the executor must not take their states for new ones.
     void forget_images(const View& view);
     std::optional<passes::Predicate> predicate(plan::GpuPredicate when) const;
+    // What the units' recorders are made with and read each frame (the renderer's options).
+    passes::UnitSettings unit_settings() const;
     // The pass's barriers (the executor's), its profiler scopes, and its commands.
     void record_pass(const vk::raii::CommandBuffer& cmd, std::size_t pass, const FrameState& frame);
     void record_planned(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                         const FrameState& frame, passes::StepSync& sync);
-    void record_forward(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass);
-    void record_transparency(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass);
     // How C's image maps into each eye this frame (the composite unit's values).
     passes::CompositeValues composite_values(const FrameState& frame) const;
     // A pass unit's pass, by its recorder (made on its first pass; unit_recording.cpp).
@@ -284,8 +282,6 @@ class ModeRenderer {
     RendererOptions options_;
     double nearest_mono_plane_;
     bool blended_chunks_;  // the scene has alphaMode BLEND chunks (frame_plan.h: PlanOptions)
-    passes::ForwardPass forward_;
-    std::unique_ptr<passes::ForwardPass> eyes_forward_;  // single-pass stereo: both eyes at once
     passes::ChunkLists culling_;
     passes::DepthPyramid pyramid_;
     // The pass kinds written as units (renderer/passes/pass_units.h): their declarations, which
@@ -294,10 +290,8 @@ class ModeRenderer {
     std::map<std::string, std::unique_ptr<passes::UnitRecorder>> unit_recorders_;
     passes::UnitScene unit_scene_;  // the scene as the units use it (resources_'s)
     profile::FrameProfiler profiler_;
-    vk_core::DescriptorSet merged_depth_set_;  // the forward pass's set 1 (mask, routing)
-    // Single-pass stereo: both eyes' ViewConstants in one buffer, and eyes_forward_'s set 0.
+    // Single-pass stereo: both eyes' ViewConstants in one buffer (the eyes' forward pass's).
     std::optional<vk_core::Buffer> eye_pair_constants_;
-    vk_core::DescriptorSet eye_pair_set_;
     // Single-pass stereo: both eyes' forward images as two-layer images; outlives eyes_.
     std::unique_ptr<ForwardImages> eye_layers_;
     // Every plan this renderer may execute (transient_memory.h: possible_plans), over which its

@@ -28,7 +28,7 @@ struct ViewFeatures {
 };
 
 // The images a forward pass writes: one camera's, or both eyes' as two-layer images (single-pass
-// stereo), or one layer of those. Not movable: multisample refers to its own members.
+// stereo), or one layer of those.
 struct ModeRenderer::ForwardImages {
     vk_core::Image hdr;
     vk_core::Image depth;
@@ -39,7 +39,32 @@ struct ModeRenderer::ForwardImages {
     std::optional<vk_core::Image> hdr_samples;
     std::optional<vk_core::Image> linear_depth_samples;
     std::optional<vk_core::Image> depth_samples;
-    std::optional<passes::MultisampleTargets> multisample;
+
+    // The image of a forward role (hdr, depth, linear depth, velocity, the samples); null for
+    // another role, or one these images lack.
+    const vk_core::Image* forward_image(plan::ImageRole role) const {
+        const auto optional = [](const std::optional<vk_core::Image>& image) {
+            return image ? &*image : nullptr;
+        };
+        switch (role) {
+            case plan::ImageRole::kHdr:
+                return &hdr;
+            case plan::ImageRole::kDepth:
+                return &depth;
+            case plan::ImageRole::kLinearDepth:
+                return &linear_depth;
+            case plan::ImageRole::kVelocity:
+                return optional(velocity);
+            case plan::ImageRole::kHdrSamples:
+                return optional(hdr_samples);
+            case plan::ImageRole::kLinearDepthSamples:
+                return optional(linear_depth_samples);
+            case plan::ImageRole::kDepthSamples:
+                return optional(depth_samples);
+            default:
+                return nullptr;
+        }
+    }
 
     // The images of one camera's forward targets with their descriptions, by role: what the
     // constructor makes, and what may share memory (TransientMemory).
@@ -125,10 +150,6 @@ struct ModeRenderer::ForwardImages {
             }
             optional->emplace(make(ctx, images, memory, image.key.image));
         }
-        if (hdr_samples) {
-            multisample.emplace(
-                passes::MultisampleTargets{*hdr_samples, *linear_depth_samples, *depth_samples});
-        }
     }
 
     static vk_core::Image make(const vk_core::Context& ctx,
@@ -140,17 +161,6 @@ struct ModeRenderer::ForwardImages {
             }
         }
         programming_error("ForwardImages: no " + plan::image_role_name(role));
-    }
-
-  public:
-    passes::ForwardTargets forward_targets(vk::Extent2D area, bool clear_color = false) const {
-        return {hdr,
-                depth,
-                linear_depth,
-                area,
-                clear_color,
-                velocity ? &*velocity : nullptr,
-                multisample ? &*multisample : nullptr};
     }
 };
 
@@ -194,10 +204,6 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
     vk::Extent2D extent;                        // the images' size (C: its allocation)
     vk::Extent2D area;                          // the region drawn (C: its viewport, eq. 8)
     passes::ViewConstants written_constants{};  // what this frame's constants hold
-    vk_core::DescriptorSet forward_set;
-    // Hybrid with blended chunks: the eye's linear depth after the composite, as its
-    // transparency pass tests against it.
-    vk_core::DescriptorSet composite_depth_set;
     RgbaImage image;
     std::vector<float> linear;
     glm::dmat4 previous_unjittered{1.0};  // last frame's world -> clip without jitter
@@ -222,10 +228,6 @@ struct ModeRenderer::View : ForwardImages, ViewOutputs {
           ViewOutputs(ctx, both.hdr.desc().extent, features),
           extent(both.hdr.desc().extent),
           area(extent) {}
-
-    passes::ForwardTargets forward_targets(bool clear_color = false) const {
-        return ForwardImages::forward_targets(area, clear_color);
-    }
 
     // The eyes' images of two-pass stereo that may share memory (single-pass stereo's two-layer
     // images share none), placed over `plans`: every plan the renderer may run.

@@ -75,7 +75,16 @@ std::vector<vk_core::ImageRange> ModeRenderer::view_images(const plan::ResourceK
 }
 
 const vk_core::Image& ModeRenderer::view_image(const plan::ResourceKey& key) const {
-    MONOPLANE_EXPECTS(!key.is_buffer && key.view != plan::ViewId::kEyes);
+    MONOPLANE_EXPECTS(!key.is_buffer);
+    if (key.view == plan::ViewId::kEyes) {
+        // Single-pass stereo's two-layer images, which both eyes' forward pass draws into.
+        const vk_core::Image* image = eye_layers_ ? eye_layers_->forward_image(key.image) : nullptr;
+        if (image == nullptr) {
+            programming_error("a pass unit asked for " + plan::resource_name(key) +
+                              ", which is no two-layer image of both eyes this frame");
+        }
+        return *image;
+    }
     if (key.view == plan::ViewId::kNone) {
         // The shared images offered to units: the scene's shadow map, the merged depth pyramid.
         if (key.image == plan::ImageRole::kShadowMap) return resources_->shadow().map();
@@ -87,19 +96,8 @@ const vk_core::Image& ModeRenderer::view_image(const plan::ResourceKey& key) con
     const View* view = view_of(key.view);
     const vk_core::Image* image = nullptr;
     if (view != nullptr) {
+        image = view->forward_image(key.image);
         switch (key.image) {
-            case plan::ImageRole::kHdr:
-                image = &view->hdr;
-                break;
-            case plan::ImageRole::kDepth:
-                image = &view->depth;
-                break;
-            case plan::ImageRole::kLinearDepth:
-                image = &view->linear_depth;
-                break;
-            case plan::ImageRole::kVelocity:
-                image = view->velocity ? &*view->velocity : nullptr;
-                break;
             case plan::ImageRole::kHistory:
                 image = view->history[history_parity_] ? &*view->history[history_parity_] : nullptr;
                 break;

@@ -50,7 +50,9 @@ passes::UnitScene SceneResources::unit_scene() const {
     unit.shadow_casters = passes::ShadowCasters{shadow_opaque_.indirect(),
                                                 shadow_masked_.indirect(), textures_.set()};
     unit.shadow = shadow_params_;
+    unit.shadow_sampler = shadow_.sampler();
     unit.masked_chunks = alpha_classes_[MONOPLANE_CLASS_MASKED] > 0;
+    unit.blended_chunks = alpha_classes_[MONOPLANE_CLASS_BLENDED] > 0;
     return unit;
 }
 

@@ -33,9 +33,12 @@ class Recording final : public passes::UnitRecording {
     const passes::UnitFrameValues& values() const override { return values_; }
 
     const vk_core::Image& image(plan::ViewId view, plan::ImageRole role) override {
-        const plan::ResourceKey key{view, false, role, plan::BufferRole::kDrawLists};
-        expect_declared(key);
-        return resolvers_.image(key);
+        if (view == plan::ViewId::kEyes) {
+            for (plan::ViewId eye : plan::kEyeViews) expect_declared(image_key(eye, role));
+        } else {
+            expect_declared(image_key(view, role));
+        }
+        return resolvers_.image(image_key(view, role));
     }
 
     std::vector<const vk_core::Image*> images(plan::ViewId view, plan::ImageRole role) override {
@@ -51,9 +54,19 @@ class Recording final : public passes::UnitRecording {
     passes::CullInputs cull_inputs() const override { return resolvers_.cull_inputs; }
 
     bool declares(plan::ViewId view, plan::ImageRole role) const override {
-        const std::optional<std::uint16_t> handle =
-            plan_.handle({view, false, role, plan::BufferRole::kDrawLists});
+        if (view == plan::ViewId::kEyes) {
+            return declares(plan::ViewId::kLeft, role) && declares(plan::ViewId::kRight, role);
+        }
+        const std::optional<std::uint16_t> handle = plan_.handle(image_key(view, role));
         return handle && plan::step_declares(pass_.steps[step_], *handle);
+    }
+
+    passes::ChunkDraws chunk_draws(passes::CullView view) override {
+        for (plan::BufferRole role :
+             {plan::BufferRole::kDrawLists, plan::BufferRole::kPredicates}) {
+            expect_declared({plan::ViewId::kNone, true, plan::ImageRole::kHdr, role});
+        }
+        return resolvers_.chunk_draws(view);
     }
 
     bool declares(plan::ViewId view, plan::BufferRole role) const override {
@@ -84,6 +97,10 @@ class Recording final : public passes::UnitRecording {
     }
 
   private:
+    static plan::ResourceKey image_key(plan::ViewId view, plan::ImageRole role) {
+        return {view, false, role, plan::BufferRole::kDrawLists};
+    }
+
     void expect_declared(const plan::ResourceKey& key) const {
         const std::optional<std::uint16_t> handle = plan_.handle(key);
         const graph::Step& step = pass_.steps[step_];
@@ -110,6 +127,19 @@ std::unique_ptr<passes::UnitRecording> make_unit_recording(
     return std::make_unique<Recording>(cmd, plan, pass, sync, values, std::move(resolvers));
 }
 
+passes::UnitSettings ModeRenderer::unit_settings() const {
+    passes::UnitSettings settings;
+    settings.tonemap = options_.tonemap;
+    settings.taa = options_.taa;
+    settings.ssao = options_.ssao_params;
+    if (auto_mono_plane_) settings.depth_histogram = auto_mono_plane_->histogram_range();
+    settings.forward.msaa_samples =
+        static_cast<std::uint32_t>(msaa_samples(options_.anti_aliasing));
+    settings.forward.stereo_pass = options_.stereo_pass;
+    settings.forward.vertex_work = options_.vertex_work;
+    return settings;
+}
+
 void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                                const FrameState& frame, passes::StepSync& sync) {
     MONOPLANE_EXPECTS(!pass.unit.empty());
@@ -117,17 +147,15 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     if (!recorder) {
         passes::UnitPasses passes;
         passes.passes.emplace_back(&last_plan_, &pass);
-        recorder = passes::make_unit_recorder(pass.unit, ctx_, unit_scene_, passes);
+        recorder =
+            passes::make_unit_recorder(pass.unit, ctx_, unit_scene_, passes, unit_settings());
     }
     passes::UnitFrameValues values;
     values.use_mono = frame.use_mono;
     values.mono_plane = frame.inputs->mono_plane;
     values.slot = frame.slot;
     values.history_restarted = !history_valid_;
-    values.settings.tonemap = options_.tonemap;
-    values.settings.taa = options_.taa;
-    values.settings.ssao = options_.ssao_params;
-    if (auto_mono_plane_) values.settings.depth_histogram = auto_mono_plane_->histogram_range();
+    values.settings = unit_settings();
     if (pass.kind == plan::PassKind::kComposite) values.composite = composite_values(frame);
     if (pass.kind == plan::PassKind::kDepthPyramid) {
         for (int e = 0; e < 2; ++e) {
@@ -136,6 +164,7 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
         }
     }
     if (frame.use_mono) values.mono_area = mono_->area;
+    values.mono_hidden_pixels_read = options_.read_back || options_.ssao.has_value();
     values.light_view_proj = glm::mat4(frame.light_view_proj);
     UnitResolvers resolvers;
     resolvers.image = [this](const plan::ResourceKey& key) -> const vk_core::Image& {
@@ -143,11 +172,14 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     };
     resolvers.images = [this](const plan::ResourceKey& key) { return view_image_set(key); };
     resolvers.view_constants = [this](plan::ViewId view) -> const vk_core::Buffer& {
+        // Single-pass stereo's both eyes: their constants in one buffer.
+        if (view == plan::ViewId::kEyes) return *eye_pair_constants_;
         const View* of = view_of(view);
         MONOPLANE_EXPECTS(of != nullptr);
         return of->constants;
     };
     resolvers.cull_inputs = culling_.inputs();
+    resolvers.chunk_draws = [this](passes::CullView view) { return culling_.chunk_draws(view); };
     resolvers.buffer = [this, &frame](const plan::ResourceKey& key) -> const vk_core::Buffer& {
         return frame_buffer(key, frame.slot);
     };

@@ -23,6 +23,7 @@ struct UnitResolvers {
     std::function<std::vector<const vk_core::Image*>(const plan::ResourceKey&)> images;
     std::function<const vk_core::Buffer&(plan::ViewId)> view_constants;
     passes::CullInputs cull_inputs;
+    std::function<passes::ChunkDraws(passes::CullView)> chunk_draws;
     std::function<const vk_core::Buffer&(const plan::ResourceKey&)> buffer;
     std::function<std::optional<passes::Predicate>(plan::GpuPredicate)> predicate;
     // The scene the renderer draws (UnitRecording::scene); must be set for a unit that asks.

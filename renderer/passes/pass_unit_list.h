@@ -7,10 +7,12 @@
 #define MONOPLANE_PASS_UNITS(X) \
     X(culling)                  \
     X(shadow)                   \
+    X(forward)                  \
     X(depth_pyramid)            \
     X(occlusion_culling)        \
     X(ssao)                     \
     X(composite)                \
+    X(transparency)             \
     X(taa)                      \
     X(tonemap)                  \
     X(depth_view)               \

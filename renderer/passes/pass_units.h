@@ -18,6 +18,7 @@ namespace monoplane::passes {
 // their pipelines).
 std::unique_ptr<UnitRecorder> make_unit_recorder(const std::string& unit,
                                                  const vk_core::Context& ctx,
-                                                 const UnitScene& scene, const UnitPasses& passes);
+                                                 const UnitScene& scene, const UnitPasses& passes,
+                                                 const UnitSettings& settings);
 
 }  // namespace monoplane::passes

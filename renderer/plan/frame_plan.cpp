@@ -41,47 +41,23 @@ constexpr NameTable<DrawStep> kDrawStepNames = {
 // Why C's passes are skipped in a hybrid frame that draws no C (UnitPlacement::no_mono_reason).
 constexpr const char* kNoMonoReason = "m >= far: nothing lies beyond the mono plane, no C";
 
-// What shapes this frame's passes, derived once from the inputs (the renderer's own rules).
-struct FrameShape {
-    bool hybrid = false;    // a hybrid mode, whether or not this frame draws C
-    bool use_mono = false;  // C is drawn: a hybrid mode and something lies beyond m - eps
-    bool farfield = false;
-    bool depth_tested = false;  // the merged depth pyramid saves C's work
-    bool predicated = false;
-    bool single_pass = false;
-    bool taa = false;
-    bool msaa = false;
-};
-
-FrameShape shape_of(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device) {
-    FrameShape s;
-    s.hybrid = options.mode != Mode::kStereo;
-    s.use_mono = s.hybrid && !frame.mono_skipped;
-    s.farfield = s.use_mono && options.mode == Mode::kHybridFarfield;
-    s.depth_tested = !depth_test_skip_reason(options, frame);
-    s.predicated = device.conditional_rendering;
-    s.single_pass = options.stereo_pass != StereoPass::kTwoPasses;
-    s.taa = options.anti_aliasing == AntiAliasing::kTaa;
-    s.msaa = options.anti_aliasing != AntiAliasing::kNone && !s.taa;
-    return s;
-}
-
 class PlanBuilder {
   public:
     PlanBuilder(const PlanOptions& options, const PlanFrame& frame, const PlanDevice& device,
                 const std::vector<PassUnitDeclaration>& units)
-        : options_(options),
-          frame_(frame),
-          device_(device),
-          s_(shape_of(options, frame, device)),
-          units_(units),
-          r_(plan_) {}
+        : options_(options), frame_(frame), device_(device), units_(units), r_(plan_) {}
 
     FramePlan build() {
         add_units(UnitSlot::kFrameStart);
         add_units(UnitSlot::kAfterCulling);
-        add_eye_forward();
-        if (s_.hybrid) add_mono_passes();
+        add_units(UnitSlot::kEyesForward);
+        if (options_.mode != Mode::kStereo) {
+            add_units(UnitSlot::kAfterEyesForward);
+            add_units(UnitSlot::kMonoForward);
+            add_units(UnitSlot::kMonoPostProcessing);
+            add_units(UnitSlot::kComposite);
+            add_units(UnitSlot::kAfterComposite);
+        }
         add_post_processing();
         add_units(UnitSlot::kAfterToneMapping);
         add_units(UnitSlot::kReadBack);
@@ -92,112 +68,6 @@ class PlanBuilder {
     }
 
   private:
-    GpuPredicate when(GpuPredicate predicate) const {
-        return s_.predicated ? predicate : GpuPredicate::kAlways;
-    }
-
-    PlannedPass& add(PassKind kind, ViewId view = ViewId::kNone) {
-        PlannedPass pass;
-        pass.kind = kind;
-        pass.name = pass_name(kind, view);
-        pass.view = view;
-        plan_.passes.push_back(std::move(pass));
-        return plan_.passes.back();
-    }
-
-    // The chunk step of a forward pass: shaded, or coloured by routing in that debug view.
-    DrawStep chunk_step() const {
-        return frame_.debug == DebugView::kRouting ? DrawStep::kChunksShowRouting
-                                                   : DrawStep::kChunks;
-    }
-
-    // The forward pass's uses, once its draws are known.
-    std::vector<graph::Step> forward_steps_of(const PlannedPass& pass, std::vector<ViewId> views) {
-        ForwardUses uses;
-        uses.views = std::move(views);
-        uses.velocity = s_.taa;
-        uses.multisampled = s_.msaa;
-        uses.masks_hidden = std::any_of(pass.draws.begin(), pass.draws.end(), [](const auto& d) {
-            return d.step == DrawStep::kMaskHidden;
-        });
-        return forward_steps(r_, uses);
-    }
-
-    // The eyes draw their own sky in stereo, and in hybrid only when C has nothing to draw
-    // (which only the GPU knows; without predicates C always draws the sky).
-    std::vector<PlannedDraw> eye_draws() const {
-        std::vector<PlannedDraw> draws;
-        if (options_.depth_prepass) draws.push_back({DrawStep::kDepthPrepass});
-        draws.push_back({chunk_step()});
-        if (!s_.use_mono) {
-            draws.push_back({DrawStep::kSky});
-        } else if (s_.predicated) {
-            draws.push_back({DrawStep::kSky, GpuPredicate::kMonoNone});
-        }
-        // In hybrid the eyes' blended chunks wait for the composite (add_transparency).
-        if (options_.blended && !s_.use_mono) draws.push_back({DrawStep::kBlended});
-        return draws;
-    }
-
-    void add_eye_forward() {
-        if (s_.single_pass) {
-            PlannedPass& pass = add(PassKind::kForward, ViewId::kEyes);
-            pass.statistics_scope = view_name(ViewId::kEyes);
-            pass.draws = eye_draws();
-            pass.steps = forward_steps_of(pass, {kEyeViews.begin(), kEyeViews.end()});
-            return;
-        }
-        for (ViewId eye : kEyeViews) {
-            PlannedPass& pass = add(PassKind::kForward, eye);
-            pass.statistics_scope = view_name(eye);
-            pass.draws = eye_draws();
-            pass.steps = forward_steps_of(pass, {eye});
-        }
-    }
-
-    std::vector<PlannedDraw> mono_draws() const {
-        std::vector<PlannedDraw> draws;
-        const DrawStep chunks = chunk_step();
-        if (s_.depth_tested) {
-            // Pixels hidden in both eyes get the nearest depth first; early depth testing then
-            // rejects every fragment there. No pyramid (no eye drew anything): nothing to mask.
-            draws.push_back({DrawStep::kMaskHidden, when(GpuPredicate::kMonoDepthTested)});
-        }
-        if (options_.depth_prepass) draws.push_back({DrawStep::kDepthPrepass});
-        draws.push_back({chunks});
-        draws.push_back({DrawStep::kSky, when(GpuPredicate::kMonoAny)});
-        // Only the blended chunks wholly beyond m: they are mapped like the rest of C.
-        if (options_.blended) draws.push_back({DrawStep::kBlended});
-        return draws;
-    }
-
-    void add_mono_passes() {
-        const std::optional<std::string> no_mono =
-            s_.use_mono ? std::nullopt : std::optional<std::string>(kNoMonoReason);
-        add_units(UnitSlot::kAfterEyesForward);
-        {
-            PlannedPass& pass = add(PassKind::kForward, ViewId::kMono);
-            pass.statistics_scope = view_name(ViewId::kMono);
-            pass.draws = mono_draws();
-            pass.steps = forward_steps_of(pass, {ViewId::kMono});
-            pass.skipped = no_mono;
-        }
-        add_units(UnitSlot::kMonoPostProcessing);
-        add_units(UnitSlot::kComposite);
-        if (options_.blended && s_.use_mono) add_transparency();
-    }
-
-    // Hybrid's blended chunks nearer than m or straddling it, per eye after the composite: a
-    // blended surface has no single depth, so it cannot be mapped through the mono plane; drawn
-    // over the composite and tested against its depth, each is drawn once into each eye.
-    void add_transparency() {
-        for (ViewId eye : kEyeViews) {
-            PlannedPass& pass = add(PassKind::kTransparency, eye);
-            pass.statistics_scope = pass.name;
-            pass.steps = transparency_steps(r_, eye);
-        }
-    }
-
     void add_post_processing() {
         add_units(UnitSlot::kEyesPostProcessing);
         add_units(UnitSlot::kBeforeToneMapping);
@@ -240,7 +110,7 @@ class PlanBuilder {
     // A pass the GPU skips by a predicate, whole or in some of its draws, reads the culling's
     // words (conditional rendering) in every step it records: one rule for every kind of pass.
     void declare_predicate_reads() {
-        if (!s_.predicated) return;
+        if (!device_.conditional_rendering) return;
         const graph::BufferHandle predicates = r_.shared(BufferRole::kPredicates);
         const auto conditional = [](GpuPredicate when) { return when != GpuPredicate::kAlways; };
         for (PlannedPass& pass : plan_.passes) {
@@ -272,7 +142,6 @@ class PlanBuilder {
     const PlanOptions& options_;
     const PlanFrame& frame_;
     const PlanDevice& device_;
-    const FrameShape s_;
     const std::vector<PassUnitDeclaration>& units_;
     FramePlan plan_;
     PlanResources r_;

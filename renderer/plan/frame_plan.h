@@ -23,6 +23,10 @@
 // others in their transparency passes, after the composite. With m >= f (the rig's mono_skipped)
 // hybrid's executed passes are exactly stereo's: nothing lies beyond the plane.
 //
+// Every kind of pass is a unit (renderer/plan/pass_unit.h): plan_frame places the units slot by
+// slot in the order above, then reads what they placed (the GPU predicates' reads, the passes
+// nothing reads).
+//
 // When may this be called: any time; it allocates and touches no device.
 #pragma once
 

@@ -3,10 +3,6 @@
 namespace monoplane::plan {
 namespace {
 
-using graph::Step;
-using graph::StepBuilder;
-using graph::Use;
-
 // Resources carried from frame to frame: read before this frame writes them, or kept for the next.
 graph::Lifetime lifetime_of(const ResourceKey& key) {
     // The culling pass reads each chunk's last level of detail before it writes this frame's.
@@ -22,13 +18,6 @@ graph::Lifetime lifetime_of(const ResourceKey& key) {
         default:
             return graph::Lifetime::kTransient;
     }
-}
-
-Step& add_step(std::vector<Step>& steps, std::string name, bool repeats = false) {
-    Step& step = steps.emplace_back();
-    step.name = std::move(name);
-    step.repeats = repeats;
-    return step;
 }
 
 }  // namespace
@@ -49,41 +38,6 @@ graph::ImageHandle PlanResources::image(ViewId view, ImageRole role) {
 
 graph::BufferHandle PlanResources::buffer(ViewId view, BufferRole role) {
     return {handle({view, true, ImageRole::kHdr, role})};
-}
-
-std::vector<Step> forward_steps(PlanResources& r, const ForwardUses& uses) {
-    std::vector<Step> steps;
-    StepBuilder step(add_step(steps, "draw"));
-    // The draw lists' commands and counts (the counts share the predicates' buffer).
-    step.use(r.shared(BufferRole::kDrawLists), Use::kIndirectArgs)
-        .use(r.shared(BufferRole::kPredicates), Use::kIndirectArgs)
-        .use(r.shared(ImageRole::kShadowMap), Use::kSampledFragment);
-    if (uses.masks_hidden) step.use(r.shared(ImageRole::kMergedDepth), Use::kGeneralSampled);
-    for (ViewId view : uses.views) {
-        if (uses.multisampled) {
-            step.use(r.image(view, ImageRole::kHdrSamples), Use::kColorWrite)
-                .use(r.image(view, ImageRole::kLinearDepthSamples), Use::kColorWrite)
-                .use(r.image(view, ImageRole::kDepthSamples), Use::kDepthWrite);
-        } else {
-            step.use(r.image(view, ImageRole::kDepth), Use::kDepthWrite);
-        }
-        // Drawn, or resolved into from the samples.
-        step.use(r.image(view, ImageRole::kHdr), Use::kColorWrite)
-            .use(r.image(view, ImageRole::kLinearDepth), Use::kColorWrite);
-        if (uses.velocity) step.use(r.image(view, ImageRole::kVelocity), Use::kColorWrite);
-    }
-    return steps;
-}
-
-std::vector<Step> transparency_steps(PlanResources& r, ViewId eye) {
-    std::vector<Step> steps;
-    StepBuilder(add_step(steps, "draw"))
-        .use(r.shared(BufferRole::kDrawLists), Use::kIndirectArgs)
-        .use(r.shared(BufferRole::kPredicates), Use::kIndirectArgs)
-        .use(r.shared(ImageRole::kShadowMap), Use::kSampledFragment)
-        .use(r.image(eye, ImageRole::kLinearDepth), Use::kSampledFragment)
-        .use(r.image(eye, ImageRole::kHdr), Use::kColorBlend);
-    return steps;
 }
 
 }  // namespace monoplane::plan

@@ -38,16 +38,24 @@ enum class UnitSlot {
     // After the culling, before the eyes' forward passes: a unit the forward passes read (the
     // shadow map).
     kAfterCulling,
+    // The eyes' forward passes (one per eye, or one for both in single-pass stereo).
+    kEyesForward,
     // In the hybrid modes only, after the eyes' forward passes, before C's: a unit that reads
     // what the eyes drew to save C's work (the merged depth pyramid, then the occlusion
     // culling, in the order pass_unit_list.h registers them).
     kAfterEyesForward,
+    // In the hybrid modes only, after the eyes' (and the pyramid, and the occlusion culling): C's
+    // forward pass.
+    kMonoForward,
     // In the hybrid modes only, after C's forward pass, before the composite: a unit that
     // post-processes C's colour before it is mapped into the eyes (C's SSAO).
     kMonoPostProcessing,
     // In the hybrid modes only, after C's passes, before the eyes' blended chunks: a unit that
     // maps C into the eyes (the composite).
     kComposite,
+    // In the hybrid modes only, after the composite: a unit that draws into the eyes over what
+    // the composite mapped (the blended chunks nearer than m, per eye).
+    kAfterComposite,
     // After the eyes' forward passes, the composite and the blended chunks: a unit that
     // post-processes the eyes' HDR colour with every surface in place (the eyes' SSAO).
     kEyesPostProcessing,

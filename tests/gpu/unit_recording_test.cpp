@@ -116,6 +116,22 @@ TEST_F(UnitRecordingCheck, ABufferItsStepDeclaredIsHandedOverAndAnyOtherStopsThe
                  "does not declare it");
 }
 
+// Single-pass stereo's two-layer image stands for both eyes' images: only a step that declares
+// both may have it. The probe declares the left eye's alone.
+TEST_F(UnitRecordingCheck, BothEyesImageNeedsBothEyesDeclared) {
+    EXPECT_FALSE(recording()->declares(plan::ViewId::kEyes, plan::ImageRole::kLinearDepth));
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_DEATH(ask(plan::ViewId::kEyes, plan::ImageRole::kLinearDepth),
+                 "left.probe touched right.linear_depth in step 'draw'");
+}
+
+// A view's chunk draws are the draw lists and the predicates: the probe declares neither.
+TEST_F(UnitRecordingCheck, ChunkDrawsNeedTheDrawListsDeclared) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_DEATH((void)recording()->chunk_draws(passes::CullView::kLeft),
+                 "left.probe touched draw_lists in step 'draw'");
+}
+
 TEST_F(UnitRecordingCheck, AnImageNoPassOfTheFrameUsesStopsTheProgram) {
     GTEST_FLAG_SET(death_test_style, "threadsafe");
     EXPECT_DEATH(ask(plan::ViewId::kLeft, plan::ImageRole::kHistory),

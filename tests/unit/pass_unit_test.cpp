@@ -43,7 +43,7 @@ PassUnitDeclaration probe() {
     return unit;
 }
 
-// The registered units (TAA, the depth view) and the probe after them, as a renderer with the
+// The registered units (every kind) and the probe after them, as a renderer with the
 // probe registered would plan.
 std::vector<PassUnitDeclaration> with_probe() {
     std::vector<PassUnitDeclaration> units = passes::pass_unit_declarations();
@@ -622,6 +622,63 @@ TEST(PassUnit, TheCullingIsFirstAndTheOcclusionCullingFollowsThePyramid) {
     EXPECT_EQ(position(hybrid, "occlusion_culling") + 1, position(hybrid, "mono.forward"));
     EXPECT_EQ(hybrid.reads(occlusion), (Names{"merged_depth", "lod_state", "predicates"}));
     EXPECT_EQ(hybrid.writes(occlusion), (Names{"draw_lists", "predicates"}));
+}
+
+// The forward passes are one unit at two slots (the eyes' after the shadow map, C's after the
+// occlusion culling), the blended chunks after the composite another; with them every pass of
+// every plan is a unit's, planned from its declaration.
+TEST(PassUnit, TheForwardPassesAndTheTransparencyAreUnitsAndSoIsEveryPass) {
+    PlanOptions options = options_for(Mode::kHybrid, true, true);
+    options.blended = true;
+    const FramePlan hybrid = passes::plan_frame(options, PlanFrame{}, PlanDevice{true, true});
+    for (const char* name : {"left.forward", "right.forward", "mono.forward"}) {
+        const PlannedPass& pass = hybrid.passes[position(hybrid, name)];
+        EXPECT_EQ(pass.unit, "forward") << name;
+        EXPECT_EQ(pass.kind, PassKind::kForward) << name;
+        EXPECT_EQ(step_names(pass), Names{"draw"}) << name;
+    }
+    EXPECT_EQ(position(hybrid, "shadow") + 1, position(hybrid, "left.forward"));
+    EXPECT_EQ(position(hybrid, "occlusion_culling") + 1, position(hybrid, "mono.forward"));
+    EXPECT_EQ(position(hybrid, "mono.forward") + 1, position(hybrid, "mono.ssao"));
+    // C's forward pass masks first, and reads the pyramid only then.
+    const PlannedPass& mono = *hybrid.find(PassKind::kForward, ViewId::kMono);
+    ASSERT_FALSE(mono.draws.empty());
+    EXPECT_EQ(mono.draws.front().step, DrawStep::kMaskHidden);
+    const Names mono_reads = hybrid.reads(mono);
+    EXPECT_NE(std::find(mono_reads.begin(), mono_reads.end(), "merged_depth"), mono_reads.end());
+    const Names left_reads = hybrid.reads(*hybrid.find(PassKind::kForward, ViewId::kLeft));
+    EXPECT_EQ(std::find(left_reads.begin(), left_reads.end(), "merged_depth"), left_reads.end());
+    for (const char* name : {"left.transparency", "right.transparency"}) {
+        const PlannedPass& pass = hybrid.passes[position(hybrid, name)];
+        EXPECT_EQ(pass.unit, "transparency") << name;
+        EXPECT_GT(position(hybrid, name), position(hybrid, "right.composite")) << name;
+        EXPECT_LT(position(hybrid, name), position(hybrid, "ssao")) << name;
+    }
+    EXPECT_EQ(hybrid.reads(*hybrid.find(PassKind::kTransparency, ViewId::kLeft)),
+              (Names{"draw_lists", "predicates", "shadow_map", "left.linear_depth", "left.hdr"}));
+    // Without C the eyes draw their blended chunks themselves.
+    PlanFrame no_mono;
+    no_mono.mono_skipped = true;
+    EXPECT_EQ(passes::plan_frame(options, no_mono, PlanDevice{})
+                  .find(PassKind::kTransparency, ViewId::kLeft),
+              nullptr);
+
+    // Single-pass stereo: one pass of both eyes, whose step declares both eyes' targets.
+    PlanOptions single = options_for(Mode::kStereo, false, false);
+    single.stereo_pass = StereoPass::kMultiview;
+    const FramePlan stereo = passes::plan_frame(single, PlanFrame{}, PlanDevice{});
+    const PlannedPass& eyes = *stereo.find(PassKind::kForward, ViewId::kEyes);
+    EXPECT_EQ(eyes.name, "eyes.forward");
+    EXPECT_EQ(stereo.find(PassKind::kForward, ViewId::kLeft), nullptr);
+    EXPECT_EQ(stereo.writes(eyes), (Names{"left.depth", "left.hdr", "left.linear_depth",
+                                          "right.depth", "right.hdr", "right.linear_depth"}));
+
+    for (const FramePlan* plan : {&hybrid, &stereo}) {
+        for (const PlannedPass& pass : plan->passes) {
+            EXPECT_FALSE(pass.unit.empty()) << pass.name;
+            EXPECT_NE(pass.kind, PassKind::kUnit) << pass.name;
+        }
+    }
 }
 
 }  // namespace

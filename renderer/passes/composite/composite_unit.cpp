@@ -392,7 +392,7 @@ void CompositeRecorder::record_display(UnitRecording& r, plan::ViewId eye,
 }  // namespace
 
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
-                                            const UnitPasses& passes) {
+                                            const UnitPasses& passes, const UnitSettings&) {
     return std::make_unique<CompositeRecorder>(ctx, passes);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

@@ -20,10 +20,7 @@ constexpr std::array kPoolSizes = {vk::DescriptorPoolSize(Type::eStorageBuffer, 
 
 }  // namespace
 
-CullProgram::CullProgram(const vk_core::Context& ctx)
-    : ctx_(ctx),
-      no_pyramid_(ctx, vk_core::ImageDesc{
-                           {1, 1}, vk::Format::eR32Sfloat, vk::ImageUsageFlagBits::eSampled}) {
+CullProgram::CullProgram(const vk_core::Context& ctx, Phase phase) : ctx_(ctx) {
     const auto compute = vk::ShaderStageFlagBits::eCompute;
     const std::array bindings = {
         vk::DescriptorSetLayoutBinding(0, Type::eStorageBuffer, 1, compute),
@@ -45,8 +42,11 @@ CullProgram::CullProgram(const vk_core::Context& ctx)
     const vk::raii::ShaderModule shader = vk_core::make_shader(ctx, kCullChunks);
     pipeline_ = vk_core::make_compute_pipeline(ctx, *layout_, *shader);
     nearest_ = vk_core::make_texel_sampler(ctx);
+    if (phase == Phase::kOcclusion) return;
     // Never read: in the layout the pyramid is read in, as a set that names it requires.
-    vk_core::initialise_image(ctx, no_pyramid_, executor::layout_for(graph::Use::kGeneralSampled));
+    no_pyramid_.emplace(
+        ctx, vk_core::ImageDesc{{1, 1}, vk::Format::eR32Sfloat, vk::ImageUsageFlagBits::eSampled});
+    vk_core::initialise_image(ctx, *no_pyramid_, executor::layout_for(graph::Use::kGeneralSampled));
 }
 
 vk_core::DescriptorSet CullProgram::make_set() const {
@@ -70,7 +70,7 @@ void CullProgram::bind(vk::DescriptorSet set, const CullBuffers& buffers,
             vk::WriteDescriptorSet(set, kBindings[i], 0, Type::eStorageBuffer, {}, infos[i]);
     }
     const vk::DescriptorImageInfo pyramid(
-        *nearest_, merged_depth != nullptr ? merged_depth->view() : no_pyramid_.view(),
+        *nearest_, merged_depth != nullptr ? merged_depth->view() : no_pyramid_->view(),
         executor::layout_for(graph::Use::kGeneralSampled));
     writes[8] = vk::WriteDescriptorSet(set, 4, 0, Type::eCombinedImageSampler, pyramid);
     ctx_.device().updateDescriptorSets(writes, {});
@@ -90,7 +90,7 @@ namespace {
 class CullRecorder final : public UnitRecorder {
   public:
     CullRecorder(const vk_core::Context& ctx, CullProgram::Phase phase)
-        : program_(ctx), phase_(phase) {}
+        : program_(ctx, phase), phase_(phase) {}
 
     void record(UnitRecording& r) override {
         auto [entry, added] = sets_.try_emplace(r.values().slot);

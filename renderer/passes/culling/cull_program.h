@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "renderer/passes/culling/chunk_lists.h"
 #include "renderer/passes/shared/pass_unit.h"
@@ -30,7 +31,9 @@ class CullProgram {
   public:
     enum class Phase : std::uint32_t { kFrustum = 0, kOcclusion = 1 };
 
-    explicit CullProgram(const vk_core::Context& ctx);
+    // The phase it will record: the frustum phase's sets name an image of the program's own
+    // where the occlusion phase's name the pyramid.
+    CullProgram(const vk_core::Context& ctx, Phase phase);
 
     vk_core::DescriptorSet make_set() const;
     // Points `set` at `buffers` and, for the occlusion phase, at the merged depth pyramid (every
@@ -45,8 +48,8 @@ class CullProgram {
     vk::raii::DescriptorSetLayout set_layout_{nullptr};
     vk::raii::PipelineLayout layout_{nullptr};
     vk::raii::Pipeline pipeline_{nullptr};
-    vk::raii::Sampler nearest_{nullptr};  // the pyramid's texels, every mip
-    vk_core::Image no_pyramid_;
+    vk::raii::Sampler nearest_{nullptr};        // the pyramid's texels, every mip
+    std::optional<vk_core::Image> no_pyramid_;  // the frustum phase's
 };
 
 // The recorder of both culling units: one dispatch of `phase` per pass, under the pass's GPU

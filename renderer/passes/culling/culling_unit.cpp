@@ -43,7 +43,7 @@ plan::PassUnitDeclaration declaration() {
 
 #ifdef MONOPLANE_UNIT_RECORDER
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
-                                            const UnitPasses&) {
+                                            const UnitPasses&, const UnitSettings&) {
     return make_cull_recorder(ctx, CullProgram::Phase::kFrustum);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

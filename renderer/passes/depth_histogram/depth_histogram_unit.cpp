@@ -147,7 +147,7 @@ class DepthHistogramRecorder final : public UnitRecorder {
 }  // namespace
 
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
-                                            const UnitPasses&) {
+                                            const UnitPasses&, const UnitSettings&) {
     return std::make_unique<DepthHistogramRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

@@ -265,7 +265,7 @@ class PyramidRecorder final : public UnitRecorder {
 }  // namespace
 
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
-                                            const UnitPasses&) {
+                                            const UnitPasses&, const UnitSettings&) {
     return std::make_unique<PyramidRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

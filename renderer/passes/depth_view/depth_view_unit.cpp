@@ -107,7 +107,7 @@ class DepthViewRecorder final : public UnitRecorder {
 }  // namespace
 
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
-                                            const UnitPasses&) {
+                                            const UnitPasses&, const UnitSettings&) {
     return std::make_unique<DepthViewRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

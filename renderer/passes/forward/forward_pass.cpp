@@ -142,7 +142,8 @@ Attachments make_attachments(const ForwardTargets& targets, bool velocity) {
         attachments.colors.push_back(color_attachment(*targets.velocity, nullptr, color_load,
                                                       vk::ClearColorValue(0.0f, 0.0f, 0.0f, 0.0f)));
     }
-    const vk_core::Image& depth_image = ms ? ms->depth : targets.depth;
+    MONOPLANE_EXPECTS(ms != nullptr || targets.depth != nullptr);
+    const vk_core::Image& depth_image = ms ? ms->depth : *targets.depth;
     attachments.depth = vk::RenderingAttachmentInfo(
         depth_image.view(), executor::layout_for(graph::Use::kDepthWrite), {}, {}, {},
         vk::AttachmentLoadOp::eClear, vk::AttachmentStoreOp::eStore,
@@ -180,6 +181,24 @@ vk::PipelineColorBlendAttachmentState over_blend() {
             vk::ColorComponentFlagBits::eB | vk::ColorComponentFlagBits::eA);
 }
 
+// Blended chunks: after everything opaque, depth tested and not written; the HDR colour blended,
+// the other attachments left as they are (independentBlend). The description points into the
+// specialization it holds: neither may move.
+struct BlendedDesc {
+    AlphaSpecialization blend{scenes::AlphaMode::kBlend, false};
+    vk_core::GraphicsPipelineDesc desc;
+
+    explicit BlendedDesc(const vk_core::GraphicsPipelineDesc& chunks) : desc(chunks) {
+        desc.fragment_specialization = &blend.info;
+        desc.depth_write = false;
+        desc.depth_compare = vk::CompareOp::eGreater;
+        desc.blend = over_blend();
+        desc.color_write_masks = {over_blend().colorWriteMask, {}, {}};
+    }
+    BlendedDesc(const BlendedDesc&) = delete;
+    BlendedDesc& operator=(const BlendedDesc&) = delete;
+};
+
 // Single-pass stereo draws both layers of the targets: every draw covers both views with
 // multiview; otherwise the geometry shader picks the layer of each triangle it emits, or the
 // vertex shader that of each instance.
@@ -206,7 +225,7 @@ ForwardPass::ForwardPass(const vk_core::Context& ctx, vk::DescriptorSetLayout sc
     const std::array set_layouts = {*set_layout_, *merged_depth_layout_, scene_textures_layout};
     layout_ = vk::raii::PipelineLayout(ctx.device(), vk::PipelineLayoutCreateInfo({}, set_layouts));
     make_chunk_pipelines();
-    make_fullscreen_pipelines();
+    if (config.programs == ForwardPrograms::kForward) make_fullscreen_pipelines();
 }
 
 // The same vertex shader in both pipelines, whose `precise` product rounds alike in both, so the
@@ -236,6 +255,10 @@ void ForwardPass::make_chunk_pipelines() {
     chunks.vertex_attributes = SceneGeometry::vertex_attributes();
 
     const PipelineShaders shading(ctx_, shaders.vertex, shaders.geometry, shaders.forward);
+    if (config_.programs == ForwardPrograms::kBlendedAfterComposite) {
+        make_after_composite_pipeline(shaders, shading.in(chunks));
+        return;
+    }
     shading_pipelines_ = ChunkPipelines::make(ctx_, shading.in(chunks));
     // Depth only: no fragment shader and no colour written; nearer is greater, as always.
     vk_core::GraphicsPipelineDesc prepass = shading.in(chunks);
@@ -269,34 +292,34 @@ void ForwardPass::make_masked_pipelines(const vk_core::GraphicsPipelineDesc& chu
 void ForwardPass::make_alpha_pipelines(const ForwardShaders& shaders,
                                        const vk_core::GraphicsPipelineDesc& chunks,
                                        const vk_core::GraphicsPipelineDesc& prepass) {
-    const bool multisampled = config_.samples != vk::SampleCountFlagBits::e1;
     if (config_.masked_chunks) make_masked_pipelines(chunks, prepass, shaders.masked_depth);
     if (!config_.blended_chunks) return;
-    // Blended: after everything opaque, depth tested and not written; the HDR colour blended,
-    // the other attachments left as they are (independentBlend).
+    // The blended chunks leave the other attachments as they are (BlendedDesc).
     if (!ctx_.capabilities().independent_blend) {
         throw UserError("device '" + ctx_.device_info().name +
                         "' has no independentBlend: it cannot draw alphaMode BLEND materials, "
                         "which blend the colour and leave the linear depth behind them");
     }
-    const AlphaSpecialization blend(scenes::AlphaMode::kBlend, false);
-    vk_core::GraphicsPipelineDesc blended = chunks;
-    blended.fragment_specialization = &blend.info;
-    blended.depth_write = false;
-    blended.depth_compare = vk::CompareOp::eGreater;
-    blended.blend = over_blend();
-    blended.color_write_masks = {over_blend().colorWriteMask, {}, {}};
-    blended_pipeline_ = vk_core::make_graphics_pipeline(ctx_, blended);
+    const BlendedDesc blended(chunks);
+    blended_pipeline_ = vk_core::make_graphics_pipeline(ctx_, blended.desc);
+}
 
+void ForwardPass::make_after_composite_pipeline(const ForwardShaders& shaders,
+                                                const vk_core::GraphicsPipelineDesc& chunks) {
     // Hybrid's after the composite, one eye per pass (hybrid has no MSAA): HDR colour only, no
     // depth buffer (the shader tests the composite's linear depth), clamped rather than clipped
     // at the eyes' far plane m.
-    if (!ctx_.capabilities().depth_clamp || multisampled ||
-        config_.stereo != plan::StereoPass::kTwoPasses) {
-        return;
+    MONOPLANE_EXPECTS(config_.blended_chunks && config_.samples == vk::SampleCountFlagBits::e1 &&
+                      config_.stereo == plan::StereoPass::kTwoPasses);
+    if (!ctx_.capabilities().depth_clamp) {
+        throw UserError("device '" + ctx_.device_info().name +
+                        "' cannot clamp depth (depthClamp): hybrid cannot draw the blended "
+                        "surfaces nearer than the mono plane after the composite; use --mode "
+                        "stereo for scenes with alphaMode BLEND materials");
     }
+    const BlendedDesc blended(chunks);
     const vk::raii::ShaderModule after = vk_core::make_shader(ctx_, shaders.after_composite);
-    vk_core::GraphicsPipelineDesc after_composite = blended;
+    vk_core::GraphicsPipelineDesc after_composite = blended.desc;
     after_composite.fragment = *after;
     after_composite.color_formats = {kHdrFormat};
     after_composite.color_write_masks.clear();
@@ -403,21 +426,22 @@ void ForwardPass::record_step(const vk::raii::CommandBuffer& cmd, plan::DrawStep
     }
 }
 
-vk_core::DescriptorSet ForwardPass::make_view_set(const vk_core::Buffer& constants,
-                                                  vk::ImageView shadow,
-                                                  vk::Sampler shadow_sampler) const {
+vk_core::DescriptorSet ForwardPass::make_view_set() const {
     const std::array sizes = {vk::DescriptorPoolSize(vk::DescriptorType::eUniformBuffer, 1),
                               vk::DescriptorPoolSize(vk::DescriptorType::eCombinedImageSampler, 1)};
-    vk_core::DescriptorSet set(ctx_, *set_layout_, sizes);
+    return vk_core::DescriptorSet(ctx_, *set_layout_, sizes);
+}
+
+void ForwardPass::write_view_set(vk::DescriptorSet set, const vk_core::Buffer& constants,
+                                 vk::ImageView shadow, vk::Sampler shadow_sampler) const {
     const vk::DescriptorBufferInfo constants_info(constants.handle(), 0, VK_WHOLE_SIZE);
     const vk::DescriptorImageInfo shadow_info(shadow_sampler, shadow,
                                               executor::layout_for(graph::Use::kSampledFragment));
     const std::array writes = {
-        vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eUniformBuffer, {}, constants_info),
-        vk::WriteDescriptorSet(*set, 1, 0, vk::DescriptorType::eCombinedImageSampler, shadow_info),
+        vk::WriteDescriptorSet(set, 0, 0, vk::DescriptorType::eUniformBuffer, {}, constants_info),
+        vk::WriteDescriptorSet(set, 1, 0, vk::DescriptorType::eCombinedImageSampler, shadow_info),
     };
     ctx_.device().updateDescriptorSets(writes, {});
-    return set;
 }
 
 void ForwardPass::record_after_composite(const vk::raii::CommandBuffer& cmd,
@@ -445,20 +469,12 @@ void ForwardPass::record_after_composite(const vk::raii::CommandBuffer& cmd,
     cmd.endRendering();
 }
 
-vk_core::DescriptorSet ForwardPass::make_composite_depth_set(vk::ImageView linear_depth,
-                                                             vk::Sampler nearest) const {
-    if (!*after_composite_pipeline_) {
-        throw UserError("device '" + ctx_.device_info().name +
-                        "' cannot clamp depth (depthClamp): hybrid cannot draw the blended "
-                        "surfaces nearer than the mono plane after the composite; use --mode "
-                        "stereo for scenes with alphaMode BLEND materials");
-    }
-    vk_core::DescriptorSet set = make_merged_depth_set();
+void ForwardPass::write_composite_depth(vk::DescriptorSet set, vk::ImageView linear_depth,
+                                        vk::Sampler nearest) const {
     const vk::DescriptorImageInfo depth(nearest, linear_depth,
                                         executor::layout_for(graph::Use::kSampledFragment));
     ctx_.device().updateDescriptorSets(
-        vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eCombinedImageSampler, depth), {});
-    return set;
+        vk::WriteDescriptorSet(set, 0, 0, vk::DescriptorType::eCombinedImageSampler, depth), {});
 }
 
 vk_core::DescriptorSet ForwardPass::make_merged_depth_set() const {
@@ -467,14 +483,14 @@ vk_core::DescriptorSet ForwardPass::make_merged_depth_set() const {
     return vk_core::DescriptorSet(ctx_, *merged_depth_layout_, sizes);
 }
 
-void ForwardPass::write_merged_depth(const vk_core::DescriptorSet& set, vk::ImageView pyramid,
+void ForwardPass::write_merged_depth(vk::DescriptorSet set, vk::ImageView pyramid,
                                      vk::Sampler nearest, vk::Buffer routing) const {
     const vk::DescriptorImageInfo merged(nearest, pyramid,
                                          executor::layout_for(graph::Use::kGeneralSampled));
     const vk::DescriptorBufferInfo routing_info(routing, 0, VK_WHOLE_SIZE);
     const std::array writes = {
-        vk::WriteDescriptorSet(*set, 0, 0, vk::DescriptorType::eCombinedImageSampler, merged),
-        vk::WriteDescriptorSet(*set, 1, 0, vk::DescriptorType::eStorageBuffer, {}, routing_info),
+        vk::WriteDescriptorSet(set, 0, 0, vk::DescriptorType::eCombinedImageSampler, merged),
+        vk::WriteDescriptorSet(set, 1, 0, vk::DescriptorType::eStorageBuffer, {}, routing_info),
     };
     ctx_.device().updateDescriptorSets(writes, {});
 }

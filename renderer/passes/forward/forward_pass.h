@@ -32,8 +32,10 @@ struct MultisampleTargets {
 };
 
 struct ForwardTargets {
-    const vk_core::Image& hdr;           // kHdrFormat, colour attachment
-    const vk_core::Image& depth;         // kDepthFormat, reversed Z
+    const vk_core::Image& hdr;  // kHdrFormat, colour attachment
+    // kDepthFormat, reversed Z; not written under MSAA (MultisampleTargets::depth is), may be
+    // null then.
+    const vk_core::Image* depth;
     const vk_core::Image& linear_depth;  // kLinearDepthFormat
     // The region drawn, from the images' top-left corner: the whole image for the eyes, the
     // viewport of eq. 8 inside its larger allocation for C.
@@ -50,8 +52,8 @@ struct ForwardTargets {
 
 // Hybrid's blended chunks nearer than m or straddling it, drawn into an eye after the composite
 // (record_after_composite): blended into the eye's HDR image, each fragment tested against the
-// composite's linear depth (the near content's and C's mapped in), which the set made by
-// make_composite_depth_set reads.
+// composite's linear depth (the near content's and C's mapped in), which set 1 holds
+// (write_composite_depth).
 struct AfterCompositeTargets {
     const vk_core::Image& hdr;  // kHdrFormat, eColorAttachmentOptimal; kept and blended into
     vk::Extent2D area;
@@ -66,6 +68,10 @@ struct AfterCompositeTargets {
 // instances (CullFrame::both_eyes_instances); the vertex shader takes the eye from the instance
 // index minus the base instance (the chunk's index) and writes that eye's layer.
 
+// Which of the forward shading's programs a ForwardPass makes: the forward passes' (the chunks,
+// the sky, the mask, the routing view), or only the transparency's (record_after_composite).
+enum class ForwardPrograms { kForward, kBlendedAfterComposite };
+
 struct ForwardConfig {
     bool velocity = false;  // write screen-space velocity (TAA)
     vk::SampleCountFlagBits samples = vk::SampleCountFlagBits::e1;  // MSAA (stereo modes)
@@ -77,6 +83,9 @@ struct ForwardConfig {
     // draw them); a scene without leaves them out.
     bool masked_chunks = false;
     bool blended_chunks = false;
+    // kBlendedAfterComposite: a pass of one view with blended_chunks, without MSAA; needs the
+    // depthClamp capability (UserError otherwise, naming it).
+    ForwardPrograms programs = ForwardPrograms::kForward;
 };
 
 // One step of a forward pass (plan::DrawStep says what each draws), under a GPU predicate or not.
@@ -101,20 +110,20 @@ class ForwardPass {
     const ForwardConfig& config() const { return config_; }
 
     // Set 0 of a view: its constants (ViewConstants; single-pass stereo: both eyes' in one
-    // buffer) and the shadow map (eShaderReadOnlyOptimal).
-    vk_core::DescriptorSet make_view_set(const vk_core::Buffer& constants, vk::ImageView shadow,
-                                         vk::Sampler shadow_sampler) const;
+    // buffer) and the shadow map (eShaderReadOnlyOptimal), written by write_view_set.
+    vk_core::DescriptorSet make_view_set() const;
+    void write_view_set(vk::DescriptorSet set, const vk_core::Buffer& constants,
+                        vk::ImageView shadow, vk::Sampler shadow_sampler) const;
     // Set 1 of the mask and routing steps: the merged depth pyramid (binding 0, eGeneral) and
     // the culling pass's per-chunk routing words (binding 1), written by write_merged_depth
     // before the first frame and whenever the pyramid is made anew.
     vk_core::DescriptorSet make_merged_depth_set() const;
-    void write_merged_depth(const vk_core::DescriptorSet& set, vk::ImageView pyramid,
-                            vk::Sampler nearest, vk::Buffer routing) const;
-    // Set 1 of record_after_composite: the eye's linear depth after the composite (sampled,
-    // eShaderReadOnlyOptimal). Needs the depth_clamp capability (UserError otherwise, naming
-    // it); a pass of one view made with blended_chunks.
-    vk_core::DescriptorSet make_composite_depth_set(vk::ImageView linear_depth,
-                                                    vk::Sampler nearest) const;
+    void write_merged_depth(vk::DescriptorSet set, vk::ImageView pyramid, vk::Sampler nearest,
+                            vk::Buffer routing) const;
+    // Set 1 of record_after_composite (made by make_merged_depth_set): the eye's linear depth
+    // after the composite (sampled, eShaderReadOnlyOptimal).
+    void write_composite_depth(vk::DescriptorSet set, vk::ImageView linear_depth,
+                               vk::Sampler nearest) const;
 
     // Expects the targets in eUndefined (their contents are replaced); leaves the colour targets
     // (velocity included) in eColorAttachmentOptimal and depth in eDepthAttachmentOptimal.
@@ -127,7 +136,7 @@ class ForwardPass {
 
     // Hybrid: the blended chunks of one eye's list, back to front, after the composite, with
     // depth clamping instead of clipping at the eye's far plane m, so a pane straddling m is
-    // drawn whole. A pass of one view (plan::StereoPass::kTwoPasses) only; expects the HDR image in
+    // drawn whole. The kBlendedAfterComposite programs only; expects the HDR image in
     // eColorAttachmentOptimal and leaves it there.
     void record_after_composite(const vk::raii::CommandBuffer& cmd,
                                 const AfterCompositeTargets& targets, vk::DescriptorSet view_set,
@@ -150,6 +159,9 @@ class ForwardPass {
     void make_chunk_pipelines();
     // The fullscreen pipelines: the sky, and in one-view passes the mask of hidden pixels.
     void make_fullscreen_pipelines();
+    // kBlendedAfterComposite's one pipeline, from make_chunk_pipelines's chunk description.
+    void make_after_composite_pipeline(const ForwardShaders& shaders,
+                                       const vk_core::GraphicsPipelineDesc& chunks);
     // The pipelines of alphaMode MASK and BLEND chunks, from make_chunk_pipelines's.
     void make_alpha_pipelines(const ForwardShaders& shaders,
                               const vk_core::GraphicsPipelineDesc& chunks,
@@ -174,7 +186,7 @@ class ForwardPass {
     vk::raii::Pipeline masked_prepass_pipeline_{nullptr};
     ChunkPipelines masked_pipelines_;
     vk::raii::Pipeline blended_pipeline_{nullptr};
-    vk::raii::Pipeline after_composite_pipeline_{nullptr};  // where the device clamps depth
+    vk::raii::Pipeline after_composite_pipeline_{nullptr};  // kBlendedAfterComposite
 };
 
 }  // namespace monoplane::passes

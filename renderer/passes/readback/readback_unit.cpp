@@ -117,7 +117,7 @@ class ReadbackRecorder final : public UnitRecorder {
 }  // namespace
 
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context&, const UnitScene&,
-                                            const UnitPasses&) {
+                                            const UnitPasses&, const UnitSettings&) {
     return std::make_unique<ReadbackRecorder>();
 }
 #endif  // MONOPLANE_UNIT_RECORDER

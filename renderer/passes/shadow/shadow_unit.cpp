@@ -136,7 +136,7 @@ class ShadowRecorder final : public UnitRecorder {
 }  // namespace
 
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene& scene,
-                                            const UnitPasses&) {
+                                            const UnitPasses&, const UnitSettings&) {
     return std::make_unique<ShadowRecorder>(ctx, scene);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

@@ -53,6 +53,9 @@ struct UnitFrameValues {
     // C's viewport in its images (eq. 8): the part of its allocation this frame drew, when
     // use_mono.
     vk::Extent2D mono_area{};
+    // C's pixels that both eyes hide, which C's forward pass leaves unwritten, are read later in
+    // this frame (C's image read back, C's SSAO): the pass clears them first.
+    bool mono_hidden_pixels_read = false;
     // World -> the shadow map's clip space this frame (fit_light_view_proj), float32 as the GPU.
     glm::mat4 light_view_proj{1.0f};
     // Homographies from C's pixels to each eye's pixels (rig::mono_pixel_to_eye_pixel, with
@@ -67,7 +70,9 @@ struct UnitScene {
     const SceneTextures* textures = nullptr;  // set 2 of the forward shaders
     ShadowCasters shadow_casters;             // the shadow map's draws
     ShadowParams shadow;                      // the shadow map's size and depth bias
-    bool masked_chunks = false;  // alphaMode MASK chunks: the alpha-tested pipelines are needed
+    vk::Sampler shadow_sampler;               // how the forward shaders compare against the map
+    bool masked_chunks = false;   // alphaMode MASK chunks: the alpha-tested pipelines are needed
+    bool blended_chunks = false;  // alphaMode BLEND chunks: the blending pipelines are needed
 };
 
 // The passes of one unit that the renderer's frames may run (those of every plan it may make),
@@ -89,7 +94,8 @@ class UnitRecording {
     virtual const plan::PlannedPass& pass() const = 0;
     virtual const UnitFrameValues& values() const = 0;
     // The image of `view`'s `role` this frame. The pass's current step must declare it: any other
-    // stops the program, naming the pass, the step and the image.
+    // stops the program, naming the pass, the step and the image. kEyes: single-pass stereo's
+    // two-layer image whose layers are both eyes' images of `role` (the step must declare both).
     virtual const vk_core::Image& image(plan::ViewId view, plan::ImageRole role) = 0;
     // Whether the pass's current step declares `view`'s image `role`: what image() hands over
     // (a recorder whose declaration chose between images asks which).
@@ -107,6 +113,9 @@ class UnitRecording {
     // the scene's tables, the frame's constants and draw order (uploaded before the frame's
     // first pass), each chunk's routing bits (only the culling writes them).
     virtual CullInputs cull_inputs() const = 0;
+    // A view's chunk draws from the culling's lists (the indirect commands and their counts),
+    // under image()'s rule for the draw lists and the predicates.
+    virtual ChunkDraws chunk_draws(CullView view) = 0;
     // The buffer of `view`'s `role` this frame (kNone: the frame's own, as the depth histogram's),
     // under the same rule.
     virtual const vk_core::Buffer& buffer(plan::ViewId view, plan::BufferRole role) = 0;

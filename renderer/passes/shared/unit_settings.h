@@ -3,6 +3,10 @@
 // member per unit that has any.
 #pragma once
 
+#include <cstdint>
+
+#include "renderer/plan/render_choices.h"
+
 namespace monoplane::passes {
 
 // The tone mapping (renderer/passes/tonemap/tonemap_unit.cpp, and the composite that tone maps):
@@ -44,11 +48,21 @@ struct SsaoParams {
     float back_check_px = 1.0f;  // reverse reprojection accepts a round trip within this distance
 };
 
+// The forward passes (renderer/passes/forward/forward_unit.cpp): what shapes their pipelines.
+struct ForwardSettings {
+    std::uint32_t msaa_samples = 1;  // MSAA's samples per pixel (1: none, and under TAA)
+    // How the eyes' forward pass draws both eyes (plan::StereoPass::kTwoPasses: a pass each).
+    plan::StereoPass stereo_pass = plan::StereoPass::kTwoPasses;
+    // The benchmark's vertex-heavy configuration (forward_vertex.glsl's rounds); 0 normally.
+    std::uint32_t vertex_work = 0;
+};
+
 struct UnitSettings {
     TonemapParams tonemap;
     TaaParams taa;
     DepthHistogramRange depth_histogram;
     SsaoParams ssao;
+    ForwardSettings forward;
 };
 
 }  // namespace monoplane::passes

@@ -240,7 +240,7 @@ class SsaoRecorder final : public UnitRecorder {
 }  // namespace
 
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
-                                            const UnitPasses&) {
+                                            const UnitPasses&, const UnitSettings&) {
     return std::make_unique<SsaoRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

@@ -139,7 +139,7 @@ class TaaRecorder final : public UnitRecorder {
 }  // namespace
 
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
-                                            const UnitPasses&) {
+                                            const UnitPasses&, const UnitSettings&) {
     return std::make_unique<TaaRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER

@@ -134,7 +134,7 @@ class TonemapRecorder final : public UnitRecorder {
 }  // namespace
 
 std::unique_ptr<UnitRecorder> make_recorder(const vk_core::Context& ctx, const UnitScene&,
-                                            const UnitPasses&) {
+                                            const UnitPasses&, const UnitSettings&) {
     return std::make_unique<TonemapRecorder>(ctx);
 }
 #endif  // MONOPLANE_UNIT_RECORDER
