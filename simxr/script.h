@@ -15,6 +15,7 @@
 #include "common/result.h"
 #include "hmd/profile.h"
 #include "rig/pose.h"
+#include "simxr/gaze.h"
 
 namespace monoplane::simxr {
 
@@ -63,6 +64,7 @@ struct Script {
     std::vector<PoseKeyframe> poses;  // ascending t; empty: the default keyframe
     HeadMotion head_motion = HeadMotion::kStill;
     std::vector<InputPress> inputs;
+    GazeScript gaze;  // [gaze], [[fixation]], [[blink]]
 
     std::int64_t frame_period_ns() const;
 };

@@ -18,10 +18,27 @@
 namespace monoplane::simxr {
 namespace {
 
-constexpr std::array<std::string_view, 13> kTopLevelKeys = {
-    "hmd",      "display_rate_hz", "missed_slot_every", "physical_device",   "interaction_profile",
-    "dump_dir", "dump_every",      "exit_after_s",      "lose_session_at_s", "lose_instance_at_s",
-    "pose",     "input",           "head_motion"};
+constexpr std::array<std::string_view, 16> kTopLevelKeys = {"hmd",
+                                                            "display_rate_hz",
+                                                            "missed_slot_every",
+                                                            "physical_device",
+                                                            "interaction_profile",
+                                                            "dump_dir",
+                                                            "dump_every",
+                                                            "exit_after_s",
+                                                            "lose_session_at_s",
+                                                            "lose_instance_at_s",
+                                                            "pose",
+                                                            "input",
+                                                            "head_motion",
+                                                            "gaze",
+                                                            "fixation",
+                                                            "blink"};
+constexpr std::array<std::string_view, 7> kGazeKeys = {
+    "tracker", "saccades_per_s", "spread_deg", "seed", "saccade_s", "blink_every_s", "blink_s"};
+constexpr std::array<std::string_view, 4> kFixationKeys = {"t", "duration", "target",
+                                                           "yaw_pitch_deg"};
+constexpr std::array<std::string_view, 2> kBlinkKeys = {"t", "duration"};
 constexpr std::array<std::string_view, 3> kPoseKeys = {"t", "position", "yaw_pitch_roll_deg"};
 constexpr std::array<std::string_view, 3> kInputKeys = {"t", "path", "duration"};
 // Above this a frame period is shorter than any display and the rate is a typo (kHz for Hz);
@@ -60,18 +77,30 @@ class Reader {
         return std::nullopt;
     }
 
-    std::optional<glm::dvec3> vec3(std::string_view key) const {
+    std::optional<bool> boolean(std::string_view key) const {
+        const toml::node* node = scope_.table.get(key);
+        if (node == nullptr) return std::nullopt;
+        if (const auto* value = node->as_boolean()) return value->get();
+        report_wrong_type(*node, scope_.qualified(key), "true or false", problems_);
+        return std::nullopt;
+    }
+
+    std::optional<glm::dvec3> vec3(std::string_view key) const { return vec<3>(key); }
+    std::optional<glm::dvec2> vec2(std::string_view key) const { return vec<2>(key); }
+
+    template <glm::length_t N>
+    std::optional<glm::vec<N, double>> vec(std::string_view key) const {
         const toml::node* node = scope_.table.get(key);
         if (node == nullptr) return std::nullopt;
         const std::string qualified = scope_.qualified(key);
         const auto* array = node->as_array();
-        if (array == nullptr || array->size() != 3) {
-            problems_.add(node->source(),
-                          toml_key_prefix(qualified) + "must be an array of 3 numbers");
+        if (array == nullptr || array->size() != N) {
+            problems_.add(node->source(), toml_key_prefix(qualified) + "must be an array of " +
+                                              std::to_string(N) + " numbers");
             return std::nullopt;
         }
-        glm::dvec3 value{0.0};
-        for (int i = 0; i < 3; ++i) {
+        glm::vec<N, double> value{0.0};
+        for (glm::length_t i = 0; i < N; ++i) {
             const auto component = number_of(*array->get(static_cast<std::size_t>(i)), qualified);
             if (!component) return std::nullopt;
             value[i] = *component;
@@ -284,6 +313,104 @@ void read_inputs(const toml::table& root, TomlProblems& problems, Script& script
     }
 }
 
+// [gaze]: the tracker and the default's rates. Rates and durations must be positive where they
+// divide or bound a time; 0 turns the default's blinks off.
+void read_gaze_settings(const toml::table& root, TomlProblems& problems, GazeScript& gaze) {
+    const toml::node* node = root.get("gaze");
+    if (node == nullptr) return;
+    const toml::table* table = node->as_table();
+    if (table == nullptr) {
+        problems.add(node->source(), toml_key_prefix("gaze") + "must be a table ([gaze])");
+        return;
+    }
+    const TomlScope scope{*table, "gaze"};
+    report_unknown_keys(scope, kGazeKeys, problems);
+    const Reader reader(scope, problems);
+    if (const auto tracker = reader.boolean("tracker")) gaze.tracker = *tracker;
+    if (const auto seed = reader.integer("seed")) gaze.seed = static_cast<std::uint64_t>(*seed);
+    struct Bounded {
+        const char* key;
+        double GazeScript::*field;
+        bool zero_allowed;
+        double max;
+        const char* range;  // as the message gives it
+    };
+    for (const Bounded& b :
+         {Bounded{"saccades_per_s", &GazeScript::saccades_per_s, false, 20.0, "(0, 20]"},
+          Bounded{"spread_deg", &GazeScript::spread_deg, true, 60.0, "[0, 60]"},
+          Bounded{"saccade_s", &GazeScript::saccade_s, false, 1.0, "(0, 1]"},
+          Bounded{"blink_every_s", &GazeScript::blink_every_s, true, 1e6, "[0, 1e6]"},
+          Bounded{"blink_s", &GazeScript::blink_s, false, 1.0, "(0, 1]"}}) {
+        const auto value = reader.number(b.key);
+        if (!value) continue;
+        const bool low = b.zero_allowed ? *value < 0.0 : *value <= 0.0;
+        if (low || *value > b.max) {
+            reader.problem(b.key, std::string("must lie in ") + b.range);
+            continue;
+        }
+        gaze.*b.field = *value;
+    }
+    if (gaze.blink_every_s > 0.0 && gaze.blink_s >= gaze.blink_every_s) {
+        reader.problem("blink_s", "must be shorter than blink_every_s");
+    }
+}
+
+// A [[fixation]] or [[blink]]'s time and duration; false when either is missing or wrong.
+bool read_interval(const Reader& reader, const TomlScope& scope, TomlProblems& problems, double& t,
+                   double& duration) {
+    if (find_required(scope, "t", "a time in seconds", problems) == nullptr) return false;
+    const auto start = reader.number("t");
+    if (!start) return false;
+    if (*start < 0.0 || *start > kMaxScriptTimeS) {
+        reader.problem("t", "must lie in [0, 1e6] s");
+        return false;
+    }
+    t = *start;
+    if (const auto length = reader.number("duration")) {
+        if (*length <= 0.0 || *length > kMaxScriptTimeS) {
+            reader.problem("duration", "must lie in (0, 1e6] s");
+            return false;
+        }
+        duration = *length;
+    }
+    return true;
+}
+
+void read_gaze(const toml::table& root, TomlProblems& problems, GazeScript& gaze) {
+    read_gaze_settings(root, problems, gaze);
+    if (const toml::array* array = table_array(root, "fixation", problems)) {
+        for (std::size_t i = 0; i < array->size(); ++i) {
+            const TomlScope scope{*array->get(i)->as_table(),
+                                  "fixation[" + std::to_string(i) + "]"};
+            report_unknown_keys(scope, kFixationKeys, problems);
+            const Reader reader(scope, problems);
+            GazeFixation fixation;
+            if (!read_interval(reader, scope, problems, fixation.t, fixation.duration)) continue;
+            if (!gaze.fixations.empty() && fixation.t <= gaze.fixations.back().t) {
+                reader.problem("t", "fixations must be in ascending order of t");
+            }
+            fixation.target = reader.vec3("target");
+            if (const auto angles = reader.vec2("yaw_pitch_deg")) {
+                if (fixation.target)
+                    reader.problem("yaw_pitch_deg", "give target or this, not both");
+                fixation.yaw_pitch_deg = *angles;
+            }
+            gaze.fixations.push_back(fixation);
+        }
+    }
+    if (const toml::array* array = table_array(root, "blink", problems)) {
+        for (std::size_t i = 0; i < array->size(); ++i) {
+            const TomlScope scope{*array->get(i)->as_table(), "blink[" + std::to_string(i) + "]"};
+            report_unknown_keys(scope, kBlinkKeys, problems);
+            const Reader reader(scope, problems);
+            GazeBlink blink;
+            if (read_interval(reader, scope, problems, blink.t, blink.duration)) {
+                gaze.blinks.push_back(blink);
+            }
+        }
+    }
+}
+
 Result<Script> default_script() {
     Script script;
     auto profile = hmd::load_hmd_profile(script.hmd_name);
@@ -314,6 +441,7 @@ Result<Script> parse_script(std::string_view toml_text, const std::filesystem::p
     read_settings(Reader(root, problems), folder, script);
     read_poses(root.table, problems, script);
     read_inputs(root.table, problems, script);
+    read_gaze(root.table, problems, script.gaze);
     if (!problems.empty()) return problems.error();
     return script;
 }
