@@ -16,8 +16,19 @@ constexpr std::string_view kTopLevelPaths[] = {"/user/hand/left", "/user/hand/ri
 // spec 11.3.2: booleans bound to a value read as pressed above a runtime-chosen threshold.
 constexpr float kPressThreshold = 0.5f;
 
-bool is_top_level_path(const std::string& path) {
+// /user/eyes_ext only where XR_EXT_eye_gaze_interaction is enabled.
+bool is_top_level_path(const Instance& instance, const std::string& path) {
+    if (instance.eye_gaze_interaction && path == kEyesUserPath) return true;
     return std::ranges::find(kTopLevelPaths, path) != std::end(kTopLevelPaths);
+}
+
+// The profile a suggestion names: a core one, or the eye gaze profile where its extension is
+// enabled; nullptr for any other (XR_ERROR_PATH_UNSUPPORTED).
+const InteractionProfile* suggestable_profile(const Instance& instance, std::string_view path) {
+    if (instance.eye_gaze_interaction && path == kEyeGazeProfilePath) {
+        return &eye_gaze_interaction_profile();
+    }
+    return find_interaction_profile(path);
 }
 
 // spec 11.2: action and action set names are one well-formed path segment.
@@ -112,6 +123,21 @@ XrResult check_active_subaction_path(const Instance& instance, const ActionSet& 
     return declared ? XR_SUCCESS : XR_ERROR_PATH_UNSUPPORTED;
 }
 
+// The suggested bindings of `profile` whose action sets the session attached, added to its own;
+// whether there were any.
+bool bind_suggested(Session& session, XrPath profile) {
+    const Instance& instance = *session.instance;
+    const auto found = instance.suggested_bindings.find(profile);
+    if (found == instance.suggested_bindings.end()) return false;
+    bool any = false;
+    for (const auto& binding : found->second) {
+        if (!is_attached_to(session, binding.first->set)) continue;
+        session.bindings.push_back(binding);
+        any = true;
+    }
+    return any;
+}
+
 // spec 11.4: the runtime chooses the interaction profile, and may change it, only in
 // xrSyncActions, and tells only running sessions. simxr's controllers are the script's profile
 // from the start, so the first sync of a running session chooses it for good: its suggested
@@ -122,14 +148,13 @@ void choose_interaction_profile(Session& session) {
     session.profile_chosen = true;
     Instance& instance = *session.instance;
     const XrPath profile = instance.paths.intern(instance.script.interaction_profile);
-    if (auto found = instance.suggested_bindings.find(profile);
-        found != instance.suggested_bindings.end()) {
-        for (const auto& binding : found->second) {
-            if (is_attached_to(session, binding.first->set)) session.bindings.push_back(binding);
-        }
+    if (bind_suggested(session, profile)) session.interaction_profile = profile;
+    // An eye tracker is plugged in from the start too: /user/eyes_ext gets the gaze profile.
+    if (instance.eye_gaze_interaction && instance.script.gaze.tracker) {
+        const XrPath gaze = instance.paths.intern(std::string(kEyeGazeProfilePath));
+        if (bind_suggested(session, gaze)) session.gaze_profile = gaze;
     }
     if (session.bindings.empty()) return;
-    session.interaction_profile = profile;
     auto event = xr_struct<XrEventDataInteractionProfileChanged>(
         XR_TYPE_EVENT_DATA_INTERACTION_PROFILE_CHANGED);
     event.session = reinterpret_cast<XrSession>(&session);
@@ -242,7 +267,7 @@ XrResult XRAPI_CALL xrCreateAction(XrActionSet set_handle, const XrActionCreateI
         const XrPath path = info->subactionPaths[i];
         const std::string* text = set->instance->paths.find(path);
         if (text == nullptr) return XR_ERROR_PATH_INVALID;
-        if (!is_top_level_path(*text) ||
+        if (!is_top_level_path(*set->instance, *text) ||
             std::ranges::find(action->subaction_paths, path) != action->subaction_paths.end()) {
             return XR_ERROR_PATH_UNSUPPORTED;
         }
@@ -277,7 +302,7 @@ XrResult XRAPI_CALL xrSuggestInteractionProfileBindings(
     // spec 11.4: an interaction profile or binding path outside the spec's allowlist is
     // XR_ERROR_PATH_UNSUPPORTED; every one inside it must be accepted, whether or not simxr
     // simulates that hardware (only the script's profile is ever bound).
-    const InteractionProfile* profile = find_interaction_profile(*profile_path);
+    const InteractionProfile* profile = suggestable_profile(*instance, *profile_path);
     if (profile == nullptr) return XR_ERROR_PATH_UNSUPPORTED;
     std::vector<std::pair<Action*, std::string>> bindings;
     for (uint32_t i = 0; i < suggested->countSuggestedBindings; ++i) {
@@ -331,8 +356,12 @@ XrResult XRAPI_CALL xrGetCurrentInteractionProfile(XrSession handle, XrPath top_
     if (!has_type(state, XR_TYPE_INTERACTION_PROFILE_STATE)) return XR_ERROR_VALIDATION_FAILURE;
     const std::string* path = session->instance->paths.find(top_level_path);
     if (path == nullptr) return XR_ERROR_PATH_INVALID;
-    if (!is_top_level_path(*path)) return XR_ERROR_PATH_UNSUPPORTED;
+    if (!is_top_level_path(*session->instance, *path)) return XR_ERROR_PATH_UNSUPPORTED;
     if (session->attached_sets.empty()) return XR_ERROR_ACTIONSET_NOT_ATTACHED;
+    if (*path == kEyesUserPath) {
+        state->interactionProfile = session->gaze_profile;
+        return XR_SUCCESS;
+    }
     // The plugged-in profile serves its own user paths only (an Xbox controller is at
     // /user/gamepad, not at the hands).
     const std::string* current = session->instance->paths.find(session->interaction_profile);
@@ -553,6 +582,9 @@ XrResult XRAPI_CALL xrGetInputSourceLocalizedName(XrSession handle,
     const std::string* current = session->instance->paths.find(session->interaction_profile);
     const InteractionProfile* profile = find_interaction_profile(
         current != nullptr ? *current : session->instance->script.interaction_profile);
+    if (session->gaze_profile != XR_NULL_PATH && path->starts_with(kEyesUserPath)) {
+        profile = &eye_gaze_interaction_profile();
+    }
     if (profile == nullptr || user_path_of(*profile, *path).empty()) {
         return fill_string(capacity, count, buffer, *path);
     }

@@ -24,6 +24,7 @@ struct Extension {
 constexpr Extension kExtensions[] = {
     {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME, XR_KHR_vulkan_enable2_SPEC_VERSION},
     {XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME, XR_KHR_composition_layer_depth_SPEC_VERSION},
+    {XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME, XR_EXT_eye_gaze_interaction_SPEC_VERSION},
 };
 
 XrResult check_system(XrInstance handle, XrSystemId system, Instance** instance) {
@@ -90,12 +91,15 @@ XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* info, XrInstanc
     // info reaches the runtime with the application's layer names still in it, so they are ignored.
     bool vulkan_enable2 = false;
     bool composition_layer_depth = false;
+    bool eye_gaze_interaction = false;
     for (uint32_t i = 0; i < info->enabledExtensionCount; ++i) {
         const std::string_view name = info->enabledExtensionNames[i];
         if (name == XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME) {
             vulkan_enable2 = true;
         } else if (name == XR_KHR_COMPOSITION_LAYER_DEPTH_EXTENSION_NAME) {
             composition_layer_depth = true;
+        } else if (name == XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME) {
+            eye_gaze_interaction = true;
         } else {
             return XR_ERROR_EXTENSION_NOT_PRESENT;
         }
@@ -112,6 +116,7 @@ XrResult XRAPI_CALL xrCreateInstance(const XrInstanceCreateInfo* info, XrInstanc
     object->script = std::move(script).value();
     object->vulkan_enable2 = vulkan_enable2;
     object->composition_layer_depth = composition_layer_depth;
+    object->eye_gaze_interaction = eye_gaze_interaction;
     *instance = register_object<XrInstance>(std::move(object));
     return XR_SUCCESS;
 }
@@ -170,6 +175,12 @@ XrResult XRAPI_CALL xrGetSystemProperties(XrInstance handle, XrSystemId system,
     properties->graphicsProperties.maxLayerCount = kMaxLayerCount;
     properties->trackingProperties.orientationTracking = XR_TRUE;
     properties->trackingProperties.positionTracking = XR_TRUE;
+    // XR_EXT_eye_gaze_interaction: whether the script's headset tracks the eyes.
+    if (auto* gaze = static_cast<XrSystemEyeGazeInteractionPropertiesEXT*>(const_cast<void*>(
+            find_in_chain(properties->next, XR_TYPE_SYSTEM_EYE_GAZE_INTERACTION_PROPERTIES_EXT)))) {
+        gaze->supportsEyeGazeInteraction =
+            instance->eye_gaze_interaction && instance->script.gaze.tracker ? XR_TRUE : XR_FALSE;
+    }
     return XR_SUCCESS;
 }
 

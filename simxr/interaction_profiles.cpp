@@ -170,6 +170,15 @@ std::span<const InteractionProfile> interaction_profiles() {
     return profiles;
 }
 
+const InteractionProfile& eye_gaze_interaction_profile() {
+    static const InteractionProfile profile{
+        std::string(kEyeGazeProfilePath),
+        "Eye Gaze Interaction",
+        {std::string(kEyesUserPath)},
+        {{std::string(kEyesUserPath) + "/input/gaze_ext/pose", ComponentKind::pose}}};
+    return profile;
+}
+
 const InteractionProfile* find_interaction_profile(std::string_view path) {
     for (const InteractionProfile& profile : interaction_profiles()) {
         if (profile.path == path) return &profile;
@@ -287,6 +296,8 @@ std::string localized_source_name(const InteractionProfile& profile, std::string
             parts.emplace_back("Left Hand");
         } else if (user == kRight) {
             parts.emplace_back("Right Hand");
+        } else if (user == kEyesUserPath) {
+            parts.emplace_back("Eyes");
         } else {
             parts.push_back(title_case(user.substr(user.rfind('/') + 1)));  // "Head", "Gamepad"
         }

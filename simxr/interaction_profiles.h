@@ -38,6 +38,12 @@ std::span<const InteractionProfile> interaction_profiles();
 // The profile with this path, or nullptr.
 const InteractionProfile* find_interaction_profile(std::string_view path);
 
+// XR_EXT_eye_gaze_interaction's profile, valid only where the application enabled the extension:
+// /user/eyes_ext with its one component, input/gaze_ext/pose.
+constexpr std::string_view kEyeGazeProfilePath = "/interaction_profiles/ext/eye_gaze_interaction";
+constexpr std::string_view kEyesUserPath = "/user/eyes_ext";
+const InteractionProfile& eye_gaze_interaction_profile();
+
 // What an action of each type reads (spec 11.4, suggested bindings: the rules differ by type).
 enum class ActionUse { boolean, scalar, vector2, pose, vibration };
 

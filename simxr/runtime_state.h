@@ -50,6 +50,7 @@ struct Instance {
     PathTable paths;
     bool vulkan_enable2 = false;           // XR_KHR_vulkan_enable2 was enabled
     bool composition_layer_depth = false;  // XR_KHR_composition_layer_depth was enabled
+    bool eye_gaze_interaction = false;     // XR_EXT_eye_gaze_interaction was enabled
     bool system_requested = false;         // xrGetSystem succeeded
     bool requirements_queried = false;     // xrGetVulkanGraphicsRequirements2KHR was called
     PFN_vkGetInstanceProcAddr vk_get_instance_proc_addr = nullptr;
@@ -128,9 +129,11 @@ struct Session {
     // Chosen by the first xrSyncActions of the running session (spec 11.4); empty and
     // XR_NULL_PATH until then.
     bool profile_chosen = false;
-    std::vector<std::pair<Action*, std::string>> bindings;  // of the script's profile
-    XrPath interaction_profile = XR_NULL_PATH;
-    std::vector<ActionSet*> synced_sets;  // active in the latest xrSyncActions while focused
+    // Of the script's controller profile and, with an eye tracker, of the eye gaze profile.
+    std::vector<std::pair<Action*, std::string>> bindings;
+    XrPath interaction_profile = XR_NULL_PATH;  // the controllers'
+    XrPath gaze_profile = XR_NULL_PATH;         // /user/eyes_ext's, once bound
+    std::vector<ActionSet*> synced_sets;        // active in the latest xrSyncActions while focused
     XrTime sync_time = 0;
     std::map<std::string, float> values, previous_values;  // component path -> value
     std::map<std::string, XrTime> last_change;

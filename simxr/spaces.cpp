@@ -7,9 +7,11 @@
 #include <optional>
 #include <string_view>
 
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/quaternion.hpp>
 
 #include "simxr/entry_points.h"
+#include "simxr/interaction_profiles.h"
 #include "simxr/runtime_state.h"
 
 namespace monoplane::simxr {
@@ -54,6 +56,34 @@ std::optional<rig::Pose> hand_in_head(std::string_view component) {
     return std::nullopt;
 }
 
+// XR_EXT_eye_gaze_interaction's gaze pose in the head's frame at `time`: from the midpoint
+// between the eyes (the head's origin), its -z along the script's gaze; nullopt during a blink
+// (the eye tracker has no sample: the space is not located).
+std::optional<rig::Pose> gaze_in_head(const Session& session, XrTime time) {
+    const Script& script = session.instance->script;
+    const double t = session.script_time(time);
+    const GazeSample sample = gaze_at(script.gaze, t, head_pose_at(script, t));
+    if (!sample.valid) return std::nullopt;
+    const glm::dvec3 ahead(0.0, 0.0, -1.0);
+    const glm::dvec3 axis = glm::cross(ahead, sample.direction);
+    const double sine = glm::length(axis);
+    glm::dquat orientation(1.0, 0.0, 0.0, 0.0);
+    if (sine > 1e-12) {
+        orientation =
+            glm::angleAxis(std::atan2(sine, glm::dot(ahead, sample.direction)), axis / sine);
+    } else if (sample.direction.z > 0.0) {
+        orientation = glm::angleAxis(glm::pi<double>(), glm::dvec3(0.0, 1.0, 0.0));
+    }
+    return rig::Pose{glm::dvec3(0.0), orientation};
+}
+
+// The pose a bound pose component has in the head's frame: a hand's, or the eyes' gaze.
+std::optional<rig::Pose> component_in_head(const Session& session, std::string_view component,
+                                           XrTime time) {
+    if (component.starts_with(kEyesUserPath)) return gaze_in_head(session, time);
+    return hand_in_head(component);
+}
+
 // The pose source an action space follows (spec 11.5.1: a single one, the first bound that
 // matches its subaction path), or nullptr while it is unlocatable (spec 7.2.1: only while its
 // action set was active in the latest xrSyncActions).
@@ -78,7 +108,7 @@ std::optional<rig::Pose> space_in_local(const Session& session, const Space& spa
     if (space.action_space) {
         const std::string* source = pose_source(session, space);
         const std::optional<rig::Pose> hand =
-            source == nullptr ? std::nullopt : hand_in_head(*source);
+            source == nullptr ? std::nullopt : component_in_head(session, *source, time);
         if (!hand) return std::nullopt;
         return compose(compose(head_at(session, time), *hand), offset);
     }
@@ -205,6 +235,11 @@ XrResult XRAPI_CALL xrLocateSpace(XrSpace space_handle, XrSpace base_handle, XrT
     const Session& session = *space->session;
     const std::optional<rig::Pose> space_pose = space_in_local(session, *space, time);
     const std::optional<rig::Pose> base_pose = space_in_local(session, *base, time);
+    // XR_EXT_eye_gaze_interaction: when the gaze sample was taken (now, or none).
+    if (auto* sample_time = static_cast<XrEyeGazeSampleTimeEXT*>(
+            const_cast<void*>(find_in_chain(location->next, XR_TYPE_EYE_GAZE_SAMPLE_TIME_EXT)))) {
+        sample_time->time = space_pose && base_pose ? time : 0;
+    }
     if (space_pose && base_pose) {
         location->pose = to_xr(compose(inverse(*base_pose), *space_pose));
         location->locationFlags = kFullyTracked;

@@ -119,8 +119,10 @@ void SimxrTest::start(const std::string& script_text, FixtureOptions options) {
     std::filesystem::remove_all(dir_);
     validation_messages().clear();
     xr_validation_messages().clear();
-    ASSERT_EQ(create_instance_with_script(dir_, script_text, {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME},
-                                          &instance_, options.xr_validation, &xr_messenger_),
+    std::vector<const char*> xr_extensions = {XR_KHR_VULKAN_ENABLE2_EXTENSION_NAME};
+    if (options.eye_gaze) xr_extensions.push_back(XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME);
+    ASSERT_EQ(create_instance_with_script(dir_, script_text, xr_extensions, &instance_,
+                                          options.xr_validation, &xr_messenger_),
               XR_SUCCESS);
     load(instance_, "xrGetVulkanGraphicsRequirements2KHR", xrGetVulkanGraphicsRequirements2KHR);
     load(instance_, "xrCreateVulkanInstanceKHR", xrCreateVulkanInstanceKHR);

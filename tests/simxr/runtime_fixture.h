@@ -40,6 +40,7 @@ struct FixtureOptions {
     // Off only in tests of simxr's own answers to invalid usage: the OpenXR validation layer
     // would stop those calls before the runtime sees them.
     bool xr_validation = true;
+    bool eye_gaze = false;  // enable XR_EXT_eye_gaze_interaction
 };
 
 // The OpenXR validation layer's messages since the last start() (or clear).
