@@ -26,8 +26,9 @@ Result<void> FrameQueue::write(const sqlite::Connection& db) const {
         db,
         "INSERT OR REPLACE INTO frames (session_id, frame, trial_index, shown, display_time_ns, "
         "cpu_ms, gpu_ms, missed, head_x, head_y, head_z, head_qw, head_qx, head_qy, head_qz, "
-        "pipelines_created, driver_compiles) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        "pipelines_created, driver_compiles, gaze_valid, gaze_dir_x, gaze_dir_y, gaze_dir_z, "
+        "gaze_error_arcmin) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     MONOPLANE_TRY(insert);
     for (const Row& row : rows_) {
         const FrameRecord& f = row.frame;
@@ -40,6 +41,14 @@ Result<void> FrameQueue::write(const sqlite::Connection& db) const {
                    f.head ? std::optional<double>((*f.head)[i]) : std::nullopt);
         }
         s.bind(16, f.pipelines_created).bind(17, f.driver_compiles);
+        s.bind(18, f.gaze ? std::optional<std::int64_t>(f.gaze->valid ? 1 : 0) : std::nullopt);
+        for (std::size_t i = 0; i < 3; ++i) {
+            // A direction only where the sample was valid.
+            s.bind(19 + static_cast<int>(i), f.gaze && f.gaze->valid
+                                                 ? std::optional<double>(f.gaze->direction[i])
+                                                 : std::nullopt);
+        }
+        s.bind(22, f.gaze_error_arcmin);
         const std::string what = "logging frame " + std::to_string(f.frame) + " of session " +
                                  std::to_string(row.session_id);
         MONOPLANE_TRY(s.run(what));
@@ -78,7 +87,8 @@ Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,
         db,
         "SELECT frame, trial_index, shown, display_time_ns, cpu_ms, gpu_ms, missed, head_x, "
         "head_y, head_z, head_qw, head_qx, head_qy, head_qz, mono_plane, pipelines_created, "
-        "driver_compiles FROM frames WHERE "
+        "driver_compiles, gaze_valid, gaze_dir_x, gaze_dir_y, gaze_dir_z, gaze_error_arcmin "
+        "FROM frames WHERE "
         "session_id = ? "
         "ORDER BY frame");
     MONOPLANE_TRY(stmt);
@@ -105,6 +115,17 @@ Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,
         if (!s.is_null(14)) f.mono_plane = s.real(14);
         if (!s.is_null(15)) f.pipelines_created = s.int64(15);
         if (!s.is_null(16)) f.driver_compiles = s.int64(16);
+        if (!s.is_null(17)) {
+            GazeRecord gaze;
+            gaze.valid = s.int64(17) != 0;
+            if (gaze.valid && !s.is_null(18)) {
+                for (int i = 0; i < 3; ++i) {
+                    gaze.direction[static_cast<std::size_t>(i)] = s.real(18 + i);
+                }
+            }
+            f.gaze = gaze;
+        }
+        if (!s.is_null(21)) f.gaze_error_arcmin = s.real(21);
         frames.push_back(std::move(f));
     }
     return frames;

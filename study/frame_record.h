@@ -8,6 +8,14 @@
 
 namespace monoplane::study {
 
+// The eye tracker's sample for a frame's display time (XR_EXT_eye_gaze_interaction): whether
+// it was valid (the runtime located the gaze, tracked), and the gaze direction, a unit vector in
+// the head's space (-z ahead, as the head pose's frame), meaningful only when valid.
+struct GazeRecord {
+    bool valid = false;
+    std::array<double, 3> direction{0.0, 0.0, -1.0};
+};
+
 // One displayed frame of a headset session: the frame and head log.
 struct FrameRecord {
     std::int64_t frame = 0;          // the runtime's frame index (HeadsetFrame::index)
@@ -36,6 +44,11 @@ struct FrameRecord {
     // were logged.
     std::optional<std::int64_t> pipelines_created;
     std::optional<std::int64_t> driver_compiles;
+    // [gaze] record on a runtime that tracks the eyes: the frame's gaze sample; none where gaze
+    // was not recorded (not asked, no eye tracker, sessions before gaze was logged).
+    std::optional<GazeRecord> gaze;
+    // Hybrid's angular error at the gaze point, arcmin; none where it was not derived.
+    std::optional<double> gaze_error_arcmin;
 };
 
 }  // namespace monoplane::study

@@ -33,10 +33,10 @@
 namespace monoplane::study {
 namespace {
 
-constexpr std::array<std::string_view, 27> kTopLevelKeys = {
+constexpr std::array<std::string_view, 28> kTopLevelKeys = {
     "name", "scenes", "mono_planes", "alternatives", "order", "first_scene", "require_both_viewed",
     "practice_trials", "near", "far", "questionnaire", "render", "missed_frame_threshold", "auto",
-    "procedure", "staircase", "responses",
+    "procedure", "staircase", "responses", "gaze",
     // A study day (protocol_study_day_parse.h).
     "sessions", "repetitions", "blocking", "text_height_deg", "instructions", "ready", "breaks",
     "end", "variables", "text"};
@@ -524,6 +524,7 @@ Result<Protocol> parse(std::string_view toml_text, std::string_view source_name,
                     protocol.auto_plane, problems);
     read_study_day(root, protocol.procedure, protocol.day, problems);  // after the procedure
     read_responses(root, protocol.responses, problems);
+    read_gaze(root, protocol.gaze, problems);
     // Only for a protocol whose scenes and distances all read: the count is the session's.
     if (problems.empty()) {
         check_break_interval(root, protocol.day, protocol.trials_per_session(), problems);

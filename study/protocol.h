@@ -13,6 +13,7 @@
 
 #include "common/result.h"
 #include "study/protocol_auto.h"
+#include "study/protocol_gaze.h"
 #include "study/protocol_responses.h"
 #include "study/protocol_staircase.h"
 #include "study/protocol_study_day.h"
@@ -87,6 +88,8 @@ struct Protocol {
     StudyDaySettings day;
     // [responses]: answers from keys, besides the controller (study/protocol_responses.h).
     ResponseSettings responses;
+    // [gaze]: eye gaze in the frame log (study/protocol_gaze.h).
+    GazeSettings gaze;
     std::string source;           // file path or "<text>"
     std::string text;             // the file's text, stored with every session
     std::uint64_t text_hash = 0;  // FNV-1a 64 of text: identifies the protocol version

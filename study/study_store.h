@@ -170,7 +170,7 @@ class StudyStore final : public SessionLog {
     // Opened with open_read_only.
     bool read_only() const;
 
-    static constexpr int kSchemaVersion = 9;
+    static constexpr int kSchemaVersion = 10;
 
     // The file this store was opened from (session holds lie beside it).
     const std::filesystem::path& path() const;

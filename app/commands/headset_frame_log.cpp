@@ -58,6 +58,10 @@ void HeadsetFrameLog::displayed(const headset::HeadsetFrame& frame, const study:
             std::array<double, 7>{p.position.x,    p.position.y,    p.position.z,   p.orientation.w,
                                   p.orientation.x, p.orientation.y, p.orientation.z};
     }
+    if (frame.gaze) {
+        const glm::dvec3& d = frame.gaze->direction;
+        row.gaze = study::GazeRecord{frame.gaze->valid, {d.x, d.y, d.z}};
+    }
     count_builds(row);
     store_.queue_frame(session_id_, row);
     if (renderer) awaiting_gpu_[renderer].push_back(frame.index);

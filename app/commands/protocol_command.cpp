@@ -140,6 +140,7 @@ void run_check(const std::string& file) {
         load_imported_scenes(protocol.scene_files, protocol.source).value_or_throw();
     print_summary(protocol);
     print_responses(protocol);
+    std::cout << "  eye gaze:      " << study::describe_gaze(protocol.gaze) << "\n";
     print_imported(imported);
 }
 

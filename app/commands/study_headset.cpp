@@ -40,9 +40,10 @@ bool want_window(const HeadsetStudyOptions& options, vk_core::ContextOptions& co
 // The runtime `options.headset` names (simxr, written a script, for simulated) with the Vulkan
 // device it makes from `context_options`.
 headset::HeadsetDevice open_headset(const HeadsetStudyOptions& options, const GlobalOptions& global,
-                                    const vk_core::ContextOptions& context_options) {
+                                    const vk_core::ContextOptions& context_options, bool eye_gaze) {
     RuntimeSelection selection(options);
-    auto created = headset::OpenXrHeadset::create(global.validation, options.layer_depth != "off");
+    auto created =
+        headset::OpenXrHeadset::create(global.validation, options.layer_depth != "off", eye_gaze);
     // simxr has read its script (in xrCreateInstance): the environment goes back as it was, so
     // the launcher's next session reaches the runtime it chooses.
     selection.instance_created();
@@ -74,8 +75,15 @@ study::SessionStatus run_headset_session(
     }
     // OpenXR goes before Vulkan on every way out (headset_device.h); what renders is declared
     // after the device, so it goes before both.
-    const headset::HeadsetDevice device = open_headset(options, global, context_options);
+    const headset::HeadsetDevice device =
+        open_headset(options, global, context_options, protocol.gaze.record);
     headset::OpenXrHeadset& headset = device.headset();
+    // [gaze] record on a runtime without an eye tracker: said now, and noted with the session.
+    const bool gaze_missing = protocol.gaze.record && !headset.tracks_eye_gaze();
+    const std::string no_gaze = "no eye gaze on this runtime (" + headset.runtime_name() +
+                                "): the protocol asks for gaze ([gaze] record), none is recorded";
+    if (gaze_missing) std::cerr << no_gaze << "\n";
+    if (protocol.gaze.record && !gaze_missing) std::cerr << "eye gaze: recorded per frame\n";
     const vk_core::Context& ctx = device.vulkan();
     std::cerr << "device: " << ctx.device_info().name << "\n";
     headset.create_session(ctx, options.resolution_scale).value_or_throw();
@@ -86,6 +94,7 @@ study::SessionStatus run_headset_session(
     if (experimenter) experimenter->set_response_keys(window_bindings(responses));
 
     const std::int64_t session_id = begin(headset.runtime_name(), ctx.device_info().name);
+    if (gaze_missing) store.add_session_note(session_id, no_gaze).value_or_throw();
     // Sessions of schema version 1 recorded no detail: they rendered at the default, low.
     study::RenderSettings render = store.session(session_id).value_or_throw().render;
     if (render.detail.empty()) render.detail = "low";

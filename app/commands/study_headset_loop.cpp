@@ -112,6 +112,11 @@ void HeadsetLoop::frame() {
     if (frame.views_valid) tracked = anchor_.relative(located.head);
     const rig::Pose head = tracked.value_or(rig::Pose{});
     handle_inputs(now);
+    // The gaze at the frame's display time, after handle_inputs synced the gaze action.
+    if (headset_.tracks_eye_gaze()) {
+        frame.gaze =
+            unless_lost(headset_.locate_gaze(frame.display_time_ns)).value_or(std::nullopt);
+    }
     const study::LiveScreen screen = live_->screen();
     const Rendered rendered =
         frame.should_render ? render(frame, located, screen, head) : Rendered{};

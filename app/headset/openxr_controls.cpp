@@ -7,6 +7,9 @@
 #include <utility>
 #include <vector>
 
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+
 #include "app/headset/openxr_headset_impl.h"
 
 namespace monoplane::headset {
@@ -90,10 +93,68 @@ Result<void> OpenXrHeadset::Impl::create_actions() {
                       << result_text(instance, result) << ")\n";
         }
     }
+    if (eye_gaze) MONOPLANE_TRY(create_gaze_action());
     XrSessionActionSetsAttachInfo attach{XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO};
     attach.countActionSets = 1;
     attach.actionSets = &action_set;
-    return check("xrAttachSessionActionSets", xrAttachSessionActionSets(session, &attach));
+    MONOPLANE_TRY(check("xrAttachSessionActionSets", xrAttachSessionActionSets(session, &attach)));
+    if (!eye_gaze) return Ok{};
+    // The gaze located in the VIEW space: a direction in the head's frame, whatever the head.
+    XrActionSpaceCreateInfo gaze_info{XR_TYPE_ACTION_SPACE_CREATE_INFO};
+    gaze_info.action = gaze_action;
+    gaze_info.poseInActionSpace.orientation.w = 1.0f;
+    MONOPLANE_TRY(
+        check("xrCreateActionSpace", xrCreateActionSpace(session, &gaze_info, &gaze_space)));
+    XrReferenceSpaceCreateInfo view_info{XR_TYPE_REFERENCE_SPACE_CREATE_INFO};
+    view_info.referenceSpaceType = XR_REFERENCE_SPACE_TYPE_VIEW;
+    view_info.poseInReferenceSpace.orientation.w = 1.0f;
+    return check("xrCreateReferenceSpace", xrCreateReferenceSpace(session, &view_info, &view));
+}
+
+// XR_EXT_eye_gaze_interaction: a pose action in the study's set, bound to the gaze (created once
+// per instance, like the set; only the spaces are per session).
+Result<void> OpenXrHeadset::Impl::create_gaze_action() {
+    if (gaze_action == XR_NULL_HANDLE) {
+        XrActionCreateInfo info{XR_TYPE_ACTION_CREATE_INFO};
+        info.actionType = XR_ACTION_TYPE_POSE_INPUT;
+        std::strcpy(info.actionName, "gaze");
+        std::strcpy(info.localizedActionName, "Where the participant looks");
+        MONOPLANE_TRY(check("xrCreateAction", xrCreateAction(action_set, &info, &gaze_action)));
+    }
+    XrActionSuggestedBinding binding{gaze_action, XR_NULL_PATH};
+    MONOPLANE_TRY(
+        check("xrStringToPath",
+              xrStringToPath(instance, "/user/eyes_ext/input/gaze_ext/pose", &binding.binding)));
+    XrInteractionProfileSuggestedBinding suggestion{XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING};
+    MONOPLANE_TRY(check("xrStringToPath",
+                        xrStringToPath(instance, "/interaction_profiles/ext/eye_gaze_interaction",
+                                       &suggestion.interactionProfile)));
+    suggestion.countSuggestedBindings = 1;
+    suggestion.suggestedBindings = &binding;
+    return check("xrSuggestInteractionProfileBindings",
+                 xrSuggestInteractionProfileBindings(instance, &suggestion));
+}
+
+bool OpenXrHeadset::tracks_eye_gaze() const {
+    return impl_->eye_gaze;
+}
+
+Result<std::optional<GazeSample>> OpenXrHeadset::locate_gaze(std::int64_t display_time_ns) {
+    Impl& x = *impl_;
+    if (!x.eye_gaze || x.gaze_space == XR_NULL_HANDLE) return std::optional<GazeSample>();
+    XrSpaceLocation location{XR_TYPE_SPACE_LOCATION};
+    MONOPLANE_TRY(x.check("xrLocateSpace (gaze)",
+                          xrLocateSpace(x.gaze_space, x.view, display_time_ns, &location)));
+    constexpr XrSpaceLocationFlags kTracked =
+        XR_SPACE_LOCATION_ORIENTATION_VALID_BIT | XR_SPACE_LOCATION_ORIENTATION_TRACKED_BIT;
+    GazeSample sample;
+    sample.valid = (location.locationFlags & kTracked) == kTracked;
+    if (sample.valid) {
+        const XrQuaternionf& q = location.pose.orientation;
+        const glm::dquat orientation(q.w, q.x, q.y, q.z);
+        sample.direction = glm::normalize(orientation * glm::dvec3(0.0, 0.0, -1.0));
+    }
+    return std::optional<GazeSample>(sample);
 }
 
 Result<std::vector<ControlPress>> OpenXrHeadset::sync_controls() {

@@ -82,7 +82,8 @@ Result<void> OpenXrHeadset::Impl::load_vulkan_functions() {
     return Ok{};
 }
 
-Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bool layer_depth) {
+Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bool layer_depth,
+                                                             bool eye_gaze) {
     auto impl = std::make_unique<Impl>();
     Result<std::vector<XrExtensionProperties>> extensions = runtime_extensions();
     MONOPLANE_TRY(extensions);
@@ -101,6 +102,10 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bo
     // Optional: without it an answer key's time is that of the frame which read it.
     const bool timespec = offers(*extensions, XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME);
     if (timespec) enabled.push_back(XR_KHR_CONVERT_TIMESPEC_TIME_EXTENSION_NAME);
+    // Asked for only: gaze is personal data, recorded where the protocol wants it.
+    const bool gaze_extension =
+        eye_gaze && offers(*extensions, XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME);
+    if (gaze_extension) enabled.push_back(XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME);
     for (const char* name : impl->validation.extensions()) enabled.push_back(name);
     MONOPLANE_TRY(impl->create_instance(enabled));
 
@@ -118,7 +123,11 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bo
                      "' has no headset (" + why + "): connect and switch on the headset"};
     }
     XrSystemProperties system_properties{XR_TYPE_SYSTEM_PROPERTIES};
+    XrSystemEyeGazeInteractionPropertiesEXT gaze_properties{
+        XR_TYPE_SYSTEM_EYE_GAZE_INTERACTION_PROPERTIES_EXT};
+    if (gaze_extension) system_properties.next = &gaze_properties;
     xrGetSystemProperties(impl->instance, impl->system, &system_properties);
+    impl->eye_gaze = gaze_extension && gaze_properties.supportsEyeGazeInteraction == XR_TRUE;
     MONOPLANE_TRY(impl->load_vulkan_functions());
     if (timespec && XR_FAILED(xrGetInstanceProcAddr(
                         impl->instance, "xrConvertTimespecTimeToTimeKHR",

@@ -44,6 +44,15 @@ struct EyeView {
     rig::Tangents tangents;  // tan of XrFovf's angles: the calibrated, asymmetric frustum
 };
 
+// The eye tracker's sample for a frame's display time (XR_EXT_eye_gaze_interaction's gaze pose,
+// located in the VIEW space): valid when the runtime tracked the gaze then (orientation valid
+// and tracked); direction: a unit vector in the head's space (-z ahead), from the midpoint
+// between the eyes, meaningful only when valid.
+struct GazeSample {
+    bool valid = false;
+    glm::dvec3 direction{0.0, 0.0, -1.0};
+};
+
 struct HeadsetFrame {
     std::int64_t index = 0;              // 0-based count of xrWaitFrame calls in this session
     std::int64_t display_time_ns = 0;    // predicted display time (XrTime, runtime's clock)
@@ -51,6 +60,9 @@ struct HeadsetFrame {
     bool should_render = false;
     bool views_valid = false;  // orientation and position tracked
     std::array<EyeView, 2> views;
+    // With eye gaze (create's eye_gaze, a runtime that tracks the eyes): the frame's sample,
+    // once locate_gaze filled it; none otherwise.
+    std::optional<GazeSample> gaze;
 };
 
 enum class Control { Switch, Confirm, Pause };
@@ -75,13 +87,22 @@ class OpenXrHeadset {
     // the OpenXR core validation layer watches every call (app/headset/xr_validation.h); it is
     // an error if it is not installed. With `layer_depth`, XR_KHR_composition_layer_depth is
     // enabled when the runtime offers it (the eyes' depth is then submitted with their colour).
+    // With `eye_gaze`, XR_EXT_eye_gaze_interaction is enabled when the runtime offers it, and
+    // the session binds the gaze pose if the system tracks the eyes (tracks_eye_gaze).
     static Result<std::unique_ptr<OpenXrHeadset>> create(bool validation = false,
-                                                         bool layer_depth = true);
+                                                         bool layer_depth = true,
+                                                         bool eye_gaze = false);
     ~OpenXrHeadset();
     OpenXrHeadset(const OpenXrHeadset&) = delete;
     OpenXrHeadset& operator=(const OpenXrHeadset&) = delete;
 
     const std::string& runtime_name() const { return runtime_name_; }
+    // Whether eye gaze was asked for and the runtime offers it with a system that tracks the
+    // eyes: then each session binds the gaze and locate_gaze samples it.
+    bool tracks_eye_gaze() const;
+    // The gaze at a frame's display time (the runtime's XrTime), after the frame's
+    // sync_controls (which syncs the gaze action too); none without eye gaze.
+    Result<std::optional<GazeSample>> locate_gaze(std::int64_t display_time_ns);
     const std::string& system_name() const { return system_name_; }
     // What the OpenXR validation layer reported (nothing unless created with validation).
     const vk_core::ValidationMessages& validation_messages() const;

@@ -59,6 +59,13 @@ struct OpenXrHeadset::Impl {
     XrSpace local = XR_NULL_HANDLE;
     XrActionSet action_set = XR_NULL_HANDLE;
     std::array<XrAction, 3> actions{};  // indexed by Control
+    // XR_EXT_eye_gaze_interaction: enabled, and the system tracks the eyes (OpenXrHeadset::
+    // tracks_eye_gaze); then the gaze pose action, its space and the VIEW space it is located in.
+    bool eye_gaze = false;
+    XrAction gaze_action = XR_NULL_HANDLE;
+    XrSpace gaze_space = XR_NULL_HANDLE;
+    XrSpace view = XR_NULL_HANDLE;
+    Result<void> create_gaze_action();
     struct Swapchain {
         XrSwapchain handle = XR_NULL_HANDLE;
         std::vector<XrSwapchainImageVulkan2KHR> images;

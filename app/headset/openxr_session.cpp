@@ -137,8 +137,10 @@ void OpenXrHeadset::destroy_session() {
             swapchain = {};
         }
     }
-    if (x.local != XR_NULL_HANDLE) xrDestroySpace(x.local);
-    x.local = XR_NULL_HANDLE;
+    for (XrSpace* space : {&x.local, &x.gaze_space, &x.view}) {
+        if (*space != XR_NULL_HANDLE) xrDestroySpace(*space);
+        *space = XR_NULL_HANDLE;
+    }
     if (x.session != XR_NULL_HANDLE) {
         // A lost session cannot be ended, only destroyed (spec: XR_ERROR_SESSION_LOST).
         if (running_ && !x.lost) xrEndSession(x.session);

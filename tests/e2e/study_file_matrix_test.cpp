@@ -111,7 +111,7 @@ std::vector<Row> rows() {
          with(usable(), {{"run", "done (migrated; FILE.schema7.bak kept)"},
                          {"resume", "done (migrated; FILE.schema7.bak kept)"},
                          {"note", "done (migrated; FILE.schema7.bak kept)"}})},
-        {"newer schema", "schema version 10",
+        {"newer schema", "schema version 11",
          with(all("refused: newer than this build of monoplane knows"),
               {{"protocol check", "refused: not a protocol"}})},
         {"live session", "k9's session 1 held by a running process",
@@ -204,7 +204,7 @@ std::vector<std::string> make_state(const std::string& state, const fs::path& ba
         make_version7(base, db);
     } else if (state == "newer schema") {
         copy_base();
-        sql(db, "PRAGMA user_version = 10");
+        sql(db, "PRAGMA user_version = 11");
     } else if (state == "live session" || state == "interrupted") {
         copy_base();
         sql(db, "UPDATE sessions SET status = 'running', ended_utc = NULL WHERE id = 1");
@@ -477,7 +477,7 @@ TEST_F(StudyFileMatrix, MigrateKeepsTheOriginalAndLeavesACurrentFileAlone) {
     std::string out;
     ASSERT_EQ(monoplane({"study", "migrate", "--db", db.string()}, &out, false), 0) << out;
     EXPECT_NE(out.find(db.string() +
-                       ": migrated from schema version 7 to 9; the original is "
+                       ": migrated from schema version 7 to 10; the original is "
                        "kept as " +
                        db.string() + ".schema7.bak"),
               std::string::npos)
@@ -492,11 +492,11 @@ TEST_F(StudyFileMatrix, MigrateKeepsTheOriginalAndLeavesACurrentFileAlone) {
         sqlite3_close_v2(raw);
         return v;
     };
-    EXPECT_EQ(version(db), 9);
+    EXPECT_EQ(version(db), 10);
     EXPECT_EQ(version(db.string() + ".schema7.bak"), 7);
     const auto migrated = fingerprint(dir);
     ASSERT_EQ(monoplane({"study", "migrate", "--db", db.string()}, &out, false), 0) << out;
-    EXPECT_NE(out.find("schema version 9, already this build's; unchanged"), std::string::npos)
+    EXPECT_NE(out.find("schema version 10, already this build's; unchanged"), std::string::npos)
         << out;
     EXPECT_EQ(fingerprint(dir), migrated);
     const fs::path empty = dir / "empty.sqlite";

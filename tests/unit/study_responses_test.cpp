@@ -71,6 +71,23 @@ TEST(ResponseKeys, AMisspeltNameSuggestsTheKey) {
     EXPECT_EQ(closest_response_key("Enter"), "");  // nothing near: no guess
 }
 
+// [gaze] (study/protocol_gaze.h): off unless asked; a wrong value or key is named.
+TEST(ProtocolGaze, GazeIsRecordedOnlyWhenTheProtocolAsks) {
+    const Result<Protocol> without = parse("");
+    ASSERT_TRUE(without.ok()) << without.error().message;
+    EXPECT_FALSE(without->gaze.record);
+    EXPECT_EQ(describe_gaze(without->gaze), "not recorded");
+    const Result<Protocol> with = parse("[gaze]\nrecord = true\n");
+    ASSERT_TRUE(with.ok()) << with.error().message;
+    EXPECT_TRUE(with->gaze.record);
+    EXPECT_NE(describe_gaze(with->gaze).find("XR_EXT_eye_gaze_interaction"), std::string::npos);
+    const std::string wrong = problems("[gaze]\nrecord = \"yes\"\neyes = 2\n");
+    EXPECT_NE(wrong.find("gaze.record"), std::string::npos) << wrong;
+    EXPECT_NE(wrong.find("a boolean"), std::string::npos) << wrong;
+    EXPECT_NE(wrong.find("gaze.eyes"), std::string::npos) << wrong;
+    EXPECT_NE(problems("gaze = true\n").find("a table"), std::string::npos);
+}
+
 TEST(ProtocolResponses, WithoutTheTableNoKeysAnswer) {
     const Result<Protocol> protocol = parse("");
     ASSERT_TRUE(protocol) << protocol.error().message;

@@ -178,10 +178,11 @@ TEST_F(StudyStoreTest, UsesWalAndRecordsTheSchemaVersion) {
     RawDb raw(db_);
     EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
     EXPECT_EQ(raw.integer("PRAGMA user_version"), StudyStore::kSchemaVersion);
-    EXPECT_EQ(StudyStore::kSchemaVersion, 9);
+    EXPECT_EQ(StudyStore::kSchemaVersion, 10);
     EXPECT_EQ(raw.integer("PRAGMA application_id"), 0x4D505354);
     // Version 2 added frames, version 3 scene_files and session_notes, version 5 planned_trials,
-    // version 7 participant_variables, version 8 session_runs, version 9 presses.
+    // version 7 participant_variables, version 8 session_runs, version 9 presses (version 10
+    // added columns only).
     EXPECT_EQ(raw.integer("SELECT count(*) FROM sqlite_schema WHERE type = 'table'"), 12);
 }
 
@@ -444,11 +445,11 @@ TEST_F(StudyStoreTest, RefusesANewerSchemaWithoutTouchingIt) {
     ASSERT_FALSE(store.ok());
     const std::string& message = store.error().message;
     EXPECT_TRUE(
-        contains(message, "schema version 10, newer than this build of monoplane knows (9)"))
+        contains(message, "schema version 11, newer than this build of monoplane knows (10)"))
         << message;
     EXPECT_TRUE(contains(message, db_.string())) << message;
     RawDb raw(db_);
-    EXPECT_EQ(raw.integer("PRAGMA user_version"), 10);
+    EXPECT_EQ(raw.integer("PRAGMA user_version"), 11);
     EXPECT_TRUE(fs::exists(db_));
 }
 
@@ -689,6 +690,38 @@ TEST_F(StudyStoreTest, TheFrameLogKeepsWhatEachFrameBuilt) {
     negative.driver_compiles = -1;
     store->queue_frame(id, negative);
     EXPECT_FALSE(store->flush_frames().ok());
+}
+
+// Schema 10: the eye tracker's sample per frame where gaze was recorded. A valid sample keeps its
+// direction; an invalid one (a blink) has none; a frame without gaze is NULL throughout.
+TEST_F(StudyStoreTest, TheFrameLogKeepsTheGazeSampleOfEachFrame) {
+    auto store = open_store();
+    const std::int64_t id = begin(*store, "P01");
+    FrameRecord looking = make_frame(0, 0);
+    looking.gaze = GazeRecord{true, {0.24253562503633297, 0.0, -0.9701425001453319}};
+    FrameRecord blinking = make_frame(1, 0);
+    blinking.gaze = GazeRecord{false, {0.5, 0.5, 0.5}};  // what a blink's pose said: not kept
+    const FrameRecord unrecorded = make_frame(2, 0);
+    for (const FrameRecord& f : {looking, blinking, unrecorded}) store->queue_frame(id, f);
+    ASSERT_TRUE(store->flush_frames().ok());
+    RawDb raw(db_);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE gaze_valid = 1"), 1);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE gaze_valid = 0 AND gaze_dir_x IS "
+                          "NULL AND gaze_dir_y IS NULL AND gaze_dir_z IS NULL"),
+              1);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE gaze_valid IS NULL AND "
+                          "gaze_error_arcmin IS NULL"),
+              1);
+    const Result<std::vector<FrameRecord>> frames = store->frames(id);
+    ASSERT_TRUE(frames.ok()) << frames.error().message;
+    ASSERT_EQ(frames->size(), 3u);
+    ASSERT_TRUE((*frames)[0].gaze);
+    EXPECT_TRUE((*frames)[0].gaze->valid);
+    EXPECT_EQ((*frames)[0].gaze->direction, looking.gaze->direction);
+    ASSERT_TRUE((*frames)[1].gaze);
+    EXPECT_FALSE((*frames)[1].gaze->valid);
+    EXPECT_FALSE((*frames)[2].gaze);
+    EXPECT_FALSE((*frames)[2].gaze_error_arcmin);
 }
 
 TEST_F(StudyStoreTest, AResumedRunsFramesContinueAfterEveryNumberUsed) {
