@@ -1,11 +1,8 @@
 // ModeRenderer's recording of a planned pass: its barriers (the executor's, graph_executor.h),
 // its profiler scopes, and its commands by its unit's recorder (unit_recording.cpp); the GPU
 // predicates; and the composite's values, which the renderer works out each frame.
-#include <algorithm>
-
 #include "renderer/modes/mode_renderer_internals.h"
 #include "renderer/passes/culling/cull_constants.h"
-#include "rig/temporal_jitter.h"
 
 namespace monoplane::modes {
 

@@ -475,6 +475,7 @@ void ModeRenderer::submit_frame(
     const auto cpu_start = std::chrono::steady_clock::now();
     FrameState frame = prepare_frame(resolve_mono_plane(inputs));
     frame.slot = ring_.begin();
+    frame.unit_values = unit_frame_values(frame);
     const vk::raii::CommandBuffer& cmd = ring_.commands(frame.slot);
     uploads_.record(cmd);
     profiler_.begin_frame(cmd, frame.slot);

@@ -258,6 +258,8 @@ class ModeRenderer {
     void record_pass(const vk::raii::CommandBuffer& cmd, std::size_t pass, const FrameState& frame);
     void record_planned(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                         const FrameState& frame, passes::StepSync& sync);
+    // The frame's values for the units' recordings (FrameState::unit_values).
+    passes::UnitFrameValues unit_frame_values(const FrameState& frame) const;
     // How C's image maps into each eye this frame (the composite unit's values).
     passes::CompositeValues composite_values(const FrameState& frame) const;
     // A pass unit's pass, by its recorder (made on its first pass; unit_recording.cpp).

@@ -296,6 +296,9 @@ struct ModeRenderer::FrameState {
     plan::MonoCulling mono_culling = plan::MonoCulling::kNoOpt;
     bool measuring_variant = false;  // this frame's time goes to the chooser
     std::uint32_t slot = 0;          // the frame-in-flight slot it is recorded into
+    // What every unit's recording reads of the frame beyond its resources, worked out once the
+    // frame's plan, views and slot are known (unit_frame_values).
+    passes::UnitFrameValues unit_values;
 };
 
 }  // namespace monoplane::modes

@@ -140,6 +140,33 @@ passes::UnitSettings ModeRenderer::unit_settings() const {
     return settings;
 }
 
+passes::UnitFrameValues ModeRenderer::unit_frame_values(const FrameState& frame) const {
+    passes::UnitFrameValues values;
+    values.use_mono = frame.use_mono;
+    values.mono_plane = frame.inputs->mono_plane;
+    values.slot = frame.slot;
+    values.history_restarted = !history_valid_;
+    values.settings = unit_settings();
+    // What only some kinds read, worked out where this frame's plan runs them.
+    const auto runs = [&](plan::PassKind kind, plan::ViewId view) {
+        return last_plan_.runs(kind, view);
+    };
+    if (runs(plan::PassKind::kComposite, plan::ViewId::kLeft) ||
+        runs(plan::PassKind::kComposite, plan::ViewId::kRight)) {
+        values.composite = composite_values(frame);
+    }
+    if (runs(plan::PassKind::kDepthPyramid, plan::ViewId::kNone)) {
+        for (int e = 0; e < 2; ++e) {
+            values.mono_pixel_to_eye[e] = rig::jittered_pixel_mapping(
+                rig::mono_pixel_to_eye_pixel(*rig_, e), frame.jitter_px);
+        }
+    }
+    if (frame.use_mono) values.mono_area = mono_->area;
+    values.mono_hidden_pixels_read = options_.read_back || options_.ssao.has_value();
+    values.light_view_proj = glm::mat4(frame.light_view_proj);
+    return values;
+}
+
 void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::PlannedPass& pass,
                                const FrameState& frame, passes::StepSync& sync) {
     MONOPLANE_EXPECTS(!pass.unit.empty());
@@ -150,22 +177,6 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
         recorder =
             passes::make_unit_recorder(pass.unit, ctx_, unit_scene_, passes, unit_settings());
     }
-    passes::UnitFrameValues values;
-    values.use_mono = frame.use_mono;
-    values.mono_plane = frame.inputs->mono_plane;
-    values.slot = frame.slot;
-    values.history_restarted = !history_valid_;
-    values.settings = unit_settings();
-    if (pass.kind == plan::PassKind::kComposite) values.composite = composite_values(frame);
-    if (pass.kind == plan::PassKind::kDepthPyramid) {
-        for (int e = 0; e < 2; ++e) {
-            values.mono_pixel_to_eye[e] = rig::jittered_pixel_mapping(
-                rig::mono_pixel_to_eye_pixel(*rig_, e), frame.jitter_px);
-        }
-    }
-    if (frame.use_mono) values.mono_area = mono_->area;
-    values.mono_hidden_pixels_read = options_.read_back || options_.ssao.has_value();
-    values.light_view_proj = glm::mat4(frame.light_view_proj);
     UnitResolvers resolvers;
     resolvers.image = [this](const plan::ResourceKey& key) -> const vk_core::Image& {
         return view_image(key);
@@ -186,7 +197,7 @@ void ModeRenderer::record_unit(const vk::raii::CommandBuffer& cmd, const plan::P
     resolvers.predicate = [this](plan::GpuPredicate when) { return predicate(when); };
     resolvers.scene = &unit_scene_;
     const std::unique_ptr<passes::UnitRecording> recording =
-        make_unit_recording(cmd, last_plan_, pass, sync, values, std::move(resolvers));
+        make_unit_recording(cmd, last_plan_, pass, sync, frame.unit_values, std::move(resolvers));
     recorder->record(*recording);
 }
 

@@ -31,25 +31,31 @@ class EyeGazeTest : public SimxrTest {
         return gaze.supportsEyeGazeInteraction == XR_TRUE;
     }
 
-    // A pose action bound to the gaze, its set attached, the session focused and synced once;
-    // returns the action space and the VIEW space.
-    void bind_gaze(XrSpace* gaze_space, XrSpace* view_space) {
+    // A set with a pose action, and the suggestion of the gaze pose for it: the suggestion's
+    // result.
+    XrResult suggest_gaze_binding() {
         auto set_info = xr_struct<XrActionSetCreateInfo>(XR_TYPE_ACTION_SET_CREATE_INFO);
         std::strcpy(set_info.actionSetName, "gaze");
         std::strcpy(set_info.localizedActionSetName, "Gaze");
-        ASSERT_EQ(xrCreateActionSet(instance_, &set_info, &set_), XR_SUCCESS);
+        EXPECT_EQ(xrCreateActionSet(instance_, &set_info, &set_), XR_SUCCESS);
         auto action_info = xr_struct<XrActionCreateInfo>(XR_TYPE_ACTION_CREATE_INFO);
         action_info.actionType = XR_ACTION_TYPE_POSE_INPUT;
         std::strcpy(action_info.actionName, "gaze");
         std::strcpy(action_info.localizedActionName, "Gaze");
-        ASSERT_EQ(xrCreateAction(set_, &action_info, &action_), XR_SUCCESS);
+        EXPECT_EQ(xrCreateAction(set_, &action_info, &action_), XR_SUCCESS);
         const XrActionSuggestedBinding binding{action_, path("/user/eyes_ext/input/gaze_ext/pose")};
         auto suggested = xr_struct<XrInteractionProfileSuggestedBinding>(
             XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING);
         suggested.interactionProfile = path("/interaction_profiles/ext/eye_gaze_interaction");
         suggested.countSuggestedBindings = 1;
         suggested.suggestedBindings = &binding;
-        ASSERT_EQ(xrSuggestInteractionProfileBindings(instance_, &suggested), XR_SUCCESS);
+        return xrSuggestInteractionProfileBindings(instance_, &suggested);
+    }
+
+    // A pose action bound to the gaze, its set attached, the session focused and synced once;
+    // returns the action space and the VIEW space.
+    void bind_gaze(XrSpace* gaze_space, XrSpace* view_space) {
+        ASSERT_EQ(suggest_gaze_binding(), XR_SUCCESS);
         auto attach =
             xr_struct<XrSessionActionSetsAttachInfo>(XR_TYPE_SESSION_ACTION_SETS_ATTACH_INFO);
         attach.countActionSets = 1;
@@ -143,23 +149,7 @@ duration = 0.2
 // Without the extension the gaze profile and its user path are not known.
 TEST_F(EyeGazeTest, WithoutTheExtensionTheGazeProfileIsRefused) {
     start("");
-    auto set_info = xr_struct<XrActionSetCreateInfo>(XR_TYPE_ACTION_SET_CREATE_INFO);
-    std::strcpy(set_info.actionSetName, "gaze");
-    std::strcpy(set_info.localizedActionSetName, "Gaze");
-    ASSERT_EQ(xrCreateActionSet(instance_, &set_info, &set_), XR_SUCCESS);
-    auto action_info = xr_struct<XrActionCreateInfo>(XR_TYPE_ACTION_CREATE_INFO);
-    action_info.actionType = XR_ACTION_TYPE_POSE_INPUT;
-    std::strcpy(action_info.actionName, "gaze");
-    std::strcpy(action_info.localizedActionName, "Gaze");
-    ASSERT_EQ(xrCreateAction(set_, &action_info, &action_), XR_SUCCESS);
-    const XrActionSuggestedBinding binding{action_, path("/user/eyes_ext/input/gaze_ext/pose")};
-    auto suggested = xr_struct<XrInteractionProfileSuggestedBinding>(
-        XR_TYPE_INTERACTION_PROFILE_SUGGESTED_BINDING);
-    suggested.interactionProfile = path("/interaction_profiles/ext/eye_gaze_interaction");
-    suggested.countSuggestedBindings = 1;
-    suggested.suggestedBindings = &binding;
-    EXPECT_EQ(xrSuggestInteractionProfileBindings(instance_, &suggested),
-              XR_ERROR_PATH_UNSUPPORTED);
+    EXPECT_EQ(suggest_gaze_binding(), XR_ERROR_PATH_UNSUPPORTED);
     xr_validation_messages().clear();  // the layer reports the refused profile as well
 }
 

@@ -115,8 +115,7 @@ std::string ssao_variant_name(SsaoVariant variant) {
 }
 
 SsaoImages::SsaoImages(const vk_core::Context& ctx, vk::Extent2D extent)
-    : extent_(extent),
-      raw_(ctx, {extent, kAoFormat, vk::ImageUsageFlagBits::eStorage}),
+    : raw_(ctx, {extent, kAoFormat, vk::ImageUsageFlagBits::eStorage}),
       filtered_x_(ctx, {extent, kAoFormat, vk::ImageUsageFlagBits::eStorage}),
       other_pixel_(ctx, {extent, kOtherPixelFormat, vk::ImageUsageFlagBits::eStorage}),
       ao_(ctx, {extent, kAoFormat,
@@ -132,7 +131,7 @@ SsaoImages::SsaoImages(const vk_core::Context& ctx, vk::Extent2D extent)
 }
 
 std::vector<float> SsaoImages::ao_values() const {
-    std::vector<float> values(std::size_t{extent_.width} * extent_.height);
+    std::vector<float> values(std::size_t{extent().width} * extent().height);
     std::memcpy(values.data(), readback_.mapped(), values.size() * sizeof(float));
     return values;
 }

@@ -52,14 +52,13 @@ class SsaoImages {
     std::vector<const vk_core::Image*> scratch() const {
         return {&raw_, &filtered_x_, &other_pixel_};
     }
-    vk::Extent2D extent() const { return extent_; }
+    vk::Extent2D extent() const { return ao_.desc().extent; }
     const vk_core::Buffer& readback() const { return readback_; }
     // The last read-back AO, row-major, extent().width * extent().height values (pixels outside
     // the area are unspecified), once a frame that copied it has completed.
     std::vector<float> ao_values() const;
 
   private:
-    vk::Extent2D extent_;
     vk_core::Image raw_;
     vk_core::Image filtered_x_;
     vk_core::Image other_pixel_;
