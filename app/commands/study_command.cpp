@@ -118,6 +118,8 @@ void add_run_command(CLI::App* study, const std::shared_ptr<StudyOptions>& optio
                     "give the same schedule (default: drawn and recorded)");
     run->add_option("--pace-ms", options->pace_ms, "Sleep per logged event (tests)");
     run->add_flag("--trace", options->trace, "Print each durable write on stdout");
+    run->add_flag("--trace-stop", options->trace_stop,
+                  "As --trace, and stop (SIGSTOP) after each line until SIGCONT (test harnesses)");
     add_headset_options(run, *options);
     run->footer(kSessionExitStatusHelp);
     run->callback([options, &global] { run_study(*options, global); });
@@ -138,6 +140,9 @@ void add_resume_command(CLI::App* study, const std::shared_ptr<StudyOptions>& op
     resume->add_option("--hmd", options->hmd, "HMD profile")->capture_default_str();
     resume->add_option("--pace-ms", options->pace_ms, "Sleep per logged event (tests)");
     resume->add_flag("--trace", options->trace, "Print each durable write on stdout");
+    resume->add_flag(
+        "--trace-stop", options->trace_stop,
+        "As --trace, and stop (SIGSTOP) after each line until SIGCONT (test harnesses)");
     resume->add_flag("--accept-changed-scenes", options->accept_changed_scenes,
                      "Resume although scene files (glTF) changed since the session began; "
                      "refused without it. The session's notes record each changed file");
@@ -147,8 +152,7 @@ void add_resume_command(CLI::App* study, const std::shared_ptr<StudyOptions>& op
 }
 
 void add_export_command(CLI::App* study, const std::shared_ptr<StudyOptions>& options) {
-    CLI::App* exp =
-        study->add_subcommand("export", "Export the trials, frames, notes or presses");
+    CLI::App* exp = study->add_subcommand("export", "Export the trials, frames, notes or presses");
     exp->add_option("--db", options->db, "Study database (SQLite)")->required();
     exp->add_option("--format", options->format,
                     "csv or json (the trials), frames-csv (the frame and head log of headset "

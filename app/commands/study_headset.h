@@ -13,6 +13,7 @@
 #include <functional>
 #include <string>
 
+#include "app/commands/commit_trace.h"
 #include "app/commands/global_options.h"
 #include "app/commands/study_scenes.h"
 #include "hmd/profile.h"
@@ -23,15 +24,15 @@
 namespace monoplane::app {
 
 struct HeadsetStudyOptions {
-    std::string headset;                 // "simulated" or "openxr"
-    std::string window = "auto";         // auto (when a display exists), on, off
-    std::string detail;                  // scene detail; empty: the protocol's [render] detail
-    double resolution_scale = 1.0;       // of the runtime's recommended eye size
-    double neutral_s = 1.0;              // neutral screen between trials
-    double end_s = 10.0;                 // the protocol's end screen stays up this long
-    bool trace = false;                  // each durable write on stdout
-    std::string screenshot;              // PNG of the experimenter window (tests, docs)...
-    std::int64_t screenshot_frame = -1;  // ...after this frame; -1: when the session ends
+    std::string headset;                   // "simulated" or "openxr"
+    std::string window = "auto";           // auto (when a display exists), on, off
+    std::string detail;                    // scene detail; empty: the protocol's [render] detail
+    double resolution_scale = 1.0;         // of the runtime's recommended eye size
+    double neutral_s = 1.0;                // neutral screen between trials
+    double end_s = 10.0;                   // the protocol's end screen stays up this long
+    CommitTrace trace = CommitTrace::Off;  // each durable write on stdout
+    std::string screenshot;                // PNG of the experimenter window (tests, docs)...
+    std::int64_t screenshot_frame = -1;    // ...after this frame; -1: when the session ends
     // auto: each eye's depth goes with its colour when the runtime offers
     // XR_KHR_composition_layer_depth; off: never (docs/headsets.md, "Depth submission").
     std::string layer_depth = "auto";

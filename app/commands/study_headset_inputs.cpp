@@ -109,7 +109,7 @@ void HeadsetLoop::window_command(const window::Command& c, std::int64_t now) {
 
 void HeadsetLoop::request(LiveInput input, std::int64_t time_ns) {
     const std::string what = live_->request(input, time_ns).value_or_throw();
-    if (options_.trace) {
+    if (options_.trace != CommitTrace::Off) {
         std::printf("request %s: %s\n", std::string(study::live_input_name(input)).c_str(),
                     what.c_str());
     }

@@ -1,7 +1,6 @@
 // HeadsetLoop's turns and frames: the runtime's events, each frame from xrWaitFrame to its log
 // line, the session's run and its end.
 #include <chrono>
-#include <cstdio>
 #include <iostream>
 #include <thread>
 
@@ -177,10 +176,7 @@ void HeadsetLoop::request_exit() {
 }
 
 void HeadsetLoop::committed(const std::string& what) {
-    if (options_.trace) {
-        std::printf("committed %s\n", what.c_str());
-        std::fflush(stdout);
-    }
+    trace_committed(options_.trace, what);
     log_tail_.push_back(what);
     if (log_tail_.size() > 200) log_tail_.pop_front();
 }

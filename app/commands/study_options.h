@@ -29,7 +29,8 @@ struct StudyOptions {
     std::optional<std::pair<int, std::string>> abandon;
     std::string protocol_changed;  // run: --protocol-changed "reason"
     double pace_ms = 0.0;
-    bool trace = false;
+    bool trace = false;                  // --trace
+    bool trace_stop = false;             // --trace-stop (commit_trace.h)
     bool accept_changed_scenes = false;  // resume: go on although scene files changed
     std::string format = "csv";
     std::string out;

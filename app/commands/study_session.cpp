@@ -49,19 +49,19 @@ std::function<double(const study::ScheduledTrial&)> error_model(const hmd::HmdPr
     return trial_error_model(hmd, protocol);
 }
 
+CommitTrace commit_trace(const StudyOptions& o) {
+    if (o.trace_stop) return CommitTrace::PrintAndStop;
+    return o.trace ? CommitTrace::Print : CommitTrace::Off;
+}
+
 study::RunOptions run_options(const StudyOptions& o, const hmd::HmdProfile& hmd,
                               const study::Protocol& protocol) {
     study::RunOptions options;
     options.pace_ns = static_cast<std::int64_t>(o.pace_ms * 1e6);
     options.neutral_ns = static_cast<std::int64_t>(o.headset_options.neutral_s * 1e9);
     options.trial_error_px = error_model(hmd, protocol);
-    if (o.trace) {
-        // One line per durable write, flushed: a test that kills the process knows what was
-        // committed before the kill.
-        options.on_committed = [](const std::string& what) {
-            std::printf("committed %s\n", what.c_str());
-            std::fflush(stdout);
-        };
+    if (const CommitTrace trace = commit_trace(o); trace != CommitTrace::Off) {
+        options.on_committed = [trace](const std::string& what) { trace_committed(trace, what); };
     }
     return options;
 }
@@ -99,7 +99,7 @@ void run_on_headset(
     HeadsetStudyOptions options = o.headset_options;
     options.headset = o.headset;
     options.hmd = o.hmd;
-    options.trace = o.trace;
+    options.trace = commit_trace(o);
     std::optional<std::int64_t> session_id;
     const auto begin_and_note = [&](const std::string& runtime, const std::string& device) {
         session_id = begin(runtime, device);

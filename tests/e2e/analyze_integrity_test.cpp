@@ -148,7 +148,7 @@ TEST_F(AnalyzeIntegrityCli, ABackupTakenWhileTheSessionRanIsRefusedAlsoWhenDropp
     // The session killed after some of its writes: the backup is the file as it stood then.
     const KilledRun run = run_and_kill_after(
         {MONOPLANE_EXE, "study", "run", "--protocol", path("p.toml"), "--db", path("site-a.sqlite"),
-         "--participant", "k9", "--headset", "none", "--pace-ms", "20", "--trace"},
+         "--participant", "k9", "--headset", "none", "--trace"},
         8, dir_.string());
     ASSERT_TRUE(run.killed) << run.output;
     for (const char* suffix : {"", "-wal"})

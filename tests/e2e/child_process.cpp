@@ -6,9 +6,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <tuple>
 
 namespace monoplane {
 
@@ -68,41 +70,102 @@ int run_to_end(const std::vector<std::string>& args, std::string* output,
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-// Runs `args` and SIGKILLs it as soon as it has printed its k-th "committed" line (the write is
-// durable then; the child is somewhere in its next frames). What it printed before dying is read
-// to the end: every committed line there is a write that must survive.
-KilledRun run_and_kill_after(const std::vector<std::string>& args, int k,
-                             const std::string& tmpdir) {
-    KilledRun run;
-    auto [pid, fd] = spawn(args, tmpdir);
-    if (pid <= 0) return run;
-    int committed = 0;
-    std::size_t scanned = 0;
-    bool sent = false;
+namespace {
+
+// Waits until the child stops (true) or ends (false; its status in *status).
+bool wait_until_stopped(pid_t pid, int* status) {
+    while (waitpid(pid, status, WUNTRACED) < 0) {
+        if (errno != EINTR) return false;
+    }
+    return WIFSTOPPED(*status);
+}
+
+}  // namespace
+
+namespace {
+
+// Lets the child run, one committed write at a time, until chosen(k, line) holds of its k-th
+// committed line, where it is left stopped; or until it ends or stalls. A child left stopped at
+// its line before is continued past it first.
+void step_until(SteppedChild& child, const std::function<bool(int, const std::string&)>& chosen) {
     char buffer[4096];
     for (;;) {
-        pollfd p{fd, POLLIN, 0};
-        if (poll(&p, 1, 60000) <= 0) {
-            run.stalled = true;
-            break;
-        }
-        const ssize_t n = read(fd, buffer, sizeof buffer);
-        if (n <= 0) break;  // the child has ended (or died)
-        run.output.append(buffer, static_cast<std::size_t>(n));
-        for (std::size_t end; !sent && (end = run.output.find('\n', scanned)) != std::string::npos;
-             scanned = end + 1) {
-            if (run.output.compare(scanned, 10, "committed ") == 0 && ++committed == k) {
-                kill(pid, SIGKILL);
-                sent = true;
+        for (std::size_t end; (end = child.output.find('\n', child.scanned)) != std::string::npos;
+             child.scanned = end + 1) {
+            if (child.output.compare(child.scanned, 10, "committed ") != 0) continue;
+            if (child.stepped_past == child.committed) {
+                // It printed the line, then stopped; it prints nothing more until continued.
+                if (!wait_until_stopped(child.pid, &child.ended_status)) {
+                    child.reaped = true;
+                    return;
+                }
+                ++child.committed;
             }
+            const std::string line =
+                child.output.substr(child.scanned + 10, end - child.scanned - 10);
+            if (child.stepped_past < child.committed && chosen(child.committed, line)) {
+                child.stopped = true;
+                return;
+            }
+            child.stepped_past = child.committed;
+            kill(child.pid, SIGCONT);
         }
+        pollfd p{child.fd, POLLIN, 0};
+        if (poll(&p, 1, 60000) <= 0) {
+            child.stalled = true;
+            return;
+        }
+        const ssize_t n = read(child.fd, buffer, sizeof buffer);
+        if (n <= 0) return;  // the child has ended (or died)
+        child.output.append(buffer, static_cast<std::size_t>(n));
     }
-    if (!sent) kill(pid, SIGKILL);  // stalled: do not leave it behind
-    int status = 0;
-    waitpid(pid, &status, 0);
-    run.output += read_all(fd);
-    run.killed = WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL && sent;
+}
+
+}  // namespace
+
+SteppedChild run_until_committed(const std::vector<std::string>& args,
+                                 const std::function<bool(int, const std::string&)>& chosen,
+                                 const std::string& tmpdir) {
+    std::vector<std::string> stepped = args;
+    stepped.emplace_back("--trace-stop");
+    SteppedChild child;
+    std::tie(child.pid, child.fd) = spawn(stepped, tmpdir);
+    if (child.pid > 0) step_until(child, chosen);
+    return child;
+}
+
+int continue_to_end(SteppedChild& child) {
+    if (child.pid <= 0) return -1;
+    child.stopped = false;
+    step_until(child, [](int, const std::string&) { return false; });
+    if (child.stalled) kill(child.pid, SIGKILL);
+    child.output += read_all(child.fd);
+    child.fd = -1;
+    int status = child.ended_status;
+    if (!child.reaped) waitpid(child.pid, &status, 0);
+    child.reaped = true;
+    child.ended_status = status;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+KilledRun kill_child(SteppedChild child) {
+    KilledRun run;
+    if (child.pid <= 0) return run;
+    int status = child.ended_status;
+    if (!child.reaped) {
+        kill(child.pid, SIGKILL);
+        waitpid(child.pid, &status, 0);
+    }
+    run.output = child.output + (child.fd >= 0 ? read_all(child.fd) : std::string());
+    run.killed = child.stopped && WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+    run.stalled = child.stalled;
     return run;
+}
+
+KilledRun run_and_kill_after(const std::vector<std::string>& args, int k,
+                             const std::string& tmpdir) {
+    return kill_child(run_until_committed(
+        args, [k](int committed, const std::string&) { return committed == k; }, tmpdir));
 }
 
 }  // namespace monoplane

@@ -4,6 +4,7 @@
 
 #include <sys/types.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,9 +33,41 @@ struct KilledRun {
     bool stalled = false;  // it printed nothing for a minute
 };
 
-// Runs `args` and SIGKILLs it as soon as it has printed its k-th "committed" line (the write is
-// durable then; the child is somewhere in its next frames). What it printed before dying is read
-// to the end: every committed line there is a write that must survive.
+// A session child started with `study run|resume ... --trace-stop`: it stops itself after each
+// "committed" line and goes on at SIGCONT, so what it has written when it is killed does not
+// depend on how quickly this process reads its output.
+struct SteppedChild {
+    pid_t pid = -1;
+    int fd = -1;           // its stdout
+    std::string output;    // what it printed so far
+    bool stopped = false;  // it is stopped right after the line chosen
+    bool stalled = false;  // it printed nothing for a minute
+    bool reaped = false;   // it ended first, and waitpid has its status:
+    int ended_status = 0;  // this one
+    // Where the reading stands: the output's first unread line, the committed lines seen (each
+    // a stop waited for), and how many of them the child was continued past.
+    std::size_t scanned = 0;
+    int committed = 0;
+    int stepped_past = 0;
+};
+
+// Starts `args` (a study run or resume command) with --trace-stop added and lets it run, one
+// committed write at a time, until `chosen(k, line)` is true of its k-th (1-based) committed
+// line (without "committed "): there the child is left stopped. Otherwise it runs to its end.
+SteppedChild run_until_committed(const std::vector<std::string>& args,
+                                 const std::function<bool(int, const std::string&)>& chosen,
+                                 const std::string& tmpdir);
+
+// Continues a child left stopped, past each of its later writes, to its end; returns its exit
+// status (-1: killed, or it stalled and was killed), with all it printed in child.output.
+int continue_to_end(SteppedChild& child);
+
+// SIGKILLs the child (stopped or not) and reads what it printed to the end.
+KilledRun kill_child(SteppedChild child);
+
+// Runs `args` and SIGKILLs it right after its k-th committed write (the write is durable then,
+// and the child has started nothing after it). What it printed before dying is read to the end:
+// every committed line there is a write that must survive.
 KilledRun run_and_kill_after(const std::vector<std::string>& args, int k,
                              const std::string& tmpdir);
 

@@ -532,36 +532,27 @@ ScreenCount count_screens(const std::vector<study::TrialEvent>& events) {
 }
 
 // Runs the screens protocol's session into `db` and SIGKILLs it right after the committed write
-// whose line starts with `when` (with `note`: as soon as its first break has started, a note is
-// added from another process, and the session is killed right after the note is stored); then
-// resumes it to its end. What the killed run reported as committed is returned in *committed.
+// whose line starts with `when` (with `note`: once that write is committed, and while the session
+// stands there, a note is added from another process); then resumes it to its end. What the
+// killed run reported as committed is returned in *committed.
 void kill_on_screen_and_resume(const std::string& protocol, const std::string& db,
                                const std::string& when, const std::string& note,
                                const std::string& tmpdir, Committed* committed) {
     const std::string exe = MONOPLANE_EXE;
-    auto [pid, fd] =
-        spawn({exe, "study", "run", "--protocol", protocol, "--db", db, "--participant", "P1",
-               "--headset", "none", "--seed", "7", "--pace-ms", "20", "--trace"},
-              tmpdir);
-    ASSERT_GT(pid, 0);
-    std::string output;
-    char buffer[4096];
-    while (output.find("committed " + when) == std::string::npos) {
-        const ssize_t n = read(fd, buffer, sizeof buffer);
-        if (n <= 0) break;
-        output.append(buffer, static_cast<std::size_t>(n));
-    }
+    SteppedChild child = run_until_committed(
+        {exe, "study", "run", "--protocol", protocol, "--db", db, "--participant", "P1",
+         "--headset", "none", "--seed", "7"},
+        [&when](int, const std::string& line) { return line.starts_with(when); }, tmpdir);
+    ASSERT_TRUE(child.stopped) << "the session ended before its write '" << when << "':\n"
+                               << child.output;
     if (!note.empty()) {
         ASSERT_EQ(run_to_end({exe, "study", "note", "--db", db, "--participant", "P1", "--", note}),
                   0);
     }
-    kill(pid, SIGKILL);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    output += read_all(fd);
-    ASSERT_NE(output.find("committed " + when), std::string::npos) << output;
-    ASSERT_TRUE(WIFSIGNALED(status)) << "the session ended before the kill";
-    *committed = parse_committed(output);
+    const KilledRun killed = kill_child(std::move(child));
+    ASSERT_TRUE(killed.killed) << killed.output;
+    *committed = parse_committed(killed.output);
+    ASSERT_TRUE(committed->last.starts_with(when)) << killed.output;
     std::string resumed;
     ASSERT_EQ(
         run_to_end({exe, "study", "resume", "--db", db, "--participant", "P1"}, &resumed, tmpdir),
@@ -609,12 +600,10 @@ TEST(StudyCrash, KilledOnScreensAndAfterANoteResumeWhereTheyStood) {
         EXPECT_EQ(count("instructions_confirmed", 1), 1);
         EXPECT_EQ(count("instructions_shown", 0), 1);
         EXPECT_EQ(count("ready_confirmed", -1), 1);
-        // 6 data trials, a break after the 2nd and the 4th: each ended once; one the kill cut
-        // short (the killed run's last write was its start) logged its start again when the
+        // 6 data trials, a break after the 2nd and the 4th: each ended once; the one the kill
+        // cut short (the killed run's last write was its start) logged its start again when the
         // resumed run showed it.
-        const bool cut_short = committed.last.starts_with("screen break_started");
-        EXPECT_EQ(count("break_started", -1), cut_short ? 3 : 2);
-        if (name == "break") EXPECT_TRUE(cut_short) << committed.last;
+        EXPECT_EQ(count("break_started", -1), name == "instructions" ? 2 : 3);
         EXPECT_EQ(count("break_ended", -1), 2);
         expect_breaks_started_before_they_end(events);
         EXPECT_EQ(count("end_shown", -1), 1);
@@ -832,7 +821,9 @@ void expect_one_axis(const std::vector<study::TrialEvent>& events,
             const study::RunRecord& r = runs[run++];
             for (const study::FrameRecord& f : frames)
                 if (f.frame < r.first_frame) latest = std::max(latest, f.display_time_ns);
-            if (r.run > 1) EXPECT_EQ(e.time_ns, latest + 1) << "run " << r.run;
+            if (r.run > 1) {
+                EXPECT_EQ(e.time_ns, latest + 1) << "run " << r.run;
+            }
             EXPECT_EQ(e.time_ns - r.clock_offset_ns, clock_start_ns) << "run " << r.run;
             EXPECT_GT(r.first_frame, last_frame) << "run " << r.run;
         }
@@ -999,7 +990,7 @@ TEST(StudyCrash, AResumedSessionKeepsTheWholeTruthOnBothPaths) {
     const std::string protocol = (dir / "truth.toml").string();
     std::ofstream(protocol) << kTruthProtocol;
     const std::vector<TruthPath> paths = {
-        {"headless", {"--headset", "none", "--pace-ms", "20", "--trace"}, 0},
+        {"headless", {"--headset", "none", "--trace"}, 0},
         {"headset",
          {"--headset", "simulated", "--window", "off", "--resolution-scale", "0.05", "--sim-rate",
           std::to_string(kSimRateHz), "--neutral-s", "0.2", "--observer", "default", "--detail",

@@ -237,55 +237,34 @@ TEST_F(StudyDayCli, ASecondSessionOnAnotherPcContinuesTheParticipantsSceneOrder)
               (std::vector<std::string>{"spheres", "beams", "landscape"}));
 }
 
-// Waits until the child has printed `count` committed lines; false if it ended first.
-bool wait_for_commits(int fd, int count, std::string& output) {
-    char buffer[4096];
-    while (true) {
-        int seen = 0;
-        for (std::size_t at = 0; (at = output.find("committed ", at)) != std::string::npos; ++at)
-            ++seen;
-        if (seen >= count) return true;
-        const ssize_t n = read(fd, buffer, sizeof buffer);
-        if (n <= 0) return false;
-        output.append(buffer, static_cast<std::size_t>(n));
-    }
-}
-
 TEST_F(StudyDayCli, ALiveSessionIsNeverTakenOverAndADeadOneResumesAtOnce) {
     const std::string db = path("s.sqlite");
     const std::vector<std::string> slow = {
-        MONOPLANE_EXE, "study",     "run",           "--protocol", path("day.toml"),
-        "--db",        db,          "--participant", "P1",         "--var",
-        "age=30",      "--headset", "none",          "--pace-ms",  "40",
-        "--trace"};
-    auto [pid, fd] = spawn(slow);
-    ASSERT_GT(pid, 0);
-    std::string output;
-    ASSERT_TRUE(wait_for_commits(fd, 3, output)) << output;
+        MONOPLANE_EXE,   "study", "run",   "--protocol", path("day.toml"), "--db", db,
+        "--participant", "P1",    "--var", "age=30",     "--headset",      "none"};
+    // Each session stands still after its third write (stopped, as a busy machine may stop it),
+    // alive and holding the session.
+    const auto third = [](int k, const std::string&) { return k == 3; };
+    SteppedChild running = run_until_committed(slow, third, {});
+    ASSERT_TRUE(running.stopped) << running.output;
     std::string refused;
     EXPECT_NE(study({"resume", "--db", db}, &refused), 0);
-    EXPECT_NE(refused.find("being run by process " + std::to_string(pid)), std::string::npos)
+    EXPECT_NE(refused.find("being run by process " + std::to_string(running.pid)),
+              std::string::npos)
         << refused;
     std::string listed;
     ASSERT_EQ(study({"list", "--db", db}, &listed), 0) << listed;
-    EXPECT_NE(listed.find("running (process " + std::to_string(pid)), std::string::npos) << listed;
+    EXPECT_NE(listed.find("running (process " + std::to_string(running.pid)), std::string::npos)
+        << listed;
     // The running session goes on undisturbed to its end.
-    output += read_all(fd);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    ASSERT_TRUE(WIFEXITED(status));
-    EXPECT_EQ(WEXITSTATUS(status), 0) << output;
+    EXPECT_EQ(continue_to_end(running), 0) << running.output;
     EXPECT_EQ(open(db)->session(1).value_or_throw().status, study::SessionStatus::Completed);
 
     // A session whose process died is free at once: no stale flag to clear.
     std::vector<std::string> second = slow;
     second[8] = "P2";
-    auto [pid2, fd2] = spawn(second);
-    std::string output2;
-    ASSERT_TRUE(wait_for_commits(fd2, 3, output2)) << output2;
-    kill(pid2, SIGKILL);
-    waitpid(pid2, &status, 0);
-    read_all(fd2);
+    const KilledRun killed = kill_child(run_until_committed(second, third, {}));
+    ASSERT_TRUE(killed.killed) << killed.output;
     ASSERT_EQ(study({"list", "--db", db}, &listed), 0);
     EXPECT_NE(listed.find("interrupted"), std::string::npos) << listed;
     std::string resumed;
