@@ -27,8 +27,8 @@ Result<void> FrameQueue::write(const sqlite::Connection& db) const {
         "INSERT OR REPLACE INTO frames (session_id, frame, trial_index, shown, display_time_ns, "
         "cpu_ms, gpu_ms, missed, head_x, head_y, head_z, head_qw, head_qx, head_qy, head_qz, "
         "pipelines_created, driver_compiles, gaze_valid, gaze_dir_x, gaze_dir_y, gaze_dir_z, "
-        "gaze_error_arcmin) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
+        "gaze_error_arcmin, gaze_depth_m, gaze_mono_plane_m) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)");
     MONOPLANE_TRY(insert);
     for (const Row& row : rows_) {
         const FrameRecord& f = row.frame;
@@ -48,7 +48,10 @@ Result<void> FrameQueue::write(const sqlite::Connection& db) const {
                                                  ? std::optional<double>(f.gaze->direction[i])
                                                  : std::nullopt);
         }
-        s.bind(22, f.gaze_error_arcmin);
+        const std::optional<GazePointRecord>& point = f.gaze_point;
+        s.bind(22, point ? std::optional<double>(point->error_arcmin) : std::nullopt);
+        s.bind(23, point ? point->depth_m : std::nullopt);
+        s.bind(24, point ? std::optional<double>(point->mono_plane_m) : std::nullopt);
         const std::string what = "logging frame " + std::to_string(f.frame) + " of session " +
                                  std::to_string(row.session_id);
         MONOPLANE_TRY(s.run(what));
@@ -87,7 +90,8 @@ Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,
         db,
         "SELECT frame, trial_index, shown, display_time_ns, cpu_ms, gpu_ms, missed, head_x, "
         "head_y, head_z, head_qw, head_qx, head_qy, head_qz, mono_plane, pipelines_created, "
-        "driver_compiles, gaze_valid, gaze_dir_x, gaze_dir_y, gaze_dir_z, gaze_error_arcmin "
+        "driver_compiles, gaze_valid, gaze_dir_x, gaze_dir_y, gaze_dir_z, gaze_error_arcmin, "
+        "gaze_depth_m, gaze_mono_plane_m "
         "FROM frames WHERE "
         "session_id = ? "
         "ORDER BY frame");
@@ -125,7 +129,11 @@ Result<std::vector<FrameRecord>> read_frames(const sqlite::Connection& db,
             }
             f.gaze = gaze;
         }
-        if (!s.is_null(21)) f.gaze_error_arcmin = s.real(21);
+        if (!s.is_null(21)) {
+            GazePointRecord point{.error_arcmin = s.real(21), .mono_plane_m = s.real(23)};
+            if (!s.is_null(22)) point.depth_m = s.real(22);
+            f.gaze_point = point;
+        }
         frames.push_back(std::move(f));
     }
     return frames;

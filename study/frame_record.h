@@ -16,6 +16,21 @@ struct GazeRecord {
     std::array<double, 3> direction{0.0, 0.0, -1.0};
 };
 
+// Where a frame's gaze ray met the scene, and hybrid's error there (docs/gaze.md): derived as the
+// frame is logged, for every frame of a trial's scene with a valid gaze sample, whichever
+// alternative the frame showed.
+struct GazePointRecord {
+    // The larger over both eyes of the angle between where stereo and where hybrid (at
+    // mono_plane_m) show the point, arcmin: 0 for a point nearer than the plane.
+    double error_arcmin = 0.0;
+    // The point's depth: metres in front of the eyes' plane (along the head's -z). None: the
+    // ray met no surface (the sky), the point lies infinitely far.
+    std::optional<double> depth_m;
+    // The m the error is for: the trial's mono plane (the one its hybrid alternative shows).
+    double mono_plane_m = 0.0;
+    bool beyond_mono_plane() const { return !depth_m || *depth_m > mono_plane_m; }
+};
+
 // One displayed frame of a headset session: the frame and head log.
 struct FrameRecord {
     std::int64_t frame = 0;          // the runtime's frame index (HeadsetFrame::index)
@@ -47,8 +62,9 @@ struct FrameRecord {
     // [gaze] record on a runtime that tracks the eyes: the frame's gaze sample; none where gaze
     // was not recorded (not asked, no eye tracker, sessions before gaze was logged).
     std::optional<GazeRecord> gaze;
-    // Hybrid's angular error at the gaze point, arcmin; none where it was not derived.
-    std::optional<double> gaze_error_arcmin;
+    // The gaze point and hybrid's error there; none where it was not derived (no valid sample,
+    // no scene shown, a trial without a fixed mono plane, sessions before it was derived).
+    std::optional<GazePointRecord> gaze_point;
 };
 
 }  // namespace monoplane::study

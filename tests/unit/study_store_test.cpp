@@ -699,13 +699,18 @@ TEST_F(StudyStoreTest, TheFrameLogKeepsTheGazeSampleOfEachFrame) {
     const std::int64_t id = begin(*store, "P01");
     FrameRecord looking = make_frame(0, 0);
     looking.gaze = GazeRecord{true, {0.24253562503633297, 0.0, -0.9701425001453319}};
+    looking.gaze_point = GazePointRecord{.error_arcmin = 2.5, .depth_m = 12.0, .mono_plane_m = 8};
     FrameRecord blinking = make_frame(1, 0);
     blinking.gaze = GazeRecord{false, {0.5, 0.5, 0.5}};  // what a blink's pose said: not kept
     const FrameRecord unrecorded = make_frame(2, 0);
-    for (const FrameRecord& f : {looking, blinking, unrecorded}) store->queue_frame(id, f);
+    FrameRecord at_the_sky = looking;
+    at_the_sky.frame = 3;
+    at_the_sky.gaze_point = GazePointRecord{.error_arcmin = 7.25, .mono_plane_m = 3};
+    for (const FrameRecord& f : {looking, blinking, unrecorded, at_the_sky})
+        store->queue_frame(id, f);
     ASSERT_TRUE(store->flush_frames().ok());
     RawDb raw(db_);
-    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE gaze_valid = 1"), 1);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE gaze_valid = 1"), 2);
     EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE gaze_valid = 0 AND gaze_dir_x IS "
                           "NULL AND gaze_dir_y IS NULL AND gaze_dir_z IS NULL"),
               1);
@@ -714,14 +719,24 @@ TEST_F(StudyStoreTest, TheFrameLogKeepsTheGazeSampleOfEachFrame) {
               1);
     const Result<std::vector<FrameRecord>> frames = store->frames(id);
     ASSERT_TRUE(frames.ok()) << frames.error().message;
-    ASSERT_EQ(frames->size(), 3u);
+    ASSERT_EQ(frames->size(), 4u);
+    EXPECT_EQ(raw.integer("SELECT count(*) FROM frames WHERE gaze_error_arcmin = 7.25 AND "
+                          "gaze_depth_m IS NULL AND gaze_mono_plane_m = 3"),
+              1);
+    ASSERT_TRUE((*frames)[0].gaze_point);
+    EXPECT_EQ((*frames)[0].gaze_point->error_arcmin, 2.5);
+    EXPECT_EQ((*frames)[0].gaze_point->depth_m, 12.0);
+    EXPECT_TRUE((*frames)[0].gaze_point->beyond_mono_plane());
+    ASSERT_TRUE((*frames)[3].gaze_point);
+    EXPECT_FALSE((*frames)[3].gaze_point->depth_m);  // the sky
+    EXPECT_TRUE((*frames)[3].gaze_point->beyond_mono_plane());
     ASSERT_TRUE((*frames)[0].gaze);
     EXPECT_TRUE((*frames)[0].gaze->valid);
     EXPECT_EQ((*frames)[0].gaze->direction, looking.gaze->direction);
     ASSERT_TRUE((*frames)[1].gaze);
     EXPECT_FALSE((*frames)[1].gaze->valid);
     EXPECT_FALSE((*frames)[2].gaze);
-    EXPECT_FALSE((*frames)[2].gaze_error_arcmin);
+    EXPECT_FALSE((*frames)[2].gaze_point);
 }
 
 TEST_F(StudyStoreTest, AResumedRunsFramesContinueAfterEveryNumberUsed) {
