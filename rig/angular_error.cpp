@@ -7,6 +7,8 @@
 #include <optional>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "common/programming_error.h"
 
 namespace monoplane::rig {
@@ -199,6 +201,41 @@ AngularError angular_error_at_depth(const Rig& rig, double depth) {
 
 AngularError max_angular_error(const Rig& rig) {
     return angular_error_at_depth(rig, kInfinity);
+}
+
+namespace {
+
+// The angle between two directions, robust at small angles (atan2 of |a x b| and a . b).
+double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
+}  // namespace
+
+PointAngularError angular_error_at_point(const Rig& rig, const glm::dvec3& point) {
+    PointAngularError error;
+    if (rig.mono_skipped || -point.z <= rig.inputs.mono_plane) return error;
+    const glm::dvec3 shown = on_mono_plane(rig, point);
+    for (int e = 0; e < 2; ++e) {
+        const glm::dvec3& eye = rig.eye_positions[static_cast<std::size_t>(e)];
+        error.eye_arcmin[static_cast<std::size_t>(e)] =
+            angle_between(point - eye, shown - eye) * kArcminPerRadian;
+    }
+    return error;
+}
+
+PointAngularError angular_error_in_direction(const Rig& rig, const glm::dvec3& direction) {
+    MONOPLANE_EXPECTS(direction.z < 0.0);
+    PointAngularError error;
+    if (rig.mono_skipped) return error;
+    // C's ray towards the point is parallel to every eye's: it lies infinitely far.
+    const glm::dvec3 shown = direction_on_mono_plane(rig, direction);
+    for (int e = 0; e < 2; ++e) {
+        const glm::dvec3& eye = rig.eye_positions[static_cast<std::size_t>(e)];
+        error.eye_arcmin[static_cast<std::size_t>(e)] =
+            angle_between(direction, shown - eye) * kArcminPerRadian;
+    }
+    return error;
 }
 
 }  // namespace monoplane::rig

@@ -11,6 +11,9 @@
 //            at z = infinity a = 1 + s/m, b = -x_e/m.
 #pragma once
 
+#include <algorithm>
+#include <array>
+
 #include "rig/rig.h"
 
 namespace monoplane::rig {
@@ -35,6 +38,25 @@ AngularError angular_error_at_depth(const Rig& rig, double depth);
 
 // angular_error_at_depth(rig, +infinity).
 AngularError max_angular_error(const Rig& rig);
+
+// Hybrid's error at one point, as each eye sees it (docs/gaze.md, the error where the gaze
+// rests): the angle between eye e's direction to the point (what stereo shows) and its direction
+// to the point's central projection from C onto the mono plane z = -m (what hybrid shows: Fig. 2,
+// centre right; the plane-induced mapping of eq. 5), in arcmin. Exact for parallel and canted
+// eyes; vertical offsets count, unlike AngularError::eye_arcmin's horizontal tangents.
+struct PointAngularError {
+    std::array<double, 2> eye_arcmin = {0.0, 0.0};  // [kLeft], [kRight]
+    double larger_arcmin() const { return std::max(eye_arcmin[0], eye_arcmin[1]); }
+};
+
+// `point` in the head frame. Zero for a point no deeper than the plane (-point.z <= m: stereo
+// content in hybrid too) and for a skipped C. Any time; pure.
+PointAngularError angular_error_at_point(const Rig& rig, const glm::dvec3& point);
+
+// The same for a point infinitely far along `direction` (head frame, any length, pointing ahead:
+// direction.z < 0), such as the sky: both eyes see it along `direction` in stereo. Zero for a
+// skipped C; a direction not ahead is a programming error.
+PointAngularError angular_error_in_direction(const Rig& rig, const glm::dvec3& direction);
 
 // Arcminutes in a radian (60 * 180 / pi).
 inline constexpr double kArcminPerRadian = 3437.7467707849392;

@@ -4,6 +4,8 @@
 # present, so repeated runs are fast.
 set -euo pipefail
 
+# libembree-dev: Embree, the CPU ray caster that finds where a participant's gaze ray meets the
+# scene (scenes/scene_ray_cast.h; docs/gaze.md).
 # fonts-wqy-microhei: a CJK font for protocols in Chinese, Japanese or Korean (tests and
 # docs/protocols.md, "Languages"): 1.6 MB against fonts-noto-cjk's 57 MB download, Latin included.
 packages=(
@@ -15,7 +17,7 @@ packages=(
   librsvg2-dev fonts-dejavu-core libfreetype-dev fonts-wqy-microhei
   libtinygltf-dev nlohmann-json3-dev libmeshoptimizer-dev assimp-testmodels
   python3 python3-pandas r-base-core r-cran-jsonlite r-cran-dbi r-cran-rsqlite
-  libeigen3-dev libnlopt-dev chromium
+  libeigen3-dev libnlopt-dev chromium libembree-dev
   "$@"
 )
 

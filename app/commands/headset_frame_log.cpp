@@ -39,7 +39,8 @@ HeadsetFrameLog::HeadsetFrameLog(study::StudyStore& store, std::int64_t session_
 
 void HeadsetFrameLog::displayed(const headset::HeadsetFrame& frame, const study::LiveScreen& screen,
                                 const std::optional<rig::Pose>& head, double cpu_ms,
-                                const modes::ModeRenderer* renderer) {
+                                const modes::ModeRenderer* renderer,
+                                const std::optional<study::GazePointRecord>& gaze_point) {
     study::FrameRecord row;
     row.frame = frame.index;
     if (screen.kind == study::ScreenKind::Trial && screen.trial) {
@@ -62,6 +63,7 @@ void HeadsetFrameLog::displayed(const headset::HeadsetFrame& frame, const study:
         const glm::dvec3& d = frame.gaze->direction;
         row.gaze = study::GazeRecord{frame.gaze->valid, {d.x, d.y, d.z}};
     }
+    row.gaze_point = gaze_point;
     count_builds(row);
     store_.queue_frame(session_id_, row);
     if (renderer) awaiting_gpu_[renderer].push_back(frame.index);

@@ -38,9 +38,11 @@ class HeadsetFrameLog {
 
     // A displayed frame. renderer: the one that drew its scene (its GPU time follows), or null.
     // head: the head relative to the seat (SeatAnchor), none while tracking is lost.
+    // gaze_point: where the frame's gaze rested in its scene (gaze_point.h), if found.
     void displayed(const headset::HeadsetFrame& frame, const study::LiveScreen& screen,
                    const std::optional<rig::Pose>& head, double cpu_ms,
-                   const modes::ModeRenderer* renderer);
+                   const modes::ModeRenderer* renderer,
+                   const std::optional<study::GazePointRecord>& gaze_point = std::nullopt);
     // The statistics a renderer's completed frames returned, oldest first.
     void completed(const modes::ModeRenderer* renderer,
                    const std::vector<profile::FrameStats>& stats);

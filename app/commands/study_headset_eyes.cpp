@@ -60,6 +60,7 @@ HeadsetLoop::Rendered HeadsetLoop::render(const headset::HeadsetFrame& frame,
         rendered.renderer = &renderers_.renderer(trial.scene, screen.mode);
         inputs.views = view_inputs(frame, located, head, renderers_.seat(trial.scene), protocol_);
         inputs.mono_plane = trial.mono_plane;
+        rendered.trial_view = TrialView{trial.scene, inputs.views, trial.mono_plane};
         // hybrid-auto: the trial's distance is the nearest plane its chooser may take.
         inputs.nearest_auto_plane = trial.mono_plane;
     }

@@ -55,6 +55,9 @@ HeadsetLoop::HeadsetLoop(const HeadsetStudyOptions& options, const study::Protoc
     live_options.on_committed = [this](const std::string& what) { committed(what); };
     live_ = study::LiveSession::open(store, session_id, protocol, live_options).value_or_throw();
     if (observer) observer_input_.emplace(*observer, protocol, trial_error_px);
+    if (protocol.gaze.record && headset.tracks_eye_gaze()) {
+        gaze_points_ = GazePointFinder::build(renderers.scenes()).value_or_throw();
+    }
 }
 
 void HeadsetLoop::run() {
@@ -115,6 +118,7 @@ void HeadsetLoop::frame() {
     if (headset_.tracks_eye_gaze()) {
         frame.gaze =
             unless_lost(headset_.locate_gaze(frame.display_time_ns)).value_or(std::nullopt);
+        last_frame_->gaze = frame.gaze;
     }
     const study::LiveScreen screen = live_->screen();
     const Rendered rendered =
@@ -131,7 +135,8 @@ void HeadsetLoop::frame() {
             std::chrono::duration<double, std::milli>(Clock::now() - frame_start_).count();
         headset::HeadsetFrame logged = frame;
         logged.display_time_ns = now;  // the runtime's own time goes to xrEndFrame only
-        frame_log_.displayed(logged, screen, tracked, cpu_ms, rendered.renderer);
+        frame_log_.displayed(logged, screen, tracked, cpu_ms, rendered.renderer,
+                             find_gaze_point(frame, rendered));
         // After displayed(): a renderer that waited may return this very frame's time.
         frame_log_.completed(rendered.renderer, rendered.completed);
         live_->frame_presented(frame.index, now).value_or_throw();
@@ -140,6 +145,18 @@ void HeadsetLoop::frame() {
     report_progress(screen);
     if (experimenter_) update_window(frame, screen, now);
     times_.end_frame(rendered.renderer != nullptr);
+}
+
+std::optional<study::GazePointRecord> HeadsetLoop::find_gaze_point(
+    const headset::HeadsetFrame& frame, const Rendered& rendered) {
+    if (!gaze_points_ || !rendered.trial_view || !frame.gaze || !frame.gaze->valid) {
+        return std::nullopt;
+    }
+    const TrialView& view = *rendered.trial_view;
+    // The eyes' size in pixels does not enter an angle; any valid size builds the rig.
+    rig::RigInputs inputs = modes::rig_inputs_for(view.views, extent_.width, extent_.height);
+    inputs.mono_plane = view.mono_plane;
+    return gaze_points_->find(view.scene, view.views.head, inputs, frame.gaze->direction);
 }
 
 void HeadsetLoop::begin_run(const headset::HeadsetFrame& first) {

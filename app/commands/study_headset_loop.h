@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "app/commands/gaze_point.h"
 #include "app/commands/headset_frame_log.h"
 #include "app/commands/participant_answers.h"
 #include "app/commands/screen_pages.h"
@@ -66,10 +67,17 @@ class HeadsetLoop {
     using Clock = std::chrono::steady_clock;
 
     // What one frame rendered: the scene's renderer (or none) and what it returned.
+    // A trial frame's scene as the renderer was given it: where the gaze points are found.
+    struct TrialView {
+        std::string scene;
+        modes::StereoViewInputs views;  // the head placed in the scene
+        double mono_plane = 0.0;        // the trial's m
+    };
     struct Rendered {
         bool shown = false;
         modes::ModeRenderer* renderer = nullptr;
         std::vector<profile::FrameStats> completed;
+        std::optional<TrialView> trial_view;
     };
 
     // The turns and frames (study_headset_loop.cpp).
@@ -93,6 +101,10 @@ class HeadsetLoop {
     void frame();
     // This process's run of the session begins with the runtime's first frame, one display period
     // after the run's clock starts (study/session_runs.h).
+    // The frame's gaze point (gaze_point.h), for a trial frame with a valid gaze sample in a
+    // session that records gaze.
+    std::optional<study::GazePointRecord> find_gaze_point(const headset::HeadsetFrame& frame,
+                                                          const Rendered& rendered);
     void begin_run(const headset::HeadsetFrame& first);
     void report_progress(const study::LiveScreen& screen);
     // The last frames' GPU times into the log, the log to disk, the timing summary.
@@ -167,6 +179,8 @@ class HeadsetLoop {
     std::unique_ptr<study::LiveSession> live_;
     std::optional<study::ObserverInput> observer_input_;
     HeadsetFrameLog frame_log_;
+    // [gaze] record on a runtime that tracks the eyes: where each trial frame's gaze rests.
+    std::unique_ptr<GazePointFinder> gaze_points_;
     PagePanels pages_;  // the protocol's pages of text (instructions, breaks...)
     headset::FrameTimes times_;
     Clock::time_point frame_start_;

@@ -42,6 +42,13 @@ class StudyRenderers {
     void for_each(F f) {
         for (auto& [key, renderer] : renderers_) f(*renderer);
     }
+    // The protocol's scenes by name, for what looks into them besides the renderers (the gaze
+    // points, gaze_point.h); they live as long as this object.
+    std::map<std::string, const scenes::Scene*> scenes() const {
+        std::map<std::string, const scenes::Scene*> all;
+        for (const auto& [name, scene] : scenes_) all[name] = scene.get();
+        return all;
+    }
     const rig::Pose& seat(const std::string& scene) const {
         const scenes::Viewpoint* v = scenes_.at(scene)->find_viewpoint("default");
         return v->head;

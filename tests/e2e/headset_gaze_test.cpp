@@ -4,6 +4,7 @@
 // valid ones along the head's -z (worked out by hand: the point lies on the view axis), the
 // frames inside a blink invalid without a direction. On a runtime without an eye tracker
 // (`[gaze] tracker = false`) the session says so, notes it in the database, and logs no gaze.
+// Where the gaze rests on a wall at a known distance, the logged error is the geometry's.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,6 +16,7 @@
 
 #include "study/study_store.h"
 #include "tests/e2e/test_files.h"
+#include "tests/unit/gltf_test_files.h"
 
 namespace monoplane {
 namespace {
@@ -51,14 +53,15 @@ class HeadsetGazeTest : public ::testing::Test {
 
     // A session on simxr with `gaze` as the script's [gaze] table; its frames.
     std::vector<study::FrameRecord> session(const std::string& gaze, std::string* output,
-                                            std::vector<study::SessionNote>* notes) {
+                                            std::vector<study::SessionNote>* notes,
+                                            const std::string& protocol = "gaze.toml") {
         const fs::path script = dir_ / "script.toml";
         std::ofstream(script) << "hmd = \"vive\"\ndisplay_rate_hz = 5\n" << gaze;
         const fs::path db = dir_ / "gaze.sqlite";
         fs::remove(db);
         EXPECT_EQ(
             run(std::string(MONOPLANE_EXE) + " --validation study run --protocol " +
-                    (dir_ / "gaze.toml").string() + " --participant G --db " + db.string() +
+                    (dir_ / protocol).string() + " --participant G --db " + db.string() +
                     " --headset simulated --observer default --sim-script " + script.string() +
                     " --window off --detail test --resolution-scale 0.1 --neutral-s 0.3 "
                     "--seed 5",
@@ -88,7 +91,9 @@ TEST_F(HeadsetGazeTest, EveryFrameLogsTheGazeAndBlinksAreInvalid) {
     int blinks = 0;
     for (const study::FrameRecord& f : frames) {
         ASSERT_TRUE(f.gaze) << "frame " << f.frame;
-        EXPECT_FALSE(f.gaze_point) << "not derived yet";
+        // Gaze points for every frame that showed a trial's scene with a valid sample.
+        const bool scene = f.shown == "label1" || f.shown == "label2";
+        EXPECT_EQ(f.gaze_point.has_value(), scene && f.gaze->valid) << "frame " << f.frame;
         if (!f.gaze->valid) {
             ++blinks;
             continue;
@@ -103,6 +108,44 @@ TEST_F(HeadsetGazeTest, EveryFrameLogsTheGazeAndBlinksAreInvalid) {
     EXPECT_GT(blinks, 0);
     EXPECT_NEAR(static_cast<double>(blinks) / static_cast<double>(frames.size()), 0.1, 0.03);
     EXPECT_GT(valid, blinks);
+}
+
+// Issue 45, part 3: the error where the eye rests, at a known point. A scene of one wall, 12 m
+// ahead of its camera (the default viewpoint) at eye height, and the eyes fixed straight ahead:
+// every trial frame's gaze point lies on the wall at depth 12 m, in hybrid and in stereo frames.
+// Hybrid at m = 3 shows it where C's ray meets the plane, straight ahead at (0, 0, -3), so each
+// eye's error is atan(d / 2m) - atan(d / 2z) with the Vive's d = 0.064 m, whatever C's offset.
+TEST_F(HeadsetGazeTest, TheErrorAtAGazeOnAWallTwelveMetresAheadIsTheGeometrys) {
+    scenes::testing::TestGltf wall;
+    const int positions =
+        wall.add_positions({{-6, 0, -12}, {6, 0, -12}, {6, 4, -12}, {-6, 4, -12}});
+    wall.add_node(
+        {{"mesh", wall.add_mesh({{"POSITION", positions}}, wall.add_indices({0, 1, 2, 0, 2, 3}))}});
+    wall.json["cameras"] = {
+        {{"type", "perspective"}, {"perspective", {{"yfov", 1.5}, {"znear", 0.1}}}}};
+    wall.add_node({{"camera", 0}, {"translation", {0.0, 1.7, 0.0}}});
+    wall.write_gltf(dir_ / "wall.gltf");
+    std::ofstream(dir_ / "wall.toml")
+        << "name = \"wall\"\nscenes = [\"wall.gltf\"]\nmono_planes = [3]\n"
+           "alternatives = [\"stereo\", \"hybrid\"]\npractice_trials = 0\n[gaze]\nrecord = true\n";
+    std::string output;
+    std::vector<study::SessionNote> notes;
+    const std::vector<study::FrameRecord> frames = session(
+        "[gaze]\nblink_every_s = 1000\n[[fixation]]\nt = 0\nduration = 1000\n"
+        "yaw_pitch_deg = [0, 0]\n",
+        &output, &notes, "wall.toml");
+    constexpr double kArcmin = 60.0 * 180.0 / 3.14159265358979323846;
+    const double expected = (std::atan(0.032 / 3.0) - std::atan(0.032 / 12.0)) * kArcmin;
+    int points = 0;
+    for (const study::FrameRecord& f : frames) {
+        if (!f.gaze_point) continue;
+        ++points;
+        ASSERT_TRUE(f.gaze_point->depth_m) << "frame " << f.frame;
+        EXPECT_NEAR(*f.gaze_point->depth_m, 12.0, 1e-3) << "frame " << f.frame;
+        EXPECT_EQ(f.gaze_point->mono_plane_m, 3.0);
+        EXPECT_NEAR(f.gaze_point->error_arcmin, expected, 0.01) << "frame " << f.frame;
+    }
+    EXPECT_GT(points, 10) << output;
 }
 
 TEST_F(HeadsetGazeTest, ARuntimeWithoutAnEyeTrackerSaysSoAndLogsNoGaze) {

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <limits>
 
+#include <glm/geometric.hpp>
+
 #include "rig/angular_error.h"
 #include "rig/error_budget.h"
 #include "rig/rig.h"
@@ -170,6 +172,86 @@ TEST(RigAngularError, CantedEyesAgreeWithABruteForceOverTheField) {
     EXPECT_GT(worst * kArcmin, 5.0);  // a real error: the turned eyes see C's plane obliquely
     EXPECT_NEAR(error.eye_arcmin, worst * kArcmin, 0.01);
     EXPECT_GE(error.eye_arcmin, worst * kArcmin - 1e-9);  // the refined maximum is no lower
+}
+
+// The error where the gaze rests (angular_error_at_point): a point straight ahead of the eyes'
+// midpoint shows on the plane at (0, 0, -m) whatever s is, so each eye's error is
+// atan(d / 2m) - atan(d / 2z), and atan(d / 2m) at infinity.
+TEST(RigPointError, StraightAheadIsTheDifferenceOfTwoArctangents) {
+    const Rig rig = build_rig(vive(3.0)).value_or_throw();
+    for (const double z : {3.5, 12.0, 250.0}) {
+        const double expected = (std::atan(0.032 / 3.0) - std::atan(0.032 / z)) * kArcmin;
+        const PointAngularError error = angular_error_at_point(rig, {0.0, 0.0, -z});
+        EXPECT_NEAR(error.eye_arcmin[kLeft], expected, 1e-9) << z;
+        EXPECT_NEAR(error.eye_arcmin[kRight], expected, 1e-9) << z;
+    }
+    // A beam 12 m ahead in a hybrid trial at m = 3: 27.50 arcmin, 3/4 of the 36.67 at infinity.
+    EXPECT_NEAR(angular_error_at_point(rig, {0.0, 0.0, -12.0}).larger_arcmin(), 27.5006, 1e-3);
+    EXPECT_NEAR(angular_error_in_direction(rig, {0.0, 0.0, -1.0}).larger_arcmin(),
+                std::atan(0.032 / 3.0) * kArcmin, 1e-9);
+}
+
+// In the eyes' horizontal plane the error is the horizontal one of eye_error above, for points
+// at any direction and depth, infinity included.
+TEST(RigPointError, InTheEyesPlaneItIsTheHorizontalGeometry) {
+    const RigInputs in = vive(8.0);
+    const Rig rig = build_rig(in).value_or_throw();
+    for (const double x : {-9.0, -2.0, 0.5, 6.0}) {
+        for (const double z : {8.5, 20.0, 400.0}) {
+            const glm::dvec3 point(x, 0.0, -z);
+            const PointAngularError error = angular_error_at_point(rig, point);
+            for (int eye : {kLeft, kRight}) {
+                const double x_e = eye == kLeft ? -in.ipd / 2 : in.ipd / 2;
+                EXPECT_NEAR(error.eye_arcmin[eye], eye_error(in, eye, (x - x_e) / z, z) * kArcmin,
+                            1e-9)
+                    << x << " " << z << " eye " << eye;
+            }
+        }
+        const double t = x / 10.0;
+        const PointAngularError sky = angular_error_in_direction(rig, {t, 0.0, -1.0});
+        for (int eye : {kLeft, kRight})
+            EXPECT_NEAR(sky.eye_arcmin[eye], eye_error(in, eye, t, kInf) * kArcmin, 1e-9) << t;
+    }
+}
+
+// Off the eyes' plane the vertical offset counts: the angle between the directions through the
+// pixels where the rig's projections put the point in stereo and in hybrid (eye_pixel_stereo,
+// eye_pixel_hybrid, through the projection matrices), for parallel and canted eyes.
+TEST(RigPointError, OffThePlaneItIsTheAngleBetweenTheTwoPixelsDirections) {
+    RigInputs canted = vive(4.0);
+    canted.eyes[kLeft] = {-1.2, 0.9, -1.2, 1.2};
+    canted.eyes[kRight] = {-0.9, 1.2, -1.2, 1.2};
+    canted.cant = {0.2, -0.2};
+    for (const RigInputs& in : {vive(4.0), canted}) {
+        const Rig rig = build_rig(in).value_or_throw();
+        const glm::dvec3 point(3.0, 2.5, -9.0);
+        const PointAngularError error = angular_error_at_point(rig, point);
+        for (int eye : {kLeft, kRight}) {
+            const Tangents& f = in.eyes[eye];
+            // Pixel (x right, y down) -> the eye's own direction (tx, ty, -1).
+            const auto direction = [&](const glm::dvec2& pixel) {
+                return glm::dvec3(f.left + (f.right - f.left) * pixel.x / in.eye_width,
+                                  f.up - (f.up - f.down) * pixel.y / in.eye_height, -1.0);
+            };
+            const glm::dvec3 a = direction(eye_pixel_stereo(rig, eye, point));
+            const glm::dvec3 b = direction(eye_pixel_hybrid(rig, eye, point));
+            const double expected =
+                std::acos(glm::dot(a, b) / (glm::length(a) * glm::length(b))) * kArcmin;
+            EXPECT_GT(expected, 1.0);
+            EXPECT_NEAR(error.eye_arcmin[eye], expected, 1e-4) << "eye " << eye;
+        }
+    }
+}
+
+TEST(RigPointError, ZeroNearerThanThePlaneAndWhereCIsSkipped) {
+    const Rig rig = build_rig(vive(8.0)).value_or_throw();
+    EXPECT_EQ(angular_error_at_point(rig, {2.0, 1.0, -8.0}).larger_arcmin(), 0.0);
+    EXPECT_EQ(angular_error_at_point(rig, {0.0, 0.0, -0.5}).larger_arcmin(), 0.0);
+    RigInputs all_stereo = vive(2000.0);
+    const Rig skipped = build_rig(all_stereo).value_or_throw();
+    ASSERT_TRUE(skipped.mono_skipped);
+    EXPECT_EQ(angular_error_at_point(skipped, {0.0, 0.0, -3000.0}).larger_arcmin(), 0.0);
+    EXPECT_EQ(angular_error_in_direction(skipped, {0.0, 0.0, -1.0}).larger_arcmin(), 0.0);
 }
 
 TEST(RigErrorBudget, DisparityBudgetInvertsTwoArctangents) {
