@@ -70,8 +70,9 @@ modes::RgbaImage calibration_grid() {
 class CheckLoop {
   public:
     CheckLoop(const HeadsetCheckOptions& options, headset::OpenXrHeadset& headset,
-              const vk_core::Context& ctx)
+              const vk_core::Context& ctx, headset::EyeGaze eye_gaze)
         : options_(options), headset_(headset), compositor_(ctx), ring_(ctx) {
+        result_.eye_gaze = eye_gaze;
         compositor_.set_overlay("instruction", headset::render_text(kInstruction, {}));
         compositor_.set_overlay("grid", calibration_grid());
     }
@@ -121,6 +122,8 @@ class CheckLoop {
             progress.refresh_hz = result_.refresh_hz;
             progress.ipd_m = result_.ipd_m;
             progress.interaction_profile = result_.interaction_profile;
+            progress.eye_gaze = result_.eye_gaze;
+            progress.gaze_frames = result_.gaze_frames;
             request = options_.on_turn(progress);
         }
         if (request == CheckRequest::Confirm) {
@@ -179,12 +182,27 @@ class CheckLoop {
         const Result<std::string> profile = headset_.interaction_profile();
         MONOPLANE_TRY(profile);
         if (!profile->empty()) result_.interaction_profile = *profile;
+        // After sync_controls, which synced the gaze action too.
+        const Result<bool> gaze = gaze_valid(*frame);
+        MONOPLANE_TRY(gaze);
         if (frame->should_render) {
             MONOPLANE_TRY(draw(*frame));
         }
         MONOPLANE_TRY(headset_.end_frame(*frame));
-        if (frame->should_render && frame->views_valid) ++result_.frames_shown;
+        if (frame->should_render && frame->views_valid) {
+            ++result_.frames_shown;
+            if (*gaze) ++result_.gaze_frames;
+        }
         return Ok{};
+    }
+
+    // Whether the eye tracker had a valid sample for the frame (false without eye gaze).
+    Result<bool> gaze_valid(const headset::HeadsetFrame& frame) {
+        if (!headset_.tracks_eye_gaze()) return false;
+        const Result<std::optional<headset::GazeSample>> sample =
+            headset_.locate_gaze(frame.display_time_ns);
+        MONOPLANE_TRY(sample);
+        return sample->has_value() && (*sample)->valid;
     }
 
     // What only a running session tells: the display's rate and the eyes' distance.
@@ -231,7 +249,7 @@ class CheckLoop {
 // The check on a created headset: its Vulkan device, session and frame loop. The device owns
 // the headset, so OpenXR goes before Vulkan on every way out (headset_device.h).
 Result<HeadsetCheck> check_on(std::unique_ptr<headset::OpenXrHeadset> created,
-                              const HeadsetCheckOptions& options) {
+                              headset::EyeGaze eye_gaze, const HeadsetCheckOptions& options) {
     Result<headset::HeadsetDevice> opened =
         headset::HeadsetDevice::create(std::move(created), options.global.context_options());
     MONOPLANE_TRY(opened);
@@ -244,7 +262,7 @@ Result<HeadsetCheck> check_on(std::unique_ptr<headset::OpenXrHeadset> created,
     }
     HeadsetCheck result;
     {
-        CheckLoop loop(options, headset, ctx);
+        CheckLoop loop(options, headset, ctx, eye_gaze);
         result = loop.run();
     }
     result.width = static_cast<int>(headset.eye_extent().width);
@@ -295,11 +313,15 @@ Result<HeadsetCheck> run_headset_check(const HeadsetCheckOptions& options) {
     MONOPLANE_TRY(check_headset_name(options.headset.headset));
     try {
         RuntimeSelection selection(options.headset);
+        // Eye gaze asked for wherever the runtime offers it, to report whether the headset
+        // tracks the eyes (and sees them during the check); nothing of it is stored.
         Result<std::unique_ptr<headset::OpenXrHeadset>> created =
-            headset::OpenXrHeadset::create(options.global.validation, false);
+            headset::OpenXrHeadset::create(options.global.validation, false, /*eye_gaze=*/true);
+        const bool gaze_offered = created && headset::runtime_offers_eye_gaze();
         selection.instance_created();
         MONOPLANE_TRY(created);
-        return check_on(std::move(created).value(), options);
+        const headset::EyeGaze eye_gaze = headset::eye_gaze_support(gaze_offered, **created);
+        return check_on(std::move(created).value(), eye_gaze, options);
     } catch (const std::exception& e) {
         // A Vulkan failure (a lost device) or a bad simulated script: a message, not a crash.
         return Error{std::string("the headset check failed: ") + e.what()};

@@ -1,7 +1,8 @@
 // The launcher's headset step (`monoplane lab`, docs/headsets.md): a probe of the OpenXR runtime
 // (no session), and the headset check, a short session that shows the participant a calibration
 // screen, not a trial, so the fit can be checked while the runtime reports what only a session
-// knows: the refresh rate, the eyes' distance and the controllers' interaction profile.
+// knows: the refresh rate, the eyes' distance, the controllers' interaction profile and whether
+// the eye tracker sees the participant's eyes.
 #pragma once
 
 #include <cstdint>
@@ -48,6 +49,8 @@ struct HeadsetCheckProgress {
     double refresh_hz = 0.0;
     std::optional<double> ipd_m;
     std::string interaction_profile;
+    headset::EyeGaze eye_gaze = headset::EyeGaze::Unknown;
+    std::int64_t gaze_frames = 0;  // frames shown with a valid gaze sample
 };
 
 struct HeadsetCheckOptions {
@@ -73,6 +76,12 @@ struct HeadsetCheck {
     std::optional<double> ipd_m;      // distance between the located eyes (xrLocateViews), metres
     std::string interaction_profile;  // the bound profile's path; "": none bound
     std::int64_t frames_shown = 0;    // frames whose calibration screen was submitted
+    // Whether the headset tracks the eyes (the check asks for eye gaze where the runtime offers
+    // it), and of the frames shown, those whose gaze sample was valid: a tracker that is there
+    // but cannot see the participant's eyes (not calibrated, the headset badly fitted) shows as
+    // few valid frames.
+    headset::EyeGaze eye_gaze = headset::EyeGaze::Unknown;
+    std::int64_t gaze_frames = 0;
 };
 
 // Runs the headset check on the runtime `options.headset.headset` names: a session over Vulkan

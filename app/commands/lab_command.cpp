@@ -151,6 +151,8 @@ Result<lab::HeadsetReport> probe_for_lab(const std::string& headset, const LabOp
     r.system = probe->system;
     r.width = probe->width;
     r.height = probe->height;
+    r.eye_gaze = headset::eye_gaze_name(probe->eye_gaze);
+    r.eye_gaze_text = headset::eye_gaze_text(probe->eye_gaze);
     r.message = probe->message;
     return r;
 }
@@ -165,6 +167,9 @@ lab::HeadsetReport report_of(const HeadsetCheck& check) {
     r.refresh_hz = check.refresh_hz;
     r.ipd_m = check.ipd_m;
     r.interaction_profile = check.interaction_profile;
+    r.eye_gaze = headset::eye_gaze_name(check.eye_gaze);
+    r.eye_gaze_text = headset::eye_gaze_text(check.eye_gaze);
+    r.check_gaze_frames = check.gaze_frames;
     r.check = check_end_name(check.end);
     r.check_message = check.message;
     r.check_frames = check.frames_shown;
@@ -186,7 +191,8 @@ Result<lab::HeadsetReport> check_for_lab(
     options.global = global;
     options.on_turn = [&turn, observer_answers](const HeadsetCheckProgress& p) {
         const lab::CheckAnswer answer =
-            turn({p.frames_shown, p.refresh_hz, p.ipd_m, p.interaction_profile});
+            turn({p.frames_shown, p.refresh_hz, p.ipd_m, p.interaction_profile,
+                  p.eye_gaze == headset::EyeGaze::Tracked, p.gaze_frames});
         if (observer_answers && answer == lab::CheckAnswer::Continue &&
             p.frames_shown >= kObserverConfirmFrames)
             return CheckRequest::Confirm;

@@ -1,14 +1,29 @@
 // HeadsetLoop's experimenter window: each frame's view of the session (progress, labels, log
-// tail, questionnaire, the page the participant reads), its screenshot, and a lost runtime's
-// last frame.
+// tail, questionnaire, the page the participant reads, the participant's gaze), its screenshot,
+// and a lost runtime's last frame.
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 
 #include "app/commands/study_headset_loop.h"
+#include "app/commands/study_headset_seat.h"
 #include "app/commands/window_bridge.h"
+#include "app/window/gaze_marker.h"
 
 namespace monoplane::app {
+namespace {
+
+// The frame's gaze in the mirrored image, the left eye's (turned by its cant, with its own
+// frustum); none without a valid sample or located views.
+std::optional<std::array<double, 2>> mirrored_gaze(const headset::HeadsetFrame& frame) {
+    if (!frame.gaze || !frame.gaze->valid || !frame.views_valid) return std::nullopt;
+    const LocatedHead located = located_head(frame);
+    return window::gaze_in_eye_image(frame.gaze->direction, located.cant[0],
+                                     frame.views[0].tangents);
+}
+
+}  // namespace
 
 void HeadsetLoop::show_loss() {
     const std::string message = loss_message();
@@ -72,6 +87,8 @@ window::ExperimenterView HeadsetLoop::window_view(const headset::HeadsetFrame& f
     view.frame_index = static_cast<std::uint64_t>(frame.index);
     view.frame_ms = std::chrono::duration<double, std::milli>(Clock::now() - frame_start_).count();
     mirror_page(screen, view);
+    view.gaze_tracked = headset_.tracks_eye_gaze();
+    view.gaze_uv = mirrored_gaze(frame);
     view.note_status = note_status_;
     view.status_line =
         std::string("session ") + std::string(headset::session_phase_name(headset_.phase()));
@@ -79,9 +96,13 @@ window::ExperimenterView HeadsetLoop::window_view(const headset::HeadsetFrame& f
     return view;
 }
 
+// The PNG, and beside it what the window showed as JSON (the same name, .json).
 void HeadsetLoop::save_screenshot() {
     experimenter_->save_screenshot(options_.screenshot).value_or_throw();
-    std::cerr << "wrote " << options_.screenshot << "\n";
+    const std::filesystem::path state =
+        std::filesystem::path(options_.screenshot).replace_extension(".json");
+    experimenter_->save_state(state).value_or_throw();
+    std::cerr << "wrote " << options_.screenshot << " and " << state.string() << "\n";
     screenshot_saved_ = true;
 }
 

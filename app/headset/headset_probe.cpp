@@ -1,6 +1,10 @@
 #include "app/headset/headset_probe.h"
 
+#include <openxr/openxr.h>
+
+#include <cstring>
 #include <memory>
+#include <vector>
 
 #include "app/headset/openxr_headset.h"
 
@@ -13,12 +17,69 @@ constexpr const char* kSimulatedOffered =
 
 }  // namespace
 
+const char* eye_gaze_name(EyeGaze gaze) {
+    switch (gaze) {
+        case EyeGaze::Unknown:
+            return "";
+        case EyeGaze::NotOffered:
+            return "not offered";
+        case EyeGaze::NotTracked:
+            return "not tracked";
+        case EyeGaze::Tracked:
+            return "tracked";
+    }
+    return "invalid";
+}
+
+std::string eye_gaze_text(EyeGaze gaze) {
+    switch (gaze) {
+        case EyeGaze::Unknown:
+            return "";
+        case EyeGaze::NotOffered:
+            return "Eye gaze: not available, this OpenXR runtime offers no eye tracking "
+                   "(protocols that record gaze record none)";
+        case EyeGaze::NotTracked:
+            return "Eye gaze: not tracked, the runtime offers eye tracking but this headset "
+                   "has no eye tracker or it is switched off (protocols that record gaze "
+                   "record none)";
+        case EyeGaze::Tracked:
+            return "Eye gaze: tracked (protocols that record gaze record it)";
+    }
+    return "";
+}
+
+bool runtime_offers_eye_gaze() {
+    std::uint32_t count = 0;
+    if (XR_FAILED(xrEnumerateInstanceExtensionProperties(nullptr, 0, &count, nullptr))) {
+        return false;
+    }
+    std::vector<XrExtensionProperties> extensions(count, {XR_TYPE_EXTENSION_PROPERTIES});
+    if (XR_FAILED(
+            xrEnumerateInstanceExtensionProperties(nullptr, count, &count, extensions.data()))) {
+        return false;
+    }
+    for (const XrExtensionProperties& e : extensions) {
+        if (std::strcmp(e.extensionName, XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME) == 0) {
+            return true;
+        }
+    }
+    return false;
+}
+
+EyeGaze eye_gaze_support(bool offered, const OpenXrHeadset& headset) {
+    if (headset.tracks_eye_gaze()) return EyeGaze::Tracked;
+    return offered ? EyeGaze::NotTracked : EyeGaze::NotOffered;
+}
+
 Result<HeadsetProbe> probe_runtime(bool validation) {
     HeadsetProbe probe;
     // No layer depth: the probe makes no session, and the extension must not be a reason to fail.
-    // Every failure here, a missing validation layer included (it cannot be told apart from a
-    // missing runtime, whose extension list would offer XR_EXT_debug_utils), is a message.
-    Result<std::unique_ptr<OpenXrHeadset>> created = OpenXrHeadset::create(validation, false);
+    // Eye gaze asked for: enabling the extension only asks the system whether it tracks the
+    // eyes; nothing is sampled. Every failure here, a missing validation layer included (it
+    // cannot be told apart from a missing runtime, whose extension list would offer
+    // XR_EXT_debug_utils), is a message.
+    Result<std::unique_ptr<OpenXrHeadset>> created =
+        OpenXrHeadset::create(validation, false, /*eye_gaze=*/true);
     if (!created) {
         probe.message = created.error().message + "." + kSimulatedOffered;
         return probe;
@@ -26,6 +87,7 @@ Result<HeadsetProbe> probe_runtime(bool validation) {
     const OpenXrHeadset& headset = *created.value();
     probe.runtime = headset.runtime_name();
     probe.system = headset.system_name();
+    probe.eye_gaze = eye_gaze_support(runtime_offers_eye_gaze(), headset);
     const Result<vk::Extent2D> extent = headset.recommended_eye_extent();
     if (!extent) {
         probe.message = "the OpenXR runtime '" + probe.runtime +

@@ -10,6 +10,26 @@
 
 namespace monoplane::headset {
 
+class OpenXrHeadset;
+
+// Whether the headset tracks the participant's gaze, as a protocol's [gaze] record needs:
+// Tracked (the runtime offers XR_EXT_eye_gaze_interaction and its system supports it),
+// NotTracked (the runtime offers the extension but this headset has no eye tracker, or it is
+// off), NotOffered (the runtime has no eye gaze at all); Unknown before a runtime was asked.
+enum class EyeGaze { Unknown, NotOffered, NotTracked, Tracked };
+// "" (Unknown), "not offered", "not tracked", "tracked": the launcher's state and tests.
+const char* eye_gaze_name(EyeGaze gaze);
+// A sentence for the experimenter: what it means for a protocol that records gaze.
+std::string eye_gaze_text(EyeGaze gaze);
+
+// Whether the runtime the OpenXR loader selects now offers XR_EXT_eye_gaze_interaction (false
+// when none answers). Ask while that runtime is still the one selected (XR_RUNTIME_JSON), e.g.
+// right after creating its instance.
+bool runtime_offers_eye_gaze();
+// For a headset created with eye gaze asked for (OpenXrHeadset::create's eye_gaze) on a runtime
+// that `offered` it or not.
+EyeGaze eye_gaze_support(bool offered, const OpenXrHeadset& headset);
+
 struct HeadsetProbe {
     bool runtime_available = false;  // an OpenXR runtime with a headset monoplane can drive
     std::string runtime;             // the runtime's name and version, "Monado 21.0.0"
@@ -20,6 +40,7 @@ struct HeadsetProbe {
     double refresh_hz = 0.0;
     std::optional<double> ipd_m;
     std::string interaction_profile;  // "": none bound
+    EyeGaze eye_gaze = EyeGaze::Unknown;
     // Why the runtime is not available and what to do (empty when it is).
     std::string message;
 };

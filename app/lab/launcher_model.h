@@ -85,7 +85,11 @@ struct HeadsetReport {
     double refresh_hz = 0.0;          // 0: not reported
     std::optional<double> ipd_m;      // the IPD the runtime reports
     std::string interaction_profile;  // once bound
-    std::string message;              // e.g. "no OpenXR runtime"; empty when available
+    // Whether the headset tracks the eyes: "tracked", "not tracked", "not offered" (by the
+    // runtime), "" not known; and that in a sentence for the experimenter.
+    std::string eye_gaze;
+    std::string eye_gaze_text;
+    std::string message;  // e.g. "no OpenXR runtime"; empty when available
     // Set by the window from the last check: "no controller bound: ..." when the check found no
     // controller bound and neither [responses] keys nor a simulated observer answer; else "".
     std::string answer_warning;
@@ -95,6 +99,7 @@ struct HeadsetReport {
     std::string check;
     std::string check_message;
     std::int64_t check_frames = 0;
+    std::int64_t check_gaze_frames = 0;  // of check_frames, those with a valid gaze sample
 };
 
 // What Start (or Resume) hands to `study run` (or `study resume`): the fields of the commands'

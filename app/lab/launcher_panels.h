@@ -71,6 +71,7 @@ class LauncherPanels {
     void draw_variable(const VariableField& field);
     void draw_headset();
     void draw_headset_report();
+    void draw_eye_gaze(const HeadsetReport& report);
     void draw_check_result();
     // The session settings (session_settings_panel.cpp): the performance preset, its frame-time
     // estimate with the verdict, and Measure / Cancel.

@@ -39,6 +39,7 @@ void LauncherPanels::probe_if_needed() {
         report.check = before.check;
         report.check_message = before.check_message;
         report.check_frames = before.check_frames;
+        report.check_gaze_frames = before.check_gaze_frames;
     }
     report.answer_warning = answers_warning(report.interaction_profile, report.check_frames);
     model_.set_headset_report(std::move(report));
@@ -119,11 +120,30 @@ void LauncherPanels::draw_headset_report() {
     if (report.ipd_m) ImGui::Text("IPD: %.1f mm", *report.ipd_m * 1000.0);
     if (!report.interaction_profile.empty())
         ImGui::Text("Controllers: %s", report.interaction_profile.c_str());
+    draw_eye_gaze(report);
     if (ImGui::Button("Check the headset (Ctrl+H)")) request_check();
     controls_.mark("check");
     ImGui::SameLine();
     dim_text("shows the participant a calibration screen until CONFIRM");
     draw_check_result();
+}
+
+// Whether gaze can be recorded, and after a check whether the tracker saw the eyes: a tracker
+// that lost them in most frames (not calibrated for this participant, the headset badly seated)
+// records little.
+void LauncherPanels::draw_eye_gaze(const HeadsetReport& report) {
+    if (report.eye_gaze.empty()) return;
+    if (report.eye_gaze != "tracked") {
+        dim_text(report.eye_gaze_text);
+        return;
+    }
+    if (report.check.empty() || report.check_frames == 0) {
+        ImGui::TextUnformatted(report.eye_gaze_text.c_str());
+        return;
+    }
+    ImGui::Text("%s; valid in %lld of the check's %lld frames", report.eye_gaze_text.c_str(),
+                static_cast<long long>(report.check_gaze_frames),
+                static_cast<long long>(report.check_frames));
 }
 
 void LauncherPanels::draw_check_result() {

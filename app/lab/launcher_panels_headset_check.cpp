@@ -34,6 +34,7 @@ void LauncherPanels::run_check(const std::function<CheckAnswer(const HeadsetChec
         report.check = "failed";
         report.check_message = checked.error().message;
         report.check_frames = 0;
+        report.check_gaze_frames = 0;
     }
     // Judged as the report is stored, not at the next frame's drawing: no frame (nor the
     // state the window reports) shows a check's end without its verdict on the answers.
@@ -71,6 +72,11 @@ CheckAnswer LauncherPanels::draw_check(const HeadsetCheckTurn& turn) {
         "profile %s",
         static_cast<long long>(turn.frames_shown), ipd, turn.refresh_hz,
         turn.interaction_profile.empty() ? "none yet" : turn.interaction_profile.c_str());
+    if (turn.gaze_tracked) {
+        ImGui::Text("Eye gaze: valid in %lld of %lld frames",
+                    static_cast<long long>(turn.gaze_frames),
+                    static_cast<long long>(turn.frames_shown));
+    }
     // Said at once, while the participant waits for an answer they cannot give.
     judge_answers(turn.interaction_profile, turn.frames_shown);
     message_line(model_.headset_report().answer_warning);

@@ -115,6 +115,8 @@ void write_headset(JsonWriter& w, const LauncherModel& m) {
         .value("check", h.check)
         .value("check_message", h.check_message)
         .value("check_frames", h.check_frames)
+        .value("eye_gaze", h.eye_gaze)
+        .value("eye_gaze_frames", h.check_gaze_frames)
         .end_object();
 }
 

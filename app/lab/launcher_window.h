@@ -28,6 +28,8 @@ struct HeadsetCheckTurn {
     double refresh_hz = 0.0;
     std::optional<double> ipd_m;
     std::string interaction_profile;
+    bool gaze_tracked = false;
+    std::int64_t gaze_frames = 0;  // frames shown with a valid gaze sample
 };
 
 // What the experimenter asks after each turn of the check (app::CheckRequest).

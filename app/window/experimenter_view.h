@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,12 @@ struct ExperimenterView {
     // The outcome of the last note typed ("note stored at trial 12", or why it was not).
     std::string note_status;
     std::string status_line;
+    // Eye gaze, in sessions that record it on a runtime that tracks the eyes: gaze_tracked, and
+    // this frame's gaze point in the mirror's image (u right, v down, 0..1 across it, from
+    // gaze_in_eye_image: outside 0..1 while the participant looks beyond the mirrored eye's
+    // field); none while the tracker has no valid sample (a blink, the eyes lost).
+    bool gaze_tracked = false;
+    std::optional<std::array<double, 2>> gaze_uv;
     std::uint64_t frame_index = 0;
     double frame_ms = 0.0;
 };

@@ -2,10 +2,13 @@
 
 #include <imgui.h>
 
+#include <fstream>
 #include <string>
 
 #include "app/window/imgui_backend_access.h"
 #include "app/window/panels.h"
+#include "app/window/view_text.h"
+#include "common/json_writer.h"
 
 namespace monoplane::window {
 
@@ -18,6 +21,11 @@ struct ExperimenterWindow::Impl {
     std::unique_ptr<MirrorTexture> mirror;
     PanelState panels;
     std::vector<ResponseKeyBinding> response_keys;
+    // Of the last frame's view, for save_state.
+    std::uint64_t frame_index = 0;
+    Phase phase = Phase::Starting;
+    bool gaze_tracked = false;
+    std::optional<std::array<double, 2>> gaze_uv;
 
     static void bind_mirror(const ImDrawList* list, const ImDrawCmd* command);
 };
@@ -101,6 +109,10 @@ std::vector<Command> ExperimenterWindow::frame(const ExperimenterView& view) {
     mirror.bind = &Impl::bind_mirror;
     mirror.bind_data = &s;
     std::vector<Command> clicked = draw_panels(view, mirror, s.panels);
+    s.frame_index = view.frame_index;
+    s.phase = view.phase;
+    s.gaze_tracked = view.gaze_tracked;
+    s.gaze_uv = view.gaze_uv;
     commands.insert(commands.end(), clicked.begin(), clicked.end());
     s.desktop->end_frame();
     return commands;
@@ -116,6 +128,40 @@ bool ExperimenterWindow::close_requested() const {
 
 Result<void> ExperimenterWindow::save_screenshot(const std::filesystem::path& png) {
     return impl_->desktop->save_screenshot(png);
+}
+
+Result<void> ExperimenterWindow::save_state(const std::filesystem::path& json) const {
+    const Impl& s = *impl_;
+    JsonWriter w(JsonFormat{.indented = true, .significant_digits = 0});
+    w.begin_object().value("frame_index", s.frame_index).value("phase", phase_name(s.phase));
+    const FitRect& m = s.panels.mirror_rect;
+    w.begin_object("mirror")
+        .value("x", double{m.x})
+        .value("y", double{m.y})
+        .value("width", double{m.width})
+        .value("height", double{m.height})
+        .end_object();
+    w.begin_object("gaze").value("tracked", s.gaze_tracked);
+    if (s.gaze_uv) {
+        w.begin_array("uv").value({}, (*s.gaze_uv)[0]).value({}, (*s.gaze_uv)[1]).end_array();
+    } else {
+        w.null("uv");
+    }
+    const GazeMarkerState& marker = s.panels.gaze;
+    w.value("shown", gaze_shown_name(marker.shown)).value("radius", double{marker.radius});
+    if (marker.centre) {
+        w.begin_array("marker")
+            .value({}, double{marker.centre->x})
+            .value({}, double{marker.centre->y})
+            .end_array();
+    } else {
+        w.null("marker");
+    }
+    w.end_object().end_object();
+    std::ofstream out(json, std::ios::binary);
+    out << w.str();
+    if (!out.flush()) return Error{"cannot write the window's state to " + json.string()};
+    return Ok{};
 }
 
 vk::Extent2D ExperimenterWindow::extent() const {

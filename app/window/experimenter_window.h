@@ -71,6 +71,13 @@ class ExperimenterWindow {
     // called after frame(); fails while minimised or when the surface cannot be read back.
     Result<void> save_screenshot(const std::filesystem::path& png);
 
+    // Writes what the last frame showed as JSON, for tests and for checking a session's window
+    // afterwards: the frame's index and phase, where the mirror was drawn and the gaze marker
+    // ({"frame_index", "phase", "mirror": {x, y, width, height}, "gaze": {"tracked", "uv":
+    // [u, v] or null, "shown": none|point|outside|lost, "radius", "marker": [x, y] or null}},
+    // window pixels). May be called after frame().
+    Result<void> save_state(const std::filesystem::path& json) const;
+
     // The window's drawable size in pixels (0 x 0 while minimised).
     vk::Extent2D extent() const;
     // Asks the desktop for another window size (tests, scripted dry runs); it takes effect within

@@ -33,7 +33,7 @@ void labelled(const char* label, const std::string& value) {
     ImGui::TextUnformatted(value.empty() ? "-" : value.c_str());
 }
 
-void draw_mirror(const MirrorImage& mirror, PanelState& state) {
+void draw_mirror(const ExperimenterView& view, const MirrorImage& mirror, PanelState& state) {
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const ImVec2 room = ImGui::GetContentRegionAvail();
     const FitRect fit = fit_aspect(room.x, room.y, mirror.width, mirror.height);
@@ -44,6 +44,8 @@ void draw_mirror(const MirrorImage& mirror, PanelState& state) {
     draw_list->AddCallback(mirror.bind, mirror.bind_data);
     ImGui::Image(mirror.texture, ImVec2(fit.width, fit.height));
     draw_list->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+    // After the reset: the marker is drawn with ImGui's own texture, over the mirror.
+    draw_gaze_marker(*draw_list, state.mirror_rect, view, state.gaze);
 }
 
 void draw_session(const ExperimenterView& view) {
@@ -185,12 +187,15 @@ void draw_log(const ExperimenterView& view, PanelState& state) {
 std::vector<Command> draw_panels(const ExperimenterView& view, const MirrorImage& mirror,
                                  PanelState& state) {
     std::vector<Command> commands;
+    // Nothing shown unless the mirror is drawn this frame (a window too small has none).
+    state.gaze.shown = GazeShown::Nothing;
+    state.gaze.centre.reset();
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const float left = display.x * kLeftColumn;
     const float mirror_height = display.y * kMirrorRows;
 
     place(0, 0, left, mirror_height);
-    if (ImGui::Begin("Participant's view", nullptr, kPanelFlags)) draw_mirror(mirror, state);
+    if (ImGui::Begin("Participant's view", nullptr, kPanelFlags)) draw_mirror(view, mirror, state);
     ImGui::End();
 
     place(0, mirror_height, left, display.y - mirror_height);

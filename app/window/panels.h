@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/window/experimenter_view.h"
+#include "app/window/mirror_gaze.h"
 #include "app/window/mirror_texture.h"
 
 namespace monoplane::window {
@@ -22,7 +23,8 @@ struct MirrorImage {
 
 // What the panels remember between frames.
 struct PanelState {
-    FitRect mirror_rect;  // where the mirror was drawn last, in window pixels
+    FitRect mirror_rect;   // where the mirror was drawn last, in window pixels
+    GazeMarkerState gaze;  // the gaze marker over the mirror
     std::size_t log_lines_seen = 0;
     std::array<char, 1024> note{};  // the note being typed (sent and cleared on Enter)
 };

@@ -395,6 +395,7 @@ TEST_F(LabWindowTest, HeadsetCheckConfirmedShowsTheRuntimesMeasurements) {
     EXPECT_GT(probed["width"], 0);
     EXPECT_GT(probed["height"], 0);
     EXPECT_EQ(probed["check"], "");
+    EXPECT_EQ(probed["eye_gaze"], "tracked") << probed;  // simxr's eye tracker, before any check
     xdo("key ctrl+h");
     ASSERT_TRUE(wait_for([&] { return lab.state()["headset"]["check"] != ""; }, 120))
         << lab.state().dump(1) << lab.log();
@@ -406,6 +407,10 @@ TEST_F(LabWindowTest, HeadsetCheckConfirmedShowsTheRuntimesMeasurements) {
     EXPECT_NEAR(h["refresh_hz"].get<double>(), 72.0, 1e-3);
     EXPECT_EQ(h["interaction_profile"], "/interaction_profiles/htc/vive_controller");
     EXPECT_GT(h["check_frames"].get<int>(), 0);
+    // simxr's default gaze: tracked, its blinks (0.15 s every 4 s, the first at 2 s) after the
+    // check's CONFIRM at 0.3 s, so every frame shown had a valid sample.
+    EXPECT_EQ(h["eye_gaze"], "tracked") << h;
+    EXPECT_EQ(h["eye_gaze_frames"], h["check_frames"]) << h;
     EXPECT_EQ(lab.state()["step"], "headset");  // the launcher stays where it was
     // The check's panel was shown while it ran.
     bool check_shot = false;

@@ -1,7 +1,8 @@
 // The launcher's headset step against simxr through the real OpenXR loader, with the Vulkan and
 // OpenXR validation layers on (any message fails): the probe (instance and system only) and the
 // headset check (a session showing the calibration screen), ended by the scripted controller's
-// CONFIRM, the experimenter, the timeout, or the runtime ending or losing the session.
+// CONFIRM, the experimenter, the timeout, or the runtime ending or losing the session; both say
+// whether the headset tracks the eyes.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -73,6 +74,17 @@ TEST(HeadsetProbeTest, SimulatedReportsRuntimeSystemAndRecommendedSize) {
     EXPECT_EQ(probe.message, "");
 }
 
+// simxr offers eye gaze; its script decides whether the headset has an eye tracker.
+TEST(HeadsetProbeTest, SimulatedSaysWhetherTheEyesAreTracked) {
+    HeadsetStudyOptions simulation;
+    EXPECT_EQ(probe_headset(true, simulation, true).value_or_throw().eye_gaze,
+              headset::EyeGaze::Tracked);
+    simulation.sim_script = write_script(test_folder(), "[gaze]\ntracker = false\n");
+    const headset::HeadsetProbe probe = probe_headset(true, simulation, true).value_or_throw();
+    EXPECT_EQ(probe.eye_gaze, headset::EyeGaze::NotTracked);
+    EXPECT_TRUE(probe.runtime_available) << probe.message;
+}
+
 TEST(HeadsetProbeTest, MissingRuntimeSaysSoAndOffersSimulated) {
     // A simulated probe first: it must not leave the loader pointed at simxr.
     ASSERT_TRUE(probe_headset(true, {}, true).value_or_throw().runtime_available);
@@ -82,6 +94,7 @@ TEST(HeadsetProbeTest, MissingRuntimeSaysSoAndOffersSimulated) {
     EXPECT_FALSE(probe.runtime_available);
     EXPECT_NE(probe.message.find("no OpenXR runtime"), std::string::npos) << probe.message;
     EXPECT_NE(probe.message.find("simulated"), std::string::npos) << probe.message;
+    EXPECT_EQ(probe.eye_gaze, headset::EyeGaze::Unknown);  // no runtime to ask
     EXPECT_EQ(std::string(std::getenv("XR_RUNTIME_JSON")), missing.string());
     unsetenv("XR_RUNTIME_JSON");
 }
@@ -141,6 +154,48 @@ TEST(HeadsetCheckTest, ScriptedConfirmEndsItWithTheRuntimesMeasurements) {
         EXPECT_GT(bright, 100) << eye;
         EXPECT_GT(dark, 100) << eye;
     }
+}
+
+// The check asks for eye gaze: with simxr's tracker on it is tracked, and every frame shown has a
+// valid sample (no blink scripted); with the eyes closed all along (a tracker that cannot see
+// them) it is tracked in none; without a tracker it is not tracked.
+TEST(HeadsetCheckTest, SaysWhetherTheEyeTrackerSeesTheEyes) {
+    const fs::path dir = test_folder();
+    const auto check = [&](const std::string& gaze) {
+        HeadsetCheckOptions options = check_options(write_script(dir, gaze));
+        options.on_turn = [](const HeadsetCheckProgress& progress) {
+            return progress.frames_shown >= 10 ? CheckRequest::Confirm : CheckRequest::Continue;
+        };
+        return run_headset_check(options).value_or_throw();
+    };
+    HeadsetCheck seen = check("[gaze]\nblink_every_s = 0\n");
+    EXPECT_EQ(seen.end, CheckEnd::Confirmed) << seen.message;
+    EXPECT_EQ(seen.eye_gaze, headset::EyeGaze::Tracked);
+    EXPECT_GE(seen.frames_shown, 10);
+    EXPECT_EQ(seen.gaze_frames, seen.frames_shown);
+
+    const HeadsetCheck closed = check("[[blink]]\nt = 0\nduration = 1000\n");
+    EXPECT_EQ(closed.eye_gaze, headset::EyeGaze::Tracked);
+    EXPECT_GE(closed.frames_shown, 10);
+    EXPECT_EQ(closed.gaze_frames, 0);
+
+    const HeadsetCheck none = check("[gaze]\ntracker = false\n");
+    EXPECT_EQ(none.eye_gaze, headset::EyeGaze::NotTracked);
+    EXPECT_EQ(none.gaze_frames, 0);
+    EXPECT_GE(none.frames_shown, 10);
+}
+
+// The words the launcher shows for each answer.
+TEST(HeadsetCheckTest, EyeGazeNamesAndSentences) {
+    EXPECT_STREQ(headset::eye_gaze_name(headset::EyeGaze::Tracked), "tracked");
+    EXPECT_STREQ(headset::eye_gaze_name(headset::EyeGaze::NotTracked), "not tracked");
+    EXPECT_STREQ(headset::eye_gaze_name(headset::EyeGaze::NotOffered), "not offered");
+    EXPECT_STREQ(headset::eye_gaze_name(headset::EyeGaze::Unknown), "");
+    EXPECT_NE(headset::eye_gaze_text(headset::EyeGaze::NotTracked).find("no eye tracker"),
+              std::string::npos);
+    EXPECT_NE(headset::eye_gaze_text(headset::EyeGaze::NotOffered).find("runtime"),
+              std::string::npos);
+    EXPECT_EQ(headset::eye_gaze_text(headset::EyeGaze::Unknown), "");
 }
 
 TEST(HeadsetCheckTest, RuntimeEndingTheSessionMidCheckIsAnOutcome) {

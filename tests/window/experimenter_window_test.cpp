@@ -11,7 +11,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <set>
+
+#include <nlohmann/json.hpp>
 
 #include "app/window/experimenter_window.h"
 #include "app/window/view_text.h"
@@ -272,6 +275,73 @@ TEST_F(ExperimenterWindowTest, FollowsAResizeAndDrawsEveryPhase) {
         EXPECT_EQ(png.width, 900);
         EXPECT_EQ(png.height, 620);
     }
+}
+
+// The gaze marker over the mirror: a ring and a cross at the view's gaze point, where the state
+// dump says; a blink leaves a faded ring where the gaze was last seen; a gaze beyond the mirrored
+// eye's field is marked on the mirror's edge; no marker where no gaze is tracked.
+TEST_F(ExperimenterWindowTest, MarksTheGazeOverTheMirror) {
+    const vk_core::Image source = make_source();
+    ExperimenterView view = trial_view();
+    view.gaze_tracked = true;
+    const auto show = [&](std::optional<std::array<double, 2>> uv, const std::string& name) {
+        view.gaze_uv = uv;
+        for (int i = 0; i < 3; ++i) {
+            mirror(source);
+            window_->frame(view);
+        }
+        const fs::path png_path = test_out() / ("experimenter-window-gaze-" + name + ".png");
+        const fs::path json_path = test_out() / ("experimenter-window-gaze-" + name + ".json");
+        EXPECT_TRUE(window_->save_screenshot(png_path));
+        EXPECT_TRUE(window_->save_state(json_path));
+        std::ifstream in(json_path);
+        return std::make_pair(load_png(png_path), nlohmann::json::parse(in));
+    };
+
+    // A quarter across, half down: inside the mirror's left (kLeft) half.
+    auto [png, state] = show(std::array<double, 2>{0.25, 0.5}, "point");
+    const FitRect rect = window_->mirror_rect();
+    const nlohmann::json gaze = state["gaze"];  // a copy: `state` is read again below
+    EXPECT_EQ(state["phase"], "trial");
+    EXPECT_EQ(state["mirror"]["width"].get<double>(), rect.width);
+    EXPECT_EQ(gaze["tracked"], true);
+    EXPECT_EQ(gaze["shown"], "point") << state;
+    EXPECT_EQ(gaze["uv"], nlohmann::json::parse("[0.25, 0.5]"));
+    const double x = gaze["marker"][0], y = gaze["marker"][1];
+    EXPECT_NEAR(x, rect.x + 0.25 * rect.width, 1e-3);
+    EXPECT_NEAR(y, rect.y + 0.5 * rect.height, 1e-3);
+    const double radius = gaze["radius"];
+    EXPECT_GE(radius, 8.0);
+    // The ring in the marker's green on the red half; the centre left visible.
+    const auto green = [](const Rgb& c) { return c[1] > 180 && c[0] < 160 && c[2] < 190; };
+    for (const auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+        const Rgb ring = png.at(static_cast<int>(std::lround(x + dx * radius)),
+                                static_cast<int>(std::lround(y + dy * radius)));
+        EXPECT_TRUE(green(ring)) << ring[0] << " " << ring[1] << " " << ring[2];
+    }
+    EXPECT_TRUE(near(png.at(static_cast<int>(x), static_cast<int>(y)), kLeft));
+
+    // A blink: the ring stays, faded, where the gaze was; no cross, no marker green.
+    std::tie(png, state) = show(std::nullopt, "blink");
+    EXPECT_EQ(state["gaze"]["shown"], "lost") << state;
+    EXPECT_TRUE(state["gaze"]["uv"].is_null());
+    EXPECT_EQ(state["gaze"]["marker"], gaze["marker"]);
+    const Rgb faded = png.at(static_cast<int>(std::lround(x + radius)), static_cast<int>(y));
+    EXPECT_FALSE(green(faded)) << faded[0] << " " << faded[1] << " " << faded[2];
+    EXPECT_FALSE(near(faded, kLeft, 10));
+
+    // Beyond the right edge: marked on it, at the gaze's height.
+    std::tie(png, state) = show(std::array<double, 2>{1.4, 0.3}, "outside");
+    EXPECT_EQ(state["gaze"]["shown"], "outside") << state;
+    EXPECT_NEAR(state["gaze"]["marker"][0].get<double>(), rect.x + rect.width, 1e-3);
+    EXPECT_NEAR(state["gaze"]["marker"][1].get<double>(), rect.y + 0.3 * rect.height, 1e-3);
+
+    // No eye tracker: nothing.
+    view.gaze_tracked = false;
+    std::tie(png, state) = show(std::nullopt, "untracked");
+    EXPECT_EQ(state["gaze"]["tracked"], false);
+    EXPECT_EQ(state["gaze"]["shown"], "none");
+    EXPECT_TRUE(state["gaze"]["marker"].is_null());
 }
 
 }  // namespace
