@@ -15,6 +15,9 @@
 // "psychometric:threshold=T,slope=B,lapse=L" (issue 21): chooses the reference with the
 // probability of study/psychometric.h at the trial's m, whatever the projection error; views
 // both labels once, so every decision is valid and moves a staircase.
+//
+// "gaze:threshold=T,slope=B,lapse=L" (issue 45): the same function of the error where its gaze
+// rests (arcmin; docs/gaze.md), rising from chance at no error.
 #include "study/observer.h"
 
 #include <algorithm>
@@ -144,6 +147,30 @@ class PsychometricObserver final : public ObserverBase {
     PsychometricFunction function_;
 };
 
+// "gaze:threshold=T,slope=B,lapse=L" (issue 45): the error where its gaze rests is its stimulus
+// (the runner passes it as error_px: the trial's error at gaze in arcmin, decides_on_gaze_error),
+// chosen as the reference the more often the larger it is; views both labels once.
+class GazeObserver final : public ObserverBase {
+  public:
+    GazeObserver(const PsychometricFunction& function, std::uint64_t seed)
+        : ObserverBase(seed), function_(function) {}
+    std::string_view name() const override { return "gaze"; }
+    bool decides_on_gaze_error() const override { return true; }
+    TrialPlan plan_trial(const ScheduledTrial& trial, int reference_label,
+                         double error_arcmin) override {
+        Rng rng = trial_rng(trial);
+        const double e = std::isfinite(error_arcmin) ? std::max(0.0, error_arcmin) : 0.0;
+        const double r = std::pow(e / function_.threshold, function_.slope);
+        const double p_reference = 0.5 + (0.5 - function_.lapse) * (r / (1.0 + r));
+        const int reference_at = reference_label == 2 ? 2 : 1;
+        return viewing_both(rng.bernoulli(p_reference) ? reference_at : 3 - reference_at, 0, rng);
+    }
+    int answer(int, int scale_points) override { return std::max(1, (scale_points + 1) / 2); }
+
+  private:
+    PsychometricFunction function_;
+};
+
 }  // namespace
 
 std::vector<std::string> observer_names() {
@@ -156,13 +183,19 @@ Result<std::unique_ptr<Observer>> make_observer(std::string_view name, std::uint
         MONOPLANE_TRY(function);
         return std::unique_ptr<Observer>(new PsychometricObserver(*function, seed));
     }
+    if (name.starts_with(kGazePrefix)) {
+        Result<PsychometricFunction> function = parse_gaze_spec(name);
+        MONOPLANE_TRY(function);
+        return std::unique_ptr<Observer>(new GazeObserver(*function, seed));
+    }
     if (name == "default") return std::unique_ptr<Observer>(new DefaultObserver(seed));
     if (name == "chance") return std::unique_ptr<Observer>(new ChanceObserver(seed));
     if (name == "reference") return std::unique_ptr<Observer>(new ReferenceObserver(seed));
     std::string known;
     for (const std::string& n : observer_names()) known += (known.empty() ? "" : ", ") + n;
     return Error{"unknown observer '" + std::string(name) + "' (known observers: " + known +
-                 "; or " + std::string(kPsychometricPrefix) + "threshold=T,slope=B,lapse=L)"};
+                 "; or " + std::string(kPsychometricPrefix) + "threshold=T,slope=B,lapse=L, " +
+                 std::string(kGazePrefix) + "threshold=T,slope=B,lapse=L)"};
 }
 
 }  // namespace monoplane::study

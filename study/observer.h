@@ -32,13 +32,17 @@ class Observer {
     // error_px: the largest projection error of the trial's hybrid condition (rig), 0 for none.
     virtual TrialPlan plan_trial(const ScheduledTrial& trial, int reference_label,
                                  double error_px) = 0;
+    // True for an observer whose stimulus is hybrid's error where its gaze rests ("gaze:..."):
+    // its runner passes the trial's error at gaze (arcmin) as error_px.
+    virtual bool decides_on_gaze_error() const { return false; }
     // Likert answer (1..scale_points) to questionnaire item `item`.
     virtual int answer(int item, int scale_points) = 0;
 };
 
 // "default", "chance", "reference" (observer_names()), or
-// "psychometric:threshold=T,slope=B,lapse=L" (study/observer_spec.h; a bad specification is an
-// error saying where). An unknown name is an error listing these.
+// "psychometric:threshold=T,slope=B,lapse=L" or "gaze:threshold=T,slope=B,lapse=L"
+// (study/observer_spec.h; a bad specification is an error saying where). An unknown name is an
+// error listing these.
 Result<std::unique_ptr<Observer>> make_observer(std::string_view name, std::uint64_t seed);
 std::vector<std::string> observer_names();
 

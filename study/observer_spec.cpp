@@ -34,17 +34,15 @@ std::string check_value(std::string_view key, double value) {
     return value > 0.0 ? "" : "must be greater than 0";
 }
 
-}  // namespace
-
-Result<PsychometricFunction> parse_psychometric_spec(std::string_view spec) {
+// A specification of threshold, slope and lapse after `prefix` (or without it).
+Result<PsychometricFunction> parse_spec(std::string_view spec, std::string_view prefix) {
     const std::string whole(spec);
-    const auto fail = [&whole](std::size_t position, const std::string& what) {
+    const auto fail = [&whole, prefix](std::size_t position, const std::string& what) {
         return Error{"observer '" + whole + "', character " + std::to_string(position) + ": " +
-                     what + " (expected " + std::string(kPsychometricPrefix) +
-                     "threshold=T,slope=B,lapse=L)"};
+                     what + " (expected " + std::string(prefix) + "threshold=T,slope=B,lapse=L)"};
     };
     std::size_t offset = 0;
-    if (spec.starts_with(kPsychometricPrefix)) offset = kPsychometricPrefix.size();
+    if (spec.starts_with(prefix)) offset = prefix.size();
     std::array<std::optional<double>, 3> values;
     for (std::size_t start = offset; start <= spec.size();) {
         const std::size_t comma = std::min(spec.find(',', start), spec.size());
@@ -78,6 +76,16 @@ Result<PsychometricFunction> parse_psychometric_spec(std::string_view spec) {
         if (!values[k]) return fail(spec.size() + 1, std::string(kKeys[k]) + " is missing");
     }
     return PsychometricFunction{*values[0], *values[1], values[2].value_or(0.0)};
+}
+
+}  // namespace
+
+Result<PsychometricFunction> parse_psychometric_spec(std::string_view spec) {
+    return parse_spec(spec, kPsychometricPrefix);
+}
+
+Result<PsychometricFunction> parse_gaze_spec(std::string_view spec) {
+    return parse_spec(spec, kGazePrefix);
 }
 
 }  // namespace monoplane::study

@@ -21,4 +21,12 @@ inline constexpr std::string_view kPsychometricPrefix = "psychometric:";
 // given twice, a missing required key. Any time.
 Result<PsychometricFunction> parse_psychometric_spec(std::string_view spec);
 
+// "gaze:threshold=T,slope=B,lapse=L" (issue 45, docs/gaze.md): the observer whose stimulus is
+// hybrid's error where its gaze rests (arcmin), chosen as the reference with probability
+// 0.5 + (0.5 - lapse) e^B / (T^B + e^B): the psychometric function of the error e, rising through
+// 0.75 - lapse / 2 at e = T arcmin. Parsed as parse_psychometric_spec parses, with threshold in
+// arcmin.
+inline constexpr std::string_view kGazePrefix = "gaze:";
+Result<PsychometricFunction> parse_gaze_spec(std::string_view spec);
+
 }  // namespace monoplane::study

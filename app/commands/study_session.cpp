@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <random>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "app/commands/commands.h"
 #include "app/commands/option_wording.h"
 #include "app/commands/session_summary.h"
+#include "app/commands/simulated_gaze.h"
 #include "app/commands/study_headset.h"
 #include "app/commands/study_options.h"
 #include "app/commands/study_rows.h"
@@ -43,10 +45,21 @@ std::string observer_for(const StudyOptions& o, const std::string& recorded = {}
     return o.headset == "openxr" ? "none" : "default";
 }
 
-// The observer's stimulus strength (study_rows.h).
-std::function<double(const study::ScheduledTrial&)> error_model(const hmd::HmdProfile& hmd,
-                                                                const study::Protocol& protocol) {
-    return trial_error_model(hmd, protocol);
+// The observer's stimulus strength: the rig's projection error (study_rows.h), or for an observer
+// that decides on the error where its gaze rests, that error under simxr's default gaze model
+// (simulated_gaze.h) for the session's seed, on the scenes at the detail the session renders.
+std::function<double(const study::ScheduledTrial&)> error_model(const StudyOptions& o,
+                                                                const hmd::HmdProfile& hmd,
+                                                                const study::Protocol& protocol,
+                                                                const study::Observer* observer,
+                                                                std::uint64_t seed) {
+    if (!observer || !observer->decides_on_gaze_error()) return trial_error_model(hmd, protocol);
+    study::Protocol shown = protocol;
+    if (!o.headset_options.detail.empty()) shown.render.detail = o.headset_options.detail;
+    std::shared_ptr<const SimulatedGaze> gaze = SimulatedGaze::build(shown, hmd).value_or_throw();
+    return [gaze, seed](const study::ScheduledTrial& trial) {
+        return gaze->error_at_gaze(trial, seed);
+    };
 }
 
 CommitTrace commit_trace(const StudyOptions& o) {
@@ -55,11 +68,12 @@ CommitTrace commit_trace(const StudyOptions& o) {
 }
 
 study::RunOptions run_options(const StudyOptions& o, const hmd::HmdProfile& hmd,
-                              const study::Protocol& protocol) {
+                              const study::Protocol& protocol, const study::Observer& observer,
+                              std::uint64_t seed) {
     study::RunOptions options;
     options.pace_ns = static_cast<std::int64_t>(o.pace_ms * 1e6);
     options.neutral_ns = static_cast<std::int64_t>(o.headset_options.neutral_s * 1e9);
-    options.trial_error_px = error_model(hmd, protocol);
+    options.trial_error_px = error_model(o, hmd, protocol, &observer, seed);
     if (const CommitTrace trace = commit_trace(o); trace != CommitTrace::Off) {
         options.on_committed = [trace](const std::string& what) { trace_committed(trace, what); };
     }
@@ -94,7 +108,7 @@ void print_summary(const study::StudyStore& store, std::int64_t session_id) {
 void run_on_headset(
     const StudyOptions& o, const GlobalOptions& global, study::StudyStore& store,
     const study::Protocol& protocol, ImportedStudyScenes imported, study::Observer* observer,
-    const hmd::HmdProfile& hmd,
+    const hmd::HmdProfile& hmd, std::uint64_t seed,
     const std::function<std::int64_t(const std::string&, const std::string&)>& begin) {
     HeadsetStudyOptions options = o.headset_options;
     options.headset = o.headset;
@@ -107,7 +121,7 @@ void run_on_headset(
     };
     const study::SessionStatus status =
         run_headset_session(options, global, store, protocol, std::move(imported), observer,
-                            error_model(hmd, protocol), begin_and_note);
+                            error_model(o, hmd, protocol, observer, seed), begin_and_note);
     if (!session_id) {
         std::cerr << "session " << study::session_status_name(status) << "\n";
         return;
@@ -208,12 +222,13 @@ void run_study(const StudyOptions& o, const GlobalOptions& global) {
     };
     if (o.headset != "none") {
         run_on_headset(o, global, *store, protocol, std::move(imported), observer.get(), hmd,
-                       begin);
+                       info.seed, begin);
         return;
     }
     imported.clear();  // recorded; nothing renders them without a headset
     const std::int64_t session_id = begin("none", "none");
-    finish(*store, session_id, protocol, *observer, run_options(o, hmd, protocol));
+    finish(*store, session_id, protocol, *observer,
+           run_options(o, hmd, protocol, *observer, info.seed));
 }
 
 namespace {
@@ -296,11 +311,13 @@ void resume_study(const StudyOptions& o, const GlobalOptions& global) {
         ImportedStudyScenes imported =
             load_imported_scenes(protocol.scene_files, protocol.source).value_or_throw();
         run_on_headset(o, global, *store, protocol, std::move(imported), observer.get(), hmd,
+                       info.seed,
                        [session_id](const std::string&, const std::string&) { return session_id; });
         return;
     }
     if (!observer) throw UserError("--headset none needs an observer to answer (not none)");
-    finish(*store, session_id, protocol, *observer, run_options(o, hmd, protocol));
+    finish(*store, session_id, protocol, *observer,
+           run_options(o, hmd, protocol, *observer, info.seed));
 }
 
 }  // namespace monoplane::app

@@ -312,5 +312,35 @@ TEST(Observer, BadPsychometricSpecificationsSayWhereAndWhat) {
     }
 }
 
+// gaze:threshold=6,slope=2,lapse=0.04 (issue 45) takes the error at its gaze (arcmin, passed as
+// the trial's stimulus) and chooses the reference with probability
+// 0.5 + 0.46 (e/6)^2 / (1 + (e/6)^2): 0.5 at no error, 0.5 + 0.46 / 5 = 0.592 at 3 arcmin,
+// 0.73 at 6 and 0.5 + 0.46 * 16 / 17 = 0.9329 at 24, whatever m is; it always views both labels.
+TEST(Observer, GazeChoosesTheReferenceByTheErrorWhereItLooks) {
+    auto o = observer("gaze:threshold=6,slope=2,lapse=0.04", 13);
+    ASSERT_TRUE(o);
+    EXPECT_EQ(o->name(), "gaze");
+    EXPECT_TRUE(o->decides_on_gaze_error());
+    EXPECT_FALSE(observer("default", 1)->decides_on_gaze_error());
+    for (const auto& [e, p] : {std::pair{0.0, 0.5}, std::pair{3.0, 0.592}, std::pair{6.0, 0.73},
+                               std::pair{24.0, 0.5 + 0.46 * 16.0 / 17.0}}) {
+        int reference = 0;
+        for (int i = 0; i < kTrials; ++i) {
+            ScheduledTrial t = trial(i);
+            t.mono_plane = 3.0 + i % 7;  // m does not matter, the error at gaze does
+            const TrialPlan plan = o->plan_trial(t, reference_label(i), e);
+            ASSERT_GE(plan.dwell_ns.size(), 2u);
+            reference += plan.confirmed_label() == reference_label(i);
+        }
+        EXPECT_TRUE(within_sigmas(reference, kTrials, p)) << "e = " << e << ": " << reference;
+    }
+    const Result<std::unique_ptr<Observer>> bad = make_observer("gaze:threshold=6,slop=2", 1);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().message.find("character 18: unknown key 'slop'; did you mean 'slope'? "
+                                       "(expected gaze:threshold=T,slope=B,lapse=L)"),
+              std::string::npos)
+        << bad.error().message;
+}
+
 }  // namespace
 }  // namespace monoplane::study
