@@ -4,6 +4,7 @@
 // library, SQLite and the renderer (docs/architecture.md).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -51,6 +52,24 @@ struct TrialRow {
     int frames_shown = 0;
     int frames_missed = 0;
     double missed_frame_threshold = 0.05;
+    // Eye gaze, where the session recorded it (docs/gaze.md); none otherwise. Hybrid's error at
+    // the gaze point, arcmin, averaged over the frames that showed the test alternative (the
+    // stimulus where the participant looked), and the share of the trial's gaze points that lay
+    // beyond the mono plane.
+    std::optional<double> gaze_error_test_arcmin;
+    std::optional<double> gaze_share_beyond_m;
+};
+
+// One valid gaze sample of a frame that showed a trial's scene (database input only), for the
+// report's gaze density over each scene's left-eye image: the head relative to the seat and the
+// gaze in the head's frame, and the depth of the point the gaze met (none: the sky).
+struct GazeSampleRow {
+    std::string participant;
+    std::string scene;
+    double mono_plane = 0.0;                    // the trial's m
+    std::array<double, 7> head{};               // x, y, z, qw, qx, qy, qz
+    std::array<double, 3> direction{0, 0, -1};  // unit, head frame, -z ahead
+    std::optional<double> depth_m;              // in front of the eyes' plane
 };
 
 struct AnswerRow {
@@ -150,7 +169,8 @@ struct Dataset {
     std::vector<TrialRow> trials;
     std::vector<AnswerRow> answers;
     std::vector<SessionRow> sessions;  // may be empty (hand-built data): nothing beyond trials
-    std::vector<std::string> sources;  // in the order they were read
+    std::vector<GazeSampleRow> gaze_samples;  // headset sessions that recorded gaze
+    std::vector<std::string> sources;         // in the order they were read
     // Set by join_participant_codes(): the rule applied and the codes more than one input held.
     SharedCodes codes = SharedCodes::Refuse;
     std::vector<std::string> shared_codes;

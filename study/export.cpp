@@ -40,6 +40,9 @@ Cell optional_number(const std::optional<double>& value) {
     return value ? number(number_text(*value)) : na();
 }
 
+// gaze_samples .. gaze_fixations, the last of export_columns().
+constexpr std::size_t kGazeColumns = 7;
+
 // A variable's value: integer and number variables as numbers (their stored text is canonical;
 // one that is not a plain number stays text rather than break the JSON), the others as text.
 Cell variable_cell(const VariableValue& value) {
@@ -57,12 +60,40 @@ void append_variables(std::vector<Cell>& cells, const SessionInfo& s,
     }
 }
 
+// The gaze columns: NA where the session recorded no gaze; a trial of a session that did but
+// that showed no label (never started) has no samples and no fixations.
+void append_gaze(std::vector<Cell>& cells, const ExportData& data, const TrialRecord& r) {
+    const auto session = data.trial_gaze.find(r.session_id);
+    if (session == data.trial_gaze.end()) {
+        cells.insert(cells.end(), kGazeColumns, na());
+        return;
+    }
+    const auto found = session->second.find(r.trial.index);
+    const TrialGaze none;
+    const TrialGaze& g = found == session->second.end() ? none : found->second;
+    cells.push_back(integer(g.valid_samples));
+    cells.push_back(optional_number(g.share_beyond_m));
+    for (const auto* values : {&g.error_mean_arcmin, &g.error_max_arcmin})
+        for (const std::optional<double>& value : *values) cells.push_back(optional_number(value));
+    cells.push_back(integer(static_cast<std::int64_t>(g.fixations.size())));
+}
+
+// The trial's staircase estimate after its decision, or null (constant sessions, practice and
+// undecided trials).
+const ThresholdEstimate* staircase_estimate(const ExportData& data, const TrialRecord& record) {
+    const auto session = data.staircase_estimates.find(record.session_id);
+    if (session == data.staircase_estimates.end()) return nullptr;
+    const auto found = session->second.find(record.trial.index);
+    return found == session->second.end() ? nullptr : &found->second;
+}
+
 // The row for one trial, in export_columns() order, then one cell per variable of `variables`.
-// Outcome columns are NA until decided; the staircase columns are NA unless `staircase` (its
-// scene's estimate after the trial) is given.
-std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s,
-                      const ThresholdEstimate* staircase,
+// Outcome columns are NA until decided; the staircase columns are NA unless the trial has its
+// scene's estimate after it; the gaze columns NA unless its session recorded gaze.
+std::vector<Cell> row(const ExportData& data, const TrialRecord& r,
                       const std::vector<std::string>& variables) {
+    const SessionInfo& s = data.sessions.at(r.session_id);
+    const ThresholdEstimate* staircase = staircase_estimate(data, r);
     const ScheduledTrial& t = r.trial;
     const TrialOutcome& o = r.outcome;
     const bool d = r.decided;
@@ -105,17 +136,9 @@ std::vector<Cell> row(const TrialRecord& r, const SessionInfo& s,
         s.session_uuid.empty() ? na() : text(s.session_uuid),  // NA: a session made by hand
         text(s.software_version.empty() ? std::string("unknown") : s.software_version),
     };
+    append_gaze(cells, data, r);
     append_variables(cells, s, variables);
     return cells;
-}
-
-// The trial's staircase estimate after its decision, or null (constant sessions, practice and
-// undecided trials).
-const ThresholdEstimate* staircase_estimate(const ExportData& data, const TrialRecord& record) {
-    const auto session = data.staircase_estimates.find(record.session_id);
-    if (session == data.staircase_estimates.end()) return nullptr;
-    const auto found = session->second.find(record.trial.index);
-    return found == session->second.end() ? nullptr : &found->second;
 }
 
 // The var_ column names without their prefix.
@@ -134,10 +157,7 @@ std::vector<std::string> variable_names(const ExportData& data) {
 template <class Write>
 void for_each_row(const ExportData& data, Write write) {
     const std::vector<std::string> variables = variable_names(data);
-    for (const TrialRecord& record : data.trials) {
-        write(row(record, data.sessions.at(record.session_id), staircase_estimate(data, record),
-                  variables));
-    }
+    for (const TrialRecord& record : data.trials) write(row(data, record, variables));
 }
 
 void write_export(const ExportData& data, ExportFormat format, std::ostream& out) {
@@ -156,6 +176,9 @@ void write_export(const ExportData& data, ExportFormat format, std::ostream& out
             return;
         case ExportFormat::PressesCsv:
             write_presses_csv(data, out);
+            return;
+        case ExportFormat::GazeCsv:
+            write_gaze_csv(data, out);
             return;
     }
 }
@@ -208,6 +231,8 @@ std::string_view export_format_name(ExportFormat format) {
             return "notes-csv";
         case ExportFormat::PressesCsv:
             return "presses-csv";
+        case ExportFormat::GazeCsv:
+            return "gaze-csv";
     }
     return "csv";
 }
@@ -218,9 +243,11 @@ Result<ExportFormat> parse_export_format(std::string_view name) {
     if (name == "frames-csv") return ExportFormat::FramesCsv;
     if (name == "notes-csv") return ExportFormat::NotesCsv;
     if (name == "presses-csv") return ExportFormat::PressesCsv;
+    if (name == "gaze-csv") return ExportFormat::GazeCsv;
     return Error{"unknown export format '" + std::string(name) +
                  "'; use csv, json, frames-csv (the frame and head log), notes-csv (the "
-                 "sessions' notes) or presses-csv (the participant's presses)"};
+                 "sessions' notes), presses-csv (the participant's presses) or gaze-csv (the "
+                 "eye gaze samples)"};
 }
 
 OutputKind export_output_kind(ExportFormat format) {
@@ -232,8 +259,9 @@ OutputKind export_output_kind(ExportFormat format) {
         case ExportFormat::Json:
             return {"json export", is_json_export};
         case ExportFormat::FramesCsv:
+            // Seven columns: gaze-csv's first six are the same.
             return {"frames-csv export", [](std::string_view head) {
-                        return csv_header_starts_with(head, frame_export_columns(), 5);
+                        return csv_header_starts_with(head, frame_export_columns(), 7);
                     }};
         case ExportFormat::NotesCsv:
             return {"notes-csv export", [](std::string_view head) {
@@ -242,6 +270,10 @@ OutputKind export_output_kind(ExportFormat format) {
         case ExportFormat::PressesCsv:
             return {"presses-csv export", [](std::string_view head) {
                         return csv_header_starts_with(head, presses_export_columns(), 8);
+                    }};
+        case ExportFormat::GazeCsv:
+            return {"gaze-csv export", [](std::string_view head) {
+                        return csv_header_starts_with(head, gaze_export_columns(), 8);
                     }};
     }
     return {"export", [](std::string_view) { return false; }};
@@ -286,6 +318,15 @@ const std::vector<std::string_view>& export_columns() {
         "runs",
         "session_uuid",
         "software_version",
+        // Eye gaze while the trial's labels were shown (docs/data.md): appended, so that every
+        // earlier column keeps its place.
+        "gaze_samples",
+        "gaze_share_beyond_m",
+        "gaze_error_mean_arcmin_1",
+        "gaze_error_mean_arcmin_2",
+        "gaze_error_max_arcmin_1",
+        "gaze_error_max_arcmin_2",
+        "gaze_fixations",
     };
     return columns;
 }
@@ -353,7 +394,14 @@ Result<ExportData> collect_export(const StudyStore& store, ExportFormat format) 
         MONOPLANE_TRY(estimates);
         data.staircase_estimates.emplace(id, std::move(estimates).value());
     }
-    if (format != ExportFormat::FramesCsv) return data;
+    if (format == ExportFormat::GazeCsv) {
+        MONOPLANE_TRY(add_gaze_frames(store, data));
+        return data;
+    }
+    if (format != ExportFormat::FramesCsv) {
+        MONOPLANE_TRY(add_trial_gaze(store, data));
+        return data;
+    }
     for (const auto& [id, info] : data.sessions) {
         Result<std::vector<FrameRecord>> frames = store.frames(id);
         MONOPLANE_TRY(frames);
@@ -564,8 +612,7 @@ void write_json(const ExportData& data, std::ostream& out) {
     json.begin_array();
     for (const TrialRecord& record : data.trials) {
         const SessionInfo& session = data.sessions.at(record.session_id);
-        write_object(json, keys, row(record, session, staircase_estimate(data, record), variables),
-                     session, record.trial.scene);
+        write_object(json, keys, row(data, record, variables), session, record.trial.scene);
         out << json.take();  // a trial at a time: the export need not fit in memory twice
     }
     json.end_array();

@@ -20,6 +20,7 @@
 
 #include "common/result.h"
 #include "study/adaptive_procedure.h"
+#include "study/gaze_summary.h"
 #include "study/output_file.h"
 #include "study/study_store.h"
 
@@ -27,10 +28,12 @@ namespace monoplane::study {
 
 // Csv and Json: the trials; FramesCsv: the frame and head log of every headset session;
 // NotesCsv: the notes of every session; PressesCsv: every press of the participant's controller
-// and keys, with its source (study/response_press.h).
-enum class ExportFormat { Csv, Json, FramesCsv, NotesCsv, PressesCsv };
+// and keys, with its source (study/response_press.h); GazeCsv: every gaze sample of the sessions
+// that recorded gaze (study/gaze_export.cpp).
+enum class ExportFormat { Csv, Json, FramesCsv, NotesCsv, PressesCsv, GazeCsv };
 
-// "csv", "json", "frames-csv", "notes-csv" or "presses-csv", as the CLI's --format takes them.
+// "csv", "json", "frames-csv", "notes-csv", "presses-csv" or "gaze-csv", as the CLI's --format
+// takes them.
 std::string_view export_format_name(ExportFormat format);
 Result<ExportFormat> parse_export_format(std::string_view name);
 
@@ -42,16 +45,21 @@ struct ExportData {
     // The participant variables the sessions' protocols declare, in first-seen declaration order
     // (sessions in id order); variable_columns() adds any a session has a value for.
     std::vector<std::string> variable_names;
-    std::map<std::int64_t, std::vector<FrameRecord>> frames;     // FramesCsv only, per session
+    // FramesCsv: every session's frame log; GazeCsv: the frame logs of the sessions holding gaze.
+    std::map<std::int64_t, std::vector<FrameRecord>> frames;
     std::map<std::int64_t, std::vector<ResponsePress>> presses;  // PressesCsv only, per session
     // Staircase sessions: each scene's staircase estimate after each decided adaptive trial, by
     // session and trial index (replayed from the stored decisions; study/staircase_estimates.h).
     std::map<std::int64_t, std::map<int, ThresholdEstimate>> staircase_estimates;
+    // Csv and Json: the sessions whose frames hold gaze, each trial's gaze by trial index
+    // (summarize_trial_gaze); a session that recorded none is absent, its gaze columns NA.
+    std::map<std::int64_t, std::map<int, TrialGaze>> trial_gaze;
 };
 
-// Reads every trial and its session (and, for FramesCsv, every session's frame log; for NotesCsv
-// only the sessions, every one), the variables the sessions' protocols declare, and replays
-// each staircase session's decisions for its estimates; a staircase session whose stored
+// Reads every trial and its session (and, for FramesCsv, every session's frame log; for GazeCsv
+// the frame logs of the sessions holding gaze; for Csv and Json their trials' gaze summaries; for
+// NotesCsv only the sessions, every one), the variables the sessions' protocols declare, and
+// replays each staircase session's decisions for its estimates; a staircase session whose stored
 // protocol text does not parse is an error naming it. May be called while a study writes (WAL
 // readers do not block the writer); the export is then a consistent snapshot of some moment per
 // query.
@@ -67,6 +75,8 @@ const std::vector<std::string_view>& export_columns();
 std::vector<std::string> variable_columns(const ExportData& data);
 // The frame log's columns (frames-csv), in order.
 const std::vector<std::string_view>& frame_export_columns();
+// The gaze samples' columns (gaze-csv), in order (study/gaze_export.cpp).
+const std::vector<std::string_view>& gaze_export_columns();
 // The notes' columns (notes-csv), in order.
 const std::vector<std::string_view>& notes_export_columns();
 // The presses' columns (presses-csv), in order (study/press_export.cpp).
@@ -82,6 +92,8 @@ void write_csv(const ExportData& data, std::ostream& out);
 void write_json(const ExportData& data, std::ostream& out);
 // One row per logged frame, sessions in id order (study/frame_export.cpp).
 void write_frames_csv(const ExportData& data, std::ostream& out);
+// One row per logged frame with a gaze sample, valid or not, sessions in id order.
+void write_gaze_csv(const ExportData& data, std::ostream& out);
 // One row per note, sessions in id order, each session's notes in the order they were noted.
 void write_notes_csv(const ExportData& data, std::ostream& out);
 // One row per press, sessions in id order, each session's presses in the order logged.
@@ -91,6 +103,11 @@ void write_presses_csv(const ExportData& data, std::ostream& out);
 Result<ExportData> collect_sessions(const StudyStore& store);
 // Every session of the database with its presses (what PressesCsv writes).
 Result<ExportData> collect_presses(const StudyStore& store);
+// Adds the frame logs of data.sessions that hold gaze (what GazeCsv writes), or their trials'
+// gaze summaries (what Csv and Json write); sessions are told by the roster's gaze flag, so a
+// session without gaze costs no read of its frames (study/gaze_export.cpp).
+Result<void> add_gaze_frames(const StudyStore& store, ExportData& data);
+Result<void> add_trial_gaze(const StudyStore& store, ExportData& data);
 
 // Collects and writes. The path form first checks `path` and the record of its source beside
 // it (`path`.source, study/export_source.h) with check_output's rules (the store's own file is an

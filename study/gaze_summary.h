@@ -48,11 +48,13 @@ struct TrialGaze {
     // label 2 ([1]) were shown: mean and maximum. None where that label has no gaze point.
     std::array<std::optional<double>, 2> error_mean_arcmin;
     std::array<std::optional<double>, 2> error_max_arcmin;
-    std::vector<Fixation> fixations;  // over the frames showing a label
+    // Over the frames showing a label: a frame of another screen or trial ends a run of samples
+    // as a blink does, so no fixation spans the neutral screen between the labels.
+    std::vector<Fixation> fixations;
 };
 
-// Per trial with at least one frame showing a label, in trial order. `frames`: a session's frame
-// log (StudyStore::frames), in frame order.
+// Per trial with at least one frame showing a label, in trial order (a trial never shown is
+// absent). `frames`: a session's frame log (StudyStore::frames), in frame order.
 std::vector<TrialGaze> summarize_trial_gaze(const std::vector<FrameRecord>& frames,
                                             const FixationParams& params = {});
 

@@ -1,6 +1,6 @@
-// StudyStore's views over sessions: the roster of every session in the file (`study list`) and a
-// participant's earlier sessions with who holds them (the rule of one live session,
-// session_admission.h). Both count a session's trials the same way.
+// StudyStore's views over sessions: the roster of every session in the file (`study list`, with
+// which sessions hold eye gaze) and a participant's earlier sessions with who holds them (the rule
+// of one live session, session_admission.h). Both count a session's trials the same way.
 #include "study/study_store.h"
 
 #include <string>
@@ -25,13 +25,20 @@ constexpr std::string_view kTrialCounts =
     "(SELECT 1 FROM trials t WHERE t.session_id = pt.session_id AND "
     "t.trial_index = pt.trial_index))";
 
+// Whether a session's frames hold gaze samples (personal data, docs/data.md): a valid or invalid
+// sample makes gaze_valid non-NULL. The partial index frames_with_gaze holds only such rows, so a
+// session without gaze costs one index probe, not a pass over its frame log.
+constexpr std::string_view kHoldsGaze =
+    "EXISTS (SELECT 1 FROM frames f WHERE f.session_id = s.id AND f.gaze_valid IS NOT NULL)";
+
 const std::string kRosterQuery =
     "SELECT p.code, p.participant_number, s.session_number, s.id, s.status, " +
     std::string(kTrialCounts) +
     ", s.started_utc, s.ended_utc, s.device, s.runtime, s.protocol_hash, s.protocol_name, "
     "s.session_uuid, (SELECT e.detail FROM events e WHERE e.session_id = s.id AND "
-    "e.kind = 'session_abandoned' ORDER BY e.id DESC LIMIT 1) "
-    "FROM sessions s JOIN participants p ON p.id = s.participant_id "
+    "e.kind = 'session_abandoned' ORDER BY e.id DESC LIMIT 1), " +
+    std::string(kHoldsGaze) +
+    " FROM sessions s JOIN participants p ON p.id = s.participant_id "
     "ORDER BY p.code, s.session_number";
 
 // A participant's sessions with the counts the roster shows (kRosterQuery's planned count).
@@ -98,7 +105,8 @@ Result<std::vector<RosterRow>> StudyStore::roster() const {
                                  .session_uuid = s.text(13),
                                  .abandoned_reason = s.is_null(14)
                                                          ? std::nullopt
-                                                         : std::optional<std::string>(s.text(14))});
+                                                         : std::optional<std::string>(s.text(14)),
+                                 .gaze = s.int64(15) != 0});
     }
     return rows;
 }

@@ -327,7 +327,9 @@ CREATE INDEX presses_by_session ON presses(session_id, id);
 // Version 10 (issue 45, eye gaze): per frame, the eye tracker's sample when the protocol asked
 // for gaze ([gaze] record) and the runtime tracks the eyes, and the hybrid error at the gaze
 // point where it is derived, with the depth of the point (NULL: the ray met nothing, the sky) and
-// the mono plane the error is for. NULL everywhere else, and in every older session.
+// the mono plane the error is for. NULL everywhere else, and in every older session. The partial
+// index answers "does this session hold gaze" (study list, the export) without reading a frame
+// log that holds none.
 constexpr std::string_view kVersion10 = R"sql(
 ALTER TABLE frames ADD COLUMN gaze_valid INTEGER CHECK (gaze_valid IN (0, 1));
 ALTER TABLE frames ADD COLUMN gaze_dir_x REAL;
@@ -336,6 +338,7 @@ ALTER TABLE frames ADD COLUMN gaze_dir_z REAL;
 ALTER TABLE frames ADD COLUMN gaze_error_arcmin REAL;
 ALTER TABLE frames ADD COLUMN gaze_depth_m REAL;
 ALTER TABLE frames ADD COLUMN gaze_mono_plane_m REAL;
+CREATE INDEX frames_with_gaze ON frames(session_id) WHERE gaze_valid IS NOT NULL;
 )sql";
 
 constexpr std::array<std::string_view, 10> kMigrations = {

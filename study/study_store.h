@@ -113,6 +113,8 @@ struct RosterRow {
     std::string session_uuid;
     // The reason given when the session was abandoned (`study run --abandon`), or none.
     std::optional<std::string> abandoned_reason;
+    // Its frames hold eye gaze samples (valid or not): personal data (docs/data.md, "Privacy").
+    bool gaze = false;
 };
 
 // The participant as the database knows them (for --session's default, the launcher's form and

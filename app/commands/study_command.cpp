@@ -152,12 +152,14 @@ void add_resume_command(CLI::App* study, const std::shared_ptr<StudyOptions>& op
 }
 
 void add_export_command(CLI::App* study, const std::shared_ptr<StudyOptions>& options) {
-    CLI::App* exp = study->add_subcommand("export", "Export the trials, frames, notes or presses");
+    CLI::App* exp =
+        study->add_subcommand("export", "Export the trials, frames, notes, presses or gaze");
     exp->add_option("--db", options->db, "Study database (SQLite)")->required();
     exp->add_option("--format", options->format,
                     "csv or json (the trials), frames-csv (the frame and head log of headset "
-                    "sessions), notes-csv (the sessions' notes) or presses-csv (every press of "
-                    "the participant's controller and keys, with its source)")
+                    "sessions), notes-csv (the sessions' notes), presses-csv (every press of "
+                    "the participant's controller and keys, with its source) or gaze-csv (every "
+                    "eye gaze sample of the sessions that recorded gaze: personal data)")
         ->capture_default_str();
     exp->add_option("--out", options->out,
                     "Output file: written beside and renamed into place, with FILE.source (the "
@@ -172,7 +174,9 @@ void add_export_command(CLI::App* study, const std::shared_ptr<StudyOptions>& op
 
 void add_list_command(CLI::App* study, const std::shared_ptr<StudyOptions>& options) {
     CLI::App* list = study->add_subcommand(
-        "list", "The roster: every participant and session, with status and progress");
+        "list",
+        "The roster: every participant and session, with status, progress and whether it holds "
+        "eye gaze");
     list->add_option("--db", options->dbs,
                      "Study database(s) (SQLite; repeatable); read, never written")
         ->required();

@@ -17,21 +17,27 @@ std::string or_dash(const std::string& text) {
     return text.empty() ? "-" : text;
 }
 
+// Whether the session holds eye gaze, personal data the experimenter must account for: "yes"
+// or "-".
+const char* gaze_mark(const study::RosterRow& r) {
+    return r.gaze ? "yes" : "-";
+}
+
 void print_roster_table(const std::vector<study::RosterEntry>& entries, bool several) {
-    std::printf("%-12s %4s %7s %4s  %-11s %-16s %-20s %-20s %-14s %-10s %s\n", "participant", "no.",
-                "session", "id", "trials", "protocol", "started", "ended", "device", "runtime",
-                "status");
+    std::printf("%-12s %4s %7s %4s  %-11s %-16s %-20s %-20s %-14s %-10s %-4s %s\n", "participant",
+                "no.", "session", "id", "trials", "protocol", "started", "ended", "device",
+                "runtime", "gaze", "status");
     for (const study::RosterEntry& e : entries) {
         const study::RosterRow& r = e.row;
         const std::string trials =
             std::to_string(r.trials_decided) + "/" + std::to_string(r.trials_planned);
         std::printf(
-            "%-12s %4d %7d %4lld  %-11s %-16s %-20s %-20s %-14s %-10s %s%s\n",
+            "%-12s %4d %7d %4lld  %-11s %-16s %-20s %-20s %-14s %-10s %-4s %s%s\n",
             r.participant_code.c_str(), r.participant_number + 1, r.session_number,
             static_cast<long long>(r.session_id), trials.c_str(),
             (r.protocol_name + " " + study::hash_text(r.protocol_hash).substr(8, 6)).c_str(),
             or_dash(r.started_utc).c_str(), or_dash(r.ended_utc).c_str(), or_dash(r.device).c_str(),
-            or_dash(r.runtime).c_str(), e.state().c_str(),
+            or_dash(r.runtime).c_str(), gaze_mark(r), e.state().c_str(),
             several ? ("  " + e.database.string()).c_str() : "");
     }
 }
@@ -74,6 +80,7 @@ void write_roster_json(const std::vector<study::RosterEntry>& entries) {
         } else {
             json.null("held_by");
         }
+        json.value("gaze", r.gaze);
         json.end_object();
     }
     json.end_array().end_object();

@@ -9,6 +9,7 @@
 #include "rig/error_budget.h"
 #include "rig/rig.h"
 #include "study/export.h"
+#include "study/gaze_summary.h"
 #include "study/protocol_design.h"
 #include "study/render_mode.h"
 
@@ -123,6 +124,41 @@ analysis::DesignComparison protocol_design_comparison() {
     };
 }
 
+namespace {
+
+// The session's valid gaze samples on a trial's scene, as the report's density reads them.
+void add_gaze_samples(const std::vector<study::FrameRecord>& frames,
+                      const std::map<int, const study::TrialRecord*>& trials,
+                      analysis::Dataset& dataset) {
+    for (const study::FrameRecord& f : frames) {
+        if (!f.gaze || !f.gaze->valid || !f.head || !f.gaze_point || !f.trial_index) continue;
+        const auto trial = trials.find(*f.trial_index);
+        if (trial == trials.end()) continue;
+        dataset.gaze_samples.push_back(
+            analysis::GazeSampleRow{.participant = trial->second->participant_code,
+                                    .scene = trial->second->trial.scene,
+                                    .mono_plane = f.gaze_point->mono_plane_m,
+                                    .head = *f.head,
+                                    .direction = f.gaze->direction,
+                                    .depth_m = f.gaze_point->depth_m});
+    }
+}
+
+// Each trial row's gaze (after derive_session_fields() named its test alternative): the error
+// at gaze over the frames of the label that showed the test alternative, and the share beyond m.
+void add_trial_gaze(const std::map<std::pair<std::int64_t, int>, study::TrialGaze>& gaze,
+                    std::vector<analysis::TrialRow>& trials) {
+    for (analysis::TrialRow& row : trials) {
+        const auto found = gaze.find({row.session_id, row.trial_index});
+        if (found == gaze.end()) continue;
+        const std::size_t test_label = row.label1_mode == row.test_mode ? 0 : 1;
+        row.gaze_error_test_arcmin = found->second.error_mean_arcmin[test_label];
+        row.gaze_share_beyond_m = found->second.share_beyond_m;
+    }
+}
+
+}  // namespace
+
 Result<analysis::Dataset> read_study_database(const std::filesystem::path& path,
                                               const study::StudyStore& store,
                                               const study::ExportData& data) {
@@ -139,6 +175,11 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path,
     std::map<std::int64_t, double> missed_threshold;
     // Per session and trial: frames shown and missed, from the frame log (headset sessions).
     std::map<std::int64_t, std::map<int, TrialFrameCounts>> frame_counts;
+    std::map<std::pair<std::int64_t, int>, study::TrialGaze> trial_gaze;
+    std::map<std::int64_t, std::map<int, const study::TrialRecord*>> trials_by_index;
+    for (const study::TrialRecord& record : data.trials) {
+        trials_by_index[record.session_id][record.trial.index] = &record;
+    }
     for (const auto& [id, session] : data.sessions) {
         // The protocol as the session ran it: its first alternative is the reference.
         Result<study::Protocol> protocol =
@@ -150,6 +191,10 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path,
         Result<std::vector<study::FrameRecord>> frames = store.frames(id);
         if (!frames) return Error{"--db " + path.string() + ": " + frames.error().message};
         frame_counts[id] = trial_frame_counts(*frames);
+        for (study::TrialGaze& gaze : study::summarize_trial_gaze(*frames)) {
+            trial_gaze[{id, gaze.trial_index}] = std::move(gaze);
+        }
+        add_gaze_samples(*frames, trials_by_index[id], dataset);
         Result<std::vector<study::QuestionnaireAnswer>> answers = store.answers(id);
         if (!answers) return Error{"--db " + path.string() + ": " + answers.error().message};
         for (const study::QuestionnaireAnswer& a : *answers) {
@@ -171,6 +216,7 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path,
         dataset.trials.push_back(std::move(row));
     }
     analysis::derive_session_fields(dataset.trials);
+    add_trial_gaze(trial_gaze, dataset.trials);
     return dataset;
 }
 

@@ -132,7 +132,7 @@ TEST_F(AnalyzeIntegrityCli, AHardLinkAndAnExportAreTheSameSessionsToo) {
                         &log),
               0)
         << log;
-    EXPECT_TRUE(contains(read_file(dir_ / "site-a.csv"), ",session_uuid,software_version\n"));
+    EXPECT_TRUE(contains(read_file(dir_ / "site-a.csv"), ",session_uuid,software_version,"));
     EXPECT_EQ(analyze({{"--db", "site-a.sqlite"}, {"--csv", "site-a.csv"}}, {}, &log), 1);
     EXPECT_TRUE(contains(log, "site-a.csv holds the same session as ")) << log;
     EXPECT_TRUE(contains(log, "an identical copy")) << log;

@@ -202,6 +202,7 @@ TEST_F(StudyDayCli, NotesTheRosterAndResumeBySessionNumber) {
         EXPECT_EQ(s["state"], "completed");
         EXPECT_EQ(s["session"], 1);
         EXPECT_TRUE(s["held_by"].is_null());
+        EXPECT_EQ(s["gaze"], false);  // headless sessions record no eye gaze
     }
     EXPECT_EQ(roster["sessions"][1]["participant"], "P2");
     EXPECT_EQ(roster["sessions"][1]["participant_number"], 2);

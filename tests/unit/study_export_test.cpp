@@ -25,16 +25,24 @@ const std::string kHeader =
     "switches,time_label1_s,time_label2_s,decision_time_s,practice,decided,label2_mode,"
     "participant_index,protocol,protocol_hash,observer,runtime,hmd,session_status,"
     "anti_aliasing,ssao,detail,procedure,staircase_threshold_m,staircase_lower_m,staircase_upper_"
-    "m,session_id,repetition,participant_number,runs,session_uuid,software_version\n";
+    "m,session_id,repetition,participant_number,runs,session_uuid,software_version,gaze_samples,"
+    "gaze_share_beyond_m,gaze_error_mean_arcmin_1,gaze_error_mean_arcmin_2,"
+    "gaze_error_max_arcmin_1,gaze_error_max_arcmin_2,gaze_fixations\n";
+// The gaze columns of a session that recorded no gaze.
+const std::string kNoGaze = ",NA,NA,NA,NA,NA,NA,NA";
+const std::string kNoGazeJson =
+    "\"gaze_samples\": null, \"gaze_share_beyond_m\": null, \"gaze_error_mean_arcmin_1\": null, "
+    "\"gaze_error_mean_arcmin_2\": null, \"gaze_error_max_arcmin_1\": null, "
+    "\"gaze_error_max_arcmin_2\": null, \"gaze_fixations\": null, ";
 const std::string kPracticeRow =
     "P01,1,0,NA,landscape,5,stereo,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,hybrid,0,fink2019,"
     "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,1,1,NA," +
-    kUuid + ",0.1.0\n";
+    kUuid + ",0.1.0" + kNoGaze + "\n";
 const std::string kDecidedRow =
     "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,hybrid,0,"
     "fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,"
     "1,1,2," +
-    kUuid + ",0.1.0\n";
+    kUuid + ",0.1.0" + kNoGaze + "\n";
 
 SessionInfo known_session() {
     SessionInfo info;
@@ -107,10 +115,10 @@ TEST(StudyExport, ASessionWithoutARecordedBuildSaysUnknown) {
     std::ostringstream out;
     write_csv(data, out);
     const std::string text = out.str();
-    EXPECT_EQ(text.find(",0.1.0\n"), std::string::npos) << text;
+    EXPECT_EQ(text.find(",0.1.0,"), std::string::npos) << text;
     std::size_t rows = 0;
-    for (std::size_t at = text.find(",unknown\n"); at != std::string::npos;
-         at = text.find(",unknown\n", at + 1)) {
+    for (std::size_t at = text.find(",unknown" + kNoGaze + "\n"); at != std::string::npos;
+         at = text.find(",unknown" + kNoGaze + "\n", at + 1)) {
         ++rows;
     }
     EXPECT_EQ(rows, 2u) << text;
@@ -143,8 +151,8 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"staircase_threshold_m\": null, \"staircase_lower_m\": null, "
         "\"staircase_upper_m\": null, \"session_id\": 1, \"repetition\": 1, "
         "\"participant_number\": 1, \"runs\": null, \"session_uuid\": \"" +
-        kUuid +
-        "\", \"software_version\": \"0.1.0\", \"scene_files\": [], \"session_notes\": []},\n"
+        kUuid + "\", \"software_version\": \"0.1.0\", " + kNoGazeJson +
+        "\"scene_files\": [], \"session_notes\": []},\n"
         "  {\"participant\": \"P01\", \"session\": 1, \"trial_index\": 2, \"block\": 0, "
         "\"scene\": \"spheres\", \"mono_plane\": 1.6, \"label1_mode\": \"stereo\", \"choice\": 1, "
         "\"chosen_mode\": \"stereo\", \"valid\": true, \"switches\": 2, \"time_label1_s\": 1.5, "
@@ -157,9 +165,8 @@ TEST(StudyExport, JsonHasTheSameKeysNumbersAndNulls) {
         "\"procedure\": \"constant\", \"staircase_threshold_m\": null, "
         "\"staircase_lower_m\": null, \"staircase_upper_m\": null, \"session_id\": 1, "
         "\"repetition\": 1, \"participant_number\": 1, \"runs\": 2, \"session_uuid\": \"" +
-        kUuid +
-        "\", \"software_version\": \"0.1.0\", \"scene_files\": [], "
-        "\"session_notes\": []}\n"
+        kUuid + "\", \"software_version\": \"0.1.0\", " + kNoGazeJson +
+        "\"scene_files\": [], \"session_notes\": []}\n"
         "]\n";
     EXPECT_EQ(out.str(), expected);
 }
@@ -176,16 +183,17 @@ TEST(StudyExport, StaircaseTrialsCarryTheirStaircasesEstimate) {
         "P01,1,2,0,spheres,1.6,stereo,1,stereo,TRUE,2,1.5,1.600000001,3.100000001,FALSE,TRUE,"
         "hybrid,0,fink2019,fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,"
         "staircase,6.25,3,12.5,1,1,1,2," +
-        kUuid + ",0.1.0\n";
+        kUuid + ",0.1.0" + kNoGaze + "\n";
     const std::string practice_row = kPracticeRow.substr(0, kPracticeRow.find("constant,")) +
-                                     "staircase,NA,NA,NA,1,1,1,NA," + kUuid + ",0.1.0\n";
+                                     "staircase,NA,NA,NA,1,1,1,NA," + kUuid + ",0.1.0" + kNoGaze +
+                                     "\n";
     EXPECT_EQ(out.str(), kHeader + practice_row + staircase_row);
 
     data.staircase_estimates[1][2] =
         ThresholdEstimate{6.25, std::nullopt, std::nullopt, std::nullopt, 7};
     std::ostringstream up_down;
     write_csv(data, up_down);
-    EXPECT_NE(up_down.str().find(",staircase,6.25,NA,NA,1,1,1,2," + kUuid + ",0.1.0\n"),
+    EXPECT_NE(up_down.str().find(",staircase,6.25,NA,NA,1,1,1,2," + kUuid + ",0.1.0,"),
               std::string::npos);
 }
 
@@ -311,13 +319,18 @@ TEST(StudyExport, FormatNames) {
     ASSERT_FALSE(bad.ok());
     EXPECT_NE(bad.error().message.find("use csv, json, frames-csv"), std::string::npos);
     EXPECT_NE(bad.error().message.find("notes-csv"), std::string::npos);
+    EXPECT_NE(bad.error().message.find("gaze-csv"), std::string::npos);
     EXPECT_EQ(export_format_name(ExportFormat::Json), "json");
     EXPECT_EQ(*parse_export_format("frames-csv"), ExportFormat::FramesCsv);
     EXPECT_EQ(export_format_name(ExportFormat::FramesCsv), "frames-csv");
     EXPECT_EQ(*parse_export_format("notes-csv"), ExportFormat::NotesCsv);
     EXPECT_EQ(export_format_name(ExportFormat::NotesCsv), "notes-csv");
-    EXPECT_EQ(export_columns().size(), 37u);
-    EXPECT_EQ(export_columns().back(), "software_version");
+    EXPECT_EQ(*parse_export_format("gaze-csv"), ExportFormat::GazeCsv);
+    EXPECT_EQ(export_format_name(ExportFormat::GazeCsv), "gaze-csv");
+    // The gaze columns came after software_version: every earlier column keeps its place.
+    EXPECT_EQ(export_columns().size(), 44u);
+    EXPECT_EQ(export_columns()[36], "software_version");
+    EXPECT_EQ(export_columns().back(), "gaze_fixations");
     EXPECT_EQ(export_columns().front(), "participant");
 }
 
@@ -367,10 +380,9 @@ TEST(StudyExport, SessionIsTheParticipantsNumberAndTheIdFollows) {
     std::ostringstream csv;
     write_csv(data, csv);
     EXPECT_NE(csv.str().find("\nP01,2,2,0,spheres,1.6,"), std::string::npos) << csv.str();
-    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,7,3,5,2," + kUuid + ",0.1.0\n"), std::string::npos)
+    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,7,3,5,2," + kUuid + ",0.1.0,"), std::string::npos)
         << csv.str();
-    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,1,1,1,NA," + kUuid + ",0.1.0\n"),
-              std::string::npos)
+    EXPECT_NE(csv.str().find(",constant,NA,NA,NA,1,1,1,NA," + kUuid + ",0.1.0,"), std::string::npos)
         << csv.str();
     std::ostringstream json;
     write_json(data, json);
@@ -418,23 +430,27 @@ TEST(StudyExport, EveryParticipantVariableIsAColumn) {
         text.substr(0, text.find('\n') + 1),
         kHeader.substr(0, kHeader.size() - 1) + ",var_age,var_vision,var_remark,var_offset_db\n");
     EXPECT_NE(text.find("\nP01,1,0,NA,landscape,5,"), std::string::npos);
-    EXPECT_NE(text.find(",1,1,1,NA," + kUuid + ",0.1.0,34,corrected,\"'=1+1\",NA\nP01,1,2,"),
+    EXPECT_NE(text.find(",1,1,1,NA," + kUuid + ",0.1.0" + kNoGaze +
+                        ",34,corrected,\"'=1+1\",NA\nP01,1,2,"),
               std::string::npos)
         << text;
-    EXPECT_NE(text.find(",2,1,2,NA,NA,0.1.0,NA,\"'-\",NA,-5.5\n"), std::string::npos) << text;
+    EXPECT_NE(text.find(",2,1,2,NA,NA,0.1.0" + kNoGaze + ",NA,\"'-\",NA,-5.5\n"), std::string::npos)
+        << text;
 
     std::ostringstream json;
     write_json(data, json);
-    EXPECT_NE(
-        json.str().find("\"participant_number\": 1, \"runs\": null, \"session_uuid\": \"" + kUuid +
-                        "\", \"software_version\": \"0.1.0\", \"var_age\": 34, "
-                        "\"var_vision\": "
-                        "\"corrected\", \"var_remark\": \"=1+1\", \"var_offset_db\": null, "
-                        "\"scene_files\""),
-        std::string::npos)
+    EXPECT_NE(json.str().find("\"participant_number\": 1, \"runs\": null, \"session_uuid\": \"" +
+                              kUuid + "\", \"software_version\": \"0.1.0\", " + kNoGazeJson +
+                              "\"var_age\": 34, "
+                              "\"var_vision\": "
+                              "\"corrected\", \"var_remark\": \"=1+1\", \"var_offset_db\": null, "
+                              "\"scene_files\""),
+              std::string::npos)
         << json.str();
     EXPECT_NE(json.str().find("\"participant_number\": 2, \"runs\": null, \"session_uuid\": null, "
-                              "\"software_version\": \"0.1.0\", \"var_age\": null, "
+                              "\"software_version\": \"0.1.0\", " +
+                              kNoGazeJson +
+                              "\"var_age\": null, "
                               "\"var_vision\": "
                               "\"-\", \"var_remark\": null, \"var_offset_db\": -5.5, "),
               std::string::npos)
@@ -581,21 +597,21 @@ TEST(StudyExport, EachFormatRecognisesItsOwnEarlierExports) {
     with_frames.frames[1] = {FrameRecord{}};
     const std::vector<std::pair<ExportFormat, std::string>> outputs = [&] {
         std::vector<std::pair<ExportFormat, std::string>> all;
-        std::ostringstream csv, json, frames, notes, empty_json;
+        std::ostringstream csv, json, frames, notes, gaze, empty_json;
         write_csv(data, csv);
         write_json(data, json);
         write_frames_csv(with_frames, frames);
         write_notes_csv(data_with_notes(), notes);
+        write_gaze_csv(with_frames, gaze);
         write_json(ExportData{}, empty_json);
         return std::vector<std::pair<ExportFormat, std::string>>{
-            {ExportFormat::Csv, csv.str()},
-            {ExportFormat::Json, json.str()},
-            {ExportFormat::FramesCsv, frames.str()},
-            {ExportFormat::NotesCsv, notes.str()},
-            {ExportFormat::Json, empty_json.str()}};
+            {ExportFormat::Csv, csv.str()},          {ExportFormat::Json, json.str()},
+            {ExportFormat::FramesCsv, frames.str()}, {ExportFormat::NotesCsv, notes.str()},
+            {ExportFormat::GazeCsv, gaze.str()},     {ExportFormat::Json, empty_json.str()}};
     }();
-    for (ExportFormat format :
-         {ExportFormat::Csv, ExportFormat::Json, ExportFormat::FramesCsv, ExportFormat::NotesCsv}) {
+    // gaze-csv's first columns are frames-csv's: each still tells the other's exports apart.
+    for (ExportFormat format : {ExportFormat::Csv, ExportFormat::Json, ExportFormat::FramesCsv,
+                                ExportFormat::NotesCsv, ExportFormat::GazeCsv}) {
         const OutputKind kind = export_output_kind(format);
         for (const auto& [written_as, text] : outputs) {
             const std::string head = text.substr(0, kOutputHeadBytes);
@@ -639,7 +655,7 @@ TEST(StudyExport, ExportsFromTheStoreToAFile) {
             "P01,1,1,NA,beams,3,hybrid,NA,NA,NA,NA,NA,NA,NA,TRUE,FALSE,stereo,0,fink2019,"
             "fnv1a64:cbf29ce484222325,default,none,vive,running,taa,off,low,constant,NA,NA,NA,1,"
             "1,1,NA," +
-            kUuid + ",0.1.0\n";
+            kUuid + ",0.1.0" + kNoGaze + "\n";
         EXPECT_EQ(text, kHeader + kPracticeRow + beams + kDecidedRow);
         for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
             EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos)
@@ -706,21 +722,19 @@ TEST(StudyExport, ExportsSessionsVariablesAndNotesFromTheStore) {
 
         ASSERT_TRUE(export_trials(store, ExportFormat::Csv, dir / "trials.csv").ok());
         const std::string csv = read_file(dir / "trials.csv");
-        EXPECT_NE(
-            csv.find(
-                ",participant_number,runs,session_uuid,software_version,var_age,var_handedness\n"),
-            std::string::npos)
+        EXPECT_NE(csv.find(",gaze_error_max_arcmin_2,gaze_fixations,var_age,var_handedness\n"),
+                  std::string::npos)
             << csv;
         const auto uuid = [&](std::int64_t id) { return store.session(id).value().session_uuid; };
         EXPECT_NE(uuid(*first), uuid(*second));
         EXPECT_NE(csv.find("\nP01,1,1,0,spheres,1.6,hybrid,"), std::string::npos) << csv;
         EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*first) + ",2,1,NA," + uuid(*first) +
-                           ",0.1.0,34,NA\n"),
+                           ",0.1.0" + kNoGaze + ",34,NA\n"),
                   std::string::npos)
             << csv;
         EXPECT_NE(csv.find("\nP01,2,1,0,spheres,1.6,hybrid,"), std::string::npos) << csv;
         EXPECT_NE(csv.find(",NA,NA,NA," + std::to_string(*second) + ",2,1,NA," + uuid(*second) +
-                           ",0.1.0,34,NA\n"),
+                           ",0.1.0" + kNoGaze + ",34,NA\n"),
                   std::string::npos)
             << csv;
 
