@@ -1,5 +1,6 @@
 #include "app/commands/gaze_point.h"
 
+#include <chrono>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -32,6 +33,7 @@ std::optional<study::GazePointRecord> gaze_point(const scenes::SceneRayCaster& s
 
 Result<std::unique_ptr<GazePointFinder>> GazePointFinder::build(
     const std::map<std::string, const scenes::Scene*>& scenes) {
+    const auto start = std::chrono::steady_clock::now();
     auto finder = std::make_unique<GazePointFinder>();
     for (const auto& [name, scene] : scenes) {
         Result<std::unique_ptr<scenes::SceneRayCaster>> caster =
@@ -39,6 +41,9 @@ Result<std::unique_ptr<GazePointFinder>> GazePointFinder::build(
         MONOPLANE_TRY(caster);
         finder->casters_[name] = std::move(caster).value();
     }
+    finder->cost_.built(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+            .count());
     return finder;
 }
 
@@ -60,6 +65,17 @@ std::optional<study::GazePointRecord> GazePointFinder::find(const std::string& s
                                                             const rig::Pose& head_in_scene,
                                                             const rig::RigInputs& inputs,
                                                             const glm::dvec3& gaze_in_head) {
+    const auto start = std::chrono::steady_clock::now();
+    std::optional<study::GazePointRecord> point =
+        find_untimed(scene, head_in_scene, inputs, gaze_in_head);
+    cost_.found(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
+                    .count());
+    return point;
+}
+
+std::optional<study::GazePointRecord> GazePointFinder::find_untimed(
+    const std::string& scene, const rig::Pose& head_in_scene, const rig::RigInputs& inputs,
+    const glm::dvec3& gaze_in_head) {
     const auto caster = casters_.find(scene);
     if (caster == casters_.end() || !std::isfinite(inputs.mono_plane)) return std::nullopt;
     if (!rig_inputs_ || !same_inputs(*rig_inputs_, inputs)) {

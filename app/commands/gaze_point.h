@@ -11,6 +11,7 @@
 
 #include <glm/ext/vector_double3.hpp>
 
+#include "app/commands/gaze_point_cost.h"
 #include "common/result.h"
 #include "rig/pose.h"
 #include "rig/rig.h"
@@ -46,7 +47,16 @@ class GazePointFinder {
                                                const rig::RigInputs& rig_inputs,
                                                const glm::dvec3& gaze_in_head);
 
+    // What the build and the lookups so far cost (each find() is timed).
+    const GazePointCost& cost() const { return cost_; }
+
   private:
+    std::optional<study::GazePointRecord> find_untimed(const std::string& scene,
+                                                       const rig::Pose& head_in_scene,
+                                                       const rig::RigInputs& rig_inputs,
+                                                       const glm::dvec3& gaze_in_head);
+
+    GazePointCost cost_;
     std::map<std::string, std::unique_ptr<scenes::SceneRayCaster>> casters_;
     std::optional<rig::RigInputs> rig_inputs_;
     std::optional<rig::Rig> rig_;

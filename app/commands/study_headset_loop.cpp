@@ -184,6 +184,7 @@ void HeadsetLoop::finish() {
         [&](modes::ModeRenderer& r) { frame_log_.completed(&r, r.finish_frames()); });
     frame_log_.flush();
     std::cerr << frame_log_.build_summary();
+    if (gaze_points_) std::cerr << gaze_points_->cost().summary();
 }
 
 void HeadsetLoop::request_exit() {

@@ -135,5 +135,21 @@ TEST(GazePoint, TheFinderKnowsItsScenesAndTheTrialsPlane) {
     EXPECT_FALSE(finder->find("beams", seat(), inputs(3.0), {0.0, 0.0, -1.0}));
 }
 
+// The session's summary line: quantiles of 1 us bins, the last bin open-ended.
+TEST(GazePointCost, QuantilesOfTheLookupsAndTheSummaryLine) {
+    GazePointCost cost;
+    EXPECT_EQ(cost.quantile_us(0.5), 0.0);
+    cost.built(85.25);
+    for (const double us : {0.5, 3.2, 3.9, 12000.0}) cost.found(us);
+    EXPECT_EQ(cost.lookups(), 4);
+    EXPECT_EQ(cost.quantile_us(0.25), 0.0);  // rank 1: the 0.5 us lookup's bin
+    EXPECT_EQ(cost.quantile_us(0.5), 3.0);   // rank 2 of 4
+    EXPECT_EQ(cost.quantile_us(0.75), 3.0);
+    EXPECT_EQ(cost.quantile_us(0.99), 9999.0);  // rank 4: 12 ms, in the open last bin
+    EXPECT_EQ(cost.summary(),
+              "gaze points: 4 lookups, 3 us each (median), 9999 us (99th percentile); ray "
+              "casting prepared in 85.2 ms when the session began\n");
+}
+
 }  // namespace
 }  // namespace monoplane::app
