@@ -14,6 +14,9 @@ void merge(Dataset& into, Dataset from) {
                         std::make_move_iterator(from.answers.end()));
     into.sessions.insert(into.sessions.end(), std::make_move_iterator(from.sessions.begin()),
                          std::make_move_iterator(from.sessions.end()));
+    into.gaze_samples.insert(into.gaze_samples.end(),
+                             std::make_move_iterator(from.gaze_samples.begin()),
+                             std::make_move_iterator(from.gaze_samples.end()));
     into.sources.insert(into.sources.end(), std::make_move_iterator(from.sources.begin()),
                         std::make_move_iterator(from.sources.end()));
 }

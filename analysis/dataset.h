@@ -58,12 +58,15 @@ struct TrialRow {
     // beyond the mono plane.
     std::optional<double> gaze_error_test_arcmin;
     std::optional<double> gaze_share_beyond_m;
+    std::optional<int> gaze_fixations;  // I-DT fixations over the frames showing a label
 };
 
 // One valid gaze sample of a frame that showed a trial's scene (database input only), for the
 // report's gaze density over each scene's left-eye image: the head relative to the seat and the
 // gaze in the head's frame, and the depth of the point the gaze met (none: the sky).
 struct GazeSampleRow {
+    std::string source;  // the database it came from, and its session there
+    std::int64_t session_id = 0;
     std::string participant;
     std::string scene;
     double mono_plane = 0.0;                    // the trial's m

@@ -153,6 +153,7 @@ void remove_copies(Dataset& data, const std::vector<DuplicateSession>& found) {
     std::erase_if(data.trials, gone);
     std::erase_if(data.answers, gone);
     std::erase_if(data.sessions, gone);
+    std::erase_if(data.gaze_samples, gone);
     for (const std::string& uuid : order) data.dropped_copies.push_back(by_uuid.at(uuid));
 }
 

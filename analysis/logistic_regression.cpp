@@ -1,5 +1,6 @@
 #include "analysis/logistic_regression.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -29,86 +30,136 @@ struct Design {
     std::vector<int> cluster;  // participant index of each row
     std::vector<std::string> names;
     int clusters = 0;
+    int skipped_without_predictor = 0;
 };
 
 double logistic(double eta) {
     return eta >= 0 ? 1.0 / (1.0 + std::exp(-eta)) : std::exp(eta) / (1.0 + std::exp(eta));
 }
 
-Result<Design> build_design(const std::vector<TrialRow>& trials, const LogisticOptions& options) {
+// The analysable trials that have a value of the predictor, with what the checks need.
+struct Selection {
     std::vector<const TrialRow*> rows;
+    std::vector<double> predictor;  // per row
     std::set<std::string> scenes;
-    std::set<double> distances;
-    std::map<std::string, int> participants;
+    std::set<double> predictor_values;
+    std::map<std::string, int> participants;                       // code -> cluster index
     std::map<std::string, std::pair<int, int>> outcomes_by_scene;  // scene -> {test, reference}
+    int skipped_without_predictor = 0;
+};
+
+std::string predictor_term(const LogisticOptions& options) {
+    if (options.predictor == ChoicePredictor::GazeError) return "gaze_error_test_arcmin";
+    return options.log2_distance ? "log2_mono_plane_m" : "mono_plane_m";
+}
+
+Result<Selection> select_rows(const std::vector<TrialRow>& trials, const LogisticOptions& options) {
+    const bool gaze = options.predictor == ChoicePredictor::GazeError;
+    Selection s;
     for (const TrialRow& trial : trials) {
         if (!is_analysable(trial)) continue;
-        if (options.log2_distance && !(trial.mono_plane > 0.0))
-            return Error{"logistic regression: log2 distance needs distances > 0 m, a trial has " +
-                         std::to_string(trial.mono_plane)};
-        rows.push_back(&trial);
-        scenes.insert(trial.scene);
-        distances.insert(trial.mono_plane);
-        participants.emplace(trial.participant, static_cast<int>(participants.size()));
-        auto& outcome = outcomes_by_scene[trial.scene];
+        double value = trial.mono_plane;
+        if (gaze) {
+            if (!trial.gaze_error_test_arcmin || !std::isfinite(*trial.gaze_error_test_arcmin)) {
+                ++s.skipped_without_predictor;
+                continue;
+            }
+            value = *trial.gaze_error_test_arcmin;
+        } else if (options.log2_distance) {
+            if (!(trial.mono_plane > 0.0))
+                return Error{
+                    "logistic regression: log2 distance needs distances > 0 m, a trial has " +
+                    std::to_string(trial.mono_plane)};
+            value = std::log2(trial.mono_plane);
+        }
+        s.rows.push_back(&trial);
+        s.predictor.push_back(value);
+        s.scenes.insert(trial.scene);
+        s.predictor_values.insert(value);
+        s.participants.emplace(trial.participant, static_cast<int>(s.participants.size()));
+        auto& outcome = s.outcomes_by_scene[trial.scene];
         ++(trial.chose_test ? outcome.first : outcome.second);
     }
+    return s;
+}
 
-    Design design;
-    design.names = {"intercept", options.log2_distance ? "log2_mono_plane_m" : "mono_plane_m"};
-    std::vector<std::string> dummies;
-    if (options.scene_terms)
-        for (auto it = scenes.begin(); it != scenes.end(); ++it)
-            if (it != scenes.begin()) dummies.push_back(*it);
-    for (const std::string& scene : dummies) design.names.push_back("scene[" + scene + "]");
-
-    const std::size_t n = rows.size();
-    const std::size_t k = design.names.size();
+// The refusals before any fitting: too few trials, participants or predictor values, and
+// outcomes that leave the odds without a finite estimate.
+Result<void> check_estimable(const Selection& s, std::size_t k, const LogisticOptions& options) {
+    const std::size_t n = s.rows.size();
+    const bool gaze = options.predictor == ChoicePredictor::GazeError;
     if (n <= k)
-        return Error{"logistic regression: " + std::to_string(n) +
-                     " analysable trials are too few for " + std::to_string(k) + " coefficients"};
+        return Error{"logistic regression: " + std::to_string(n) + " analysable trials " +
+                     (gaze ? "with a gaze error " : "") + "are too few for " + std::to_string(k) +
+                     " coefficients"};
     // The sandwich's meat is a sum of G outer products of one score each, so its rank is at most
     // G - 1 (the scores sum to zero at the estimate): with G <= K some coefficient gets a zero
     // or undefined standard error (Cameron and Miller 2015, sect. VI).
-    if (participants.size() <= k)
+    if (s.participants.size() <= k)
         return Error{
             "logistic regression: clustered standard errors need more participants "
             "than coefficients; the trials come from " +
-            std::to_string(participants.size()) + " participant(s) for " + std::to_string(k) +
+            std::to_string(s.participants.size()) + " participant(s) for " + std::to_string(k) +
             " coefficients"};
-    if (distances.size() < 2)
-        return Error{
-            "logistic regression: the trials have only one distance, so its effect "
-            "cannot be estimated (singular design)"};
+    if (s.predictor_values.size() < 2)
+        return Error{gaze ? "logistic regression: the trials have only one gaze error, so its "
+                            "effect cannot be estimated (singular design)"
+                          : "logistic regression: the trials have only one distance, so its "
+                            "effect cannot be estimated (singular design)"};
     int test_total = 0;
-    for (const auto& [scene, outcome] : outcomes_by_scene) test_total += outcome.first;
+    for (const auto& [scene, outcome] : s.outcomes_by_scene) test_total += outcome.first;
     if (test_total == 0 || test_total == static_cast<int>(n))
         return Error{
             "logistic regression: every analysable trial has the same outcome (complete "
             "separation); the odds cannot be estimated"};
-    if (options.scene_terms) {
-        for (const auto& [scene, outcome] : outcomes_by_scene)
-            if (outcome.first == 0 || outcome.second == 0)
-                return Error{"logistic regression: in scene '" + scene +
-                             "' every trial chose the " +
-                             (outcome.first == 0 ? "reference" : "test") +
-                             " alternative (quasi-complete separation): its coefficient has no "
-                             "finite estimate; fit without scene terms or report the rates"};
-    }
+    if (!options.scene_terms) return Ok{};
+    for (const auto& [scene, outcome] : s.outcomes_by_scene)
+        if (outcome.first == 0 || outcome.second == 0)
+            return Error{"logistic regression: in scene '" + scene + "' every trial chose the " +
+                         (outcome.first == 0 ? "reference" : "test") +
+                         " alternative (quasi-complete separation): its coefficient has no "
+                         "finite estimate; fit without scene terms or report the rates"};
+    return Ok{};
+}
 
-    design.x = Matrix(n, k);
+Result<Design> build_design(const std::vector<TrialRow>& trials, const LogisticOptions& options) {
+    if (options.predictor == ChoicePredictor::GazeError) {
+        const bool any_gaze = std::any_of(trials.begin(), trials.end(), [](const TrialRow& t) {
+            return is_analysable(t) && t.gaze_error_test_arcmin.has_value();
+        });
+        if (!any_gaze)
+            return Error{
+                "logistic regression: no analysable trial has a gaze error (no session recorded "
+                "eye gaze on the test alternative)"};
+    }
+    Result<Selection> selected = select_rows(trials, options);
+    MONOPLANE_TRY(selected);
+    const Selection& s = *selected;
+
+    Design design;
+    design.names = {"intercept", predictor_term(options)};
+    std::vector<std::string> dummies;
+    if (options.scene_terms)
+        for (auto it = s.scenes.begin(); it != s.scenes.end(); ++it)
+            if (it != s.scenes.begin()) dummies.push_back(*it);
+    for (const std::string& scene : dummies) design.names.push_back("scene[" + scene + "]");
+    MONOPLANE_TRY(check_estimable(s, design.names.size(), options));
+
+    const std::size_t n = s.rows.size();
+    design.x = Matrix(n, design.names.size());
     design.y.resize(n);
     design.cluster.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        const TrialRow& t = *rows[i];
+        const TrialRow& t = *s.rows[i];
         design.x(i, 0) = 1.0;
-        design.x(i, 1) = options.log2_distance ? std::log2(t.mono_plane) : t.mono_plane;
+        design.x(i, 1) = s.predictor[i];
         for (std::size_t d = 0; d < dummies.size(); ++d)
             design.x(i, 2 + d) = t.scene == dummies[d] ? 1.0 : 0.0;
         design.y[i] = t.chose_test ? 1.0 : 0.0;
-        design.cluster[i] = participants.at(t.participant);
+        design.cluster[i] = s.participants.at(t.participant);
     }
-    design.clusters = static_cast<int>(participants.size());
+    design.clusters = static_cast<int>(s.participants.size());
+    design.skipped_without_predictor = s.skipped_without_predictor;
     return design;
 }
 
@@ -293,6 +344,7 @@ Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
     fit.clusters = d.clusters;
     fit.log_likelihood = state.log_likelihood;
     fit.distance_term = d.names[1];
+    fit.skipped_without_predictor = d.skipped_without_predictor;
     return fit;
 }
 

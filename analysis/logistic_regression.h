@@ -1,5 +1,6 @@
 // Logistic regression of the choice (test alternative chosen, e.g. hybrid over stereo) on the
-// mono-plane distance and the scene, with standard errors clustered by participant.
+// mono-plane distance (or, where the sessions recorded eye gaze, hybrid's error at the gaze
+// point) and the scene, with standard errors clustered by participant.
 //
 // Why: Fink et al. 2019 (sect. 6.2) test distance x decision with a pooled chi-square
 // (phi = 0.07, p > 0.05), which treats the 1362 decisions as independent. They are not: each of
@@ -45,26 +46,40 @@ struct LogisticFit {
     int iterations = 0;
     bool converged = false;  // always true in a returned fit: non-convergence is an error
     double log_likelihood = 0;
-    std::string distance_term = "mono_plane_m";  // or "log2_mono_plane_m"
+    // The predictor's term (named for the default predictor, the distance): "mono_plane_m",
+    // "log2_mono_plane_m" or "gaze_error_test_arcmin".
+    std::string distance_term = "mono_plane_m";
+    // Analysable trials left out because they have no value of the predictor (a gaze error:
+    // trials of sessions that recorded no gaze, or without a gaze point on the test alternative).
+    // Always 0 for the distance.
+    int skipped_without_predictor = 0;
+};
+
+// What the choice is regressed on.
+enum class ChoicePredictor {
+    Distance,   // the mono-plane distance m (metres, or log2 with log2_distance)
+    GazeError,  // TrialRow::gaze_error_test_arcmin: hybrid's error where the participant looked
 };
 
 struct LogisticOptions {
+    ChoicePredictor predictor = ChoicePredictor::Distance;
     // Distance as log2(metres): one unit per doubling, closer to the projection error's fall
-    // with 1/m (section 3) than metres are.
+    // with 1/m (section 3) than metres are. Only for the distance predictor.
     bool log2_distance = false;
     // One dummy per scene but the first; false fits choice ~ distance alone.
     bool scene_terms = true;
 };
 
 // Fits P(test chosen) = 1 / (1 + exp(-x b)) by iteratively reweighted least squares (Newton's
-// method) to the analysable trials (others are skipped). Covariance: CR1 sandwich
+// method) to the analysable trials (others are skipped; with the gaze error as predictor, so are
+// trials without one, counted in skipped_without_predictor). Covariance: CR1 sandwich
 // G/(G-1) * (N-1)/(N-K) * B^-1 M B^-1 with B = X'WX, M = sum over participants g of
 // s_g s_g', s_g = sum of x_i (y_i - p_i) over g's trials; as Stata's vce(cluster) and statsmodels'
 // cov_type="cluster" default, with normal (z) tests; and beside it CR2 with Satterthwaite t tests
 // (the *_cr2 fields). May be called any time. Errors: no more trials than coefficients, fewer than
-// 2 participants, fewer than 2 distances, a distance <= 0 with log2_distance, a singular design
-// (e.g. a scene confounded with distance), (quasi-)complete separation (one outcome only, a
-// scene where everyone chose the same, fitted probabilities of 0 or 1, or no convergence).
+// 2 participants, fewer than 2 distances (gaze errors), a distance <= 0 with log2_distance, a
+// singular design (e.g. a scene confounded with distance), (quasi-)complete separation (one outcome
+// only, a scene where everyone chose the same, fitted probabilities of 0 or 1, or no convergence).
 Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
                                      const LogisticOptions& options = {});
 

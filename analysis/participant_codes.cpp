@@ -190,6 +190,9 @@ Result<void> join_participant_codes(Dataset& data, SharedCodes rule,
         for (TrialRow& t : data.trials) t.participant = prefix->at(t.source) + t.participant;
         for (AnswerRow& a : data.answers) a.participant = prefix->at(a.source) + a.participant;
         for (SessionRow& s : data.sessions) s.participant = prefix->at(s.source) + s.participant;
+        for (GazeSampleRow& g : data.gaze_samples) {
+            g.participant = prefix->at(g.source) + g.participant;
+        }
     }
     data.codes = rule;
     data.shared_codes = std::move(shared);

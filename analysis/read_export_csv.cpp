@@ -1,5 +1,6 @@
 // read_export_csv() (declared in dataset.h): the CSV of `monoplane study export` into TrialRows.
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -219,7 +220,43 @@ Result<SessionRow> session_row(const Row& row, const TrialRow& t) {
     return s;
 }
 
+// The export's gaze columns of one trial (docs/gaze.md), where the export has them and the
+// trial recorded gaze (NA otherwise): the mean error at gaze while label 1 and label 2 were shown,
+// and the share of gaze beyond the mono plane. Which label showed the test alternative is known
+// only once derive_session_fields() has run: assign_gaze_error() picks it then.
+struct GazeCells {
+    std::array<std::optional<double>, 2> error_mean_arcmin;
+    std::optional<double> share_beyond_m;
+    std::optional<double> fixations;
+};
+
+Result<std::optional<double>> optional_number(const Row& row, std::string_view column) {
+    if (!row.has(column) || row.is_na(column)) return std::optional<double>();
+    double value = 0.0;
+    MONOPLANE_ASSIGN(value, row.number(column));
+    return std::optional<double>(value);
+}
+
+Result<GazeCells> gaze_cells(const Row& row) {
+    GazeCells cells;
+    MONOPLANE_ASSIGN(cells.error_mean_arcmin[0], optional_number(row, "gaze_error_mean_arcmin_1"));
+    MONOPLANE_ASSIGN(cells.error_mean_arcmin[1], optional_number(row, "gaze_error_mean_arcmin_2"));
+    MONOPLANE_ASSIGN(cells.share_beyond_m, optional_number(row, "gaze_share_beyond_m"));
+    MONOPLANE_ASSIGN(cells.fixations, optional_number(row, "gaze_fixations"));
+    return cells;
+}
+
 #undef MONOPLANE_ASSIGN
+
+// TrialRow::gaze_error_test_arcmin: the error while the label that showed the test alternative
+// was on; a trial showing the test mode under neither label (or both) has none.
+void assign_gaze(TrialRow& t, const GazeCells& cells) {
+    t.gaze_share_beyond_m = cells.share_beyond_m;
+    if (cells.fixations) t.gaze_fixations = static_cast<int>(*cells.fixations);
+    const bool first = t.label1_mode == t.test_mode;
+    const bool second = t.label2_mode == t.test_mode;
+    if (first != second) t.gaze_error_test_arcmin = cells.error_mean_arcmin[first ? 0 : 1];
+}
 
 Result<std::vector<CsvRecord>> read_records(const std::filesystem::path& path) {
     const std::string file = path.string();
@@ -296,6 +333,7 @@ Result<Dataset> read_export_csv(const std::filesystem::path& path) {
     Dataset dataset;
     dataset.sources.push_back(file);
     std::vector<Row> rows;
+    std::vector<GazeCells> gaze;
     for (std::size_t r = 1; r < records->size(); ++r) {
         const CsvRecord& record = (*records)[r];
         if (record.fields.size() != header.fields.size())
@@ -305,6 +343,9 @@ Result<Dataset> read_export_csv(const std::filesystem::path& path) {
         rows.emplace_back(file, record, *columns);
         Result<TrialRow> row = trial_row(rows.back(), layout);
         MONOPLANE_TRY(row);
+        Result<GazeCells> cells = gaze_cells(rows.back());
+        MONOPLANE_TRY(cells);
+        gaze.push_back(*cells);
         TrialRow& trial = row.value();
         trial.source = file;
         dataset.trials.push_back(std::move(trial));
@@ -314,6 +355,7 @@ Result<Dataset> read_export_csv(const std::filesystem::path& path) {
     MONOPLANE_TRY(sessions);
     dataset.sessions = std::move(sessions).value();
     derive_session_fields(dataset.trials);
+    for (std::size_t i = 0; i < dataset.trials.size(); ++i) assign_gaze(dataset.trials[i], gaze[i]);
     return dataset;
 }
 

@@ -133,6 +133,8 @@ AnalysisResults analyse(const Dataset& data, const ReportOptions& options) {
     r.questionnaire = questionnaire_summaries(data.answers);
     r.day = study_day(data);
     r.inputs = input_records(data);
+    r.gaze =
+        analyse_gaze(data, kept, options.logistic.scene_terms, options.gaze_eye, options.gaze_hmd);
     return r;
 }
 

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "analysis/report/box_chart.h"
+#include "analysis/report/gaze_section.h"
 #include "analysis/report/html_format.h"
 #include "analysis/report/psychometric_figure.h"
 #include "analysis/report/report.h"
@@ -41,9 +42,9 @@ BoxChart boxes(const std::vector<GroupSummary>& groups) {
     return chart;
 }
 
-// A scene name as part of a file name under figures/: scene names may be glTF files' paths
-// ("models/room.glb"), whose '/' would name a folder. Letters, digits, '-', '_' and '.' stay.
-std::string file_stem_of(const std::string& scene) {
+}  // namespace
+
+std::string scene_file_stem(const std::string& scene) {
     std::string stem = scene;
     for (char& c : stem) {
         const bool safe =
@@ -52,8 +53,6 @@ std::string file_stem_of(const std::string& scene) {
     }
     return stem;
 }
-
-}  // namespace
 
 std::string choices_svg(const std::vector<ChoiceRate>& by_scene_and_distance,
                         const std::string& test_mode, const std::string& reference_mode,
@@ -146,13 +145,14 @@ std::vector<Figure> report_figures(const AnalysisResults& r) {
                        switches_svg(r.switches, counts)});
     for (const PsychometricFit& f : r.psychometric) {
         if (f.participant != "all") continue;
-        figures.push_back({"psychometric_" + file_stem_of(f.scene),
+        figures.push_back({"psychometric_" + scene_file_stem(f.scene),
                            "Choices of " + r.reference_mode + " in " + upper_case(f.scene) +
                                " over the mono-plane distance m with the fitted psychometric "
                                "functions: the group's (green, with its threshold and 95 % "
                                "interval) and each participant's (grey).",
                            psychometric_svg(r.psychometric, f.scene, r.reference_mode)});
     }
+    for (Figure& f : gaze_figures(r)) figures.push_back(std::move(f));
     return figures;
 }
 

@@ -23,4 +23,9 @@ std::string decision_times_svg(const std::vector<GroupSummary>& by_scene,
                                const std::string& subtitle);
 std::string switches_svg(const std::vector<GroupSummary>& by_scene, const std::string& subtitle);
 
+// A scene name as part of a file name under figures/: scene names may be glTF files' paths
+// ("models/room.glb"), whose '/' would name a folder. Letters, digits, '-', '_' and '.' stay;
+// anything else becomes '_'.
+std::string scene_file_stem(const std::string& scene);
+
 }  // namespace monoplane::analysis::report

@@ -115,8 +115,13 @@ void logistic_json(JsonWriter& json, const AnalysisResults& r) {
         .value("iterations", f.iterations)
         .value("converged", f.converged)
         .value("log_likelihood", f.log_likelihood)
-        .value("small_sample_method", "CR2 with Satterthwaite t")
-        .begin_array("coefficients");
+        .value("small_sample_method", "CR2 with Satterthwaite t");
+    coefficients_json(json, f);
+    json.end_object();
+}
+
+void coefficients_json(JsonWriter& json, const LogisticFit& f) {
+    json.begin_array("coefficients");
     for (const Coefficient& c : f.coefficients) {
         json.begin_object()
             .value("name", c.name)
@@ -135,7 +140,7 @@ void logistic_json(JsonWriter& json, const AnalysisResults& r) {
             .value("ci_upper_cr2", c.ci_upper_cr2)
             .end_object();
     }
-    json.end_array().end_object();
+    json.end_array();
 }
 
 std::string logistic_csv(const AnalysisResults& r) {

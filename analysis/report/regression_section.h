@@ -20,4 +20,8 @@ std::string regression_section_html(const AnalysisResults& results);
 // after analyse().
 void logistic_json(JsonWriter& json, const AnalysisResults& results);
 
+// Writes a fit's "coefficients" array (CR1 and CR2 columns per term) into an open JSON object:
+// the "logistic" object's and the gaze regression's.
+void coefficients_json(JsonWriter& json, const LogisticFit& fit);
+
 }  // namespace monoplane::analysis::report

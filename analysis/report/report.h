@@ -17,6 +17,7 @@
 #include "analysis/frame_timing.h"
 #include "analysis/logistic_regression.h"
 #include "analysis/psychometric_fits.h"
+#include "analysis/report/gaze_results.h"
 #include "analysis/report/inputs_section.h"
 #include "analysis/report/study_day_section.h"
 #include "analysis/summaries.h"
@@ -28,6 +29,9 @@ struct ReportOptions {
     LogisticOptions logistic;
     PsychometricOptions psychometric;
     std::string title = "monoplane study analysis";
+    // The view the gaze densities are drawn in: the seat's left eye of this HMD profile.
+    SeatEye gaze_eye;
+    std::string gaze_hmd = "vive";
 };
 
 // What one input file contributed.
@@ -84,6 +88,8 @@ struct AnalysisResults {
     StudyDay day;
     // The protocol versions the sessions ran and the sessions several files held.
     InputRecords inputs;
+    // Eye gaze, where sessions recorded it (gaze_results.h).
+    GazeResults gaze;
 };
 
 // Runs every statistic. Never fails: a test that cannot be computed on these data (too few
@@ -96,8 +102,13 @@ struct Figure {
     std::string svg;      // a self-contained SVG document
 };
 
-// choices (Fig. 7), decision_times, switches, then psychometric_<scene> per scene fitted.
+// choices (Fig. 7), decision_times, switches, psychometric_<scene> per scene fitted, then
+// gaze_density_<scene> per scene with gaze samples.
 std::vector<Figure> report_figures(const AnalysisResults& results);
+
+// The figure `name` of `figures` with its caption, as report.html shows it; "" when there is no
+// such figure.
+std::string figure_html(const std::vector<Figure>& figures, const std::string& name);
 
 // The HTML page: no external resources (CSS inline, figures inline SVG without namespace URLs).
 std::string report_html(const AnalysisResults& results, const std::vector<Figure>& figures);

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/report/gaze_section.h"
 #include "analysis/report/html_format.h"
 #include "analysis/report/inputs_section.h"
 #include "analysis/report/psychometric_section.h"
@@ -186,17 +187,6 @@ std::string order_section_html(const AnalysisResults& r) {
     return h;
 }
 
-// A figure of the report by name, with its caption; empty when there is no such figure.
-std::string figure_html(const std::vector<Figure>& figures, const std::string& name) {
-    for (const Figure& f : figures) {
-        if (f.name != name) continue;
-        return "<figure id=\"figure-" + xml_escaped(f.name) + "\">\n" + inline_svg(f.svg) +
-               "<figcaption>" + xml_escaped(f.caption) + " (also figures/" + xml_escaped(f.name) +
-               ".svg and .png)</figcaption>\n</figure>\n";
-    }
-    return std::string();
-}
-
 // The document's head, the title, what was compared, and the table of contents.
 std::string head_html(const AnalysisResults& r) {
     const std::string test = xml_escaped(r.test_mode);
@@ -218,7 +208,9 @@ std::string head_html(const AnalysisResults& r) {
          "<li><a href=\"#chi-square\">Distance &times; decision (chi-square)</a></li>"
          "<li><a href=\"#regression\">Logistic regression</a></li>"
          "<li><a href=\"#psychometric\">Psychometric functions</a></li>"
-         "<li><a href=\"#order\">Order effects</a></li>"
+         "<li><a href=\"#order\">Order effects</a></li>" +
+         std::string(r.gaze.recorded ? "<li><a href=\"#gaze\">Where participants looked</a></li>"
+                                     : "") +
          "<li><a href=\"#times\">Decision times and switches</a></li>"
          "<li><a href=\"#questionnaire\">Questionnaire</a></li></ul></nav>\n";
     return h;
@@ -322,6 +314,16 @@ std::string questionnaire_section_html(const AnalysisResults& r) {
 
 }  // namespace
 
+std::string figure_html(const std::vector<Figure>& figures, const std::string& name) {
+    for (const Figure& f : figures) {
+        if (f.name != name) continue;
+        return "<figure id=\"figure-" + xml_escaped(f.name) + "\">\n" + inline_svg(f.svg) +
+               "<figcaption>" + xml_escaped(f.caption) + " (also figures/" + xml_escaped(f.name) +
+               ".svg and .png)</figcaption>\n</figure>\n";
+    }
+    return std::string();
+}
+
 std::string report_html(const AnalysisResults& r, const std::vector<Figure>& figures) {
     std::string h = head_html(r);
     h += data_section_html(r);
@@ -330,6 +332,7 @@ std::string report_html(const AnalysisResults& r, const std::vector<Figure>& fig
     h += regression_section_html(r);
     h += psychometric_section_html(r, figures);
     h += order_section_html(r);
+    h += gaze_section_html(r, figures);
     h += times_section_html(r, figures);
     h += questionnaire_section_html(r);
     h += "<p class=\"note\">Written by <code>monoplane analyze</code>; see docs/analysis.md.</p>\n";

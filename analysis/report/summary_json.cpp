@@ -5,6 +5,7 @@
 #include <string_view>
 #include <utility>
 
+#include "analysis/report/gaze_section.h"
 #include "analysis/report/inputs_section.h"
 #include "analysis/report/psychometric_section.h"
 #include "analysis/report/regression_section.h"
@@ -174,6 +175,7 @@ std::string summary_json(const AnalysisResults& r) {
     psychometric_json(json, r);
     study_day_json(json, r.day);
     input_records_json(json, r.inputs);
+    gaze_json(json, r);
 
     groups_json(json, r.decision_times, "decision_time_s");
     groups_json(json, r.switches, "switches");

@@ -8,6 +8,7 @@
 
 #include "analysis/duplicate_sessions.h"
 #include "analysis/protocol_versions.h"
+#include "app/commands/analysis_scene_images.h"
 #include "app/commands/option_wording.h"
 #include "app/commands/output_folder.h"
 #include "app/commands/study_rows.h"
@@ -70,8 +71,9 @@ analysis::SessionRow session_row(const study::SessionInfo& info, const std::stri
 }
 
 // read_study_database() gives the trial rows; the sessions' own fields (session numbers,
-// repetitions, participant numbers, variables, notes) come from the same database's export.
-Result<analysis::Dataset> read_database(const std::filesystem::path& path) {
+// repetitions, participant numbers, variables, notes) come from the same database's export, and
+// how they showed their scenes (HMD, detail, glTF files) goes into `view` for the gaze pictures.
+Result<analysis::Dataset> read_database(const std::filesystem::path& path, GazeViewSource& view) {
     const std::string db = path.string();
     // One snapshot and one reading of it: an analysis changes no byte of the file, and reads an
     // older schema as it is.
@@ -92,6 +94,7 @@ Result<analysis::Dataset> read_database(const std::filesystem::path& path) {
         row.repetition = found->second->trial.repetition;
     }
     for (const auto& [id, info] : data->sessions) dataset.sessions.push_back(session_row(info, db));
+    add_sessions(view, data->sessions);
     return dataset;
 }
 
@@ -135,10 +138,10 @@ void tell(const AnalyzeRequest& r, const std::string& line) {
     if (r.on_read) r.on_read(line);
 }
 
-Result<analysis::Dataset> read_inputs(const AnalyzeRequest& r) {
+Result<analysis::Dataset> read_inputs(const AnalyzeRequest& r, GazeViewSource& view) {
     analysis::Dataset merged;
     for (const std::filesystem::path& db : r.dbs) {
-        Result<analysis::Dataset> one = read_database(db);
+        Result<analysis::Dataset> one = read_database(db, view);
         MONOPLANE_TRY(one);
         tell(r, "read " + db.string() + ": " + std::to_string(one->trials.size()) + " trials, " +
                     std::to_string(one->answers.size()) + " questionnaire answers");
@@ -201,7 +204,8 @@ Result<AnalysisWritten> run_analysis(const AnalyzeRequest& request) {
     // A folder that may not be replaced is refused before the inputs are read.
     MONOPLANE_TRY(check_output_folder(request.out, kAnalysisFolder, request.force));
     // Inputs next: a refusal (a shared code, a bad file) leaves no output folder behind.
-    Result<analysis::Dataset> data = read_inputs(request);
+    GazeViewSource view_source;
+    Result<analysis::Dataset> data = read_inputs(request, view_source);
     MONOPLANE_TRY(data);
     Result<StagedFolder> staged = StagedFolder::create(request.out, kAnalysisFolder, request.force);
     MONOPLANE_TRY(staged);
@@ -209,9 +213,13 @@ Result<AnalysisWritten> run_analysis(const AnalyzeRequest& request) {
     analysis::report::ReportOptions options;
     options.logistic.log2_distance = request.log2_distance;
     options.logistic.scene_terms = !request.no_scene_terms;
+    const SeatView seat = seat_view(view_source);
+    options.gaze_eye = seat.eye;
+    options.gaze_hmd = seat.note.empty() ? seat.key : seat.key + "; " + seat.note;
     AnalysisWritten done;
     done.out = request.out;
     done.results = analysis::report::analyse(*data, options);
+    if (request.scene_pictures) add_scene_images(done.results.gaze, view_source, seat);
     MONOPLANE_TRY(write_outputs(done, staged->path()));
     MONOPLANE_TRY(staged.value().commit());
     move_paths(done, *staged);

@@ -31,6 +31,9 @@ struct AnalyzeRequest {
     // `--drop-duplicates`: count once a session several inputs hold in identical copies instead
     // of refusing them (copies that differ are refused all the same).
     bool drop_duplicates = false;
+    // Render each scene with gaze at the seat for the report's gaze densities (a Vulkan device;
+    // without one they are drawn alone). `--no-scene-pictures` turns it off.
+    bool scene_pictures = true;
     // Told each input as it is read ("read FILE: N trials, ..."); may be empty.
     std::function<void(const std::string&)> on_read;
 };

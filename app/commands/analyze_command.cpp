@@ -8,6 +8,7 @@
 // inputs hold joined only as `--codes` says. Integrity (issue 42): the protocol versions the
 // sessions ran are listed, designs that differ pooled only with `--pool-protocols`, and a session
 // several files hold counted once only with `--drop-duplicates` (and only when the copies agree).
+// Eye gaze (issue 45): where participants looked, and the choice on hybrid's error there.
 // The work is run_analysis() (analysis_run.h), which the launcher calls too; this file parses the
 // options and prints.
 #include <filesystem>
@@ -34,6 +35,7 @@ struct AnalyzeOptions {
     std::string codes;  // --codes: "" (refuse shared codes), same-person or per-database
     bool pool_protocols = false;
     bool drop_duplicates = false;
+    bool no_scene_pictures = false;
 };
 
 analysis::SharedCodes shared_codes_rule(const std::string& codes) {
@@ -79,6 +81,19 @@ void print_counterbalancing(const analysis::Counterbalancing& c) {
     }
 }
 
+// Eye gaze, where sessions recorded it: the regression's verdict and whether the densities got
+// their scene pictures.
+void print_gaze(const analysis::report::GazeResults& g) {
+    if (!g.recorded) return;
+    std::cerr << "gaze: " << g.by_scene.back().trials_with_gaze << " analysed trials with gaze, "
+              << g.by_scene.back().samples << " gaze samples\n";
+    if (!g.fit)
+        std::cerr << "analyze: the regression on the error at gaze is not estimable on these data ("
+                  << g.fit_error << "); the report marks it so\n";
+    if (!g.image_note.empty())
+        std::cerr << "analyze: gaze densities drawn without a picture: " << g.image_note << "\n";
+}
+
 void run_analyze(const AnalyzeOptions& o) {
     AnalyzeRequest request;
     request.dbs.assign(o.dbs.begin(), o.dbs.end());
@@ -90,6 +105,7 @@ void run_analyze(const AnalyzeOptions& o) {
     request.codes = shared_codes_rule(o.codes);
     request.pool_protocols = o.pool_protocols;
     request.drop_duplicates = o.drop_duplicates;
+    request.scene_pictures = !o.no_scene_pictures;
     request.on_read = [](const std::string& line) { std::cerr << line << "\n"; };
     const AnalysisWritten written = run_analysis(request).value_or_throw();
     const analysis::report::AnalysisResults& results = written.results;
@@ -121,6 +137,7 @@ void run_analyze(const AnalyzeOptions& o) {
                   << " fits estimable (per scene the group's and each participant's)\n";
     }
     print_counterbalancing(results.day.counterbalancing);
+    print_gaze(results.gaze);
     std::cout << "report: " << written.html.string() << "\n";
 }
 
@@ -164,6 +181,9 @@ void add_analyze_command(CLI::App& root, const GlobalOptions&) {
                   "Count once a session that several input files hold in identical copies (a "
                   "copy, a backup of the database); without it they are refused. Copies that "
                   "differ are refused all the same");
+    cmd->add_flag("--no-scene-pictures", o->no_scene_pictures,
+                  "Draw the gaze densities (sessions that recorded eye gaze) without rendering "
+                  "each scene under them, which needs a Vulkan device (docs/gaze.md)");
     cmd->callback([o] { run_analyze(*o); });
 }
 

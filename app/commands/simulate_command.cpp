@@ -23,6 +23,7 @@
 #include "analysis/report/report.h"
 #include "app/commands/commands.h"
 #include "app/commands/output_directory.h"
+#include "app/commands/simulated_gaze.h"
 #include "app/commands/simulated_sessions.h"
 #include "app/commands/study_rows.h"
 #include "charts/png/svg_to_png.h"
@@ -48,6 +49,9 @@ struct SimulateOptions {
     double alpha = 0.05;
     std::string hmd = "vive";
     bool log2_distance = false;
+    // mono-plane: the regression on the distance (the report's); gaze-error: on hybrid's error
+    // where the participant looked (the report's gaze section), with simulated gaze.
+    std::string predictor = "mono-plane";
 };
 
 std::string name(study::RenderMode mode) {
@@ -57,10 +61,18 @@ std::string name(study::RenderMode mode) {
 // One simulated session (simulated_sessions.h) as analysis rows.
 std::vector<analysis::TrialRow> simulate_session(
     const study::Protocol& protocol, const std::string& observer_name, std::uint64_t seed,
-    int participant, const std::function<double(const study::ScheduledTrial&)>& error_px) {
+    int participant, const std::function<double(const study::ScheduledTrial&)>& error_px,
+    const SimulatedGaze* gaze, bool observer_on_gaze) {
     std::vector<analysis::TrialRow> rows;
+    // The participant's gaze: the gaze observer's stimulus, and what the gaze regression reads.
+    const auto error_at_gaze = [gaze, seed](const study::ScheduledTrial& trial) {
+        return gaze->error_at_gaze(trial, seed);
+    };
+    const std::function<double(const study::ScheduledTrial&)> stimulus =
+        observer_on_gaze ? std::function<double(const study::ScheduledTrial&)>(error_at_gaze)
+                         : error_px;
     for (const auto& [trial, outcome] :
-         simulate_trials(protocol, observer_name, seed, participant, error_px)) {
+         simulate_trials(protocol, observer_name, seed, participant, stimulus)) {
         analysis::TrialRow row;
         row.source = "simulation";
         row.session_id = participant + 1;
@@ -81,6 +93,7 @@ std::vector<analysis::TrialRow> simulate_session(
         row.chose_test = row.chosen_mode == row.test_mode;
         row.switches = outcome.switches;
         row.decision_time_s = static_cast<double>(outcome.decision_time_ns) * 1e-9;
+        if (gaze) row.gaze_error_test_arcmin = error_at_gaze(trial);
         rows.push_back(std::move(row));
     }
     return rows;
@@ -93,6 +106,10 @@ struct Simulation {
     std::filesystem::path out;
     std::function<double(const study::ScheduledTrial&)> error_px;
     std::vector<int> grid;  // the numbers of participants
+    // Simulated gaze, for a gaze observer or the gaze-error predictor; else none.
+    std::unique_ptr<SimulatedGaze> gaze;
+    bool observer_on_gaze = false;
+    analysis::ChoicePredictor predictor = analysis::ChoicePredictor::Distance;
 };
 
 Simulation prepare_simulation(const SimulateOptions& o) {
@@ -108,8 +125,19 @@ Simulation prepare_simulation(const SimulateOptions& o) {
     }
     // Fails early, with the list of observers, on an unknown name.
     if (o.observer == "none") throw UserError("--observer none: a simulation needs an observer");
-    (void)study::make_observer(o.observer, o.seed).value_or_throw();
+    simulation.observer_on_gaze =
+        study::make_observer(o.observer, o.seed).value_or_throw()->decides_on_gaze_error();
+    if (o.predictor != "mono-plane" && o.predictor != "gaze-error") {
+        throw UserError("--predictor '" + o.predictor + "': mono-plane or gaze-error");
+    }
+    if (o.predictor == "gaze-error") {
+        if (o.log2_distance) throw UserError("--log2-distance goes with --predictor mono-plane");
+        simulation.predictor = analysis::ChoicePredictor::GazeError;
+    }
     simulation.hmd = hmd::load_hmd_profile(o.hmd).value_or_throw();
+    if (simulation.observer_on_gaze || o.predictor == "gaze-error") {
+        simulation.gaze = SimulatedGaze::build(protocol, simulation.hmd).value_or_throw();
+    }
     simulation.out = prepare_output_directory("--out", o.out);
     simulation.error_px = trial_error_model(simulation.hmd, protocol);
     simulation.grid = analysis::report::participant_grid(o.participants);
@@ -118,11 +146,12 @@ Simulation prepare_simulation(const SimulateOptions& o) {
 
 // Per number of participants of the grid, how many studies detected the distance effect.
 struct Detections {
-    explicit Detections(std::size_t grid_size, bool log2_distance)
+    // term: the coefficient tested, as the fits name it.
+    Detections(std::size_t grid_size, std::string term)
         : detected(grid_size, 0),
           detected_cr2(grid_size, 0),
           not_estimable(grid_size, 0),
-          distance_term(log2_distance ? "log2_mono_plane_m" : "mono_plane_m") {}
+          distance_term(std::move(term)) {}
 
     std::vector<int> detected;      // CR1 z test
     std::vector<int> detected_cr2;  // small-sample CR2 t test
@@ -143,7 +172,8 @@ SimulatedParticipants simulate_participants(const SimulateOptions& o, const Simu
     SimulatedParticipants result;
     for (int p = 0; p < o.participants; ++p) {
         std::vector<analysis::TrialRow> session = simulate_session(
-            simulation.protocol, o.observer, session_seed(o.seed, run, p), p, simulation.error_px);
+            simulation.protocol, o.observer, session_seed(o.seed, run, p), p, simulation.error_px,
+            simulation.gaze.get(), simulation.observer_on_gaze);
         result.rows.insert(result.rows.end(), std::make_move_iterator(session.begin()),
                            std::make_move_iterator(session.end()));
         result.end_of_participant.push_back(result.rows.size());
@@ -182,7 +212,11 @@ Detections simulate_studies(const SimulateOptions& o, const Simulation& simulati
     const std::vector<int>& grid = simulation.grid;
     analysis::LogisticOptions options;
     options.log2_distance = o.log2_distance;
-    Detections detections(grid.size(), o.log2_distance);
+    options.predictor = simulation.predictor;
+    Detections detections(grid.size(), simulation.gaze && o.predictor == "gaze-error"
+                                           ? "gaze_error_test_arcmin"
+                                       : o.log2_distance ? "log2_mono_plane_m"
+                                                         : "mono_plane_m");
     std::cerr << "simulate: " << simulation.protocol.name << ", observer " << o.observer << ", "
               << simulation.hmd.name << ", n = ";
     for (std::size_t i = 0; i < grid.size(); ++i) std::cerr << (i ? ", " : "") << grid[i];
@@ -267,8 +301,9 @@ void add_simulate_command(CLI::App& root, const GlobalOptions&) {
                     "Largest number of participants N (the grid runs 2, 4, ... up to N)")
         ->required();
     cmd->add_option("--observer", o->observer,
-                    "Simulated observer: default, chance, reference, or "
-                    "psychometric:threshold=T,slope=B,lapse=L")
+                    "Simulated observer: default, chance, reference, "
+                    "psychometric:threshold=T,slope=B,lapse=L, or gaze:threshold=T,slope=B,lapse=L "
+                    "(T in arcmin of error where it looks)")
         ->required();
     cmd->add_option("--runs", o->runs, "Simulated studies per number of participants")->required();
     cmd->add_option("--out", o->out, "Output directory")->required();
@@ -281,6 +316,11 @@ void add_simulate_command(CLI::App& root, const GlobalOptions&) {
         ->capture_default_str();
     cmd->add_flag("--log2-distance", o->log2_distance,
                   "Regress on log2 of the mono-plane distance instead of metres");
+    cmd->add_option("--predictor", o->predictor,
+                    "What the choice is regressed on: mono-plane (the distance) or gaze-error "
+                    "(hybrid's error where the participant looked, from simulated gaze: "
+                    "docs/gaze.md)")
+        ->capture_default_str();
     cmd->callback([o] { run_simulate(*o); });
 }
 

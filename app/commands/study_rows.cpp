@@ -127,7 +127,7 @@ analysis::DesignComparison protocol_design_comparison() {
 namespace {
 
 // The session's valid gaze samples on a trial's scene, as the report's density reads them.
-void add_gaze_samples(const std::vector<study::FrameRecord>& frames,
+void add_gaze_samples(const std::string& source, const std::vector<study::FrameRecord>& frames,
                       const std::map<int, const study::TrialRecord*>& trials,
                       analysis::Dataset& dataset) {
     for (const study::FrameRecord& f : frames) {
@@ -135,7 +135,9 @@ void add_gaze_samples(const std::vector<study::FrameRecord>& frames,
         const auto trial = trials.find(*f.trial_index);
         if (trial == trials.end()) continue;
         dataset.gaze_samples.push_back(
-            analysis::GazeSampleRow{.participant = trial->second->participant_code,
+            analysis::GazeSampleRow{.source = source,
+                                    .session_id = trial->second->session_id,
+                                    .participant = trial->second->participant_code,
                                     .scene = trial->second->trial.scene,
                                     .mono_plane = f.gaze_point->mono_plane_m,
                                     .head = *f.head,
@@ -154,6 +156,7 @@ void add_trial_gaze(const std::map<std::pair<std::int64_t, int>, study::TrialGaz
         const std::size_t test_label = row.label1_mode == row.test_mode ? 0 : 1;
         row.gaze_error_test_arcmin = found->second.error_mean_arcmin[test_label];
         row.gaze_share_beyond_m = found->second.share_beyond_m;
+        row.gaze_fixations = static_cast<int>(found->second.fixations.size());
     }
 }
 
@@ -194,7 +197,7 @@ Result<analysis::Dataset> read_study_database(const std::filesystem::path& path,
         for (study::TrialGaze& gaze : study::summarize_trial_gaze(*frames)) {
             trial_gaze[{id, gaze.trial_index}] = std::move(gaze);
         }
-        add_gaze_samples(*frames, trials_by_index[id], dataset);
+        add_gaze_samples(source, *frames, trials_by_index[id], dataset);
         Result<std::vector<study::QuestionnaireAnswer>> answers = store.answers(id);
         if (!answers) return Error{"--db " + path.string() + ": " + answers.error().message};
         for (const study::QuestionnaireAnswer& a : *answers) {

@@ -138,6 +138,55 @@ TEST(ReadExportCsv, ReadsNaAndUpperCaseBooleansAsTheExportWritesThem) {
     EXPECT_EQ(read->trials[2].chosen_mode, "");
 }
 
+// The gaze columns of a headset session's export (docs/gaze.md): the mean error at gaze under
+// each label becomes the error on the test alternative by which label showed it (hybrid: label 2
+// in the first trial, label 1 in the second); NA leaves none. An export without the columns
+// (every test above) reads with none.
+TEST(ReadExportCsv, ReadsTheGazeColumnsByTheLabelThatShowedTheTestMode) {
+    const std::filesystem::path path = write_file(
+        "gaze.csv",
+        kHeader +
+            ",gaze_samples,gaze_share_beyond_m,gaze_error_mean_arcmin_1,"
+            "gaze_error_mean_arcmin_2,gaze_error_max_arcmin_1,gaze_error_max_arcmin_2,"
+            "gaze_fixations\n" +
+            "A,1,0,0,beams,3,stereo,1,stereo,TRUE,2,1,1,2,FALSE,TRUE,hybrid,0,p,h,NA,none,vive,"
+            "completed,40,0.25,0,7.5,0,9,3\n"
+            "A,1,1,0,beams,8,hybrid,2,stereo,TRUE,1,1,1,2,FALSE,TRUE,stereo,0,p,h,NA,none,vive,"
+            "completed,38,0.5,2.25,0,3,0,2\n"
+            "A,1,2,0,beams,8,hybrid,2,stereo,TRUE,1,1,1,2,FALSE,TRUE,stereo,0,p,h,NA,none,vive,"
+            "completed,0,NA,NA,NA,NA,NA,0\n");
+    const Result<Dataset> read = read_export_csv(path);
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    ASSERT_EQ(read->trials.size(), 3u);
+    EXPECT_EQ(read->trials[0].test_mode, "hybrid");
+    EXPECT_EQ(read->trials[0].gaze_error_test_arcmin, 7.5);
+    EXPECT_EQ(read->trials[0].gaze_share_beyond_m, 0.25);
+    EXPECT_EQ(read->trials[1].gaze_error_test_arcmin, 2.25);
+    EXPECT_EQ(read->trials[1].gaze_share_beyond_m, 0.5);
+    EXPECT_FALSE(read->trials[2].gaze_error_test_arcmin.has_value());
+    EXPECT_FALSE(read->trials[2].gaze_share_beyond_m.has_value());
+
+    const Result<Dataset> without = read_export_csv(kFixtures / "tiny.csv");
+    ASSERT_TRUE(without.ok()) << without.error().message;
+    for (const TrialRow& t : without->trials) {
+        EXPECT_FALSE(t.gaze_error_test_arcmin.has_value());
+        EXPECT_FALSE(t.gaze_share_beyond_m.has_value());
+    }
+}
+
+TEST(ReadExportCsv, ABadGazeNumberNamesFileLineAndColumn) {
+    const std::filesystem::path path = write_file(
+        "bad_gaze.csv",
+        kHeader + ",gaze_error_mean_arcmin_1\n" +
+            "A,1,0,0,beams,3,stereo,1,stereo,TRUE,2,1,1,2,FALSE,TRUE,hybrid,0,p,h,NA,none,vive,"
+            "completed,lots\n");
+    const Result<Dataset> read = read_export_csv(path);
+    ASSERT_FALSE(read.ok());
+    EXPECT_EQ(read.error().message, path.string() +
+                                        ":2: column 'gaze_error_mean_arcmin_1' (column 25): "
+                                        "'lots' is not a number");
+}
+
 TEST(ReadExportCsv, ADecidedTrialWithNaOutcomeIsRefused) {
     const std::filesystem::path path = write_file(
         "na_outcome.csv",

@@ -217,6 +217,33 @@ TEST(DuplicateSessions, DroppingKeepsTheCopyReadFirstAndEverythingElse) {
     EXPECT_EQ(d.dropped, (std::vector<std::string>{"copy.sqlite"}));
 }
 
+// Eye gaze samples (issue 45) belong to their session: merge() carries them, a dropped copy's go
+// with it (else the gaze density would count that session twice), and per-database codes rename
+// them as they rename the trials.
+TEST(DuplicateSessions, GazeSamplesGoWithTheirSession) {
+    const auto sample = [](const std::string& source, std::int64_t session) {
+        GazeSampleRow g;
+        g.source = source;
+        g.session_id = session;
+        g.participant = "k" + std::to_string(session);
+        g.scene = "beams";
+        return g;
+    };
+    Dataset data = original_and_copy("copy.sqlite", {true, true, true});
+    Dataset more;
+    more.gaze_samples = {sample("site-a.sqlite", 1), sample("site-a.sqlite", 1),
+                         sample("copy.sqlite", 1), sample("copy.sqlite", 3)};
+    merge(data, more);
+    ASSERT_EQ(data.gaze_samples.size(), 4u);
+    ASSERT_TRUE(drop_duplicate_sessions(data, true, "--drop-duplicates"));
+    ASSERT_EQ(data.gaze_samples.size(), 3u);
+    for (const GazeSampleRow& g : data.gaze_samples)
+        EXPECT_FALSE(g.source == "copy.sqlite" && g.session_id == 1);
+    ASSERT_TRUE(join_participant_codes(data, SharedCodes::PerDatabase));
+    EXPECT_EQ(data.gaze_samples[0].participant, data.trials[0].participant);
+    EXPECT_NE(data.gaze_samples[0].participant, "k1");
+}
+
 TEST(DuplicateSessions, ABackupTakenDuringTheSessionIsRefusedAlsoWhenDropping) {
     Dataset data = original_and_copy("backup.sqlite", {true, false, false});
     for (bool drop : {false, true}) {

@@ -278,6 +278,100 @@ TEST(LogisticRegression, RefusesASingularDesign) {
     EXPECT_NE(fit.error().message.find("singular"), std::string::npos) << fit.error().message;
 }
 
+// The gaze error as predictor (issue 45): the data of tests/fixtures/analysis/
+// make_gaze_reference.py, whose docstring states the rule, fitted there by statsmodels 0.13.5
+//     sm.Logit(y, X).fit(cov_type="cluster", cov_kwds={"groups": participant})
+// (CR1 with its default correction, z tests), run as
+//     /usr/bin/python3 tests/fixtures/analysis/make_gaze_reference.py
+std::vector<TrialRow> synthetic_gaze() {
+    std::vector<TrialRow> trials;
+    for (int p = 0; p < 12; ++p)
+        for (int t = 0; t < 20; ++t) {
+            TrialRow row;
+            row.participant = "P" + std::to_string(p);
+            row.scene = t < 10 ? "beams" : "spheres";
+            row.mono_plane = 8.0;
+            row.decided = true;
+            row.valid = !(p == 2 && t == 0);
+            const double error = 0.25 * ((3 * p + 7 * t) % 13) + 0.1 * (p % 4);
+            if (!(t == 19 && p % 4 == 1)) row.gaze_error_test_arcmin = error;
+            const int threshold = 2 + (error > 1.5) + (error > 2.5) + (p % 3 == 0);
+            row.chose_test = (5 * p + 3 * t) % 7 < threshold;
+            trials.push_back(row);
+        }
+    return trials;
+}
+
+// statsmodels reports b, se, z and p; the odds ratio and its interval follow as exp(b) and
+// exp(b -+ 1.959963984540054 se).
+void expect_statsmodels(const Coefficient& c, const char* name, double b, double se, double z,
+                        double p) {
+    SCOPED_TRACE(name);
+    EXPECT_EQ(c.name, name);
+    EXPECT_TRUE(near_relative(c.estimate, b, kRegression));
+    EXPECT_TRUE(near_relative(c.std_error, se, kRegression));
+    EXPECT_TRUE(near_relative(c.z, z, kRegression));
+    EXPECT_TRUE(near_relative(c.p, p, kRegression));
+    EXPECT_TRUE(near_relative(c.odds_ratio, std::exp(b), kRegression));
+    EXPECT_TRUE(near_relative(c.ci_lower, std::exp(b - 1.959963984540054 * se), kRegression));
+    EXPECT_TRUE(near_relative(c.ci_upper, std::exp(b + 1.959963984540054 * se), kRegression));
+}
+
+TEST(LogisticRegression, GazeErrorMatchesStatsmodelsWithoutSceneTerms) {
+    const Result<LogisticFit> fit = fit_choice_model(
+        synthetic_gaze(), {.predictor = ChoicePredictor::GazeError, .scene_terms = false});
+    ASSERT_TRUE(fit.ok()) << fit.error().message;
+    // 240 trials less 1 invalid less 3 without gaze.
+    EXPECT_EQ(fit->n, 236);
+    EXPECT_EQ(fit->clusters, 12);
+    EXPECT_EQ(fit->skipped_without_predictor, 3);
+    EXPECT_EQ(fit->distance_term, "gaze_error_test_arcmin");
+    EXPECT_TRUE(near_relative(fit->log_likelihood, -160.33354219283194, 1e-6));
+    ASSERT_EQ(fit->coefficients.size(), 2u);
+    expect_statsmodels(fit->coefficients[0], "intercept", -0.667718604442185, 0.17347231348809733,
+                       -3.849136447286731, 0.00011853496886176057);
+    expect_statsmodels(fit->coefficients[1], "gaze_error_test_arcmin", 0.2792715545044488,
+                       0.07965684985810435, 3.5059326975887872, 0.0004550102576277451);
+}
+
+TEST(LogisticRegression, GazeErrorMatchesStatsmodelsWithSceneTerms) {
+    const Result<LogisticFit> fit =
+        fit_choice_model(synthetic_gaze(), {.predictor = ChoicePredictor::GazeError});
+    ASSERT_TRUE(fit.ok()) << fit.error().message;
+    EXPECT_EQ(fit->n, 236);
+    EXPECT_TRUE(near_relative(fit->log_likelihood, -159.65843787635953, 1e-6));
+    ASSERT_EQ(fit->coefficients.size(), 3u);
+    expect_statsmodels(fit->coefficients[0], "intercept", -0.8221158717719006, 0.17215779068662562,
+                       -4.775362581577135, 1.7938375221064418e-06);
+    expect_statsmodels(fit->coefficients[1], "gaze_error_test_arcmin", 0.27982326693887705,
+                       0.07954689376870931, 3.5177145666113834, 0.00043528028983453774);
+    expect_statsmodels(fit->coefficients[2], "scene[spheres]", 0.3072169503632588,
+                       0.14090395034732262, 2.1803288666214202, 0.029233092780657506);
+}
+
+// Without gaze the model says so; with one gaze error only, its effect is not estimable. The
+// distance model ignores the gaze errors.
+TEST(LogisticRegression, GazeErrorRefusesDataWithoutGazeOrWithOneValue) {
+    std::vector<TrialRow> trials = synthetic_gaze();
+    for (TrialRow& t : trials) t.gaze_error_test_arcmin.reset();
+    const Result<LogisticFit> none =
+        fit_choice_model(trials, {.predictor = ChoicePredictor::GazeError});
+    ASSERT_FALSE(none.ok());
+    EXPECT_NE(none.error().message.find("no analysable trial has a gaze error"), std::string::npos)
+        << none.error().message;
+
+    for (TrialRow& t : trials) t.gaze_error_test_arcmin = 1.5;
+    const Result<LogisticFit> one =
+        fit_choice_model(trials, {.predictor = ChoicePredictor::GazeError});
+    ASSERT_FALSE(one.ok());
+    EXPECT_NE(one.error().message.find("only one gaze error"), std::string::npos)
+        << one.error().message;
+
+    const Result<LogisticFit> distance = fit_choice_model(synthetic_gaze());
+    ASSERT_FALSE(distance.ok());  // every trial at 8 m
+    EXPECT_NE(distance.error().message.find("only one distance"), std::string::npos);
+}
+
 TEST(LinearAlgebra, InvertsAPositiveDefiniteMatrixAndRefusesASingularOne) {
     Matrix a(3, 3);
     const double values[3][3] = {{4, 2, 0.4}, {2, 5, 1}, {0.4, 1, 3}};
