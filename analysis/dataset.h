@@ -65,14 +65,14 @@ struct TrialRow {
 // report's gaze density over each scene's left-eye image: the head relative to the seat and the
 // gaze in the head's frame, and the depth of the point the gaze met (none: the sky).
 struct GazeSampleRow {
-    std::string source;  // the database it came from, and its session there
+    std::string source = {};  // the database it came from, and its session there
     std::int64_t session_id = 0;
     std::string participant;
     std::string scene;
-    double mono_plane = 0.0;                    // the trial's m
-    std::array<double, 7> head{};               // x, y, z, qw, qx, qy, qz
-    std::array<double, 3> direction{0, 0, -1};  // unit, head frame, -z ahead
-    std::optional<double> depth_m;              // in front of the eyes' plane
+    double mono_plane = 0.0;                       // the trial's m
+    std::array<double, 7> head{};                  // x, y, z, qw, qx, qy, qz
+    std::array<double, 3> direction{0, 0, -1};     // unit, head frame, -z ahead
+    std::optional<double> depth_m = std::nullopt;  // in front of the eyes' plane
 };
 
 struct AnswerRow {
@@ -148,14 +148,14 @@ struct ProtocolVersion {
     std::string name;
     std::string hash;  // "" when the input did not record it (an older CSV export)
     int sessions = 0;
-    std::vector<std::string> sources;  // the files its sessions came from, in reading order
+    std::vector<std::string> sources = {};  // the files its sessions came from, in reading order
     // 1, 2, ...: versions with the same number share a design (design 1 is the first version's);
     // 0: not known (no input holds the protocol's text: CSV exports only, or a text that no
     // longer reads).
     int design = 0;
     // How the design differs from design 1, one line per field ("mono_planes: 3, 8 -> 2, 6");
     // empty for design 1 and for a design not known.
-    std::vector<std::string> design_differences;
+    std::vector<std::string> design_differences = {};
 };
 
 // A session that more than one input holds (the same session_uuid), counted once on request

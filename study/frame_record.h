@@ -25,7 +25,7 @@ struct GazePointRecord {
     double error_arcmin = 0.0;
     // The point's depth: metres in front of the eyes' plane (along the head's -z). None: the
     // ray met no surface (the sky), the point lies infinitely far.
-    std::optional<double> depth_m;
+    std::optional<double> depth_m = std::nullopt;
     // The m the error is for: the trial's mono plane (the one its hybrid alternative shows).
     double mono_plane_m = 0.0;
     bool beyond_mono_plane() const { return !depth_m || *depth_m > mono_plane_m; }

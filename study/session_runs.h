@@ -16,7 +16,7 @@ namespace monoplane::study {
 // What a front end knows of its run when it begins one.
 struct RunInfo {
     // The OpenXR runtime's name, "simulated" or "none"; empty: the session's runtime.
-    std::string runtime;
+    std::string runtime = {};
     // The front end's clock (the runtime's, or the virtual display's) at the run's start: one
     // display period before its first frame is displayed. Nothing of the run is placed earlier.
     std::int64_t clock_start_ns = 0;

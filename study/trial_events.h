@@ -54,7 +54,7 @@ struct TrialEvent {
     std::int64_t time_ns = 0;  // monotonic clock
     std::int64_t frame = -1;   // frame index at which the change became visible; -1: none
     int page = -1;             // instruction events: the page, 0-based; else -1
-    std::string detail;        // has_detail kinds: the reason given; else empty
+    std::string detail = {};   // has_detail kinds: the reason given; else empty
 };
 
 // One line for logs and traces: "trial 3 switched label 2 t 123 frame 11" (the crash test

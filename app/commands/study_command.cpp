@@ -39,7 +39,8 @@ void add_headset_options(CLI::App* cmd, StudyOptions& o) {
         ->capture_default_str()
         ->check(CLI::IsMember({"auto", "off"}));
     cmd->add_option("--screenshot", h.screenshot,
-                    "PNG of the experimenter window when the session ends");
+                    "PNG of the experimenter window when the session ends, and the window's state "
+                    "as JSON beside it (the same name, .json)");
     cmd->add_option("--screenshot-frame", h.screenshot_frame,
                     "Take the --screenshot after this frame instead");
     cmd->add_option("--sim-script", h.sim_script,

@@ -173,11 +173,11 @@ struct LauncherSettings {
     // launcher_request_names() (the window's fields), so a problem is said where it is fixed.
     study::RequestNames names = study::study_request_names();
     // LaunchRequest::session_arguments of every request.
-    std::vector<std::string> session_arguments;
+    std::vector<std::string> session_arguments = {};
     // `monoplane lab --detail / --resolution-scale`: they choose the performance preset of the
     // same detail and scale, else a preset "custom" of them (docs/lab.md, "Session settings").
-    std::optional<std::string> detail;
-    std::optional<double> resolution_scale;
+    std::optional<std::string> detail = std::nullopt;
+    std::optional<double> resolution_scale = std::nullopt;
 };
 
 // How the launcher names the inputs of a request in its messages: the window's fields and

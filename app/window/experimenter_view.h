@@ -82,8 +82,8 @@ struct Command {
     } kind;
     int item = 0;
     int value = 0;
-    std::string text;
-    std::string key;
+    std::string text = {};
+    std::string key = {};
 };
 
 }  // namespace monoplane::window

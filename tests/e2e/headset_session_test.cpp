@@ -293,7 +293,9 @@ void expect_nothing_built_while_the_head_turns(const std::vector<study::FrameRec
     for (std::size_t i = 0; i < frames.size(); ++i) {
         const study::FrameRecord& f = frames[i];
         ASSERT_TRUE(f.pipelines_created.has_value()) << "frame " << f.frame;
-        if (i > 0) EXPECT_EQ(*f.pipelines_created, 0) << "frame " << f.frame << " " << f.shown;
+        if (i > 0) {
+            EXPECT_EQ(*f.pipelines_created, 0) << "frame " << f.frame << " " << f.shown;
+        }
         if (f.head) orientations.insert({(*f.head)[3], (*f.head)[4], (*f.head)[5], (*f.head)[6]});
         // A screen's first frames may still compile what they are the first to draw, and the
         // driver compiles a frame's work while it runs, up to three frames later (two in flight).
@@ -312,7 +314,9 @@ void expect_nothing_built_while_the_head_turns(const std::vector<study::FrameRec
         << "the head turns";
     // Counted at all (an LLVM-based driver such as lavapipe; turning_head_test checks that the
     // count is live there): then in every steady frame.
-    if (frames.back().driver_compiles) EXPECT_GT(counted, 50);
+    if (frames.back().driver_compiles) {
+        EXPECT_GT(counted, 50);
+    }
 }
 
 TEST_F(HeadsetSessionTest, MissedSlotsAreLoggedPerFrameAndFlaggedPerTrial) {

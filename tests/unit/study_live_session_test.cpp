@@ -1403,7 +1403,9 @@ void expect_one_time_axis(const std::vector<TrialEvent>& events) {
     for (std::size_t i = 0; i < events.size(); ++i) {
         const TrialEvent& e = events[i];
         EXPECT_GE(e.time_ns, latest) << i << " " << event_kind_name(e.kind);
-        if (e.kind == EventKind::RunStarted && i > 0) EXPECT_GT(e.time_ns, latest) << i;
+        if (e.kind == EventKind::RunStarted && i > 0) {
+            EXPECT_GT(e.time_ns, latest) << i;
+        }
         latest = std::max(latest, e.time_ns);
         if (e.frame < 0) continue;
         EXPECT_GT(e.frame, last_frame) << i << " " << event_kind_name(e.kind);

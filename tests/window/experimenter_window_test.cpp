@@ -314,7 +314,7 @@ TEST_F(ExperimenterWindowTest, MarksTheGazeOverTheMirror) {
     EXPECT_GE(radius, 8.0);
     // The ring in the marker's green on the red half; the centre left visible.
     const auto green = [](const Rgb& c) { return c[1] > 180 && c[0] < 160 && c[2] < 190; };
-    for (const auto [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+    for (const auto& [dx, dy] : {std::pair{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
         const Rgb ring = png.at(static_cast<int>(std::lround(x + dx * radius)),
                                 static_cast<int>(std::lround(y + dy * radius)));
         EXPECT_TRUE(green(ring)) << ring[0] << " " << ring[1] << " " << ring[2];
