@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "analysis/dataset.h"
+#include "rig/eye_image.h"
 
 namespace monoplane::analysis {
 
@@ -26,19 +27,12 @@ struct SeatEye {
     double cant = 0.0;
 };
 
-// A point of the left eye's image: tangents of its direction from the eye, and where they fall
-// as a fraction of the image, u from the left edge and v from the top (0..1 inside).
-struct EyeImagePoint {
-    double tan_x = 0.0;
-    double tan_y = 0.0;
-    double u = 0.0;
-    double v = 0.0;
-    bool inside() const { return u >= 0.0 && u < 1.0 && v >= 0.0 && v < 1.0; }
-};
+// A point of the left eye's image (rig/eye_image.h).
+using EyeImagePoint = rig::EyeImagePoint;
 
 // The gaze point of `sample` in the seat's frame projected into `eye`. None when the point lies
-// on or behind the eye's image plane (a head turned away from the seat's view), or the gaze ray
-// does not run forward (direction z >= 0 with a depth).
+// beside or behind the eye (a head turned away from the seat's view), or the gaze ray does not
+// run forward (direction z >= 0 with a depth).
 std::optional<EyeImagePoint> project_into_left_eye(const GazeSampleRow& sample, const SeatEye& eye);
 
 }  // namespace monoplane::analysis

@@ -48,11 +48,6 @@ struct Selection {
     int skipped_without_predictor = 0;
 };
 
-std::string predictor_term(const LogisticOptions& options) {
-    if (options.predictor == ChoicePredictor::GazeError) return "gaze_error_test_arcmin";
-    return options.log2_distance ? "log2_mono_plane_m" : "mono_plane_m";
-}
-
 Result<Selection> select_rows(const std::vector<TrialRow>& trials, const LogisticOptions& options) {
     const bool gaze = options.predictor == ChoicePredictor::GazeError;
     Selection s;
@@ -346,6 +341,11 @@ Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
     fit.distance_term = d.names[1];
     fit.skipped_without_predictor = d.skipped_without_predictor;
     return fit;
+}
+
+std::string predictor_term(const LogisticOptions& options) {
+    if (options.predictor == ChoicePredictor::GazeError) return "gaze_error_test_arcmin";
+    return options.log2_distance ? "log2_mono_plane_m" : "mono_plane_m";
 }
 
 }  // namespace monoplane::analysis

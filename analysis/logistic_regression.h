@@ -80,6 +80,9 @@ struct LogisticOptions {
 // 2 participants, fewer than 2 distances (gaze errors), a distance <= 0 with log2_distance, a
 // singular design (e.g. a scene confounded with distance), (quasi-)complete separation (one outcome
 // only, a scene where everyone chose the same, fitted probabilities of 0 or 1, or no convergence).
+// The name the fits give the predictor's coefficient (LogisticFit::distance_term) under `options`.
+std::string predictor_term(const LogisticOptions& options);
+
 Result<LogisticFit> fit_choice_model(const std::vector<TrialRow>& trials,
                                      const LogisticOptions& options = {});
 

@@ -12,4 +12,16 @@ Result<void> write_png(const std::filesystem::path& path, const modes::RgbaImage
     return Ok{};
 }
 
+std::string png_bytes(const modes::RgbaImage& image) {
+    std::string out;
+    stbi_write_png_to_func(
+        [](void* context, void* data, int size) {
+            static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                       static_cast<std::size_t>(size));
+        },
+        &out, static_cast<int>(image.width), static_cast<int>(image.height), 4, image.pixels.data(),
+        static_cast<int>(image.width * 4));
+    return out;
+}
+
 }  // namespace monoplane::app

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "common/result.h"
 #include "renderer/modes/view_setup.h"
@@ -9,5 +10,8 @@
 namespace monoplane::app {
 
 Result<void> write_png(const std::filesystem::path& path, const modes::RgbaImage& image);
+
+// The same PNG in memory, for a file that embeds it (the report's gaze density figure).
+std::string png_bytes(const modes::RgbaImage& image);
 
 }  // namespace monoplane::app

@@ -68,6 +68,7 @@ struct RigInputs {
     // Yaw of each eye about the head's +y axis, radians, positive turning it left (OpenXR's
     // right-handed convention): a canted headset has cant[kLeft] > 0 > cant[kRight].
     std::array<double, 2> cant = {0.0, 0.0};
+    bool operator==(const RigInputs&) const = default;
 };
 
 // True when either eye is canted (the rig then takes its general, non-affine paths).

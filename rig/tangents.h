@@ -9,6 +9,7 @@ struct Tangents {
     double right = 1.0;
     double down = -1.0;
     double up = 1.0;
+    bool operator==(const Tangents&) const = default;
 };
 
 }  // namespace monoplane::rig

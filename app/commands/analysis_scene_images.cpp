@@ -5,9 +5,8 @@
 #include <memory>
 #include <optional>
 
-#include <stb_image_write.h>
-
 #include "app/commands/scene_source.h"
+#include "app/png.h"
 #include "common/result.h"
 #include "renderer/modes/mode_renderer.h"
 #include "renderer/vk/context.h"
@@ -34,18 +33,6 @@ Result<scenes::Scene> load_study_scene(const std::string& name, const GazeViewSo
     scene_source.file = file->second;
     scene_source.label = name;
     return load_scene(scene_source, *detail);
-}
-
-std::string png_bytes(const modes::RgbaImage& image) {
-    std::string out;
-    stbi_write_png_to_func(
-        [](void* context, void* data, int size) {
-            static_cast<std::string*>(context)->append(static_cast<const char*>(data),
-                                                       static_cast<std::size_t>(size));
-        },
-        &out, static_cast<int>(image.width), static_cast<int>(image.height), 4, image.pixels.data(),
-        static_cast<int>(image.width * 4));
-    return out;
 }
 
 // One frame of stereo at the scene's default viewpoint; the left eye as PNG.

@@ -47,20 +47,6 @@ Result<std::unique_ptr<GazePointFinder>> GazePointFinder::build(
     return finder;
 }
 
-namespace {
-
-// RigInputs has no comparison: its fields are plain numbers, compared as the values they hold.
-bool same_inputs(const rig::RigInputs& a, const rig::RigInputs& b) {
-    const auto same_tangents = [](const rig::Tangents& x, const rig::Tangents& y) {
-        return x.left == y.left && x.right == y.right && x.down == y.down && x.up == y.up;
-    };
-    return same_tangents(a.eyes[0], b.eyes[0]) && same_tangents(a.eyes[1], b.eyes[1]) &&
-           a.ipd == b.ipd && a.mono_plane == b.mono_plane && a.near == b.near && a.far == b.far &&
-           a.cant == b.cant;
-}
-
-}  // namespace
-
 std::optional<study::GazePointRecord> GazePointFinder::find(const std::string& scene,
                                                             const rig::Pose& head_in_scene,
                                                             const rig::RigInputs& inputs,
@@ -78,7 +64,7 @@ std::optional<study::GazePointRecord> GazePointFinder::find_untimed(
     const glm::dvec3& gaze_in_head) {
     const auto caster = casters_.find(scene);
     if (caster == casters_.end() || !std::isfinite(inputs.mono_plane)) return std::nullopt;
-    if (!rig_inputs_ || !same_inputs(*rig_inputs_, inputs)) {
+    if (rig_inputs_ != inputs) {
         Result<rig::Rig> rig = rig::build_rig(inputs);
         if (!rig.ok()) return std::nullopt;  // the renderer refused these views too
         rig_ = std::move(rig).value();

@@ -317,10 +317,9 @@ Result<HeadsetCheck> run_headset_check(const HeadsetCheckOptions& options) {
         // tracks the eyes (and sees them during the check); nothing of it is stored.
         Result<std::unique_ptr<headset::OpenXrHeadset>> created =
             headset::OpenXrHeadset::create(options.global.validation, false, /*eye_gaze=*/true);
-        const bool gaze_offered = created && headset::runtime_offers_eye_gaze();
         selection.instance_created();
         MONOPLANE_TRY(created);
-        const headset::EyeGaze eye_gaze = headset::eye_gaze_support(gaze_offered, **created);
+        const headset::EyeGaze eye_gaze = headset::eye_gaze_support(**created);
         return check_on(std::move(created).value(), eye_gaze, options);
     } catch (const std::exception& e) {
         // A Vulkan failure (a lost device) or a bad simulated script: a message, not a crash.

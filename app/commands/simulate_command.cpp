@@ -213,10 +213,7 @@ Detections simulate_studies(const SimulateOptions& o, const Simulation& simulati
     analysis::LogisticOptions options;
     options.log2_distance = o.log2_distance;
     options.predictor = simulation.predictor;
-    Detections detections(grid.size(), simulation.gaze && o.predictor == "gaze-error"
-                                           ? "gaze_error_test_arcmin"
-                                       : o.log2_distance ? "log2_mono_plane_m"
-                                                         : "mono_plane_m");
+    Detections detections(grid.size(), analysis::predictor_term(options));
     std::cerr << "simulate: " << simulation.protocol.name << ", observer " << o.observer << ", "
               << simulation.hmd.name << ", n = ";
     for (std::size_t i = 0; i < grid.size(); ++i) std::cerr << (i ? ", " : "") << grid[i];

@@ -2,7 +2,6 @@
 
 #include <openxr/openxr.h>
 
-#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -48,27 +47,9 @@ std::string eye_gaze_text(EyeGaze gaze) {
     return "";
 }
 
-bool runtime_offers_eye_gaze() {
-    std::uint32_t count = 0;
-    if (XR_FAILED(xrEnumerateInstanceExtensionProperties(nullptr, 0, &count, nullptr))) {
-        return false;
-    }
-    std::vector<XrExtensionProperties> extensions(count, {XR_TYPE_EXTENSION_PROPERTIES});
-    if (XR_FAILED(
-            xrEnumerateInstanceExtensionProperties(nullptr, count, &count, extensions.data()))) {
-        return false;
-    }
-    for (const XrExtensionProperties& e : extensions) {
-        if (std::strcmp(e.extensionName, XR_EXT_EYE_GAZE_INTERACTION_EXTENSION_NAME) == 0) {
-            return true;
-        }
-    }
-    return false;
-}
-
-EyeGaze eye_gaze_support(bool offered, const OpenXrHeadset& headset) {
+EyeGaze eye_gaze_support(const OpenXrHeadset& headset) {
     if (headset.tracks_eye_gaze()) return EyeGaze::Tracked;
-    return offered ? EyeGaze::NotTracked : EyeGaze::NotOffered;
+    return headset.offers_eye_gaze() ? EyeGaze::NotTracked : EyeGaze::NotOffered;
 }
 
 Result<HeadsetProbe> probe_runtime(bool validation) {
@@ -87,7 +68,7 @@ Result<HeadsetProbe> probe_runtime(bool validation) {
     const OpenXrHeadset& headset = *created.value();
     probe.runtime = headset.runtime_name();
     probe.system = headset.system_name();
-    probe.eye_gaze = eye_gaze_support(runtime_offers_eye_gaze(), headset);
+    probe.eye_gaze = eye_gaze_support(headset);
     const Result<vk::Extent2D> extent = headset.recommended_eye_extent();
     if (!extent) {
         probe.message = "the OpenXR runtime '" + probe.runtime +

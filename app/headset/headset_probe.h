@@ -22,13 +22,8 @@ const char* eye_gaze_name(EyeGaze gaze);
 // A sentence for the experimenter: what it means for a protocol that records gaze.
 std::string eye_gaze_text(EyeGaze gaze);
 
-// Whether the runtime the OpenXR loader selects now offers XR_EXT_eye_gaze_interaction (false
-// when none answers). Ask while that runtime is still the one selected (XR_RUNTIME_JSON), e.g.
-// right after creating its instance.
-bool runtime_offers_eye_gaze();
-// For a headset created with eye gaze asked for (OpenXrHeadset::create's eye_gaze) on a runtime
-// that `offered` it or not.
-EyeGaze eye_gaze_support(bool offered, const OpenXrHeadset& headset);
+// For a headset created with eye gaze asked for (OpenXrHeadset::create's eye_gaze).
+EyeGaze eye_gaze_support(const OpenXrHeadset& headset);
 
 struct HeadsetProbe {
     bool runtime_available = false;  // an OpenXR runtime with a headset monoplane can drive

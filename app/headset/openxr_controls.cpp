@@ -139,6 +139,10 @@ bool OpenXrHeadset::tracks_eye_gaze() const {
     return impl_->eye_gaze;
 }
 
+bool OpenXrHeadset::offers_eye_gaze() const {
+    return impl_->eye_gaze_offered;
+}
+
 Result<std::optional<GazeSample>> OpenXrHeadset::locate_gaze(std::int64_t display_time_ns) {
     Impl& x = *impl_;
     if (!x.eye_gaze || x.gaze_space == XR_NULL_HANDLE) return std::optional<GazeSample>();

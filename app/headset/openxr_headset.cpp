@@ -128,6 +128,7 @@ Result<std::unique_ptr<OpenXrHeadset>> OpenXrHeadset::create(bool validation, bo
     if (gaze_extension) system_properties.next = &gaze_properties;
     xrGetSystemProperties(impl->instance, impl->system, &system_properties);
     impl->eye_gaze = gaze_extension && gaze_properties.supportsEyeGazeInteraction == XR_TRUE;
+    impl->eye_gaze_offered = gaze_extension;
     MONOPLANE_TRY(impl->load_vulkan_functions());
     if (timespec && XR_FAILED(xrGetInstanceProcAddr(
                         impl->instance, "xrConvertTimespecTimeToTimeKHR",

@@ -100,6 +100,9 @@ class OpenXrHeadset {
     // Whether eye gaze was asked for and the runtime offers it with a system that tracks the
     // eyes: then each session binds the gaze and locate_gaze samples it.
     bool tracks_eye_gaze() const;
+    // Whether eye gaze was asked for and the runtime offers XR_EXT_eye_gaze_interaction, whether
+    // or not its system tracks the eyes.
+    bool offers_eye_gaze() const;
     // The gaze at a frame's display time (the runtime's XrTime), after the frame's
     // sync_controls (which syncs the gaze action too); none without eye gaze.
     Result<std::optional<GazeSample>> locate_gaze(std::int64_t display_time_ns);

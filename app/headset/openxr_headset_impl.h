@@ -62,6 +62,9 @@ struct OpenXrHeadset::Impl {
     // XR_EXT_eye_gaze_interaction: enabled, and the system tracks the eyes (OpenXrHeadset::
     // tracks_eye_gaze); then the gaze pose action, its space and the VIEW space it is located in.
     bool eye_gaze = false;
+    // The runtime offered XR_EXT_eye_gaze_interaction and create enabled it (asked for), whether
+    // or not the system tracks the eyes (OpenXrHeadset::offers_eye_gaze).
+    bool eye_gaze_offered = false;
     XrAction gaze_action = XR_NULL_HANDLE;
     XrSpace gaze_space = XR_NULL_HANDLE;
     XrSpace view = XR_NULL_HANDLE;
